@@ -1,0 +1,406 @@
+//! The catalog: every family with its id, citation, variable, parameters and
+//! one generic evaluation.
+
+use rug::Rational;
+
+use crate::error::{CoreError, Result};
+use crate::families::{reference, seed000, seed002, seed004, thesis};
+use crate::param::{Bound, ParamSpec, Range, parse_exact};
+use crate::scalar::{Real, Ring};
+use crate::variable::{Atoms, Variable};
+
+/// A family of basis functions of the catalog.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Family {
+    ThesisQuadratic,
+    ThesisCubic,
+    Han,
+    MajeedQayyum,
+    Usman,
+    HanListing,
+    Seed000Blending,
+    Seed000Uniform,
+    Seed002Quartic,
+    Eh,
+    Hermite,
+    Bernstein3,
+    BSpline3,
+    /// Catalogued without formulas (they are missing from our copy).
+    Seed003,
+}
+
+/// Static description of a family.
+#[derive(Debug, Clone, Copy)]
+pub struct FamilyInfo {
+    /// Stable id used on the command line and in reports.
+    pub id: &'static str,
+    /// One-line title.
+    pub title: &'static str,
+    /// Source: seed file and equation.
+    pub citation: &'static str,
+    /// The native variable.
+    pub variable: Variable,
+    /// Shape parameters with their published ranges.
+    pub params: &'static [ParamSpec],
+    /// Names of the functions, in order.
+    pub functions: &'static [&'static str],
+    /// True when the uniform B-spline basis function is assembled from these
+    /// segment functions (piece `k` is function `3 − k`).
+    pub piecewise: bool,
+}
+
+const M: ParamSpec = ParamSpec {
+    name: "m",
+    symbol: "m",
+    range: Range::closed((-2, 1), (1, 1)),
+    range_source: "thesis Definition 3.2",
+};
+const BETA: ParamSpec = ParamSpec {
+    name: "beta",
+    symbol: "β",
+    range: Range {
+        lo: Bound::Closed(0, 1),
+        hi: Bound::Unbounded,
+    },
+    range_source: "thesis Definition 3.1",
+};
+const LAMBDA_HAN: ParamSpec = ParamSpec {
+    name: "lambda",
+    symbol: "λ",
+    range: Range::closed((-2, 1), (1, 1)),
+    range_source: "thesis 6.2, text before (6.2)",
+};
+const ETA: ParamSpec = ParamSpec {
+    name: "eta",
+    symbol: "η",
+    range: Range {
+        lo: Bound::Open(1, 2),
+        hi: Bound::Closed(2, 1),
+    },
+    range_source: "thesis 6.2, text before (6.1)",
+};
+const ALPHA: ParamSpec = ParamSpec {
+    name: "alpha",
+    symbol: "α",
+    range: Range {
+        lo: Bound::Open(0, 1),
+        hi: Bound::Open(2, 1),
+    },
+    range_source: "thesis 6.2, text after (6.3)",
+};
+const ZETA: ParamSpec = ParamSpec {
+    name: "zeta",
+    symbol: "ζ",
+    range: Range::closed((0, 1), (4, 1)),
+    range_source: "seed 000 abstract and section 2",
+};
+const LAMBDA_EH: ParamSpec = ParamSpec {
+    name: "lambda",
+    symbol: "λ",
+    range: Range::closed((-1, 1), (1, 1)),
+    range_source: "seed 004 III(ii) (b)-(c)",
+};
+const MU_EH: ParamSpec = ParamSpec {
+    name: "mu",
+    symbol: "μ",
+    range: Range::closed((-1, 1), (1, 1)),
+    range_source: "seed 004 III(ii) (b)-(c)",
+};
+
+const B4: &[&str] = &["b0", "b1", "b2", "b3"];
+
+impl Family {
+    /// Every family of the catalog, in listing order.
+    pub const ALL: [Family; 14] = [
+        Family::ThesisQuadratic,
+        Family::ThesisCubic,
+        Family::Han,
+        Family::MajeedQayyum,
+        Family::Usman,
+        Family::HanListing,
+        Family::Seed000Blending,
+        Family::Seed000Uniform,
+        Family::Seed002Quartic,
+        Family::Eh,
+        Family::Hermite,
+        Family::Bernstein3,
+        Family::BSpline3,
+        Family::Seed003,
+    ];
+
+    /// The static description.
+    pub fn info(&self) -> FamilyInfo {
+        let (id, title, citation, variable, params, functions, piecewise): (
+            _,
+            _,
+            _,
+            _,
+            &'static [ParamSpec],
+            &'static [&'static str],
+            _,
+        ) = match self {
+            Family::ThesisQuadratic => (
+                "thesis-quadratic",
+                "quadratic trigonometric basis H_i(u; beta)",
+                "seed 001 (thesis), (3.1)",
+                Variable::UnitAngle,
+                &[BETA],
+                &["H0", "H1", "H2"],
+                false,
+            ),
+            Family::ThesisCubic => (
+                "thesis-cubic",
+                "cubic trigonometric basis b_i(u; m)",
+                "seed 001 (thesis), (3.7)",
+                Variable::UnitAngle,
+                &[M],
+                B4,
+                false,
+            ),
+            Family::Han => (
+                "han",
+                "Han et al. (2010) cubic trigonometric basis, as transcribed",
+                "seed 001 (thesis), (6.2)",
+                Variable::UnitAngle,
+                &[LAMBDA_HAN],
+                B4,
+                false,
+            ),
+            Family::MajeedQayyum => (
+                "majeed-qayyum",
+                "Majeed & Qayyum (2020) cubic trigonometric basis, as transcribed",
+                "seed 001 (thesis), (6.1)",
+                Variable::Angle,
+                &[ETA],
+                &["g0", "g1", "g2", "g3"],
+                false,
+            ),
+            Family::Usman => (
+                "usman",
+                "Usman et al. (2020) cubic Bernstein-like basis, as transcribed",
+                "seed 001 (thesis), (6.3)",
+                Variable::UnitAngle,
+                &[ALPHA],
+                &["a0", "a1", "a2", "a3"],
+                false,
+            ),
+            Family::HanListing => (
+                "han-listing",
+                "Han basis as the thesis's MATLAB listing computes it (b20 uses sin)",
+                "seed 001 (thesis), Appendix 2",
+                Variable::UnitAngle,
+                &[LAMBDA_HAN],
+                B4,
+                false,
+            ),
+            Family::Seed000Blending => (
+                "seed000-blending",
+                "blending functions l_k(t) with s(zeta) = zeta^2 - zeta + 1",
+                "seed 000, (4)",
+                Variable::Angle,
+                &[ZETA],
+                &["l0", "l1", "l2", "l3"],
+                false,
+            ),
+            Family::Seed000Uniform => (
+                "seed000-uniform",
+                "uniform-knot segment functions l_k(t)/(6 zeta^2 - 6 zeta + 10)",
+                "seed 000, (4), (5), Appendix A (A1)",
+                Variable::Angle,
+                &[ZETA],
+                &["F0", "F1", "F2", "F3"],
+                true,
+            ),
+            Family::Seed002Quartic => (
+                "seed002-quartic",
+                "quartic trigonometric Bezier basis (six functions)",
+                "seed 002, Definition 1, (1)",
+                Variable::Angle,
+                &[],
+                &["b0", "b1", "b2", "b3", "b4", "b5"],
+                false,
+            ),
+            Family::Eh => (
+                "eh",
+                "EH interpolation-spline bases b_{i,3}(t; lambda, mu)",
+                "seed 004, III(i), (1)",
+                Variable::Polynomial,
+                &[LAMBDA_EH, MU_EH],
+                &["b0", "b1", "b2", "b3"],
+                false,
+            ),
+            Family::Hermite => (
+                "hermite",
+                "standard cubic Hermite bases alpha0, alpha1, beta0, beta1",
+                "seed 004, section II",
+                Variable::Polynomial,
+                &[],
+                &["alpha0", "alpha1", "beta0", "beta1"],
+                false,
+            ),
+            Family::Bernstein3 => (
+                "bernstein3",
+                "cubic Bernstein polynomials (reference)",
+                "textbook reference (Farin, Curves and Surfaces for CAGD, ch. 4)",
+                Variable::Polynomial,
+                &[],
+                &["B0", "B1", "B2", "B3"],
+                false,
+            ),
+            Family::BSpline3 => (
+                "bspline3",
+                "uniform cubic B-spline segment functions (reference)",
+                "textbook reference (Farin, Curves and Surfaces for CAGD, ch. 7)",
+                Variable::Polynomial,
+                &[],
+                &["N0", "N1", "N2", "N3"],
+                true,
+            ),
+            Family::Seed003 => (
+                "seed003",
+                "C3 trigonometric B-spline with shape parameter alpha: formulas missing from our copy",
+                "seed 003 (eb2d8fda42cf564b), whole paper",
+                Variable::UnitAngle,
+                &[],
+                &[],
+                false,
+            ),
+        };
+        FamilyInfo {
+            id,
+            title,
+            citation,
+            variable,
+            params,
+            functions,
+            piecewise,
+        }
+    }
+
+    /// The family with this id.
+    pub fn from_id(id: &str) -> Result<Family> {
+        Family::ALL
+            .into_iter()
+            .find(|f| f.info().id == id)
+            .ok_or_else(|| CoreError::UnknownFamily(id.to_string()))
+    }
+
+    /// True when the formulas are available.
+    pub fn has_formulas(&self) -> bool {
+        !matches!(self, Family::Seed003)
+    }
+
+    /// Every function of the family at `x`, with parameters `p` in the order
+    /// of [`FamilyInfo::params`]. Works for any [`Ring`]: numbers, jets, or
+    /// exact symbols.
+    ///
+    /// # Panics
+    /// If `p` has the wrong length or the family has no formulas: callers
+    /// validate first ([`Family::params_from_pairs`]).
+    pub fn eval<T: Ring>(&self, x: &Atoms<T>, p: &[T]) -> Vec<T> {
+        let Atoms { s, c, t } = x;
+        assert_eq!(p.len(), self.info().params.len(), "parameter count");
+        match self {
+            Family::ThesisQuadratic => thesis::quadratic(s, c, &p[0]).to_vec(),
+            Family::ThesisCubic => thesis::cubic(s, c, &p[0]).to_vec(),
+            Family::Han => thesis::han(s, c, &p[0]).to_vec(),
+            Family::MajeedQayyum => thesis::majeed_qayyum(s, c, &p[0]).to_vec(),
+            Family::Usman => thesis::usman(s, c, &p[0]).to_vec(),
+            Family::HanListing => thesis::han_listing(s, c, &p[0]).to_vec(),
+            Family::Seed000Blending => seed000::blending(s, c, &p[0]).to_vec(),
+            Family::Seed000Uniform => seed000::uniform(s, c, &p[0]).to_vec(),
+            Family::Seed002Quartic => seed002::quartic(s, c).to_vec(),
+            Family::Eh => seed004::eh(t, &p[0], &p[1]).to_vec(),
+            Family::Hermite => seed004::hermite(t).to_vec(),
+            Family::Bernstein3 => reference::bernstein3(t).to_vec(),
+            Family::BSpline3 => reference::bspline3(t).to_vec(),
+            Family::Seed003 => panic!("seed003 has no formulas"),
+        }
+    }
+
+    /// Reads `name=value` pairs into exact parameter values in the family's
+    /// order, checking names and (unless `allow_outside`) published ranges.
+    pub fn params_from_pairs(
+        &self,
+        pairs: &[(String, String)],
+        allow_outside: bool,
+    ) -> Result<Vec<Rational>> {
+        let info = self.info();
+        if !self.has_formulas() {
+            return Err(CoreError::NoFormulas(info.id.to_string()));
+        }
+        for (name, _) in pairs {
+            if !info.params.iter().any(|p| p.name == name || p.symbol == name) {
+                let expected = if info.params.is_empty() {
+                    "none".to_string()
+                } else {
+                    info.params.iter().map(|p| p.name).collect::<Vec<_>>().join(", ")
+                };
+                return Err(CoreError::UnknownParameter {
+                    family: info.id.into(),
+                    name: name.clone(),
+                    expected,
+                });
+            }
+        }
+        info.params
+            .iter()
+            .map(|spec| {
+                let (_, text) = pairs
+                    .iter()
+                    .rev()
+                    .find(|(n, _)| n == spec.name || n == spec.symbol)
+                    .ok_or_else(|| CoreError::MissingParameter {
+                        family: info.id.into(),
+                        name: spec.name.into(),
+                    })?;
+                let value = parse_exact(text)?;
+                if !allow_outside && !spec.range.contains(&value) {
+                    return Err(CoreError::OutOfRange {
+                        family: info.id.into(),
+                        name: spec.name.into(),
+                        value: text.clone(),
+                        range: spec.range.to_string(),
+                    });
+                }
+                Ok(value)
+            })
+            .collect()
+    }
+
+    /// Numeric evaluation at a point of the native variable, with typed
+    /// errors for points outside the domain (unless `allow_outside`) and for
+    /// non-finite results (a vanishing denominator).
+    pub fn eval_at<T: Real>(&self, x: &T, p: &[Rational], allow_outside: bool) -> Result<Vec<T>> {
+        let info = self.info();
+        if !self.has_formulas() {
+            return Err(CoreError::NoFormulas(info.id.to_string()));
+        }
+        if !x.is_finite() {
+            return Err(CoreError::NotFinite {
+                what: "the evaluation point".into(),
+            });
+        }
+        if !allow_outside && !info.variable.contains(x) {
+            return Err(CoreError::PointOutsideDomain {
+                value: format!("{}", x.to_f64()),
+                domain: info.variable.domain().into(),
+            });
+        }
+        let params: Vec<T> = p.iter().map(|q| x.rational(q)).collect();
+        let values = self.eval(&info.variable.atoms(x), &params);
+        if values.iter().any(|v| !v.is_finite()) {
+            let at = info
+                .params
+                .iter()
+                .zip(p)
+                .map(|(s, v)| format!("{}={v}", s.name))
+                .collect::<Vec<_>>()
+                .join(", ");
+            return Err(CoreError::DivisionByZero {
+                quantity: format!("`{}` at {at}", info.id),
+            });
+        }
+        Ok(values)
+    }
+}

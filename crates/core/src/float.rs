@@ -1,0 +1,53 @@
+//! `f64` as a [`Ring`] and [`Real`].
+
+use crate::scalar::{Real, Ring};
+
+impl Ring for f64 {
+    fn int(&self, n: i64) -> Self {
+        n as f64
+    }
+
+    fn ratio(&self, num: i64, den: i64) -> Self {
+        rug::Rational::from((num, den)).to_f64()
+    }
+
+    fn rational(&self, q: &rug::Rational) -> Self {
+        q.to_f64()
+    }
+
+    fn pi(&self) -> Self {
+        std::f64::consts::PI
+    }
+
+    fn is_zero(&self) -> bool {
+        *self == 0.0
+    }
+}
+
+impl Real for f64 {
+    fn sin_cos(&self) -> (Self, Self) {
+        f64::sin_cos(*self)
+    }
+
+    fn to_f64(&self) -> f64 {
+        *self
+    }
+
+    fn is_finite(&self) -> bool {
+        f64::is_finite(*self)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn constants_are_exact_where_representable() {
+        let x = 0.25_f64;
+        assert_eq!(x.int(3), 3.0);
+        assert_eq!(x.ratio(1, 4), 0.25);
+        assert_eq!(x.ratio(1, 3), 1.0 / 3.0);
+        assert_eq!(x.powi(3), 0.015625);
+    }
+}

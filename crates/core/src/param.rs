@@ -1,0 +1,190 @@
+//! Shape parameters, their published ranges, and exact parameter values.
+
+use std::fmt;
+
+use rug::Rational;
+use rug::ops::Pow;
+
+use crate::error::{CoreError, Result};
+
+/// One end of a parameter range.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Bound {
+    /// The end is included: `[a` or `b]`.
+    Closed(i64, i64),
+    /// The end is excluded: `(a` or `b)`.
+    Open(i64, i64),
+    /// No end: `−∞` or `+∞`.
+    Unbounded,
+}
+
+impl Bound {
+    /// The end as an exact rational, if there is one.
+    pub fn value(&self) -> Option<Rational> {
+        match *self {
+            Bound::Closed(n, d) | Bound::Open(n, d) => Some(Rational::from((n, d))),
+            Bound::Unbounded => None,
+        }
+    }
+}
+
+fn fmt_ratio(n: i64, d: i64) -> String {
+    Rational::from((n, d)).to_string()
+}
+
+/// A published parameter range such as `[−2, 1]` or `(1/2, 2]`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Range {
+    pub lo: Bound,
+    pub hi: Bound,
+}
+
+impl Range {
+    /// `[lo, hi]`.
+    pub const fn closed(lo: (i64, i64), hi: (i64, i64)) -> Self {
+        Range {
+            lo: Bound::Closed(lo.0, lo.1),
+            hi: Bound::Closed(hi.0, hi.1),
+        }
+    }
+
+    /// Every real number.
+    pub const ALL: Range = Range {
+        lo: Bound::Unbounded,
+        hi: Bound::Unbounded,
+    };
+
+    /// True when `x` lies in the range.
+    pub fn contains(&self, x: &Rational) -> bool {
+        let above = match self.lo {
+            Bound::Closed(..) => *x >= self.lo.value().expect("closed bound"),
+            Bound::Open(..) => *x > self.lo.value().expect("open bound"),
+            Bound::Unbounded => true,
+        };
+        let below = match self.hi {
+            Bound::Closed(..) => *x <= self.hi.value().expect("closed bound"),
+            Bound::Open(..) => *x < self.hi.value().expect("open bound"),
+            Bound::Unbounded => true,
+        };
+        above && below
+    }
+}
+
+impl fmt::Display for Range {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.lo {
+            Bound::Closed(n, d) => write!(f, "[{}", fmt_ratio(n, d))?,
+            Bound::Open(n, d) => write!(f, "({}", fmt_ratio(n, d))?,
+            Bound::Unbounded => f.write_str("(-inf")?,
+        }
+        f.write_str(", ")?;
+        match self.hi {
+            Bound::Closed(n, d) => write!(f, "{}]", fmt_ratio(n, d)),
+            Bound::Open(n, d) => write!(f, "{})", fmt_ratio(n, d)),
+            Bound::Unbounded => f.write_str("+inf)"),
+        }
+    }
+}
+
+/// A shape parameter of a family.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ParamSpec {
+    /// ASCII name used on the command line (`m`, `beta`, `lambda`, …).
+    pub name: &'static str,
+    /// The symbol the source prints (`m`, `β`, `λ`, …).
+    pub symbol: &'static str,
+    /// The published range.
+    pub range: Range,
+    /// Where the range is stated.
+    pub range_source: &'static str,
+}
+
+/// Reads a number exactly: an integer, a decimal (`0.6` is `3/5`), a
+/// fraction (`-1/2`), or a decimal with exponent (`1e-3`).
+pub fn parse_exact(input: &str) -> Result<Rational> {
+    let malformed = || CoreError::Malformed {
+        input: input.to_string(),
+        expected: "a number (integer, decimal such as 0.6, or fraction such as 1/2)".into(),
+    };
+    let text = input.trim();
+    let lower = text.to_ascii_lowercase();
+    if lower.contains("nan") || lower.contains("inf") {
+        return Err(CoreError::NotFinite {
+            what: format!("`{input}`"),
+        });
+    }
+    if let Some((num, den)) = text.split_once('/') {
+        let num: Rational = parse_decimal(num.trim()).ok_or_else(malformed)?;
+        let den: Rational = parse_decimal(den.trim()).ok_or_else(malformed)?;
+        if den == 0 {
+            return Err(CoreError::DivisionByZero {
+                quantity: format!("`{input}`"),
+            });
+        }
+        return Ok(num / den);
+    }
+    parse_decimal(text).ok_or_else(malformed)
+}
+
+fn parse_decimal(text: &str) -> Option<Rational> {
+    let (mantissa, exponent) = match text.find(['e', 'E']) {
+        Some(i) => (&text[..i], text[i + 1..].parse::<i32>().ok()?),
+        None => (text, 0),
+    };
+    let (negative, digits) = match mantissa.strip_prefix('-') {
+        Some(rest) => (true, rest),
+        None => (false, mantissa.strip_prefix('+').unwrap_or(mantissa)),
+    };
+    let (int_part, frac_part) = digits.split_once('.').unwrap_or((digits, ""));
+    if int_part.is_empty() && frac_part.is_empty() {
+        return None;
+    }
+    if !int_part.chars().chain(frac_part.chars()).all(|c| c.is_ascii_digit()) {
+        return None;
+    }
+    if exponent.unsigned_abs() > 10_000 {
+        return None;
+    }
+    let all_digits = format!("{int_part}{frac_part}");
+    let int = rug::Integer::from_str_radix(&all_digits, 10).ok()?;
+    let scale = exponent - i32::try_from(frac_part.len()).ok()?;
+    let ten = Rational::from(10);
+    let factor = if scale >= 0 {
+        ten.pow(scale as u32)
+    } else {
+        Rational::from(1) / ten.pow((-scale) as u32)
+    };
+    let value = Rational::from(int) * factor;
+    Some(if negative { -value } else { value })
+}
+
+
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn decimals_are_read_exactly() {
+        assert_eq!(parse_exact("0.6").unwrap(), Rational::from((3, 5)));
+        assert_eq!(parse_exact("-1/2").unwrap(), Rational::from((-1, 2)));
+        assert_eq!(parse_exact("2.5e-1").unwrap(), Rational::from((1, 4)));
+        assert_eq!(parse_exact("-2").unwrap(), Rational::from(-2));
+        assert!(parse_exact("abc").is_err());
+        assert!(parse_exact("").is_err());
+        assert!(parse_exact("1/0").is_err());
+        assert!(matches!(parse_exact("NaN"), Err(CoreError::NotFinite { .. })));
+    }
+
+    #[test]
+    fn ranges_respect_open_and_closed_ends() {
+        let r = Range {
+            lo: Bound::Open(1, 2),
+            hi: Bound::Closed(2, 1),
+        };
+        assert!(!r.contains(&Rational::from((1, 2))));
+        assert!(r.contains(&Rational::from(2)));
+        assert!(!r.contains(&Rational::from((201, 100))));
+        assert_eq!(r.to_string(), "(1/2, 2]");
+    }
+}
