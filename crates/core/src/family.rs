@@ -109,6 +109,32 @@ const MU_EH: ParamSpec = ParamSpec {
 
 const B4: &[&str] = &["b0", "b1", "b2", "b3"];
 
+/// Seed 000's non-uniform case: the segment functions of (5) with the
+/// coefficients (2)–(3) as printed. It needs a knot vector, so it is evaluated
+/// through [`crate::families::seed000_nonuniform::NonUniform`] rather than
+/// [`Family::eval`].
+pub const SEED000_NONUNIFORM: FamilyInfo = FamilyInfo {
+    id: "seed000-nonuniform",
+    title: "non-uniform segment functions F0..F3 of (5) with the printed coefficients (2)-(3)",
+    citation: "seed 000, (1)-(5)",
+    variable: Variable::Angle,
+    params: &[ZETA],
+    functions: &["F0", "F1", "F2", "F3"],
+    piecewise: false,
+};
+
+/// Every entry of the catalog, in listing order: the families of
+/// [`Family::ALL`] with seed 000's knot-dependent case after its uniform one.
+pub fn catalog() -> Vec<FamilyInfo> {
+    let mut entries: Vec<FamilyInfo> = Family::ALL.iter().map(Family::info).collect();
+    let at = entries
+        .iter()
+        .position(|f| f.id == "seed000-uniform")
+        .map_or(entries.len(), |i| i + 1);
+    entries.insert(at, SEED000_NONUNIFORM);
+    entries
+}
+
 impl Family {
     /// Every family of the catalog, in listing order.
     pub const ALL: [Family; 14] = [
@@ -330,11 +356,19 @@ impl Family {
             return Err(CoreError::NoFormulas(info.id.to_string()));
         }
         for (name, _) in pairs {
-            if !info.params.iter().any(|p| p.name == name || p.symbol == name) {
+            if !info
+                .params
+                .iter()
+                .any(|p| p.name == name || p.symbol == name)
+            {
                 let expected = if info.params.is_empty() {
                     "none".to_string()
                 } else {
-                    info.params.iter().map(|p| p.name).collect::<Vec<_>>().join(", ")
+                    info.params
+                        .iter()
+                        .map(|p| p.name)
+                        .collect::<Vec<_>>()
+                        .join(", ")
                 };
                 return Err(CoreError::UnknownParameter {
                     family: info.id.into(),
@@ -402,5 +436,175 @@ impl Family {
             });
         }
         Ok(values)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Mpfr;
+
+    /// Hand-derived values at both ends of the domain, as exact rationals
+    /// (`"3/22"`), one row per family: (family, parameters, left, right).
+    /// Derivations: at the left end `s = 0, c = 1, t = 0`; at the right end
+    /// `s = 1, c = 0, t = 1` — e.g. thesis (3.7) at `u = 0`: `b₀ = (1−0)²(1−0) = 1`,
+    /// `b₂ = m·1·0 − 2·1·0 = 0`; seed 000 (4) with `ζ = 2`, `s(ζ) = 3`:
+    /// `l₁(0) = (1+1)²(3+1) = 16`, normaliser `6·4 − 12 + 10 = 22`.
+    #[allow(clippy::type_complexity)]
+    const ENDS: &[(Family, &[(i64, i64)], &[&str], &[&str])] = &[
+        (
+            Family::ThesisQuadratic,
+            &[(1, 1)],
+            &["1/2", "1/2", "0"],
+            &["0", "1/2", "1/2"],
+        ),
+        (
+            Family::ThesisQuadratic,
+            &[(3, 1)],
+            &["3/4", "1/4", "0"],
+            &["0", "1/4", "3/4"],
+        ),
+        (
+            Family::ThesisCubic,
+            &[(-2, 1)],
+            &["1", "0", "0", "0"],
+            &["0", "0", "0", "1"],
+        ),
+        (
+            Family::ThesisCubic,
+            &[(3, 5)],
+            &["1", "0", "0", "0"],
+            &["0", "0", "0", "1"],
+        ),
+        (
+            Family::Han,
+            &[(1, 2)],
+            &["1", "0", "0", "0"],
+            &["0", "0", "0", "1"],
+        ),
+        (
+            Family::HanListing,
+            &[(1, 2)],
+            &["1", "0", "0", "0"],
+            &["0", "0", "0", "1"],
+        ),
+        (
+            Family::MajeedQayyum,
+            &[(3, 2)],
+            &["1", "0", "0", "0"],
+            &["0", "0", "0", "1"],
+        ),
+        (
+            Family::Usman,
+            &[(1, 2)],
+            &["1", "0", "0", "0"],
+            &["0", "0", "0", "1"],
+        ),
+        (
+            Family::Seed000Blending,
+            &[(2, 1)],
+            &["3", "16", "3", "0"],
+            &["0", "3", "16", "3"],
+        ),
+        (
+            Family::Seed000Uniform,
+            &[(2, 1)],
+            &["3/22", "16/22", "3/22", "0"],
+            &["0", "3/22", "16/22", "3/22"],
+        ),
+        (
+            Family::Seed002Quartic,
+            &[],
+            &["1", "0", "0", "0", "0", "0"],
+            &["0", "0", "0", "0", "0", "1"],
+        ),
+        (
+            Family::Eh,
+            &[(1, 2), (-1, 3)],
+            &["1", "0", "0", "0"],
+            &["0", "1", "0", "0"],
+        ),
+        (
+            Family::Hermite,
+            &[],
+            &["1", "0", "0", "0"],
+            &["0", "1", "0", "0"],
+        ),
+        (
+            Family::Bernstein3,
+            &[],
+            &["1", "0", "0", "0"],
+            &["0", "0", "0", "1"],
+        ),
+        (
+            Family::BSpline3,
+            &[],
+            &["1/6", "4/6", "1/6", "0"],
+            &["0", "1/6", "4/6", "1/6"],
+        ),
+    ];
+
+    #[test]
+    fn endpoint_values_match_hand_derivations_at_256_bits() {
+        let tol = Mpfr::from_f64(256, 2f64.powi(-250));
+        for (family, params, left, right) in ENDS {
+            let p: Vec<Rational> = params.iter().map(|&r| Rational::from(r)).collect();
+            let x0 = Mpfr::from_f64(256, 0.0);
+            let x1 = family.info().variable.end(&x0);
+            for (x, expected) in [(x0, left), (x1, right)] {
+                let got = family.eval_at(&x, &p, false).unwrap();
+                assert_eq!(got.len(), expected.len());
+                for (g, e) in got.iter().zip(expected.iter()) {
+                    let e: Rational = e.parse().unwrap();
+                    let diff = g.clone() - &g.rational(&e);
+                    let abs = if diff < x.int(0) { -diff } else { diff };
+                    assert!(abs < tol, "{family:?} at {x}: got {g}, expected {e}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn every_family_with_formulas_has_a_row_above() {
+        for f in Family::ALL.iter().filter(|f| f.has_formulas()) {
+            assert!(ENDS.iter().any(|(g, ..)| g == f), "{f:?}");
+        }
+    }
+
+    #[test]
+    fn params_are_validated() {
+        let pairs = |v: &[(&str, &str)]| -> Vec<(String, String)> {
+            v.iter()
+                .map(|(a, b)| (a.to_string(), b.to_string()))
+                .collect()
+        };
+        let cubic = Family::ThesisCubic;
+        assert_eq!(
+            cubic
+                .params_from_pairs(&pairs(&[("m", "0.6")]), false)
+                .unwrap(),
+            vec![Rational::from((3, 5))]
+        );
+        assert!(matches!(
+            cubic.params_from_pairs(&pairs(&[("m", "1.5")]), false),
+            Err(CoreError::OutOfRange { .. })
+        ));
+        assert!(
+            cubic
+                .params_from_pairs(&pairs(&[("m", "1.5")]), true)
+                .is_ok()
+        );
+        assert!(matches!(
+            Family::MajeedQayyum.params_from_pairs(&pairs(&[("eta", "1/2")]), false),
+            Err(CoreError::OutOfRange { .. })
+        ));
+        assert!(matches!(
+            cubic.params_from_pairs(&pairs(&[]), false),
+            Err(CoreError::MissingParameter { .. })
+        ));
+        assert!(matches!(
+            Family::Seed003.params_from_pairs(&pairs(&[]), false),
+            Err(CoreError::NoFormulas(_))
+        ));
     }
 }

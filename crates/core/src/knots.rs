@@ -49,10 +49,7 @@ pub fn locate<T: Real>(knots: &[T], x: &T) -> Result<(usize, T)> {
             domain: format!("[{}, {}]", knots[0].to_f64(), knots[last].to_f64()),
         });
     }
-    let i = knots[1..last]
-        .iter()
-        .take_while(|k| **k <= *x)
-        .count();
+    let i = knots[1..last].iter().take_while(|k| **k <= *x).count();
     let local = (x.clone() - &knots[i]) / &(knots[i + 1].clone() - &knots[i]);
     Ok((i, local))
 }

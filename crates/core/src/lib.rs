@@ -32,7 +32,7 @@ pub mod surface;
 pub mod variable;
 
 pub use error::{CoreError, Result};
-pub use family::{Family, FamilyInfo};
+pub use family::{Family, FamilyInfo, SEED000_NONUNIFORM, catalog};
 pub use mpfr::Mpfr;
 pub use param::{Bound, ParamSpec, Range, parse_exact};
 pub use scalar::{Real, Ring, RingOps};

@@ -96,7 +96,10 @@ impl Ring for Mpfr {
     }
 
     fn ratio(&self, num: i64, den: i64) -> Self {
-        Mpfr(Float::with_val(self.prec(), rug::Rational::from((num, den))))
+        Mpfr(Float::with_val(
+            self.prec(),
+            rug::Rational::from((num, den)),
+        ))
     }
 
     fn rational(&self, q: &rug::Rational) -> Self {

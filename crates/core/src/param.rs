@@ -139,7 +139,11 @@ fn parse_decimal(text: &str) -> Option<Rational> {
     if int_part.is_empty() && frac_part.is_empty() {
         return None;
     }
-    if !int_part.chars().chain(frac_part.chars()).all(|c| c.is_ascii_digit()) {
+    if !int_part
+        .chars()
+        .chain(frac_part.chars())
+        .all(|c| c.is_ascii_digit())
+    {
         return None;
     }
     if exponent.unsigned_abs() > 10_000 {
@@ -158,8 +162,6 @@ fn parse_decimal(text: &str) -> Option<Rational> {
     Some(if negative { -value } else { value })
 }
 
-
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -173,7 +175,10 @@ mod tests {
         assert!(parse_exact("abc").is_err());
         assert!(parse_exact("").is_err());
         assert!(parse_exact("1/0").is_err());
-        assert!(matches!(parse_exact("NaN"), Err(CoreError::NotFinite { .. })));
+        assert!(matches!(
+            parse_exact("NaN"),
+            Err(CoreError::NotFinite { .. })
+        ));
     }
 
     #[test]

@@ -28,8 +28,9 @@ pub fn eval_uniform<T: Real>(family: Family, n: &T, p: &[Rational]) -> Result<T>
     if !family.info().piecewise {
         return Err(CoreError::Malformed {
             input: family.info().id.into(),
-            expected: "a family with uniform B-spline segment functions (seed000-uniform, bspline3)"
-                .into(),
+            expected:
+                "a family with uniform B-spline segment functions (seed000-uniform, bspline3)"
+                    .into(),
         });
     }
     let knots: Vec<T> = (0..=PIECES as i64).map(|k| n.int(k)).collect();

@@ -27,7 +27,11 @@ impl<T: Coord> TensorSurface<T> {
             return Err(CoreError::Count {
                 what: format!("control-point grid rows/columns for `{}`", family.info().id),
                 expected: n,
-                got: grid.iter().map(Vec::len).find(|&l| l != n).unwrap_or(grid.len()),
+                got: grid
+                    .iter()
+                    .map(Vec::len)
+                    .find(|&l| l != n)
+                    .unwrap_or(grid.len()),
             });
         }
         Ok(TensorSurface {
@@ -71,7 +75,5 @@ pub fn thesis_row_times_a<T: Real>(m: &T, u: &T) -> [T; 4] {
     let (s, c) = theta.sin_cos();
     let t = surface_row_t(&s, &c);
     let a = surface_matrix_a(m);
-    std::array::from_fn(|col| {
-        (0..7).fold(m.int(0), |acc, r| acc + &(t[r].clone() * &a[r][col]))
-    })
+    std::array::from_fn(|col| (0..7).fold(m.int(0), |acc, r| acc + &(t[r].clone() * &a[r][col])))
 }

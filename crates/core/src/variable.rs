@@ -55,11 +55,7 @@ impl Variable {
             Variable::Angle | Variable::Polynomial => x.clone(),
         };
         let (s, c) = theta.sin_cos();
-        Atoms {
-            s,
-            c,
-            t: x.clone(),
-        }
+        Atoms { s, c, t: x.clone() }
     }
 
     /// True when `x` lies in the domain.

@@ -1,1 +1,9 @@
-//! placeholder
+//! # trig-deriv
+//!
+//! Truncated Taylor jets ([`Jet`]) over any [`trig_core::Ring`] — f64,
+//! [`trig_core::Mpfr`], the exact symbolic ring — and derivatives of the
+//! catalog's families computed with them.
+
+pub mod jet;
+
+pub use jet::{Jet, angle_atoms, family_derivatives, polynomial_atoms};

@@ -67,12 +67,20 @@ impl<T: Ring> NonUniform<T> {
 
     /// `α_j = 1/(q_{j+1} + q_j)`.
     pub fn alpha(&self, j: i64) -> Result<T> {
-        Self::div(self.int(1), self.q(j + 1)? + &self.q(j)?, format!("alpha_{j}"))
+        Self::div(
+            self.int(1),
+            self.q(j + 1)? + &self.q(j)?,
+            format!("alpha_{j}"),
+        )
     }
 
     /// `β_j = 1/(q_{j−1} + q_{j−2})`.
     pub fn beta(&self, j: i64) -> Result<T> {
-        Self::div(self.int(1), self.q(j - 1)? + &self.q(j - 2)?, format!("beta_{j}"))
+        Self::div(
+            self.int(1),
+            self.q(j - 1)? + &self.q(j - 2)?,
+            format!("beta_{j}"),
+        )
     }
 
     /// `γ_j = 2/(q_{j−1} + q_j + q_{j+1})`.
@@ -84,9 +92,11 @@ impl<T: Ring> NonUniform<T> {
     /// `ψ_j = 6ξ²α_{j−1}q_{j−1}² − 3ξq_j + 10β_{j+1}q_{j+1}²`.
     pub fn psi(&self, j: i64) -> Result<T> {
         let xi = &self.xi;
-        Ok(self.int(6) * &xi.square() * &self.alpha(j - 1)? * &self.q(j - 1)?.square()
-            - &(self.int(3) * xi * &self.q(j)?)
-            + &(self.int(10) * &self.beta(j + 1)? * &self.q(j + 1)?.square()))
+        Ok(
+            self.int(6) * &xi.square() * &self.alpha(j - 1)? * &self.q(j - 1)?.square()
+                - &(self.int(3) * xi * &self.q(j)?)
+                + &(self.int(10) * &self.beta(j + 1)? * &self.q(j + 1)?.square()),
+        )
     }
 
     /// `φ_j = ψ_{j−2}(q_{j+1} + 1) / (2(β_{j−1}q_{j−1}³ + α_j q_{j+1}²))`.
@@ -217,4 +227,44 @@ fn dot<T: Ring>(w: &[T; 4], l: &[T; 4]) -> T {
     let mut terms = w.iter().zip(l).map(|(wk, lk)| wk.clone() * lk);
     let first = terms.next().expect("four terms");
     terms.fold(first, |acc, x| acc + &x)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn uniform_knots(n: i64) -> Vec<f64> {
+        (0..n).map(|k| k as f64).collect()
+    }
+
+    #[test]
+    fn uniform_knots_make_c_j2_divide_by_zero_as_printed() {
+        // q constant ⇒ c_{j,0} = (q_{j+2} − q_{j+1})·… = 0, and c_{j,2} divides by it.
+        let f = NonUniform::new(uniform_knots(20), 1.0);
+        assert_eq!(
+            f.c(9).unwrap_err(),
+            CoreError::DivisionByZero {
+                quantity: "c_{9,2}".into()
+            }
+        );
+        // b_{j,0} carries the factor (q_{j−1} − q_j) = 0.
+        assert_eq!(f.b(9).unwrap()[0], 0.0);
+    }
+
+    #[test]
+    fn formulas_reaching_outside_the_knots_are_undefined() {
+        let f = NonUniform::new(uniform_knots(5), 1.0);
+        assert!(matches!(f.a(0), Err(CoreError::Undefined { .. })));
+        assert_eq!(f.q(2).unwrap(), 1.0);
+    }
+
+    #[test]
+    fn uniform_quantities_match_hand_values() {
+        // unit spacing: α = 1/2, β = 1/2, γ = 2/3, ψ = 6ξ²/2 − 3ξ + 10/2 = 3ξ² − 3ξ + 5
+        let f = NonUniform::new(uniform_knots(20), 2.0);
+        assert_eq!(f.alpha(9).unwrap(), 0.5);
+        assert_eq!(f.beta(9).unwrap(), 0.5);
+        assert!((f.gamma(9).unwrap() - 2.0 / 3.0).abs() < 1e-15);
+        assert_eq!(f.psi(9).unwrap(), 11.0);
+    }
 }

@@ -1,0 +1,206 @@
+//! `trig-audit eval`: every function of a family at one point, in f64 or in
+//! MPFR at a chosen precision.
+
+use std::fmt::{Display, Write};
+
+use clap::Args;
+use rug::Rational;
+use serde_json::json;
+use trig_core::families::seed000_nonuniform::NonUniform;
+use trig_core::knots::{check_knots, locate};
+use trig_core::{
+    CoreError, Family, FamilyInfo, Mpfr, Real, SEED000_NONUNIFORM, parse_exact, piecewise,
+};
+
+use super::{CliError, CmdResult};
+use crate::format::{TextOrJson, json};
+
+/// Largest precision accepted (MPFR allows more; this keeps output sane).
+const MAX_PREC: u32 = 1 << 16;
+
+#[derive(Debug, Args)]
+pub struct EvalArgs {
+    /// Family id (see `trig-audit list`).
+    family: String,
+    /// Shape parameter as name=value (decimals are read exactly: 0.6 = 3/5).
+    #[arg(long = "param", value_name = "NAME=VALUE")]
+    params: Vec<String>,
+    /// Point in the family's native variable (with --piecewise or --knots: the
+    /// global knot parameter).
+    #[arg(long, allow_hyphen_values = true)]
+    at: String,
+    /// Evaluate in MPFR with this many bits instead of f64.
+    #[arg(long)]
+    prec: Option<u32>,
+    /// Evaluate the uniform B-spline basis function over knots 0,1,2,3,4.
+    #[arg(long)]
+    piecewise: bool,
+    /// Knot vector for seed000-nonuniform, comma separated.
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+    knots: Vec<String>,
+    /// Evaluate outside the published parameter range or the domain.
+    #[arg(long)]
+    allow_outside_range: bool,
+    /// Output format.
+    #[arg(long, value_enum, default_value = "text")]
+    format: TextOrJson,
+}
+
+/// Splits `name=value` arguments.
+pub fn param_pairs(raw: &[String]) -> Result<Vec<(String, String)>, CliError> {
+    raw.iter()
+        .map(|p| {
+            p.split_once('=')
+                .map(|(n, v)| (n.trim().to_string(), v.trim().to_string()))
+                .filter(|(n, v)| !n.is_empty() && !v.is_empty())
+                .ok_or_else(|| CliError::Usage(format!("--param `{p}`: expected NAME=VALUE")))
+        })
+        .collect()
+}
+
+/// What was evaluated: names and values as text.
+struct Evaluation {
+    info: FamilyInfo,
+    params: Vec<Rational>,
+    names: Vec<String>,
+    values: Vec<String>,
+    note: Option<String>,
+}
+
+pub fn run(args: &EvalArgs) -> CmdResult {
+    let at = parse_exact(&args.at)?;
+    let eval = match args.prec {
+        None => evaluate(args, &at, |q| q.to_f64())?,
+        Some(bits) if (2..=MAX_PREC).contains(&bits) => {
+            evaluate(args, &at, |q| Mpfr::from_rational(bits, q))?
+        }
+        Some(bits) => {
+            return Err(CliError::Usage(format!(
+                "--prec {bits}: expected a precision from 2 to {MAX_PREC} bits"
+            )));
+        }
+    };
+    Ok(render(args, &eval))
+}
+
+fn evaluate<T: Real + Display>(
+    args: &EvalArgs,
+    at: &Rational,
+    make: impl Fn(&Rational) -> T,
+) -> Result<Evaluation, CliError> {
+    let pairs = param_pairs(&args.params)?;
+    let x = make(at);
+    if args.family == SEED000_NONUNIFORM.id {
+        return nonuniform(args, &pairs, &x, &make);
+    }
+    if !args.knots.is_empty() {
+        return Err(CliError::Usage(format!(
+            "--knots applies to {} only",
+            SEED000_NONUNIFORM.id
+        )));
+    }
+    let family = Family::from_id(&args.family)?;
+    let info = family.info();
+    let params = family.params_from_pairs(&pairs, args.allow_outside_range)?;
+    if args.piecewise {
+        let value = piecewise::eval_uniform(family, &x, &params)?;
+        return Ok(Evaluation {
+            info,
+            params,
+            names: vec!["B(n)".into()],
+            values: vec![value.to_string()],
+            note: Some("uniform B-spline basis function on knots 0,1,2,3,4".into()),
+        });
+    }
+    let values = family.eval_at(&x, &params, args.allow_outside_range)?;
+    Ok(Evaluation {
+        info,
+        params,
+        names: info.functions.iter().map(|s| s.to_string()).collect(),
+        values: values.iter().map(|v| v.to_string()).collect(),
+        note: None,
+    })
+}
+
+fn nonuniform<T: Real + Display>(
+    args: &EvalArgs,
+    pairs: &[(String, String)],
+    n: &T,
+    make: &impl Fn(&Rational) -> T,
+) -> Result<Evaluation, CliError> {
+    let info = SEED000_NONUNIFORM;
+    let zeta = Family::Seed000Uniform.params_from_pairs(pairs, args.allow_outside_range)?;
+    let knots: Vec<T> = args
+        .knots
+        .iter()
+        .map(|k| parse_exact(k).map(|q| make(&q)))
+        .collect::<Result<_, CoreError>>()?;
+    check_knots(&knots, 2)?;
+    let (span, local) = locate(&knots, n)?;
+    let theta = local * &info.variable.end(n);
+    let (s, c) = theta.sin_cos();
+    let formulas = NonUniform::new(knots, make(&zeta[0]));
+    let values = formulas.segment(span as i64, &s, &c)?;
+    if values.iter().any(|v| !v.is_finite()) {
+        return Err(CoreError::DivisionByZero {
+            quantity: format!("the segment functions on span {span}"),
+        }
+        .into());
+    }
+    Ok(Evaluation {
+        info,
+        params: zeta,
+        names: info.functions.iter().map(|s| s.to_string()).collect(),
+        values: values.iter().map(|v| v.to_string()).collect(),
+        note: Some(format!(
+            "span j = {span}, local angle t_j = {}",
+            theta.to_f64()
+        )),
+    })
+}
+
+fn render(args: &EvalArgs, e: &Evaluation) -> String {
+    let precision = args.prec.map_or("f64".to_string(), |b| format!("mpfr-{b}"));
+    let params: Vec<(String, String)> = e
+        .info
+        .params
+        .iter()
+        .zip(&e.params)
+        .map(|(p, v)| (p.name.to_string(), v.to_string()))
+        .collect();
+    match args.format {
+        TextOrJson::Json => {
+            let values: serde_json::Map<_, _> = e
+                .names
+                .iter()
+                .zip(&e.values)
+                .map(|(n, v)| (n.clone(), json!(v)))
+                .collect();
+            json(&json!({
+                "family": e.info.id,
+                "citation": e.info.citation,
+                "params": params.iter().map(|(n, v)| (n.clone(), json!(v))).collect::<serde_json::Map<_, _>>(),
+                "at": args.at,
+                "precision": precision,
+                "note": e.note,
+                "values": values,
+            }))
+        }
+        TextOrJson::Text => {
+            let mut out = String::new();
+            let shown: Vec<String> = params.iter().map(|(n, v)| format!("{n}={v}")).collect();
+            let _ = writeln!(
+                out,
+                "{} at {} [{}] ({precision}){}",
+                e.info.id,
+                args.at,
+                shown.join(", "),
+                e.note.as_ref().map_or(String::new(), |n| format!("; {n}"))
+            );
+            for (n, v) in e.names.iter().zip(&e.values) {
+                let _ = writeln!(out, "{n} = {v}");
+            }
+            out
+        }
+    }
+}

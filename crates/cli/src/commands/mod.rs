@@ -1,0 +1,16 @@
+//! One module per subcommand.
+
+pub mod eval;
+pub mod list;
+
+/// Error of a command: a typed library error or a usage problem.
+#[derive(Debug, thiserror::Error)]
+pub enum CliError {
+    #[error(transparent)]
+    Core(#[from] trig_core::CoreError),
+    #[error("{0}")]
+    Usage(String),
+}
+
+/// Result of a command: the text to print.
+pub type CmdResult = Result<String, CliError>;

@@ -1,0 +1,47 @@
+//! `trig-audit`: the command-line front end.
+//!
+//! Every failure is reported as one line `error: …` on standard error with a
+//! nonzero exit status; nothing reachable from here panics on bad input.
+
+mod commands;
+mod format;
+
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+
+use crate::commands::{eval::EvalArgs, list::ListArgs};
+
+/// Machine-checked audits of trigonometric and polynomial spline bases.
+#[derive(Debug, Parser)]
+#[command(name = "trig-audit", version, about)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Print the catalog of bases: id, citation, variable, parameters and ranges.
+    List(ListArgs),
+    /// Evaluate every function of a family at a point (f64, or MPFR with --prec).
+    Eval(EvalArgs),
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::List(args) => commands::list::run(&args),
+        Command::Eval(args) => commands::eval::run(&args),
+    };
+    match result {
+        Ok(text) => {
+            print!("{text}");
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::from(2)
+        }
+    }
+}

@@ -1,0 +1,462 @@
+//! Sparse multivariate polynomials over ℚ in named variables, kept reduced
+//! modulo `s² + c² − 1`.
+//!
+//! Every polynomial is stored in normal form: no monomial contains `s²`
+//! (each `s^k`, `k ≥ 2`, is rewritten with `s² = 1 − c²`). Since
+//! `{cⁱ, s·cⁱ}` is a basis of `ℚ[…][s, c]/(s² + c² − 1)` over the other
+//! variables, the normal form is unique: two polynomials are equal in the
+//! quotient ring exactly when their normal forms are equal, and a normal
+//! form is zero exactly when the element is zero.
+
+use std::collections::btree_map::Entry;
+use std::collections::{BTreeMap, BTreeSet};
+use std::fmt;
+use std::ops::{Add, Mul, Neg, Sub};
+
+use rug::{Integer, Rational};
+
+use crate::monomial::Monomial;
+use crate::var::{COS, SIN, Var};
+
+/// A polynomial `Σ cᵢ·mᵢ` with rational coefficients, in normal form
+/// modulo `s² + c² − 1`. The derived order (used to key denominator
+/// factors) is structural and has no mathematical meaning.
+#[derive(Clone, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct Poly {
+    terms: BTreeMap<Monomial, Rational>,
+}
+
+impl Poly {
+    /// The zero polynomial.
+    pub fn zero() -> Poly {
+        Poly::default()
+    }
+
+    /// The constant `1`.
+    pub fn one() -> Poly {
+        Poly::constant(Rational::from(1))
+    }
+
+    /// The constant `q`.
+    pub fn constant(q: Rational) -> Poly {
+        Poly::term(Monomial::one(), q)
+    }
+
+    /// The integer `n`.
+    pub fn int(n: i64) -> Poly {
+        Poly::constant(Rational::from(n))
+    }
+
+    /// The variable `name`.
+    pub fn var(name: &str) -> Poly {
+        Poly::term(Monomial::var(Var::new(name), 1), Rational::from(1))
+    }
+
+    /// The single term `q·m` (reduced).
+    pub fn term(m: Monomial, q: Rational) -> Poly {
+        let mut p = Poly::zero();
+        p.add_term(m, q);
+        p
+    }
+
+    /// True for the zero polynomial.
+    pub fn is_zero(&self) -> bool {
+        self.terms.is_empty()
+    }
+
+    /// The value when the polynomial is a constant.
+    pub fn as_constant(&self) -> Option<Rational> {
+        match self.terms.len() {
+            0 => Some(Rational::new()),
+            1 => self
+                .terms
+                .iter()
+                .next()
+                .filter(|(m, _)| m.is_one())
+                .map(|(_, q)| q.clone()),
+            _ => None,
+        }
+    }
+
+    /// Number of terms.
+    pub fn len(&self) -> usize {
+        self.terms.len()
+    }
+
+    /// True when there are no terms (the zero polynomial).
+    pub fn is_empty(&self) -> bool {
+        self.terms.is_empty()
+    }
+
+    /// The terms, greatest monomial first (the printing order).
+    pub fn terms(&self) -> impl DoubleEndedIterator<Item = (&Monomial, &Rational)> {
+        self.terms.iter().rev()
+    }
+
+    /// The greatest term.
+    pub fn leading_term(&self) -> Option<(&Monomial, &Rational)> {
+        self.terms.last_key_value()
+    }
+
+    /// Degree in the variable `name`.
+    pub fn degree_in(&self, name: &str) -> u32 {
+        self.terms.keys().map(|m| m.exponent(name)).max().unwrap_or(0)
+    }
+
+    /// Total degree (0 for constants and for zero).
+    pub fn total_degree(&self) -> u64 {
+        self.terms.keys().map(Monomial::degree).max().unwrap_or(0)
+    }
+
+    /// The names of the variables that occur.
+    pub fn variables(&self) -> BTreeSet<String> {
+        self.terms
+            .keys()
+            .flat_map(|m| m.factors().map(|(v, _)| v.name().to_string()))
+            .collect()
+    }
+
+    /// Adds `q·m`, rewriting `s^k` (`k ≥ 2`) as `s^(k mod 2)·(1 − c²)^⌊k/2⌋`.
+    pub(crate) fn add_term(&mut self, m: Monomial, q: Rational) {
+        if q == 0 {
+            return;
+        }
+        let k = m.exponent(SIN);
+        if k < 2 {
+            self.accumulate(m, q);
+            return;
+        }
+        let (rest, _) = m.split(SIN);
+        let base = rest.mul(&Monomial::var(Var::new(SIN), k % 2));
+        let j = k / 2;
+        let mut binom = Integer::from(1);
+        for i in 0..=j {
+            let mut coef = Rational::from(&q * &binom);
+            if i % 2 == 1 {
+                coef = -coef;
+            }
+            self.accumulate(base.mul(&Monomial::var(Var::new(COS), 2 * i)), coef);
+            binom = binom * (j - i) / (i + 1);
+        }
+    }
+
+    fn accumulate(&mut self, m: Monomial, q: Rational) {
+        match self.terms.entry(m) {
+            Entry::Occupied(mut e) => {
+                *e.get_mut() += q;
+                if *e.get() == 0 {
+                    e.remove();
+                }
+            }
+            Entry::Vacant(e) => {
+                e.insert(q);
+            }
+        }
+    }
+
+    /// `q·self`.
+    pub fn scale(&self, q: &Rational) -> Poly {
+        if *q == 0 {
+            return Poly::zero();
+        }
+        Poly {
+            terms: self
+                .terms
+                .iter()
+                .map(|(m, c)| (m.clone(), Rational::from(c * q)))
+                .collect(),
+        }
+    }
+
+    /// `self + q·m·d` in place.
+    fn add_scaled(&mut self, d: &Poly, m: &Monomial, q: &Rational) {
+        for (md, cd) in &d.terms {
+            self.add_term(m.mul(md), Rational::from(q * cd));
+        }
+    }
+
+    /// `selfⁿ`.
+    pub fn pow(&self, n: u32) -> Poly {
+        let mut result = Poly::one();
+        let mut base = self.clone();
+        let mut e = n;
+        while e > 0 {
+            if e & 1 == 1 {
+                result = &result * &base;
+            }
+            e >>= 1;
+            if e > 0 {
+                base = &base * &base;
+            }
+        }
+        result
+    }
+
+    /// The quotient `self / d` in the quotient ring, when it exists
+    /// (`None` when `d` does not divide `self`, or `d = 0`).
+    ///
+    /// Exact and complete. A divisor free of `s` is handled by the division
+    /// algorithm (graded lex order), which for a single divisor leaves
+    /// remainder zero exactly when the division is exact. A divisor
+    /// `d = d₀ + d₁s` is first made free of `s` through its conjugate
+    /// `d̄ = d₀ − d₁s`: `self/d = self·d̄ / (d·d̄)`, and
+    /// `d·d̄ = d₀² − d₁²(1 − c²)`. So `(1 − c²)/s = s` is found.
+    pub fn exact_div(&self, d: &Poly) -> Option<Poly> {
+        if d.is_zero() {
+            return None;
+        }
+        if self.is_zero() {
+            return Some(Poly::zero());
+        }
+        // Degrees in variables other than s, c add up under multiplication
+        // (the quotient ring is an integral domain, free over them).
+        for m in d.terms.keys() {
+            for (v, e) in m.factors() {
+                if !v.is_trig() && e > self.degree_in(v.name()) {
+                    return None;
+                }
+            }
+        }
+        if d.degree_in(SIN) == 0 {
+            return self.divide_free_of_sin(d);
+        }
+        let conj = d.subs(SIN, &-Poly::var(SIN));
+        (self * &conj).divide_free_of_sin(&(d * &conj))
+    }
+
+    /// Division algorithm by a nonzero divisor free of `s` (no reduction
+    /// can occur, so this is division in the polynomial ring).
+    fn divide_free_of_sin(&self, d: &Poly) -> Option<Poly> {
+        let (lm_d, lc_d) = d.leading_term()?;
+        let mut r = self.clone();
+        let mut q = Poly::zero();
+        while let Some((lm_r, lc_r)) = r.leading_term() {
+            let m = lm_r.checked_div(lm_d)?;
+            let coef = Rational::from(lc_r / lc_d);
+            r.add_scaled(d, &m, &-coef.clone());
+            q.add_term(m, coef);
+        }
+        Some(q)
+    }
+
+    /// The positive rational `g` such that `self / g` has coprime integer
+    /// coefficients (zero for the zero polynomial).
+    pub fn content(&self) -> Rational {
+        let mut num = Integer::new();
+        let mut den = Integer::from(1);
+        for q in self.terms.values() {
+            num.gcd_mut(q.numer());
+            den.lcm_mut(q.denom());
+        }
+        Rational::from((num, den))
+    }
+
+    /// `self / content`: coprime integer coefficients, same sign.
+    pub fn primitive_part(&self) -> Poly {
+        if self.is_zero() {
+            return Poly::zero();
+        }
+        self.scale(&self.content().recip())
+    }
+
+    /// `(u, p)` with `self = u·p`, `p` primitive with positive leading
+    /// coefficient (for zero: `(0, 0)`).
+    pub fn canonical(&self) -> (Rational, Poly) {
+        let mut u = self.content();
+        if self.leading_term().is_some_and(|(_, q)| *q < 0) {
+            u = -u;
+        }
+        if u == 0 {
+            return (u, Poly::zero());
+        }
+        let p = self.scale(&u.clone().recip());
+        (u, p)
+    }
+
+    /// The polynomial with the variable `name` replaced by `value`.
+    pub fn subs(&self, name: &str, value: &Poly) -> Poly {
+        let mut powers = vec![Poly::one()];
+        let mut out = Poly::zero();
+        for (m, q) in &self.terms {
+            let (rest, e) = m.split(name);
+            while powers.len() <= e as usize {
+                let next = powers.last().map(|p| p * value).unwrap_or_default();
+                powers.push(next);
+            }
+            out.add_scaled(&powers[e as usize], &rest, q);
+        }
+        out
+    }
+
+    /// The partial derivative `∂/∂name` of this representative.
+    ///
+    /// For `s` and `c` the result depends on the representative (the
+    /// relation `s² + c² = 1` ties them); use a derivation such as
+    /// [`crate::Sym::d_angle`] instead.
+    pub fn diff(&self, name: &str) -> Poly {
+        let v = Var::new(name);
+        let mut out = Poly::zero();
+        for (m, q) in &self.terms {
+            let (rest, e) = m.split(name);
+            if e > 0 {
+                let m = rest.mul(&Monomial::var(v.clone(), e - 1));
+                out.add_term(m, Rational::from(q * e));
+            }
+        }
+        out
+    }
+}
+
+impl fmt::Debug for Poly {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "Poly({self})")
+    }
+}
+
+impl Add<&Poly> for &Poly {
+    type Output = Poly;
+    fn add(self, rhs: &Poly) -> Poly {
+        self.clone() + rhs
+    }
+}
+
+impl Add<&Poly> for Poly {
+    type Output = Poly;
+    fn add(mut self, rhs: &Poly) -> Poly {
+        for (m, q) in &rhs.terms {
+            self.accumulate(m.clone(), q.clone());
+        }
+        self
+    }
+}
+
+impl Sub<&Poly> for &Poly {
+    type Output = Poly;
+    fn sub(self, rhs: &Poly) -> Poly {
+        self.clone() - rhs
+    }
+}
+
+impl Sub<&Poly> for Poly {
+    type Output = Poly;
+    fn sub(mut self, rhs: &Poly) -> Poly {
+        for (m, q) in &rhs.terms {
+            self.accumulate(m.clone(), -q.clone());
+        }
+        self
+    }
+}
+
+impl Mul<&Poly> for &Poly {
+    type Output = Poly;
+    fn mul(self, rhs: &Poly) -> Poly {
+        let mut out = Poly::zero();
+        for (ma, qa) in &self.terms {
+            for (mb, qb) in &rhs.terms {
+                out.add_term(ma.mul(mb), Rational::from(qa * qb));
+            }
+        }
+        out
+    }
+}
+
+impl Mul<&Poly> for Poly {
+    type Output = Poly;
+    fn mul(self, rhs: &Poly) -> Poly {
+        &self * rhs
+    }
+}
+
+impl Neg for Poly {
+    type Output = Poly;
+    fn neg(mut self) -> Poly {
+        for q in self.terms.values_mut() {
+            *q = -std::mem::take(q);
+        }
+        self
+    }
+}
+
+impl Neg for &Poly {
+    type Output = Poly;
+    fn neg(self) -> Poly {
+        -self.clone()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn v(n: &str) -> Poly {
+        Poly::var(n)
+    }
+
+    fn q(n: i64, d: i64) -> Poly {
+        Poly::constant(Rational::from((n, d)))
+    }
+
+    #[test]
+    fn pythagoras_reduces_to_zero() {
+        let p = v("s").pow(2) + &v("c").pow(2) - &Poly::one();
+        assert!(p.is_zero());
+        let p = (v("s") + &v("c")).pow(2) - &(q(2, 1) * &v("s") * &v("c")) - &Poly::one();
+        assert!(p.is_zero());
+    }
+
+    #[test]
+    fn high_powers_of_s() {
+        // s⁵ = s(1 − c²)²
+        let lhs = v("s").pow(5);
+        let omc2 = Poly::one() - &v("c").pow(2);
+        assert_eq!(lhs, v("s") * &omc2 * &omc2);
+        assert_eq!(lhs.degree_in("s"), 1);
+    }
+
+    #[test]
+    fn exact_division() {
+        let a = v("m") + &q(2, 1);
+        let b = v("beta") - &v("s");
+        let p = &a * &b;
+        assert_eq!(p.exact_div(&a), Some(b.clone()));
+        assert_eq!(p.exact_div(&b), Some(a.clone()));
+        assert_eq!(p.exact_div(&(v("m") + &q(1, 1))), None);
+        assert_eq!(a.exact_div(&Poly::zero()), None);
+        // (1 − c)(1 + c) = s²: divisible through the relation
+        let s2 = v("s").pow(2);
+        assert_eq!(s2.exact_div(&(Poly::one() - &v("c"))), Some(Poly::one() + &v("c")));
+        assert_eq!(s2.exact_div(&v("s")), Some(v("s")));
+        let sp = (v("s") + &v("c")) * &(v("m") - &v("s"));
+        assert_eq!(sp.exact_div(&(v("s") + &v("c"))), Some(v("m") - &v("s")));
+        assert_eq!(sp.exact_div(&(v("s") - &v("c"))), None);
+        // s·c·(1+m) / (s·c)
+        let sc = &v("s") * &v("c");
+        assert_eq!((&sc * &a).exact_div(&sc), Some(a));
+    }
+
+    #[test]
+    fn content_and_canonical() {
+        let p = q(-3, 2) * &v("m") + &q(9, 4);
+        assert_eq!(p.content(), Rational::from((3, 4)));
+        assert_eq!(p.primitive_part(), q(-2, 1) * &v("m") + &q(3, 1));
+        let (u, c) = p.canonical();
+        assert_eq!(u, Rational::from((-3, 4)));
+        assert_eq!(c, q(2, 1) * &v("m") - &q(3, 1));
+    }
+
+    #[test]
+    fn substitution_and_derivative() {
+        let p = v("m").pow(2) * &v("s") + &v("m");
+        let r = p.subs("m", &(v("beta") + &Poly::one()));
+        let b1 = v("beta") + &Poly::one();
+        assert_eq!(r, &b1 * &b1 * &v("s") + &b1);
+        // substituting c := s gives s·s = 1 − c² after reduction
+        assert_eq!(v("c").pow(2).subs("c", &v("s")), Poly::one() - &v("c").pow(2));
+        assert_eq!(p.diff("m"), q(2, 1) * &v("m") * &v("s") + &Poly::one());
+        assert_eq!(p.diff("beta"), Poly::zero());
+        assert_eq!(p.variables().into_iter().collect::<Vec<_>>(), ["m", "s"]);
+        assert_eq!(p.total_degree(), 3);
+        assert_eq!(q(5, 3).as_constant(), Some(Rational::from((5, 3))));
+        assert_eq!(p.as_constant(), None);
+    }
+}

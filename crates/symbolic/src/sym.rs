@@ -1,0 +1,430 @@
+//! [`Sym`]: an element of the field of fractions of
+//! `ℚ[vars][s, c]/(s² + c² − 1)`, as a numerator over a factored
+//! denominator.
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::fmt;
+
+use rug::Rational;
+use rug::ops::Pow;
+
+use crate::error::SymError;
+use crate::monomial::Monomial;
+use crate::poly::Poly;
+use crate::var::PI;
+
+/// An exact symbolic value `num / Π fᵢ^eᵢ`.
+///
+/// Invariants (the canonical form), restored after every operation:
+/// * `num` and every factor `fᵢ` are reduced modulo `s² + c² − 1`;
+/// * every factor is non-constant, primitive (coprime integer
+///   coefficients), has a positive leading coefficient, and is either a
+///   single variable or has no monomial content; constants are folded into
+///   `num`;
+/// * no factor divides `num` (cancellation by exact division);
+/// * zero is `0` with no factors.
+///
+/// Addition uses the least common denominator by exponents, so
+/// `a/d + b/d = (a + b)/d`. Equality (`==`, [`Sym::equals`]) is
+/// mathematical equality, decided exactly by cross-multiplication.
+#[derive(Clone)]
+pub struct Sym {
+    num: Poly,
+    den: BTreeMap<Poly, u32>,
+}
+
+impl Sym {
+    /// The polynomial `p` (no denominator).
+    pub fn from_poly(p: Poly) -> Sym {
+        Sym {
+            num: p,
+            den: BTreeMap::new(),
+        }
+    }
+
+    /// Zero.
+    pub fn zero() -> Sym {
+        Sym::from_poly(Poly::zero())
+    }
+
+    /// One.
+    pub fn one() -> Sym {
+        Sym::from_poly(Poly::one())
+    }
+
+    /// The integer `n`.
+    pub fn int(n: i64) -> Sym {
+        Sym::from_poly(Poly::int(n))
+    }
+
+    /// The rational `q`.
+    pub fn rational(q: Rational) -> Sym {
+        Sym::from_poly(Poly::constant(q))
+    }
+
+    /// The variable `name` (any string; `s`, `c` are `sin θ`, `cos θ`).
+    pub fn var(name: &str) -> Sym {
+        Sym::from_poly(Poly::var(name))
+    }
+
+    /// The symbol `π` (the variable `pi`).
+    pub fn pi() -> Sym {
+        Sym::var(PI)
+    }
+
+    /// True when the value is exactly zero.
+    pub fn is_zero(&self) -> bool {
+        self.num.is_zero()
+    }
+
+    /// The value when it is a constant.
+    pub fn as_rational(&self) -> Option<Rational> {
+        if self.den.is_empty() {
+            self.num.as_constant()
+        } else {
+            None
+        }
+    }
+
+    /// The numerator.
+    pub fn numerator(&self) -> &Poly {
+        &self.num
+    }
+
+    /// The denominator as factors with multiplicities (empty for a
+    /// polynomial).
+    pub fn denominator(&self) -> &BTreeMap<Poly, u32> {
+        &self.den
+    }
+
+    /// The denominator multiplied out.
+    pub fn denominator_poly(&self) -> Poly {
+        self.den
+            .iter()
+            .fold(Poly::one(), |acc, (f, e)| acc * &f.pow(*e))
+    }
+
+    /// The names of the variables that occur.
+    pub fn variables(&self) -> BTreeSet<String> {
+        let mut out = self.num.variables();
+        for f in self.den.keys() {
+            out.extend(f.variables());
+        }
+        out
+    }
+
+    /// Exact mathematical equality.
+    pub fn equals(&self, other: &Sym) -> bool {
+        if self.den == other.den {
+            return self.num == other.num;
+        }
+        let l = common_denominator(&self.den, &other.den);
+        self.lift(&l) == other.lift(&l)
+    }
+
+    /// `self / other`, or `None` when `other` is exactly zero.
+    pub fn checked_div(&self, other: &Sym) -> Option<Sym> {
+        if other.is_zero() {
+            return None;
+        }
+        let mut num = other
+            .den
+            .iter()
+            .fold(self.num.clone(), |acc, (f, e)| acc * &f.pow(*e));
+        let mut den = self.den.clone();
+        insert_factor(&mut num, &mut den, &other.num, 1);
+        Some(cancel(num, den))
+    }
+
+    /// `self ± other` (`negate` selects `−`).
+    pub(crate) fn add_signed(&self, other: &Sym, negate: bool) -> Sym {
+        let combine = |a: Poly, b: &Poly| if negate { a - b } else { a + b };
+        if self.den == other.den {
+            return cancel(combine(self.num.clone(), &other.num), self.den.clone());
+        }
+        let l = common_denominator(&self.den, &other.den);
+        cancel(combine(self.lift(&l), &other.lift(&l)), l)
+    }
+
+    /// `self · other`.
+    pub(crate) fn mul_ref(&self, other: &Sym) -> Sym {
+        if self.is_zero() || other.is_zero() {
+            return Sym::zero();
+        }
+        let mut num = &self.num * &other.num;
+        let mut den = self.den.clone();
+        for (f, e) in &other.den {
+            insert_factor(&mut num, &mut den, f, *e);
+        }
+        cancel(num, den)
+    }
+
+    /// `−self`.
+    pub(crate) fn negated(self) -> Sym {
+        Sym {
+            num: -self.num,
+            den: self.den,
+        }
+    }
+
+    /// The numerator over the multiple `l` of the denominator.
+    fn lift(&self, l: &BTreeMap<Poly, u32>) -> Poly {
+        l.iter().fold(self.num.clone(), |acc, (f, e)| {
+            let own = self.den.get(f).copied().unwrap_or(0);
+            if *e > own { acc * &f.pow(e - own) } else { acc }
+        })
+    }
+
+    /// The value with the variable `name` replaced by `value`, or an error
+    /// when a denominator factor becomes zero.
+    pub fn try_subs(&self, name: &str, value: &Sym) -> Result<Sym, SymError> {
+        let num = subs_poly(&self.num, name, value);
+        let mut den = Sym::one();
+        for (f, e) in &self.den {
+            let fv = subs_poly(f, name, value);
+            if fv.is_zero() {
+                return Err(SymError::ZeroDenominator(f.to_string()));
+            }
+            den = den.mul_ref(&pow(&fv, *e));
+        }
+        num.checked_div(&den)
+            .ok_or_else(|| SymError::ZeroDenominator(self.denominator_poly().to_string()))
+    }
+
+    /// The value with the variable `name` replaced by `value`.
+    ///
+    /// # Panics
+    /// When a denominator factor becomes zero; see [`Sym::try_subs`].
+    pub fn subs(&self, name: &str, value: &Sym) -> Sym {
+        self.try_subs(name, value)
+            .unwrap_or_else(|e| panic!("Sym::subs({name} := {value}): {e}"))
+    }
+}
+
+/// `xⁿ` by repeated squaring.
+fn pow(x: &Sym, n: u32) -> Sym {
+    let mut result = Sym::one();
+    let mut base = x.clone();
+    let mut e = n;
+    while e > 0 {
+        if e & 1 == 1 {
+            result = result.mul_ref(&base);
+        }
+        e >>= 1;
+        if e > 0 {
+            base = base.mul_ref(&base);
+        }
+    }
+    result
+}
+
+/// The polynomial `p` with `name := value`.
+fn subs_poly(p: &Poly, name: &str, value: &Sym) -> Sym {
+    if value.den.is_empty() {
+        return Sym::from_poly(p.subs(name, &value.num));
+    }
+    let mut groups: BTreeMap<u32, Poly> = BTreeMap::new();
+    for (m, q) in p.terms() {
+        let (rest, e) = m.split(name);
+        groups.entry(e).or_default().add_term(rest, q.clone());
+    }
+    groups.into_iter().fold(Sym::zero(), |acc, (e, g)| {
+        acc.add_signed(&Sym::from_poly(g).mul_ref(&pow(value, e)), false)
+    })
+}
+
+/// The least common multiple of two factored denominators by exponents.
+fn common_denominator(a: &BTreeMap<Poly, u32>, b: &BTreeMap<Poly, u32>) -> BTreeMap<Poly, u32> {
+    let mut l = a.clone();
+    for (f, e) in b {
+        let x = l.entry(f.clone()).or_insert(0);
+        *x = (*x).max(*e);
+    }
+    l
+}
+
+/// Multiplies the denominator by `pᵉ` (`p ≠ 0`), keeping factors
+/// canonical: the unit and the content go to `num`, the monomial content is
+/// split into single variables, and a factor already present (or dividing
+/// `p` exactly) has its exponent raised.
+fn insert_factor(num: &mut Poly, den: &mut BTreeMap<Poly, u32>, p: &Poly, e: u32) {
+    let (u, p) = p.canonical();
+    *num = num.scale(&u.pow(e).recip());
+    let content = p
+        .terms()
+        .map(|(m, _)| m.clone())
+        .reduce(|a, b| a.gcd(&b))
+        .unwrap_or_default();
+    let mut p = p;
+    if !content.is_one() {
+        for (v, k) in content.factors() {
+            *den.entry(Poly::var(v.name())).or_insert(0) += k * e;
+        }
+        let monomial = Poly::term(content, Rational::from(1));
+        p = p.exact_div(&monomial).unwrap_or(p);
+    }
+    if p.as_constant().is_some() {
+        return;
+    }
+    if let Some(x) = den.get_mut(&p) {
+        *x += e;
+        return;
+    }
+    let found = den
+        .keys()
+        .find_map(|f| p.exact_div(f).map(|q| (f.clone(), q)));
+    match found {
+        Some((f, q)) => {
+            *den.entry(f).or_insert(0) += e;
+            insert_factor(num, den, &q, e);
+        }
+        None => {
+            den.insert(p, e);
+        }
+    }
+}
+
+/// Removes from `den` every factor that divides `num` exactly, as often as
+/// it does.
+fn cancel(mut num: Poly, den: BTreeMap<Poly, u32>) -> Sym {
+    if num.is_zero() {
+        return Sym::zero();
+    }
+    let mut out = BTreeMap::new();
+    for (f, mut e) in den {
+        while e > 0 {
+            match num.exact_div(&f) {
+                Some(q) => {
+                    num = q;
+                    e -= 1;
+                }
+                None => break,
+            }
+        }
+        if e > 0 {
+            out.insert(f, e);
+        }
+    }
+    Sym { num, den: out }
+}
+
+impl PartialEq for Sym {
+    fn eq(&self, other: &Self) -> bool {
+        self.equals(other)
+    }
+}
+
+impl Eq for Sym {}
+
+impl fmt::Debug for Sym {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "Sym({self})")
+    }
+}
+
+impl From<Poly> for Sym {
+    fn from(p: Poly) -> Sym {
+        Sym::from_poly(p)
+    }
+}
+
+/// The monomial `1`, for callers building polynomials term by term.
+impl Default for Sym {
+    fn default() -> Sym {
+        Sym::zero()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn v(n: &str) -> Sym {
+        Sym::var(n)
+    }
+
+    #[test]
+    fn pythagoras_is_zero() {
+        let x = v("s") * &v("s") + &(v("c") * &v("c")) - &Sym::int(1);
+        assert!(x.is_zero());
+        let y = (v("s") + &v("c")) * &(v("s") + &v("c")) - &(Sym::int(2) * &v("s") * &v("c"))
+            - &Sym::int(1);
+        assert!(y.is_zero());
+    }
+
+    #[test]
+    fn equal_denominators_stay() {
+        let d = v("beta") + &Sym::int(1);
+        let a = v("m") / &d;
+        let b = v("s") / &d;
+        let sum = a + &b;
+        assert_eq!(sum.denominator().len(), 1);
+        assert_eq!(sum.denominator().get(d.numerator()), Some(&1));
+        assert_eq!(sum.numerator(), (v("m") + &v("s")).numerator());
+    }
+
+    #[test]
+    fn cancellation_to_one() {
+        let d = v("beta") + &Sym::int(1);
+        let x = v("beta") / &d + &(Sym::int(1) / &d);
+        assert_eq!(x.as_rational(), Some(Rational::from(1)));
+        assert!(x.denominator().is_empty());
+    }
+
+    #[test]
+    fn factors_are_canonical() {
+        // 1/(2 − 2β) = (−1/2)/(β − 1)
+        let x = Sym::int(1) / &(Sym::int(2) - &(Sym::int(2) * &v("beta")));
+        let f = v("beta") - &Sym::int(1);
+        assert_eq!(x.denominator().get(f.numerator()), Some(&1));
+        assert_eq!(x.numerator(), &Poly::constant(Rational::from((-1, 2))));
+        // 1/(m² s + m s) = 1/(m·s·(m + 1))
+        let y = Sym::int(1) / &(v("m") * &v("m") * &v("s") + &(v("m") * &v("s")));
+        assert_eq!(y.denominator().len(), 3);
+        // (β+1)² merges with the existing β + 1
+        let b1 = v("beta") + &Sym::int(1);
+        let z = (Sym::int(1) / &b1) / &(b1.clone() * &b1);
+        assert_eq!(z.denominator().get(b1.numerator()), Some(&3));
+        // a product with the same factor: exponents add
+        let w = (v("m") / &b1) * &(v("s") / &b1);
+        assert_eq!(w.denominator().get(b1.numerator()), Some(&2));
+        // s²/s cancels through the relation
+        assert_eq!(v("s") * &v("s") / &v("s"), v("s"));
+        assert!((v("s") * &v("s") / &v("s")).denominator().is_empty());
+    }
+
+    #[test]
+    fn division_by_zero() {
+        let zero = v("s") * &v("s") + &(v("c") * &v("c")) - &Sym::int(1);
+        assert!(Sym::int(1).checked_div(&zero).is_none());
+        let r = std::panic::catch_unwind(|| Sym::int(1) / &Sym::zero());
+        assert!(r.is_err());
+    }
+
+    #[test]
+    fn equality_is_mathematical() {
+        let b1 = v("beta") + &Sym::int(1);
+        let a = (v("beta") * &v("beta") - &Sym::int(1)) / &(b1.clone() * &v("m"));
+        let b = (v("beta") - &Sym::int(1)) / &v("m");
+        assert!(a.equals(&b));
+        assert_eq!(a, b);
+        assert_ne!(a, v("beta") / &v("m"));
+        assert_eq!(Sym::rational(Rational::from((3, 4))).as_rational(), Some(Rational::from((3, 4))));
+        assert_eq!(a.variables().into_iter().collect::<Vec<_>>(), ["beta", "m"]);
+    }
+
+    #[test]
+    fn substitution() {
+        let b1 = v("beta") + &Sym::int(1);
+        let x = v("beta") / &b1 * &v("s");
+        let y = x.subs("beta", &(Sym::int(1) / &v("m")));
+        // (1/m)/(1/m + 1)·s = s/(1 + m)
+        assert_eq!(y, v("s") / &(v("m") + &Sym::int(1)));
+        assert_eq!(x.subs("s", &Sym::int(2)), Sym::int(2) * &v("beta") / &b1);
+        assert!(x.try_subs("beta", &Sym::int(-1)).is_err());
+        // substituting into the relation: s := c makes s² = c², so 1 − c² = c²
+        let z = (v("s") * &v("s")).subs("c", &Sym::rational(Rational::from((3, 5))));
+        assert_eq!(z.as_rational(), Some(Rational::from((16, 25))));
+        let _unused = Monomial::one();
+    }
+}

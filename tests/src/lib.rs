@@ -1,0 +1,68 @@
+//! Helpers for the end-to-end tests: locate (building if needed) the
+//! `trig-audit` binary of this workspace and run it.
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+use std::sync::OnceLock;
+
+/// Path of the `trig-audit` binary in this workspace's target directory,
+/// built once (in the test profile's sibling `debug` directory) if missing.
+pub fn binary() -> PathBuf {
+    static BIN: OnceLock<PathBuf> = OnceLock::new();
+    BIN.get_or_init(|| {
+        let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+            .parent()
+            .expect("workspace root")
+            .to_path_buf();
+        let target = std::env::var_os("CARGO_TARGET_DIR")
+            .map(PathBuf::from)
+            .unwrap_or_else(|| root.join("target"));
+        let status = Command::new(env!("CARGO"))
+            .args([
+                "build",
+                "--quiet",
+                "-p",
+                "trig-audit",
+                "--bin",
+                "trig-audit",
+            ])
+            .current_dir(&root)
+            .status()
+            .expect("run cargo build");
+        assert!(status.success(), "building trig-audit failed");
+        target.join("debug").join("trig-audit")
+    })
+    .clone()
+}
+
+/// Runs `trig-audit` with `args`.
+pub fn run(args: &[&str]) -> Output {
+    Command::new(binary())
+        .args(args)
+        .output()
+        .expect("run trig-audit")
+}
+
+/// Runs `trig-audit`, asserts success, returns standard output.
+pub fn stdout_ok(args: &[&str]) -> String {
+    let out = run(args);
+    assert!(
+        out.status.success(),
+        "trig-audit {args:?} failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).expect("utf-8 output")
+}
+
+/// Runs `trig-audit`, asserts failure with a one-line `error: …` message,
+/// returns that line.
+pub fn error_line(args: &[&str]) -> String {
+    let out = run(args);
+    assert!(!out.status.success(), "trig-audit {args:?} should fail");
+    let err = String::from_utf8(out.stderr).expect("utf-8 error");
+    let lines: Vec<&str> = err.lines().collect();
+    assert_eq!(lines.len(), 1, "one-line error expected, got {err:?}");
+    assert!(lines[0].starts_with("error: "), "{err}");
+    assert!(out.stdout.is_empty(), "nothing on stdout when failing");
+    lines[0].to_string()
+}

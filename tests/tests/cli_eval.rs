@@ -1,0 +1,211 @@
+//! End-to-end tests of `trig-audit list` and `trig-audit eval`.
+
+use trig_e2e::{error_line, stdout_ok};
+
+#[test]
+fn list_shows_every_catalog_entry_with_citations() {
+    let out = stdout_ok(&["list"]);
+    for id in [
+        "thesis-quadratic",
+        "thesis-cubic",
+        "han",
+        "majeed-qayyum",
+        "usman",
+        "han-listing",
+        "seed000-blending",
+        "seed000-uniform",
+        "seed000-nonuniform",
+        "seed002-quartic",
+        "eh",
+        "hermite",
+        "bernstein3",
+        "bspline3",
+        "seed003",
+    ] {
+        assert!(out.lines().any(|l| l == id), "missing {id}");
+    }
+    assert!(out.contains("seed 001 (thesis), (3.7)"));
+    assert!(out.contains("no formulas in our copy"));
+    let json: serde_json::Value = serde_json::from_str(&stdout_ok(&["list", "--format", "json"]))
+        .expect("list --format json is JSON");
+    assert_eq!(json.as_array().map(Vec::len), Some(15));
+}
+
+#[test]
+fn eval_at_256_bits_prints_mpfr_digits_not_f64_digits() {
+    let out = stdout_ok(&[
+        "eval",
+        "thesis-cubic",
+        "--param",
+        "m=0.6",
+        "--at",
+        "0.25",
+        "--prec",
+        "256",
+    ]);
+    // b3(1/4; 3/5) = (1−c)²(1−3c/5), c = cos(π/8); digits from an independent
+    // evaluation with `bc -l` at scale 60:
+    // .002582370291014204890701073050569838390747138200367801381055
+    let b3 = out
+        .lines()
+        .find(|l| l.starts_with("b3 = "))
+        .expect("b3 line");
+    assert!(
+        b3.contains("2.582370291014204890701073050569838390747138200367801381055"),
+        "{b3}"
+    );
+    let f64_out = stdout_ok(&["eval", "thesis-cubic", "--param", "m=0.6", "--at", "0.25"]);
+    let b3_f64 = f64_out
+        .lines()
+        .find(|l| l.starts_with("b3 = "))
+        .expect("b3 line");
+    assert!(b3_f64.len() < 40, "f64 output is short: {b3_f64}");
+}
+
+#[test]
+fn eval_every_family_in_f64_and_mpfr() {
+    let cases: &[(&str, &[&str])] = &[
+        ("thesis-quadratic", &["beta=1"]),
+        ("thesis-cubic", &["m=-2"]),
+        ("han", &["lambda=1"]),
+        ("majeed-qayyum", &["eta=2"]),
+        ("usman", &["alpha=1"]),
+        ("han-listing", &["lambda=-1"]),
+        ("seed000-blending", &["zeta=4"]),
+        ("seed000-uniform", &["zeta=0"]),
+        ("seed002-quartic", &[]),
+        ("eh", &["lambda=0.5", "mu=-1"]),
+        ("hermite", &[]),
+        ("bernstein3", &[]),
+        ("bspline3", &[]),
+    ];
+    for (family, params) in cases {
+        for prec in [None, Some("256")] {
+            let mut args = vec!["eval", family, "--at", "0.5", "--format", "json"];
+            for p in *params {
+                args.extend(["--param", p]);
+            }
+            if let Some(p) = prec {
+                args.extend(["--prec", p]);
+            }
+            let json: serde_json::Value =
+                serde_json::from_str(&stdout_ok(&args)).expect("eval --format json is JSON");
+            let values = json["values"].as_object().expect("values");
+            assert!(!values.is_empty(), "{family}");
+        }
+    }
+}
+
+#[test]
+fn bad_input_gives_one_line_errors() {
+    assert!(error_line(&["eval", "no-such-family", "--at", "0"]).contains("unknown family"));
+    assert!(
+        error_line(&["eval", "thesis-cubic", "--param", "m", "--at", "0"]).contains("NAME=VALUE")
+    );
+    assert!(
+        error_line(&["eval", "thesis-cubic", "--param", "m=abc", "--at", "0"])
+            .contains("cannot read")
+    );
+    assert!(
+        error_line(&["eval", "thesis-cubic", "--param", "m=2", "--at", "0"])
+            .contains("outside the published range")
+    );
+    assert!(
+        error_line(&["eval", "thesis-cubic", "--param", "k=2", "--at", "0"])
+            .contains("no parameter")
+    );
+    assert!(error_line(&["eval", "thesis-cubic", "--at", "0"]).contains("needs parameter"));
+    assert!(
+        error_line(&["eval", "thesis-cubic", "--param", "m=0", "--at", "1.5"])
+            .contains("outside the domain")
+    );
+    assert!(
+        error_line(&["eval", "thesis-cubic", "--param", "m=0", "--at", "nan"])
+            .contains("not a finite")
+    );
+    assert!(
+        error_line(&[
+            "eval",
+            "thesis-cubic",
+            "--param",
+            "m=0",
+            "--at",
+            "0",
+            "--prec",
+            "1"
+        ])
+        .contains("--prec")
+    );
+    assert!(error_line(&["eval", "seed003", "--at", "0"]).contains("no formulas"));
+    assert!(
+        error_line(&[
+            "eval",
+            "thesis-quadratic",
+            "--param",
+            "beta=-1",
+            "--at",
+            "0.5",
+            "--allow-outside-range"
+        ])
+        .contains("division by zero")
+    );
+    assert!(
+        error_line(&[
+            "eval",
+            "seed000-nonuniform",
+            "--param",
+            "zeta=1",
+            "--knots",
+            "0,1,1,2",
+            "--at",
+            "0.5"
+        ])
+        .contains("zero-length")
+    );
+    assert!(
+        error_line(&[
+            "eval",
+            "seed000-nonuniform",
+            "--param",
+            "zeta=1",
+            "--knots",
+            "0,1,2,3,4",
+            "--at",
+            "0.5"
+        ])
+        .contains("undefined")
+    );
+}
+
+#[test]
+fn outside_range_is_allowed_on_request() {
+    let out = stdout_ok(&[
+        "eval",
+        "thesis-cubic",
+        "--param",
+        "m=3",
+        "--at",
+        "0.5",
+        "--allow-outside-range",
+    ]);
+    assert!(out.contains("b0 = "));
+}
+
+#[test]
+fn uniform_knots_make_the_printed_c_j2_divide_by_zero() {
+    let knots = (0..=16)
+        .map(|k| k.to_string())
+        .collect::<Vec<_>>()
+        .join(",");
+    let err = error_line(&[
+        "eval",
+        "seed000-nonuniform",
+        "--param",
+        "zeta=1",
+        "--knots",
+        &knots,
+        "--at",
+        "8.5",
+    ]);
+    assert!(err.contains("division by zero in c_{8,2}"), "{err}");
+}
