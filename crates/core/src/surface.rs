@@ -55,7 +55,10 @@ impl<T: Coord> TensorSurface<T> {
 /// `[U]` the rows (5.5), (5.8), `[A]` the 7×4 matrix (5.6) and `[V]` the
 /// control points (5.7) (`V[i][j] = P_{i,j}`).
 pub fn thesis_matrix_form(m: f64, grid: &[[Point3<f64>; 4]; 4], u: f64, v: f64) -> Point3<f64> {
-    let a = SMatrix::<f64, 7, 4>::from_fn(|r, c| surface_matrix_a(&m)[r][c].clone());
+    let a = {
+        let entries = surface_matrix_a(&m);
+        SMatrix::<f64, 7, 4>::from_fn(|r, c| entries[r][c])
+    };
     let row = |x: f64| {
         let (s, c) = (x * std::f64::consts::FRAC_PI_2).sin_cos();
         SMatrix::<f64, 1, 7>::from_row_slice(&surface_row_t(&s, &c))

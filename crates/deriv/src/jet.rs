@@ -8,9 +8,9 @@
 //! The arithmetic is generic over [`Ring`] and uses nothing else: constants
 //! are built from existing values (`x.int(n)`, `x.rational(q)`), never from
 //! f64 literals, so the same code runs on f64, [`trig_core::Mpfr`] and exact
-//! rings. Each rule is written once: the Cauchy product in [`mul_coeffs`],
-//! the quotient recurrence in [`div_coeffs`], and the joint sine/cosine
-//! recurrence in [`sin_cos_coeffs`]; the operator impls only delegate.
+//! rings. Each rule is written once: the Cauchy product in `mul_coeffs`,
+//! the quotient recurrence in `div_coeffs`, and the joint sine/cosine
+//! recurrence in `sin_cos_coeffs`; the operator impls only delegate.
 //!
 //! Comparison (`PartialEq`, `PartialOrd`) looks at the value (constant term)
 //! only, as in `num-dual`, so that domain checks such as

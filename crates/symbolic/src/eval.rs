@@ -1,0 +1,200 @@
+//! Evaluation of [`Poly`] and [`Sym`] at assigned values: exactly in ℚ, or
+//! in any [`trig_core::Ring`] (f64, [`trig_core::Mpfr`], …).
+//!
+//! Evaluation is of the reduced representative, so it is a ring
+//! homomorphism when the values of `s` and `c` satisfy `s² + c² = 1`
+//! (e.g. `s = 2k/(1+k²)`, `c = (1−k²)/(1+k²)`), and for any values when the
+//! expression contains neither.
+
+use std::collections::{BTreeMap, BTreeSet};
+
+use rug::Rational;
+use rug::ops::Pow;
+use trig_core::Ring;
+
+use crate::error::SymError;
+use crate::poly::Poly;
+use crate::sym::Sym;
+
+/// The operations evaluation needs, for ℚ and for any [`Ring`].
+trait Field: Clone {
+    fn constant(&self, q: &Rational) -> Self;
+    fn add(self, other: &Self) -> Self;
+    fn mul(self, other: &Self) -> Self;
+    fn div(self, other: &Self) -> Self;
+    fn pow(&self, n: u32) -> Self;
+    fn is_zero(&self) -> bool;
+}
+
+impl Field for Rational {
+    fn constant(&self, q: &Rational) -> Self {
+        q.clone()
+    }
+    fn add(self, other: &Self) -> Self {
+        self + other
+    }
+    fn mul(self, other: &Self) -> Self {
+        self * other
+    }
+    fn div(self, other: &Self) -> Self {
+        self / other
+    }
+    fn pow(&self, n: u32) -> Self {
+        self.clone().pow(n)
+    }
+    fn is_zero(&self) -> bool {
+        *self == 0
+    }
+}
+
+/// A [`Ring`] value seen as a [`Field`].
+#[derive(Clone)]
+struct InRing<T>(T);
+
+impl<T: Ring> Field for InRing<T> {
+    fn constant(&self, q: &Rational) -> Self {
+        InRing(self.0.rational(q))
+    }
+    fn add(self, other: &Self) -> Self {
+        InRing(self.0 + &other.0)
+    }
+    fn mul(self, other: &Self) -> Self {
+        InRing(self.0 * &other.0)
+    }
+    fn div(self, other: &Self) -> Self {
+        InRing(self.0 / &other.0)
+    }
+    fn pow(&self, n: u32) -> Self {
+        InRing(self.0.powi(n))
+    }
+    fn is_zero(&self) -> bool {
+        self.0.is_zero()
+    }
+}
+
+type Values<F> = BTreeMap<String, F>;
+
+/// Looks up every variable once.
+fn bind<F>(names: BTreeSet<String>, assign: &dyn Fn(&str) -> Option<F>) -> Result<Values<F>, SymError> {
+    names
+        .into_iter()
+        .map(|n| match assign(&n) {
+            Some(x) => Ok((n, x)),
+            None => Err(SymError::UnboundVariable(n)),
+        })
+        .collect()
+}
+
+/// `p` at bound values (every variable of `p` is bound).
+fn eval_poly<F: Field>(p: &Poly, like: &F, values: &Values<F>) -> F {
+    p.terms().fold(like.constant(&Rational::new()), |acc, (m, q)| {
+        let term = m.factors().fold(like.constant(q), |t, (v, e)| {
+            t.mul(&values[v.name()].pow(e))
+        });
+        acc.add(&term)
+    })
+}
+
+/// `x` at bound values, checking every denominator factor.
+fn eval_sym<F: Field>(x: &Sym, like: &F, values: &Values<F>) -> Result<F, SymError> {
+    let mut den = like.constant(&Rational::from(1));
+    for (f, e) in x.denominator() {
+        let value = eval_poly(f, like, values);
+        if value.is_zero() {
+            return Err(SymError::ZeroDenominator(f.to_string()));
+        }
+        den = den.mul(&value.pow(*e));
+    }
+    Ok(eval_poly(x.numerator(), like, values).div(&den))
+}
+
+impl Poly {
+    /// The exact value at the assigned rationals.
+    pub fn eval_rational(&self, assign: &dyn Fn(&str) -> Option<Rational>) -> Result<Rational, SymError> {
+        let values = bind(self.variables(), assign)?;
+        Ok(eval_poly(self, &Rational::new(), &values))
+    }
+
+    /// The value in the ring of `like` at the assigned values; coefficients
+    /// are converted with `like.rational(q)`.
+    pub fn eval<T: Ring>(&self, like: &T, assign: &dyn Fn(&str) -> Option<T>) -> Result<T, SymError> {
+        let values = bind(self.variables(), &|n: &str| assign(n).map(InRing))?;
+        Ok(eval_poly(self, &InRing(like.clone()), &values).0)
+    }
+}
+
+impl Sym {
+    /// The exact value at the assigned rationals; an error for an unbound
+    /// variable or a vanishing denominator factor.
+    pub fn eval_rational(&self, assign: &dyn Fn(&str) -> Option<Rational>) -> Result<Rational, SymError> {
+        let values = bind(self.variables(), assign)?;
+        eval_sym(self, &Rational::new(), &values)
+    }
+
+    /// The value in the ring of `like` (f64, MPFR, …) at the assigned
+    /// values; coefficients are converted with `like.rational(q)`, and a
+    /// denominator factor with `is_zero()` is an error.
+    pub fn eval<T: Ring>(&self, like: &T, assign: &dyn Fn(&str) -> Option<T>) -> Result<T, SymError> {
+        let values = bind(self.variables(), &|n: &str| assign(n).map(InRing))?;
+        eval_sym(self, &InRing(like.clone()), &values).map(|x| x.0)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use trig_core::Mpfr;
+
+    fn v(n: &str) -> Sym {
+        Sym::var(n)
+    }
+
+    /// `(m² s + 3/2)/(m + c)` at m = 1/3, s = 3/5, c = 4/5.
+    fn sample() -> Sym {
+        (v("m") * &v("m") * &v("s") + &Sym::rational(Rational::from((3, 2)))) / &(v("m") + &v("c"))
+    }
+
+    fn exact(name: &str) -> Option<Rational> {
+        match name {
+            "m" => Some(Rational::from((1, 3))),
+            "s" => Some(Rational::from((3, 5))),
+            "c" => Some(Rational::from((4, 5))),
+            _ => None,
+        }
+    }
+
+    #[test]
+    fn rational_value() {
+        // (1/15 + 3/2)/(17/15) = (47/30)/(17/15) = 47/34
+        assert_eq!(sample().eval_rational(&exact), Ok(Rational::from((47, 34))));
+    }
+
+    #[test]
+    fn f64_and_mpfr_agree_with_exact() {
+        let q = sample().eval_rational(&exact).unwrap().to_f64();
+        let x = sample()
+            .eval(&0.0_f64, &|n| exact(n).map(|q| q.to_f64()))
+            .unwrap();
+        assert!((x - q).abs() < 1e-14);
+        let like = Mpfr::from_f64(200, 0.0);
+        let y = sample()
+            .eval(&like, &|n| exact(n).map(|q| Mpfr::from_rational(200, &q)))
+            .unwrap();
+        assert!((y.0 - q).abs() < 1e-15);
+        let p = sample().numerator().eval(&0.0_f64, &|n| exact(n).map(|q| q.to_f64()));
+        assert!((p.unwrap() - 47.0 / 30.0).abs() < 1e-14);
+    }
+
+    #[test]
+    fn errors() {
+        let unbound = sample().eval_rational(&|n| (n != "c").then(|| Rational::from(1)));
+        assert_eq!(unbound, Err(SymError::UnboundVariable("c".into())));
+        let zero = sample().eval_rational(&|n| match n {
+            "m" => Some(Rational::from(-1)),
+            _ => Some(Rational::from(1)),
+        });
+        assert_eq!(zero, Err(SymError::ZeroDenominator("m + c".into())));
+        let pi = Sym::pi().eval(&0.0_f64, &|n| (n == "pi").then_some(std::f64::consts::PI));
+        assert_eq!(pi, Ok(std::f64::consts::PI));
+    }
+}

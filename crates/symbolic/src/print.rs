@@ -1,0 +1,291 @@
+//! Canonical printing of [`Poly`] and [`Sym`] in three forms: plain ASCII
+//! (`Display`), Unicode ([`Sym::to_unicode`], for Markdown tables) and
+//! LaTeX ([`Sym::to_latex`]).
+//!
+//! The output is deterministic. Terms are printed greatest first in the
+//! graded lexicographic order of [`crate::monomial`]: by total degree
+//! descending, then lexicographically in the variable order of
+//! [`crate::var`] (parameters `m, beta, lambda, mu, eta, alpha, zeta, xi,
+//! omega`, then `pi`, `s`, `c`, `t`, then other names naturally sorted).
+//! Inside a monomial the variables follow the same order.
+//!
+//! A quotient is printed as an integer numerator over its factored
+//! denominator (a rational content of the numerator moves its denominator
+//! into the denominator): `(m + 2)/(beta + 1)^2`, `3*m/(2*(beta + 1))`.
+//! Denominator factors are printed single variables first (in the variable
+//! order), then by number of terms, then greatest leading monomial first.
+//!
+//! Names: plain text prints them as given. Unicode and LaTeX render the
+//! Greek names (`alpha, beta, eta, lambda, mu, omega, pi, theta, xi, zeta`)
+//! as letters and trailing digits as subscripts (`w0` → `w₀`, `w_{0}`);
+//! LaTeX sets other multi-letter names in `\mathrm{…}`.
+
+use std::fmt;
+
+use rug::{Integer, Rational};
+
+use crate::monomial::Monomial;
+use crate::poly::Poly;
+use crate::sym::Sym;
+use crate::var::split_digits;
+
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Style {
+    Plain,
+    Unicode,
+    Latex,
+}
+
+/// Greek names: (name, Unicode, LaTeX).
+const GREEK: [(&str, &str, &str); 10] = [
+    ("alpha", "α", r"\alpha"),
+    ("beta", "β", r"\beta"),
+    ("eta", "η", r"\eta"),
+    ("lambda", "λ", r"\lambda"),
+    ("mu", "μ", r"\mu"),
+    ("omega", "ω", r"\omega"),
+    ("pi", "π", r"\pi"),
+    ("theta", "θ", r"\theta"),
+    ("xi", "ξ", r"\xi"),
+    ("zeta", "ζ", r"\zeta"),
+];
+
+const SUPERSCRIPTS: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+const SUBSCRIPTS: [char; 10] = ['₀', '₁', '₂', '₃', '₄', '₅', '₆', '₇', '₈', '₉'];
+
+impl Style {
+    fn minus(self) -> &'static str {
+        if self == Style::Unicode { "−" } else { "-" }
+    }
+
+    fn times(self) -> &'static str {
+        match self {
+            Style::Plain => "*",
+            Style::Unicode => "·",
+            Style::Latex => " ",
+        }
+    }
+}
+
+fn digits_in(table: &[char; 10], digits: &str) -> String {
+    digits
+        .bytes()
+        .map(|b| table[usize::from(b - b'0')])
+        .collect()
+}
+
+fn name(n: &str, style: Style) -> String {
+    let (prefix, digits) = split_digits(n);
+    if style == Style::Plain || prefix.is_empty() {
+        return n.to_string();
+    }
+    let greek = GREEK.iter().find(|(g, _, _)| *g == prefix);
+    match style {
+        Style::Unicode => {
+            let base = greek.map_or(prefix, |(_, u, _)| u);
+            format!("{base}{}", digits_in(&SUBSCRIPTS, digits))
+        }
+        _ => {
+            let base = match greek {
+                Some((_, _, l)) => (*l).to_string(),
+                None if prefix.chars().count() == 1 => prefix.to_string(),
+                None => format!(r"\mathrm{{{prefix}}}"),
+            };
+            if digits.is_empty() { base } else { format!("{base}_{{{digits}}}") }
+        }
+    }
+}
+
+fn power(base: String, e: u32, style: Style) -> String {
+    match (e, style) {
+        (1, _) => base,
+        (_, Style::Plain) => format!("{base}^{e}"),
+        (_, Style::Unicode) => format!("{base}{}", digits_in(&SUPERSCRIPTS, &e.to_string())),
+        (_, Style::Latex) => format!("{base}^{{{e}}}"),
+    }
+}
+
+fn monomial(m: &Monomial, style: Style) -> String {
+    let parts: Vec<String> = m
+        .factors()
+        .map(|(v, e)| power(name(v.name(), style), e, style))
+        .collect();
+    parts.join(style.times())
+}
+
+/// A nonnegative rational coefficient.
+fn coefficient(q: &Rational, style: Style) -> String {
+    if style == Style::Latex && *q.denom() != 1 {
+        format!(r"\frac{{{}}}{{{}}}", q.numer(), q.denom())
+    } else {
+        q.to_string()
+    }
+}
+
+fn poly(p: &Poly, style: Style) -> String {
+    if p.is_zero() {
+        return "0".to_string();
+    }
+    let mut out = String::new();
+    for (i, (m, q)) in p.terms().enumerate() {
+        let negative = *q < 0;
+        let a = Rational::from(q.abs_ref());
+        let body = if m.is_one() {
+            coefficient(&a, style)
+        } else if a == 1 {
+            monomial(m, style)
+        } else {
+            format!("{}{}{}", coefficient(&a, style), style.times(), monomial(m, style))
+        };
+        match (i, negative) {
+            (0, true) => out.push_str(style.minus()),
+            (0, false) => {}
+            (_, true) => {
+                out.push(' ');
+                out.push_str(style.minus());
+                out.push(' ');
+            }
+            (_, false) => out.push_str(" + "),
+        }
+        out.push_str(&body);
+    }
+    out
+}
+
+fn sym(x: &Sym, style: Style) -> String {
+    if x.denominator().is_empty() {
+        return poly(x.numerator(), style);
+    }
+    let k = x
+        .numerator()
+        .terms()
+        .fold(Integer::from(1), |acc, (_, q)| acc.lcm(q.denom()));
+    let n = x.numerator().scale(&Rational::from(k.clone()));
+    let mut items = Vec::new();
+    if k != 1 {
+        items.push(k.to_string());
+    }
+    let several = items.len() + x.denominator().len() > 1;
+    let mut factors: Vec<(&Poly, &u32)> = x.denominator().iter().collect();
+    factors.sort_by(|(a, _), (b, _)| {
+        let lead = |p: &Poly| p.leading_term().map(|(m, _)| m.clone());
+        a.len()
+            .cmp(&b.len())
+            .then_with(|| lead(b).cmp(&lead(a)))
+            .then_with(|| a.cmp(b))
+    });
+    for (f, e) in factors {
+        let text = poly(f, style);
+        let wrap = f.len() > 1 && (style != Style::Latex || several || *e > 1);
+        let base = if wrap { format!("({text})") } else { text };
+        items.push(power(base, *e, style));
+    }
+    let den = items.join(style.times());
+    if style == Style::Latex {
+        let negative = n.len() == 1 && n.leading_term().is_some_and(|(_, q)| *q < 0);
+        return if negative {
+            format!(r"-\frac{{{}}}{{{den}}}", poly(&-n, style))
+        } else {
+            format!(r"\frac{{{}}}{{{den}}}", poly(&n, style))
+        };
+    }
+    let num = if n.len() > 1 { format!("({})", poly(&n, style)) } else { poly(&n, style) };
+    if several { format!("{num}/({den})") } else { format!("{num}/{den}") }
+}
+
+impl Poly {
+    /// Unicode form (Greek letters, superscript exponents, `·`, `−`).
+    pub fn to_unicode(&self) -> String {
+        poly(self, Style::Unicode)
+    }
+
+    /// LaTeX form.
+    pub fn to_latex(&self) -> String {
+        poly(self, Style::Latex)
+    }
+}
+
+impl fmt::Display for Poly {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&poly(self, Style::Plain))
+    }
+}
+
+impl Sym {
+    /// Unicode form (Greek letters, superscript exponents, `·`, `−`).
+    pub fn to_unicode(&self) -> String {
+        sym(self, Style::Unicode)
+    }
+
+    /// LaTeX form.
+    pub fn to_latex(&self) -> String {
+        sym(self, Style::Latex)
+    }
+}
+
+impl fmt::Display for Sym {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&sym(self, Style::Plain))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn v(n: &str) -> Sym {
+        Sym::var(n)
+    }
+
+    fn forms(x: &Sym) -> [String; 3] {
+        [x.to_string(), x.to_unicode(), x.to_latex()]
+    }
+
+    #[test]
+    fn polynomial() {
+        let m = v("m");
+        let x = -(m.clone() * &m) + &(Sym::rational(Rational::from((3, 2))) * &m) - &Sym::int(2);
+        assert_eq!(forms(&x), ["-m^2 + 3/2*m - 2", "−m² + 3/2·m − 2", r"-m^{2} + \frac{3}{2} m - 2"]);
+        assert_eq!(forms(&Sym::zero()), ["0", "0", "0"]);
+    }
+
+    #[test]
+    fn quotient() {
+        let b1 = v("beta") + &Sym::int(1);
+        // factors are not discovered by factorisation: divide twice
+        let x = (v("m") + &Sym::int(2)) / &b1 / &b1;
+        assert_eq!(
+            forms(&x),
+            ["(m + 2)/(beta + 1)^2", "(m + 2)/(β + 1)²", r"\frac{m + 2}{(\beta + 1)^{2}}"]
+        );
+        let y = Sym::int(-3) * &v("m") / &(Sym::int(2) * &b1);
+        assert_eq!(
+            forms(&y),
+            ["-3*m/(2*(beta + 1))", "−3·m/(2·(β + 1))", r"-\frac{3 m}{2 (\beta + 1)}"]
+        );
+        let z = Sym::int(1) / &(b1 * &v("pi") * &v("s"));
+        assert_eq!(
+            forms(&z),
+            ["1/(pi*s*(beta + 1))", "1/(π·s·(β + 1))", r"\frac{1}{\pi s (\beta + 1)}"]
+        );
+    }
+
+    #[test]
+    fn term_order_and_names() {
+        // degree first, then parameters before pi, s, c, t, other names
+        let x = v("P10") + &v("P2") + &v("t") + &v("c") + &v("s") + &v("pi") + &v("zeta")
+            + &v("m")
+            + &(v("s") * &v("c") * &v("w0"))
+            + &(v("lambda") * &v("lambda"));
+        assert_eq!(x.to_string(), "s*c*w0 + lambda^2 + m + zeta + pi + s + c + t + P2 + P10");
+        assert_eq!(x.to_unicode(), "s·c·w₀ + λ² + m + ζ + π + s + c + t + P₂ + P₁₀");
+        assert_eq!(
+            x.to_latex(),
+            r"s c w_{0} + \lambda^{2} + m + \zeta + \pi + s + c + t + P_{2} + P_{10}"
+        );
+        assert_eq!((v("h12") * &v("G")).to_latex(), r"G h_{12}");
+        assert_eq!(v("foo").to_latex(), r"\mathrm{foo}");
+        // s² is printed in its reduced form
+        assert_eq!((v("s") * &v("s")).to_string(), "-c^2 + 1");
+    }
+}
