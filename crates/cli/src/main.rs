@@ -3,6 +3,7 @@
 //! Every failure is reported as one line `error: …` on standard error with a
 //! nonzero exit status; nothing reachable from here panics on bad input.
 
+mod cell;
 mod commands;
 mod format;
 
@@ -10,7 +11,7 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
-use crate::commands::{eval::EvalArgs, list::ListArgs};
+use crate::commands::{eval::EvalArgs, list::ListArgs, table::TableArgs};
 
 /// Machine-checked audits of trigonometric and polynomial spline bases.
 #[derive(Debug, Parser)]
@@ -26,6 +27,8 @@ enum Command {
     List(ListArgs),
     /// Evaluate every function of a family at a point (f64, or MPFR with --prec).
     Eval(EvalArgs),
+    /// Exact (or numeric) tables of endpoint derivatives, in Markdown, LaTeX, CSV or JSON.
+    Table(TableArgs),
 }
 
 fn main() -> ExitCode {
@@ -33,6 +36,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::List(args) => commands::list::run(&args),
         Command::Eval(args) => commands::eval::run(&args),
+        Command::Table(args) => commands::table::run(&args),
     };
     match result {
         Ok(text) => {

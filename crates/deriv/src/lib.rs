@@ -7,3 +7,8 @@
 pub mod jet;
 
 pub use jet::{Jet, angle_atoms, family_derivatives, polynomial_atoms};
+pub mod table;
+
+pub use table::{
+    End, KnotDerivatives, Wrt, curve_endpoint_derivatives, endpoint_derivatives, knot_derivatives,
+};

@@ -16,13 +16,19 @@ use crate::var::{COS, SIN, T};
 
 impl Sym {
     /// The partial derivative `∂/∂name` (for `s`, `c`: of the reduced
-    /// representative; see the [module documentation](self)).
+    /// representative, see [`Sym::derive`]).
     pub fn diff(&self, name: &str) -> Sym {
         self.derive(&[(name, Sym::int(1))])
     }
 
     /// The derivation with `D(name) = image` for the listed variables and
-    /// `D(x) = 0` for all others.
+    /// `D(x) = 0` for all others, extended by the quotient rule
+    /// `D(N / Π fᵢ^eᵢ) = D(N)/Π fᵢ^eᵢ − N/Π fᵢ^eᵢ · Σ eᵢ·D(fᵢ)/fᵢ`.
+    ///
+    /// Well defined on the quotient by `s² + c² − 1` exactly when
+    /// `s·D(s) + c·D(c) = 0` (true for [`Sym::d_angle`] and whenever `s`, `c`
+    /// are not listed); otherwise it differentiates the reduced
+    /// representative.
     pub fn derive(&self, rules: &[(&str, Sym)]) -> Sym {
         let mut out = derive_poly(self.numerator(), rules) * &self.denominator_inverse();
         for (f, e) in self.denominator() {
@@ -76,7 +82,10 @@ mod tests {
         assert!((d.clone() - &(v("c") * &v("c") - &(v("s") * &v("s")))).is_zero());
         assert!((d - &(Sym::int(1) - &(Sym::int(2) * &v("s") * &v("s")))).is_zero());
         // d/dθ (s/c) = 1/c²
-        assert_eq!((v("s") / &v("c")).d_angle(), Sym::int(1) / &(v("c") * &v("c")));
+        assert_eq!(
+            (v("s") / &v("c")).d_angle(),
+            Sym::int(1) / &(v("c") * &v("c"))
+        );
     }
 
     #[test]

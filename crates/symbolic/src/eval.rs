@@ -75,7 +75,10 @@ impl<T: Ring> Field for InRing<T> {
 type Values<F> = BTreeMap<String, F>;
 
 /// Looks up every variable once.
-fn bind<F>(names: BTreeSet<String>, assign: &dyn Fn(&str) -> Option<F>) -> Result<Values<F>, SymError> {
+fn bind<F>(
+    names: BTreeSet<String>,
+    assign: &dyn Fn(&str) -> Option<F>,
+) -> Result<Values<F>, SymError> {
     names
         .into_iter()
         .map(|n| match assign(&n) {
@@ -87,12 +90,13 @@ fn bind<F>(names: BTreeSet<String>, assign: &dyn Fn(&str) -> Option<F>) -> Resul
 
 /// `p` at bound values (every variable of `p` is bound).
 fn eval_poly<F: Field>(p: &Poly, like: &F, values: &Values<F>) -> F {
-    p.terms().fold(like.constant(&Rational::new()), |acc, (m, q)| {
-        let term = m.factors().fold(like.constant(q), |t, (v, e)| {
-            t.mul(&values[v.name()].pow(e))
-        });
-        acc.add(&term)
-    })
+    p.terms()
+        .fold(like.constant(&Rational::new()), |acc, (m, q)| {
+            let term = m.factors().fold(like.constant(q), |t, (v, e)| {
+                t.mul(&values[v.name()].pow(e))
+            });
+            acc.add(&term)
+        })
 }
 
 /// `x` at bound values, checking every denominator factor.
@@ -110,14 +114,21 @@ fn eval_sym<F: Field>(x: &Sym, like: &F, values: &Values<F>) -> Result<F, SymErr
 
 impl Poly {
     /// The exact value at the assigned rationals.
-    pub fn eval_rational(&self, assign: &dyn Fn(&str) -> Option<Rational>) -> Result<Rational, SymError> {
+    pub fn eval_rational(
+        &self,
+        assign: &dyn Fn(&str) -> Option<Rational>,
+    ) -> Result<Rational, SymError> {
         let values = bind(self.variables(), assign)?;
         Ok(eval_poly(self, &Rational::new(), &values))
     }
 
     /// The value in the ring of `like` at the assigned values; coefficients
     /// are converted with `like.rational(q)`.
-    pub fn eval<T: Ring>(&self, like: &T, assign: &dyn Fn(&str) -> Option<T>) -> Result<T, SymError> {
+    pub fn eval<T: Ring>(
+        &self,
+        like: &T,
+        assign: &dyn Fn(&str) -> Option<T>,
+    ) -> Result<T, SymError> {
         let values = bind(self.variables(), &|n: &str| assign(n).map(InRing))?;
         Ok(eval_poly(self, &InRing(like.clone()), &values).0)
     }
@@ -126,7 +137,10 @@ impl Poly {
 impl Sym {
     /// The exact value at the assigned rationals; an error for an unbound
     /// variable or a vanishing denominator factor.
-    pub fn eval_rational(&self, assign: &dyn Fn(&str) -> Option<Rational>) -> Result<Rational, SymError> {
+    pub fn eval_rational(
+        &self,
+        assign: &dyn Fn(&str) -> Option<Rational>,
+    ) -> Result<Rational, SymError> {
         let values = bind(self.variables(), assign)?;
         eval_sym(self, &Rational::new(), &values)
     }
@@ -134,7 +148,11 @@ impl Sym {
     /// The value in the ring of `like` (f64, MPFR, …) at the assigned
     /// values; coefficients are converted with `like.rational(q)`, and a
     /// denominator factor with `is_zero()` is an error.
-    pub fn eval<T: Ring>(&self, like: &T, assign: &dyn Fn(&str) -> Option<T>) -> Result<T, SymError> {
+    pub fn eval<T: Ring>(
+        &self,
+        like: &T,
+        assign: &dyn Fn(&str) -> Option<T>,
+    ) -> Result<T, SymError> {
         let values = bind(self.variables(), &|n: &str| assign(n).map(InRing))?;
         eval_sym(self, &InRing(like.clone()), &values).map(|x| x.0)
     }
@@ -181,7 +199,9 @@ mod tests {
             .eval(&like, &|n| exact(n).map(|q| Mpfr::from_rational(200, &q)))
             .unwrap();
         assert!((y.0 - q).abs() < 1e-15);
-        let p = sample().numerator().eval(&0.0_f64, &|n| exact(n).map(|q| q.to_f64()));
+        let p = sample()
+            .numerator()
+            .eval(&0.0_f64, &|n| exact(n).map(|q| q.to_f64()));
         assert!((p.unwrap() - 47.0 / 30.0).abs() < 1e-14);
     }
 

@@ -182,7 +182,13 @@ impl fmt::Debug for Monomial {
         let parts: Vec<String> = self
             .factors
             .iter()
-            .map(|(v, e)| if *e == 1 { v.to_string() } else { format!("{v}^{e}") })
+            .map(|(v, e)| {
+                if *e == 1 {
+                    v.to_string()
+                } else {
+                    format!("{v}^{e}")
+                }
+            })
             .collect();
         f.write_str(&parts.join("*"))
     }
@@ -193,9 +199,9 @@ mod tests {
     use super::*;
 
     fn mono(parts: &[(&str, u32)]) -> Monomial {
-        parts
-            .iter()
-            .fold(Monomial::one(), |m, (n, e)| m.mul(&Monomial::var(Var::new(n), *e)))
+        parts.iter().fold(Monomial::one(), |m, (n, e)| {
+            m.mul(&Monomial::var(Var::new(n), *e))
+        })
     }
 
     #[test]
@@ -220,6 +226,9 @@ mod tests {
         assert_eq!(p.split("c"), (mono(&[("m", 1), ("s", 1)]), 3));
         assert_eq!(p.exponent("s"), 1);
         assert_eq!(p.degree(), 5);
-        assert_eq!(p.gcd(&mono(&[("m", 2), ("c", 1), ("t", 1)])), mono(&[("m", 1), ("c", 1)]));
+        assert_eq!(
+            p.gcd(&mono(&[("m", 2), ("c", 1), ("t", 1)])),
+            mono(&[("m", 1), ("c", 1)])
+        );
     }
 }

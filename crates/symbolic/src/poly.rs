@@ -100,7 +100,11 @@ impl Poly {
 
     /// Degree in the variable `name`.
     pub fn degree_in(&self, name: &str) -> u32 {
-        self.terms.keys().map(|m| m.exponent(name)).max().unwrap_or(0)
+        self.terms
+            .keys()
+            .map(|m| m.exponent(name))
+            .max()
+            .unwrap_or(0)
     }
 
     /// Total degree (0 for constants and for zero).
@@ -424,7 +428,10 @@ mod tests {
         assert_eq!(a.exact_div(&Poly::zero()), None);
         // (1 − c)(1 + c) = s²: divisible through the relation
         let s2 = v("s").pow(2);
-        assert_eq!(s2.exact_div(&(Poly::one() - &v("c"))), Some(Poly::one() + &v("c")));
+        assert_eq!(
+            s2.exact_div(&(Poly::one() - &v("c"))),
+            Some(Poly::one() + &v("c"))
+        );
         assert_eq!(s2.exact_div(&v("s")), Some(v("s")));
         let sp = (v("s") + &v("c")) * &(v("m") - &v("s"));
         assert_eq!(sp.exact_div(&(v("s") + &v("c"))), Some(v("m") - &v("s")));
@@ -451,7 +458,10 @@ mod tests {
         let b1 = v("beta") + &Poly::one();
         assert_eq!(r, &b1 * &b1 * &v("s") + &b1);
         // substituting c := s gives s·s = 1 − c² after reduction
-        assert_eq!(v("c").pow(2).subs("c", &v("s")), Poly::one() - &v("c").pow(2));
+        assert_eq!(
+            v("c").pow(2).subs("c", &v("s")),
+            Poly::one() - &v("c").pow(2)
+        );
         assert_eq!(p.diff("m"), q(2, 1) * &v("m") * &v("s") + &Poly::one());
         assert_eq!(p.diff("beta"), Poly::zero());
         assert_eq!(p.variables().into_iter().collect::<Vec<_>>(), ["m", "s"]);

@@ -91,7 +91,11 @@ fn name(n: &str, style: Style) -> String {
                 None if prefix.chars().count() == 1 => prefix.to_string(),
                 None => format!(r"\mathrm{{{prefix}}}"),
             };
-            if digits.is_empty() { base } else { format!("{base}_{{{digits}}}") }
+            if digits.is_empty() {
+                base
+            } else {
+                format!("{base}_{{{digits}}}")
+            }
         }
     }
 }
@@ -135,7 +139,12 @@ fn poly(p: &Poly, style: Style) -> String {
         } else if a == 1 {
             monomial(m, style)
         } else {
-            format!("{}{}{}", coefficient(&a, style), style.times(), monomial(m, style))
+            format!(
+                "{}{}{}",
+                coefficient(&a, style),
+                style.times(),
+                monomial(m, style)
+            )
         };
         match (i, negative) {
             (0, true) => out.push_str(style.minus()),
@@ -189,8 +198,16 @@ fn sym(x: &Sym, style: Style) -> String {
             format!(r"\frac{{{}}}{{{den}}}", poly(&n, style))
         };
     }
-    let num = if n.len() > 1 { format!("({})", poly(&n, style)) } else { poly(&n, style) };
-    if several { format!("{num}/({den})") } else { format!("{num}/{den}") }
+    let num = if n.len() > 1 {
+        format!("({})", poly(&n, style))
+    } else {
+        poly(&n, style)
+    };
+    if several {
+        format!("{num}/({den})")
+    } else {
+        format!("{num}/{den}")
+    }
 }
 
 impl Poly {
@@ -245,7 +262,14 @@ mod tests {
     fn polynomial() {
         let m = v("m");
         let x = -(m.clone() * &m) + &(Sym::rational(Rational::from((3, 2))) * &m) - &Sym::int(2);
-        assert_eq!(forms(&x), ["-m^2 + 3/2*m - 2", "−m² + 3/2·m − 2", r"-m^{2} + \frac{3}{2} m - 2"]);
+        assert_eq!(
+            forms(&x),
+            [
+                "-m^2 + 3/2*m - 2",
+                "−m² + 3/2·m − 2",
+                r"-m^{2} + \frac{3}{2} m - 2"
+            ]
+        );
         assert_eq!(forms(&Sym::zero()), ["0", "0", "0"]);
     }
 
@@ -256,29 +280,53 @@ mod tests {
         let x = (v("m") + &Sym::int(2)) / &b1 / &b1;
         assert_eq!(
             forms(&x),
-            ["(m + 2)/(beta + 1)^2", "(m + 2)/(β + 1)²", r"\frac{m + 2}{(\beta + 1)^{2}}"]
+            [
+                "(m + 2)/(beta + 1)^2",
+                "(m + 2)/(β + 1)²",
+                r"\frac{m + 2}{(\beta + 1)^{2}}"
+            ]
         );
         let y = Sym::int(-3) * &v("m") / &(Sym::int(2) * &b1);
         assert_eq!(
             forms(&y),
-            ["-3*m/(2*(beta + 1))", "−3·m/(2·(β + 1))", r"-\frac{3 m}{2 (\beta + 1)}"]
+            [
+                "-3*m/(2*(beta + 1))",
+                "−3·m/(2·(β + 1))",
+                r"-\frac{3 m}{2 (\beta + 1)}"
+            ]
         );
         let z = Sym::int(1) / &(b1 * &v("pi") * &v("s"));
         assert_eq!(
             forms(&z),
-            ["1/(pi*s*(beta + 1))", "1/(π·s·(β + 1))", r"\frac{1}{\pi s (\beta + 1)}"]
+            [
+                "1/(pi*s*(beta + 1))",
+                "1/(π·s·(β + 1))",
+                r"\frac{1}{\pi s (\beta + 1)}"
+            ]
         );
     }
 
     #[test]
     fn term_order_and_names() {
         // degree first, then parameters before pi, s, c, t, other names
-        let x = v("P10") + &v("P2") + &v("t") + &v("c") + &v("s") + &v("pi") + &v("zeta")
+        let x = v("P10")
+            + &v("P2")
+            + &v("t")
+            + &v("c")
+            + &v("s")
+            + &v("pi")
+            + &v("zeta")
             + &v("m")
             + &(v("s") * &v("c") * &v("w0"))
             + &(v("lambda") * &v("lambda"));
-        assert_eq!(x.to_string(), "s*c*w0 + lambda^2 + m + zeta + pi + s + c + t + P2 + P10");
-        assert_eq!(x.to_unicode(), "s·c·w₀ + λ² + m + ζ + π + s + c + t + P₂ + P₁₀");
+        assert_eq!(
+            x.to_string(),
+            "s*c*w0 + lambda^2 + m + zeta + pi + s + c + t + P2 + P10"
+        );
+        assert_eq!(
+            x.to_unicode(),
+            "s·c·w₀ + λ² + m + ζ + π + s + c + t + P₂ + P₁₀"
+        );
         assert_eq!(
             x.to_latex(),
             r"s c w_{0} + \lambda^{2} + m + \zeta + \pi + s + c + t + P_{2} + P_{10}"

@@ -116,7 +116,10 @@ mod tests {
         assert!(Ring::is_zero(&(m.clone() - m.clone())));
         assert_eq!(m.powi(3), &(&m * &m) * &m);
         assert_eq!(-&m + m.clone(), Sym::zero());
-        assert_eq!(Ring::rational(&m, &Rational::from((2, 3))), Sym::int(2) / Sym::int(3));
+        assert_eq!(
+            Ring::rational(&m, &Rational::from((2, 3))),
+            Sym::int(2) / Sym::int(3)
+        );
         assert_eq!(symbolic_atoms().t, Sym::var("t"));
     }
 }

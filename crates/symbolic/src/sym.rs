@@ -354,7 +354,8 @@ mod tests {
     fn pythagoras_is_zero() {
         let x = v("s") * &v("s") + &(v("c") * &v("c")) - &Sym::int(1);
         assert!(x.is_zero());
-        let y = (v("s") + &v("c")) * &(v("s") + &v("c")) - &(Sym::int(2) * &v("s") * &v("c"))
+        let y = (v("s") + &v("c")) * &(v("s") + &v("c"))
+            - &(Sym::int(2) * &v("s") * &v("c"))
             - &Sym::int(1);
         assert!(y.is_zero());
     }
@@ -416,7 +417,10 @@ mod tests {
         assert!(a.equals(&b));
         assert_eq!(a, b);
         assert_ne!(a, v("beta") / &v("m"));
-        assert_eq!(Sym::rational(Rational::from((3, 4))).as_rational(), Some(Rational::from((3, 4))));
+        assert_eq!(
+            Sym::rational(Rational::from((3, 4))).as_rational(),
+            Some(Rational::from((3, 4)))
+        );
         assert_eq!(a.variables().into_iter().collect::<Vec<_>>(), ["beta", "m"]);
     }
 

@@ -74,11 +74,6 @@ impl Var {
         &self.name
     }
 
-    /// True for `s = sin θ`, the atom reduced by `s² = 1 − c²`.
-    pub fn is_sin(&self) -> bool {
-        self.class == Class::Sin
-    }
-
     /// True for `s` and `c`, whose degrees are not preserved by the
     /// reduction modulo `s² + c² − 1`.
     pub fn is_trig(&self) -> bool {
@@ -160,8 +155,12 @@ mod tests {
     #[test]
     fn fixed_order() {
         assert_eq!(
-            sorted(&["t", "P10", "c", "w0", "s", "pi", "zeta", "P2", "beta", "m", "h1"]),
-            ["m", "beta", "zeta", "pi", "s", "c", "t", "P2", "P10", "h1", "w0"]
+            sorted(&[
+                "t", "P10", "c", "w0", "s", "pi", "zeta", "P2", "beta", "m", "h1"
+            ]),
+            [
+                "m", "beta", "zeta", "pi", "s", "c", "t", "P2", "P10", "h1", "w0"
+            ]
         );
     }
 

@@ -2,6 +2,7 @@
 
 pub mod eval;
 pub mod list;
+pub mod table;
 
 /// Error of a command: a typed library error or a usage problem.
 #[derive(Debug, thiserror::Error)]
