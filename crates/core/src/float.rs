@@ -8,7 +8,14 @@ impl Ring for f64 {
     }
 
     fn ratio(&self, num: i64, den: i64) -> Self {
-        rug::Rational::from((num, den)).to_f64()
+        // Both operands exact (|n| ≤ 2⁵³) ⇒ one IEEE division is the correctly
+        // rounded quotient; otherwise round the exact rational once.
+        const EXACT: u64 = 1 << 53;
+        if num.unsigned_abs() <= EXACT && den.unsigned_abs() <= EXACT {
+            num as f64 / den as f64
+        } else {
+            rug::Rational::from((num, den)).to_f64()
+        }
     }
 
     fn rational(&self, q: &rug::Rational) -> Self {

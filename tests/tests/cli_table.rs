@@ -1,0 +1,170 @@
+//! End-to-end tests of `trig-audit table`: every format, exact and numeric,
+//! and insta snapshots of the exact table of every family (orders 0–6, both
+//! ends, each convention), reviewed by hand against paper derivations.
+
+use trig_e2e::{error_line, stdout_ok};
+
+const FAMILIES: &[&str] = &[
+    "thesis-quadratic",
+    "thesis-cubic",
+    "han",
+    "majeed-qayyum",
+    "usman",
+    "han-listing",
+    "seed000-blending",
+    "seed000-uniform",
+    "seed002-quartic",
+    "eh",
+    "hermite",
+    "bernstein3",
+    "bspline3",
+];
+
+#[test]
+fn exact_tables_of_every_family() {
+    for family in FAMILIES {
+        let mut all = String::new();
+        for wrt in ["angle", "u", "x"] {
+            all.push_str(&stdout_ok(&[
+                "table", family, "--order", "6", "--wrt", wrt, "--format", "md",
+            ]));
+        }
+        insta::assert_snapshot!(format!("table_{family}"), all);
+    }
+}
+
+#[test]
+fn knot_and_curve_tables() {
+    for family in ["seed000-uniform", "bspline3"] {
+        let out = stdout_ok(&[
+            "table", family, "--at", "knots", "--wrt", "u", "--order", "6",
+        ]);
+        insta::assert_snapshot!(format!("knots_{family}"), out);
+    }
+    let cubic = stdout_ok(&[
+        "table",
+        "thesis-cubic",
+        "--curve",
+        "--order",
+        "2",
+        "--wrt",
+        "angle",
+    ]);
+    insta::assert_snapshot!("curve_thesis_cubic", cubic);
+    let quartic = stdout_ok(&[
+        "table",
+        "seed002-quartic",
+        "--curve",
+        "--rational",
+        "--order",
+        "2",
+    ]);
+    insta::assert_snapshot!("curve_seed002_rational", quartic);
+}
+
+#[test]
+fn thesis_cubic_entries_match_paper_derivations() {
+    // Thesis Chapter 4 list (angle convention): Q'(0) = (m+2)(P1 − P0),
+    // and b0'' at u = 0 is 4m + 2 (derived by hand: f = (1−s)², f'' = 2;
+    // g = 1 − ms, g' = −m; (fg)'' = 2 + 4m).
+    let out = stdout_ok(&[
+        "table",
+        "thesis-cubic",
+        "--order",
+        "2",
+        "--at",
+        "start",
+        "--format",
+        "csv",
+    ]);
+    assert!(out.contains("start of the domain,1,b0,-m - 2"), "{out}");
+    assert!(out.contains("start of the domain,1,b1,m + 2"), "{out}");
+    assert!(out.contains("start of the domain,2,b0,4*m + 2"), "{out}");
+}
+
+#[test]
+fn every_format_renders() {
+    let base = ["table", "thesis-cubic", "--order", "3"];
+    let md = stdout_ok(&[&base[..], &["--format", "md"]].concat());
+    assert!(md.contains("| k | b0 | b1 | b2 | b3 |"));
+    let tex = stdout_ok(&[&base[..], &["--format", "tex"]].concat());
+    assert!(
+        tex.contains("\\begin{tabular}") && tex.contains("$-m - 2$"),
+        "{tex}"
+    );
+    let csv = stdout_ok(&[&base[..], &["--format", "csv"]].concat());
+    assert!(csv.starts_with("table,row,column,value\n"));
+    assert_eq!(csv.lines().count(), 1 + 2 * 4 * 4);
+    let json: serde_json::Value =
+        serde_json::from_str(&stdout_ok(&[&base[..], &["--format", "json"]].concat()))
+            .expect("JSON");
+    assert_eq!(json["tables"].as_array().map(Vec::len), Some(2));
+    assert_eq!(json["tables"][0]["rows"][1]["values"][0]["latex"], "-m - 2");
+}
+
+#[test]
+fn numeric_tables_agree_with_exact_ones() {
+    // first derivative of b0 at u = 0 in u: −(m+2)·π/2 with m = 0.6
+    let out = stdout_ok(&[
+        "table",
+        "thesis-cubic",
+        "--numeric",
+        "--param",
+        "m=0.6",
+        "--wrt",
+        "u",
+        "--order",
+        "1",
+        "--at",
+        "start",
+        "--format",
+        "csv",
+    ]);
+    let line = out.lines().find(|l| l.contains(",1,b0,")).expect("row");
+    let value: f64 = line.rsplit(',').next().unwrap().parse().unwrap();
+    assert!(
+        (value + 2.6 * std::f64::consts::FRAC_PI_2).abs() < 1e-14,
+        "{value}"
+    );
+    let mp = stdout_ok(&[
+        "table",
+        "thesis-cubic",
+        "--numeric",
+        "--param",
+        "m=0.6",
+        "--prec",
+        "200",
+        "--order",
+        "1",
+        "--at",
+        "start",
+        "--format",
+        "csv",
+    ]);
+    // −13/5 rounded to 200 bits: about 60 correct digits
+    assert!(
+        mp.contains(",1,b0,-2.59999999999999999999999999999999999999999999999999999999"),
+        "{mp}"
+    );
+}
+
+#[test]
+fn bad_table_requests_are_one_line_errors() {
+    assert!(error_line(&["table", "nope"]).contains("unknown family"));
+    assert!(error_line(&["table", "thesis-cubic", "--order", "13"]).contains("at most 12"));
+    assert!(error_line(&["table", "thesis-cubic", "--at", "knots"]).contains("--at knots"));
+    assert!(error_line(&["table", "seed003"]).contains("no formulas"));
+    assert!(error_line(&["table", "thesis-cubic", "--numeric"]).contains("needs parameter"));
+    assert!(
+        error_line(&[
+            "table",
+            "thesis-cubic",
+            "--numeric",
+            "--param",
+            "m=1",
+            "--h",
+            "0"
+        ])
+        .contains("positive")
+    );
+}
