@@ -20,7 +20,7 @@
 use std::cmp::Ordering;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
-use rug::{Integer, Rational};
+use rug::Rational;
 use trig_core::{Atoms, Family, Real, Ring};
 
 /// A truncated Taylor series with `K` coefficients (order `K − 1`).
@@ -29,10 +29,10 @@ pub struct Jet<T, const K: usize> {
     c: [T; K],
 }
 
-/// `k!` as an exact rational.
-fn factorial(k: usize) -> Rational {
-    let k = u32::try_from(k).expect("jet order fits in u32");
-    Rational::from(Integer::from(Integer::factorial(k)))
+/// `k!` in the context of `like`, as a product of ring integers (exact in
+/// exact rings, and in f64 for `k ≤ 18`; no big-number allocation).
+fn factorial<T: Ring>(like: &T, k: usize) -> T {
+    (2..=k as i64).fold(like.int(1), |acc, j| acc * &like.int(j))
 }
 
 impl<T: Ring, const K: usize> Jet<T, K> {
@@ -75,8 +75,8 @@ impl<T: Ring, const K: usize> Jet<T, K> {
         &self.c[0]
     }
 
-    /// The derivative of order `k`, `k!·x_k` (`k!` built exactly with
-    /// [`Ring::rational`], then one multiplication).
+    /// The derivative of order `k`, `k!·x_k` (`k!` built in the ring, then
+    /// one multiplication).
     ///
     /// # Panics
     /// If `k ≥ K`.
@@ -86,7 +86,7 @@ impl<T: Ring, const K: usize> Jet<T, K> {
             "derivative of order {k} of a jet with {K} coefficients"
         );
         let x = &self.c[k];
-        x.clone() * &x.rational(&factorial(k))
+        x.clone() * &factorial(x, k)
     }
 
     /// The derivatives of orders `0..K`.
@@ -119,13 +119,12 @@ fn mul_coeffs<T: Ring, const K: usize>(a: &[T; K], b: &[T; K]) -> [T; K] {
 /// Quotient `q = a/b`: `q_k = (a_k − Σ_{j=1..k} b_j q_{k−j}) / b₀`.
 /// Undefined when `b₀ = 0` (the caller's concern, as for the scalars).
 fn div_coeffs<T: Ring, const K: usize>(a: &[T; K], b: &[T; K]) -> [T; K] {
-    let mut q: Vec<T> = Vec::with_capacity(K);
+    let mut q: [T; K] = a.clone();
     for k in 0..K {
         let num = (1..=k).fold(a[k].clone(), |acc, j| acc - &(b[j].clone() * &q[k - j]));
-        q.push(num / &b[0]);
+        q[k] = num / &b[0];
     }
-    q.try_into()
-        .unwrap_or_else(|_| unreachable!("K coefficients were pushed"))
+    q
 }
 
 /// `(sin x, cos x)` by the joint recurrence: `s₀, c₀ = sin_cos(x₀)`,
@@ -135,10 +134,8 @@ fn sin_cos_coeffs<T: Real, const K: usize>(x: &[T; K]) -> ([T; K], [T; K]) {
     let (s0, c0) = x[0].sin_cos();
     // j·x_j: the coefficients of x' (shifted by one).
     let dx: [T; K] = std::array::from_fn(|j| x[j].clone() * &x[j].int(j as i64));
-    let mut s: Vec<T> = Vec::with_capacity(K);
-    let mut c: Vec<T> = Vec::with_capacity(K);
-    s.push(s0);
-    c.push(c0);
+    let mut s: [T; K] = std::array::from_fn(|_| s0.clone());
+    let mut c: [T; K] = std::array::from_fn(|_| c0.clone());
     for k in 1..K {
         let zero = x[0].int(0);
         let (sk, ck) = (1..=k).fold((zero.clone(), zero), |(sk, ck), j| {
@@ -148,24 +145,18 @@ fn sin_cos_coeffs<T: Real, const K: usize>(x: &[T; K]) -> ([T; K], [T; K]) {
             )
         });
         let kk = x[0].int(k as i64);
-        s.push(sk / &kk);
-        c.push(ck / &kk);
+        s[k] = sk / &kk;
+        c[k] = ck / &kk;
     }
-    let arr = |v: Vec<T>| -> [T; K] {
-        v.try_into()
-            .unwrap_or_else(|_| unreachable!("K coefficients were pushed"))
-    };
-    (arr(s), arr(c))
+    (s, c)
 }
 
 /// The series of `sin(θ₀+ε)`, `cos(θ₀+ε)` from `s0 = sin θ₀`, `c0 = cos θ₀`
 /// alone: the `k`-th derivatives cycle through `s, c, −s, −c` (sine) and
-/// `c, −s, −c, s` (cosine), each divided by `k!` (an exact rational
-/// constant, one multiplication).
+/// `c, −s, −c, s` (cosine), each divided by `k!` (built in the ring).
 fn angle_series<T: Ring, const K: usize>(s0: &T, c0: &T) -> ([T; K], [T; K]) {
     let term = |k: usize, x: &T, negate: bool| {
-        let inv = x.rational(&(Rational::from(1) / factorial(k)));
-        let t = x.clone() * &inv;
+        let t = x.clone() / &factorial(x, k);
         if negate { -t } else { t }
     };
     let sin = std::array::from_fn(|k| match k % 4 {
