@@ -5,6 +5,23 @@ use std::path::PathBuf;
 use std::process::{Command, Output};
 use std::sync::OnceLock;
 
+/// Ids of every catalog family that has formulas and no knot vector.
+pub const FAMILIES: &[&str] = &[
+    "thesis-quadratic",
+    "thesis-cubic",
+    "han",
+    "majeed-qayyum",
+    "usman",
+    "han-listing",
+    "seed000-blending",
+    "seed000-uniform",
+    "seed002-quartic",
+    "eh",
+    "hermite",
+    "bernstein3",
+    "bspline3",
+];
+
 /// Path of the `trig-audit` binary in this workspace's target directory,
 /// built once (in the test profile's sibling `debug` directory) if missing.
 pub fn binary() -> PathBuf {

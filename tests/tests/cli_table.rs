@@ -2,23 +2,7 @@
 //! and insta snapshots of the exact table of every family (orders 0–6, both
 //! ends, each convention), reviewed by hand against paper derivations.
 
-use trig_e2e::{error_line, stdout_ok};
-
-const FAMILIES: &[&str] = &[
-    "thesis-quadratic",
-    "thesis-cubic",
-    "han",
-    "majeed-qayyum",
-    "usman",
-    "han-listing",
-    "seed000-blending",
-    "seed000-uniform",
-    "seed002-quartic",
-    "eh",
-    "hermite",
-    "bernstein3",
-    "bspline3",
-];
+use trig_e2e::{FAMILIES, error_line, stdout_ok};
 
 #[test]
 fn exact_tables_of_every_family() {
@@ -150,21 +134,38 @@ fn numeric_tables_agree_with_exact_ones() {
 
 #[test]
 fn bad_table_requests_are_one_line_errors() {
-    assert!(error_line(&["table", "nope"]).contains("unknown family"));
-    assert!(error_line(&["table", "thesis-cubic", "--order", "13"]).contains("at most 12"));
-    assert!(error_line(&["table", "thesis-cubic", "--at", "knots"]).contains("--at knots"));
-    assert!(error_line(&["table", "seed003"]).contains("no formulas"));
-    assert!(error_line(&["table", "thesis-cubic", "--numeric"]).contains("needs parameter"));
-    assert!(
-        error_line(&[
-            "table",
-            "thesis-cubic",
-            "--numeric",
-            "--param",
-            "m=1",
-            "--h",
-            "0"
-        ])
-        .contains("positive")
-    );
+    let cases: &[(&[&str], &str)] = &[
+        (&["table", "nope"], "unknown family"),
+        (&["table", "thesis-cubic", "--order", "13"], "at most 12"),
+        (&["table", "thesis-cubic", "--at", "knots"], "--at knots"),
+        (&["table", "seed003"], "no formulas"),
+        (&["table", "thesis-cubic", "--numeric"], "needs parameter"),
+        (
+            &[
+                "table",
+                "thesis-cubic",
+                "--numeric",
+                "--param",
+                "m=1",
+                "--h",
+                "0",
+            ],
+            "positive",
+        ),
+        (
+            &[
+                "table",
+                "thesis-cubic",
+                "--numeric",
+                "--param",
+                "m=1",
+                "--curve",
+            ],
+            "drop --numeric",
+        ),
+    ];
+    for (args, expected) in cases {
+        let line = error_line(args);
+        assert!(line.contains(expected), "{args:?}: {line}");
+    }
 }
