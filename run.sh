@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # One entry point for a fresh machine: installs what the build needs, then runs.
-#   ./run.sh audit [ARGS...]   the main job (the audit report; until the audit
-#                              lands, the catalog)
+#   ./run.sh audit [ARGS...]   the main job: the audit report (Markdown on stdout;
+#                              ARGS go to `trig-audit audit`, e.g. --format json
+#                              --output report.json)
 #   ./run.sh test              the whole test suite (what CI runs)
 #   ./run.sh lint              rustfmt check and clippy with -D warnings
 #   ./run.sh bench             criterion benchmarks (figures in BENCHMARKS.md)
@@ -22,7 +23,7 @@ cmd="${1:-}"
 shift || true
 ensure_m4
 case "$cmd" in
-  audit) cargo run --release --quiet -p trig-audit -- list "$@" ;;
+  audit) cargo run --release --quiet -p trig-audit -- audit "$@" ;;
   test)  cargo test --workspace --quiet ;;
   lint)  cargo fmt --all --check && cargo clippy --workspace --all-targets --quiet -- -D warnings ;;
   bench) cargo bench --workspace ;;

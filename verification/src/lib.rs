@@ -1,24 +1,42 @@
 //! # trig-verification
 //!
-//! The audit crate: it will hold every published claim as data (id, source,
-//! statement as printed) and the checkers that decide them exactly (see
-//! `shared/claims.md`). In this first stage it provides the catalog-wide
-//! exact checks that later claims build on.
+//! The audit: every claim of `shared/claims.md` as data ([`Claim`]: id,
+//! source, statement as printed, checker) and the checkers that decide them —
+//! identities exactly in the symbolic ring, with the exact residual or a
+//! 256-bit MPFR counterexample as evidence when a claim fails. A claim never
+//! carries its verdict: [`run`] computes every verdict.
 
-use trig_core::{Family, Ring};
+pub mod claim;
+mod claims;
+pub mod exact;
+pub mod numeric;
+pub mod report;
+pub mod verdict;
 
-/// The families of the catalog that have formulas.
-pub fn audited_families() -> impl Iterator<Item = Family> {
-    Family::ALL.into_iter().filter(Family::has_formulas)
+pub use claim::{Claim, Seed};
+pub use verdict::{Status, Verdict};
+
+/// Every claim the audit decides, in report order.
+pub fn all_claims() -> Vec<Claim> {
+    claims::all()
 }
 
-/// The value of every function of `family` at the left end of its domain
-/// (`θ = 0` or `t = 0`), in any ring: atoms `s = 0`, `c = 1`, `t = 0`.
-pub fn left_end_values<T: Ring>(family: Family, like: &T, params: &[T]) -> Vec<T> {
-    let atoms = trig_core::Atoms {
-        s: like.int(0),
-        c: like.int(1),
-        t: like.int(0),
-    };
-    family.eval(&atoms, params)
+/// A claim with its computed verdict.
+#[derive(Debug, Clone)]
+pub struct Outcome {
+    pub claim: Claim,
+    pub verdict: Verdict,
+}
+
+/// Runs the checkers of the selected claims (all when both filters are `None`).
+pub fn run(seed: Option<Seed>, claim_id: Option<&str>) -> Vec<Outcome> {
+    all_claims()
+        .into_iter()
+        .filter(|c| seed.is_none_or(|s| c.seed == s))
+        .filter(|c| claim_id.is_none_or(|id| c.id.eq_ignore_ascii_case(id)))
+        .map(|claim| Outcome {
+            verdict: (claim.check)(),
+            claim,
+        })
+        .collect()
 }

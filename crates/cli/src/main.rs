@@ -11,7 +11,7 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
-use crate::commands::{eval::EvalArgs, list::ListArgs, table::TableArgs};
+use crate::commands::{audit::AuditArgs, eval::EvalArgs, list::ListArgs, table::TableArgs};
 
 /// Machine-checked audits of trigonometric and polynomial spline bases.
 #[derive(Debug, Parser)]
@@ -23,6 +23,8 @@ struct Cli {
 
 #[derive(Debug, Subcommand)]
 enum Command {
+    /// Decide every published claim and print the report (the main job).
+    Audit(AuditArgs),
     /// Print the catalog of bases: id, citation, variable, parameters and ranges.
     List(ListArgs),
     /// Evaluate every function of a family at a point (f64, or MPFR with --prec).
@@ -34,6 +36,7 @@ enum Command {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
+        Command::Audit(args) => commands::audit::run(&args),
         Command::List(args) => commands::list::run(&args),
         Command::Eval(args) => commands::eval::run(&args),
         Command::Table(args) => commands::table::run(&args),

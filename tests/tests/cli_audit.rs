@@ -1,0 +1,49 @@
+//! End-to-end tests of `trig-audit audit`.
+
+use trig_e2e::{error_line, run, stdout_ok};
+
+#[test]
+fn audit_runs_and_exits_zero_whatever_the_verdicts() {
+    let out = stdout_ok(&["audit"]);
+    assert!(out.starts_with("# trig-audit report"));
+    assert!(out.contains("## Summary"));
+    assert!(out.contains("fails"), "some printed claims fail");
+}
+
+#[test]
+fn filters_and_json() {
+    let out = stdout_ok(&["audit", "--seed", "004", "--format", "json"]);
+    let json: serde_json::Value = serde_json::from_str(&out).expect("JSON");
+    let claims = json["claims"].as_array().expect("claims");
+    assert!(!claims.is_empty());
+    assert!(claims.iter().all(|c| c["seed"] == "004"));
+    let one = stdout_ok(&["audit", "--claim", "t4b", "--format", "json"]);
+    let json: serde_json::Value = serde_json::from_str(&one).expect("JSON");
+    assert_eq!(json["claims"].as_array().map(Vec::len), Some(1));
+}
+
+#[test]
+fn output_file_is_written_whole() {
+    let dir = std::env::temp_dir().join(format!("trig-audit-e2e-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let path = dir.join("report.md");
+    let msg = stdout_ok(&["audit", "--output", path.to_str().expect("utf-8 path")]);
+    assert!(msg.starts_with("wrote "));
+    let written = std::fs::read_to_string(&path).expect("report written");
+    assert_eq!(written, stdout_ok(&["audit"]));
+    let leftovers: Vec<_> = std::fs::read_dir(&dir)
+        .expect("list")
+        .filter_map(Result::ok)
+        .filter(|e| e.file_name().to_string_lossy().contains(".tmp-"))
+        .collect();
+    assert!(leftovers.is_empty(), "no temporary file left behind");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn bad_audit_requests_fail_cleanly() {
+    assert!(error_line(&["audit", "--seed", "7"]).contains("--seed"));
+    assert!(error_line(&["audit", "--claim", "Z99"]).contains("no claim"));
+    let out = run(&["audit", "--output", "/nonexistent-dir/x.md"]);
+    assert!(!out.status.success());
+}

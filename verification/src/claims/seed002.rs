@@ -1,0 +1,131 @@
+//! Seed 002 (Dube & Mishra 2017): the quartic trigonometric Bézier basis and
+//! the rational curve.
+
+use trig_core::{Family, Ring};
+use trig_deriv::{End, Wrt, curve_endpoint_derivatives};
+use trig_symbolic::Sym;
+
+use crate::claim::{Claim, Seed};
+use crate::exact::{basis, identities, identity, reflect, sum};
+use crate::verdict::Verdict;
+
+pub const CLAIMS: &[Claim] = &[
+    Claim {
+        id: "D1",
+        seed: Seed::S002,
+        source: "property (b)",
+        statement: "Σ_{i=0}^{5} b_i(t) = 0 (as printed)",
+        check: d1,
+    },
+    Claim {
+        id: "D1b",
+        seed: Seed::S002,
+        source: "property (b), reading",
+        statement: "reading of D1: Σ_{i=0}^{5} b_i(t) = 1",
+        check: d1b,
+    },
+    Claim {
+        id: "D3",
+        seed: Seed::S002,
+        source: "property (c)",
+        statement: "b_i(t) = b_{5−i}(π/2 − t), i = 0, 1, 2",
+        check: d3,
+    },
+    Claim {
+        id: "D5",
+        seed: Seed::S002,
+        source: "Theorem 2 (1)",
+        statement: "R(0) = P0, R(π/2) = P5, R'(0) = 4(w1/w0)(P1 − P0), R'(π/2) = 4(w4/w5)(P5 − P4), R''(0) = [(32w1² − 8w0w1)(P0 − P1) − 12w0w2(P0 − P2)]/w0², R''(π/2) = [(32w4² − 8w4w5)(P5 − P4) − 12w3w5(P5 − P3)]/w5²",
+        check: d5,
+    },
+    Claim {
+        id: "D12",
+        seed: Seed::S002,
+        source: "Proposition 1, (5)",
+        statement: "Σ_{i=0}^{3} Tb_i(t, α1, α2) = 1",
+        check: d12,
+    },
+];
+
+fn d1() -> Verdict {
+    identity(
+        "Σ b_i − 0",
+        &sum(&basis(Family::Seed002Quartic)),
+        &Sym::zero(),
+    )
+}
+
+fn d1b() -> Verdict {
+    identity(
+        "Σ b_i − 1",
+        &sum(&basis(Family::Seed002Quartic)),
+        &Sym::one(),
+    )
+}
+
+fn d3() -> Verdict {
+    let b = basis(Family::Seed002Quartic);
+    identities(
+        (0..3)
+            .map(|i| {
+                (
+                    format!("b{i}(t) − b{}(π/2 − t)", 5 - i),
+                    b[i].clone(),
+                    reflect(&b[5 - i], true),
+                )
+            })
+            .collect(),
+    )
+}
+
+fn var(name: &str, i: usize) -> Sym {
+    Sym::var(&format!("{name}{i}"))
+}
+
+fn d5() -> Verdict {
+    let p: Vec<Sym> = (0..6).map(|i| var("P", i)).collect();
+    let w: Vec<Sym> = (0..6).map(|i| var("w", i)).collect();
+    let at = |end| {
+        curve_endpoint_derivatives::<Sym, 3>(
+            Family::Seed002Quartic,
+            &[],
+            &p,
+            Some(&w),
+            end,
+            Wrt::Angle,
+            &Sym::one(),
+        )
+    };
+    let (r0, r1) = (at(End::Start), at(End::End));
+    let n = |k: i64| Sym::int(k);
+    let printed_r2_0 = ((n(32) * &w[1].square() - &(n(8) * &w[0] * &w[1]))
+        * &(p[0].clone() - &p[1])
+        - &(n(12) * &w[0] * &w[2] * &(p[0].clone() - &p[2])))
+        / &w[0].square();
+    let printed_r2_1 = ((n(32) * &w[4].square() - &(n(8) * &w[4] * &w[5]))
+        * &(p[5].clone() - &p[4])
+        - &(n(12) * &w[3] * &w[5] * &(p[5].clone() - &p[3])))
+        / &w[5].square();
+    identities(vec![
+        ("R(0) − P0".into(), r0[0].clone(), p[0].clone()),
+        ("R(π/2) − P5".into(), r1[0].clone(), p[5].clone()),
+        (
+            "R'(0) − 4(w1/w0)(P1 − P0)".into(),
+            r0[1].clone(),
+            n(4) * &w[1] / &w[0] * &(p[1].clone() - &p[0]),
+        ),
+        (
+            "R'(π/2) − 4(w4/w5)(P5 − P4)".into(),
+            r1[1].clone(),
+            n(4) * &w[4] / &w[5] * &(p[5].clone() - &p[4]),
+        ),
+        ("R''(0) − printed".into(), r0[2].clone(), printed_r2_0),
+        ("R''(π/2) − printed".into(), r1[2].clone(), printed_r2_1),
+    ])
+}
+
+fn d12() -> Verdict {
+    Verdict::not_checkable(
+        "the functions Tb_i(t, α1, α2) of (5) are unreadable in our copy (the printed fraction is garbled: \"T_0(tα1,α2) = 1/Σ_{i=0, i=1, i=1, i=0 …}\"), so their sum cannot be formed",
+    )
+}

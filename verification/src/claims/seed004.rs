@@ -1,0 +1,255 @@
+//! Seed 004 (Dube & Mishra 2016): the standard cubic Hermite bases and the EH
+//! bases with shape parameters λ, μ; the EH curve's terminal properties and
+//! rewritten form.
+
+use trig_core::{Family, Ring};
+use trig_deriv::{End, Wrt, curve_endpoint_derivatives, endpoint_derivatives};
+use trig_symbolic::Sym;
+
+use crate::claim::{Claim, Seed};
+use crate::exact::{IDENTITY, basis, identities, reflect, sum};
+use crate::verdict::{Status, Verdict};
+
+pub const CLAIMS: &[Claim] = &[
+    Claim {
+        id: "E1",
+        seed: Seed::S004,
+        source: "section II",
+        statement: "α0(0) = α1(1) = 1; α0(1) = α1(0) = 0; α1'(0) = α1'(1) = 0; α0'(0) = α0'(1) = 0; β0(0) = β0(1) = 0; β1(0) = β1(1) = 0; β0'(0) = β1'(1) = 1; β0'(1) = β1'(0) = 0; α0(t) + α1(t) = 1; β0(t) + β0(1 − t) = 0",
+        check: e1,
+    },
+    Claim {
+        id: "E1b",
+        seed: Seed::S004,
+        source: "section II, reading",
+        statement: "reading of the last property of E1: β0(t) + β1(1 − t) = 0",
+        check: e1b,
+    },
+    Claim {
+        id: "E3",
+        seed: Seed::S004,
+        source: "III(i) (a)",
+        statement: "b0 + b1 = 1; b2(t) + b3(1 − t) = 1",
+        check: e3,
+    },
+    Claim {
+        id: "E5",
+        seed: Seed::S004,
+        source: "III(i) (c)",
+        statement: "b_{i,3}(t) = b_{3−i,3}(1 − t), i = 0…3",
+        check: e5,
+    },
+    Claim {
+        id: "E6",
+        seed: Seed::S004,
+        source: "III(i) (d)",
+        statement: "Σ_{i=0}^{3} b_{i,3}(t) = 1",
+        check: e6,
+    },
+    Claim {
+        id: "E8",
+        seed: Seed::S004,
+        source: "text after (1)",
+        statement: "λ = μ = 0 gives the standard cubic Hermite bases",
+        check: e8,
+    },
+    Claim {
+        id: "E9",
+        seed: Seed::S004,
+        source: "III(ii) (a)",
+        statement: "R(0) = P0; R(1) = P1; R'(0) = P2; R'(1) = P3; R''(0) = 2(λ−3)(P0 − P1) + 2μ(P3 − P4) − 2(2P3 + P4); R''(1) = (2λ+6)(P0 − P1) + 2μ(P3 − P4) + 2(P3 + 2P4)",
+        check: e9,
+    },
+    Claim {
+        id: "E13",
+        seed: Seed::S004,
+        source: "(4)",
+        statement: "R = Σ C_{j,3} P_j + λt²(1 + t² − 2t)(P0 − P1) + μt²(1 + t² − 2t)(P2 − P3), C the cubic Hermite bases",
+        check: e13,
+    },
+];
+
+fn n(k: i64) -> Sym {
+    Sym::int(k)
+}
+
+fn hermite_parts() -> Vec<(String, Sym, Sym)> {
+    let h = basis(Family::Hermite);
+    let d =
+        |end| endpoint_derivatives::<Sym, 2>(Family::Hermite, &[], end, Wrt::Angle, &Sym::one());
+    let (d0, d1) = (d(End::Start), d(End::End));
+    let names = ["α0", "α1", "β0", "β1"];
+    let mut parts = Vec::new();
+    let mut value = |f: usize, end: &Vec<Vec<Sym>>, at: &str, order: usize, want: i64| {
+        let prime = if order == 1 { "'" } else { "" };
+        parts.push((
+            format!("{}{prime}({at}) = {want}", names[f]),
+            end[f][order].clone(),
+            n(want),
+        ));
+    };
+    for (f, v0, v1) in [(0, 1, 0), (1, 0, 1), (2, 0, 0), (3, 0, 0)] {
+        value(f, &d0, "0", 0, v0);
+        value(f, &d1, "1", 0, v1);
+    }
+    for (f, v0, v1) in [(0, 0, 0), (1, 0, 0), (2, 1, 0), (3, 0, 1)] {
+        value(f, &d0, "0", 1, v0);
+        value(f, &d1, "1", 1, v1);
+    }
+    parts.push(("α0 + α1 = 1".into(), h[0].clone() + &h[1], Sym::one()));
+    parts
+}
+
+fn e1() -> Verdict {
+    let h = basis(Family::Hermite);
+    let mut parts = hermite_parts();
+    parts.push((
+        "β0(t) + β0(1 − t) = 0".into(),
+        h[2].clone() + &reflect(&h[2], false),
+        Sym::zero(),
+    ));
+    identities(parts)
+}
+
+fn e1b() -> Verdict {
+    let h = basis(Family::Hermite);
+    identities(vec![(
+        "β0(t) + β1(1 − t) = 0".into(),
+        h[2].clone() + &reflect(&h[3], false),
+        Sym::zero(),
+    )])
+}
+
+fn e3() -> Verdict {
+    let b = basis(Family::Eh);
+    identities(vec![
+        ("b0 + b1 − 1".into(), b[0].clone() + &b[1], Sym::one()),
+        (
+            "b2(t) + b3(1 − t) − 1".into(),
+            b[2].clone() + &reflect(&b[3], false),
+            Sym::one(),
+        ),
+    ])
+}
+
+fn e5() -> Verdict {
+    let b = basis(Family::Eh);
+    identities(
+        (0..4)
+            .map(|i| {
+                (
+                    format!("b{i}(t) − b{}(1 − t)", 3 - i),
+                    b[i].clone(),
+                    reflect(&b[3 - i], false),
+                )
+            })
+            .collect(),
+    )
+}
+
+fn e6() -> Verdict {
+    identities(vec![(
+        "Σ b_i − 1".into(),
+        sum(&basis(Family::Eh)),
+        Sym::one(),
+    )])
+}
+
+fn e8() -> Verdict {
+    let zero = Sym::zero();
+    let eh: Vec<Sym> = basis(Family::Eh)
+        .iter()
+        .map(|b| b.subs("lambda", &zero).subs("mu", &zero))
+        .collect();
+    let h = basis(Family::Hermite);
+    let names = ["α0", "α1", "β0", "β1"];
+    let mut v = identities(
+        (0..4)
+            .map(|i| {
+                (
+                    format!("b{i}(λ = μ = 0) − {}", names[i]),
+                    eh[i].clone(),
+                    h[i].clone(),
+                )
+            })
+            .collect(),
+    );
+    v.evidence.push(
+        "the second sentence (λ = μ gives the single-parameter bases of its reference [20]) cites a basis not printed in the paper and is not checked".into(),
+    );
+    v
+}
+
+/// `R''` at both ends as printed, and with the μ-terms' indices shifted down
+/// by one (P3 → P2, P4 → P3).
+fn e9() -> Verdict {
+    let p: Vec<Sym> = (0..5).map(|i| Sym::var(&format!("P{i}"))).collect();
+    let (lambda, mu) = (Sym::var("lambda"), Sym::var("mu"));
+    let params = [lambda.clone(), mu.clone()];
+    let at = |end| {
+        curve_endpoint_derivatives::<Sym, 3>(
+            Family::Eh,
+            &params,
+            &p[..4],
+            None,
+            end,
+            Wrt::Angle,
+            &Sym::one(),
+        )
+    };
+    let (r0, r1) = (at(End::Start), at(End::End));
+    let r2 = |a: usize, b: usize| {
+        let left = (n(2) * &lambda - &n(6)) * &(p[0].clone() - &p[1])
+            + &(n(2) * &mu * &(p[a].clone() - &p[b]))
+            - &(n(2) * &(n(2) * &p[a] + &p[b]));
+        let right = (n(2) * &lambda + &n(6)) * &(p[0].clone() - &p[1])
+            + &(n(2) * &mu * &(p[a].clone() - &p[b]))
+            + &(n(2) * &(p[a].clone() + &(n(2) * &p[b])));
+        (left, right)
+    };
+    let common = |r2: (Sym, Sym), label: &str| {
+        vec![
+            ("R(0) − P0".to_string(), r0[0].clone(), p[0].clone()),
+            ("R(1) − P1".into(), r1[0].clone(), p[1].clone()),
+            ("R'(0) − P2".into(), r0[1].clone(), p[2].clone()),
+            ("R'(1) − P3".into(), r1[1].clone(), p[3].clone()),
+            (format!("R''(0) − {label}"), r0[2].clone(), r2.0),
+            (format!("R''(1) − {label}"), r1[2].clone(), r2.1),
+        ]
+    };
+    let printed = identities(common(r2(3, 4), "printed"));
+    if printed.status == Status::Holds {
+        return printed;
+    }
+    let shifted = identities(common(r2(2, 3), "printed with P3, P4 → P2, P3"));
+    if shifted.status != Status::Holds {
+        return printed;
+    }
+    let mut evidence = printed.evidence;
+    evidence.extend(shifted.evidence.into_iter().filter(|e| e.contains("→")));
+    evidence.push("the segment has only P0…P3; the printed R'' formulas use P4".into());
+    Verdict::new(Status::HoldsAfterCorrection, IDENTITY, evidence).with_correction(
+        "index shift in both R'' formulas: 2μ(P2 − P3) − 2(2P2 + P3) and 2μ(P2 − P3) + 2(P2 + 2P3)",
+    )
+}
+
+fn e13() -> Verdict {
+    let p: Vec<Sym> = (0..4).map(|i| Sym::var(&format!("P{i}"))).collect();
+    let b = basis(Family::Eh);
+    let c = basis(Family::Hermite);
+    let t = Sym::var("t");
+    let bump = t.square() * &(Sym::one() + &t.square() - &(n(2) * &t));
+    let curve = sum(&b
+        .iter()
+        .zip(&p)
+        .map(|(bi, pi)| bi.clone() * pi)
+        .collect::<Vec<_>>());
+    let rewritten = sum(&c
+        .iter()
+        .zip(&p)
+        .map(|(ci, pi)| ci.clone() * pi)
+        .collect::<Vec<_>>())
+        + &(Sym::var("lambda") * &bump * &(p[0].clone() - &p[1]))
+        + &(Sym::var("mu") * &bump * &(p[2].clone() - &p[3]));
+    identities(vec![("Σ b_j P_j − (4)".into(), curve, rewritten)])
+}

@@ -1,0 +1,381 @@
+//! Seed 001, the thesis: claims about the quadratic (3.1) and cubic (3.7)
+//! bases, the surface matrix form (5.4)–(5.8), the comparison bases (6.1)–(6.3)
+//! and the Appendix 2 listing.
+
+use rug::Rational;
+use trig_core::families::thesis::{surface_matrix_a, surface_row_t};
+use trig_core::{Family, Variable};
+use trig_deriv::End;
+use trig_symbolic::Sym;
+
+use crate::claim::{Claim, Seed};
+use crate::exact::{at_end, basis, identities, identity, reflect, sum};
+use crate::numeric::{differ, half_pi_minus, point, show, value};
+use crate::verdict::{Status, Verdict};
+
+const fn claim(
+    id: &'static str,
+    source: &'static str,
+    statement: &'static str,
+    check: fn() -> Verdict,
+) -> Claim {
+    Claim {
+        id,
+        seed: Seed::S001,
+        source,
+        statement,
+        check,
+    }
+}
+
+pub const CLAIMS: &[Claim] = &[
+    claim("T1", "(3.1), 3.2.2 ii", "H0 + H1 + H2 = 1", t1),
+    claim(
+        "T4",
+        "3.2.2 iv",
+        "H_i(u; β) = H_{2−i}(π/2 − u; β) (as printed)",
+        t4,
+    ),
+    claim(
+        "T4b",
+        "3.2.2 iv, reading",
+        "reading of T4: H_i(u) = H_{2−i}(1 − u)",
+        t4b,
+    ),
+    claim(
+        "T5",
+        "(3.3)–(3.6)",
+        "F(0) − P0 = (P1 − P0)/(β+1), F(1) − P2 = (P1 − P2)/(β+1)",
+        t5,
+    ),
+    claim(
+        "T5b",
+        "3.2.4, text after Figure 3.3",
+        "the curve starts at the first control point P0 and ends at the last control point P2",
+        t5b,
+    ),
+    claim("T6", "3.3.2 ii", "Σ b_i(u; m) = 1", t6),
+    claim(
+        "T9",
+        "3.3.2 iv",
+        "b_i(u; m) = b_{2−i}(π/2 − u; m) (as printed)",
+        t9,
+    ),
+    claim(
+        "T9b",
+        "3.3.2 iv, reading",
+        "reading of T9: b_i(u) = b_{3−i}(1 − u)",
+        t9b,
+    ),
+    claim(
+        "T25",
+        "(5.4)–(5.8)",
+        "[T][A] = [B0 … B3]; [T][A][V][A]^T[U] equals the double sum (5.3)",
+        t25,
+    ),
+    claim(
+        "T27",
+        "5.4.1",
+        "for m outside (−2, 1] \"the basis functions are not normalized\" (do not sum to 1)",
+        t27,
+    ),
+    claim(
+        "T28",
+        "(3.7), (6.1), (6.2)",
+        "the thesis basis, Majeed & Qayyum (6.1) and Han et al. (6.2): equal under a change of parameter?",
+        t28,
+    ),
+    claim(
+        "T30",
+        "Appendix 2",
+        "the MATLAB listing computes Han's basis (6.2); its functions sum to 1",
+        t30,
+    ),
+    claim(
+        "T33",
+        "4.3.1, Step 1",
+        "b3(1) = 0, b0(1) = b1(1) = b2(1) = 1",
+        t33,
+    ),
+    claim(
+        "T37",
+        "3.2.1, after (3.1)",
+        "when β = 0 the quadratic curve is a straight line",
+        t37,
+    ),
+    claim(
+        "T38",
+        "3.2.4, Figure 3.3(a) text",
+        "for β = 1 the curve ends at the midpoints of the edges P0P1 and P1P2",
+        t38,
+    ),
+];
+
+fn points(n: usize) -> Vec<Sym> {
+    (0..n).map(|i| Sym::var(&format!("P{i}"))).collect()
+}
+
+/// `Σ b_i P_i` with symbolic control points.
+fn curve(b: &[Sym]) -> Sym {
+    sum(&b
+        .iter()
+        .zip(points(b.len()))
+        .map(|(bi, p)| bi.clone() * &p)
+        .collect::<Vec<_>>())
+}
+
+fn t1() -> Verdict {
+    let h = basis(Family::ThesisQuadratic);
+    let mut v = identity("H0 + H1 + H2 − 1", &sum(&h), &Sym::one());
+    v.evidence.push(
+        "H1 is defined in (3.1) as 1 − H0 − H2, so the identity holds by construction".into(),
+    );
+    v
+}
+
+/// A counterexample to `f_i(x) = f_j(π/2 − x)` for a family in `u`.
+fn reflection_counterexample(family: Family, param: (i64, i64), i: usize, j: usize) -> Verdict {
+    let p = [Rational::from(param)];
+    let x = point((1, 2));
+    let y = half_pi_minus(&x);
+    let (a, b) = (value(family, &p, i, &x), value(family, &p, j, &y));
+    let name = family.info().params[0].symbol;
+    let f = family.info().functions;
+    let status = if differ(&a, &b) {
+        Status::Fails
+    } else {
+        Status::Holds
+    };
+    Verdict::new(
+        status,
+        "counterexample evaluated in 256-bit MPFR (difference far above rounding)",
+        vec![
+            format!(
+                "{name} = {}, u = 1/2: {}(1/2) = {}, but {}(π/2 − 1/2) = {} (π/2 − 1/2 ≈ 1.0708 lies outside u ∈ [0, 1])",
+                p[0],
+                f[i],
+                show(&a),
+                f[j],
+                show(&b)
+            ),
+            "the statement holds in the angle θ = πu/2 (θ ↦ π/2 − θ), i.e. for u ↦ 1 − u; see the reading".into(),
+        ],
+    )
+}
+
+fn reflection_reading(family: Family) -> Verdict {
+    let b = basis(family);
+    let n = b.len();
+    let trig = family.info().variable.is_trigonometric();
+    let f = family.info().functions;
+    identities(
+        (0..n)
+            .map(|i| {
+                (
+                    format!("{}(u) − {}(1 − u)", f[i], f[n - 1 - i]),
+                    b[i].clone(),
+                    reflect(&b[n - 1 - i], trig),
+                )
+            })
+            .collect(),
+    )
+}
+
+fn t4() -> Verdict {
+    reflection_counterexample(Family::ThesisQuadratic, (1, 1), 0, 2)
+}
+
+fn t4b() -> Verdict {
+    reflection_reading(Family::ThesisQuadratic)
+}
+
+fn quadratic_curve_ends() -> (Sym, Sym) {
+    let f = curve(&basis(Family::ThesisQuadratic));
+    (at_end(&f, End::Start), at_end(&f, End::End))
+}
+
+fn t5() -> Verdict {
+    let (f0, f1) = quadratic_curve_ends();
+    let k = Sym::one() / &(Sym::var("beta") + &Sym::one());
+    let [p0, p1, p2]: [Sym; 3] = points(3).try_into().expect("three points");
+    identities(vec![
+        (
+            "F(0) − P0 = (P1 − P0)/(β+1)".into(),
+            f0 - &p0,
+            (p1.clone() - &p0) * &k,
+        ),
+        (
+            "F(1) − P2 = (P1 − P2)/(β+1)".into(),
+            f1 - &p2,
+            (p1 - &p2) * &k,
+        ),
+    ])
+}
+
+fn t5b() -> Verdict {
+    let (f0, f1) = quadratic_curve_ends();
+    let [p0, _, p2]: [Sym; 3] = points(3).try_into().expect("three points");
+    let mut v = identities(vec![
+        ("F(0) = P0".into(), f0, p0),
+        ("F(1) = P2".into(), f1, p2),
+    ]);
+    v.evidence.push(
+        "the residuals are (P1 − P0)/(β+1) and (P1 − P2)/(β+1): nonzero for every finite β ≥ 0 unless P1 coincides with the end point; e.g. β = 1, P0 = (0,0), P1 = (1.5,1.5) (3.2.3) gives F(0) = (0.75, 0.75)".into(),
+    );
+    v
+}
+
+fn t6() -> Verdict {
+    identity("Σ b_i − 1", &sum(&basis(Family::ThesisCubic)), &Sym::one())
+}
+
+fn t9() -> Verdict {
+    let mut v = reflection_counterexample(Family::ThesisCubic, (0, 1), 0, 2);
+    v.evidence.push(
+        "as printed the index 2 − i is also out of range for i = 3 (b_{−1} does not exist)".into(),
+    );
+    v
+}
+
+fn t9b() -> Verdict {
+    reflection_reading(Family::ThesisCubic)
+}
+
+fn t25() -> Verdict {
+    let (s, c, m) = (Sym::var("s"), Sym::var("c"), Sym::var("m"));
+    let t = surface_row_t(&s, &c);
+    let a = surface_matrix_a(&m);
+    let b = basis(Family::ThesisCubic);
+    let mut v = identities(
+        (0..4)
+            .map(|col| {
+                let entry = (0..7).fold(Sym::zero(), |acc, r| acc + &(t[r].clone() * &a[r][col]));
+                (format!("([T][A])_{col} − b{col}"), entry, b[col].clone())
+            })
+            .collect(),
+    );
+    if v.status == Status::Holds {
+        v.evidence.push(
+            "hence [T][A][V][A]^T[U] = [b(u)] V [b(v)]^T = Σ_i Σ_j b_i(u) b_j(v) V_{ij}, the double sum (5.3) with P_{i,j} = V_{ij}".into(),
+        );
+    }
+    v
+}
+
+fn t27() -> Verdict {
+    let residual = sum(&basis(Family::ThesisCubic)) - &Sym::one();
+    let (status, reading) = if residual.is_zero() {
+        (
+            Status::Fails,
+            "identically in m: the functions sum to 1 for every real m; outside [−2, 1] what can fail is nonnegativity, not normalisation",
+        )
+    } else {
+        (Status::Holds, "not identically zero in m")
+    };
+    Verdict::new(
+        status,
+        crate::exact::IDENTITY,
+        vec![format!("Σ b_i − 1 = {residual}, {reading}")],
+    )
+}
+
+fn t28() -> Verdict {
+    let cubic = basis(Family::ThesisCubic);
+    let han = basis(Family::Han);
+    let mq = basis(Family::MajeedQayyum);
+    let m = Sym::var("m");
+    let mut parts = Vec::new();
+    for i in 0..4 {
+        parts.push((
+            format!("thesis b{i}(u; m) − Han b{i}(u; λ = m)"),
+            cubic[i].clone(),
+            han[i].subs("lambda", &m),
+        ));
+        parts.push((
+            format!("thesis b{i}(u; m) − g{i}(πu/2; η = m + 1)"),
+            cubic[i].clone(),
+            mq[i].subs("eta", &(m.clone() + &Sym::one())),
+        ));
+    }
+    let mut v = identities(parts);
+    debug_assert_eq!(Family::MajeedQayyum.info().variable, Variable::Angle);
+    v.evidence.push(
+        "so (3.7), (6.2) and (6.1) are one family: m = λ = η − 1 (with t = πu/2 for (6.1)); the published ranges m ∈ [−2, 1], λ ∈ [−2, 1], η ∈ (1/2, 2] correspond to m ∈ [−2, 1], [−2, 1] and (−1/2, 1]".into(),
+    );
+    v
+}
+
+fn t30() -> Verdict {
+    let han = basis(Family::Han);
+    let listing = basis(Family::HanListing);
+    let mut parts: Vec<(String, Sym, Sym)> = (0..4)
+        .map(|i| {
+            (
+                format!("listing b{i}0 − (6.2) b{i}"),
+                listing[i].clone(),
+                han[i].clone(),
+            )
+        })
+        .collect();
+    parts.push(("Σ listed functions − 1".into(), sum(&listing), Sym::one()));
+    identities(parts).with_correction(
+        "line b20 of the listing must use cos((pi/2)*t) in its last factor: (2+m-(m.*cos((pi/2)*t)))",
+    )
+}
+
+fn t33() -> Verdict {
+    let b = basis(Family::ThesisCubic);
+    let values: Vec<Sym> = b.iter().map(|bi| at_end(bi, End::End)).collect();
+    let printed = [0, 1, 1, 1];
+    let parts = (0..4)
+        .map(|i| {
+            (
+                format!("b{i}(1) = {}", printed[i]),
+                values[i].clone(),
+                Sym::int(printed[i]),
+            )
+        })
+        .collect();
+    identities(parts)
+        .with_correction("b0(1) = b1(1) = b2(1) = 0 and b3(1) = 1 (the computed values)")
+}
+
+fn t37() -> Verdict {
+    let h = basis(Family::ThesisQuadratic);
+    let zero = Sym::zero();
+    let at0: Vec<Sym> = h.iter().map(|hi| hi.subs("beta", &zero)).collect();
+    let v = identities(vec![
+        ("H0(u; 0)".into(), at0[0].clone(), Sym::zero()),
+        ("H1(u; 0)".into(), at0[1].clone(), Sym::one()),
+        ("H2(u; 0)".into(), at0[2].clone(), Sym::zero()),
+    ]);
+    let status = if v.status == Status::Holds {
+        Status::Fails
+    } else {
+        Status::Holds
+    };
+    let mut evidence = v.evidence;
+    evidence.push(
+        "with β = 0 the curve is F(u) = P1 for every u: a single point, not a straight line (3.2.3 says the same: \"H1(u) becomes identically equal to one\")".into(),
+    );
+    Verdict::new(status, crate::exact::IDENTITY, evidence)
+}
+
+fn t38() -> Verdict {
+    let (f0, f1) = quadratic_curve_ends();
+    let one = Sym::one();
+    let [p0, p1, p2]: [Sym; 3] = points(3).try_into().expect("three points");
+    let half = Sym::rational(Rational::from((1, 2)));
+    identities(vec![
+        (
+            "F(0; β=1) − (P0 + P1)/2".into(),
+            f0.subs("beta", &one),
+            (p0 + &p1) * &half,
+        ),
+        (
+            "F(1; β=1) − (P1 + P2)/2".into(),
+            f1.subs("beta", &one),
+            (p1 + &p2) * &half,
+        ),
+    ])
+}

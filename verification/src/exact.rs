@@ -1,0 +1,130 @@
+//! Exact checks in the symbolic ring `Q(params)[s, c]/(s² + c² − 1)`.
+//!
+//! The catalog's own generic formulas are evaluated on symbols (one source
+//! of truth); identities are decided by the exact zero test, and a failure is
+//! shown by its exact residual.
+
+use trig_core::{Atoms, Family};
+use trig_deriv::End;
+use trig_symbolic::{Sym, symbolic_atoms};
+
+use crate::verdict::{Status, Verdict};
+
+/// How identities are decided, as the report states it.
+pub const IDENTITY: &str =
+    "exact identity in the symbolic ring Q(parameters)[s, c]/(s^2 + c^2 - 1), s = sin θ, c = cos θ";
+
+/// Every function of `family` with its parameters as symbols named as in
+/// the catalog (`m`, `beta`, …), at the symbolic atoms `s`, `c`, `t`.
+pub fn basis(family: Family) -> Vec<Sym> {
+    basis_at(family, &symbolic_atoms())
+}
+
+/// The same at given atoms.
+pub fn basis_at(family: Family, atoms: &Atoms<Sym>) -> Vec<Sym> {
+    family.eval(atoms, &params(family))
+}
+
+/// The family's parameters as symbols.
+pub fn params(family: Family) -> Vec<Sym> {
+    family
+        .info()
+        .params
+        .iter()
+        .map(|p| Sym::var(p.name))
+        .collect()
+}
+
+/// The reflection `θ ↦ π/2 − θ` (`u ↦ 1 − u`): swaps `s` and `c`; for
+/// polynomial families `t ↦ 1 − t`.
+pub fn reflect(e: &Sym, trigonometric: bool) -> Sym {
+    if trigonometric {
+        let tmp = Sym::var("__swap");
+        e.subs("s", &tmp)
+            .subs("c", &Sym::var("s"))
+            .subs("__swap", &Sym::var("c"))
+    } else {
+        e.subs("t", &(Sym::one() - &Sym::var("t")))
+    }
+}
+
+/// The value at one end of the domain (`s = 0, c = 1, t = 0` or
+/// `s = 1, c = 0, t = 1`).
+pub fn at_end(e: &Sym, end: End) -> Sym {
+    let (s, c, t) = match end {
+        End::Start => (0, 1, 0),
+        End::End => (1, 0, 1),
+    };
+    e.subs("s", &Sym::int(s))
+        .subs("c", &Sym::int(c))
+        .subs("t", &Sym::int(t))
+}
+
+/// Decides `lhs = rhs` exactly: holds, or fails with the residual.
+pub fn identity(label: &str, lhs: &Sym, rhs: &Sym) -> Verdict {
+    Verdict::all(
+        IDENTITY,
+        vec![(label.to_string(), residual_verdict(lhs, rhs))],
+    )
+}
+
+/// The verdict on `lhs = rhs` with the residual as its only evidence.
+pub fn residual_verdict(lhs: &Sym, rhs: &Sym) -> Verdict {
+    let residual = lhs.clone() - rhs;
+    let (status, evidence) = if residual.is_zero() {
+        (Status::Holds, "residual is exactly 0".to_string())
+    } else {
+        (
+            Status::Fails,
+            format!("residual (left − right) = {residual}"),
+        )
+    };
+    Verdict::new(status, IDENTITY, vec![evidence])
+}
+
+/// Decides several identities that together make one claim.
+pub fn identities(parts: Vec<(String, Sym, Sym)>) -> Verdict {
+    Verdict::all(
+        IDENTITY,
+        parts
+            .into_iter()
+            .map(|(label, l, r)| {
+                let v = residual_verdict(&l, &r);
+                (label, v)
+            })
+            .collect(),
+    )
+}
+
+/// The sum of a list of expressions.
+pub fn sum(items: &[Sym]) -> Sym {
+    items.iter().fold(Sym::zero(), |acc, x| acc + x)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn identity_proves_a_true_one_and_refutes_a_false_one() {
+        let s = Sym::var("s");
+        let c = Sym::var("c");
+        let one = Sym::one();
+        assert_eq!(
+            identity("pythagoras", &(s.clone() * &s + &(c.clone() * &c)), &one).status,
+            Status::Holds
+        );
+        let v = identity("wrong", &(s.clone() * &s), &one);
+        assert_eq!(v.status, Status::Fails);
+        assert!(v.evidence[0].contains("-c^2"), "{:?}", v.evidence);
+    }
+
+    #[test]
+    fn reflection_swaps_the_thesis_cubic_ends() {
+        let b = basis(Family::ThesisCubic);
+        assert!((reflect(&b[0], true) - &b[3]).is_zero());
+        assert!(!(reflect(&b[0], true) - &b[2]).is_zero());
+        assert_eq!(at_end(&b[0], End::Start), Sym::one());
+        assert_eq!(at_end(&b[0], End::End), Sym::zero());
+    }
+}

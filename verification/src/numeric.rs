@@ -1,0 +1,40 @@
+//! Counterexamples evaluated in 256-bit MPFR, for statements that leave the
+//! symbolic ring (e.g. a reflection `u ↦ π/2 − u` of a variable that is not
+//! the angle).
+
+use rug::Rational;
+use trig_core::{Family, Mpfr, Real, Ring};
+
+/// Working precision of every counterexample.
+pub const PREC: u32 = 256;
+
+/// `f_i(x)` at 256 bits, parameters exact, outside the domain if need be.
+pub fn value(family: Family, params: &[Rational], i: usize, x: &Mpfr) -> Mpfr {
+    let values = family
+        .eval_at(x, params, true)
+        .expect("counterexample points are finite and parameters valid");
+    values[i].clone()
+}
+
+/// A rational point at 256 bits.
+pub fn point(q: (i64, i64)) -> Mpfr {
+    Mpfr::from_rational(PREC, &Rational::from(q))
+}
+
+/// `π/2 − x` at 256 bits.
+pub fn half_pi_minus(x: &Mpfr) -> Mpfr {
+    x.pi() * &x.ratio(1, 2) - x
+}
+
+/// Prints a value with 30 significant digits.
+pub fn show(x: &Mpfr) -> String {
+    x.0.to_string_radix(10, Some(30))
+}
+
+/// True when `|a − b|` exceeds `2⁻²⁰⁰`, far above the 256-bit rounding of
+/// these short evaluations: a certified inequality of the two values.
+pub fn differ(a: &Mpfr, b: &Mpfr) -> bool {
+    let d = a.clone() - b;
+    let abs = if d < d.int(0) { -d } else { d };
+    abs.to_f64() > 2f64.powi(-200)
+}
