@@ -2,11 +2,14 @@
 //! (Appendix A), the printed non-uniform coefficients in the uniform case, and
 //! the rational basis (Theorems 5, 6).
 
+use rug::Rational;
 use trig_core::families::seed000::{blending, s_of_xi, uniform_normaliser};
 use trig_core::families::seed000_nonuniform::NonUniform;
 use trig_core::{Family, Ring};
 use trig_symbolic::Sym;
 
+use crate::certify::evidence::nonnegative_on;
+use crate::certify::nonneg::ParamBox;
 use crate::claim::{Claim, Seed};
 use crate::exact::{IDENTITY, basis, identities, residual_verdict, sum};
 use crate::verdict::{Status, Verdict};
@@ -18,6 +21,13 @@ pub const CLAIMS: &[Claim] = &[
         source: "Appendix A, Theorem 1",
         statement: "uniform case: Σ_k l_k(t)/(6ζ² − 6ζ + 10) = 1, and each printed step of the proof",
         check: m1,
+    },
+    Claim {
+        id: "M2",
+        seed: Seed::S000,
+        source: "Theorem 2, Appendix B",
+        statement: "F_j(n) > 0 (shape parameter ζ ∈ [0, 4])",
+        check: m2,
     },
     Claim {
         id: "M3b",
@@ -173,5 +183,21 @@ fn m6() -> Verdict {
         "uniform case (Appendix A basis F_j = l_j/(6ζ² − 6ζ + 10)), weights as symbols w0…w3"
             .into(),
     );
+    v
+}
+
+fn m2() -> Verdict {
+    let mut v = nonnegative_on(
+        Family::Seed000Uniform,
+        &basis(Family::Seed000Uniform),
+        Some("zeta"),
+        &ParamBox::Interval(Rational::new(), Rational::from(4)),
+    );
+    v.evidence.push(
+        "the B-spline basis function F_j is F3, F2, F1, F0 on its four intervals (uniform case, Appendix A); strict positivity fails in any case at the support ends, where F3(0) = F0(π/2) = 0".into(),
+    );
+    if v.status == Status::Holds {
+        v.status = Status::Fails;
+    }
     v
 }

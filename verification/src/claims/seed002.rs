@@ -5,6 +5,8 @@ use trig_core::{Family, Ring};
 use trig_deriv::{End, Wrt, curve_endpoint_derivatives};
 use trig_symbolic::Sym;
 
+use crate::certify::evidence::nonnegative_on;
+use crate::certify::nonneg::ParamBox;
 use crate::claim::{Claim, Seed};
 use crate::exact::{basis, identities, identity, reflect, sum};
 use crate::verdict::Verdict;
@@ -23,6 +25,13 @@ pub const CLAIMS: &[Claim] = &[
         source: "property (b), reading",
         statement: "reading of D1: Σ_{i=0}^{5} b_i(t) = 1",
         check: d1b,
+    },
+    Claim {
+        id: "D2",
+        seed: Seed::S002,
+        source: "property (a)",
+        statement: "b_i(t) ≥ 0 on [0, π/2], i = 0…5",
+        check: d2,
     },
     Claim {
         id: "D3",
@@ -127,5 +136,15 @@ fn d5() -> Verdict {
 fn d12() -> Verdict {
     Verdict::not_checkable(
         "the functions Tb_i(t, α1, α2) of (5) are unreadable in our copy (the printed fraction is garbled: \"T_0(tα1,α2) = 1/Σ_{i=0, i=1, i=1, i=0 …}\"), so their sum cannot be formed",
+    )
+}
+
+fn d2() -> Verdict {
+    let zero = rug::Rational::new();
+    nonnegative_on(
+        Family::Seed002Quartic,
+        &basis(Family::Seed002Quartic),
+        None,
+        &ParamBox::Interval(zero.clone(), zero),
     )
 }

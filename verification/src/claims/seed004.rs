@@ -6,6 +6,8 @@ use trig_core::{Family, Ring};
 use trig_deriv::{End, Wrt, curve_endpoint_derivatives, endpoint_derivatives};
 use trig_symbolic::Sym;
 
+use crate::certify::evidence::nonnegative_on;
+use crate::certify::nonneg::ParamBox;
 use crate::claim::{Claim, Seed};
 use crate::exact::{IDENTITY, basis, identities, reflect, sum};
 use crate::verdict::{Status, Verdict};
@@ -31,6 +33,13 @@ pub const CLAIMS: &[Claim] = &[
         source: "III(i) (a)",
         statement: "b0 + b1 = 1; b2(t) + b3(1 − t) = 1",
         check: e3,
+    },
+    Claim {
+        id: "E4",
+        seed: Seed::S004,
+        source: "III(i) (b)",
+        statement: "b_{i,3}(t) ≥ 0 on [0, 1], i = 0…3 (for the parameters of the paper, λ, μ ∈ [−1, 1])",
+        check: e4,
     },
     Claim {
         id: "E5",
@@ -252,4 +261,21 @@ fn e13() -> Verdict {
         + &(Sym::var("lambda") * &bump * &(p[0].clone() - &p[1]))
         + &(Sym::var("mu") * &bump * &(p[2].clone() - &p[3]));
     identities(vec![("Σ b_j P_j − (4)".into(), curve, rewritten)])
+}
+
+/// At λ = μ = 0 (inside the published range; the standard Hermite case the
+/// paper names) every function is tested on [0, 1].
+fn e4() -> Verdict {
+    let zero = Sym::zero();
+    let fs: Vec<Sym> = basis(Family::Eh)
+        .iter()
+        .map(|b| b.subs("lambda", &zero).subs("mu", &zero))
+        .collect();
+    let q0 = rug::Rational::new();
+    let mut v = nonnegative_on(Family::Eh, &fs, None, &ParamBox::Interval(q0.clone(), q0));
+    v.evidence.insert(
+        0,
+        "parameters λ = μ = 0 (inside [−1, 1]; the paper's own Hermite case)".into(),
+    );
+    v
 }

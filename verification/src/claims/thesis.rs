@@ -8,8 +8,10 @@ use trig_core::{Family, Variable};
 use trig_deriv::End;
 use trig_symbolic::Sym;
 
+use crate::certify::evidence::{maximal_versus_published, nonnegative_on, on_published_range};
+use crate::certify::nonneg::ParamBox;
 use crate::claim::{Claim, Seed};
-use crate::exact::{at_end, basis, identities, identity, reflect, sum};
+use crate::exact::{at_end, basis, identities, identity, reflect, residual_verdict, sum};
 use crate::numeric::{differ, half_pi_minus, point, show, value};
 use crate::verdict::{Status, Verdict};
 
@@ -30,6 +32,7 @@ const fn claim(
 
 pub const CLAIMS: &[Claim] = &[
     claim("T1", "(3.1), 3.2.2 ii", "H0 + H1 + H2 = 1", t1),
+    claim("T2", "3.2.2 i", "H_i(u) ≥ 0 for β ≥ 0, u ∈ [0, 1]", t2),
     claim(
         "T4",
         "3.2.2 iv",
@@ -55,6 +58,12 @@ pub const CLAIMS: &[Claim] = &[
         t5b,
     ),
     claim("T6", "3.3.2 ii", "Σ b_i(u; m) = 1", t6),
+    claim(
+        "T7",
+        "3.3.2 i",
+        "b_i(u; m) ≥ 0 on [0, 1] exactly for m ∈ [−2, 1] (the maximal range)",
+        t7,
+    ),
     claim(
         "T9",
         "3.3.2 iv",
@@ -84,6 +93,12 @@ pub const CLAIMS: &[Claim] = &[
         "(3.7), (6.1), (6.2)",
         "the thesis basis, Majeed & Qayyum (6.1) and Han et al. (6.2): equal under a change of parameter?",
         t28,
+    ),
+    claim(
+        "T29",
+        "(6.1), (6.2), (6.3)",
+        "partition of unity and nonnegativity of (6.1), (6.2), (6.3) on the published ranges η ∈ (1/2, 2], λ ∈ [−2, 1], α ∈ (0, 2); their maximal ranges",
+        t29,
     ),
     claim(
         "T30",
@@ -378,4 +393,44 @@ fn t38() -> Verdict {
             (p1 + &p2) * &half,
         ),
     ])
+}
+
+fn t2() -> Verdict {
+    nonnegative_on(
+        Family::ThesisQuadratic,
+        &basis(Family::ThesisQuadratic),
+        Some("beta"),
+        &ParamBox::FromTo(Rational::new()),
+    )
+}
+
+fn t7() -> Verdict {
+    maximal_versus_published(Family::ThesisCubic).1
+}
+
+fn t29() -> Verdict {
+    let mut parts = Vec::new();
+    for family in [Family::MajeedQayyum, Family::Han, Family::Usman] {
+        let id = family.info().id;
+        parts.push((
+            format!("{id}: Σ − 1"),
+            residual_verdict(&sum(&basis(family)), &Sym::one()),
+        ));
+        parts.push((
+            format!("{id}: nonnegative on the published range"),
+            on_published_range(family),
+        ));
+        let (_, maximal) = maximal_versus_published(family);
+        // the maximal range is evidence, not a condition of this claim
+        let note = if maximal.status == Status::Holds {
+            "the published range is the maximal one"
+        } else {
+            "the published range is not the maximal one"
+        };
+        let mut m = maximal;
+        m.status = Status::Holds;
+        m.evidence.push(note.into());
+        parts.push((format!("{id}: maximal range (evidence)"), m));
+    }
+    Verdict::all(crate::certify::evidence::CERTIFIED, parts)
 }

@@ -1,0 +1,180 @@
+//! Verdicts from certificates: what the report says about nonnegativity
+//! and maximal parameter ranges.
+
+use rug::Rational;
+use trig_core::{Bound, Family, Range};
+
+use super::nonneg::{Certificate, ParamBox, certify, describe_z};
+use super::range::{EndPoint, MaximalRange, Outside, certify_all, maximal_range};
+use crate::exact::basis;
+use crate::verdict::{Status, Verdict};
+
+/// How nonnegativity is decided, as the report states it.
+pub const CERTIFIED: &str = "certified: Weierstrass z = tan(θ/2), exact Bernstein subdivision over (z, parameter) boxes in rational arithmetic; counterexamples exact";
+
+/// One line for a certificate about `what`.
+pub fn describe(
+    what: &str,
+    cert: &Certificate,
+    trig: bool,
+    param: Option<&str>,
+) -> (Status, String) {
+    match cert {
+        Certificate::NonNegative { boxes } => (
+            Status::Holds,
+            format!("{what}: ≥ 0 certified ({boxes} Bernstein boxes with all coefficients ≥ 0)"),
+        ),
+        Certificate::Counterexample { p, z, value } => (
+            Status::Fails,
+            format!(
+                "{what}: negative at {}{}: value = {value} (exact)",
+                param.map_or(String::new(), |n| format!("{n} = {p}, ")),
+                describe_z(z, trig)
+            ),
+        ),
+        Certificate::Undecided(why) => (Status::NotCheckable, format!("{what}: undecided ({why})")),
+    }
+}
+
+/// Nonnegativity of every function of a family on a parameter box (or at
+/// fixed parameter values substituted beforehand, `param = None`).
+pub fn nonnegative_on(
+    family: Family,
+    fs: &[trig_symbolic::Sym],
+    param: Option<&str>,
+    bx: &ParamBox,
+) -> Verdict {
+    let trig = family.info().variable.is_trigonometric();
+    let mut status = Status::Holds;
+    let mut evidence = Vec::new();
+    for (f, name) in fs.iter().zip(family.info().functions) {
+        let (s, line) = describe(name, &certify(f, trig, param, bx), trig, param);
+        if s != Status::Holds && status == Status::Holds {
+            status = s;
+        }
+        evidence.push(line);
+    }
+    Verdict::new(status, CERTIFIED, evidence)
+}
+
+fn show_end(e: &EndPoint, param: &str, trig: bool) -> String {
+    let outside = |o: &Outside| match o {
+        Outside::Counterexample(p, z, v) => {
+            format!(
+                "counterexample {param} = {p}, {}: value {v}",
+                describe_z(z, trig)
+            )
+        }
+        Outside::Undecided(p) => format!("{param} = {p} not certified either way"),
+    };
+    match e {
+        EndPoint::Exact { value, outside: o } => {
+            format!("exact end {value}; just beyond, {}", outside(o))
+        }
+        EndPoint::Bracket {
+            ok,
+            bad,
+            outside: o,
+        } => {
+            format!(
+                "end in ({:.15}, {:.15}); {}",
+                ok.to_f64(),
+                bad.to_f64(),
+                outside(o)
+            )
+        }
+        EndPoint::Unbounded => "unbounded".into(),
+    }
+}
+
+/// The maximal nonnegativity interval of a one-parameter family, compared
+/// with its published range. Holds when they coincide (ends and their
+/// inclusion), fails otherwise; the interval and certificates are evidence.
+pub fn maximal_versus_published(family: Family) -> (MaximalRange, Verdict) {
+    let info = family.info();
+    let spec = info.params[0];
+    let trig = info.variable.is_trigonometric();
+    let start = match (spec.range.lo.value(), spec.range.hi.value()) {
+        (Some(a), Some(b)) => (a + b) / 2u32,
+        (Some(a), None) => a + 1u32,
+        (None, Some(b)) => b - 1u32,
+        (None, None) => Rational::new(),
+    };
+    let fs = basis(family);
+    let r = maximal_range(&fs, trig, spec.name, &start);
+    let (cs, cline) = describe(
+        "all functions on the maximal interval",
+        &r.certificate,
+        trig,
+        Some(spec.name),
+    );
+    let found = Range {
+        lo: end_bound(&r.lo),
+        hi: end_bound(&r.hi),
+    };
+    let same = matches!(r.lo, EndPoint::Exact { .. } | EndPoint::Unbounded)
+        && matches!(r.hi, EndPoint::Exact { .. } | EndPoint::Unbounded)
+        && found == spec.range;
+    let status = if cs != Status::Holds {
+        cs
+    } else if same {
+        Status::Holds
+    } else {
+        Status::Fails
+    };
+    let evidence = vec![
+        format!(
+            "published range of {}: {} ({})",
+            spec.symbol, spec.range, spec.range_source
+        ),
+        format!(
+            "maximal interval containing {start} on which every function is ≥ 0: {}",
+            describe_range(&found)
+        ),
+        format!("lower end: {}", show_end(&r.lo, spec.name, trig)),
+        format!("upper end: {}", show_end(&r.hi, spec.name, trig)),
+        cline,
+    ];
+    let verdict = Verdict::new(status, CERTIFIED, evidence);
+    (r, verdict)
+}
+
+/// A found end as a bound: exact ends are included (closed), brackets are
+/// shown by their certified side, unbounded ends are open.
+fn end_bound(e: &EndPoint) -> Bound {
+    let small =
+        |q: &Rational| -> Option<(i64, i64)> { Some((q.numer().to_i64()?, q.denom().to_i64()?)) };
+    match e {
+        EndPoint::Exact { value, .. } | EndPoint::Bracket { ok: value, .. } => match small(value) {
+            Some((n, d)) => Bound::Closed(n, d),
+            None => Bound::Unbounded,
+        },
+        EndPoint::Unbounded => Bound::Unbounded,
+    }
+}
+
+fn describe_range(r: &Range) -> String {
+    r.to_string()
+}
+
+/// Certifies a whole family on its published parameter range (closed
+/// hull of it; open ends are approached from inside, so the closure is
+/// a stronger statement).
+pub fn on_published_range(family: Family) -> Verdict {
+    let info = family.info();
+    let spec = info.params[0];
+    let bx = match (spec.range.lo.value(), spec.range.hi.value()) {
+        (Some(a), Some(b)) => ParamBox::Interval(a, b),
+        (Some(a), None) => ParamBox::FromTo(a),
+        _ => return Verdict::not_checkable("a range unbounded below is not supported"),
+    };
+    let trig = info.variable.is_trigonometric();
+    let cert = certify_all(&basis(family), trig, spec.name, &bx);
+    let (status, line) = describe(
+        &format!("all functions, {} ∈ closure of {}", spec.symbol, spec.range),
+        &cert,
+        trig,
+        Some(spec.name),
+    );
+    Verdict::new(status, CERTIFIED, vec![line])
+}
