@@ -22,12 +22,14 @@ pub fn describe(
     match cert {
         Certificate::NonNegative { boxes } => (
             Status::Holds,
-            format!("{what}: ≥ 0 certified ({boxes} Bernstein boxes with all coefficients ≥ 0)"),
+            format!(
+                "{what}: certified on the whole domain ({boxes} Bernstein boxes with all coefficients ≥ 0)"
+            ),
         ),
         Certificate::Counterexample { p, z, value } => (
             Status::Fails,
             format!(
-                "{what}: negative at {}{}: value = {value} (exact)",
+                "{what}: violated at {}{}, where the tested quantity equals {value} (exact)",
                 param.map_or(String::new(), |n| format!("{n} = {p}, ")),
                 describe_z(z, trig)
             ),
@@ -48,7 +50,12 @@ pub fn nonnegative_on(
     let mut status = Status::Holds;
     let mut evidence = Vec::new();
     for (f, name) in fs.iter().zip(family.info().functions) {
-        let (s, line) = describe(name, &certify(f, trig, param, bx), trig, param);
+        let (s, line) = describe(
+            &format!("{name} ≥ 0"),
+            &certify(f, trig, param, bx),
+            trig,
+            param,
+        );
         if s != Status::Holds && status == Status::Holds {
             status = s;
         }
@@ -103,7 +110,7 @@ pub fn maximal_versus_published(family: Family) -> (MaximalRange, Verdict) {
     let fs = basis(family);
     let r = maximal_range(&fs, trig, spec.name, &start);
     let (cs, cline) = describe(
-        "all functions on the maximal interval",
+        "every function ≥ 0 on the maximal interval",
         &r.certificate,
         trig,
         Some(spec.name),
@@ -177,4 +184,50 @@ pub fn on_published_range(family: Family) -> Verdict {
         Some(spec.name),
     );
     Verdict::new(status, CERTIFIED, vec![line])
+}
+
+/// Monotonicity of function `index` of `family` on its whole domain for
+/// every parameter in the box: the sign of its derivative, certified.
+pub fn monotone(
+    family: Family,
+    index: usize,
+    increasing: bool,
+    param: Option<&str>,
+    bx: &ParamBox,
+) -> Verdict {
+    let info = family.info();
+    let trig = info.variable.is_trigonometric();
+    let f = &basis(family)[index];
+    let d = if trig { f.d_angle() } else { f.d_t() };
+    let g = if increasing { d } else { -d };
+    let name = info.functions[index];
+    let what = if increasing {
+        format!("{name}' ≥ 0 ({name} increasing)")
+    } else {
+        format!("−{name}' ≥ 0 ({name} decreasing)")
+    };
+    let (status, line) = describe(&what, &certify(&g, trig, param, bx), trig, param);
+    Verdict::new(status, CERTIFIED, vec![line])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn monotonicity_is_proved_or_refuted() {
+        let range = ParamBox::Interval(Rational::from(-2), Rational::from(1));
+        assert_eq!(
+            monotone(Family::ThesisCubic, 0, false, Some("m"), &range).status,
+            Status::Holds
+        );
+        assert_eq!(
+            monotone(Family::ThesisCubic, 0, true, Some("m"), &range).status,
+            Status::Fails
+        );
+        assert_eq!(
+            monotone(Family::ThesisCubic, 2, true, Some("m"), &range).status,
+            Status::Fails
+        );
+    }
 }

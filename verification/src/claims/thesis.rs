@@ -8,7 +8,9 @@ use trig_core::{Family, Variable};
 use trig_deriv::End;
 use trig_symbolic::Sym;
 
-use crate::certify::evidence::{maximal_versus_published, nonnegative_on, on_published_range};
+use crate::certify::evidence::{
+    maximal_versus_published, monotone, nonnegative_on, on_published_range,
+};
 use crate::certify::nonneg::ParamBox;
 use crate::claim::{Claim, Seed};
 use crate::exact::{at_end, basis, identities, identity, reflect, residual_verdict, sum};
@@ -33,6 +35,12 @@ const fn claim(
 pub const CLAIMS: &[Claim] = &[
     claim("T1", "(3.1), 3.2.2 ii", "H0 + H1 + H2 = 1", t1),
     claim("T2", "3.2.2 i", "H_i(u) ≥ 0 for β ≥ 0, u ∈ [0, 1]", t2),
+    claim(
+        "T3",
+        "3.2.2 iii",
+        "H0 decreasing, H2 increasing (β ≥ 0)",
+        t3,
+    ),
     claim(
         "T4",
         "3.2.2 iv",
@@ -63,6 +71,19 @@ pub const CLAIMS: &[Claim] = &[
         "3.3.2 i",
         "b_i(u; m) ≥ 0 on [0, 1] exactly for m ∈ [−2, 1] (the maximal range)",
         t7,
+    ),
+    claim(
+        "T8",
+        "3.3.2 iii",
+        "b0 decreasing and b2 increasing, m ∈ [−2, 1] (as printed)",
+        t8,
+    ),
+    claim("T8a", "3.3.2 iii", "b0 decreasing for m ∈ [−2, 1]", t8a),
+    claim(
+        "T8b",
+        "3.3.2 iii, proof",
+        "b3 increasing for m ∈ [−2, 1] (as the proof says)",
+        t8b,
     ),
     claim(
         "T9",
@@ -433,4 +454,64 @@ fn t29() -> Verdict {
         parts.push((format!("{id}: maximal range (evidence)"), m));
     }
     Verdict::all(crate::certify::evidence::CERTIFIED, parts)
+}
+
+fn beta_half_line() -> ParamBox {
+    ParamBox::FromTo(Rational::new())
+}
+
+fn m_range() -> ParamBox {
+    ParamBox::Interval(Rational::from(-2), Rational::from(1))
+}
+
+fn t3() -> Verdict {
+    Verdict::all(
+        crate::certify::evidence::CERTIFIED,
+        vec![
+            (
+                "H0".into(),
+                monotone(
+                    Family::ThesisQuadratic,
+                    0,
+                    false,
+                    Some("beta"),
+                    &beta_half_line(),
+                ),
+            ),
+            (
+                "H2".into(),
+                monotone(
+                    Family::ThesisQuadratic,
+                    2,
+                    true,
+                    Some("beta"),
+                    &beta_half_line(),
+                ),
+            ),
+        ],
+    )
+}
+
+fn t8() -> Verdict {
+    Verdict::all(
+        crate::certify::evidence::CERTIFIED,
+        vec![
+            (
+                "b0".into(),
+                monotone(Family::ThesisCubic, 0, false, Some("m"), &m_range()),
+            ),
+            (
+                "b2".into(),
+                monotone(Family::ThesisCubic, 2, true, Some("m"), &m_range()),
+            ),
+        ],
+    )
+}
+
+fn t8a() -> Verdict {
+    monotone(Family::ThesisCubic, 0, false, Some("m"), &m_range())
+}
+
+fn t8b() -> Verdict {
+    monotone(Family::ThesisCubic, 3, true, Some("m"), &m_range())
 }
