@@ -48,6 +48,27 @@ pub const CLAIMS: &[Claim] = &[
         check: d5,
     },
     Claim {
+        id: "D9",
+        seed: Seed::S002,
+        source: "Theorem 2 (2)",
+        statement: "R(π/2 − t; P5, P4, P3, P2, P1, P0) = R(t; P0, …, P5) (weights as given)",
+        check: d9,
+    },
+    Claim {
+        id: "D9b",
+        seed: Seed::S002,
+        source: "Theorem 2 (2), reading",
+        statement: "reading of D9 with the weights reversed with the points: R(π/2 − t; P5…P0; w5…w0) = R(t; P0…P5; w0…w5)",
+        check: d9b,
+    },
+    Claim {
+        id: "D10",
+        seed: Seed::S002,
+        source: "Theorem 2 (3), garbled print",
+        statement: "reading of the garbled print: R(t; P_i + q) = R(t; P_i) + q and R(t; P_i T) = R(t; P_i) T",
+        check: d10,
+    },
+    Claim {
         id: "D12",
         seed: Seed::S002,
         source: "Proposition 1, (5)",
@@ -147,4 +168,66 @@ fn d2() -> Verdict {
         None,
         &ParamBox::Interval(zero.clone(), zero),
     )
+}
+
+/// `Σ w_i b_i P_i / Σ w_i b_i` at the symbolic atoms.
+fn rational_curve(points: &[Sym], weights: &[Sym]) -> Sym {
+    let b = basis(Family::Seed002Quartic);
+    let wb: Vec<Sym> = b
+        .iter()
+        .zip(weights)
+        .map(|(bi, wi)| bi.clone() * wi)
+        .collect();
+    let num = sum(&wb
+        .iter()
+        .zip(points)
+        .map(|(x, p)| x.clone() * p)
+        .collect::<Vec<_>>());
+    num / &sum(&wb)
+}
+
+fn d9_with(reverse_weights: bool) -> Verdict {
+    let p: Vec<Sym> = (0..6).map(|i| var("P", i)).collect();
+    let w: Vec<Sym> = (0..6).map(|i| var("w", i)).collect();
+    let rp: Vec<Sym> = p.iter().rev().cloned().collect();
+    let rw: Vec<Sym> = if reverse_weights {
+        w.iter().rev().cloned().collect()
+    } else {
+        w.clone()
+    };
+    identities(vec![(
+        "R(π/2 − t; reversed) − R(t)".into(),
+        reflect(&rational_curve(&rp, &rw), true),
+        rational_curve(&p, &w),
+    )])
+}
+
+fn d9() -> Verdict {
+    d9_with(false)
+}
+
+fn d9b() -> Verdict {
+    d9_with(true)
+}
+
+fn d10() -> Verdict {
+    let p: Vec<Sym> = (0..6).map(|i| var("P", i)).collect();
+    let w: Vec<Sym> = (0..6).map(|i| var("w", i)).collect();
+    let (q, k) = (Sym::var("q"), Sym::var("k"));
+    let shifted: Vec<Sym> = p.iter().map(|x| x.clone() + &q).collect();
+    let scaled: Vec<Sym> = p.iter().map(|x| x.clone() * &k).collect();
+    let mut v = identities(vec![
+        (
+            "R(P_i + q) − (R(P_i) + q)".into(),
+            rational_curve(&shifted, &w),
+            rational_curve(&p, &w) + &q,
+        ),
+        (
+            "R(k P_i) − k R(P_i) (a linear map acts coordinatewise)".into(),
+            rational_curve(&scaled, &w),
+            rational_curve(&p, &w) * &k,
+        ),
+    ]);
+    v.evidence.push("the printed equations are unreadable in our copy (\"R_2^π − t, P, …\"); this is the obvious reading".into());
+    v
 }

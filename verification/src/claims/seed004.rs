@@ -28,6 +28,13 @@ pub const CLAIMS: &[Claim] = &[
         check: e1b,
     },
     Claim {
+        id: "E2",
+        seed: Seed::S004,
+        source: "III(i) (a)",
+        statement: "b0(0) = b1(1) = 1; b2(0) = b2(1) = 0; b0(1) = b1(0) = 0; b3(0) = b3(1) = 0; b0'(0) = b0'(1) = 0; b2'(0) = b3'(1) = 1; b1'(0) = b1'(1) = 0; b2'(1) = b3'(0) = 0",
+        check: e2,
+    },
+    Claim {
         id: "E3",
         seed: Seed::S004,
         source: "III(i) (a)",
@@ -56,6 +63,13 @@ pub const CLAIMS: &[Claim] = &[
         check: e6,
     },
     Claim {
+        id: "E7",
+        seed: Seed::S004,
+        source: "III(i) (e)",
+        statement: "the maximum value of b_{i,3}(t) occurs at t = i/3, i = 0…3",
+        check: e7,
+    },
+    Claim {
         id: "E8",
         seed: Seed::S004,
         source: "text after (1)",
@@ -70,6 +84,27 @@ pub const CLAIMS: &[Claim] = &[
         check: e9,
     },
     Claim {
+        id: "E10",
+        seed: Seed::S004,
+        source: "III(ii) (b)",
+        statement: "T(λ, μ; t; P0, P1, P2, P3) = T(μ, λ; 1 − t; P3, P2, P1, P0)",
+        check: e10,
+    },
+    Claim {
+        id: "E11",
+        seed: Seed::S004,
+        source: "III(ii) (c)",
+        statement: "T(λ, μ; t; P_i + q) = T(λ, μ; t; P_i) + q and T(λ, μ; t; P_i M) = T(λ, μ; t; P_i) M",
+        check: e11,
+    },
+    Claim {
+        id: "E12",
+        seed: Seed::S004,
+        source: "III(ii) (d)",
+        statement: "for λ = μ ∈ {−1, 0, 1} the bases are nonnegative and sum to 1, so the curve lies in the convex hull of its control polygon",
+        check: e12,
+    },
+    Claim {
         id: "E13",
         seed: Seed::S004,
         source: "(4)",
@@ -82,12 +117,14 @@ fn n(k: i64) -> Sym {
     Sym::int(k)
 }
 
-fn hermite_parts() -> Vec<(String, Sym, Sym)> {
-    let h = basis(Family::Hermite);
-    let d =
-        |end| endpoint_derivatives::<Sym, 2>(Family::Hermite, &[], end, Wrt::Angle, &Sym::one());
+/// The terminal pattern printed for both the Hermite bases (section II) and
+/// the EH bases (III(i) (a)): values `(1,0), (0,1), (0,0), (0,0)` and first
+/// derivatives `(0,0), (0,0), (1,0), (0,1)` at `t = 0, 1`, for functions
+/// named `names`, parameters as symbols.
+fn terminal_parts(family: Family, names: [&str; 4]) -> Vec<(String, Sym, Sym)> {
+    let params = crate::exact::params(family);
+    let d = |end| endpoint_derivatives::<Sym, 2>(family, &params, end, Wrt::Angle, &Sym::one());
     let (d0, d1) = (d(End::Start), d(End::End));
-    let names = ["α0", "α1", "β0", "β1"];
     let mut parts = Vec::new();
     let mut value = |f: usize, end: &Vec<Vec<Sym>>, at: &str, order: usize, want: i64| {
         let prime = if order == 1 { "'" } else { "" };
@@ -105,6 +142,14 @@ fn hermite_parts() -> Vec<(String, Sym, Sym)> {
         value(f, &d0, "0", 1, v0);
         value(f, &d1, "1", 1, v1);
     }
+    parts
+}
+
+const HERMITE: [&str; 4] = ["α0", "α1", "β0", "β1"];
+
+fn hermite_parts() -> Vec<(String, Sym, Sym)> {
+    let h = basis(Family::Hermite);
+    let mut parts = terminal_parts(Family::Hermite, HERMITE);
     parts.push(("α0 + α1 = 1".into(), h[0].clone() + &h[1], Sym::one()));
     parts
 }
@@ -171,7 +216,7 @@ fn e8() -> Verdict {
         .map(|b| b.subs("lambda", &zero).subs("mu", &zero))
         .collect();
     let h = basis(Family::Hermite);
-    let names = ["α0", "α1", "β0", "β1"];
+    let names = HERMITE;
     let mut v = identities(
         (0..4)
             .map(|i| {
@@ -278,4 +323,102 @@ fn e4() -> Verdict {
         "parameters λ = μ = 0 (inside [−1, 1]; the paper's own Hermite case)".into(),
     );
     v
+}
+
+fn e2() -> Verdict {
+    identities(terminal_parts(Family::Eh, ["b0", "b1", "b2", "b3"]))
+}
+
+/// A maximum of `b_i` at an interior `t = i/3` needs `b_i'(i/3) = 0`: tested
+/// exactly for `i = 1, 2` (the end cases `i = 0, 3` are not tested).
+fn e7() -> Verdict {
+    let b = basis(Family::Eh);
+    let third = |k: i64| Sym::rational(rug::Rational::from((k, 3)));
+    let parts = (1..3)
+        .zip(&b[1..3])
+        .map(|(i, bi)| {
+            (
+                format!("b{i}'({i}/3) = 0"),
+                bi.d_t().subs("t", &third(i)),
+                Sym::zero(),
+            )
+        })
+        .collect();
+    identities(parts)
+}
+
+/// `Σ b_i(t; λ, μ) P_i` with symbolic control points.
+fn eh_curve(points: &[Sym], lambda: &Sym, mu: &Sym, t: &Sym) -> Sym {
+    let atoms = trig_core::Atoms {
+        s: Sym::zero(),
+        c: Sym::one(),
+        t: t.clone(),
+    };
+    let b = Family::Eh.eval(&atoms, &[lambda.clone(), mu.clone()]);
+    sum(&b
+        .iter()
+        .zip(points)
+        .map(|(bi, p)| bi.clone() * p)
+        .collect::<Vec<_>>())
+}
+
+fn e10() -> Verdict {
+    let p: Vec<Sym> = (0..4).map(|i| Sym::var(&format!("P{i}"))).collect();
+    let reversed: Vec<Sym> = p.iter().rev().cloned().collect();
+    let (l, m, t) = (Sym::var("lambda"), Sym::var("mu"), Sym::var("t"));
+    identities(vec![(
+        "T(λ, μ; t; P0..P3) − T(μ, λ; 1 − t; P3..P0)".into(),
+        eh_curve(&p, &l, &m, &t),
+        eh_curve(&reversed, &m, &l, &(Sym::one() - &t)),
+    )])
+}
+
+fn e11() -> Verdict {
+    let p: Vec<Sym> = (0..4).map(|i| Sym::var(&format!("P{i}"))).collect();
+    let q = Sym::var("q");
+    let shifted: Vec<Sym> = p.iter().map(|pi| pi.clone() + &q).collect();
+    let (l, m, t) = (Sym::var("lambda"), Sym::var("mu"), Sym::var("t"));
+    let k = Sym::var("k");
+    let scaled: Vec<Sym> = p.iter().map(|pi| pi.clone() * &k).collect();
+    let mut v = identities(vec![
+        (
+            "T(P_i + q) − (T(P_i) + q)".into(),
+            eh_curve(&shifted, &l, &m, &t),
+            eh_curve(&p, &l, &m, &t) + &q,
+        ),
+        (
+            "T(k P_i) − k T(P_i) (a linear map acts coordinatewise)".into(),
+            eh_curve(&scaled, &l, &m, &t),
+            eh_curve(&p, &l, &m, &t) * &k,
+        ),
+    ]);
+    v.evidence.push("translation invariance needs Σ b_i = 1, which fails (E6); linear invariance holds for any basis".into());
+    v
+}
+
+fn e12() -> Verdict {
+    let b = basis(Family::Eh);
+    let mut parts = Vec::new();
+    for v in [-1i64, 0, 1] {
+        let x = Sym::int(v);
+        let fs: Vec<Sym> = b
+            .iter()
+            .map(|f| f.subs("lambda", &x).subs("mu", &x))
+            .collect();
+        parts.push((
+            format!("λ = μ = {v}: Σ b_i − 1"),
+            crate::exact::residual_verdict(&sum(&fs), &Sym::one()),
+        ));
+        let zero = rug::Rational::new();
+        parts.push((
+            format!("λ = μ = {v}: nonnegativity"),
+            nonnegative_on(
+                Family::Eh,
+                &fs,
+                None,
+                &ParamBox::Interval(zero.clone(), zero),
+            ),
+        ));
+    }
+    Verdict::all(crate::certify::evidence::CERTIFIED, parts)
 }

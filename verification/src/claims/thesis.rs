@@ -128,6 +128,12 @@ pub const CLAIMS: &[Claim] = &[
         t30,
     ),
     claim(
+        "T31",
+        "6.2, text after Figure 6.3",
+        "\"curves are generated out of the convex hull\" for λ = −1, −2 although in range",
+        t31,
+    ),
+    claim(
         "T33",
         "4.3.1, Step 1",
         "b3(1) = 0, b0(1) = b1(1) = b2(1) = 1",
@@ -514,4 +520,52 @@ fn t8a() -> Verdict {
 
 fn t8b() -> Verdict {
     monotone(Family::ThesisCubic, 3, true, Some("m"), &m_range())
+}
+
+/// For (6.2) at λ = −1, −2: nonnegative and summing to 1 (so every curve
+/// stays in the convex hull of its control points); the Appendix 2 listing
+/// that drew Figure 6.3 sums to something else.
+fn t31() -> Verdict {
+    let mut parts = Vec::new();
+    let zero = Rational::new();
+    for l in [-1i64, -2] {
+        let x = Sym::int(l);
+        for (family, label) in [
+            (Family::Han, "(6.2)"),
+            (Family::HanListing, "Appendix 2 listing"),
+        ] {
+            let fs: Vec<Sym> = basis(family).iter().map(|f| f.subs("lambda", &x)).collect();
+            parts.push((
+                format!("{label}, λ = {l}: Σ − 1"),
+                residual_verdict(&sum(&fs), &Sym::one()),
+            ));
+            parts.push((
+                format!("{label}, λ = {l}: nonnegativity"),
+                nonnegative_on(
+                    family,
+                    &fs,
+                    None,
+                    &ParamBox::Interval(zero.clone(), zero.clone()),
+                ),
+            ));
+        }
+    }
+    let formula = parts[..2]
+        .iter()
+        .chain(&parts[4..6])
+        .all(|(_, v)| v.status == Status::Holds);
+    let evidence = Verdict::all(crate::certify::evidence::CERTIFIED, parts).evidence;
+    let mut v = Verdict::new(
+        if formula {
+            Status::Fails
+        } else {
+            Status::Holds
+        },
+        crate::certify::evidence::CERTIFIED,
+        evidence,
+    );
+    v.evidence.push(
+        "with (6.2) the basis is nonnegative and sums to 1 at λ = −1, −2, so every curve lies in the convex hull: the printed observation does not hold for (6.2); the listing's functions do not sum to 1 (T30), which is what Figure 6.3 shows".into(),
+    );
+    v
 }
