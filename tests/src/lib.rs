@@ -83,3 +83,12 @@ pub fn error_line(args: &[&str]) -> String {
     assert!(out.stdout.is_empty(), "nothing on stdout when failing");
     lines[0].to_string()
 }
+
+/// Asserts that each argument list fails with a one-line error containing
+/// the expected text.
+pub fn assert_errors(cases: &[(&[&str], &str)]) {
+    for (args, expected) in cases {
+        let line = error_line(args);
+        assert!(line.contains(expected), "{args:?}: {line}");
+    }
+}

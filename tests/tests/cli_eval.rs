@@ -1,6 +1,6 @@
 //! End-to-end tests of `trig-audit list` and `trig-audit eval`.
 
-use trig_e2e::{FAMILIES, error_line, stdout_ok};
+use trig_e2e::{FAMILIES, assert_errors, error_line, stdout_ok};
 
 #[test]
 fn list_shows_every_catalog_entry_with_citations() {
@@ -162,10 +162,7 @@ fn bad_input_gives_one_line_errors() {
             "undefined",
         ),
     ];
-    for (args, expected) in cases {
-        let line = error_line(args);
-        assert!(line.contains(expected), "{args:?}: {line}");
-    }
+    assert_errors(cases);
 }
 
 #[test]

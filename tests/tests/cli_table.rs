@@ -2,7 +2,7 @@
 //! and insta snapshots of the exact table of every family (orders 0–6, both
 //! ends, each convention), reviewed by hand against paper derivations.
 
-use trig_e2e::{FAMILIES, error_line, stdout_ok};
+use trig_e2e::{FAMILIES, assert_errors, stdout_ok};
 
 #[test]
 fn exact_tables_of_every_family() {
@@ -164,8 +164,5 @@ fn bad_table_requests_are_one_line_errors() {
             "drop --numeric",
         ),
     ];
-    for (args, expected) in cases {
-        let line = error_line(args);
-        assert!(line.contains(expected), "{args:?}: {line}");
-    }
+    assert_errors(cases);
 }
