@@ -101,6 +101,46 @@ pub fn sum(items: &[Sym]) -> Sym {
     items.iter().fold(Sym::zero(), |acc, x| acc + x)
 }
 
+/// The symbols `prefix0, prefix1, …` (control points `P0…`, weights `w0…`).
+pub fn symbols(prefix: &str, n: usize) -> Vec<Sym> {
+    (0..n).map(|i| Sym::var(&format!("{prefix}{i}"))).collect()
+}
+
+/// `Σ cᵢ Pᵢ`: a curve from its basis values and (symbolic) control points.
+pub fn combination(coeffs: &[Sym], points: &[Sym]) -> Sym {
+    sum(&coeffs
+        .iter()
+        .zip(points)
+        .map(|(c, p)| c.clone() * p)
+        .collect::<Vec<_>>())
+}
+
+/// The symmetry `f_i(x) = f_{n−1−i}(x̄)` for the listed `i`, with `x̄` the
+/// reflection of the family's variable (`u ↦ 1 − u`, `t ↦ π/2 − t` for the
+/// angle, `t ↦ 1 − t` for polynomials), decided exactly.
+pub fn symmetry(family: Family, indices: std::ops::Range<usize>) -> Verdict {
+    let info = family.info();
+    let (x, reflected) = match info.variable {
+        trig_core::Variable::UnitAngle => ("u", "1 − u"),
+        trig_core::Variable::Angle => ("t", "π/2 − t"),
+        trig_core::Variable::Polynomial => ("t", "1 − t"),
+    };
+    let b = basis(family);
+    let n = b.len();
+    let f = info.functions;
+    identities(
+        indices
+            .map(|i| {
+                (
+                    format!("{}({x}) − {}({reflected})", f[i], f[n - 1 - i]),
+                    b[i].clone(),
+                    reflect(&b[n - 1 - i], info.variable.is_trigonometric()),
+                )
+            })
+            .collect(),
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

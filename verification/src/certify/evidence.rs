@@ -136,7 +136,7 @@ pub fn maximal_versus_published(family: Family) -> (MaximalRange, Verdict) {
         ),
         format!(
             "maximal interval containing {start} on which every function is ≥ 0: {}",
-            describe_range(&found)
+            found
         ),
         format!("lower end: {}", show_end(&r.lo, spec.name, trig)),
         format!("upper end: {}", show_end(&r.hi, spec.name, trig)),
@@ -158,10 +158,6 @@ fn end_bound(e: &EndPoint) -> Bound {
         },
         EndPoint::Unbounded => Bound::Unbounded,
     }
-}
-
-fn describe_range(r: &Range) -> String {
-    r.to_string()
 }
 
 /// Certifies a whole family on its published parameter range (closed

@@ -8,7 +8,7 @@ use trig_symbolic::Sym;
 use crate::certify::evidence::nonnegative_on;
 use crate::certify::nonneg::ParamBox;
 use crate::claim::{Claim, Seed};
-use crate::exact::{basis, identities, identity, reflect, sum};
+use crate::exact::{basis, combination, identities, identity, reflect, sum, symbols, symmetry};
 use crate::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[
@@ -94,27 +94,12 @@ fn d1b() -> Verdict {
 }
 
 fn d3() -> Verdict {
-    let b = basis(Family::Seed002Quartic);
-    identities(
-        (0..3)
-            .map(|i| {
-                (
-                    format!("b{i}(t) − b{}(π/2 − t)", 5 - i),
-                    b[i].clone(),
-                    reflect(&b[5 - i], true),
-                )
-            })
-            .collect(),
-    )
-}
-
-fn var(name: &str, i: usize) -> Sym {
-    Sym::var(&format!("{name}{i}"))
+    symmetry(Family::Seed002Quartic, 0..3)
 }
 
 fn d5() -> Verdict {
-    let p: Vec<Sym> = (0..6).map(|i| var("P", i)).collect();
-    let w: Vec<Sym> = (0..6).map(|i| var("w", i)).collect();
+    let p: Vec<Sym> = symbols("P", 6);
+    let w: Vec<Sym> = symbols("w", 6);
     let at = |end| {
         curve_endpoint_derivatives::<Sym, 3>(
             Family::Seed002Quartic,
@@ -178,17 +163,12 @@ fn rational_curve(points: &[Sym], weights: &[Sym]) -> Sym {
         .zip(weights)
         .map(|(bi, wi)| bi.clone() * wi)
         .collect();
-    let num = sum(&wb
-        .iter()
-        .zip(points)
-        .map(|(x, p)| x.clone() * p)
-        .collect::<Vec<_>>());
-    num / &sum(&wb)
+    combination(&wb, points) / &sum(&wb)
 }
 
 fn d9_with(reverse_weights: bool) -> Verdict {
-    let p: Vec<Sym> = (0..6).map(|i| var("P", i)).collect();
-    let w: Vec<Sym> = (0..6).map(|i| var("w", i)).collect();
+    let p: Vec<Sym> = symbols("P", 6);
+    let w: Vec<Sym> = symbols("w", 6);
     let rp: Vec<Sym> = p.iter().rev().cloned().collect();
     let rw: Vec<Sym> = if reverse_weights {
         w.iter().rev().cloned().collect()
@@ -211,8 +191,8 @@ fn d9b() -> Verdict {
 }
 
 fn d10() -> Verdict {
-    let p: Vec<Sym> = (0..6).map(|i| var("P", i)).collect();
-    let w: Vec<Sym> = (0..6).map(|i| var("w", i)).collect();
+    let p: Vec<Sym> = symbols("P", 6);
+    let w: Vec<Sym> = symbols("w", 6);
     let (q, k) = (Sym::var("q"), Sym::var("k"));
     let shifted: Vec<Sym> = p.iter().map(|x| x.clone() + &q).collect();
     let scaled: Vec<Sym> = p.iter().map(|x| x.clone() * &k).collect();

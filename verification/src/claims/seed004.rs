@@ -9,7 +9,7 @@ use trig_symbolic::Sym;
 use crate::certify::evidence::nonnegative_on;
 use crate::certify::nonneg::ParamBox;
 use crate::claim::{Claim, Seed};
-use crate::exact::{IDENTITY, basis, identities, reflect, sum};
+use crate::exact::{IDENTITY, basis, combination, identities, reflect, sum, symbols, symmetry};
 use crate::verdict::{Status, Verdict};
 
 pub const CLAIMS: &[Claim] = &[
@@ -117,6 +117,15 @@ fn n(k: i64) -> Sym {
     Sym::int(k)
 }
 
+/// The EH bases at `λ = μ = v`.
+fn eh_at(v: i64) -> Vec<Sym> {
+    let x = Sym::int(v);
+    basis(Family::Eh)
+        .iter()
+        .map(|b| b.subs("lambda", &x).subs("mu", &x))
+        .collect()
+}
+
 /// The terminal pattern printed for both the Hermite bases (section II) and
 /// the EH bases (III(i) (a)): values `(1,0), (0,1), (0,0), (0,0)` and first
 /// derivatives `(0,0), (0,0), (1,0), (0,1)` at `t = 0, 1`, for functions
@@ -187,18 +196,7 @@ fn e3() -> Verdict {
 }
 
 fn e5() -> Verdict {
-    let b = basis(Family::Eh);
-    identities(
-        (0..4)
-            .map(|i| {
-                (
-                    format!("b{i}(t) − b{}(1 − t)", 3 - i),
-                    b[i].clone(),
-                    reflect(&b[3 - i], false),
-                )
-            })
-            .collect(),
-    )
+    symmetry(Family::Eh, 0..4)
 }
 
 fn e6() -> Verdict {
@@ -210,11 +208,7 @@ fn e6() -> Verdict {
 }
 
 fn e8() -> Verdict {
-    let zero = Sym::zero();
-    let eh: Vec<Sym> = basis(Family::Eh)
-        .iter()
-        .map(|b| b.subs("lambda", &zero).subs("mu", &zero))
-        .collect();
+    let eh = eh_at(0);
     let h = basis(Family::Hermite);
     let names = HERMITE;
     let mut v = identities(
@@ -237,7 +231,7 @@ fn e8() -> Verdict {
 /// `R''` at both ends as printed, and with the μ-terms' indices shifted down
 /// by one (P3 → P2, P4 → P3).
 fn e9() -> Verdict {
-    let p: Vec<Sym> = (0..5).map(|i| Sym::var(&format!("P{i}"))).collect();
+    let p: Vec<Sym> = symbols("P", 5);
     let (lambda, mu) = (Sym::var("lambda"), Sym::var("mu"));
     let params = [lambda.clone(), mu.clone()];
     let at = |end| {
@@ -288,21 +282,13 @@ fn e9() -> Verdict {
 }
 
 fn e13() -> Verdict {
-    let p: Vec<Sym> = (0..4).map(|i| Sym::var(&format!("P{i}"))).collect();
+    let p: Vec<Sym> = symbols("P", 4);
     let b = basis(Family::Eh);
     let c = basis(Family::Hermite);
     let t = Sym::var("t");
     let bump = t.square() * &(Sym::one() + &t.square() - &(n(2) * &t));
-    let curve = sum(&b
-        .iter()
-        .zip(&p)
-        .map(|(bi, pi)| bi.clone() * pi)
-        .collect::<Vec<_>>());
-    let rewritten = sum(&c
-        .iter()
-        .zip(&p)
-        .map(|(ci, pi)| ci.clone() * pi)
-        .collect::<Vec<_>>())
+    let curve = combination(&b, &p);
+    let rewritten = combination(&c, &p)
         + &(Sym::var("lambda") * &bump * &(p[0].clone() - &p[1]))
         + &(Sym::var("mu") * &bump * &(p[2].clone() - &p[3]));
     identities(vec![("Σ b_j P_j − (4)".into(), curve, rewritten)])
@@ -311,11 +297,7 @@ fn e13() -> Verdict {
 /// At λ = μ = 0 (inside the published range; the standard Hermite case the
 /// paper names) every function is tested on [0, 1].
 fn e4() -> Verdict {
-    let zero = Sym::zero();
-    let fs: Vec<Sym> = basis(Family::Eh)
-        .iter()
-        .map(|b| b.subs("lambda", &zero).subs("mu", &zero))
-        .collect();
+    let fs = eh_at(0);
     let q0 = rug::Rational::new();
     let mut v = nonnegative_on(Family::Eh, &fs, None, &ParamBox::Interval(q0.clone(), q0));
     v.evidence.insert(
@@ -354,16 +336,14 @@ fn eh_curve(points: &[Sym], lambda: &Sym, mu: &Sym, t: &Sym) -> Sym {
         c: Sym::one(),
         t: t.clone(),
     };
-    let b = Family::Eh.eval(&atoms, &[lambda.clone(), mu.clone()]);
-    sum(&b
-        .iter()
-        .zip(points)
-        .map(|(bi, p)| bi.clone() * p)
-        .collect::<Vec<_>>())
+    combination(
+        &Family::Eh.eval(&atoms, &[lambda.clone(), mu.clone()]),
+        points,
+    )
 }
 
 fn e10() -> Verdict {
-    let p: Vec<Sym> = (0..4).map(|i| Sym::var(&format!("P{i}"))).collect();
+    let p: Vec<Sym> = symbols("P", 4);
     let reversed: Vec<Sym> = p.iter().rev().cloned().collect();
     let (l, m, t) = (Sym::var("lambda"), Sym::var("mu"), Sym::var("t"));
     identities(vec![(
@@ -374,7 +354,7 @@ fn e10() -> Verdict {
 }
 
 fn e11() -> Verdict {
-    let p: Vec<Sym> = (0..4).map(|i| Sym::var(&format!("P{i}"))).collect();
+    let p: Vec<Sym> = symbols("P", 4);
     let q = Sym::var("q");
     let shifted: Vec<Sym> = p.iter().map(|pi| pi.clone() + &q).collect();
     let (l, m, t) = (Sym::var("lambda"), Sym::var("mu"), Sym::var("t"));
@@ -397,14 +377,9 @@ fn e11() -> Verdict {
 }
 
 fn e12() -> Verdict {
-    let b = basis(Family::Eh);
     let mut parts = Vec::new();
     for v in [-1i64, 0, 1] {
-        let x = Sym::int(v);
-        let fs: Vec<Sym> = b
-            .iter()
-            .map(|f| f.subs("lambda", &x).subs("mu", &x))
-            .collect();
+        let fs = eh_at(v);
         parts.push((
             format!("λ = μ = {v}: Σ b_i − 1"),
             crate::exact::residual_verdict(&sum(&fs), &Sym::one()),

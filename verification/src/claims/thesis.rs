@@ -13,7 +13,9 @@ use crate::certify::evidence::{
 };
 use crate::certify::nonneg::ParamBox;
 use crate::claim::{Claim, Seed};
-use crate::exact::{at_end, basis, identities, identity, reflect, residual_verdict, sum};
+use crate::exact::{
+    at_end, basis, combination, identities, identity, residual_verdict, sum, symbols, symmetry,
+};
 use crate::numeric::{differ, half_pi_minus, point, show, value};
 use crate::verdict::{Status, Verdict};
 
@@ -154,16 +156,12 @@ pub const CLAIMS: &[Claim] = &[
 ];
 
 fn points(n: usize) -> Vec<Sym> {
-    (0..n).map(|i| Sym::var(&format!("P{i}"))).collect()
+    symbols("P", n)
 }
 
 /// `Σ b_i P_i` with symbolic control points.
 fn curve(b: &[Sym]) -> Sym {
-    sum(&b
-        .iter()
-        .zip(points(b.len()))
-        .map(|(bi, p)| bi.clone() * &p)
-        .collect::<Vec<_>>())
+    combination(b, &points(b.len()))
 }
 
 fn t1() -> Verdict {
@@ -205,30 +203,12 @@ fn reflection_counterexample(family: Family, param: (i64, i64), i: usize, j: usi
     )
 }
 
-fn reflection_reading(family: Family) -> Verdict {
-    let b = basis(family);
-    let n = b.len();
-    let trig = family.info().variable.is_trigonometric();
-    let f = family.info().functions;
-    identities(
-        (0..n)
-            .map(|i| {
-                (
-                    format!("{}(u) − {}(1 − u)", f[i], f[n - 1 - i]),
-                    b[i].clone(),
-                    reflect(&b[n - 1 - i], trig),
-                )
-            })
-            .collect(),
-    )
-}
-
 fn t4() -> Verdict {
     reflection_counterexample(Family::ThesisQuadratic, (1, 1), 0, 2)
 }
 
 fn t4b() -> Verdict {
-    reflection_reading(Family::ThesisQuadratic)
+    symmetry(Family::ThesisQuadratic, 0..3)
 }
 
 fn quadratic_curve_ends() -> (Sym, Sym) {
@@ -280,7 +260,7 @@ fn t9() -> Verdict {
 }
 
 fn t9b() -> Verdict {
-    reflection_reading(Family::ThesisCubic)
+    symmetry(Family::ThesisCubic, 0..4)
 }
 
 fn t25() -> Verdict {
