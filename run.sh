@@ -6,6 +6,7 @@
 #   ./run.sh test              the whole test suite (what CI runs)
 #   ./run.sh lint              rustfmt check and clippy with -D warnings
 #   ./run.sh bench             criterion benchmarks (figures in BENCHMARKS.md)
+#   ./run.sh figures           redraw the figures the audit report links (docs/figures/)
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -27,5 +28,6 @@ case "$cmd" in
   test)  cargo test --workspace --quiet ;;
   lint)  cargo fmt --all --check && cargo clippy --workspace --all-targets --quiet -- -D warnings ;;
   bench) cargo bench --workspace ;;
-  *) echo "usage: ./run.sh audit|test|lint|bench" >&2; exit 2 ;;
+  figures) TRIG_AUDIT_REDRAW_FIGURES=1 cargo test --quiet -p trig-e2e --test cli_figures ;;
+  *) echo "usage: ./run.sh audit|test|lint|bench|figures" >&2; exit 2 ;;
 esac

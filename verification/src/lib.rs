@@ -9,9 +9,14 @@
 pub mod certify;
 pub mod claim;
 mod claims;
+pub mod continuity;
 pub mod exact;
+pub mod figures;
+pub mod joins;
+pub mod minimum;
 pub mod numeric;
 pub mod report;
+pub mod spec_audit;
 pub mod verdict;
 
 pub use claim::{Claim, Seed};

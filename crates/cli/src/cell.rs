@@ -36,21 +36,13 @@ impl Cell for Sym {
         self.to_latex()
     }
     fn combination(&self, vars: &[String]) -> Rendered {
-        let terms: Vec<(Sym, &String)> = vars
-            .iter()
-            .map(|v| (self.diff(v), v))
-            .filter(|(coef, _)| !coef.is_zero())
-            .collect();
-        let rest = terms.iter().fold(self.clone(), |acc, (coef, v)| {
-            acc - &(coef.clone() * &Sym::var(v))
-        });
-        if terms.is_empty() || !rest.is_zero() {
+        let Some(terms) = self.linear_in(vars) else {
             return Rendered::of(self);
-        }
+        };
         let join = |f: &dyn Fn(&Sym) -> String, var: &dyn Fn(&Sym) -> String, dot: &str| {
             terms
                 .iter()
-                .map(|(coef, v)| format!("({}){dot}{}", f(coef), var(&Sym::var(v))))
+                .map(|(v, coef)| format!("({}){dot}{}", f(coef), var(&Sym::var(v))))
                 .collect::<Vec<_>>()
                 .join(" + ")
         };

@@ -11,7 +11,11 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
-use crate::commands::{audit::AuditArgs, eval::EvalArgs, list::ListArgs, table::TableArgs};
+use crate::commands::{fit::FitArgs, plot::PlotArgs};
+
+use crate::commands::{
+    audit::AuditArgs, eval::EvalArgs, join::JoinArgs, list::ListArgs, table::TableArgs,
+};
 
 /// Machine-checked audits of trigonometric and polynomial spline bases.
 #[derive(Debug, Parser)]
@@ -31,6 +35,14 @@ enum Command {
     Eval(EvalArgs),
     /// Exact (or numeric) tables of endpoint derivatives, in Markdown, LaTeX, CSV or JSON.
     Table(TableArgs),
+    /// Control points a C0–C3, G1 or G2 join forces, derived exactly.
+    Join(JoinArgs),
+    /// Fit cubic (trigonometric) curves to an outline: thesis Chapter 6 tables and comparison.
+    Fit(FitArgs),
+    /// Draw SVG pictures: basis functions, curves, fitted outlines, interpolants.
+    Plot(PlotArgs),
+    /// A positivity-preserving interpolant of thesis 4.3 on its data: pieces, knot jumps, certified minimum.
+    Interp(commands::interp::InterpArgs),
 }
 
 fn main() -> ExitCode {
@@ -40,6 +52,10 @@ fn main() -> ExitCode {
         Command::List(args) => commands::list::run(&args),
         Command::Eval(args) => commands::eval::run(&args),
         Command::Table(args) => commands::table::run(&args),
+        Command::Join(args) => commands::join::run(&args),
+        Command::Fit(args) => commands::fit::run(&args),
+        Command::Plot(args) => commands::plot::run(&args),
+        Command::Interp(args) => commands::interp::run(&args),
     };
     match result {
         Ok(text) => {

@@ -18,6 +18,7 @@
 //! assert_eq!(b, vec![1.0, 0.0, 0.0, 0.0]);
 //! ```
 
+pub mod basis;
 pub mod curve;
 pub mod error;
 pub mod families;
@@ -31,6 +32,7 @@ pub mod scalar;
 pub mod surface;
 pub mod variable;
 
+pub use basis::Basis;
 pub use error::{CoreError, Result};
 pub use family::{Family, FamilyInfo, SEED000_NONUNIFORM, catalog};
 pub use mpfr::Mpfr;

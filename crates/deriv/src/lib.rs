@@ -5,8 +5,10 @@
 //! catalog's families computed with them.
 
 pub mod jet;
+pub mod join;
 
 pub use jet::{Jet, angle_atoms, family_derivatives, polynomial_atoms};
+pub use join::{Forced, Join, JoinError, JoinKind, JoinSetup, solve_join, vanishing};
 pub mod table;
 
 pub use table::{

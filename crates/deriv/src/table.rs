@@ -15,7 +15,7 @@
 
 use std::fmt;
 
-use trig_core::{Atoms, Family, Ring};
+use trig_core::{Atoms, Basis, Ring};
 
 use crate::jet::{Jet, angle_atoms, polynomial_atoms};
 
@@ -72,10 +72,10 @@ impl fmt::Display for Wrt {
 }
 
 /// `dθ/d(variable)` for the convention: 1, π/2 or π/(2h) (1, 1, 1/h for
-/// polynomial families). `like` supplies the ring context; `h` the interval
-/// length for [`Wrt::X`].
-pub fn rate<T: Ring>(family: Family, wrt: Wrt, h: &T) -> T {
-    let trig = family.info().variable.is_trigonometric();
+/// polynomial bases). `h` is the interval length for [`Wrt::X`] and supplies
+/// the ring context.
+pub fn rate<T: Ring>(basis: impl Basis, wrt: Wrt, h: &T) -> T {
+    let trig = basis.variable().is_trigonometric();
     let half_pi = h.pi() * &h.ratio(1, 2);
     match (wrt, trig) {
         (Wrt::Angle, _) | (Wrt::U, false) => h.int(1),
@@ -85,10 +85,14 @@ pub fn rate<T: Ring>(family: Family, wrt: Wrt, h: &T) -> T {
     }
 }
 
-/// Jet atoms at one end of the family's domain, built from exact values.
-pub fn end_atoms<T: Ring, const K: usize>(family: Family, end: End, like: &T) -> Atoms<Jet<T, K>> {
+/// Jet atoms at one end of the basis's domain, built from exact values.
+pub fn end_atoms<T: Ring, const K: usize>(
+    basis: impl Basis,
+    end: End,
+    like: &T,
+) -> Atoms<Jet<T, K>> {
     let (zero, one) = (like.int(0), like.int(1));
-    if family.info().variable.is_trigonometric() {
+    if basis.variable().is_trigonometric() {
         match end {
             End::Start => angle_atoms(&zero, &one, zero.clone()),
             End::End => angle_atoms(&one, &zero, like.pi() * &like.ratio(1, 2)),
@@ -101,20 +105,20 @@ pub fn end_atoms<T: Ring, const K: usize>(family: Family, end: End, like: &T) ->
     }
 }
 
-/// Derivatives of orders `0..K` of every function of `family` at `end`, in
+/// Derivatives of orders `0..K` of every function of `basis` at `end`, in
 /// the convention `wrt`, as `[function][order]`. `params` are the shape
 /// parameters (symbols or numbers), `h` the interval length for [`Wrt::X`]
 /// (any value otherwise; it also supplies the ring context).
 pub fn endpoint_derivatives<T: Ring, const K: usize>(
-    family: Family,
+    basis: impl Basis,
     params: &[T],
     end: End,
     wrt: Wrt,
     h: &T,
 ) -> Vec<Vec<T>> {
-    let atoms = end_atoms::<T, K>(family, end, h);
+    let atoms = end_atoms::<T, K>(&basis, end, h);
     let params: Vec<Jet<T, K>> = params.iter().cloned().map(Jet::constant).collect();
-    scale(family.eval(&atoms, &params), &rate(family, wrt, h))
+    scale(basis.eval(&atoms, &params), &rate(&basis, wrt, h))
 }
 
 /// The derivatives of orders `0..K` of each jet, the `k`-th multiplied by `rateᵏ`.
@@ -142,7 +146,7 @@ fn scale<T: Ring, const K: usize>(jets: Vec<Jet<T, K>>, rate: &T) -> Vec<Vec<T>>
 /// # Panics
 /// If `points` (or `weights`) do not have one entry per function.
 pub fn curve_endpoint_derivatives<T: Ring, const K: usize>(
-    family: Family,
+    basis: impl Basis,
     params: &[T],
     points: &[T],
     weights: Option<&[T]>,
@@ -150,20 +154,24 @@ pub fn curve_endpoint_derivatives<T: Ring, const K: usize>(
     wrt: Wrt,
     h: &T,
 ) -> Vec<T> {
-    let atoms = end_atoms::<T, K>(family, end, h);
+    let atoms = end_atoms::<T, K>(&basis, end, h);
     let jparams: Vec<Jet<T, K>> = params.iter().cloned().map(Jet::constant).collect();
-    let basis = family.eval(&atoms, &jparams);
-    assert_eq!(basis.len(), points.len(), "one control point per function");
+    let functions = basis.eval(&atoms, &jparams);
+    assert_eq!(
+        functions.len(),
+        points.len(),
+        "one control point per function"
+    );
     let weighted: Vec<Jet<T, K>> = match weights {
         Some(w) => {
-            assert_eq!(w.len(), basis.len(), "one weight per function");
-            basis
+            assert_eq!(w.len(), functions.len(), "one weight per function");
+            functions
                 .iter()
                 .zip(w)
                 .map(|(b, wi)| b.clone() * &Jet::constant(wi.clone()))
                 .collect()
         }
-        None => basis,
+        None => functions,
     };
     let numerator = sum(weighted
         .iter()
@@ -173,7 +181,7 @@ pub fn curve_endpoint_derivatives<T: Ring, const K: usize>(
         Some(_) => numerator / &sum(weighted.into_iter()),
         None => numerator,
     };
-    scale(vec![curve], &rate(family, wrt, h)).remove(0)
+    scale(vec![curve], &rate(&basis, wrt, h)).remove(0)
 }
 
 fn sum<T: Ring>(mut terms: impl Iterator<Item = T>) -> T {
@@ -193,21 +201,21 @@ pub struct KnotDerivatives<T> {
 }
 
 /// One-sided derivatives at the five knots of the uniform B-spline basis
-/// function assembled from `family`'s segment functions (piece `k` is
+/// function assembled from `basis`'s segment functions (piece `k` is
 /// function `3 − k`, see `trig_core::piecewise`). With [`Wrt::U`] they are
 /// derivatives in the global knot parameter `n` (unit spacing).
 ///
 /// # Panics
-/// If the family has fewer than four functions.
+/// If the basis has fewer than four functions.
 pub fn knot_derivatives<T: Ring, const K: usize>(
-    family: Family,
+    basis: impl Basis,
     params: &[T],
     wrt: Wrt,
     h: &T,
 ) -> Vec<KnotDerivatives<T>> {
     use trig_core::piecewise::{PIECES, segment_function};
-    let start = endpoint_derivatives::<T, K>(family, params, End::Start, wrt, h);
-    let end = endpoint_derivatives::<T, K>(family, params, End::End, wrt, h);
+    let start = endpoint_derivatives::<T, K>(&basis, params, End::Start, wrt, h);
+    let end = endpoint_derivatives::<T, K>(&basis, params, End::End, wrt, h);
     (0..=PIECES)
         .map(|knot| KnotDerivatives {
             knot,
@@ -220,6 +228,7 @@ pub fn knot_derivatives<T: Ring, const K: usize>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use trig_core::Family;
 
     fn close(a: f64, b: f64) -> bool {
         (a - b).abs() <= 1e-12 * (1.0 + b.abs())

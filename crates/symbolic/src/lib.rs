@@ -41,6 +41,7 @@
 mod calculus;
 mod error;
 mod eval;
+mod linear;
 pub mod monomial;
 pub mod poly;
 mod print;

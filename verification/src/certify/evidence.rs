@@ -4,7 +4,7 @@
 use rug::Rational;
 use trig_core::{Bound, Family, Range};
 
-use super::nonneg::{Certificate, ParamBox, certify, describe_z};
+use super::nonneg::{BoxCertificate, Certificate, ParamBox, certify, certify_box, describe_z};
 use super::range::{EndPoint, MaximalRange, Outside, certify_all, maximal_range};
 use crate::exact::basis;
 use crate::verdict::{Status, Verdict};
@@ -56,6 +56,66 @@ pub fn nonnegative_on(
             trig,
             param,
         );
+        if s != Status::Holds && status == Status::Holds {
+            status = s;
+        }
+        evidence.push(line);
+    }
+    Verdict::new(status, CERTIFIED, evidence)
+}
+
+/// Nonnegativity of every function of a family on a box of several
+/// parameters (tensor Bernstein subdivision in `(z, p₁, …, p_d)`): holds
+/// when every function is certified, fails with an exact counterexample.
+pub fn nonnegative_on_box(
+    family: Family,
+    fs: &[trig_symbolic::Sym],
+    params: &[(&str, ParamBox)],
+) -> Verdict {
+    let info = family.info();
+    let trig = info.variable.is_trigonometric();
+    let show_box = |bx: &ParamBox| match bx {
+        ParamBox::Interval(a, b) => format!("[{a}, {b}]"),
+        ParamBox::FromTo(a) => format!("[{a}, ∞)"),
+    };
+    let region: Vec<String> = params
+        .iter()
+        .map(|(n, bx)| format!("{n} ∈ {}", show_box(bx)))
+        .collect();
+    let mut status = Status::Holds;
+    let mut evidence = vec![format!("parameter box {}", region.join(" × "))];
+    for (f, name) in fs.iter().zip(info.functions) {
+        let (s, line) = match certify_box(f, trig, params) {
+            BoxCertificate::NonNegative { boxes } => (
+                Status::Holds,
+                format!(
+                    "{name} ≥ 0: certified on the whole domain and box ({boxes} Bernstein boxes with all coefficients ≥ 0)"
+                ),
+            ),
+            BoxCertificate::Counterexample {
+                params: at,
+                z,
+                value,
+            } => {
+                let ps: Vec<String> = params
+                    .iter()
+                    .zip(&at)
+                    .map(|((n, _), v)| format!("{n} = {v}"))
+                    .collect();
+                (
+                    Status::Fails,
+                    format!(
+                        "{name} ≥ 0: violated at {}, {}, where it equals {value} (exact)",
+                        ps.join(", "),
+                        describe_z(&z, trig)
+                    ),
+                )
+            }
+            BoxCertificate::Undecided(why) => (
+                Status::NotCheckable,
+                format!("{name} ≥ 0: undecided ({why})"),
+            ),
+        };
         if s != Status::Holds && status == Status::Holds {
             status = s;
         }

@@ -7,8 +7,13 @@
 //! that of `N` when `D` keeps one sign on the parameter box. `N` is then
 //! decided by exact Bernstein subdivision ([`bernstein`]). Counterexamples
 //! are exact: a rational `z` gives a rational point `(s, c)` on the circle.
+//! The number of maxima is counted from the certified sign changes of the
+//! derivative ([`unimodal`], exact root isolation by Sturm sequences,
+//! [`sturm`]).
 
 pub mod bernstein;
 pub mod evidence;
 pub mod nonneg;
 pub mod range;
+pub mod sturm;
+pub mod unimodal;

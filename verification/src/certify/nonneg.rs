@@ -1,11 +1,13 @@
-//! Nonnegativity of a function on its whole domain for a box of one shape
-//! parameter, and the maximal interval of the parameter on which a family
-//! is nonnegative.
+//! Nonnegativity of a function on its whole domain for a box of shape
+//! parameters: one parameter ([`certify`], the API the maximal-range search
+//! uses) or several ([`certify_box`], e.g. seed 004's `λ, μ`), both decided
+//! by tensor Bernstein subdivision in `(z, y₁, …, y_d)`, each parameter box
+//! mapped to a unit coordinate `yₖ ∈ [0, 1]`.
 
 use rug::Rational;
 use trig_symbolic::{Poly, Sym};
 
-use super::bernstein::{Power, Sign, sign_on_unit_box};
+use super::bernstein::{SignNd, Tensor, sign_on_unit_cube};
 
 /// Halvings allowed per test before giving up on a box: deep for a single
 /// parameter value (one dimension, cheap), shallower for parameter boxes.
@@ -67,33 +69,86 @@ pub fn value_at(fz: &Sym, param: Option<&str>, p: &Rational, z: &Rational) -> Op
     .ok()
 }
 
-/// Power coefficients of `poly(z, p)` over `[0,1]²` after mapping the box to
-/// `y ∈ [0,1]`. For a half-line, the `(1 − y)` denominators are cleared
-/// (they are positive on `[0, 1)`).
-fn power(poly: &Poly, param: Option<&str>, bx: &ParamBox) -> Power {
-    let p_of_y = |_: ()| -> Sym {
-        let y = Sym::var("y");
-        match bx {
-            ParamBox::Interval(lo, hi) => {
-                Sym::rational(lo.clone()) + &(Sym::rational(hi.clone() - lo) * &y)
-            }
-            ParamBox::FromTo(lo) => Sym::rational(lo.clone()) + &(y.clone() / &(Sym::one() - &y)),
-        }
-    };
-    let mut e = Sym::from_poly(poly.clone());
-    if let Some(name) = param {
-        e = e.subs(name, &p_of_y(()));
-    }
-    let num = e.numerator().clone();
-    let (n, m) = (num.degree_in("z") as usize, num.degree_in("y") as usize);
-    let mut a = vec![vec![Rational::new(); m + 1]; n + 1];
-    for (mono, q) in num.terms() {
-        a[mono.exponent("z") as usize][mono.exponent("y") as usize] += q;
-    }
-    a
+/// Outcome of a nonnegativity test over a box of several parameters.
+#[derive(Debug, Clone, PartialEq)]
+pub enum BoxCertificate {
+    /// Proved `f ≥ 0` on the whole domain and parameter box.
+    NonNegative { boxes: usize },
+    /// `f < 0` at these exact parameter values and `z = tan(θ/2)` (or `t`).
+    Counterexample {
+        params: Vec<Rational>,
+        z: Rational,
+        value: Rational,
+    },
+    /// Not decided (depth limit, or a denominator changing sign).
+    Undecided(String),
 }
 
-/// The parameter value at `y` of the box.
+/// The name of the unit coordinate of parameter `k`.
+fn unit_var(k: usize) -> String {
+    format!("__y{k}")
+}
+
+/// The parameter value as a function of its unit coordinate `y ∈ [0, 1]`.
+fn param_of_unit(bx: &ParamBox, y: &Sym) -> Sym {
+    match bx {
+        ParamBox::Interval(lo, hi) => {
+            Sym::rational(lo.clone()) + &(Sym::rational(hi.clone() - lo) * y)
+        }
+        ParamBox::FromTo(lo) => Sym::rational(lo.clone()) + &(y.clone() / &(Sym::one() - y)),
+    }
+}
+
+/// Tensor power coefficients of `poly(z, p₁, …, p_d)` over `[0,1]^{1+d}`
+/// after mapping each parameter box to its unit coordinate, with the sign
+/// that `poly` has on the box. For half-lines the denominators `(1 − y)` are
+/// cleared: they keep one sign on `[0, 1)` (the ring stores them as
+/// `y − 1`, negative there, so odd powers flip the sign).
+fn tensor(poly: &Poly, params: &[(&str, ParamBox)]) -> Result<Tensor, String> {
+    let mut e = Sym::from_poly(poly.clone());
+    for (k, (name, bx)) in params.iter().enumerate() {
+        e = e.subs(name, &param_of_unit(bx, &Sym::var(&unit_var(k))));
+    }
+    let mut negative = false;
+    for (factor, exp) in e.denominator() {
+        let vars = factor.variables();
+        if vars.len() != 1
+            || factor.total_degree() != 1
+            || !vars.iter().all(|v| v.starts_with("__y"))
+        {
+            return Err(format!(
+                "unexpected denominator {factor} after mapping the box"
+            ));
+        }
+        let v = vars.iter().next().expect("one variable");
+        let at_half = Sym::from_poly(factor.clone())
+            .subs(v, &Sym::rational(Rational::from((1, 2))))
+            .as_rational()
+            .expect("constant");
+        negative ^= at_half < 0 && exp % 2 == 1;
+    }
+    let num = if negative {
+        -e.numerator().clone()
+    } else {
+        e.numerator().clone()
+    };
+    let names: Vec<String> = std::iter::once("z".to_string())
+        .chain((0..params.len()).map(unit_var))
+        .collect();
+    let mut t = Tensor::zeros(names.iter().map(|n| num.degree_in(n) as usize).collect());
+    for (mono, q) in num.terms() {
+        let alpha: Vec<usize> = names.iter().map(|n| mono.exponent(n) as usize).collect();
+        if alpha.iter().sum::<usize>() as u64 != mono.degree() {
+            return Err(format!(
+                "{poly} depends on symbols other than z and the parameters"
+            ));
+        }
+        t.add(&alpha, q);
+    }
+    Ok(t)
+}
+
+/// The parameter value at unit coordinate `y` of the box.
 fn param_at(bx: &ParamBox, y: &Rational) -> Rational {
     match bx {
         ParamBox::Interval(lo, hi) => lo.clone() + (hi.clone() - lo) * y,
@@ -104,6 +159,25 @@ fn param_at(bx: &ParamBox, y: &Rational) -> Rational {
 /// Decides `f(θ; p) ≥ 0` for every `θ ∈ [0, π/2]` (every `t ∈ [0, 1]`) and
 /// every `p` in the box. `param` is `None` for families without parameters.
 pub fn certify(f: &Sym, trigonometric: bool, param: Option<&str>, bx: &ParamBox) -> Certificate {
+    let params: Vec<(&str, ParamBox)> = param.map(|p| (p, bx.clone())).into_iter().collect();
+    match certify_box(f, trigonometric, &params) {
+        BoxCertificate::NonNegative { boxes } => Certificate::NonNegative { boxes },
+        BoxCertificate::Counterexample { params, z, value } => Certificate::Counterexample {
+            p: params
+                .first()
+                .cloned()
+                .unwrap_or_else(|| param_at(bx, &Rational::new())),
+            z,
+            value,
+        },
+        BoxCertificate::Undecided(why) => Certificate::Undecided(why),
+    }
+}
+
+/// Decides `f(θ; p₁, …, p_d) ≥ 0` for every `θ ∈ [0, π/2]` (every
+/// `t ∈ [0, 1]`) and every parameter vector in the product of the boxes:
+/// tensor Bernstein subdivision in `(z, y₁, …, y_d)`.
+pub fn certify_box(f: &Sym, trigonometric: bool, params: &[(&str, ParamBox)]) -> BoxCertificate {
     let fz = in_z(f, trigonometric);
     // Denominator factors: powers of 1 + z² are positive; parameter factors
     // must keep one sign on the box.
@@ -117,7 +191,7 @@ pub fn certify(f: &Sym, trigonometric: bool, param: Option<&str>, bx: &ParamBox)
             match factor.exact_div(&zz) {
                 Some(q) => factor = q,
                 None => {
-                    return Certificate::Undecided(format!(
+                    return BoxCertificate::Undecided(format!(
                         "denominator factor {factor} depends on z"
                     ));
                 }
@@ -128,10 +202,12 @@ pub fn certify(f: &Sym, trigonometric: bool, param: Option<&str>, bx: &ParamBox)
             continue;
         }
         let positive = |f: &Poly| {
-            matches!(
-                sign_on_unit_box(&power(f, param, bx), MAX_DEPTH_BOX, true),
-                Sign::NonNegative { .. }
-            )
+            tensor(f, params).is_ok_and(|t| {
+                matches!(
+                    sign_on_unit_cube(&t, MAX_DEPTH_BOX, true),
+                    SignNd::NonNegative { .. }
+                )
+            })
         };
         if positive(&factor) {
             continue;
@@ -140,7 +216,7 @@ pub fn certify(f: &Sym, trigonometric: bool, param: Option<&str>, bx: &ParamBox)
             flip ^= e % 2 == 1;
             continue;
         }
-        return Certificate::Undecided(format!(
+        return BoxCertificate::Undecided(format!(
             "cannot fix the sign of the denominator factor {factor} on the box"
         ));
     }
@@ -150,26 +226,52 @@ pub fn certify(f: &Sym, trigonometric: bool, param: Option<&str>, bx: &ParamBox)
         fz.numerator().clone()
     };
     if num.is_zero() {
-        return Certificate::NonNegative { boxes: 0 };
+        return BoxCertificate::NonNegative { boxes: 0 };
     }
-    let a = power(&num, param, bx);
-    let depth = if a[0].len() == 1 {
+    let a = match tensor(&num, params) {
+        Ok(a) => a,
+        Err(why) => return BoxCertificate::Undecided(why),
+    };
+    let depth = if a.degrees[1..].iter().all(|d| *d == 0) {
         MAX_DEPTH_POINT
     } else {
-        MAX_DEPTH_BOX
+        MAX_DEPTH_BOX * params.len() as u32
     };
-    match sign_on_unit_box(&a, depth, false) {
-        Sign::NonNegative { boxes } => Certificate::NonNegative { boxes },
-        Sign::Negative { z, y, .. } => {
-            let p = param_at(bx, &y);
-            match value_at(&fz, param, &p, &z) {
-                Some(value) => Certificate::Counterexample { p, z, value },
-                None => Certificate::Undecided(format!("value at z = {z}, p = {p} is undefined")),
+    match sign_on_unit_cube(&a, depth, false) {
+        SignNd::NonNegative { boxes } => BoxCertificate::NonNegative { boxes },
+        SignNd::Negative { point, .. } => {
+            let (z, ys) = point.split_first().expect("z coordinate");
+            let values: Vec<Rational> = params
+                .iter()
+                .zip(ys)
+                .map(|((_, bx), y)| param_at(bx, y))
+                .collect();
+            let value = fz.eval_rational(&|name: &str| {
+                if name == "z" {
+                    return Some(z.clone());
+                }
+                params
+                    .iter()
+                    .position(|(n, _)| *n == name)
+                    .map(|k| values[k].clone())
+            });
+            match value {
+                Ok(value) => BoxCertificate::Counterexample {
+                    params: values,
+                    z: z.clone(),
+                    value,
+                },
+                Err(_) => BoxCertificate::Undecided(format!(
+                    "value at z = {z}, parameters {values:?} is undefined"
+                )),
             }
         }
-        Sign::Undecided { z, y } => Certificate::Undecided(format!(
-            "depth limit on z ∈ [{}, {}], box coordinate y ∈ [{}, {}]",
-            z.0, z.1, y.0, y.1
+        SignNd::Undecided { cell } => BoxCertificate::Undecided(format!(
+            "depth limit on the box {}",
+            cell.iter()
+                .map(|(a, b)| format!("[{a}, {b}]"))
+                .collect::<Vec<_>>()
+                .join(" × ")
         )),
     }
 }

@@ -4,16 +4,29 @@
 use crate::claim::Claim;
 
 mod seed000;
+mod seed000_appendix_b;
+mod seed000_appendix_c;
+mod seed000_appendix_e;
+mod seed000_appendix_print;
 mod seed002;
 mod seed003;
 mod seed004;
 mod thesis;
+mod thesis_interp;
+mod thesis_joins;
+mod thesis_tables;
 
 /// All claims, in report order.
 pub fn all() -> Vec<Claim> {
     [
         thesis::CLAIMS,
+        thesis_interp::CLAIMS,
+        thesis_joins::CLAIMS,
+        thesis_tables::CLAIMS,
         seed000::CLAIMS,
+        seed000_appendix_c::CLAIMS,
+        seed000_appendix_e::CLAIMS,
+        seed000_appendix_b::CLAIMS,
         seed002::CLAIMS,
         seed003::CLAIMS,
         seed004::CLAIMS,

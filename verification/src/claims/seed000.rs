@@ -8,6 +8,7 @@ use trig_core::families::seed000_nonuniform::NonUniform;
 use trig_core::{Family, Ring};
 use trig_symbolic::Sym;
 
+use super::seed000_appendix_c::{NONUNIFORM_J, nonuniform_knots};
 use crate::certify::evidence::nonnegative_on;
 use crate::certify::nonneg::ParamBox;
 use crate::claim::{Claim, Seed};
@@ -28,6 +29,13 @@ pub const CLAIMS: &[Claim] = &[
         source: "Theorem 2, Appendix B",
         statement: "F_j(n) > 0 (shape parameter ζ ∈ [0, 4])",
         check: m2,
+    },
+    Claim {
+        id: "M3",
+        seed: Seed::S000,
+        source: "(1)–(3), (5), Theorem 1",
+        statement: "partition of unity Σ_{j=0}^{3} F_j(n) = 1 for non-uniform knots, with the printed coefficient formulas (2)–(3)",
+        check: m3,
     },
     Claim {
         id: "M3b",
@@ -116,6 +124,61 @@ fn m1() -> Verdict {
     )
 }
 
+/// Σ of the four segment functions of (5) on span `j` minus 1, exactly, or
+/// the typed error of the printed formulas.
+fn unity_residual(knots: Vec<Sym>, j: i64) -> Result<Sym, trig_core::CoreError> {
+    let (s, c) = (Sym::var("s"), Sym::var("c"));
+    let seg = NonUniform::new(knots, zeta()).segment(j, &s, &c)?;
+    Ok(sum(&seg) - &Sym::one())
+}
+
+fn m3() -> Verdict {
+    let knots = nonuniform_knots();
+    let shown = knots
+        .iter()
+        .map(Sym::to_string)
+        .collect::<Vec<_>>()
+        .join(", ");
+    let mut parts = Vec::new();
+    for j in [NONUNIFORM_J, NONUNIFORM_J + 2] {
+        let v = match unity_residual(knots.clone(), j) {
+            Ok(r) if r.is_zero() => residual_verdict(&r, &Sym::zero()),
+            Ok(r) => {
+                // one exact point, re-checkable by hand: ζ = 2, z = tan(θ/2) = 1/2
+                let at = r
+                    .subs("zeta", &Sym::int(2))
+                    .subs("s", &Sym::rational(Rational::from((4, 5))))
+                    .subs("c", &Sym::rational(Rational::from((3, 5))));
+                let mut v = residual_verdict(&(r + &Sym::one()), &Sym::one());
+                v.evidence.push(format!(
+                    "at ζ = 2, θ = 2 arctan(1/2) (s = 4/5, c = 3/5): Σ F − 1 = {at} (exact)"
+                ));
+                v
+            }
+            Err(e) => Verdict::new(
+                Status::Fails,
+                IDENTITY,
+                vec![format!("the printed formulas are undefined: {e}")],
+            ),
+        };
+        parts.push((
+            format!("span [n_{j}, n_{}) of knots {shown}: Σ F − 1", j + 1),
+            v,
+        ));
+    }
+    let uniform: Vec<Sym> = (0..=20).map(Sym::int).collect();
+    let v = match unity_residual(uniform, 10) {
+        Ok(r) => residual_verdict(&(r + &Sym::one()), &Sym::one()),
+        Err(e) => Verdict::new(
+            Status::Fails,
+            IDENTITY,
+            vec![format!("the printed formulas are undefined: {e}")],
+        ),
+    };
+    parts.push(("uniform knots n_i = i, span [n_10, n_11)".into(), v));
+    Verdict::all(IDENTITY, parts)
+}
+
 fn m3b() -> Verdict {
     let knots: Vec<Sym> = (0..=20).map(Sym::int).collect();
     let f = NonUniform::new(knots, zeta());
@@ -186,18 +249,33 @@ fn m6() -> Verdict {
     v
 }
 
+/// `F_j > 0` for `ζ ∈ [0, 4]`: `F_j` is `F3, F2, F1, F0` on its four
+/// intervals; each piece is certified `≥ 0` or refuted by a counterexample.
+/// A negative value refutes `F_j > 0` on the open support `(n_j, n_{j+4})`
+/// (the support ends have the value 0, computed here). When every piece is
+/// certified, `≥ 0` does not prove `> 0`, and the exact zeros at the
+/// support ends refute it on the closed support.
 fn m2() -> Verdict {
+    let f = basis(Family::Seed000Uniform);
     let mut v = nonnegative_on(
         Family::Seed000Uniform,
-        &basis(Family::Seed000Uniform),
+        &f,
         Some("zeta"),
         &ParamBox::Interval(Rational::new(), Rational::from(4)),
     );
-    v.evidence.push(
-        "the B-spline basis function F_j is F3, F2, F1, F0 on its four intervals (uniform case, Appendix A); strict positivity fails in any case at the support ends, where F3(0) = F0(π/2) = 0".into(),
+    let at = |g: &Sym, s: i64, c: i64| g.subs("s", &Sym::int(s)).subs("c", &Sym::int(c));
+    let (first, last) = (at(&f[3], 0, 1), at(&f[0], 1, 0));
+    let mut line = format!(
+        "the B-spline basis function F_j is F3, F2, F1, F0 on [n_j, n_{{j+1}}), …, [n_{{j+3}}, n_{{j+4}}) (uniform case, Appendix A); at its support ends F_j(n_j) = F3(θ = 0) = {first} and F_j(n_{{j+4}}) = F0(θ = π/2) = {last} for every ζ, so \"> 0\" can hold only on the open support (n_j, n_{{j+4}})"
     );
-    if v.status == Status::Holds {
+    if v.status == Status::Fails {
+        line.push_str(
+            "; the negative values above lie inside it and refute F_j > 0 there too (M11 decides the strict positivity of the middle pieces F2, F1)",
+        );
+    } else if first.is_zero() && last.is_zero() {
+        line.push_str("; F_j ≥ 0 is certified, and F_j > 0 fails on the closed support");
         v.status = Status::Fails;
     }
+    v.evidence.push(line);
     v
 }

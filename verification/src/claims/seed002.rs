@@ -1,15 +1,17 @@
 //! Seed 002 (Dube & Mishra 2017): the quartic trigonometric Bézier basis and
 //! the rational curve.
 
+use rug::Rational;
 use trig_core::{Family, Ring};
 use trig_deriv::{End, Wrt, curve_endpoint_derivatives};
-use trig_symbolic::Sym;
+use trig_symbolic::{Poly, Sym};
 
 use crate::certify::evidence::nonnegative_on;
 use crate::certify::nonneg::ParamBox;
+use crate::certify::unimodal::exactly_one_maximum;
 use crate::claim::{Claim, Seed};
 use crate::exact::{basis, combination, identities, identity, reflect, sum, symbols, symmetry};
-use crate::verdict::Verdict;
+use crate::verdict::{Status, Verdict};
 
 pub const CLAIMS: &[Claim] = &[
     Claim {
@@ -41,11 +43,39 @@ pub const CLAIMS: &[Claim] = &[
         check: d3,
     },
     Claim {
+        id: "D4",
+        seed: Seed::S002,
+        source: "property (d)",
+        statement: "each b_i(t) has one maximum value in [0, π/2]",
+        check: d4,
+    },
+    Claim {
         id: "D5",
         seed: Seed::S002,
         source: "Theorem 2 (1)",
         statement: "R(0) = P0, R(π/2) = P5, R'(0) = 4(w1/w0)(P1 − P0), R'(π/2) = 4(w4/w5)(P5 − P4), R''(0) = [(32w1² − 8w0w1)(P0 − P1) − 12w0w2(P0 − P2)]/w0², R''(π/2) = [(32w4² − 8w4w5)(P5 − P4) − 12w3w5(P5 − P3)]/w5²",
         check: d5,
+    },
+    Claim {
+        id: "D6",
+        seed: Seed::S002,
+        source: "section IV, (3)",
+        statement: "R(0) = P0; R'(0) = 4(w1/w0)(P1 − P0); R''(0) = (1/w0²)[(3w1² − 8w0w1 − 12w0w2)P0 + (8w0w1 − 32w1²)P1 + (12w0w2)P2]; R''(π/2) = (1/w0²)[(12w3w3)P3 + (8w4w5 − 32w4²)P4 + (3w4² − 8w4w5 − 12w3w3)P5]; R'(π/2) = (4w4/w5)(P5 − P4); R''_2 = P5 (set equal to V1, α1(V2 − V0), α1(V0 − 2V1 + V2), α2(V1 − 2V2 + V3), α2(V3 − V1), V2)",
+        check: d6,
+    },
+    Claim {
+        id: "D6b",
+        seed: Seed::S002,
+        source: "section IV, (3), reading",
+        statement: "reading of D6: 3w1² → 32w1² and 3w4² → 32w4² (as in Theorem 2 (1)), 1/w0² → 1/w5² and w3w3 → w3w5 in R''(π/2), \"R''_2 = P5\" → R(π/2) = P5",
+        check: d6b,
+    },
+    Claim {
+        id: "D7",
+        seed: Seed::S002,
+        source: "Theorem 1, (5)–(8)",
+        statement: "the spline Q(u) of (6)–(7) has F³ continuity at the inner knots, by (8): Q(u⁺) = Q(u⁻); Q'(u⁺) = (Δu_i/Δu_{i+1}) Q'(u⁻); Q''(u⁺) = (Δu_i/Δu_{i+1})² Q''(u⁻); Q'''(u⁺) = (Δu_i/Δu_{i+1})³ Q'''(u⁻) − 4π(Δu_i)²/(Δu_{i+1})³ Q''(u⁻)",
+        check: d7,
     },
     Claim {
         id: "D9",
@@ -67,6 +97,13 @@ pub const CLAIMS: &[Claim] = &[
         source: "Theorem 2 (3), garbled print",
         statement: "reading of the garbled print: R(t; P_i + q) = R(t; P_i) + q and R(t; P_i T) = R(t; P_i) T",
         check: d10,
+    },
+    Claim {
+        id: "D11",
+        seed: Seed::S002,
+        source: "Theorem 2 (5)",
+        statement: "the blending functions are constructed in the space {1, sin t, cos t, cos 2t, sin 3t, cos 3t, sin 4t, cos 4t}",
+        check: d11,
     },
     Claim {
         id: "D12",
@@ -97,21 +134,27 @@ fn d3() -> Verdict {
     symmetry(Family::Seed002Quartic, 0..3)
 }
 
-fn d5() -> Verdict {
-    let p: Vec<Sym> = symbols("P", 6);
-    let w: Vec<Sym> = symbols("w", 6);
+/// `R, R', R''` (in θ) of the rational curve at `θ = 0` and `θ = π/2`, with
+/// control points `P0…P5` and weights `w0…w5` as symbols.
+fn rational_ends(p: &[Sym], w: &[Sym]) -> (Vec<Sym>, Vec<Sym>) {
     let at = |end| {
         curve_endpoint_derivatives::<Sym, 3>(
             Family::Seed002Quartic,
             &[],
-            &p,
-            Some(&w),
+            p,
+            Some(w),
             end,
             Wrt::Angle,
             &Sym::one(),
         )
     };
-    let (r0, r1) = (at(End::Start), at(End::End));
+    (at(End::Start), at(End::End))
+}
+
+fn d5() -> Verdict {
+    let p: Vec<Sym> = symbols("P", 6);
+    let w: Vec<Sym> = symbols("w", 6);
+    let (r0, r1) = rational_ends(&p, &w);
     let n = |k: i64| Sym::int(k);
     let printed_r2_0 = ((n(32) * &w[1].square() - &(n(8) * &w[0] * &w[1]))
         * &(p[0].clone() - &p[1])
@@ -210,4 +253,277 @@ fn d10() -> Verdict {
     ]);
     v.evidence.push("the printed equations are unreadable in our copy (\"R_2^π − t, P, …\"); this is the obvious reading".into());
     v
+}
+
+/// Each `b_i` has exactly one maximum on `[0, π/2]`: certified count of the
+/// sign changes of `b_i'`.
+fn d4() -> Verdict {
+    exactly_one_maximum(Family::Seed002Quartic, &basis(Family::Seed002Quartic))
+}
+
+/// The six left-hand sides of (3) against the curve's own derivatives: as
+/// printed, or (`reading`) with the typos of D6b corrected.
+fn d6_parts(reading: bool) -> Vec<(String, Sym, Sym)> {
+    let p: Vec<Sym> = symbols("P", 6);
+    let w: Vec<Sym> = symbols("w", 6);
+    let (r0, r1) = rational_ends(&p, &w);
+    let n = |k: i64| Sym::int(k);
+    let k = n(if reading { 32 } else { 3 });
+    let (den_end, w35) = if reading {
+        (w[5].square(), w[3].clone() * &w[5])
+    } else {
+        (w[0].square(), w[3].clone() * &w[3])
+    };
+    let r2_0 = ((k.clone() * &w[1].square() - &(n(8) * &w[0] * &w[1]) - &(n(12) * &w[0] * &w[2]))
+        * &p[0]
+        + &((n(8) * &w[0] * &w[1] - &(n(32) * &w[1].square())) * &p[1])
+        + &(n(12) * &w[0] * &w[2] * &p[2]))
+        / &w[0].square();
+    let r2_1 = (n(12) * &w35 * &p[3]
+        + &((n(8) * &w[4] * &w[5] - &(n(32) * &w[4].square())) * &p[4])
+        + &((k * &w[4].square() - &(n(8) * &w[4] * &w[5]) - &(n(12) * &w35)) * &p[5]))
+        / &den_end;
+    let last = if reading {
+        ("R(π/2) − P5".to_string(), r1[0].clone(), p[5].clone())
+    } else {
+        (
+            "R''(π/2) − P5 (\"R''_2 = P5\" as printed)".to_string(),
+            r1[2].clone(),
+            p[5].clone(),
+        )
+    };
+    let label = if reading { "reading" } else { "printed" };
+    vec![
+        ("R(0) − P0".into(), r0[0].clone(), p[0].clone()),
+        (
+            "R'(0) − 4(w1/w0)(P1 − P0)".into(),
+            r0[1].clone(),
+            n(4) * &w[1] / &w[0] * &(p[1].clone() - &p[0]),
+        ),
+        (format!("R''(0) − {label}"), r0[2].clone(), r2_0),
+        (format!("R''(π/2) − {label}"), r1[2].clone(), r2_1),
+        (
+            "R'(π/2) − (4w4/w5)(P5 − P4)".into(),
+            r1[1].clone(),
+            n(4) * &w[4] / &w[5] * &(p[5].clone() - &p[4]),
+        ),
+        last,
+    ]
+}
+
+const DESIGN: &str = "the right-hand sides V1, α1(V2 − V0), α1(V0 − 2V1 + V2), α2(V1 − 2V2 + V3), α2(V3 − V1), V2 are design conditions that define P0…P5 (solvable for w_i > 0: each new P enters with a nonzero coefficient), not identities; the left-hand sides are checked against the curve (2)";
+
+fn d6() -> Verdict {
+    let mut v = identities(d6_parts(false));
+    v.evidence.push(DESIGN.into());
+    if v.status == Status::Fails {
+        v = v.with_correction("see D6b: 3w1² → 32w1², 3w4² → 32w4², 1/w0² → 1/w5² and w3w3 → w3w5 in R''(π/2), R''_2 → R(π/2)");
+    }
+    v
+}
+
+fn d6b() -> Verdict {
+    let mut v = identities(d6_parts(true));
+    v.evidence.push(DESIGN.into());
+    v
+}
+
+/// The knot relations (8) for `k = 0, 1, 2` follow from the end conditions
+/// (3) (corrected reading D6b) and the chain rule of (7); the third-order
+/// relation needs `Q'''` at the segment ends, which (3) does not fix.
+fn d7() -> Verdict {
+    let v: Vec<Sym> = symbols("V", 4); // V_{i−1}, V_i, V_{i+1}, V_{i+2}
+    let a = Sym::var("alpha_i1"); // α_{i+1}, shared by both segments
+    let (du0, du1) = (Sym::var("du_i"), Sym::var("du_i1"));
+    let two = Sym::int(2);
+    // segment i = Q_i(t, α_i, α_{i+1}) at t = π/2, local V0…V3 = V_{i−1}…V_{i+2}
+    let left_t = [
+        v[2].clone(),
+        a.clone() * &(v[3].clone() - &v[1]),
+        a.clone() * &(v[1].clone() - &(two.clone() * &v[2]) + &v[3]),
+    ];
+    // segment i+1 = Q_{i+1}(t, α_{i+1}, α_{i+2}) at t = 0, local V0…V2 = V_i…V_{i+2}
+    let right_t = [
+        v[2].clone(),
+        a.clone() * &(v[3].clone() - &v[1]),
+        a.clone() * &(v[1].clone() - &(two.clone() * &v[2]) + &v[3]),
+    ];
+    let rate = |du: &Sym| Sym::pi() / &(two.clone() * du);
+    let chain = |x: &[Sym; 3], du: &Sym| -> Vec<Sym> {
+        (0..3)
+            .map(|k| x[k].clone() * &rate(du).powi(k as u32))
+            .collect()
+    };
+    let (l, r) = (chain(&left_t, &du0), chain(&right_t, &du1));
+    let ratio = du0.clone() / &du1;
+    let low = identities(vec![
+        ("Q(u⁺) − Q(u⁻)".into(), r[0].clone(), l[0].clone()),
+        (
+            "Q'(u⁺) − (Δu_i/Δu_{i+1}) Q'(u⁻)".into(),
+            r[1].clone(),
+            ratio.clone() * &l[1],
+        ),
+        (
+            "Q''(u⁺) − (Δu_i/Δu_{i+1})² Q''(u⁻)".into(),
+            r[2].clone(),
+            ratio.square() * &l[2],
+        ),
+    ]);
+    let mut evidence = vec![
+        "segments from (6): Q_i(t, α_i, α_{i+1}) on V_{i−1}…V_{i+2}; both sides of the knot u_{i+1} use α_{i+1}; their values and t-derivatives at the knot are the end conditions (3) (reading D6b), Q^(k)(u) = (π/(2Δu_i))^k Q_i^(k)(t) by (7)".to_string(),
+    ];
+    evidence.extend(
+        low.evidence
+            .into_iter()
+            .map(|e| format!("orders 0–2 of (8): {e}")),
+    );
+    evidence.push("order 3 of (8) is not checkable: (3) fixes only orders 0–2 at each end; Q_i''' at the ends depends on the blending functions Tb_i(t, α1, α2) of (5), whose printed fraction is unreadable in our copy (see D12), i.e. on the weights w_i and control points the construction actually uses".into());
+    evidence.push("so F³ (a third-order connection relation) can be neither proved nor refuted; the readable part, (8) for k = 0, 1, 2, is G²/C²-type continuity in u and holds exactly".into());
+    Verdict::new(Status::NotCheckable, crate::exact::IDENTITY, evidence)
+}
+
+/// `cos kθ`, `sin kθ` for `k = 0…n` as polynomials in `s`, `c`:
+/// `cos(k+1)θ = c cos kθ − s sin kθ`, `sin(k+1)θ = s cos kθ + c sin kθ`.
+fn fourier_basis(n: usize) -> (Vec<Sym>, Vec<Sym>) {
+    let (s, c) = (Sym::var("s"), Sym::var("c"));
+    let (mut cos, mut sin) = (vec![Sym::one()], vec![Sym::zero()]);
+    for k in 0..n {
+        let (ck, sk) = (cos[k].clone(), sin[k].clone());
+        cos.push(c.clone() * &ck - &(s.clone() * &sk));
+        sin.push(s.clone() * &ck + &(c.clone() * &sk));
+    }
+    (cos, sin)
+}
+
+fn fourier_label(k: usize, sine: bool) -> String {
+    match (k, sine) {
+        (0, _) => "1".into(),
+        (1, true) => "sin t".into(),
+        (1, false) => "cos t".into(),
+        (k, true) => format!("sin {k}t"),
+        (k, false) => format!("cos {k}t"),
+    }
+}
+
+/// The coefficient of `s^a c^b` in the reduced normal form.
+fn coeff(p: &Poly, a: u32, b: u32) -> Rational {
+    p.terms()
+        .find(|(m, _)| m.exponent("s") == a && m.exponent("c") == b)
+        .map_or(Rational::new(), |(_, q)| q.clone())
+}
+
+/// The exact Fourier expansion `Σ a_k cos kθ + b_k sin kθ` of a polynomial
+/// in `s`, `c`: the normal form has basis `cᵇ`, `s·cᵇ`, and `cos bθ`
+/// (`sin (b+1)θ`) is the only Fourier term whose normal form has the leading
+/// monomial `cᵇ` (`s·cᵇ`); peeling leading terms solves the triangular
+/// system exactly.
+fn fourier(f: &Sym) -> Result<Vec<(String, Rational)>, String> {
+    if !f.denominator().is_empty() {
+        return Err(format!("{f} is not a trigonometric polynomial"));
+    }
+    let n = f.numerator().degree_in("c") as usize + 1;
+    let (cos, sin) = fourier_basis(n);
+    let mut rest = f.clone();
+    let mut out: Vec<(String, Rational)> = Vec::new();
+    while !rest.is_zero() {
+        let mut lead = None;
+        for (m, _) in rest.numerator().terms() {
+            let (a, b) = (m.exponent("s"), m.exponent("c"));
+            if u64::from(a + b) != m.degree() {
+                return Err(format!("{f} depends on symbols other than s, c"));
+            }
+            if lead.is_none_or(|(_, lb)| b > lb) {
+                lead = Some((a, b));
+            }
+        }
+        let (a, b) = lead.expect("nonzero");
+        let (k, sine) = if a == 0 {
+            (b as usize, false)
+        } else {
+            (b as usize + 1, true)
+        };
+        let g = if sine { &sin[k] } else { &cos[k] };
+        let q = coeff(rest.numerator(), a, b) / coeff(g.numerator(), a, b);
+        rest = rest - &(Sym::rational(q.clone()) * g);
+        out.push((fourier_label(k, sine), q));
+    }
+    out.sort_by_key(|(l, _)| {
+        let k: usize = l
+            .split_whitespace()
+            .nth(1)
+            .and_then(|x| x.trim_end_matches('t').parse().ok())
+            .unwrap_or(1);
+        (l.starts_with("sin"), if l == "1" { 0 } else { k })
+    });
+    Ok(out)
+}
+
+/// The printed span of Theorem 2 (5).
+const PRINTED_SPAN: [&str; 8] = [
+    "1", "sin t", "cos t", "cos 2t", "sin 3t", "cos 3t", "sin 4t", "cos 4t",
+];
+
+fn d11() -> Verdict {
+    let b = basis(Family::Seed002Quartic);
+    let names = Family::Seed002Quartic.info().functions;
+    let mut status = Status::Holds;
+    let mut evidence = Vec::new();
+    for (f, name) in b.iter().zip(names) {
+        match fourier(f) {
+            Ok(terms) => {
+                let expansion: Vec<String> =
+                    terms.iter().map(|(l, q)| format!("({q})·{l}")).collect();
+                let outside: Vec<String> = terms
+                    .iter()
+                    .filter(|(l, _)| !PRINTED_SPAN.contains(&l.as_str()))
+                    .map(|(l, q)| format!("{l}: {q}"))
+                    .collect();
+                let verdict = if outside.is_empty() {
+                    "in the printed span".to_string()
+                } else {
+                    status = Status::Fails;
+                    format!("outside the printed span: {}", outside.join(", "))
+                };
+                evidence.push(format!(
+                    "{name} = {} (exact; re-expanded it equals {name} identically) — {verdict}",
+                    expansion.join(" + ")
+                ));
+            }
+            Err(why) => {
+                status = Status::NotCheckable;
+                evidence.push(format!("{name}: {why}"));
+            }
+        }
+    }
+    evidence.push("the printed span has 8 functions but omits sin 2t from the 9-dimensional space of trigonometric polynomials of degree ≤ 4; the rational blending functions w_i b_i / Σ w_j b_j equal b_i when all weights are equal (Σ b_j = 1, D1b), so the polynomial b_i decide the claim".into());
+    Verdict::new(
+        status,
+        "exact: Fourier expansion of each b_i in Q[s, c]/(s² + c² − 1), triangular solve on the normal-form basis c^k, s·c^k",
+        evidence,
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fourier_expansion_finds_sin_two_t_and_rebuilds_the_function() {
+        // 2sc = sin 2t lies outside the printed span; c³ = (3cos t + cos 3t)/4 inside
+        let (s, c) = (Sym::var("s"), Sym::var("c"));
+        let two_sc = Sym::int(2) * &s * &c;
+        assert_eq!(
+            fourier(&two_sc).unwrap(),
+            vec![("sin 2t".to_string(), Rational::from(1))]
+        );
+        let c3 = c.clone() * &c * &c;
+        assert_eq!(
+            fourier(&c3).unwrap(),
+            vec![
+                ("cos t".to_string(), Rational::from((3, 4))),
+                ("cos 3t".to_string(), Rational::from((1, 4)))
+            ]
+        );
+        assert!(fourier(&(s / &c)).is_err());
+    }
 }

@@ -28,7 +28,7 @@ pub const CLAIMS: &[Claim] = &[
 
 fn s1() -> Verdict {
     Verdict::not_checkable(
-        "the basis formulas of seed 003 are missing from our copy (catalog entry `seed003` has no formulas); every claim of the paper depends on them. They can be decided once the formulas are supplied (planned: an audit spec file, issue 7).",
+        "the basis formulas of seed 003 are missing from our copy (catalog entry `seed003` has no formulas); every claim of the paper depends on them. To decide them, type the paper's four segment functions and its claims into a spec file (format in docs/spec.md: variable = \"unit-angle\", parameter alpha with range \"[0.3, 0.5]\", checks unity, nonnegative, symmetry, endpoint-values, continuity with order = 3) and run `trig-audit audit --spec FILE`.",
     )
 }
 

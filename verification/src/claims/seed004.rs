@@ -6,7 +6,7 @@ use trig_core::{Family, Ring};
 use trig_deriv::{End, Wrt, curve_endpoint_derivatives, endpoint_derivatives};
 use trig_symbolic::Sym;
 
-use crate::certify::evidence::nonnegative_on;
+use crate::certify::evidence::{nonnegative_on, nonnegative_on_box};
 use crate::certify::nonneg::ParamBox;
 use crate::claim::{Claim, Seed};
 use crate::exact::{IDENTITY, basis, combination, identities, reflect, sum, symbols, symmetry};
@@ -110,6 +110,55 @@ pub const CLAIMS: &[Claim] = &[
         source: "(4)",
         statement: "R = Σ C_{j,3} P_j + λt²(1 + t² − 2t)(P0 − P1) + μt²(1 + t² − 2t)(P2 − P3), C the cubic Hermite bases",
         check: e13,
+    },
+    Claim {
+        id: "E1c",
+        seed: Seed::S004,
+        source: "section II",
+        statement: "h_i = x_{i+1} − x_i; t = (x_{i+1} − x_i)/h_i; H_i(x) = α0(t)y_i + α1(t)y_{i+1} + β0(t)h_i d_i + β1(t)h_{i+1}d_{i+1}; H_i(x_i) = y_i, H_i(x_{i+1}) = y_{i+1}, H_i'(x_i) = d_i, H_i'(x_{i+1}) = d_{i+1}",
+        check: e1c,
+    },
+    Claim {
+        id: "E1cb",
+        seed: Seed::S004,
+        source: "section II, reading",
+        statement: "reading of E1c with t = (x − x_i)/h_i (the printed h_{i+1}d_{i+1} kept)",
+        check: e1cb,
+    },
+    Claim {
+        id: "E14",
+        seed: Seed::S004,
+        source: "section V (1)–(2)",
+        statement: "C⁰ continuity: P3 = Q0; C¹ continuity: P3 = Q0 and P3 − P2 = (Q1 − Q0) (R1 on P0…P3 with λ1, μ1; R2 on Q0…Q3 with λ2, μ2)",
+        check: e14,
+    },
+    Claim {
+        id: "E15",
+        seed: Seed::S004,
+        source: "section V (3)",
+        statement: "C² continuity: Q3 = 4λP0 + (−2λ + 6)P1 − 6P2 − (2μ + 2λ + 6), and meeting with the C¹ continuity condition",
+        check: e15,
+    },
+    Claim {
+        id: "E15b",
+        seed: Seed::S004,
+        source: "section V (3), reading",
+        statement: "reading of the truncated E15: Q3 = 4λP0 + (−2λ + 6)P1 − 6P2 − (2μ + 2λ + 6)P3 with the C¹ conditions of (2), one λ, μ for both curves",
+        check: e15b,
+    },
+    Claim {
+        id: "E16",
+        seed: Seed::S004,
+        source: "section V, G¹",
+        statement: "G¹ continuity: P3 = Q0 and P3 − P2 = ω(Q1 − Q0), ω > 0",
+        check: e16,
+    },
+    Claim {
+        id: "E17",
+        seed: Seed::S004,
+        source: "section V, G²",
+        statement: "G² continuity: P3 = Q0 and P3 − P2 = ω(Q1 − Q0), ω > 0 and |P1Q2| □ |P2Q1| (relation symbol unreadable)",
+        check: e17,
     },
 ];
 
@@ -294,17 +343,16 @@ fn e13() -> Verdict {
     identities(vec![("Σ b_j P_j − (4)".into(), curve, rewritten)])
 }
 
-/// At λ = μ = 0 (inside the published range; the standard Hermite case the
-/// paper names) every function is tested on [0, 1].
+/// Every function on the published box `λ, μ ∈ [−1, 1]` (III(ii) (b)–(c)),
+/// certified with tensor Bernstein boxes in `(t, λ, μ)`.
 fn e4() -> Verdict {
-    let fs = eh_at(0);
-    let q0 = rug::Rational::new();
-    let mut v = nonnegative_on(Family::Eh, &fs, None, &ParamBox::Interval(q0.clone(), q0));
-    v.evidence.insert(
-        0,
-        "parameters λ = μ = 0 (inside [−1, 1]; the paper's own Hermite case)".into(),
-    );
-    v
+    let one = rug::Rational::from(1);
+    let unit = ParamBox::Interval(-one.clone(), one);
+    nonnegative_on_box(
+        Family::Eh,
+        &basis(Family::Eh),
+        &[("lambda", unit.clone()), ("mu", unit)],
+    )
 }
 
 fn e2() -> Verdict {
@@ -396,4 +444,335 @@ fn e12() -> Verdict {
         ));
     }
     Verdict::all(crate::certify::evidence::CERTIFIED, parts)
+}
+
+/// `H(x) = α0(t)y_i + α1(t)y_{i+1} + β0(t)h_i d_i + β1(t)·hd·d_{i+1}` for a
+/// given `t(x)` and the factor `hd` of `d_{i+1}`, and the four interpolation
+/// conditions at `x_i`, `x_{i+1} = x_i + h_i` (derivatives in `x`).
+fn hermite_conditions(t: &Sym, hd: &Sym) -> Vec<(String, Sym, Sym)> {
+    let (x0, hi) = (Sym::var("x_i"), Sym::var("h_i"));
+    let x1 = x0.clone() + &hi;
+    let [y0, y1, d0, d1] = ["y_i", "y_i1", "d_i", "d_i1"].map(Sym::var);
+    let atoms = trig_core::Atoms {
+        s: Sym::zero(),
+        c: Sym::one(),
+        t: t.clone(),
+    };
+    let a = Family::Hermite.eval(&atoms, &[]);
+    let h = combination(&a, &[y0.clone(), y1.clone(), hi * &d0, hd.clone() * &d1]);
+    let dh = h.diff("x");
+    vec![
+        ("H_i(x_i) − y_i".into(), h.subs("x", &x0), y0),
+        ("H_i(x_{i+1}) − y_{i+1}".into(), h.subs("x", &x1), y1),
+        ("H_i'(x_i) − d_i".into(), dh.subs("x", &x0), d0),
+        ("H_i'(x_{i+1}) − d_{i+1}".into(), dh.subs("x", &x1), d1),
+    ]
+}
+
+/// As printed: `t = (x_{i+1} − x_i)/h_i`, which is the constant 1.
+fn e1c() -> Verdict {
+    let (x0, hi) = (Sym::var("x_i"), Sym::var("h_i"));
+    let t = (x0.clone() + &hi - &x0) / &hi;
+    let mut v = identities(hermite_conditions(&t, &Sym::var("h_i1")));
+    v.evidence.insert(
+        0,
+        format!("x_{{i+1}} = x_i + h_i; the printed t = (x_{{i+1}} − x_i)/h_i equals {t} for every x, so H_i(x) = α0(1)y_i + α1(1)y_{{i+1}} + β0(1)h_i d_i + β1(1)h_{{i+1}}d_{{i+1}} is the constant y_{{i+1}}"),
+    );
+    v
+}
+
+/// Reading: `t = (x − x_i)/h_i`; the printed factor `h_{i+1}` of `d_{i+1}`
+/// is kept, and the correction `h_{i+1} → h_i` is checked.
+fn e1cb() -> Verdict {
+    let hi = Sym::var("h_i");
+    let t = (Sym::var("x") - &Sym::var("x_i")) / &hi;
+    let printed = identities(hermite_conditions(&t, &Sym::var("h_i1")));
+    if printed.status == Status::Holds {
+        return printed;
+    }
+    let corrected = identities(hermite_conditions(&t, &hi));
+    if corrected.status != Status::Holds {
+        return printed;
+    }
+    let mut evidence = printed.evidence;
+    evidence.extend(
+        corrected
+            .evidence
+            .into_iter()
+            .map(|e| format!("with h_i d_{{i+1}}: {e}")),
+    );
+    Verdict::new(Status::HoldsAfterCorrection, IDENTITY, evidence)
+        .with_correction("β1(t) h_i d_{i+1} instead of β1(t) h_{i+1} d_{i+1} (t is measured in units of h_i on [x_i, x_{i+1}])")
+}
+
+/// `[R, R', R'']` (in `t`) of `Σ b_i(t; λ, μ) X_i` at `end`.
+fn eh_end(points: &[Sym], lambda: &Sym, mu: &Sym, end: End) -> Vec<Sym> {
+    curve_endpoint_derivatives::<Sym, 3>(
+        Family::Eh,
+        &[lambda.clone(), mu.clone()],
+        points,
+        None,
+        end,
+        Wrt::Angle,
+        &Sym::one(),
+    )
+}
+
+/// The join of `R1 = Σ b_i(t; λ1, μ1) P_i` (at `t = 1`) to
+/// `R2 = Σ b_i(t; λ2, μ2) Q_i` (at `t = 0`).
+struct Join {
+    p: Vec<Sym>,
+    q: Vec<Sym>,
+    r1: Vec<Sym>,
+    r2: Vec<Sym>,
+}
+
+impl Join {
+    fn new(same_params: bool) -> Join {
+        let (p, q) = (symbols("P", 4), symbols("Q", 4));
+        let (l1, m1) = (Sym::var("lambda1"), Sym::var("mu1"));
+        let (l2, m2) = if same_params {
+            (l1.clone(), m1.clone())
+        } else {
+            (Sym::var("lambda2"), Sym::var("mu2"))
+        };
+        let r1 = eh_end(&p, &l1, &m1, End::End);
+        let r2 = eh_end(&q, &l2, &m2, End::Start);
+        Join { p, q, r1, r2 }
+    }
+
+    /// The terminal properties the conditions must match.
+    fn terminal(&self) -> String {
+        format!(
+            "terminal properties from the bases: R1(1) = {}, R1'(1) = {}, R1''(1) = {}; R2(0) = {}, R2'(0) = {}, R2''(0) = {}",
+            self.r1[0], self.r1[1], self.r1[2], self.r2[0], self.r2[1], self.r2[2]
+        )
+    }
+
+    /// `e` with the listed control points of `R2` replaced.
+    fn with(e: &Sym, subs: &[(&str, Sym)]) -> Sym {
+        subs.iter().fold(e.clone(), |acc, (n, v)| acc.subs(n, v))
+    }
+}
+
+/// The value of `var` that makes the (linear in `var`) residual vanish.
+fn solve_for(residual: &Sym, var: &str) -> Sym {
+    let a = residual.diff(var);
+    -(residual.subs(var, &Sym::zero())) / &a
+}
+
+/// The residual lines of join conditions `lhs − rhs` under `subs`, as parts.
+fn join_parts(
+    conditions: &[(&str, Sym)],
+    subs: &[(&str, Sym)],
+    label: &str,
+) -> Vec<(String, Verdict)> {
+    conditions
+        .iter()
+        .map(|(name, r)| {
+            (
+                format!("{name} {label}"),
+                crate::exact::residual_verdict(&Join::with(r, subs), &Sym::zero()),
+            )
+        })
+        .collect()
+}
+
+/// Solves the conditions in order for the listed unknowns, each solution
+/// substituted into the later conditions; returns the solutions and the
+/// check that they make every residual vanish.
+fn derive(
+    conditions: &[(&str, Sym)],
+    unknowns: &[&'static str],
+) -> (Vec<(&'static str, Sym)>, Verdict) {
+    let mut sol: Vec<(&'static str, Sym)> = Vec::new();
+    for ((_, r), u) in conditions.iter().zip(unknowns) {
+        sol.push((u, solve_for(&Join::with(r, &sol), u)));
+    }
+    let check = Verdict::all(
+        IDENTITY,
+        join_parts(conditions, &sol, "with the derived conditions"),
+    );
+    (sol, check)
+}
+
+fn show(sol: &[(&str, Sym)]) -> String {
+    sol.iter()
+        .map(|(u, v)| format!("{u} = {v}"))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// Printed conditions, their residuals, and the derived correct conditions.
+fn join_verdict(
+    j: &Join,
+    conditions: &[(&str, Sym)],
+    printed: &[(&str, Sym)],
+    unknowns: &[&'static str],
+) -> Verdict {
+    let mut v = Verdict::all(
+        IDENTITY,
+        join_parts(conditions, printed, "with the printed conditions"),
+    );
+    let (sol, check) = derive(conditions, unknowns);
+    v.evidence.insert(0, j.terminal());
+    v.evidence.extend(check.evidence);
+    if v.status == Status::Fails && check.status == Status::Holds {
+        v = v.with_correction(format!("derived: {}", show(&sol)));
+    }
+    v
+}
+
+fn e14() -> Verdict {
+    let j = Join::new(false);
+    let c0 = j.r2[0].clone() - &j.r1[0];
+    let c1 = j.r2[1].clone() - &j.r1[1];
+    let printed = [
+        ("Q0", j.p[3].clone()),
+        ("Q1", j.p[3].clone() * &Sym::int(2) - &j.p[2]),
+    ];
+    join_verdict(
+        &j,
+        &[("C⁰: R2(0) − R1(1)", c0), ("C¹: R2'(0) − R1'(1)", c1)],
+        &printed,
+        &["Q0", "Q2"],
+    )
+}
+
+fn e15() -> Verdict {
+    let mut v = Verdict::not_checkable(
+        "the printed formula is truncated: its last term −(2μ + 2λ + 6) carries no control point (a scalar added to points), and it does not say which curve's λ, μ it uses; the obvious reading is E15b",
+    );
+    let j = Join::new(false);
+    let conditions = c2_conditions(&j);
+    let (sol, _) = derive(&conditions, &["Q0", "Q2", "Q3"]);
+    v.evidence.push(j.terminal());
+    v.evidence.push(format!(
+        "derived C² join (λ1, μ1 on R1; λ2, μ2 on R2): {}",
+        show(&sol)
+    ));
+    v
+}
+
+fn c2_conditions(j: &Join) -> Vec<(&'static str, Sym)> {
+    vec![
+        ("C⁰: R2(0) − R1(1)", j.r2[0].clone() - &j.r1[0]),
+        ("C¹: R2'(0) − R1'(1)", j.r2[1].clone() - &j.r1[1]),
+        ("C²: R2''(0) − R1''(1)", j.r2[2].clone() - &j.r1[2]),
+    ]
+}
+
+fn e15b() -> Verdict {
+    let j = Join::new(true);
+    let (l, m) = (Sym::var("lambda1"), Sym::var("mu1"));
+    let n = Sym::int;
+    let q3 = n(4) * &l * &j.p[0] + &((n(6) - &(n(2) * &l)) * &j.p[1])
+        - &(n(6) * &j.p[2])
+        - &((n(2) * &m + &(n(2) * &l) + &n(6)) * &j.p[3]);
+    let printed = [
+        ("Q0", j.p[3].clone()),
+        ("Q1", j.p[3].clone() * &n(2) - &j.p[2]),
+        ("Q3", q3),
+    ];
+    let mut v = join_verdict(&j, &c2_conditions(&j), &printed, &["Q0", "Q2", "Q3"]);
+    v.evidence
+        .insert(0, "one λ = λ1 = λ2, μ = μ1 = μ2 for both curves".into());
+    v
+}
+
+/// `G¹` in the printed orientation `R1'(1) = ω R2'(0)`, `ω > 0`.
+fn g1_conditions(j: &Join, omega: &Sym) -> Vec<(&'static str, Sym)> {
+    vec![
+        ("G⁰: R2(0) − R1(1)", j.r2[0].clone() - &j.r1[0]),
+        (
+            "G¹: R1'(1) − ω R2'(0)",
+            j.r1[1].clone() - &(omega.clone() * &j.r2[1]),
+        ),
+    ]
+}
+
+fn g1_printed(j: &Join, omega: &Sym) -> Vec<(&'static str, Sym)> {
+    vec![
+        ("Q0", j.p[3].clone()),
+        ("Q1", j.p[3].clone() + &((j.p[3].clone() - &j.p[2]) / omega)),
+    ]
+}
+
+fn e16() -> Verdict {
+    let j = Join::new(false);
+    let omega = Sym::var("omega");
+    join_verdict(
+        &j,
+        &g1_conditions(&j, &omega),
+        &g1_printed(&j, &omega),
+        &["Q0", "Q2"],
+    )
+}
+
+/// Whatever the unreadable relation between |P1Q2| and |P2Q1| is, a
+/// configuration with `Q2 − P1 = Q1 − P2` (equal and parallel segments)
+/// satisfies every reflexive relation; the printed G⁰/G¹ conditions then
+/// leave a gap at the join.
+fn e17() -> Verdict {
+    let j = Join::new(false);
+    let omega = Sym::var("omega");
+    let n = Sym::int;
+    let pts: Vec<(&str, Sym)> = vec![
+        ("P0", n(0)),
+        ("P1", n(1)),
+        ("P2", n(2)),
+        ("P3", n(3)),
+        ("omega", n(1)),
+        ("Q0", n(3)),
+        ("Q1", n(4)),
+        ("Q2", n(3)),
+        ("Q3", n(0)),
+        ("lambda1", n(0)),
+        ("mu1", n(0)),
+        ("lambda2", n(0)),
+        ("mu2", n(0)),
+    ];
+    let at = |e: &Sym| Join::with(e, &pts);
+    let printed_hold = [
+        ("Q0 − P3", j.q[0].clone() - &j.p[3]),
+        (
+            "P3 − P2 − ω(Q1 − Q0)",
+            j.p[3].clone() - &j.p[2] - &(omega.clone() * &(j.q[1].clone() - &j.q[0])),
+        ),
+        (
+            "(Q2 − P1) − (Q1 − P2)",
+            j.q[2].clone() - &j.p[1] - &(j.q[1].clone() - &j.p[2]),
+        ),
+    ];
+    let all_zero = printed_hold.iter().all(|(_, e)| at(e).is_zero());
+    let gap = at(&(j.r2[0].clone() - &j.r1[0]));
+    let mut evidence = vec![
+        j.terminal(),
+        "the relation between |P1Q2| and |P2Q1| is unreadable (\"|P1Q2| □ |P2Q1|\"); the counterexample below has Q2 − P1 = Q1 − P2, so it satisfies every reflexive relation between the two segments (equal length, parallel, ≤, ≥)".into(),
+        format!(
+            "one coordinate, λ1 = μ1 = λ2 = μ2 = 0, ω = 1: P = (0, 1, 2, 3), Q = (3, 4, 3, 0); printed conditions satisfied exactly: {all_zero}"
+        ),
+        format!("R2(0) − R1(1) = {gap} (exact): the curves do not even meet (G⁰ fails)"),
+    ];
+    let (sol, check) = derive(
+        &[
+            g1_conditions(&j, &omega),
+            vec![(
+                "G²: R1''(1) − ω² R2''(0) − β R2'(0)",
+                j.r1[2].clone() - &(omega.square() * &j.r2[2]) - &(Sym::var("beta") * &j.r2[1]),
+            )],
+        ]
+        .concat(),
+        &["Q0", "Q2", "Q3"],
+    );
+    evidence.extend(check.evidence);
+    let status = if all_zero && !gap.is_zero() {
+        Status::Fails
+    } else {
+        Status::NotCheckable
+    };
+    Verdict::new(status, IDENTITY, evidence).with_correction(format!(
+        "derived G² (R1' = ωR2', R1'' = ω²R2'' + βR2' at the join): {}",
+        show(&sol)
+    ))
 }

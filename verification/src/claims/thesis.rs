@@ -348,7 +348,7 @@ fn t30() -> Verdict {
 fn t33() -> Verdict {
     let b = basis(Family::ThesisCubic);
     let values: Vec<Sym> = b.iter().map(|bi| at_end(bi, End::End)).collect();
-    let printed = [0, 1, 1, 1];
+    let printed = [1, 1, 1, 0]; // b3(1) = 0, b0(1) = b1(1) = b2(1) = 1
     let parts = (0..4)
         .map(|i| {
             (

@@ -5,7 +5,9 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use clap::{Args, ValueEnum};
-use trig_verification::{Seed, report, run as run_audit};
+use trig_spec::Spec;
+use trig_verification::report::Entry;
+use trig_verification::{Seed, report, run as run_audit, spec_audit};
 
 use super::{CliError, CmdResult};
 use crate::format::json;
@@ -14,6 +16,7 @@ use crate::format::json;
 pub enum ReportFormat {
     Md,
     Json,
+    Tex,
 }
 
 #[derive(Debug, Args)]
@@ -24,6 +27,9 @@ pub struct AuditArgs {
     /// Only this claim id (e.g. T4b).
     #[arg(long)]
     claim: Option<String>,
+    /// Audit the basis and claims of a spec file (TOML, docs/spec.md) instead of the built-in claims.
+    #[arg(long, value_name = "FILE", conflicts_with = "seed")]
+    spec: Option<PathBuf>,
     /// Report format.
     #[arg(long, value_enum, default_value = "md")]
     format: ReportFormat,
@@ -33,6 +39,49 @@ pub struct AuditArgs {
 }
 
 pub fn run(args: &AuditArgs) -> CmdResult {
+    let (entries, intro) = match &args.spec {
+        Some(path) => {
+            let spec = Spec::from_file(path)
+                .map_err(|e| CliError::Usage(e.to_string().replace('\n', " ")))?;
+            let entries: Vec<Entry> = spec_audit::audit(&spec)
+                .into_iter()
+                .filter(|e| {
+                    args.claim
+                        .as_deref()
+                        .is_none_or(|id| e.id.eq_ignore_ascii_case(id))
+                })
+                .collect();
+            (entries, spec_audit::intro(&spec))
+        }
+        None => (builtin(args)?, report::BUILTIN_INTRO.to_string()),
+    };
+    if entries.is_empty() {
+        return Err(CliError::Usage(format!(
+            "no claim matches --claim {}",
+            args.claim.as_deref().unwrap_or("")
+        )));
+    }
+    let text = match args.format {
+        ReportFormat::Md => report::markdown_entries(&entries, &intro),
+        ReportFormat::Json => json(&report::json_entries(&entries)),
+        ReportFormat::Tex => report::tex_entries(&entries, &intro),
+    };
+    match &args.output {
+        None => Ok(text),
+        Some(path) => {
+            write_atomically(path, &text)
+                .map_err(|e| CliError::Usage(format!("cannot write {}: {e}", path.display())))?;
+            Ok(format!(
+                "wrote {} ({} claims)\n",
+                path.display(),
+                entries.len()
+            ))
+        }
+    }
+}
+
+/// The built-in claims selected by `--seed` and `--claim`, decided.
+fn builtin(args: &AuditArgs) -> Result<Vec<Entry>, CliError> {
     let seed = match &args.seed {
         None => None,
         Some(id) => Some(
@@ -44,29 +93,7 @@ pub fn run(args: &AuditArgs) -> CmdResult {
                 })?,
         ),
     };
-    let outcomes = run_audit(seed, args.claim.as_deref());
-    if outcomes.is_empty() {
-        return Err(CliError::Usage(format!(
-            "no claim matches --claim {}",
-            args.claim.as_deref().unwrap_or("")
-        )));
-    }
-    let text = match args.format {
-        ReportFormat::Md => report::markdown(&outcomes),
-        ReportFormat::Json => json(&report::json(&outcomes)),
-    };
-    match &args.output {
-        None => Ok(text),
-        Some(path) => {
-            write_atomically(path, &text)
-                .map_err(|e| CliError::Usage(format!("cannot write {}: {e}", path.display())))?;
-            Ok(format!(
-                "wrote {} ({} claims)\n",
-                path.display(),
-                outcomes.len()
-            ))
-        }
-    }
+    Ok(report::entries(&run_audit(seed, args.claim.as_deref())))
 }
 
 /// Writes to a temporary file beside `path`, then renames it over `path`:

@@ -9,8 +9,10 @@ use serde_json::json;
 use trig_core::families::seed000_nonuniform::NonUniform;
 use trig_core::knots::{check_knots, locate};
 use trig_core::{
-    CoreError, Family, FamilyInfo, Mpfr, Real, SEED000_NONUNIFORM, parse_exact, piecewise,
+    Atoms, Basis, CoreError, Family, Mpfr, Real, Ring, SEED000_NONUNIFORM, Variable, parse_exact,
+    piecewise,
 };
+use trig_spec::Spec;
 
 use super::{CliError, CmdResult};
 use crate::format::{TextOrJson, json};
@@ -21,7 +23,11 @@ const MAX_PREC: u32 = 1 << 16;
 #[derive(Debug, Args)]
 pub struct EvalArgs {
     /// Family id (see `trig-audit list`).
-    family: String,
+    #[arg(required_unless_present = "spec", conflicts_with = "spec")]
+    family: Option<String>,
+    /// A spec file (TOML) defining the basis instead of a catalog family (docs/spec.md).
+    #[arg(long, value_name = "FILE")]
+    spec: Option<std::path::PathBuf>,
     /// Shape parameter as name=value (decimals are read exactly: 0.6 = 3/5).
     #[arg(long = "param", value_name = "NAME=VALUE")]
     params: Vec<String>,
@@ -58,9 +64,122 @@ pub fn param_pairs(raw: &[String]) -> Result<Vec<(String, String)>, CliError> {
         .collect()
 }
 
+/// A basis to work on: a catalog family or a spec file's basis.
+#[derive(Debug, Clone)]
+pub enum Subject {
+    Family(Family),
+    Spec(Box<Spec>),
+}
+
+impl Subject {
+    /// The family named by `family`, or the basis of the spec file.
+    pub fn from_args(
+        family: Option<&str>,
+        spec: Option<&std::path::Path>,
+    ) -> Result<Subject, CliError> {
+        match (family, spec) {
+            (_, Some(path)) => Spec::from_file(path)
+                .map(|s| Subject::Spec(Box::new(s)))
+                .map_err(|e| CliError::Usage(e.to_string().replace('\n', " "))),
+            (Some(id), None) => {
+                let family = Family::from_id(id)?;
+                if !family.has_formulas() {
+                    return Err(CoreError::NoFormulas(id.into()).into());
+                }
+                Ok(Subject::Family(family))
+            }
+            (None, None) => Err(CliError::Usage(
+                "expected a family id or --spec FILE".into(),
+            )),
+        }
+    }
+
+    /// The citation.
+    pub fn citation(&self) -> String {
+        match self {
+            Subject::Family(f) => f.info().citation.to_string(),
+            Subject::Spec(s) => s.citation.clone(),
+        }
+    }
+
+    /// True when the uniform B-spline basis function can be assembled from
+    /// it: a catalog family marked piecewise, or a spec with four segment
+    /// functions (piece k is function 3 − k).
+    pub fn piecewise(&self) -> bool {
+        match self {
+            Subject::Family(f) => f.info().piecewise,
+            Subject::Spec(s) => s.function_names().len() == 4,
+        }
+    }
+
+    /// Exact parameter values from `name=value` pairs.
+    pub fn params_from_pairs(
+        &self,
+        pairs: &[(String, String)],
+        allow_outside: bool,
+    ) -> Result<Vec<Rational>, CoreError> {
+        match self {
+            Subject::Family(f) => f.params_from_pairs(pairs, allow_outside),
+            Subject::Spec(s) => s.params_from_pairs(pairs, allow_outside),
+        }
+    }
+
+    /// Numeric evaluation with typed errors.
+    pub fn eval_at<T: Real>(
+        &self,
+        x: &T,
+        p: &[Rational],
+        allow_outside: bool,
+    ) -> Result<Vec<T>, CoreError> {
+        match self {
+            Subject::Family(f) => f.eval_at(x, p, allow_outside),
+            Subject::Spec(s) => s.eval_at(x, p, allow_outside),
+        }
+    }
+}
+
+impl Basis for Subject {
+    fn id(&self) -> String {
+        match self {
+            Subject::Family(f) => Basis::id(f),
+            Subject::Spec(s) => s.id.clone(),
+        }
+    }
+
+    fn variable(&self) -> Variable {
+        match self {
+            Subject::Family(f) => Basis::variable(f),
+            Subject::Spec(s) => s.variable,
+        }
+    }
+
+    fn param_names(&self) -> Vec<String> {
+        match self {
+            Subject::Family(f) => f.param_names(),
+            Subject::Spec(s) => s.param_names(),
+        }
+    }
+
+    fn function_names(&self) -> Vec<String> {
+        match self {
+            Subject::Family(f) => f.function_names(),
+            Subject::Spec(s) => s.function_names(),
+        }
+    }
+
+    fn eval<T: Ring>(&self, x: &Atoms<T>, p: &[T]) -> Vec<T> {
+        match self {
+            Subject::Family(f) => Basis::eval(f, x, p),
+            Subject::Spec(s) => Basis::eval(s.as_ref(), x, p),
+        }
+    }
+}
+
 /// What was evaluated: names and values as text.
 struct Evaluation {
-    info: FamilyInfo,
+    id: String,
+    citation: String,
+    param_names: Vec<String>,
     params: Vec<Rational>,
     names: Vec<String>,
     values: Vec<String>,
@@ -90,7 +209,7 @@ fn evaluate<T: Real + Display>(
 ) -> Result<Evaluation, CliError> {
     let pairs = param_pairs(&args.params)?;
     let x = make(at);
-    if args.family == SEED000_NONUNIFORM.id {
+    if args.family.as_deref() == Some(SEED000_NONUNIFORM.id) && args.spec.is_none() {
         return nonuniform(args, &pairs, &x, &make);
     }
     if !args.knots.is_empty() {
@@ -99,24 +218,33 @@ fn evaluate<T: Real + Display>(
             SEED000_NONUNIFORM.id
         )));
     }
-    let family = Family::from_id(&args.family)?;
-    let info = family.info();
-    let params = family.params_from_pairs(&pairs, args.allow_outside_range)?;
+    let subject = Subject::from_args(args.family.as_deref(), args.spec.as_deref())?;
+    let params = subject.params_from_pairs(&pairs, args.allow_outside_range)?;
+    let (id, citation, param_names) = (subject.id(), subject.citation(), subject.param_names());
     if args.piecewise {
+        let Subject::Family(family) = subject else {
+            return Err(CliError::Usage(
+                "--piecewise applies to catalog families only".into(),
+            ));
+        };
         let value = piecewise::eval_uniform(family, &x, &params)?;
         return Ok(Evaluation {
-            info,
+            id,
+            citation,
+            param_names,
             params,
             names: vec!["B(n)".into()],
             values: vec![value.to_string()],
             note: Some("uniform B-spline basis function on knots 0,1,2,3,4".into()),
         });
     }
-    let values = family.eval_at(&x, &params, args.allow_outside_range)?;
+    let values = subject.eval_at(&x, &params, args.allow_outside_range)?;
     Ok(Evaluation {
-        info,
+        id,
+        citation,
+        param_names,
         params,
-        names: info.functions.iter().map(|s| s.to_string()).collect(),
+        names: subject.function_names(),
         values: values.iter().map(|v| v.to_string()).collect(),
         note: None,
     })
@@ -148,7 +276,9 @@ fn nonuniform<T: Real + Display>(
         .into());
     }
     Ok(Evaluation {
-        info,
+        id: info.id.to_string(),
+        citation: info.citation.to_string(),
+        param_names: info.params.iter().map(|p| p.name.to_string()).collect(),
         params: zeta,
         names: info.functions.iter().map(|s| s.to_string()).collect(),
         values: values.iter().map(|v| v.to_string()).collect(),
@@ -162,11 +292,10 @@ fn nonuniform<T: Real + Display>(
 fn render(args: &EvalArgs, e: &Evaluation) -> String {
     let precision = args.prec.map_or("f64".to_string(), |b| format!("mpfr-{b}"));
     let params: Vec<(String, String)> = e
-        .info
-        .params
+        .param_names
         .iter()
         .zip(&e.params)
-        .map(|(p, v)| (p.name.to_string(), v.to_string()))
+        .map(|(p, v)| (p.clone(), v.to_string()))
         .collect();
     match args.format {
         TextOrJson::Json => {
@@ -177,8 +306,8 @@ fn render(args: &EvalArgs, e: &Evaluation) -> String {
                 .map(|(n, v)| (n.clone(), json!(v)))
                 .collect();
             json(&json!({
-                "family": e.info.id,
-                "citation": e.info.citation,
+                "family": e.id,
+                "citation": e.citation,
                 "params": params.iter().map(|(n, v)| (n.clone(), json!(v))).collect::<serde_json::Map<_, _>>(),
                 "at": args.at,
                 "precision": precision,
@@ -192,7 +321,7 @@ fn render(args: &EvalArgs, e: &Evaluation) -> String {
             let _ = writeln!(
                 out,
                 "{} at {} [{}] ({precision}){}",
-                e.info.id,
+                e.id,
                 args.at,
                 shown.join(", "),
                 e.note.as_ref().map_or(String::new(), |n| format!("; {n}"))

@@ -2,7 +2,11 @@
 
 pub mod audit;
 pub mod eval;
+pub mod fit;
+pub mod interp;
+pub mod join;
 pub mod list;
+pub mod plot;
 pub mod table;
 
 /// Error of a command: a typed library error or a usage problem.

@@ -3,11 +3,11 @@
 
 use clap::{Args, ValueEnum};
 use rug::Rational;
-use trig_core::{Family, Mpfr, Ring, parse_exact};
+use trig_core::{Basis, Mpfr, Ring, parse_exact};
 use trig_deriv::{End, Wrt, curve_endpoint_derivatives, endpoint_derivatives, knot_derivatives};
 use trig_symbolic::Sym;
 
-use super::eval::param_pairs;
+use super::eval::{Subject, param_pairs};
 use super::{CliError, CmdResult};
 use crate::cell::{Block, Cell, Rendered};
 use crate::format::{TableFormat, render_blocks};
@@ -33,7 +33,11 @@ pub enum WrtArg {
 #[derive(Debug, Args)]
 pub struct TableArgs {
     /// Family id (see `trig-audit list`).
-    family: String,
+    #[arg(required_unless_present = "spec", conflicts_with = "spec")]
+    family: Option<String>,
+    /// A spec file (TOML) defining the basis instead of a catalog family (docs/spec.md).
+    #[arg(long, value_name = "FILE")]
+    spec: Option<std::path::PathBuf>,
     /// Highest derivative order (0 to 12).
     #[arg(long, default_value_t = 6)]
     order: usize,
@@ -77,21 +81,17 @@ impl From<WrtArg> for Wrt {
 }
 
 pub fn run(args: &TableArgs) -> CmdResult {
-    let family = Family::from_id(&args.family)?;
-    let info = family.info();
-    if !family.has_formulas() {
-        return Err(trig_core::CoreError::NoFormulas(info.id.into()).into());
-    }
+    let family = Subject::from_args(args.family.as_deref(), args.spec.as_deref())?;
+    let id = family.id();
     if args.order > MAX_ORDER {
         return Err(CliError::Usage(format!(
             "--order {}: at most {MAX_ORDER}",
             args.order
         )));
     }
-    if args.at == At::Knots && (!info.piecewise || args.curve) {
+    if args.at == At::Knots && (!family.piecewise() || args.curve) {
         return Err(CliError::Usage(format!(
-            "--at knots needs a family with uniform B-spline pieces (seed000-uniform, bspline3), without --curve; `{}` is not one",
-            info.id
+            "--at knots needs a family with uniform B-spline pieces (seed000-uniform, bspline3, or a spec with four segment functions), without --curve; `{id}` is not one"
         )));
     }
     let wrt = Wrt::from(args.wrt);
@@ -113,7 +113,7 @@ pub fn run(args: &TableArgs) -> CmdResult {
         match args.prec {
             None => build(
                 args,
-                family,
+                &family,
                 &p.iter().map(Rational::to_f64).collect::<Vec<_>>(),
                 &h.to_f64(),
                 None,
@@ -122,7 +122,7 @@ pub fn run(args: &TableArgs) -> CmdResult {
                 let mk = |q: &Rational| Mpfr::from_rational(bits, q);
                 build(
                     args,
-                    family,
+                    &family,
                     &p.iter().map(mk).collect::<Vec<_>>(),
                     &mk(&h),
                     None,
@@ -135,16 +135,16 @@ pub fn run(args: &TableArgs) -> CmdResult {
             }
         }
     } else {
-        let params: Vec<Sym> = info.params.iter().map(|p| Sym::var(p.name)).collect();
+        let params: Vec<Sym> = family.param_names().iter().map(|p| Sym::var(p)).collect();
         let h = if wrt == Wrt::X {
             Sym::var("h")
         } else {
             Sym::one()
         };
-        let n = info.functions.len();
+        let n = family.function_names().len();
         let points: Vec<Sym> = (0..n).map(|i| Sym::var(&format!("P{i}"))).collect();
         let weights: Vec<Sym> = (0..n).map(|i| Sym::var(&format!("w{i}"))).collect();
-        build(args, family, &params, &h, Some((&points, &weights)))
+        build(args, &family, &params, &h, Some((&points, &weights)))
     };
     let mode = if args.numeric {
         let shown: Vec<String> = args.params.clone();
@@ -157,10 +157,9 @@ pub fn run(args: &TableArgs) -> CmdResult {
         "exact".to_string()
     };
     let heading = format!(
-        "{} ({}): derivatives {}, {mode}",
-        info.id,
-        info.citation,
-        wrt.describe(info.variable.is_trigonometric())
+        "{id} ({}): derivatives {}, {mode}",
+        family.citation(),
+        wrt.describe(family.variable().is_trigonometric())
     );
     Ok(render_blocks(&heading, &blocks, args.format))
 }
@@ -172,7 +171,7 @@ type CurveData<'a, T> = Option<(&'a [T], &'a [T])>;
 /// for the requested order.
 fn build<T: Ring + Cell>(
     args: &TableArgs,
-    family: Family,
+    family: &Subject,
     params: &[T],
     h: &T,
     curve: CurveData<'_, T>,
@@ -190,12 +189,11 @@ fn build<T: Ring + Cell>(
 
 fn blocks<T: Ring + Cell, const K: usize>(
     args: &TableArgs,
-    family: Family,
+    family: &Subject,
     params: &[T],
     h: &T,
     curve: CurveData<'_, T>,
 ) -> Vec<Block> {
-    let info = family.info();
     let wrt = Wrt::from(args.wrt);
     let orders = || (0..K).map(|k| k.to_string());
     if args.at == At::Knots {
@@ -261,7 +259,7 @@ fn blocks<T: Ring + Cell, const K: usize>(
                 Block {
                     title,
                     corner: "k".into(),
-                    columns: info.functions.iter().map(|s| s.to_string()).collect(),
+                    columns: family.function_names(),
                     rows: orders()
                         .enumerate()
                         .map(|(k, label)| {

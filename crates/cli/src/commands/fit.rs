@@ -1,0 +1,477 @@
+//! `trig-audit fit`: the thesis's Chapter 6 study on an outline data file —
+//! per-method tables like Tables 6.2–6.13 and the comparison like Tables
+//! 6.14–6.16, for one family or all six (thesis cubic, Majeed–Qayyum, Han,
+//! Usman, Han as the Appendix 2 listing computes it, Bézier).
+
+use std::fmt::Write;
+use std::path::PathBuf;
+
+use clap::{Args, ValueEnum};
+use trig_core::Family;
+use trig_fit::optimise::search_interval;
+use trig_fit::{
+    Continuity, CornerRule, Corners, FitError, FitOptions, Metrics, Outline, OutlineFit, Shape,
+    Summary, THESIS_THRESHOLD, fit_outline,
+};
+use trig_verification::certify::range::EndPoint;
+
+use super::eval::param_pairs;
+use super::{CliError, CmdResult};
+
+/// The families of `--family all`, in the thesis's order, then the
+/// listing variant and the polynomial reference.
+pub const COMPARED: [Family; 6] = [
+    Family::ThesisCubic,
+    Family::MajeedQayyum,
+    Family::Han,
+    Family::Usman,
+    Family::HanListing,
+    Family::Bernstein3,
+];
+
+/// The thesis's fixed shape parameter for every method (6.6).
+const THESIS_PARAMETER: &str = "0.6";
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum FitFormat {
+    Md,
+    Csv,
+    Json,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum Refine {
+    /// C¹ in each segment's own parameter t ∈ [0,1] (thesis (4.5)).
+    C1,
+    /// C¹ in the global chord-length parameter.
+    C1Arc,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum SearchRange {
+    /// The published range of the parameter.
+    Published,
+    /// The published range intersected with the certified maximal
+    /// nonnegativity interval (trig-verification).
+    Certified,
+}
+
+/// The outline and how to fit it: shared by `fit` and `plot fit`.
+#[derive(Debug, Args)]
+pub struct FitSetup {
+    /// Outline data file (`contour,x,y`, see data/glyphs/).
+    #[arg(long)]
+    glyph: PathBuf,
+    /// Shape parameter as name=value (default: 0.6 for every family, as the thesis).
+    #[arg(long = "param", value_name = "NAME=VALUE")]
+    params: Vec<String>,
+    /// Interval searched by --optimise.
+    #[arg(long, value_enum, default_value = "certified")]
+    range: SearchRange,
+    /// C¹ refinement of the joined segments.
+    #[arg(long, value_enum)]
+    refine: Option<Refine>,
+    /// Bad-point threshold on the squared error (thesis: 1.5).
+    #[arg(long, default_value_t = THESIS_THRESHOLD, allow_hyphen_values = true)]
+    threshold: f64,
+    /// Explicit corners as global point indices (file order), comma separated;
+    /// default: the automatic rule.
+    #[arg(long, value_delimiter = ',')]
+    corners: Vec<usize>,
+    /// Automatic corners: minimum turning angle, degrees.
+    #[arg(long, default_value_t = 45.0)]
+    corner_angle: f64,
+    /// Automatic corners: window, in points.
+    #[arg(long, default_value_t = 3)]
+    corner_window: usize,
+    /// Longest run of points per segment (0: segments only at corners).
+    #[arg(long, default_value_t = 50)]
+    max_points: usize,
+}
+
+#[derive(Debug, Args)]
+pub struct FitArgs {
+    /// Family id, or `all` for the six compared families.
+    #[arg(long, default_value = "all")]
+    family: String,
+    /// Also fit with the shape parameter optimised per segment (golden section).
+    #[arg(long)]
+    optimise: bool,
+    #[command(flatten)]
+    setup: FitSetup,
+    /// Output format.
+    #[arg(long, value_enum, default_value = "md")]
+    format: FitFormat,
+}
+
+fn fit_err(e: FitError) -> CliError {
+    match e {
+        FitError::Core(c) => CliError::Core(c),
+        other => CliError::Usage(other.to_string()),
+    }
+}
+
+/// The families selected by `--family`.
+pub fn families(id: &str) -> Result<Vec<Family>, CliError> {
+    if id == "all" {
+        Ok(COMPARED.to_vec())
+    } else {
+        Ok(vec![Family::from_id(id)?])
+    }
+}
+
+/// Fixed parameters of `family` from `--param` pairs (default 0.6),
+/// checked against the published range.
+fn fixed_params(family: Family, pairs: &[(String, String)]) -> Result<Vec<f64>, CliError> {
+    let info = family.info();
+    let mine: Vec<(String, String)> = info
+        .params
+        .iter()
+        .map(|spec| {
+            let given = pairs
+                .iter()
+                .rev()
+                .find(|(n, _)| n == spec.name || n == spec.symbol);
+            (
+                spec.name.to_string(),
+                given.map_or(THESIS_PARAMETER.to_string(), |(_, v)| v.clone()),
+            )
+        })
+        .collect();
+    Ok(family
+        .params_from_pairs(&mine, false)?
+        .iter()
+        .map(|q| q.to_f64())
+        .collect())
+}
+
+/// The search interval of `--optimise` for a one-parameter family.
+fn interval(family: Family, range: SearchRange) -> Result<(f64, f64), CliError> {
+    let spec = family.info().params[0];
+    let (lo, hi) = search_interval(&spec.range).map_err(fit_err)?;
+    if range == SearchRange::Published {
+        return Ok((lo, hi));
+    }
+    let (certified, _) = trig_verification::certify::evidence::maximal_versus_published(family);
+    let end = |e: &EndPoint| match e {
+        EndPoint::Exact { value, .. } | EndPoint::Bracket { ok: value, .. } => Some(value.to_f64()),
+        EndPoint::Unbounded => None,
+    };
+    let clo = end(&certified.lo).map_or(lo, |v| v.max(lo));
+    let chi = end(&certified.hi).map_or(hi, |v| v.min(hi));
+    if clo > chi {
+        return Err(CliError::Usage(format!(
+            "`{}`: the certified nonnegativity interval does not meet the published range {}",
+            family.info().id,
+            spec.range
+        )));
+    }
+    Ok((clo, chi))
+}
+
+/// One fitted method: family, how its parameter was chosen, the fit.
+#[derive(Debug)]
+pub struct Method {
+    pub label: String,
+    pub setting: String,
+    pub fit: OutlineFit,
+}
+
+/// Which fits to run: the fixed parameter, the optimised one, or both.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Runs {
+    Fixed,
+    Optimised,
+    Both,
+}
+
+/// Reads the outline and fits it with every selected family.
+pub fn prepare(
+    setup: &FitSetup,
+    family: &str,
+    runs: Runs,
+) -> Result<(Outline, Vec<Method>), CliError> {
+    let outline = Outline::read(&setup.glyph).map_err(fit_err)?;
+    let pairs = param_pairs(&setup.params)?;
+    let selected = families(family)?;
+    for (name, _) in &pairs {
+        if !selected.iter().any(|f| {
+            f.info()
+                .params
+                .iter()
+                .any(|p| p.name == name || p.symbol == name)
+        }) {
+            return Err(CliError::Usage(format!(
+                "--param {name}: no selected family has a parameter `{name}`"
+            )));
+        }
+    }
+    if setup.corners.is_empty() && (setup.corner_window == 0 || !setup.corner_angle.is_finite()) {
+        return Err(CliError::Usage(
+            "--corner-window must be ≥ 1 and --corner-angle finite".into(),
+        ));
+    }
+    let corners = if setup.corners.is_empty() {
+        Corners::Auto(CornerRule {
+            window: setup.corner_window,
+            min_angle_deg: setup.corner_angle,
+        })
+    } else {
+        Corners::Explicit(setup.corners.clone())
+    };
+    let options = |shape: Shape| FitOptions {
+        corners: corners.clone(),
+        max_points: setup.max_points,
+        threshold: setup.threshold,
+        refine: setup.refine.map(|r| match r {
+            Refine::C1 => Continuity::Local,
+            Refine::C1Arc => Continuity::ArcLength,
+        }),
+        shape,
+    };
+    let mut methods = Vec::new();
+    for family in selected {
+        let info = family.info();
+        let optimise = runs != Runs::Fixed && info.params.len() == 1;
+        if runs != Runs::Optimised || !optimise {
+            let fixed = fixed_params(family, &pairs)?;
+            let setting = info
+                .params
+                .iter()
+                .zip(&fixed)
+                .map(|(s, v)| format!("{} = {v}", s.symbol))
+                .collect::<Vec<_>>()
+                .join(", ");
+            methods.push(Method {
+                label: info.id.to_string(),
+                setting: if setting.is_empty() {
+                    "—".into()
+                } else {
+                    setting
+                },
+                fit: fit_outline(&outline, family, &options(Shape::Fixed(fixed)))
+                    .map_err(fit_err)?,
+            });
+        }
+        if optimise {
+            let (lo, hi) = interval(family, setup.range)?;
+            methods.push(Method {
+                label: info.id.to_string(),
+                setting: format!("{} optimised in [{lo}, {hi}]", info.params[0].symbol),
+                fit: fit_outline(&outline, family, &options(Shape::Optimise { lo, hi }))
+                    .map_err(fit_err)?,
+            });
+        }
+    }
+    Ok((outline, methods))
+}
+
+pub fn run(args: &FitArgs) -> CmdResult {
+    let runs = if args.optimise {
+        Runs::Both
+    } else {
+        Runs::Fixed
+    };
+    let (outline, methods) = prepare(&args.setup, &args.family, runs)?;
+    Ok(match args.format {
+        FitFormat::Md => markdown(&args.setup, &outline, &methods),
+        FitFormat::Csv => csv(&methods),
+        FitFormat::Json => json(&args.setup, &outline, &methods),
+    })
+}
+
+fn g(x: f64) -> String {
+    format!("{x:.4}")
+}
+
+fn corner_text(args: &FitSetup) -> String {
+    if args.corners.is_empty() {
+        format!(
+            "automatic (turning angle ≥ {}° over a window of {} points)",
+            args.corner_angle, args.corner_window
+        )
+    } else {
+        format!("explicit {:?}", args.corners)
+    }
+}
+
+fn markdown(args: &FitSetup, outline: &Outline, methods: &[Method]) -> String {
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "# Fit of `{}` ({})\n",
+        outline.name,
+        args.glyph.display()
+    );
+    for line in &outline.provenance {
+        let _ = writeln!(out, "> {line}  ");
+    }
+    let first = &methods[0].fit;
+    let corners = first
+        .segments
+        .iter()
+        .filter(|s| s.span.start_corner)
+        .count();
+    let _ = writeln!(
+        out,
+        "\n{} points in {} contour(s); {} segments; corners: {} — {} found; at most {} points per segment; squared errors ‖F(tᵢ) − Pᵢ‖² (6.7); bad points: > {}; refinement: {}.\n",
+        outline.point_count(),
+        outline.contours.len(),
+        first.segments.len(),
+        corner_text(args),
+        corners,
+        args.max_points,
+        args.threshold,
+        match first.continuity {
+            None => "none",
+            Some(Continuity::Local) => "C¹ in each segment's parameter (thesis (4.5))",
+            Some(Continuity::ArcLength) => "C¹ in the chord-length parameter",
+        }
+    );
+    for m in methods {
+        let _ = writeln!(out, "## {} ({})\n", m.label, m.setting);
+        let refined = m.fit.after.is_some();
+        let param = m.fit.family_enum.info().params.first().map(|p| p.symbol);
+        let mut head = vec!["Segment", "Points"];
+        if let Some(p) = param {
+            head.push(p);
+        }
+        head.extend(["Total (C⁰)", "Max (C⁰)", "Ave (C⁰)", "Bad (C⁰)"]);
+        if refined {
+            head.extend(["Total (C¹)", "Max (C¹)", "Min (C¹)", "Ave (C¹)", "Bad (C¹)"]);
+        }
+        let _ = writeln!(out, "| {} |", head.join(" | "));
+        let _ = writeln!(out, "|{}", "---|".repeat(head.len()));
+        for (k, s) in m.fit.segments.iter().enumerate() {
+            let mut row = vec![(k + 1).to_string(), s.metrics.points.to_string()];
+            if param.is_some() {
+                row.push(format!("{:.4}", s.params[0]));
+            }
+            row.extend(metric_cells(&s.metrics));
+            if let Some((_, a)) = &s.refined {
+                row.extend(after_cells(a));
+            }
+            let _ = writeln!(out, "| {} |", row.join(" | "));
+        }
+        let mut total = vec!["TOTAL".to_string(), m.fit.before.points.to_string()];
+        if param.is_some() {
+            total.push(String::new());
+        }
+        total.extend(summary_cells(&m.fit.before, false));
+        if let Some(a) = &m.fit.after {
+            total.extend(summary_cells(a, true));
+        }
+        let _ = writeln!(out, "| {} |\n", total.join(" | "));
+    }
+    let _ = writeln!(out, "## Comparison\n");
+    let _ = writeln!(
+        out,
+        "Ave = mean of the segment averages (the thesis's TOTAL rows and Tables 6.14–6.16); Ave/pt = total / points.\n"
+    );
+    let _ = writeln!(
+        out,
+        "| Method | Parameter | Stage | Total | Max | Min | Ave | Ave/pt | Bad (> {}) |",
+        args.threshold
+    );
+    let _ = writeln!(out, "|---|---|---|---|---|---|---|---|---|");
+    for m in methods {
+        for (stage, s) in stages(&m.fit) {
+            let _ = writeln!(
+                out,
+                "| {} | {} | {stage} | {} | {} | {} | {} | {} | {} |",
+                m.label,
+                m.setting,
+                g(s.total),
+                g(s.max),
+                g(s.min),
+                g(s.mean_segment_average),
+                g(s.average),
+                s.bad
+            );
+        }
+    }
+    out
+}
+
+fn stages(fit: &OutlineFit) -> Vec<(&'static str, Summary)> {
+    std::iter::once(("C⁰", fit.before))
+        .chain(fit.after.map(|a| ("C¹", a)))
+        .collect()
+}
+
+fn metric_cells(m: &Metrics) -> Vec<String> {
+    vec![g(m.total), g(m.max), g(m.average), m.bad.to_string()]
+}
+
+fn after_cells(m: &Metrics) -> Vec<String> {
+    vec![
+        g(m.total),
+        g(m.max),
+        g(m.min),
+        g(m.average),
+        m.bad.to_string(),
+    ]
+}
+
+fn summary_cells(s: &Summary, with_min: bool) -> Vec<String> {
+    let mut v = vec![g(s.total), g(s.max)];
+    if with_min {
+        v.push(g(s.min));
+    }
+    v.extend([g(s.mean_segment_average), s.bad.to_string()]);
+    v
+}
+
+fn csv(methods: &[Method]) -> String {
+    let mut out =
+        String::from("method,setting,stage,segment,points,parameter,total,max,min,average,bad\n");
+    for m in methods {
+        for (k, s) in m.fit.segments.iter().enumerate() {
+            let p = s.params.first().map_or(String::new(), |p| p.to_string());
+            let mut rows = vec![("C0", s.metrics)];
+            if let Some((_, a)) = s.refined {
+                rows.push(("C1", a));
+            }
+            for (stage, r) in rows {
+                let _ = writeln!(
+                    out,
+                    "{},\"{}\",{stage},{},{},{p},{},{},{},{},{}",
+                    m.label,
+                    m.setting,
+                    k + 1,
+                    r.points,
+                    r.total,
+                    r.max,
+                    r.min,
+                    r.average,
+                    r.bad
+                );
+            }
+        }
+        for (stage, s) in stages(&m.fit) {
+            let stage = if stage == "C⁰" { "C0" } else { "C1" };
+            let _ = writeln!(
+                out,
+                "{},\"{}\",{stage},total,{},,{},{},{},{},{}",
+                m.label, m.setting, s.points, s.total, s.max, s.min, s.mean_segment_average, s.bad
+            );
+        }
+    }
+    out
+}
+
+fn json(args: &FitSetup, outline: &Outline, methods: &[Method]) -> String {
+    let value = serde_json::json!({
+        "glyph": args.glyph.display().to_string(),
+        "provenance": outline.provenance,
+        "points": outline.point_count(),
+        "corners": corner_text(args),
+        "threshold": args.threshold,
+        "methods": methods.iter().map(|m| serde_json::json!({
+            "family": m.label,
+            "setting": m.setting,
+            "fit": m.fit,
+        })).collect::<Vec<_>>(),
+    });
+    crate::format::json(&value)
+}

@@ -1,0 +1,233 @@
+//! `trig-audit plot`: SVG pictures of basis functions, curves with their
+//! control polygons, fitted outlines and positivity interpolants.
+
+use std::path::{Path, PathBuf};
+
+use clap::{Args, Subcommand};
+use rug::Rational;
+use trig_core::{Bound, Family, parse_exact};
+use trig_interp::{DataSet, Scheme, Variant, f64_segments};
+use trig_plot::{Interpolant, basis_svg, curve_svg, fit_svg, interp_svg};
+
+use super::fit::{FitSetup, Runs, prepare};
+use super::{CliError, CmdResult};
+
+#[derive(Debug, Args)]
+pub struct PlotArgs {
+    #[command(subcommand)]
+    what: PlotKind,
+}
+
+#[derive(Debug, Subcommand)]
+enum PlotKind {
+    /// The functions of a family for several parameter values (thesis Figures 3.1, 3.6).
+    Basis {
+        /// Family id.
+        #[arg(long)]
+        family: String,
+        #[command(flatten)]
+        values: Values,
+        /// SVG file to write.
+        #[arg(long)]
+        output: PathBuf,
+    },
+    /// A curve with its control polygon for several parameter values (thesis Figure 6.3).
+    Curve {
+        /// Family id.
+        #[arg(long)]
+        family: String,
+        #[command(flatten)]
+        values: Values,
+        /// Control points x0,y0,x1,y1,… (default: thesis Figure 6.3, (0,0), (1,2), (3,2), (4,0)).
+        #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+        control: Vec<String>,
+        /// SVG file to write.
+        #[arg(long)]
+        output: PathBuf,
+    },
+    /// A fitted outline over its data, before and (with --refine) after C¹ refinement.
+    Fit {
+        /// Family id.
+        #[arg(long)]
+        family: String,
+        /// Optimise the shape parameter per segment.
+        #[arg(long)]
+        optimise: bool,
+        #[command(flatten)]
+        setup: FitSetup,
+        /// SVG file to write.
+        #[arg(long)]
+        output: PathBuf,
+    },
+    /// Positivity interpolants of thesis 4.3 with their data points.
+    Interp {
+        /// Data set (thesis-table-4.1 … thesis-table-4.6).
+        #[arg(long)]
+        data: String,
+        /// Scheme (c1, c2, g1, g2); default: the one the table is printed for.
+        #[arg(long)]
+        scheme: Option<String>,
+        /// SVG file to write.
+        #[arg(long)]
+        output: PathBuf,
+    },
+}
+
+#[derive(Debug, Args)]
+struct Values {
+    /// Parameter values, comma separated (read exactly); default: five
+    /// values evenly spread over the published range (open ends left out).
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+    values: Vec<String>,
+    /// Allow values outside the published range.
+    #[arg(long)]
+    allow_outside_range: bool,
+}
+
+/// The values to draw: given, or `lo + k·w/4`, `k = 0..4`, without open ends.
+fn values(family: Family, given: &[String]) -> Result<Vec<Rational>, CliError> {
+    if !given.is_empty() {
+        return Ok(given
+            .iter()
+            .map(|v| parse_exact(v))
+            .collect::<Result<_, _>>()?);
+    }
+    let Some(spec) = family.info().params.first() else {
+        return Ok(vec![]);
+    };
+    let (Some(lo), Some(hi)) = (spec.range.lo.value(), spec.range.hi.value()) else {
+        return Err(CliError::Usage(format!(
+            "the range of {} is unbounded: give --values",
+            spec.name
+        )));
+    };
+    let w = (hi - &lo) / 4u32;
+    Ok((0..=4u32)
+        .filter(|&k| {
+            !(k == 0 && matches!(spec.range.lo, Bound::Open(..))
+                || k == 4 && matches!(spec.range.hi, Bound::Open(..)))
+        })
+        .map(|k| lo.clone() + w.clone() * k)
+        .collect())
+}
+
+fn write(output: &Path, svg: &str) -> CmdResult {
+    std::fs::write(output, svg)
+        .map_err(|e| CliError::Usage(format!("cannot write {}: {e}", output.display())))?;
+    Ok(format!(
+        "wrote {} ({} bytes)\n",
+        output.display(),
+        svg.len()
+    ))
+}
+
+fn plot_err(e: trig_plot::PlotError) -> CliError {
+    match e {
+        trig_plot::PlotError::Core(c) => CliError::Core(c),
+        other => CliError::Usage(other.to_string()),
+    }
+}
+
+pub fn run(args: &PlotArgs) -> CmdResult {
+    match &args.what {
+        PlotKind::Basis {
+            family,
+            values: v,
+            output,
+        } => {
+            let family = Family::from_id(family)?;
+            let vals = values(family, &v.values)?;
+            write(
+                output,
+                &basis_svg(family, &vals, v.allow_outside_range).map_err(plot_err)?,
+            )
+        }
+        PlotKind::Curve {
+            family,
+            values: v,
+            control,
+            output,
+        } => {
+            let family = Family::from_id(family)?;
+            let vals = values(family, &v.values)?;
+            let control = control_points(control)?;
+            write(
+                output,
+                &curve_svg(family, &control, &vals, v.allow_outside_range).map_err(plot_err)?,
+            )
+        }
+        PlotKind::Fit {
+            family,
+            optimise,
+            setup,
+            output,
+        } => {
+            if family == "all" {
+                return Err(CliError::Usage(
+                    "plot fit draws one family: give its id".into(),
+                ));
+            }
+            let runs = if *optimise {
+                Runs::Optimised
+            } else {
+                Runs::Fixed
+            };
+            let (outline, methods) = prepare(setup, family, runs)?;
+            let method = methods
+                .first()
+                .ok_or_else(|| CliError::Usage("nothing fitted".into()))?;
+            write(output, &fit_svg(&outline, &method.fit).map_err(plot_err)?)
+        }
+        PlotKind::Interp {
+            data,
+            scheme,
+            output,
+        } => {
+            let set = DataSet::named(data).map_err(|e| CliError::Usage(e.to_string()))?;
+            let scheme = match scheme {
+                Some(s) => s
+                    .parse::<Scheme>()
+                    .map_err(|e| CliError::Usage(e.to_string()))?,
+                None => set.table.scheme,
+            };
+            let mut curves = Vec::new();
+            for variant in [Variant::Printed, Variant::Corrected] {
+                let pieces = f64_segments(data, scheme, variant)
+                    .map_err(|e| CliError::Usage(e.to_string()))?;
+                curves.push(Interpolant {
+                    label: format!("{scheme} interpolant, {variant} formulas"),
+                    pieces: pieces.iter().map(|p| p.sample(60)).collect(),
+                });
+            }
+            let points: Vec<(f64, f64)> = set
+                .x
+                .iter()
+                .zip(&set.f)
+                .map(|(x, f)| (x.to_f64(), f.to_f64()))
+                .collect();
+            let title = format!("{} — {scheme} scheme (thesis 4.3)", set.table.caption);
+            write(
+                output,
+                &interp_svg(&title, &points, &curves).map_err(plot_err)?,
+            )
+        }
+    }
+}
+
+/// `x0,y0,x1,y1,…` as points (default: thesis Figure 6.3).
+fn control_points(raw: &[String]) -> Result<Vec<(f64, f64)>, CliError> {
+    if raw.is_empty() {
+        return Ok(vec![(0.0, 0.0), (1.0, 2.0), (3.0, 2.0), (4.0, 0.0)]);
+    }
+    if raw.len() % 2 != 0 {
+        return Err(CliError::Usage(format!(
+            "--control: {} numbers given; expected x,y pairs",
+            raw.len()
+        )));
+    }
+    let nums = raw
+        .iter()
+        .map(|v| parse_exact(v).map(|q| q.to_f64()))
+        .collect::<Result<Vec<f64>, _>>()?;
+    Ok(nums.chunks(2).map(|c| (c[0], c[1])).collect())
+}

@@ -1,0 +1,343 @@
+//! Join conditions between two segments and the control points they force,
+//! derived exactly in the symbolic ring.
+//!
+//! Two segments `Q₁ = Σ bᵢ(·; p₁) Pᵢ` and `Q₂ = Σ bᵢ(·; p₂) Qᵢ` of one family
+//! (shape parameters `p₁`, `p₂`, equal or different) join at `Q₁(end) = Q₂(start)`
+//! with
+//!
+//! * `Cᵏ`: `Q₂⁽ʲ⁾(0) = Q₁⁽ʲ⁾(1)` for `j = 0…k`;
+//! * `G¹`: `Q₂(0) = Q₁(1)`, `Q₂'(0) = α Q₁'(1)` (`α > 0`);
+//! * `G²`: additionally `Q₂''(0) = α² Q₁''(1) + β Q₁'(1)`,
+//!
+//! derivatives taken in one convention ([`Wrt`]): the angle `θ`, `u` with
+//! `θ = πu/2`, or a data abscissa `x` with interval lengths `h₁`, `h₂` (so the
+//! two sides carry different rates `π/(2h₁)`, `π/(2h₂)`). The conditions are
+//! linear in the second segment's control points; [`solve_join`] eliminates
+//! them in index order (Gauss–Jordan over the symbolic field), so each forced
+//! point is an exact formula in the first segment's points, the remaining free
+//! points, the parameters and `α`, `β`. Every pivot is reported: where it
+//! vanishes (e.g. `m = −2` for the thesis basis) the formula is singular.
+
+use std::fmt;
+use std::str::FromStr;
+
+use trig_core::{Family, Ring};
+use trig_symbolic::Sym;
+
+use crate::table::{End, Wrt, curve_endpoint_derivatives};
+
+/// Orders `0…3` of every derivative a join can involve.
+const ORDERS: usize = 4;
+
+/// The kind of join.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum JoinKind {
+    /// Parametric continuity `Cᵏ`, `k = 0…3`.
+    C(u8),
+    /// `Q₂'(0) = α Q₁'(1)`.
+    G1,
+    /// `G¹` and `Q₂''(0) = α² Q₁''(1) + β Q₁'(1)`.
+    G2,
+}
+
+impl JoinKind {
+    /// Every kind, in order.
+    pub const ALL: [JoinKind; 6] = [
+        JoinKind::C(0),
+        JoinKind::C(1),
+        JoinKind::C(2),
+        JoinKind::C(3),
+        JoinKind::G1,
+        JoinKind::G2,
+    ];
+
+    /// The highest derivative order the conditions involve.
+    pub fn order(&self) -> usize {
+        match self {
+            JoinKind::C(k) => usize::from(*k),
+            JoinKind::G1 => 1,
+            JoinKind::G2 => 2,
+        }
+    }
+
+    /// The right-hand side of the order-`j` condition from the first
+    /// segment's derivatives `d` at its end (orders `0…`).
+    fn target(&self, j: usize, d: &[Sym]) -> Sym {
+        let (alpha, beta) = (Sym::var("alpha"), Sym::var("beta"));
+        match (self, j) {
+            (JoinKind::C(_), _) | (_, 0) => d[j].clone(),
+            (JoinKind::G1 | JoinKind::G2, 1) => alpha * &d[1],
+            (JoinKind::G2, 2) => alpha.square() * &d[2] + &(beta * &d[1]),
+            _ => unreachable!("order {j} exceeds the kind's order"),
+        }
+    }
+}
+
+impl fmt::Display for JoinKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            JoinKind::C(k) => write!(f, "C{k}"),
+            JoinKind::G1 => f.write_str("G1"),
+            JoinKind::G2 => f.write_str("G2"),
+        }
+    }
+}
+
+impl FromStr for JoinKind {
+    type Err = JoinError;
+
+    fn from_str(s: &str) -> Result<Self, JoinError> {
+        match s.to_ascii_lowercase().as_str() {
+            "c0" => Ok(JoinKind::C(0)),
+            "c1" => Ok(JoinKind::C(1)),
+            "c2" => Ok(JoinKind::C(2)),
+            "c3" => Ok(JoinKind::C(3)),
+            "g1" => Ok(JoinKind::G1),
+            "g2" => Ok(JoinKind::G2),
+            _ => Err(JoinError::UnknownKind(s.to_string())),
+        }
+    }
+}
+
+/// Why a join cannot be solved.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum JoinError {
+    #[error("unknown join kind `{0}` (expected c0, c1, c2, c3, g1 or g2)")]
+    UnknownKind(String),
+    #[error("{kind} needs {needed} control points per segment; the family has {available}")]
+    TooFewPoints {
+        kind: JoinKind,
+        needed: usize,
+        available: usize,
+    },
+    #[error("the order-{order} condition of {kind} cannot be met: it reduces to {residual} = 0")]
+    Inconsistent {
+        kind: JoinKind,
+        order: usize,
+        residual: String,
+    },
+}
+
+/// Two segments of one family meeting at a join.
+#[derive(Debug, Clone)]
+pub struct JoinSetup<'a> {
+    pub family: Family,
+    /// Shape parameters of the first segment `Q₁`.
+    pub first_params: &'a [Sym],
+    /// Shape parameters of the second segment `Q₂`.
+    pub second_params: &'a [Sym],
+    /// Derivative convention.
+    pub wrt: Wrt,
+    /// Interval lengths of the two segments (used by [`Wrt::X`] only).
+    pub h: (Sym, Sym),
+}
+
+impl JoinSetup<'_> {
+    /// `Q₂⁽ʲ⁾(0) − target_j(Q₁)` for `j = 0…order`, for the given control
+    /// points (symbols, numbers or printed formulas): all zero exactly when
+    /// the join holds.
+    pub fn residuals(&self, kind: JoinKind, first: &[Sym], second: &[Sym]) -> Vec<Sym> {
+        let q1 = self.derivatives(self.first_params, first, End::End, &self.h.0);
+        let q2 = self.derivatives(self.second_params, second, End::Start, &self.h.1);
+        (0..=kind.order())
+            .map(|j| q2[j].clone() - &kind.target(j, &q1))
+            .collect()
+    }
+
+    fn derivatives(&self, params: &[Sym], points: &[Sym], end: End, h: &Sym) -> Vec<Sym> {
+        curve_endpoint_derivatives::<Sym, ORDERS>(
+            self.family,
+            params,
+            points,
+            None,
+            end,
+            self.wrt,
+            h,
+        )
+    }
+}
+
+/// One control point of the second segment forced by the join.
+#[derive(Debug, Clone)]
+pub struct Forced {
+    /// Index in the second segment.
+    pub index: usize,
+    /// Its formula in the first segment's points, the free points of the
+    /// second segment, the parameters, `α`, `β`.
+    pub value: Sym,
+    /// The pivot divided by in the elimination; the formula is singular
+    /// where it vanishes.
+    pub pivot: Sym,
+}
+
+/// The solved join: forced points in index order.
+#[derive(Debug, Clone)]
+pub struct Join {
+    pub kind: JoinKind,
+    pub forced: Vec<Forced>,
+}
+
+impl Join {
+    /// The second segment's control points with the forced ones substituted
+    /// (the free ones stay the given symbols).
+    pub fn second_points(&self, symbols: &[Sym]) -> Vec<Sym> {
+        let mut points = symbols.to_vec();
+        for f in &self.forced {
+            points[f.index] = f.value.clone();
+        }
+        points
+    }
+}
+
+/// Solves the join conditions for the second segment's control points,
+/// named by `second` (symbols), with the first segment's points `first`.
+pub fn solve_join(
+    setup: &JoinSetup<'_>,
+    kind: JoinKind,
+    first: &[Sym],
+    second: &[Sym],
+) -> Result<Join, JoinError> {
+    let needed = kind.order() + 1;
+    if second.len() < needed {
+        return Err(JoinError::TooFewPoints {
+            kind,
+            needed,
+            available: second.len(),
+        });
+    }
+    let names: Vec<String> = second.iter().map(|q| q.to_string()).collect();
+    let mut forced: Vec<Forced> = Vec::new();
+    for (order, residual) in setup.residuals(kind, first, second).into_iter().enumerate() {
+        let reduced = forced
+            .iter()
+            .fold(residual, |r, f| r.subs(&names[f.index], &f.value));
+        let pivot_index = (0..second.len())
+            .filter(|i| forced.iter().all(|f| f.index != *i))
+            .find(|&i| !reduced.diff(&names[i]).is_zero());
+        let Some(index) = pivot_index else {
+            if reduced.is_zero() {
+                continue;
+            }
+            return Err(JoinError::Inconsistent {
+                kind,
+                order,
+                residual: reduced.to_string(),
+            });
+        };
+        let pivot = reduced.diff(&names[index]);
+        let rest = reduced - &(pivot.clone() * &second[index]);
+        let value = -(rest / &pivot);
+        for f in &mut forced {
+            f.value = f.value.subs(&names[index], &value);
+        }
+        forced.push(Forced {
+            index,
+            value,
+            pivot,
+        });
+    }
+    forced.sort_by_key(|f| f.index);
+    Ok(Join { kind, forced })
+}
+
+/// Where `pivot` vanishes, as readable conditions: `m = −2` when it is
+/// linear in one variable (up to a constant factor and powers of `π`),
+/// otherwise `pivot = 0`. Empty when it is a nonzero constant.
+pub fn vanishing(pivot: &Sym) -> Vec<String> {
+    let num = pivot.numerator();
+    let vars: Vec<String> = num.variables().into_iter().filter(|v| v != "pi").collect();
+    if vars.is_empty() {
+        return Vec::new();
+    }
+    if vars.len() == 1 && num.degree_in(&vars[0]) == 1 {
+        let v = &vars[0];
+        let root = num.subs(v, &trig_symbolic::Poly::zero());
+        let slope = num.diff(v);
+        if let Some(q) = (Sym::from_poly(root) / &Sym::from_poly(slope)).as_rational() {
+            return vec![format!(
+                "{} = {}",
+                Sym::var(v).to_unicode(),
+                Sym::rational(-q).to_unicode()
+            )];
+        }
+    }
+    vec![format!("{} = 0", pivot.to_unicode())]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn pts(prefix: &str, n: usize) -> Vec<Sym> {
+        (0..n).map(|i| Sym::var(&format!("{prefix}{i}"))).collect()
+    }
+
+    fn setup<'a>(family: Family, p1: &'a [Sym], p2: &'a [Sym], wrt: Wrt) -> JoinSetup<'a> {
+        JoinSetup {
+            family,
+            first_params: p1,
+            second_params: p2,
+            wrt,
+            h: (Sym::var("h1"), Sym::var("h2")),
+        }
+    }
+
+    #[test]
+    fn bernstein_c2_is_the_classical_a_frame() {
+        let (p, q) = (pts("P", 4), pts("Q", 4));
+        let s = setup(Family::Bernstein3, &[], &[], Wrt::U);
+        let join = solve_join(&s, JoinKind::C(2), &p, &q).unwrap();
+        let two = Sym::int(2);
+        // Q0 = P3, Q1 = 2P3 − P2, Q2 = P1 − 4P2 + 4P3
+        assert_eq!(join.forced[0].value, p[3]);
+        assert_eq!(join.forced[1].value, two.clone() * &p[3] - &p[2]);
+        let q2 = p[1].clone() - &(Sym::int(4) * &p[2]) + &(Sym::int(4) * &p[3]);
+        assert_eq!(join.forced[2].value, q2);
+        // and the joined points satisfy every condition exactly
+        let residuals = s.residuals(JoinKind::C(2), &p, &join.second_points(&q));
+        assert!(residuals.iter().all(Sym::is_zero));
+        // a wrong formula leaves a residual
+        let mut wrong = join.second_points(&q);
+        wrong[1] = two * &p[3] + &p[2];
+        assert!(!s.residuals(JoinKind::C(1), &p, &wrong)[1].is_zero());
+    }
+
+    #[test]
+    fn thesis_c1_pivot_vanishes_at_m_minus_two() {
+        let (p, q) = (pts("P", 4), pts("Q", 4));
+        let (m1, m2) = ([Sym::var("m1")], [Sym::var("m2")]);
+        let s = setup(Family::ThesisCubic, &m1, &m2, Wrt::Angle);
+        let join = solve_join(&s, JoinKind::C(1), &p, &q).unwrap();
+        assert_eq!(
+            vanishing(&join.forced[1].pivot),
+            vec!["m₂ = −2".to_string()]
+        );
+        assert!(vanishing(&join.forced[0].pivot).is_empty());
+    }
+
+    #[test]
+    fn x_convention_scales_by_the_interval_ratio() {
+        let (p, q) = (pts("P", 4), pts("Q", 4));
+        let s = setup(Family::Bernstein3, &[], &[], Wrt::X);
+        let join = solve_join(&s, JoinKind::C(1), &p, &q).unwrap();
+        // Q1 = P3 + (h2/h1)(P3 − P2)
+        let ratio = Sym::var("h2") / &Sym::var("h1");
+        let expected = p[3].clone() + &(ratio * &(p[3].clone() - &p[2]));
+        assert_eq!(join.forced[1].value, expected);
+    }
+
+    #[test]
+    fn kinds_parse_and_reject_unknown_names() {
+        assert_eq!("G2".parse::<JoinKind>(), Ok(JoinKind::G2));
+        assert!(matches!(
+            "c9".parse::<JoinKind>(),
+            Err(JoinError::UnknownKind(_))
+        ));
+        let (p, q) = (pts("P", 2), pts("Q", 2));
+        let s = setup(Family::Bernstein3, &[], &[], Wrt::U);
+        assert!(matches!(
+            solve_join(&s, JoinKind::C(2), &p, &q),
+            Err(JoinError::TooFewPoints { .. })
+        ));
+    }
+}

@@ -1,0 +1,128 @@
+//! The functions of a family for several values of its shape parameter
+//! (thesis Figures 3.1, 3.6, 6.2).
+
+use plotters::prelude::*;
+use rug::Rational;
+use trig_core::Family;
+
+use crate::error::{PlotError, Result, draw};
+use crate::style::{SIZE, colour, padded};
+
+/// Points per function.
+const SAMPLES: usize = 201;
+
+/// SVG of every function of `family` over its domain, one colour per
+/// parameter value in `values` (exact values, checked against the published
+/// range unless `allow_outside`). Families without parameters take one
+/// empty value list: pass `&[]` and get one series per function.
+/// Series: (functions) × max(1, values) curves plus the axis `y = 0`.
+pub fn basis_svg(family: Family, values: &[Rational], allow_outside: bool) -> Result<String> {
+    let info = family.info();
+    let settings: Vec<Vec<Rational>> = match info.params.len() {
+        0 => vec![vec![]],
+        1 if !values.is_empty() => values.iter().map(|v| vec![v.clone()]).collect(),
+        1 => {
+            return Err(PlotError::Input(format!(
+                "give at least one value of {}",
+                info.params[0].name
+            )));
+        }
+        n => {
+            return Err(PlotError::Input(format!(
+                "`{}` has {n} parameters; basis plots vary one",
+                info.id
+            )));
+        }
+    };
+    for s in &settings {
+        let pairs: Vec<(String, String)> = info
+            .params
+            .iter()
+            .zip(s)
+            .map(|(p, v)| (p.name.to_string(), v.to_string()))
+            .collect();
+        family.params_from_pairs(&pairs, allow_outside)?;
+    }
+    let end = info.variable.end(&1.0_f64);
+    let mut series = Vec::new();
+    for s in &settings {
+        let mut curves = vec![Vec::with_capacity(SAMPLES); info.functions.len()];
+        for i in 0..SAMPLES {
+            let x = end * i as f64 / (SAMPLES - 1) as f64;
+            let b = family.eval_at(&x, s, true)?;
+            for (curve, v) in curves.iter_mut().zip(b) {
+                curve.push((x, v));
+            }
+        }
+        series.push((s.clone(), curves));
+    }
+    let (ylo, yhi) = padded(
+        series
+            .iter()
+            .flat_map(|(_, cs)| cs.iter().flatten().map(|p| p.1))
+            .chain([0.0, 1.0]),
+        0.05,
+    );
+    let variable = match info.variable {
+        trig_core::Variable::UnitAngle => "u (angle θ = πu/2)",
+        trig_core::Variable::Angle => "t (angle, radians)",
+        trig_core::Variable::Polynomial => "t",
+    };
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, SIZE).into_drawing_area();
+        root.fill(&WHITE).map_err(draw)?;
+        let caption = format!(
+            "{}: {} — {}",
+            info.id,
+            info.functions.join(", "),
+            info.citation
+        );
+        let mut chart = ChartBuilder::on(&root)
+            .caption(caption, ("sans-serif", 18))
+            .margin(12)
+            .x_label_area_size(45)
+            .y_label_area_size(55)
+            .build_cartesian_2d(0.0..end, ylo..yhi)
+            .map_err(draw)?;
+        chart
+            .configure_mesh()
+            .x_desc(variable)
+            .y_desc("basis function value")
+            .draw()
+            .map_err(draw)?;
+        chart
+            .draw_series(LineSeries::new(
+                [(0.0, 0.0), (end, 0.0)],
+                BLACK.stroke_width(1),
+            ))
+            .map_err(draw)?;
+        for (k, (s, curves)) in series.iter().enumerate() {
+            let c = colour(k);
+            let label = if s.is_empty() {
+                info.functions.join(", ")
+            } else {
+                format!("{} = {}", info.params[0].symbol, s[0])
+            };
+            for (j, curve) in curves.iter().enumerate() {
+                let drawn = chart
+                    .draw_series(LineSeries::new(curve.iter().copied(), c.stroke_width(2)))
+                    .map_err(draw)?;
+                if j == 0 {
+                    drawn.label(label.clone()).legend(move |(x, y)| {
+                        PathElement::new([(x, y), (x + 20, y)], c.stroke_width(2))
+                    });
+                }
+            }
+        }
+        chart
+            .configure_series_labels()
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK)
+            .position(SeriesLabelPosition::UpperRight)
+            .draw()
+            .map_err(draw)?;
+        root.present().map_err(draw)?;
+    }
+    Ok(svg)
+}

@@ -1,0 +1,63 @@
+//! The TOML layout of a spec file, as read by serde before validation.
+//! Strings that can be wrong in ways TOML cannot see keep their span, so
+//! errors point at the line and column.
+
+use std::collections::BTreeMap;
+
+use serde::Deserialize;
+use toml::Spanned;
+
+/// A whole spec file.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawSpec {
+    pub id: Spanned<String>,
+    pub title: Option<String>,
+    pub citation: String,
+    pub variable: Spanned<String>,
+    #[serde(default)]
+    pub parameters: Vec<RawParam>,
+    pub functions: Vec<RawFunction>,
+    #[serde(default)]
+    pub claims: Vec<RawClaim>,
+}
+
+/// `[[parameters]]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawParam {
+    pub name: Spanned<String>,
+    pub symbol: Option<String>,
+    pub range: Spanned<String>,
+    pub source: Option<String>,
+}
+
+/// `[[functions]]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawFunction {
+    pub name: Spanned<String>,
+    pub formula: Spanned<String>,
+}
+
+/// `[[claims]]`: common fields, then the fields of each kind of check.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawClaim {
+    pub id: Spanned<String>,
+    pub source: String,
+    pub statement: String,
+    pub check: Spanned<String>,
+    pub range: Option<Spanned<String>>,
+    pub maximal: Option<bool>,
+    pub functions: Option<Vec<Spanned<String>>>,
+    pub map: Option<Spanned<String>>,
+    pub index: Option<Spanned<String>>,
+    pub at: Option<BTreeMap<String, Spanned<String>>>,
+    pub end: Option<Spanned<String>>,
+    pub order: Option<Spanned<i64>>,
+    pub wrt: Option<Spanned<String>>,
+    pub values: Option<Vec<Spanned<String>>>,
+    pub join: Option<Spanned<String>>,
+    pub conditions: Option<Vec<Spanned<String>>>,
+}

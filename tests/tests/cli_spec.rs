@@ -1,0 +1,197 @@
+//! `--spec FILE`: audit, table and eval of a basis typed into a spec file,
+//! with good files (the shipped examples) and bad ones (one-line errors
+//! naming file, line and column, exit status 2).
+
+use std::path::PathBuf;
+
+use trig_e2e::{assert_errors, run, stdout_ok};
+
+fn example(name: &str) -> String {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../examples")
+        .join(name)
+        .display()
+        .to_string()
+}
+
+/// Writes `text` to a fresh file in the target directory and returns its path.
+fn bad_file(name: &str, text: &str) -> String {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cli_spec");
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let path = dir.join(name);
+    std::fs::write(&path, text).expect("write spec");
+    path.display().to_string()
+}
+
+const HEADER: &str = "id = \"bad\"\ncitation = \"test\"\nvariable = \"unit-angle\"\n";
+
+#[test]
+fn audit_of_the_shipped_examples() {
+    for (file, ids) in [
+        (
+            "thesis-cubic.toml",
+            &["T6", "T7", "T9b", "T33", "join-C1"][..],
+        ),
+        ("seed002-quartic.toml", &["D1b", "D2", "D3"][..]),
+        ("bashir-quadratic.toml", &["QTB-unity", "QTB-nonneg"][..]),
+    ] {
+        let md = stdout_ok(&["audit", "--spec", &example(file)]);
+        assert!(md.starts_with("# trig-audit report"), "{file}");
+        for id in ids {
+            assert!(md.contains(&format!("### {id} — ")), "{file}: {id}");
+        }
+    }
+    let json: serde_json::Value = serde_json::from_str(&stdout_ok(&[
+        "audit",
+        "--spec",
+        &example("thesis-cubic.toml"),
+        "--format",
+        "json",
+        "--claim",
+        "T33",
+    ]))
+    .expect("json");
+    assert_eq!(json["claims"][0]["verdict"], "fails");
+    assert_eq!(json["claims"][0]["seed"], "thesis-cubic");
+    let tex = stdout_ok(&[
+        "audit",
+        "--spec",
+        &example("thesis-cubic.toml"),
+        "--format",
+        "tex",
+    ]);
+    assert!(tex.contains("\\subsection*{Spec thesis-cubic"));
+    assert!(tex.trim_end().ends_with("\\end{document}"));
+}
+
+#[test]
+fn table_and_eval_with_a_spec() {
+    let t = stdout_ok(&[
+        "table",
+        "--spec",
+        &example("thesis-cubic.toml"),
+        "--order",
+        "1",
+        "--at",
+        "start",
+    ]);
+    // b0'(0) = −m − 2 with respect to θ
+    assert!(t.contains("−m − 2"), "{t}");
+    // the same numbers as the catalog family, up to rounding: the spec
+    // evaluates the canonical (expanded) form of its formulas, the catalog
+    // the printed factored form; at 128 bits they agree to 1e-30
+    let values = |text: &str| -> Vec<f64> {
+        text.lines()
+            .skip(1)
+            .map(|l| {
+                l.split(" = ")
+                    .nth(1)
+                    .expect("value")
+                    .parse()
+                    .expect("number")
+            })
+            .collect()
+    };
+    for at in ["0", "0.25", "1"] {
+        let spec = stdout_ok(&[
+            "eval",
+            "--spec",
+            &example("thesis-cubic.toml"),
+            "--param",
+            "m=0.6",
+            "--at",
+            at,
+            "--prec",
+            "128",
+        ]);
+        let builtin = stdout_ok(&[
+            "eval",
+            "thesis-cubic",
+            "--param",
+            "m=0.6",
+            "--at",
+            at,
+            "--prec",
+            "128",
+        ]);
+        for (a, b) in values(&spec).iter().zip(values(&builtin)) {
+            assert!((a - b).abs() <= 1e-30, "u = {at}: {a} vs {b}");
+        }
+    }
+}
+
+#[test]
+fn bad_spec_files_are_one_line_errors_with_a_position() {
+    let unknown = bad_file(
+        "unknown.toml",
+        &format!("{HEADER}[[functions]]\nname = \"b0\"\nformula = \"1 - q*s\"\n"),
+    );
+    let wrong_var = bad_file(
+        "wrong_var.toml",
+        &format!("{HEADER}[[functions]]\nname = \"b0\"\nformula = \"1 - t\"\n"),
+    );
+    let vanish = bad_file(
+        "vanish.toml",
+        &format!(
+            "{HEADER}[[parameters]]\nname = \"m\"\nrange = \"[-2, 1]\"\n[[functions]]\nname = \"b0\"\nformula = \"s/(m + 2)\"\n"
+        ),
+    );
+    let reversed = bad_file(
+        "reversed.toml",
+        &format!(
+            "{HEADER}[[parameters]]\nname = \"m\"\nrange = \"[1, -2]\"\n[[functions]]\nname = \"b0\"\nformula = \"1\"\n"
+        ),
+    );
+    let malformed = bad_file("malformed.toml", "id = \"x\"\ncitation = \n");
+    let missing = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
+        .join("no-such-spec.toml")
+        .display()
+        .to_string();
+    assert_errors(&[
+        (
+            &["audit", "--spec", &unknown],
+            "unknown.toml:6:16: in formula `1 - q*s` at position 4: unknown symbol `q`",
+        ),
+        (
+            &["eval", "--spec", &wrong_var, "--at", "0"],
+            "wrong_var.toml:6:16: in formula `1 - t` at position 4: wrong variable",
+        ),
+        (
+            &["table", "--spec", &vanish],
+            "vanish.toml:9:13: in formula `s/(m + 2)` at position 1: division by `m + 2`, which vanishes",
+        ),
+        (
+            &["audit", "--spec", &reversed],
+            "reversed.toml:6:9: parameters.range: `[1, -2]`: the ends are reversed",
+        ),
+        (
+            &["audit", "--spec", &malformed],
+            "malformed.toml:2:12: malformed spec file: invalid string; expected",
+        ),
+        (&["audit", "--spec", &missing], "cannot read"),
+        (
+            &[
+                "audit",
+                "--spec",
+                &example("thesis-cubic.toml"),
+                "--claim",
+                "nope",
+            ],
+            "no claim matches",
+        ),
+        (
+            &[
+                "eval",
+                "--spec",
+                &example("thesis-cubic.toml"),
+                "--param",
+                "m=5",
+                "--at",
+                "0",
+            ],
+            "outside the published range",
+        ),
+    ]);
+    let out = run(&["audit", "--spec", &unknown]);
+    assert_eq!(out.status.code(), Some(2));
+}

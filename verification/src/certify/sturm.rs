@@ -1,0 +1,254 @@
+//! Exact univariate polynomials over ℚ and their real roots.
+//!
+//! Sturm's theorem: for a polynomial `p` with Sturm sequence
+//! `p₀ = p, p₁ = p', p_{k+1} = −rem(p_{k−1}, p_k)`, the number of distinct
+//! real roots in `(a, b]` is `V(a) − V(b)`, `V(x)` the number of sign changes
+//! of `(p₀(x), p₁(x), …)` (zeros skipped). Roots are isolated by exact
+//! bisection in rational arithmetic; nothing is rounded.
+
+use rug::Rational;
+use trig_symbolic::Poly;
+
+/// `Σ aᵢ xⁱ` with rational coefficients, lowest degree first, no trailing
+/// zeros (the zero polynomial is empty).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct UPoly(Vec<Rational>);
+
+impl UPoly {
+    /// From coefficients, lowest degree first.
+    pub fn new(mut coeffs: Vec<Rational>) -> UPoly {
+        while coeffs.last().is_some_and(|c| *c == 0) {
+            coeffs.pop();
+        }
+        UPoly(coeffs)
+    }
+
+    /// A symbolic polynomial in the single variable `var`, or `None` when
+    /// another variable occurs.
+    pub fn from_poly(p: &Poly, var: &str) -> Option<UPoly> {
+        let mut coeffs = vec![Rational::new(); p.degree_in(var) as usize + 1];
+        for (mono, q) in p.terms() {
+            let e = mono.exponent(var);
+            if u64::from(e) != mono.degree() {
+                return None;
+            }
+            coeffs[e as usize] += q;
+        }
+        Some(UPoly::new(coeffs))
+    }
+
+    /// The coefficients, lowest degree first.
+    pub fn coeffs(&self) -> &[Rational] {
+        &self.0
+    }
+
+    pub fn is_zero(&self) -> bool {
+        self.0.is_empty()
+    }
+
+    /// Degree (0 for constants and for zero).
+    pub fn degree(&self) -> usize {
+        self.0.len().saturating_sub(1)
+    }
+
+    /// Exact value at `x` (Horner).
+    pub fn eval(&self, x: &Rational) -> Rational {
+        self.0
+            .iter()
+            .rev()
+            .fold(Rational::new(), |acc, a| acc * x + a)
+    }
+
+    /// Sign of the value at `x`: −1, 0 or 1.
+    pub fn sign_at(&self, x: &Rational) -> i32 {
+        self.eval(x).cmp0() as i32
+    }
+
+    /// The derivative.
+    pub fn derivative(&self) -> UPoly {
+        UPoly::new(
+            self.0
+                .iter()
+                .enumerate()
+                .skip(1)
+                .map(|(i, a)| a.clone() * Rational::from(i as u64))
+                .collect(),
+        )
+    }
+
+    /// Quotient and remainder of the division by a nonzero `d`.
+    ///
+    /// # Panics
+    /// If `d` is zero.
+    pub fn div_rem(&self, d: &UPoly) -> (UPoly, UPoly) {
+        let lead = d.0.last().expect("division by the zero polynomial");
+        let mut r = self.0.clone();
+        if r.len() < d.0.len() {
+            return (UPoly::new(vec![]), self.clone());
+        }
+        let mut q = vec![Rational::new(); r.len() - d.0.len() + 1];
+        for k in (0..q.len()).rev() {
+            let c = r[k + d.0.len() - 1].clone() / lead;
+            if c != 0 {
+                for (j, dj) in d.0.iter().enumerate() {
+                    r[k + j] -= c.clone() * dj;
+                }
+            }
+            q[k] = c;
+        }
+        r.truncate(d.0.len() - 1);
+        (UPoly::new(q), UPoly::new(r))
+    }
+
+    /// The monic greatest common divisor.
+    pub fn gcd(&self, other: &UPoly) -> UPoly {
+        let (mut a, mut b) = (self.clone(), other.clone());
+        while !b.is_zero() {
+            let r = a.div_rem(&b).1;
+            a = b;
+            b = r;
+        }
+        a.monic()
+    }
+
+    fn monic(&self) -> UPoly {
+        match self.0.last() {
+            Some(l) => UPoly::new(self.0.iter().map(|a| a.clone() / l).collect()),
+            None => self.clone(),
+        }
+    }
+
+    /// The squarefree part `p / gcd(p, p')`: the same distinct roots, each
+    /// simple.
+    pub fn squarefree(&self) -> UPoly {
+        let g = self.gcd(&self.derivative());
+        self.div_rem(&g).0
+    }
+
+    /// The Sturm sequence `p, p', −rem(p, p'), …`.
+    pub fn sturm_sequence(&self) -> Vec<UPoly> {
+        let mut seq = vec![self.clone(), self.derivative()];
+        while !seq[seq.len() - 1].is_zero() {
+            let n = seq.len();
+            let r = seq[n - 2].div_rem(&seq[n - 1]).1;
+            seq.push(UPoly::new(r.0.into_iter().map(|a| -a).collect()));
+        }
+        seq.pop();
+        seq
+    }
+
+    /// The number of distinct real roots in the half-open `(a, b]`.
+    pub fn count_roots(&self, a: &Rational, b: &Rational) -> usize {
+        let seq = self.sturm_sequence();
+        variations(&seq, a).saturating_sub(variations(&seq, b))
+    }
+
+    /// Isolating intervals of the distinct roots in the open `(a, b)`, in
+    /// increasing order: either `lo = hi`, the root itself, or `lo < r < hi`
+    /// with neither end a root. Hence a point between two intervals (or an
+    /// endpoint shared by two of them) is never a root.
+    pub fn isolate(&self, a: &Rational, b: &Rational) -> Vec<(Rational, Rational)> {
+        let p = self.squarefree();
+        let mut raw = Vec::new();
+        bisect(&p, a.clone(), b.clone(), &mut raw);
+        raw.into_iter()
+            .filter(|(_, hi)| !(hi == b && p.sign_at(b) == 0))
+            .map(|(lo, hi)| tighten(&p, lo, hi))
+            .collect()
+    }
+}
+
+/// Bisection: `(a, b]` with several roots is split at its midpoint until
+/// each piece `(lo, hi]` holds exactly one.
+fn bisect(p: &UPoly, a: Rational, b: Rational, out: &mut Vec<(Rational, Rational)>) {
+    match p.count_roots(&a, &b) {
+        0 => {}
+        1 => out.push((a, b)),
+        _ => {
+            let m = (a.clone() + &b) / 2u32;
+            bisect(p, a, m.clone(), out);
+            bisect(p, m, b, out);
+        }
+    }
+}
+
+/// From `(lo, hi]` with one root to the invariant of [`UPoly::isolate`].
+fn tighten(p: &UPoly, mut lo: Rational, mut hi: Rational) -> (Rational, Rational) {
+    if p.sign_at(&hi) == 0 {
+        return (hi.clone(), hi);
+    }
+    while p.sign_at(&lo) == 0 {
+        let m = (lo.clone() + &hi) / 2u32;
+        if p.sign_at(&m) == 0 {
+            return (m.clone(), m);
+        }
+        if p.count_roots(&m, &hi) == 1 {
+            lo = m;
+        } else {
+            hi = m;
+        }
+    }
+    (lo, hi)
+}
+
+/// Sign changes of the sequence evaluated at `x` (zeros skipped).
+fn variations(seq: &[UPoly], x: &Rational) -> usize {
+    let signs: Vec<i32> = seq
+        .iter()
+        .map(|p| p.sign_at(x))
+        .filter(|s| *s != 0)
+        .collect();
+    signs.windows(2).filter(|w| w[0] != w[1]).count()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn q(a: i64, b: i64) -> Rational {
+        Rational::from((a, b))
+    }
+
+    /// `Π (x − rᵢ)`.
+    fn from_roots(roots: &[Rational]) -> UPoly {
+        roots.iter().fold(UPoly::new(vec![q(1, 1)]), |acc, r| {
+            let lin = UPoly::new(vec![-r.clone(), q(1, 1)]);
+            mul(&acc, &lin)
+        })
+    }
+
+    fn mul(a: &UPoly, b: &UPoly) -> UPoly {
+        let mut c = vec![Rational::new(); a.0.len() + b.0.len() - 1];
+        for (i, x) in a.0.iter().enumerate() {
+            for (j, y) in b.0.iter().enumerate() {
+                c[i + j] += x.clone() * y;
+            }
+        }
+        UPoly::new(c)
+    }
+
+    #[test]
+    fn sturm_counts_distinct_roots_and_ignores_multiplicity() {
+        let p = from_roots(&[q(1, 3), q(1, 3), q(1, 2), q(2, 1)]);
+        assert_eq!(p.count_roots(&q(0, 1), &q(1, 1)), 2);
+        assert_eq!(p.count_roots(&q(0, 1), &q(3, 1)), 3);
+        assert_eq!(p.count_roots(&q(1, 2), &q(1, 1)), 0, "(a, b] excludes a");
+        // x² + 1 has no real root
+        assert_eq!(
+            UPoly::new(vec![q(1, 1), q(0, 1), q(1, 1)]).count_roots(&q(-9, 1), &q(9, 1)),
+            0
+        );
+        assert_eq!(p.squarefree().degree(), 3);
+    }
+
+    #[test]
+    fn roots_are_isolated_including_exact_midpoints() {
+        let p = from_roots(&[q(1, 2), q(1, 4), q(7, 10), q(1, 1)]);
+        let iv = p.isolate(&q(0, 1), &q(1, 1));
+        assert_eq!(iv.len(), 3, "{iv:?}");
+        for ((lo, hi), r) in iv.iter().zip([q(1, 4), q(1, 2), q(7, 10)]) {
+            assert!(*lo <= r && r <= *hi, "{lo} {hi} {r}");
+        }
+        assert!(iv.windows(2).all(|w| w[0].1 <= w[1].0));
+    }
+}

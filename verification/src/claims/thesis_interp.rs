@@ -1,0 +1,503 @@
+//! Seed 001, the thesis, section 4.3: the positivity-preserving
+//! interpolation schemes (4.19)–(4.34) on Tables 4.1–4.6 (claims T20–T24f).
+//!
+//! The schemes are built by `trig-interp` on the catalog basis (3.7);
+//! end conditions are decided exactly in the symbolic ring (derivatives in
+//! `x` from `trig_deriv`, π a symbol), knot continuity by exact jumps, and
+//! positivity by a certified minimum per piece (Weierstrass substitution +
+//! Bernstein subdivision, [`crate::certify::nonneg::certify`]).
+
+use rug::Rational;
+use trig_core::{Family, Ring};
+use trig_deriv::{End, Wrt, curve_endpoint_derivatives};
+use trig_interp::scheme::{printed_c1, printed_c2_second, printed_g1, printed_g2_join};
+use trig_interp::{
+    DataSet, Interval, PieceMinimum, Scheme, Spline, Variant, build, certified_minimum, knot_jumps,
+};
+use trig_symbolic::Sym;
+
+use crate::claim::{Claim, Seed};
+use crate::exact::{IDENTITY, identities};
+use crate::verdict::{Status, Verdict};
+
+const fn claim(
+    id: &'static str,
+    source: &'static str,
+    statement: &'static str,
+    check: fn() -> Verdict,
+) -> Claim {
+    Claim {
+        id,
+        seed: Seed::S001,
+        source,
+        statement,
+        check,
+    }
+}
+
+pub const CLAIMS: &[Claim] = &[
+    claim(
+        "T20",
+        "(4.20)–(4.21)",
+        "C¹ interpolant (4.21): P(x_i)=f_i, P(x_{i+1})=f_{i+1}, P'(x_i)=d_i, P'(x_{i+1})=d_{i+1} (derivatives in x)",
+        t20,
+    ),
+    claim(
+        "T21",
+        "(4.25), Table 4.2, Figure 4.11 text",
+        "the scheme yields a C² spline (\"all piecewise segments satisfy the C² continuity requirements\")",
+        t21,
+    ),
+    claim(
+        "T21b",
+        "(4.22)–(4.24)",
+        "D_i, D_{i+1} of (4.23)/(4.24) are the second derivatives P''(x_i), P''(x_{i+1})",
+        t21b,
+    ),
+    claim(
+        "T22",
+        "(4.26)–(4.27)",
+        "G¹ interpolant (4.27) satisfies (4.26): P(x_i)=f_i, P(x_{i+1})=f_{i+1}, P'(x_i)=n_i d_i, P'(x_{i+1})=d_{i+1}",
+        t22,
+    ),
+    claim(
+        "T22b",
+        "4.3.3, Figure 4.12 text; 4.3.5, Figure 4.15",
+        "the G¹ scheme produces a tangent-continuous (G¹) curve",
+        t22b,
+    ),
+    claim(
+        "T23",
+        "(4.30), (4.33)–(4.34)",
+        "the G² control points V_1^2, V_2^2 of (4.34) satisfy (4.33) with the endpoint list (4.30)",
+        t23,
+    ),
+    claim(
+        "T24",
+        "4.3.1–4.3.5",
+        "every positivity example stays ≥ 0 on its whole interval",
+        t24,
+    ),
+    claim(
+        "T24a",
+        "Table 4.1, Figure 4.10",
+        "C¹ example (Table 4.1) stays ≥ 0",
+        t24a,
+    ),
+    claim(
+        "T24b",
+        "Table 4.2, Figure 4.11",
+        "C² example (Table 4.2) stays ≥ 0",
+        t24b,
+    ),
+    claim(
+        "T24c",
+        "Table 4.3, Figure 4.12",
+        "G¹ example (Table 4.3) stays ≥ 0",
+        t24c,
+    ),
+    claim(
+        "T24d",
+        "Table 4.4, Figure 4.13",
+        "G² example (Table 4.4) stays ≥ 0",
+        t24d,
+    ),
+    claim(
+        "T24e",
+        "Table 4.5, Figure 4.14",
+        "G² example (Table 4.5) stays ≥ 0",
+        t24e,
+    ),
+    claim(
+        "T24f",
+        "Table 4.6, Figure 4.15",
+        "G¹ example (Table 4.6) stays ≥ 0",
+        t24f,
+    ),
+];
+
+fn v(name: &str) -> Sym {
+    Sym::var(name)
+}
+
+/// Derivatives of orders 0…2 of `Σ b_j(·; m) P_j` at `end` in `wrt`.
+fn derivs(points: &[Sym; 4], m: &Sym, end: End, wrt: Wrt, h: &Sym) -> Vec<Sym> {
+    curve_endpoint_derivatives::<Sym, 3>(
+        Family::ThesisCubic,
+        std::slice::from_ref(m),
+        points,
+        None,
+        end,
+        wrt,
+        h,
+    )
+}
+
+/// The four end conditions of a piece with symbolic data, targets at the start `(f0, t0)` and end `(f1, t1)`.
+fn end_conditions(points: &[Sym; 4], m: &Sym, h: &Sym, t0: &Sym, t1: &Sym) -> Verdict {
+    let s = derivs(points, m, End::Start, Wrt::X, h);
+    let e = derivs(points, m, End::End, Wrt::X, h);
+    identities(vec![
+        ("P(x_i) − f_i".into(), s[0].clone(), points[0].clone()),
+        (
+            "P(x_{i+1}) − f_{i+1}".into(),
+            e[0].clone(),
+            points[3].clone(),
+        ),
+        ("P'(x_i) − target".into(), s[1].clone(), t0.clone()),
+        ("P'(x_{i+1}) − d_{i+1}".into(), e[1].clone(), t1.clone()),
+    ])
+}
+
+/// Symbols `f0, f1, d0, d1, h, m` (data of one interval).
+fn data_symbols() -> [Sym; 6] {
+    ["f0", "f1", "d0", "d1", "h", "m"].map(v)
+}
+
+fn t20() -> Verdict {
+    let [f0, f1, d0, d1, h, m] = data_symbols();
+    match printed_c1(&f0, &f1, &d0, &d1, &h, &m) {
+        Ok((w, x)) => end_conditions(&[f0, w, x, f1], &m, &h, &d0, &d1),
+        Err(e) => Verdict::not_checkable(e.to_string()),
+    }
+}
+
+fn t22() -> Verdict {
+    let [f0, f1, d0, d1, h, m] = data_symbols();
+    let n = v("n");
+    match printed_g1(&f0, &f1, &d0, &d1, &h, &m, &n) {
+        Ok((w, x)) => end_conditions(&[f0, w, x, f1], &m, &h, &(n * &d0), &d1),
+        Err(e) => Verdict::not_checkable(e.to_string()),
+    }
+}
+
+fn t21b() -> Verdict {
+    let [f0, f1, d0, d1, h, m] = data_symbols();
+    let (Ok((w, x)), Ok((di, di1))) = (
+        printed_c1(&f0, &f1, &d0, &d1, &h, &m),
+        printed_c2_second(&f0, &f1, &d0, &d1, &h, &m),
+    ) else {
+        return Verdict::not_checkable("(4.23)–(4.25) are singular for symbolic m");
+    };
+    let points = [f0, w, x, f1];
+    let in_x = |end| derivs(&points, &m, end, Wrt::X, &h)[2].clone();
+    let in_u = |end| derivs(&points, &m, end, Wrt::U, &h)[2].clone();
+    let printed = identities(vec![
+        ("D_i − P''(x_i)".into(), di.clone(), in_x(End::Start)),
+        ("D_{i+1} − P''(x_{i+1})".into(), di1.clone(), in_x(End::End)),
+    ]);
+    let h2 = h.clone() * &h;
+    let corrected = identities(vec![
+        (
+            "D_i/h_i² − P''(x_i)".into(),
+            di.clone() / &h2,
+            in_x(End::Start),
+        ),
+        (
+            "D_{i+1}/h_i² − P''(x_{i+1})".into(),
+            di1.clone() / &h2,
+            in_x(End::End),
+        ),
+        ("D_i − d²P/du²(0)".into(), di, in_u(End::Start)),
+        ("D_{i+1} − d²P/du²(1)".into(), di1, in_u(End::End)),
+    ]);
+    reading_verdict(
+        printed,
+        corrected,
+        "D_i, D_{i+1} of (4.23)/(4.24) are the second derivatives in u (thesis (4.30)); in x they must be divided by h_i² (the tables have h_i = 1, where both agree). (4.24) writes m for m_i.",
+    )
+}
+
+/// A printed identity that fails and a named correction that holds.
+fn reading_verdict(printed: Verdict, corrected: Verdict, correction: &str) -> Verdict {
+    let status = match (printed.status, corrected.status) {
+        (Status::Holds, _) => Status::Holds,
+        (_, Status::Holds) => Status::HoldsAfterCorrection,
+        _ => Status::Fails,
+    };
+    let mut evidence: Vec<String> = printed
+        .evidence
+        .iter()
+        .map(|e| format!("as printed: {e}"))
+        .collect();
+    evidence.extend(corrected.evidence.iter().map(|e| format!("corrected: {e}")));
+    let v = Verdict::new(status, IDENTITY, evidence);
+    if status == Status::Holds {
+        v
+    } else {
+        v.with_correction(correction)
+    }
+}
+
+/// f64 value of an exact expression in π (for display).
+fn approx(x: &Sym) -> String {
+    match x.eval(&0.0_f64, &|n: &str| {
+        (n == "pi").then_some(std::f64::consts::PI)
+    }) {
+        Ok(value) => format!("{value:.6}"),
+        Err(e) => format!("({e})"),
+    }
+}
+
+fn jump_lines(spline: &Spline<Sym>, orders: usize) -> (bool, Vec<String>) {
+    let mut ok = true;
+    let lines = knot_jumps(spline)
+        .iter()
+        .map(|k| {
+            let order = k.continuity_order();
+            ok &= order.is_some_and(|o| o + 1 >= orders);
+            let jumps: Vec<String> = k
+                .jumps
+                .iter()
+                .map(|j| {
+                    if j.is_zero() {
+                        "0".into()
+                    } else {
+                        format!("{j} ≈ {}", approx(j))
+                    }
+                })
+                .collect();
+            let achieved = order.map_or("discontinuous".to_string(), |o| format!("C{o}"));
+            format!(
+                "{} ({}), knot x = {}: jumps of P, P', P'', P''' = [{}] → {achieved}",
+                spline.data.table.name,
+                spline.variant,
+                k.x,
+                jumps.join("; ")
+            )
+        })
+        .collect();
+    (ok, lines)
+}
+
+fn sym_spline(name: &str, scheme: Scheme, variant: Variant) -> Result<Spline<Sym>, String> {
+    let data = DataSet::named(name).map_err(|e| e.to_string())?;
+    build(&data, scheme, variant, &Sym::zero()).map_err(|e| e.to_string())
+}
+
+const JUMPS: &str = "exact one-sided derivatives in x at the interior knots (trig-deriv jets, π symbolic), jump = right − left";
+
+fn t21() -> Verdict {
+    let (printed, corrected) = match (
+        sym_spline("thesis-table-4.2", Scheme::C2, Variant::Printed),
+        sym_spline("thesis-table-4.2", Scheme::C2, Variant::Corrected),
+    ) {
+        (Ok(p), Ok(c)) => (p, c),
+        (Err(e), _) | (_, Err(e)) => return Verdict::not_checkable(e),
+    };
+    let (ok, mut evidence) = jump_lines(&printed, 3);
+    let (fixed, lines) = jump_lines(&corrected, 3);
+    evidence.push("(4.25) uses the control points of (4.21) unchanged: D_i are computed, not imposed, so P'' jumps wherever the two pieces' D_i differ".into());
+    evidence.extend(lines);
+    let status = if ok { Status::Holds } else { Status::Fails };
+    let v = Verdict::new(status, JUMPS, evidence);
+    if ok || !fixed {
+        v
+    } else {
+        v.with_correction("choose the interior d_i by the C² conditions P_{i−1}''(x_i) = P_i''(x_i) (a tridiagonal system; arithmetic-mean d_0, d_n) instead of the arithmetic means: the spline is then C² at every knot (corrected lines above)")
+    }
+}
+
+fn t22b() -> Verdict {
+    let mut all_ok = true;
+    let mut evidence = Vec::new();
+    for name in ["thesis-table-4.3", "thesis-table-4.6"] {
+        match sym_spline(name, Scheme::G1, Variant::Printed) {
+            Ok(s) => {
+                let (ok, lines) = jump_lines(&s, 2);
+                all_ok &= ok;
+                evidence.extend(lines);
+            }
+            Err(e) => return Verdict::not_checkable(e),
+        }
+    }
+    evidence.push("for the graph y = P(x), tangent continuity is continuity of P'; at x_{i+1} the left piece ends with slope d_{i+1} (4.26) and the right piece starts with n_{i+1} d_{i+1}, so the slope jumps by (n_{i+1} − 1) d_{i+1}".into());
+    let status = if all_ok { Status::Holds } else { Status::Fails };
+    let v = Verdict::new(status, JUMPS, evidence);
+    if all_ok {
+        v
+    } else {
+        v.with_correction("n_i = 1 at every interior knot (then the scheme is the C¹ scheme)")
+    }
+}
+
+fn t23() -> Verdict {
+    let [v1, v2, v3, w3, m, alpha, beta] = ["V1", "V2", "V3", "W3", "m", "alpha", "beta"].map(v);
+    let first = [v("V0"), v1.clone(), v2.clone(), v3.clone()];
+    let (p1, p2) = printed_g2_join(&v1, &v2, &v3, &m, &alpha, &beta);
+    let residuals = |q1: &Sym, q2: &Sym, wrt: Wrt, h: &Sym| {
+        let second = [v3.clone(), q1.clone(), q2.clone(), w3.clone()];
+        let e = derivs(&first, &m, End::End, wrt, h);
+        let s = derivs(&second, &m, End::Start, wrt, h);
+        vec![
+            ("P₂(0) − P₁(1)".to_string(), s[0].clone(), e[0].clone()),
+            (
+                "P₂'(0) − α P₁'(1)".to_string(),
+                s[1].clone(),
+                alpha.clone() * &e[1],
+            ),
+            (
+                "P₂''(0) − α² P₁''(1) − β P₁'(1)".to_string(),
+                s[2].clone(),
+                alpha.square() * &e[2] + &(beta.clone() * &e[1]),
+            ),
+        ]
+    };
+    let mut evidence = Vec::new();
+    for (wrt, h) in [
+        (Wrt::U, Sym::one()),
+        (Wrt::Angle, Sym::one()),
+        (Wrt::X, v("h")),
+    ] {
+        let verdict = identities(residuals(&p1, &p2, wrt, &h));
+        evidence.extend(
+            verdict
+                .evidence
+                .iter()
+                .map(|e| format!("(4.34) as printed, derivatives in {wrt}: {e}")),
+        );
+    }
+    // the named correction: 2(1+m)(α+1)V_3^1 → (1 + 2(1+m)α)V_3^1, i.e. subtract (2m+1)V_3^1
+    let fixed = p2.clone() - &((Sym::int(2) * &m + &Sym::one()) * &v3);
+    let corrected = identities(residuals(&p1, &fixed, Wrt::U, &Sym::one()));
+    evidence.extend(
+        corrected
+            .evidence
+            .iter()
+            .map(|e| format!("corrected V_2^2, derivatives in u (4.30): {e}")),
+    );
+    let printed_u = identities(residuals(&p1, &p2, Wrt::U, &Sym::one()));
+    let status = match (printed_u.status, corrected.status) {
+        (Status::Holds, _) => Status::Holds,
+        (_, Status::Holds) => Status::HoldsAfterCorrection,
+        _ => Status::Fails,
+    };
+    evidence.push(format!(
+        "the coefficients of (4.34)'s V_2^2 sum to {} (an affine combination needs 1)",
+        sum_of_coefficients(&p2, &["V1", "V2", "V3"])
+    ));
+    let v = Verdict::new(status, IDENTITY, evidence);
+    if status == Status::Holds {
+        v
+    } else {
+        v.with_correction("V_2^2 = α²V_1^1 − 2(1+m)(α²+α)V_2^1 − (2/π)(1+m/2)βV_2^1 + (1 + 2(1+m)α + (1+2m)α²)V_3^1 + (2/π)(1+m/2)βV_3^1: the term 2(1+m)(α+1)V_3^1 must be (1 + 2(1+m)α)V_3^1 (the (4m+2)V_0^2 term of P₂''(0) was dropped); holds with (4.30)'s u-derivatives and equal m (β is a u-convention factor: 2/π becomes 1 with angle derivatives)")
+    }
+}
+
+fn sum_of_coefficients(e: &Sym, points: &[&str]) -> Sym {
+    points
+        .iter()
+        .fold(e.clone(), |acc, p| acc.subs(p, &Sym::one()))
+}
+
+/// `q` rounded down (`up = false`) or up to 6 decimals.
+fn decimal(q: &Rational, up: bool) -> String {
+    let scaled = q.clone() * Rational::from(1_000_000);
+    let k = if up { scaled.ceil() } else { scaled.floor() };
+    format!("{:.6}", k.to_f64() / 1e6)
+}
+
+/// Describes one piece's certified minimum.
+pub fn describe(name: &str, variant: Variant, m: &PieceMinimum) -> String {
+    let bracket = match &m.lower {
+        Some(l) => format!("[{}, {}]", decimal(l, false), decimal(&m.upper, true)),
+        None => format!(
+            "(undecided: {}) ≤ {}",
+            m.undecided.as_deref().unwrap_or("?"),
+            decimal(&m.upper, true)
+        ),
+    };
+    format!(
+        "{name} ({variant}), piece {}: min P ∈ {bracket} at x ≈ {:.6} (z = tan(θ/2) = {})",
+        m.piece + 1,
+        m.x,
+        m.z
+    )
+}
+
+const CERTIFIED: &str = "certified minimum per piece: control points enclosed for π ∈ [3.14159265358979323846264338327, …328], Weierstrass z = tan(θ/2) + exact Bernstein subdivision lower bound, exact value at a rational point as upper bound";
+
+/// The certified minima of the example `name` with `scheme`/`variant`, as a verdict.
+fn positivity(name: &str, scheme: Scheme, variant: Variant) -> Verdict {
+    let result = DataSet::named(name)
+        .and_then(|d| build(&d, scheme, variant, &Interval::point(Rational::new())))
+        .and_then(|s| certified_minimum(&s, &crate::minimum::prove));
+    match result {
+        Err(e) => Verdict::not_checkable(e.to_string()),
+        Ok(minima) => {
+            let status = if minima.iter().all(PieceMinimum::nonnegative) {
+                Status::Holds
+            } else if minima.iter().any(PieceMinimum::negative) {
+                Status::Fails
+            } else {
+                Status::NotCheckable
+            };
+            let evidence = minima.iter().map(|m| describe(name, variant, m)).collect();
+            Verdict::new(status, CERTIFIED, evidence)
+        }
+    }
+}
+
+/// Positivity of an example, decided on the printed scheme (the curve the
+/// thesis computed: for Table 4.4 its printed (4.34) reproduces the text's
+/// peak "approximately 55 near x = 4.5"), with the corrected scheme of
+/// T21/T23 reported beside it for C² and G².
+fn example(name: &str, scheme: Scheme) -> Verdict {
+    let mut v = positivity(name, scheme, Variant::Printed);
+    if matches!(scheme, Scheme::C2 | Scheme::G2) {
+        let corrected = positivity(name, scheme, Variant::Corrected);
+        v.evidence.push(format!(
+            "decided on the printed scheme (what the thesis computes and plots); the corrected scheme ({}) on the same table, for comparison: {}",
+            match scheme {
+                Scheme::C2 => "interior d_i from the C² conditions, T21",
+                _ => "join (4.33) solved in x through the basis, each piece its own m_i, T23",
+            },
+            corrected.status
+        ));
+        v.evidence.extend(corrected.evidence);
+    }
+    v
+}
+
+fn t24a() -> Verdict {
+    example("thesis-table-4.1", Scheme::C1)
+}
+fn t24b() -> Verdict {
+    example("thesis-table-4.2", Scheme::C2)
+}
+fn t24c() -> Verdict {
+    example("thesis-table-4.3", Scheme::G1)
+}
+fn t24d() -> Verdict {
+    example("thesis-table-4.4", Scheme::G2)
+}
+fn t24e() -> Verdict {
+    example("thesis-table-4.5", Scheme::G2)
+}
+fn t24f() -> Verdict {
+    example("thesis-table-4.6", Scheme::G1)
+}
+
+fn t24() -> Verdict {
+    let parts = [t24a, t24b, t24c, t24d, t24e, t24f]
+        .iter()
+        .zip(["T24a", "T24b", "T24c", "T24d", "T24e", "T24f"])
+        .map(|(f, id)| (id.to_string(), f()))
+        .collect();
+    Verdict::all(CERTIFIED, parts)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_wrong_control_point_fails_its_end_conditions() {
+        // the printed C¹ scheme with a wrong sign in X must fail its end conditions
+        let [f0, f1, d0, d1, h, m] = data_symbols();
+        let (w, x) = printed_c1(&f0, &f1, &d0, &d1, &h, &m).unwrap();
+        let wrong = f1.clone() * &Sym::int(2) - &x;
+        let v = end_conditions(&[f0, w, wrong, f1], &m, &h, &d0, &d1);
+        assert_eq!(v.status, Status::Fails);
+    }
+}

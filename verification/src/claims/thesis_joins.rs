@@ -1,0 +1,623 @@
+//! Seed 001, the thesis: the endpoint lists of Chapter 4 and (4.30), the
+//! curve join formulas (4.6)–(4.18), the revised range (−2, 1], and the
+//! surface joins of Chapter 5 ((5.13)–(5.47), the cylinder of 5.4.3 and the
+//! Appendix 1 listing).
+//!
+//! Conventions, as the text states them: the first curve `Q₁` has control
+//! points `P₀…P₃`, the second `Q₂` has `P₄…P₇`; with different parameters the
+//! text gives `m₁` to `Q₂` and `m₂` to `Q₁`. Surfaces `S₁(u, v; m₁, m₂)`,
+//! `S₂(u, v; m₁*, m₂*)` join across `v` with, per the theorems, `m₁ = m₁*`
+//! (and `m₂ = m₂*`); the printed point formulas apply to every column.
+
+use rug::Rational;
+use trig_core::Family;
+use trig_deriv::{End, JoinKind, Wrt, curve_endpoint_derivatives, endpoint_derivatives};
+use trig_symbolic::Sym;
+
+use crate::claim::{Claim, Seed};
+use crate::exact::{identities, symbols};
+use crate::joins::{Printed, PrintedJoin, audit, audit_surface};
+use crate::verdict::{Status, Verdict};
+
+mod cylinder;
+
+const fn claim(
+    id: &'static str,
+    source: &'static str,
+    statement: &'static str,
+    check: fn() -> Verdict,
+) -> Claim {
+    Claim {
+        id,
+        seed: Seed::S001,
+        source,
+        statement,
+        check,
+    }
+}
+
+pub const CLAIMS: &[Claim] = &[
+    claim(
+        "T10",
+        "4.2.1 endpoint list, Conditions 1 and 2",
+        "Q2(0) = P4, Q1(1) = P3, Q2'(0) = (m+2)P5 − (m+2)P4, Q1'(1) = (m+2)P3 − (m+2)P2, Q2''(0) = 2P6 − (4m+4)P5 + (4m+2)P4, Q1''(1) = 2P1 − (4m+4)P2 + (4m+2)P3; Condition 2 the same with m1 for Q2 and m2 for Q1",
+        t10,
+    ),
+    claim(
+        "T11",
+        "(4.30)",
+        "b0'(0) = −π − mπ/2, b1'(0) = π + mπ/2, b2'(0) = b3'(0) = 0, b0''(0) = π²/2 + mπ², b1''(0) = −π² − mπ², b2''(0) = π²/2, b3''(0) = 0 (and mirrored at 1); P'(0), P'(1), P''(0), P''(1) as the combinations of V0…V3",
+        t11,
+    ),
+    claim("T12", "(4.6)", "C¹, same m: P4 = P3, P5 = 2P3 − P2", t12),
+    claim(
+        "T13",
+        "(4.7)",
+        "C¹, different m: P5 = [(m2+2)P3 − (m1+2)P3 − (m2+2)P2]/(m1+2)",
+        t13,
+    ),
+    claim(
+        "T14",
+        "(4.9)",
+        "C², same m: P6 = P1 − (4m+4)P2 + (4m+4)P3",
+        t14,
+    ),
+    claim(
+        "T15",
+        "(4.10) and the derivation line before it",
+        "C², different m: P6 = P1 + [(4m2+2)P3 − (4m2+4)P2 − (4m1+2)P3 − (4m1+4)P5]/2",
+        t15,
+    ),
+    claim("T16", "(4.13)", "G¹, same m: P5 = α(P3 − P2) + P3", t16),
+    claim(
+        "T17",
+        "(4.14)",
+        "G¹, different m: P5 = [α(m2+2)P3 − α(m2+2)P2 + (m1+2)P3]/(m1+2)",
+        t17,
+    ),
+    claim(
+        "T18",
+        "(4.15)–(4.17)",
+        "G², same m: P6 = (2α²m + α² + βm/2 + β + 1 + 2mα + 2α)P3 − (2mα + 2α + 2α²m + 2α² + βm/2 + β)P2 + α²P1",
+        t18,
+    ),
+    claim(
+        "T19",
+        "(4.18)",
+        "G², different m: P6 = {(4m1+4)P3 − (4m1+2)P3 + α²[2P1 − (4m2+4)P2 + (4m2+2)P3 + β(m2+2)P3 − (m2+2)P2]}/2",
+        t19,
+    ),
+    claim(
+        "T26a",
+        "(5.13)",
+        "surfaces, C¹, m1 = m1* (= m2 = m): P4 = P3, P5 = 2P3 − P2",
+        t26a,
+    ),
+    claim(
+        "T26b",
+        "(5.14)",
+        "surfaces, C¹, m1 = m1* ≠ m2 = m2*: P4 = P3, P5 = [(m2+2)P3 − (m1+2)P3 − (m2+2)P2]/(m1+2)",
+        t26b,
+    ),
+    claim(
+        "T26c",
+        "(5.25)",
+        "surfaces, G¹, m1 = m1*: P4 = P3, P5 = α(P3 − P2) + P3",
+        t26c,
+    ),
+    claim(
+        "T26d",
+        "(5.26)",
+        "surfaces, G¹, m1 = m1* ≠ m2 = m2*: P4 = P3, P5 = [α(m2+2)P3 − α(m2+2)P2 + (m1+2)P3]/(m1+2)",
+        t26d,
+    ),
+    claim(
+        "T26e",
+        "(5.35)",
+        "surfaces, C², m1 = m1*: P4 = P3, P5 = 2P3 − P2, P6 = P1 − (4m+4)P2 + (4m+4)P3",
+        t26e,
+    ),
+    claim(
+        "T26f",
+        "(5.36)",
+        "surfaces, C², m1 = m1* ≠ m2 = m2*: P5 as (5.14), P6 = P1 + [(4m2+2)P3 − (4m2+4)P2 − (4m1+2)P3 − (4m1+4)P5]/2",
+        t26f,
+    ),
+    claim(
+        "T26g",
+        "(5.42)/(5.46)",
+        "surfaces, G², m1 = m1*: P5 = α(P3 − P2) + P3, P6 as (4.17)",
+        t26g,
+    ),
+    claim(
+        "T26h",
+        "(5.43)",
+        "surfaces, G², m1 = m1* ≠ m2 = m2*: P5 as (5.26), P6 = α²[2P1 − (4m2+4)P2 + (4m2+2)P3 + β(m2+2)P3 − (m2+2)P2]/2",
+        t26h,
+    ),
+    claim(
+        "T26i",
+        "(5.47)",
+        "surfaces, G², different m: P6 = {(4m1+4)P3 − (4m1+2)P3 + α²[2P1 − (4m2+4)P2 + (4m2+2)P3 + β(m2+2)P3 − (m2+2)P2]}/2",
+        t26i,
+    ),
+    claim(
+        "T26j",
+        "5.4.3",
+        "cylinder seams: Q0 = P3, Q3 = P0 (C⁰); Q1 = 2P3 − P2, P1 = 2Q3 − Q2 (C¹); Q2 = P1 − (4m+4)P2 + (4m+4)P3, P2 = Q1 − (4m+4)Q2 + (4m+4)Q3 (C²); the same for every row",
+        cylinder::t26j,
+    ),
+    claim(
+        "T26k",
+        "5.4.3, Appendix 1",
+        "the two-patch cylinder the Appendix 1 listing builds (m = 1) is C¹/C² across both seams",
+        cylinder::t26k,
+    ),
+    claim(
+        "T26",
+        "Chapter 5.3, 5.4.3",
+        "all surface join formulas hold (T26a–T26k)",
+        t26,
+    ),
+    claim(
+        "T39",
+        "4.2.1, after (4.7)",
+        "m = −2 breaks the joins (division by m + 2), so the range is revised to (−2, 1]",
+        t39,
+    ),
+];
+
+fn v(name: &str) -> Sym {
+    Sym::var(name)
+}
+
+fn n(k: i64) -> Sym {
+    Sym::int(k)
+}
+
+/// `a·m + b` for a parameter symbol.
+fn lin(a: i64, m: &Sym, b: i64) -> Sym {
+    n(a) * m + &n(b)
+}
+
+fn p(i: usize) -> Sym {
+    v(&format!("P{i}"))
+}
+
+/// `P4 = P3` (4.4), printed with every join.
+fn c0() -> Printed {
+    Printed::new(0, vec![p(3)])
+}
+
+/// A thesis curve join: `(m, m)` for Condition 1, the text's `(m2, m1)`
+/// (first curve `m2`, second `m1`) for Condition 2.
+fn thesis_join(kind: JoinKind, same: bool, printed: Vec<Printed>) -> PrintedJoin {
+    let (first, second) = if same {
+        (v("m"), v("m"))
+    } else {
+        (v("m2"), v("m1"))
+    };
+    PrintedJoin {
+        family: Family::ThesisCubic,
+        kind,
+        first_params: vec![first],
+        second_params: vec![second],
+        first: symbols("P", 4),
+        second: (4..8).map(p).collect(),
+        printed,
+    }
+}
+
+fn c1_same() -> Printed {
+    Printed::new(1, vec![n(2) * &p(3), -p(2)])
+}
+
+fn c1_different() -> Printed {
+    let (m1, m2) = (v("m1"), v("m2"));
+    Printed::over(
+        1,
+        vec![
+            lin(1, &m2, 2) * &p(3),
+            -(lin(1, &m1, 2) * &p(3)),
+            -(lin(1, &m2, 2) * &p(2)),
+        ],
+        lin(1, &m1, 2),
+    )
+}
+
+fn c2_same() -> Printed {
+    let m = v("m");
+    Printed::new(
+        2,
+        vec![p(1), -(lin(4, &m, 4) * &p(2)), lin(4, &m, 4) * &p(3)],
+    )
+}
+
+fn c2_different() -> Printed {
+    let (m1, m2) = (v("m1"), v("m2"));
+    let half = Sym::rational(Rational::from((1, 2)));
+    Printed::new(
+        2,
+        vec![
+            p(1),
+            half.clone() * &lin(4, &m2, 2) * &p(3),
+            -(half.clone() * &lin(4, &m2, 4) * &p(2)),
+            -(half.clone() * &lin(4, &m1, 2) * &p(3)),
+            -(half * &lin(4, &m1, 4) * &p(5)),
+        ],
+    )
+}
+
+fn g1_same() -> Printed {
+    let a = v("alpha");
+    Printed::new(1, vec![a.clone() * &p(3), -(a * &p(2)), p(3)])
+}
+
+fn g1_different() -> Printed {
+    let (m1, m2, a) = (v("m1"), v("m2"), v("alpha"));
+    Printed::over(
+        1,
+        vec![
+            a.clone() * &lin(1, &m2, 2) * &p(3),
+            -(a * &lin(1, &m2, 2) * &p(2)),
+            lin(1, &m1, 2) * &p(3),
+        ],
+        lin(1, &m1, 2),
+    )
+}
+
+fn g2_same() -> Printed {
+    let (m, a, b) = (v("m"), v("alpha"), v("beta"));
+    let a2 = a.clone() * &a;
+    let half = Sym::rational(Rational::from((1, 2)));
+    let p3 = n(2) * &a2 * &m
+        + &a2
+        + &(half.clone() * &b * &m)
+        + &b
+        + &n(1)
+        + &(n(2) * &m * &a)
+        + &(n(2) * &a);
+    let p2 =
+        n(2) * &m * &a + &(n(2) * &a) + &(n(2) * &a2 * &m) + &(n(2) * &a2) + &(half * &b * &m) + &b;
+    Printed::new(2, vec![p3 * &p(3), -(p2 * &p(2)), a2 * &p(1)])
+}
+
+/// The bracket `α²[2P1 − (4m2+4)P2 + (4m2+2)P3 + β(m2+2)P3 − (m2+2)P2]/2`
+/// of (4.18), (5.43), (5.47), term by term.
+fn g2_bracket() -> Vec<Sym> {
+    let (m2, a, b) = (v("m2"), v("alpha"), v("beta"));
+    let k = a.clone() * &a * &Sym::rational(Rational::from((1, 2)));
+    vec![
+        k.clone() * &n(2) * &p(1),
+        -(k.clone() * &lin(4, &m2, 4) * &p(2)),
+        k.clone() * &lin(4, &m2, 2) * &p(3),
+        k.clone() * &b * &lin(1, &m2, 2) * &p(3),
+        -(k * &lin(1, &m2, 2) * &p(2)),
+    ]
+}
+
+/// (4.18) and (5.47): `{(4m1+4)P3 − (4m1+2)P3 + bracket}/2`.
+fn g2_different() -> Printed {
+    let m1 = v("m1");
+    let half = Sym::rational(Rational::from((1, 2)));
+    let mut terms = vec![
+        half.clone() * &lin(4, &m1, 4) * &p(3),
+        -(half * &lin(4, &m1, 2) * &p(3)),
+    ];
+    terms.extend(g2_bracket());
+    Printed::new(2, terms)
+}
+
+fn t12() -> Verdict {
+    audit(&thesis_join(JoinKind::C(1), true, vec![c0(), c1_same()]))
+}
+
+fn t13() -> Verdict {
+    audit(&thesis_join(
+        JoinKind::C(1),
+        false,
+        vec![c0(), c1_different()],
+    ))
+}
+
+fn t14() -> Verdict {
+    audit(&thesis_join(JoinKind::C(2), true, vec![c0(), c2_same()]))
+}
+
+fn t15() -> Verdict {
+    audit(&thesis_join(
+        JoinKind::C(2),
+        false,
+        vec![c0(), c2_different()],
+    ))
+}
+
+fn t16() -> Verdict {
+    audit(&thesis_join(JoinKind::G1, true, vec![c0(), g1_same()]))
+}
+
+fn t17() -> Verdict {
+    audit(&thesis_join(
+        JoinKind::G1,
+        false,
+        vec![c0(), g1_different()],
+    ))
+}
+
+fn t18() -> Verdict {
+    audit(&thesis_join(JoinKind::G2, true, vec![c0(), g2_same()]))
+}
+
+fn t19() -> Verdict {
+    audit(&thesis_join(
+        JoinKind::G2,
+        false,
+        vec![c0(), g2_different()],
+    ))
+}
+
+/// A surface join across `v`: `m1 = m1*` is the `u`-parameter, the `v`-parameter
+/// is `m` (Condition 1, all equal) or `m2 = m2*` (Condition 2) on both patches.
+fn surface(kind: JoinKind, same: bool, printed: Vec<Printed>) -> Verdict {
+    let (u_param, v_param) = if same {
+        (v("m"), v("m"))
+    } else {
+        (v("m1"), v("m2"))
+    };
+    let join = PrintedJoin {
+        first_params: vec![v_param.clone()],
+        second_params: vec![v_param],
+        ..thesis_join(kind, same, printed)
+    };
+    audit_surface(&join, &u_param)
+}
+
+fn t26a() -> Verdict {
+    surface(JoinKind::C(1), true, vec![c0(), c1_same()])
+}
+
+fn t26b() -> Verdict {
+    surface(JoinKind::C(1), false, vec![c0(), c1_different()])
+}
+
+fn t26c() -> Verdict {
+    surface(JoinKind::G1, true, vec![c0(), g1_same()])
+}
+
+fn t26d() -> Verdict {
+    surface(JoinKind::G1, false, vec![c0(), g1_different()])
+}
+
+fn t26e() -> Verdict {
+    surface(JoinKind::C(2), true, vec![c0(), c1_same(), c2_same()])
+}
+
+fn t26f() -> Verdict {
+    surface(
+        JoinKind::C(2),
+        false,
+        vec![c0(), c1_different(), c2_different()],
+    )
+}
+
+fn t26g() -> Verdict {
+    surface(JoinKind::G2, true, vec![c0(), g1_same(), g2_same()])
+}
+
+fn t26h() -> Verdict {
+    surface(
+        JoinKind::G2,
+        false,
+        vec![c0(), g1_different(), Printed::new(2, g2_bracket())],
+    )
+}
+
+fn t26i() -> Verdict {
+    surface(JoinKind::G2, false, vec![c0(), g2_different()])
+}
+
+fn t26() -> Verdict {
+    let parts = [
+        ("T26a", t26a as fn() -> Verdict),
+        ("T26b", t26b),
+        ("T26c", t26c),
+        ("T26d", t26d),
+        ("T26e", t26e),
+        ("T26f", t26f),
+        ("T26g", t26g),
+        ("T26h", t26h),
+        ("T26i", t26i),
+        ("T26j", cylinder::t26j),
+        ("T26k", cylinder::t26k),
+    ];
+    let verdicts: Vec<(String, Verdict)> = parts
+        .iter()
+        .map(|(id, check)| (id.to_string(), check()))
+        .collect();
+    let status = if verdicts.iter().all(|(_, v)| v.status == Status::Holds) {
+        Status::Holds
+    } else {
+        Status::Fails
+    };
+    let evidence = verdicts
+        .iter()
+        .map(|(id, v)| format!("{id}: {}", v.status))
+        .collect();
+    Verdict::new(status, "umbrella: holds only if every part holds", evidence)
+}
+
+/// Printed endpoint derivatives against computed ones, in the angle θ.
+fn t10() -> Verdict {
+    let mut parts = Vec::new();
+    for (label, q1, q2) in [
+        ("Condition 1", v("m"), v("m")),
+        ("Condition 2", v("m2"), v("m1")),
+    ] {
+        let at = |params: &Sym, points: Vec<Sym>, end| {
+            curve_endpoint_derivatives::<Sym, 3>(
+                Family::ThesisCubic,
+                std::slice::from_ref(params),
+                &points,
+                None,
+                end,
+                Wrt::Angle,
+                &Sym::one(),
+            )
+        };
+        let d2 = at(&q2, (4..8).map(p).collect(), End::Start);
+        let d1 = at(&q1, symbols("P", 4), End::End);
+        let printed = [
+            ("Q2(0)", d2[0].clone(), p(4)),
+            ("Q1(1)", d1[0].clone(), p(3)),
+            (
+                "Q2'(0)",
+                d2[1].clone(),
+                lin(1, &q2, 2) * &p(5) - &(lin(1, &q2, 2) * &p(4)),
+            ),
+            (
+                "Q1'(1)",
+                d1[1].clone(),
+                lin(1, &q1, 2) * &p(3) - &(lin(1, &q1, 2) * &p(2)),
+            ),
+            (
+                "Q2''(0)",
+                d2[2].clone(),
+                n(2) * &p(6) - &(lin(4, &q2, 4) * &p(5)) + &(lin(4, &q2, 2) * &p(4)),
+            ),
+            (
+                "Q1''(1)",
+                d1[2].clone(),
+                n(2) * &p(1) - &(lin(4, &q1, 4) * &p(2)) + &(lin(4, &q1, 2) * &p(3)),
+            ),
+        ];
+        parts.extend(
+            printed
+                .into_iter()
+                .map(|(name, computed, printed)| (format!("{label}, {name}"), computed, printed)),
+        );
+    }
+    identities(parts)
+}
+
+/// (4.30): derivatives with respect to u of each function, and the curve.
+fn t11() -> Verdict {
+    let m = v("m");
+    let pi = Sym::pi();
+    let pi2 = pi.clone() * &pi;
+    let half = Sym::rational(Rational::from((1, 2)));
+    let first = -pi.clone() - &(m.clone() * &pi * &half); // −π − mπ/2
+    let second_end = pi2.clone() * &half + &(m.clone() * &pi2); // π²/2 + mπ²
+    let second_mid = -pi2.clone() - &(m.clone() * &pi2); // −π² − mπ²
+    let at = |end| {
+        endpoint_derivatives::<Sym, 3>(
+            Family::ThesisCubic,
+            std::slice::from_ref(&m),
+            end,
+            Wrt::U,
+            &Sym::one(),
+        )
+    };
+    let (d0, d1) = (at(End::Start), at(End::End));
+    let zero = Sym::zero();
+    let half_pi2 = pi2 * &half;
+    let printed_start = [
+        [first.clone(), second_end.clone()],
+        [-first.clone(), second_mid.clone()],
+        [zero.clone(), half_pi2.clone()],
+        [zero.clone(), zero.clone()],
+    ];
+    let printed_end = [
+        [zero.clone(), zero.clone()],
+        [zero.clone(), half_pi2],
+        [first.clone(), second_mid],
+        [-first, second_end],
+    ];
+    let mut parts = Vec::new();
+    for (end, d, printed) in [("0", &d0, &printed_start), ("1", &d1, &printed_end)] {
+        for k in 0..4 {
+            for (order, primes) in [(1, "'"), (2, "''")] {
+                parts.push((
+                    format!("b{k}{primes}({end})"),
+                    d[k][order].clone(),
+                    printed[k][order - 1].clone(),
+                ));
+            }
+        }
+    }
+    // the curve block of (4.30) is Σ V_k b_k^{(j)}: the same printed values
+    let vs = symbols("V", 4);
+    for (end, d, printed) in [("0", &d0, &printed_start), ("1", &d1, &printed_end)] {
+        for (order, primes) in [(1, "'"), (2, "''")] {
+            let computed = crate::exact::sum(
+                &(0..4)
+                    .map(|k| d[k][order].clone() * &vs[k])
+                    .collect::<Vec<_>>(),
+            );
+            let printed_sum = crate::exact::sum(
+                &(0..4)
+                    .map(|k| printed[k][order - 1].clone() * &vs[k])
+                    .collect::<Vec<_>>(),
+            );
+            parts.push((format!("P{primes}({end})"), computed, printed_sum));
+        }
+    }
+    identities(parts)
+}
+
+/// The pivots of every join of the thesis basis vanish exactly at `m = −2`.
+fn t39() -> Verdict {
+    let mut evidence = Vec::new();
+    let mut singular = std::collections::BTreeSet::new();
+    for kind in JoinKind::ALL {
+        for same in [true, false] {
+            let join = thesis_join(kind, same, vec![]);
+            let setup = trig_deriv::JoinSetup {
+                family: join.family,
+                first_params: &join.first_params,
+                second_params: &join.second_params,
+                wrt: Wrt::Angle,
+                h: (Sym::one(), Sym::one()),
+            };
+            match trig_deriv::solve_join(&setup, kind, &join.first, &join.second) {
+                Ok(solved) => {
+                    let conditions: Vec<String> = solved
+                        .forced
+                        .iter()
+                        .flat_map(|f| trig_deriv::vanishing(&f.pivot))
+                        .collect();
+                    singular.extend(conditions.iter().cloned());
+                    evidence.push(format!(
+                        "{kind} ({}): pivots vanish where {}",
+                        if same { "same m" } else { "different m" },
+                        if conditions.is_empty() {
+                            "never".to_string()
+                        } else {
+                            conditions.join(", ")
+                        }
+                    ));
+                }
+                Err(e) => evidence.push(format!("{kind}: {e}")),
+            }
+        }
+    }
+    // each shape parameter at −2, described by the same function
+    let expected: std::collections::BTreeSet<String> = ["m", "m1", "m2"]
+        .iter()
+        .flat_map(|name| trig_deriv::vanishing(&(v(name) + &n(2))))
+        .collect();
+    let only_minus_two = singular.is_subset(&expected);
+    let status = if only_minus_two && !singular.is_empty() {
+        Status::Holds
+    } else {
+        Status::Fails
+    };
+    evidence.push(format!(
+        "singular set over all joins: {}",
+        singular.into_iter().collect::<Vec<_>>().join(", ")
+    ));
+    Verdict::new(
+        status,
+        "pivots of the exact join solution (Gauss–Jordan over Q(m, α, β)) and where they vanish",
+        evidence,
+    )
+}

@@ -1,0 +1,657 @@
+//! Knot continuity of piecewise functions, exactly in the symbolic ring.
+//!
+//! A piecewise function is a list of pieces, each given by its one-sided
+//! derivatives of orders `0…6` at its two ends, in the *global* knot
+//! parameter. At the knot between pieces `i` and `i + 1` the jump of order
+//! `r` is `f_{i+1}^{(r)}(start) − f_i^{(r)}(end)`; a B-spline basis function
+//! is extended by zero outside its support, so its first and last knots are
+//! joins with the zero function. The continuity order achieved at a knot is
+//! `C^r` when the jumps of orders `0…r` vanish identically (for all parameter
+//! values) and the jump of order `r + 1` does not; the parameter values where
+//! that jump vanishes (rational roots of its exact numerator) are listed with
+//! the order achieved there.
+//!
+//! Adaptors build pieces from the catalog: the uniform B-spline basis
+//! function of a piecewise family ([`uniform_bspline`]), a polynomial or
+//! rational curve segment ([`curve_piece`]), and seed 000's non-uniform
+//! B-spline with the printed coefficients (2)–(3) ([`nonuniform_bspline`]).
+
+use std::collections::{BTreeMap, HashMap};
+use std::fmt;
+
+use rug::{Integer, Rational};
+use trig_core::families::seed000_nonuniform::NonUniform;
+use trig_core::{CoreError, Family};
+use trig_deriv::{End, Jet, Wrt, angle_atoms, curve_endpoint_derivatives, knot_derivatives};
+use trig_symbolic::{Monomial, Poly, Sym};
+
+/// How continuity is decided, as the report states it.
+pub const METHOD: &str = "exact one-sided derivatives of orders 0–6 (Taylor jets in the symbolic ring) at every knot; a jump is decided by the exact zero test; exceptional parameter values are the rational roots of the first nonzero jump's numerator";
+
+/// Highest derivative order examined.
+pub const MAX_ORDER: usize = 6;
+/// Jet length for orders `0…MAX_ORDER`.
+const K: usize = MAX_ORDER + 1;
+
+/// Why a piecewise function could not be assembled.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ContinuityError {
+    /// The family has no uniform B-spline segment functions.
+    NotPiecewise(String),
+    /// The construction itself is undefined (typed error of the catalog).
+    Construction(CoreError),
+}
+
+impl fmt::Display for ContinuityError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ContinuityError::NotPiecewise(id) => write!(
+                f,
+                "family `{id}` has no uniform B-spline segment functions (expected seed000-uniform or bspline3)"
+            ),
+            ContinuityError::Construction(e) => write!(f, "the construction is undefined: {e}"),
+        }
+    }
+}
+
+impl std::error::Error for ContinuityError {}
+
+impl From<CoreError> for ContinuityError {
+    fn from(e: CoreError) -> Self {
+        ContinuityError::Construction(e)
+    }
+}
+
+/// One piece: derivatives of orders `0…MAX_ORDER` at its start and end.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Piece {
+    pub start: Vec<Sym>,
+    pub end: Vec<Sym>,
+}
+
+/// Continuity order at a knot.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Smoothness {
+    /// The value itself jumps.
+    Discontinuous,
+    /// `C^r` and not `C^{r+1}`: the jump of order `r + 1` is nonzero.
+    Exactly(usize),
+    /// Every jump of order `0…MAX_ORDER` vanishes.
+    AtLeast(usize),
+}
+
+impl Smoothness {
+    /// From the jumps of orders `0…`: the first nonzero one decides.
+    pub fn of(jumps: &[Sym]) -> Smoothness {
+        match jumps.iter().position(|j| !j.is_zero()) {
+            Some(0) => Smoothness::Discontinuous,
+            Some(r) => Smoothness::Exactly(r - 1),
+            None => Smoothness::AtLeast(jumps.len() - 1),
+        }
+    }
+
+    /// `r` for `C^r` (−1 when discontinuous), for comparisons.
+    pub fn rank(&self) -> i64 {
+        match self {
+            Smoothness::Discontinuous => -1,
+            Smoothness::Exactly(r) | Smoothness::AtLeast(r) => *r as i64,
+        }
+    }
+
+    /// True when the function is at least `C^r` at the knot.
+    pub fn is_at_least(&self, r: usize) -> bool {
+        self.rank() >= r as i64
+    }
+}
+
+impl fmt::Display for Smoothness {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Smoothness::Discontinuous => f.write_str("discontinuous (C^-1)"),
+            Smoothness::Exactly(r) => write!(f, "exactly C^{r}"),
+            Smoothness::AtLeast(r) => write!(f, "at least C^{r} (jumps of orders 0–{r} vanish)"),
+        }
+    }
+}
+
+/// The continuity at a parameter value where the generic first jump vanishes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Exception {
+    pub value: Rational,
+    pub smoothness: Smoothness,
+    /// The first nonzero jump there (order, value).
+    pub jump: Option<(usize, Sym)>,
+}
+
+/// Continuity at one knot.
+#[derive(Debug, Clone, PartialEq)]
+pub struct KnotContinuity {
+    /// Knot index (0 = first knot of the first piece).
+    pub knot: usize,
+    /// `right − left`, orders `0…MAX_ORDER`.
+    pub jumps: Vec<Sym>,
+    /// Order achieved for all parameter values.
+    pub smoothness: Smoothness,
+    /// Parameter values where the generic first jump vanishes.
+    pub exceptions: Vec<Exception>,
+    /// Rational roots could not all be searched (coefficients too large).
+    pub roots_incomplete: bool,
+}
+
+impl KnotContinuity {
+    /// The first nonzero jump (order, value).
+    pub fn first_jump(&self) -> Option<(usize, &Sym)> {
+        first_jump(&self.jumps)
+    }
+
+    /// One line for the report.
+    pub fn describe(&self, param: Option<&str>) -> String {
+        let mut line = format!("knot {}: {}", self.knot, self.smoothness);
+        if let Some((r, j)) = self.first_jump() {
+            line.push_str(&format!("; jump of order {r} = {j}"));
+        }
+        let p = param.unwrap_or("parameter");
+        for e in &self.exceptions {
+            line.push_str(&format!("; at {p} = {}: {}", e.value, e.smoothness));
+            if let Some((r, j)) = &e.jump {
+                line.push_str(&format!(" (order-{r} jump {j})"));
+            }
+        }
+        if self.roots_incomplete {
+            line.push_str("; (rational-root search incomplete: coefficients too large)");
+        }
+        line
+    }
+}
+
+fn first_jump(jumps: &[Sym]) -> Option<(usize, &Sym)> {
+    jumps.iter().enumerate().find(|(_, j)| !j.is_zero())
+}
+
+/// The jumps at every knot of consecutive `pieces`. With `zero_outside`, the
+/// function is zero before the first and after the last piece (B-spline
+/// basis functions); otherwise only the interior knots are examined (their
+/// indices still count from the first knot).
+pub fn knot_jumps(pieces: &[Piece], zero_outside: bool) -> Vec<(usize, Vec<Sym>)> {
+    let zeros = vec![Sym::zero(); K];
+    let mut out = Vec::new();
+    for knot in 0..=pieces.len() {
+        let left = if knot == 0 {
+            zero_outside.then_some(&zeros)
+        } else {
+            Some(&pieces[knot - 1].end)
+        };
+        let right = if knot == pieces.len() {
+            zero_outside.then_some(&zeros)
+        } else {
+            Some(&pieces[knot].start)
+        };
+        if let (Some(l), Some(r)) = (left, right) {
+            let jumps = r.iter().zip(l).map(|(a, b)| a.clone() - b).collect();
+            out.push((knot, jumps));
+        }
+    }
+    out
+}
+
+/// Continuity at every knot, with the exceptional values of `param` (the one
+/// shape parameter, if any) where the generic first jump vanishes.
+pub fn continuity(
+    pieces: &[Piece],
+    zero_outside: bool,
+    param: Option<&str>,
+) -> Vec<KnotContinuity> {
+    knot_jumps(pieces, zero_outside)
+        .into_iter()
+        .map(|(knot, jumps)| classify(knot, jumps, param))
+        .collect()
+}
+
+/// Smoothness of the jumps, and the exceptions in `param`.
+pub fn classify(knot: usize, jumps: Vec<Sym>, param: Option<&str>) -> KnotContinuity {
+    let smoothness = Smoothness::of(&jumps);
+    let mut exceptions = Vec::new();
+    let mut roots_incomplete = false;
+    if let (Some(name), Some((_, j))) = (param, first_jump(&jumps)) {
+        let (roots, complete) = rational_roots(j.numerator(), name);
+        roots_incomplete = !complete;
+        for value in roots {
+            let at: Option<Vec<Sym>> = jumps
+                .iter()
+                .map(|x| x.try_subs(name, &Sym::rational(value.clone())).ok())
+                .collect();
+            if let Some(at) = at {
+                exceptions.push(Exception {
+                    value,
+                    smoothness: Smoothness::of(&at),
+                    jump: first_jump(&at).map(|(r, j)| (r, j.clone())),
+                });
+            }
+        }
+    }
+    KnotContinuity {
+        knot,
+        jumps,
+        smoothness,
+        exceptions,
+        roots_incomplete,
+    }
+}
+
+/// The least order achieved over all knots (for all parameter values).
+pub fn achieved(knots: &[KnotContinuity]) -> Option<Smoothness> {
+    knots
+        .iter()
+        .map(|k| k.smoothness)
+        .min_by_key(Smoothness::rank)
+}
+
+/// Largest coefficient (in absolute value) whose divisors are enumerated.
+const DIVISOR_LIMIT: u64 = 1 << 40;
+
+/// The rational roots `v` of `p` in `var` such that `p(var := v)` vanishes
+/// identically in the other variables, sorted; `false` when some candidate
+/// divisors were not enumerated (coefficient beyond [`DIVISOR_LIMIT`]).
+pub fn rational_roots(p: &Poly, var: &str) -> (Vec<Rational>, bool) {
+    if p.is_zero() || p.degree_in(var) == 0 {
+        return (Vec::new(), true);
+    }
+    // one coefficient group (fixed monomial in the other variables) gives a
+    // univariate polynomial whose roots include every common root
+    let mut groups: HashMap<Monomial, BTreeMap<u32, Rational>> = HashMap::new();
+    for (m, q) in p.terms() {
+        let (rest, e) = m.split(var);
+        *groups.entry(rest).or_default().entry(e).or_default() += q;
+    }
+    let Some(group) = groups.values().max_by_key(|g| g.len()) else {
+        return (Vec::new(), true);
+    };
+    let lcm = group
+        .values()
+        .fold(Integer::from(1), |acc, q| acc.lcm(q.denom()));
+    let coeffs: BTreeMap<u32, Integer> = group
+        .iter()
+        .filter(|(_, q)| **q != 0)
+        .map(|(e, q)| (*e, (q.clone() * &lcm).numer().clone()))
+        .collect();
+    let (Some((&low_e, low)), Some((_, high))) = (coeffs.iter().next(), coeffs.iter().next_back())
+    else {
+        return (Vec::new(), true);
+    };
+    let mut candidates = Vec::new();
+    if low_e > 0 {
+        candidates.push(Rational::new());
+    }
+    let (num_div, ok1) = divisors(low);
+    let (den_div, ok2) = divisors(high);
+    for a in &num_div {
+        for b in &den_div {
+            let r = Rational::from((a.clone(), b.clone()));
+            candidates.push(r.clone());
+            candidates.push(-r);
+        }
+    }
+    candidates.sort();
+    candidates.dedup();
+    let roots = candidates
+        .into_iter()
+        .filter(|v| p.subs(var, &Poly::constant(v.clone())).is_zero())
+        .collect();
+    (roots, ok1 && ok2)
+}
+
+/// Positive divisors of `|n|` by trial division; `false` beyond the limit.
+fn divisors(n: &Integer) -> (Vec<Integer>, bool) {
+    let n = n.clone().abs();
+    let Some(small) = n.to_u64().filter(|v| *v <= DIVISOR_LIMIT) else {
+        return (vec![Integer::from(1)], false);
+    };
+    let mut out = Vec::new();
+    let mut d = 1u64;
+    while d * d <= small {
+        if small % d == 0 {
+            out.push(Integer::from(d));
+            out.push(Integer::from(small / d));
+        }
+        d += 1;
+    }
+    out.sort();
+    out.dedup();
+    (out, true)
+}
+
+/// The four pieces of the uniform B-spline basis function assembled from a
+/// piecewise family's segment functions (piece `k` is function `3 − k`),
+/// unit knot spacing, derivatives in the global knot parameter `n`.
+pub fn uniform_bspline(family: Family, params: &[Sym]) -> Result<Vec<Piece>, ContinuityError> {
+    if !family.info().piecewise {
+        return Err(ContinuityError::NotPiecewise(family.info().id.to_string()));
+    }
+    let knots = knot_derivatives::<Sym, K>(family, params, Wrt::U, &Sym::one());
+    Ok(knots
+        .windows(2)
+        .map(|w| Piece {
+            start: w[0]
+                .right
+                .clone()
+                .expect("a right limit before the last knot"),
+            end: w[1]
+                .left
+                .clone()
+                .expect("a left limit after the first knot"),
+        })
+        .collect())
+}
+
+/// One segment of a curve `Σ bᵢPᵢ` (or, with weights, `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ`)
+/// of `family` on a unit knot interval, derivatives in the global parameter.
+/// `points` are one coordinate of each control point or symbols.
+///
+/// # Panics
+/// As [`curve_end`].
+pub fn curve_piece(
+    family: Family,
+    params: &[Sym],
+    points: &[Sym],
+    weights: Option<&[Sym]>,
+) -> Piece {
+    Piece {
+        start: curve_end(family, params, points, weights, End::Start),
+        end: curve_end(family, params, points, weights, End::End),
+    }
+}
+
+/// The derivatives of orders `0…MAX_ORDER` of one segment of a curve (as in
+/// [`curve_piece`]) at one end. The rational curve is the quotient of the
+/// polynomial curves with control points `wᵢPᵢ` and `wᵢ`
+/// ([`quotient_derivatives`]).
+///
+/// # Panics
+/// If `weights` do not have one entry per control point, or the weight
+/// function `Σ wᵢbᵢ` vanishes at the end.
+pub fn curve_end(
+    family: Family,
+    params: &[Sym],
+    points: &[Sym],
+    weights: Option<&[Sym]>,
+    end: End,
+) -> Vec<Sym> {
+    let one = Sym::one();
+    let curve = |points: &[Sym]| {
+        curve_endpoint_derivatives::<Sym, K>(family, params, points, None, end, Wrt::U, &one)
+    };
+    match weights {
+        None => curve(points),
+        Some(w) => {
+            assert_eq!(w.len(), points.len(), "one weight per control point");
+            let weighted: Vec<Sym> = points.iter().zip(w).map(|(p, wi)| p.clone() * wi).collect();
+            quotient_derivatives(&[&curve(&weighted)], &curve(w)).remove(0)
+        }
+    }
+}
+
+/// The derivatives of orders `0…` of quotients `qᵢ = nᵢ / w` sharing their
+/// denominator, from those of the `nᵢ` and of `w`, exactly. Sums of
+/// rational functions are expensive in the ring (each seeks
+/// cancellations), so everything runs on polynomials over the common
+/// denominator: the `nᵢ` and `w` are first multiplied by the common multiple
+/// of their denominators (which leaves the `qᵢ` unchanged); then, with
+/// `W₀ = w(0)`, Leibniz's rule for `w · (1/w) = 1` gives
+/// `(1/w)⁽ᵏ⁾ = ρₖ / W₀^{k+1}`, `ρ₀ = 1`,
+/// `ρₖ = −Σ_{j=1..k} C(k,j) w⁽ʲ⁾ W₀^{j−1} ρ_{k−j}`, and Leibniz's rule for
+/// `nᵢ · (1/w)` gives `qᵢ⁽ᵏ⁾ = Σ_{j=0..k} C(k,j) nᵢ⁽ᵏ⁻ʲ⁾ σ_{k,j} / W₀^{k+1}`
+/// with `σ_{k,j} = C(k,j) W₀^{k−j} ρⱼ` free of the `nᵢ` (computed once);
+/// each `qᵢ⁽ᵏ⁾` is reduced once.
+///
+/// # Panics
+/// If the lengths differ or `w(0) = 0`.
+pub fn quotient_derivatives(numerators: &[&[Sym]], w: &[Sym]) -> Vec<Vec<Sym>> {
+    let order = w.len();
+    assert!(
+        numerators.iter().all(|n| n.len() == order),
+        "as many derivatives of each numerator as of the denominator"
+    );
+    let mut common: BTreeMap<Poly, u32> = BTreeMap::new();
+    for x in numerators.iter().flat_map(|n| n.iter()).chain(w) {
+        for (f, e) in x.denominator() {
+            let at = common.entry(f.clone()).or_insert(0);
+            *at = (*at).max(*e);
+        }
+    }
+    let m = Sym::from_poly(
+        common
+            .iter()
+            .fold(Poly::one(), |acc, (f, e)| acc * &f.pow(*e)),
+    );
+    let cleared = |x: &[Sym]| -> Vec<Sym> { x.iter().map(|v| v.clone() * &m).collect() };
+    let w = cleared(w);
+    let binomial =
+        |k: usize, j: usize| Sym::rational(Rational::from(Integer::from(k).binomial(j as u32)));
+    // W₀⁰ … W₀^{order−1}
+    let mut w0_pow = vec![Sym::one()];
+    for k in 1..order {
+        w0_pow.push(w0_pow[k - 1].clone() * &w[0]);
+    }
+    let mut rho = vec![Sym::one()];
+    for k in 1..order {
+        let rk = (1..=k).fold(Sym::zero(), |acc, j| {
+            acc - &(binomial(k, j) * &w[j] * &w0_pow[j - 1] * &rho[k - j])
+        });
+        rho.push(rk);
+    }
+    let sigma: Vec<Vec<Sym>> = (0..order)
+        .map(|k| {
+            (0..=k)
+                .map(|j| binomial(k, j) * &w0_pow[k - j] * &rho[j])
+                .collect()
+        })
+        .collect();
+    let inv = Sym::one()
+        .checked_div(&w[0])
+        .expect("the denominator is nonzero at the point");
+    let mut inv_pow = vec![inv.clone()];
+    for k in 1..order {
+        inv_pow.push(inv_pow[k - 1].clone() * &inv);
+    }
+    numerators
+        .iter()
+        .map(|n| {
+            let n = cleared(n);
+            (0..order)
+                .map(|k| {
+                    let pk = (0..=k).fold(Sym::zero(), |acc, j| {
+                        acc + &(n[k - j].clone() * &sigma[k][j])
+                    });
+                    pk * &inv_pow[k]
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// The pieces of seed 000's B-spline basis function `F_j` of (1) with the
+/// printed non-uniform coefficients (2)–(3) over `knots`, shape parameter
+/// `xi`; derivatives in the global knot parameter `n` (on piece `i`,
+/// `t = π/2·(n − n_{j+i})/q_{j+i}`, so `d/dn = π/(2q_{j+i})·d/dt`).
+/// Pieces of zero length (coincident knots) do not exist and are skipped;
+/// every error of the printed formulas is returned as is.
+pub fn nonuniform_bspline(knots: &[Sym], xi: &Sym, j: i64) -> Result<Vec<Piece>, ContinuityError> {
+    let exact = NonUniform::new(knots.to_vec(), xi.clone());
+    let jets: NonUniform<Jet<Sym, K>> = NonUniform::new(
+        knots.iter().cloned().map(Jet::constant).collect(),
+        Jet::constant(xi.clone()),
+    );
+    let (zero, one) = (Sym::zero(), Sym::one());
+    let half_pi = Sym::pi() * &Sym::rational(Rational::from((1, 2)));
+    let start = angle_atoms::<Sym, K>(&zero, &one, zero.clone());
+    let end = angle_atoms::<Sym, K>(&one, &zero, half_pi.clone());
+    let mut pieces = Vec::new();
+    for piece in 0..4usize {
+        let q = exact.q(j + piece as i64)?;
+        if q.is_zero() {
+            continue;
+        }
+        let rate = half_pi.clone() / &q;
+        let derivs = |atoms: &trig_core::Atoms<Jet<Sym, K>>| -> Result<Vec<Sym>, CoreError> {
+            let f = jets.bspline_piece(j, piece, &atoms.s, &atoms.c)?;
+            Ok(scaled(&f, &rate))
+        };
+        pieces.push(Piece {
+            start: derivs(&start)?,
+            end: derivs(&end)?,
+        });
+    }
+    Ok(pieces)
+}
+
+/// The derivatives of a jet, the `k`-th multiplied by `rateᵏ`.
+fn scaled(f: &Jet<Sym, K>, rate: &Sym) -> Vec<Sym> {
+    let mut factor = Sym::one();
+    f.derivatives()
+        .into_iter()
+        .map(|d| {
+            let v = d * &factor;
+            factor = factor.clone() * rate;
+            v
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::exact::symbols;
+
+    #[test]
+    fn uniform_cubic_bspline_is_exactly_c2_at_every_knot() {
+        let pieces = uniform_bspline(Family::BSpline3, &[]).unwrap();
+        let knots = continuity(&pieces, true, None);
+        assert_eq!(knots.len(), 5);
+        for k in &knots {
+            assert_eq!(k.smoothness, Smoothness::Exactly(2), "knot {}", k.knot);
+        }
+        // third-derivative jumps of the cubic B-spline: 1, −4, 6, −4, 1
+        let third: Vec<Sym> = knots.iter().map(|k| k.jumps[3].clone()).collect();
+        let want = [1, -4, 6, -4, 1].map(Sym::int);
+        assert_eq!(third, want.to_vec());
+        assert_eq!(achieved(&knots), Some(Smoothness::Exactly(2)));
+    }
+
+    #[test]
+    fn quotient_derivatives_agree_with_jet_division() {
+        // 1/(1 − x) at 0: derivatives k!
+        let (one, zero) = (Sym::one(), Sym::zero());
+        let n = [one.clone(), zero.clone(), zero.clone(), zero.clone()];
+        let w = [one.clone(), -one.clone(), zero.clone(), zero];
+        let q = quotient_derivatives(&[&n], &w).remove(0);
+        assert_eq!(q, [1, 1, 2, 6].map(Sym::int).to_vec());
+        // symbolic, with denominators in n and w: the jet quotient's derivatives
+        let (a, b, m) = (Sym::var("a"), Sym::var("b"), Sym::var("m"));
+        let x = Jet::<Sym, 5>::variable(Sym::zero());
+        let c = |v: &Sym| Jet::<Sym, 5>::constant(v.clone());
+        let nj = (c(&a) + &(x.clone() * &c(&b)) + &(x.clone() * &x)) / &c(&(m.clone() + &one));
+        let wj = (c(&b) + &(x.clone() * &c(&m)) + &(x.clone() * &x * &x * &c(&a))) / &c(&m);
+        let want = (nj.clone() / &wj).derivatives();
+        let (nd, wd) = (nj.derivatives(), wj.derivatives());
+        let got = quotient_derivatives(&[&nd, &wd], &wd);
+        assert_eq!(got[0], want);
+        assert_eq!(got[1][0], one);
+        assert!(got[1][1..].iter().all(Sym::is_zero));
+        // a wrong derivative in n changes the quotient
+        let mut bad = nd.clone();
+        bad[2] = bad[2].clone() + &Sym::one();
+        assert_ne!(quotient_derivatives(&[&bad], &wd)[0], want);
+    }
+
+    #[test]
+    fn rational_curve_end_is_the_quotient_of_the_polynomial_curves() {
+        // weights all 1: the polynomial curve (Σ bᵢ = 1)
+        let p = symbols("P", 4);
+        let ones = vec![Sym::one(); 4];
+        for end in [End::Start, End::End] {
+            let plain = curve_end(Family::Bernstein3, &[], &p, None, end);
+            assert_eq!(
+                curve_end(Family::Bernstein3, &[], &p, Some(&ones), end),
+                plain
+            );
+        }
+        // rational cubic Bézier: C(0) = P0, C'(0) = 3 (w1/w0)(P1 − P0)
+        let w = symbols("w", 4);
+        let r = curve_end(Family::Bernstein3, &[], &p, Some(&w), End::Start);
+        assert_eq!(r[0], p[0]);
+        let slope = Sym::int(3) * &w[1] / &w[0] * &(p[1].clone() - &p[0]);
+        assert_eq!(r[1], slope);
+        assert_ne!(r[1], Sym::int(3) * &(p[1].clone() - &p[0]));
+    }
+
+    #[test]
+    fn a_family_without_segment_functions_is_a_typed_error() {
+        let err = uniform_bspline(Family::ThesisCubic, &[Sym::var("m")]).unwrap_err();
+        assert_eq!(err, ContinuityError::NotPiecewise("thesis-cubic".into()));
+    }
+
+    #[test]
+    fn bernstein_segments_join_as_the_textbook_conditions_say() {
+        // Q1 on P0..P3, Q2 on P3..P6: C⁰ by the shared point; C¹ iff
+        // P4 − P3 = P3 − P2; C² additionally iff P5 − 2P4 + P3 = P3 − 2P2 + P1.
+        let p = symbols("P", 7);
+        let join = |p: &[Sym]| {
+            let pieces = [
+                curve_piece(Family::Bernstein3, &[], &p[0..4], None),
+                curve_piece(Family::Bernstein3, &[], &p[3..7], None),
+            ];
+            continuity(&pieces, false, None).remove(0)
+        };
+        let k = join(&p);
+        assert_eq!(k.knot, 1);
+        assert_eq!(k.smoothness, Smoothness::Exactly(0));
+        let c1 = p[3].clone() * &Sym::int(2) - &p[2];
+        assert_eq!(k.jumps[1], (p[4].clone() - &c1) * &Sym::int(3));
+        let mut q = p.clone();
+        q[4] = c1;
+        assert_eq!(join(&q).smoothness, Smoothness::Exactly(1));
+        q[5] = p[1].clone() - &(p[2].clone() * &Sym::int(4)) + &(p[3].clone() * &Sym::int(4));
+        let k2 = join(&q);
+        assert_eq!(k2.smoothness, Smoothness::Exactly(2));
+        // a single cubic: orders ≥ 4 never jump
+        assert!(k2.jumps[4..].iter().all(Sym::is_zero));
+    }
+
+    #[test]
+    fn exceptional_parameter_values_are_the_rational_roots_of_the_jump() {
+        let z = Sym::var("zeta");
+        // jump ζ(ζ − 1)(2ζ + 3)(ζ² + 1)·π at order 1, then 5 at order 2
+        let j1 = z.clone()
+            * &(z.clone() - &Sym::one())
+            * &(z.clone() * &Sym::int(2) + &Sym::int(3))
+            * &(z.clone() * &z + &Sym::one())
+            * &Sym::pi();
+        let k = classify(1, vec![Sym::zero(), j1, Sym::int(5)], Some("zeta"));
+        assert_eq!(k.smoothness, Smoothness::Exactly(0));
+        let values: Vec<Rational> = k.exceptions.iter().map(|e| e.value.clone()).collect();
+        assert_eq!(
+            values,
+            vec![Rational::from((-3, 2)), Rational::new(), Rational::from(1)]
+        );
+        assert!(
+            k.exceptions
+                .iter()
+                .all(|e| e.smoothness == Smoothness::Exactly(1))
+        );
+        assert!(!k.roots_incomplete);
+        assert!(rational_roots(&Poly::var("x"), "y").0.is_empty());
+    }
+
+    #[test]
+    fn smoothness_reads_the_first_nonzero_jump() {
+        let (o, z) = (Sym::one(), Sym::zero());
+        assert_eq!(
+            Smoothness::of(std::slice::from_ref(&o)),
+            Smoothness::Discontinuous
+        );
+        assert_eq!(Smoothness::of(&[z.clone(), o]), Smoothness::Exactly(0));
+        assert_eq!(Smoothness::of(&[z.clone(), z]), Smoothness::AtLeast(1));
+        assert!(Smoothness::AtLeast(6).is_at_least(6));
+        assert!(!Smoothness::Exactly(3).is_at_least(4));
+    }
+}

@@ -1,0 +1,48 @@
+//! Figures that support a verdict where a picture helps, linked from the
+//! report. Each is drawn by `trig-audit plot` into `docs/figures/` with the
+//! command stated here (`./run.sh figures` redraws them all); the test
+//! `tests/figures.rs` checks that every file exists.
+
+/// A figure supporting the verdict of one claim.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Figure {
+    pub claim: &'static str,
+    /// Path from the repository root.
+    pub path: &'static str,
+    pub caption: &'static str,
+    /// The `trig-audit` arguments that draw it.
+    pub command: &'static str,
+}
+
+/// Every figure, by claim.
+pub const FIGURES: &[Figure] = &[
+    Figure {
+        claim: "T7",
+        path: "docs/figures/audit-T7-thesis-cubic-outside-range.svg",
+        caption: "the thesis cubic basis at m = −5/2, 0, 3/2: outside [−2, 1] functions dip below 0",
+        command: "plot basis --family thesis-cubic --values=-2.5,0,1.5 --allow-outside-range --output docs/figures/audit-T7-thesis-cubic-outside-range.svg",
+    },
+    Figure {
+        claim: "T30",
+        path: "docs/figures/audit-T30-han-versus-listing.svg",
+        caption: "the Appendix 2 listing's functions (b20 with sin) at λ = −1, 0, 1",
+        command: "plot basis --family han-listing --values=-1,0,1 --output docs/figures/audit-T30-han-versus-listing.svg",
+    },
+    Figure {
+        claim: "T24f",
+        path: "docs/figures/audit-T24f-table-4.6-g1.svg",
+        caption: "the G¹ interpolant of Table 4.6 as printed: it dips below 0 near x = 1.57",
+        command: "plot interp --data thesis-table-4.6 --scheme g1 --output docs/figures/audit-T24f-table-4.6-g1.svg",
+    },
+    Figure {
+        claim: "M2",
+        path: "docs/figures/audit-M2-seed000-uniform.svg",
+        caption: "the seed 000 uniform segment functions at ζ = 0, 1/2, 4",
+        command: "plot basis --family seed000-uniform --values=0,0.5,4 --output docs/figures/audit-M2-seed000-uniform.svg",
+    },
+];
+
+/// The figure of a claim, if any.
+pub fn for_claim(id: &str) -> Option<&'static Figure> {
+    FIGURES.iter().find(|f| f.claim == id)
+}

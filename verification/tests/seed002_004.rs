@@ -1,0 +1,170 @@
+//! Seeds 002 and 004, thesis T32: the verdicts this helper's checkers
+//! compute, and independent MPFR re-checks of the two-parameter certifier.
+
+use proptest::prelude::*;
+use rug::{Float, Rational};
+use trig_core::{Family, Mpfr, Real};
+use trig_verification::certify::nonneg::{BoxCertificate, ParamBox, certify_box};
+use trig_verification::certify::unimodal::{Maximum, profile};
+use trig_verification::exact::basis;
+use trig_verification::{Status, Verdict, run};
+
+const PREC: u32 = 256;
+
+fn verdict(id: &str) -> Verdict {
+    let mut o = run(None, Some(id));
+    assert_eq!(o.len(), 1, "{id}");
+    o.remove(0).verdict
+}
+
+fn has(v: &Verdict, needle: &str) -> bool {
+    v.evidence.iter().any(|e| e.contains(needle))
+}
+
+/// The EH bases at `t` in 256-bit MPFR through the catalog's numeric path.
+fn eh_at(lambda: &Rational, mu: &Rational, t: &Rational) -> Vec<Mpfr> {
+    let x = Mpfr(Float::with_val(PREC, t));
+    Family::Eh
+        .eval_at(&x, &[lambda.clone(), mu.clone()], true)
+        .expect("finite")
+}
+
+#[test]
+fn seed002_verdicts() {
+    assert_eq!(verdict("D4").status, Status::Holds);
+    assert_eq!(verdict("D11").status, Status::Holds);
+    let d6 = verdict("D6");
+    assert_eq!(d6.status, Status::Fails);
+    assert!(has(&d6, "29*P0*w1^2/w0^2"), "{:?}", d6.evidence);
+    assert_eq!(verdict("D6b").status, Status::Holds);
+    let d7 = verdict("D7");
+    assert_eq!(d7.status, Status::NotCheckable);
+    assert_eq!(
+        d7.evidence
+            .iter()
+            .filter(|e| e.contains("orders 0–2") && e.contains("exactly 0"))
+            .count(),
+        3
+    );
+}
+
+#[test]
+fn unimodality_is_refuted_for_a_function_with_two_maxima() {
+    // b0 + b5 of seed 002 is 1 at both ends and smaller inside
+    let b = basis(Family::Seed002Quartic);
+    let p = profile(&(b[0].clone() + &b[5]), true).unwrap();
+    assert_eq!(p.maxima, vec![Maximum::Start, Maximum::End]);
+    let p1 = profile(&b[1], true).unwrap();
+    assert!(matches!(p1.maxima[..], [Maximum::Interior(..)]));
+}
+
+#[test]
+fn seed004_join_and_interpolation_verdicts() {
+    let e1c = verdict("E1c");
+    assert_eq!(e1c.status, Status::Fails);
+    assert!(has(&e1c, "-y_i + y_i1"));
+    let e1cb = verdict("E1cb");
+    assert_eq!(e1cb.status, Status::HoldsAfterCorrection);
+    assert!(has(&e1cb, "(-d_i1*h_i + d_i1*h_i1)/h_i"));
+    let e14 = verdict("E14");
+    assert_eq!(e14.status, Status::Fails);
+    assert!(has(&e14, "-P1 + P3"));
+    assert_eq!(e14.correction.as_deref(), Some("derived: Q0 = P1, Q2 = P3"));
+    assert_eq!(verdict("E15").status, Status::NotCheckable);
+    assert_eq!(verdict("E15b").status, Status::Fails);
+    assert_eq!(verdict("E16").status, Status::Fails);
+    let e17 = verdict("E17");
+    assert_eq!(e17.status, Status::Fails);
+    assert!(has(&e17, "R2(0) − R1(1) = 2"));
+}
+
+#[test]
+fn e4_is_refuted_on_the_published_box_and_the_counterexample_rechecks() {
+    let e4 = verdict("E4");
+    assert_eq!(e4.status, Status::Fails);
+    let one = Rational::from(1);
+    let unit = ParamBox::Interval(-one.clone(), one);
+    let b = basis(Family::Eh);
+    let params = [("lambda", unit.clone()), ("mu", unit)];
+    for (i, f) in b.iter().enumerate() {
+        match certify_box(f, false, &params) {
+            BoxCertificate::NonNegative { .. } => assert!(i < 3, "b{i}"),
+            BoxCertificate::Counterexample { params, z, value } => {
+                assert_eq!(i, 3);
+                assert!(value < 0);
+                let v = &eh_at(&params[0], &params[1], &z)[i];
+                assert!(v.to_f64() < 0.0, "{v}");
+            }
+            other => panic!("b{i}: {other:?}"),
+        }
+    }
+}
+
+#[test]
+fn two_parameter_boxes_both_ways() {
+    // b0 = (1 − t)²(1 + 2t + λt²) ≥ 0 exactly for λ ≥ −3; μ does not enter
+    let b0 = &basis(Family::Eh)[0];
+    let q = |a: i64, b: i64| Rational::from((a, b));
+    let inside = [
+        ("lambda", ParamBox::Interval(q(-3, 1), q(5, 1))),
+        ("mu", ParamBox::Interval(q(-7, 1), q(7, 1))),
+    ];
+    assert!(matches!(
+        certify_box(b0, false, &inside),
+        BoxCertificate::NonNegative { .. }
+    ));
+    let beyond = [
+        ("lambda", ParamBox::Interval(q(-301, 100), q(-301, 100))),
+        ("mu", ParamBox::Interval(q(0, 1), q(1, 1))),
+    ];
+    match certify_box(b0, false, &beyond) {
+        BoxCertificate::Counterexample { params, z, value } => {
+            assert!(value < 0);
+            assert!(eh_at(&params[0], &params[1], &z)[0].to_f64() < 0.0);
+        }
+        other => panic!("{other:?}"),
+    }
+    // a half-line in λ: b0 ≥ 0 for λ ∈ [0, ∞)
+    let half = [
+        ("lambda", ParamBox::FromTo(q(0, 1))),
+        ("mu", ParamBox::Interval(q(0, 1), q(1, 1))),
+    ];
+    assert!(matches!(
+        certify_box(b0, false, &half),
+        BoxCertificate::NonNegative { .. }
+    ));
+}
+
+#[test]
+fn t32_table_arithmetic() {
+    let t32 = verdict("T32");
+    assert_eq!(t32.status, Status::Fails);
+    assert!(has(
+        &t32,
+        "Table 6.2 (Epsilon, proposed (I)): fails — TOTAL before total"
+    ));
+    assert!(has(&t32, "difference 0.8023"));
+    assert!(has(&t32, "Table 6.3 (Epsilon, Majeed (II)): holds"));
+    assert!(has(&t32, "computed 16.9426, difference -2.3255"));
+    assert!(has(
+        &t32,
+        "printed 10355.28, computed 10355.25, difference 0.03"
+    ));
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// b0, b1, b2 are certified ≥ 0 on λ, μ ∈ [−1, 1]; random points there
+    /// evaluate ≥ 0 in MPFR (values O(1), 256-bit rounding far below 1e-70).
+    #[test]
+    fn certified_eh_region_is_nonnegative_in_mpfr(
+        l in -1.0..=1.0f64, m in -1.0..=1.0f64, t in 0.0..=1.0f64
+    ) {
+        let r = |x: f64| Rational::from_f64(x).unwrap();
+        let v = eh_at(&r(l), &r(m), &r(t));
+        for (i, vi) in v.iter().take(3).enumerate() {
+            prop_assert!(vi.to_f64() >= -1e-70, "b{i} = {vi}");
+        }
+    }
+}
