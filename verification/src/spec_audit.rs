@@ -16,9 +16,11 @@ use trig_deriv::{End, Wrt, curve_endpoint_derivatives, endpoint_derivatives, kno
 use trig_spec::{Check, Condition, Printed, Spec, SpecClaim, SpecRange};
 use trig_symbolic::Sym;
 
-use crate::certify::evidence::{CERTIFIED, describe};
-use crate::certify::nonneg::{ParamBox, certify, describe_z};
-use crate::certify::range::{EndPoint, Outside, maximal_range};
+use crate::certify::evidence::{
+    CERTIFIED, Published, maximal_against, monotone_named, nonnegative_named,
+};
+use crate::certify::nonneg::ParamBox;
+use crate::certify::range::EndPoint;
 use crate::exact::{IDENTITY, at_end, identities, identity, reflect, sum, symbols};
 use crate::numeric::{PREC, differ, show};
 use crate::report::{Document, Entry};
@@ -364,22 +366,8 @@ fn printed_reflection(
 }
 
 fn nonnegative_on(spec: &Spec, fs: &[Sym], param: Option<&str>, bx: &ParamBox) -> Verdict {
-    let trig = spec.variable.is_trigonometric();
-    let mut status = Status::Holds;
-    let mut evidence = Vec::new();
-    for (f, func) in fs.iter().zip(&spec.functions) {
-        let (s, line) = describe(
-            &format!("{} ≥ 0", func.name),
-            &certify(f, trig, param, bx),
-            trig,
-            param,
-        );
-        if s != Status::Holds && status == Status::Holds {
-            status = s;
-        }
-        evidence.push(line);
-    }
-    Verdict::new(status, CERTIFIED, evidence)
+    let names: Vec<&str> = spec.functions.iter().map(|f| f.name.as_str()).collect();
+    nonnegative_named(spec.variable.is_trigonometric(), fs, &names, param, bx)
 }
 
 /// Several parameters: each function affine in every parameter is ≥ 0 on
@@ -456,34 +444,6 @@ fn nonnegativity(spec: &Spec) -> Verdict {
     }
 }
 
-fn show_end(e: &EndPoint, param: &str, trig: bool) -> String {
-    let outside = |o: &Outside| match o {
-        Outside::Counterexample(p, z, v) => format!(
-            "counterexample {param} = {p}, {}: value {v}",
-            describe_z(z, trig)
-        ),
-        Outside::Undecided(p) => format!("{param} = {p} not certified either way"),
-    };
-    match e {
-        EndPoint::Exact { value, outside: o } => {
-            format!("exact end {value}; just beyond, {}", outside(o))
-        }
-        EndPoint::Bracket {
-            ok,
-            bad,
-            outside: o,
-        } => {
-            format!(
-                "end in ({:.15}, {:.15}); {}",
-                ok.to_f64(),
-                bad.to_f64(),
-                outside(o)
-            )
-        }
-        EndPoint::Unbounded => "unbounded".into(),
-    }
-}
-
 /// A found end as a range end: exact ends and certified bracket sides are
 /// included, unbounded ends open.
 fn found_end(e: &EndPoint) -> trig_spec::range::End {
@@ -500,61 +460,34 @@ fn found_end(e: &EndPoint) -> trig_spec::range::End {
 fn maximal_versus_published(spec: &Spec, claimed: Option<&SpecRange>) -> Verdict {
     let p = &spec.params[0];
     let published = claimed.unwrap_or(&p.range);
-    let trig = spec.variable.is_trigonometric();
-    let start = published.interior_point();
-    let r = maximal_range(&spec.symbolic(), trig, &p.name, &start);
-    let (cs, cline) = describe(
-        "every function ≥ 0 on the maximal interval",
-        &r.certificate,
-        trig,
-        Some(&p.name),
-    );
-    let found = SpecRange {
-        lo: found_end(&r.lo),
-        hi: found_end(&r.hi),
-    };
-    let same = matches!(r.lo, EndPoint::Exact { .. } | EndPoint::Unbounded)
-        && matches!(r.hi, EndPoint::Exact { .. } | EndPoint::Unbounded)
-        && found == *published;
-    let status = if cs != Status::Holds {
-        cs
-    } else if same {
-        Status::Holds
-    } else {
-        Status::Fails
-    };
     let source = if claimed.is_some() {
         "as claimed".to_string()
     } else {
         p.source.clone()
     };
-    Verdict::new(
-        status,
-        CERTIFIED,
-        vec![
-            format!(
-                "published range of {}: {} ({})",
-                p.symbol, published, source
-            ),
-            format!("maximal interval containing {start} on which every function is ≥ 0: {found}"),
-            format!("lower end: {}", show_end(&r.lo, &p.name, trig)),
-            format!("upper end: {}", show_end(&r.hi, &p.name, trig)),
-            cline,
-        ],
+    let cited = Published {
+        name: &p.name,
+        symbol: &p.symbol,
+        range: published.to_string(),
+        source: &source,
+    };
+    maximal_against(
+        &spec.symbolic(),
+        spec.variable.is_trigonometric(),
+        &cited,
+        &published.interior_point(),
+        |r| {
+            let found = SpecRange {
+                lo: found_end(&r.lo),
+                hi: found_end(&r.hi),
+            };
+            (found.to_string(), found == *published)
+        },
     )
+    .1
 }
 
 fn monotone(spec: &Spec, index: usize, increasing: bool, range: Option<&SpecRange>) -> Verdict {
-    let trig = spec.variable.is_trigonometric();
-    let f = &spec.functions[index].value;
-    let d = if trig { f.d_angle() } else { f.d_t() };
-    let g = if increasing { d } else { -d };
-    let name = &spec.functions[index].name;
-    let what = if increasing {
-        format!("{name}' ≥ 0 ({name} increasing)")
-    } else {
-        format!("−{name}' ≥ 0 ({name} decreasing)")
-    };
     let (param, bx) = match (spec.params.as_slice(), range) {
         ([], _) => (None, point_box()),
         ([p], Some(r)) => match param_box(r) {
@@ -567,8 +500,15 @@ fn monotone(spec: &Spec, index: usize, increasing: bool, range: Option<&SpecRang
             );
         }
     };
-    let (status, line) = describe(&what, &certify(&g, trig, param, &bx), trig, param);
-    Verdict::new(status, CERTIFIED, vec![line])
+    let f = &spec.functions[index];
+    monotone_named(
+        &f.value,
+        &f.name,
+        spec.variable.is_trigonometric(),
+        increasing,
+        param,
+        &bx,
+    )
 }
 
 fn end_text(spec: &Spec, end: End) -> &'static str {

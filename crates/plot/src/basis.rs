@@ -5,8 +5,8 @@ use plotters::prelude::*;
 use rug::Rational;
 use trig_core::Family;
 
-use crate::error::{PlotError, Result, draw};
-use crate::style::{SIZE, colour, padded};
+use crate::error::{Result, draw};
+use crate::style::{SIZE, chart, colour, legend, padded, settings};
 
 /// Points per function.
 const SAMPLES: usize = 201;
@@ -18,22 +18,7 @@ const SAMPLES: usize = 201;
 /// Series: (functions) × max(1, values) curves plus the axis `y = 0`.
 pub fn basis_svg(family: Family, values: &[Rational], allow_outside: bool) -> Result<String> {
     let info = family.info();
-    let settings: Vec<Vec<Rational>> = match info.params.len() {
-        0 => vec![vec![]],
-        1 if !values.is_empty() => values.iter().map(|v| vec![v.clone()]).collect(),
-        1 => {
-            return Err(PlotError::Input(format!(
-                "give at least one value of {}",
-                info.params[0].name
-            )));
-        }
-        n => {
-            return Err(PlotError::Input(format!(
-                "`{}` has {n} parameters; basis plots vary one",
-                info.id
-            )));
-        }
-    };
+    let settings = settings(&info, values, "basis")?;
     for s in &settings {
         let pairs: Vec<(String, String)> = info
             .params
@@ -78,19 +63,14 @@ pub fn basis_svg(family: Family, values: &[Rational], allow_outside: bool) -> Re
             info.functions.join(", "),
             info.citation
         );
-        let mut chart = ChartBuilder::on(&root)
-            .caption(caption, ("sans-serif", 18))
-            .margin(12)
-            .x_label_area_size(45)
-            .y_label_area_size(55)
-            .build_cartesian_2d(0.0..end, ylo..yhi)
-            .map_err(draw)?;
-        chart
-            .configure_mesh()
-            .x_desc(variable)
-            .y_desc("basis function value")
-            .draw()
-            .map_err(draw)?;
+        let mut chart = chart(
+            &root,
+            caption,
+            (0.0, end),
+            (ylo, yhi),
+            variable,
+            "basis function value",
+        )?;
         chart
             .draw_series(LineSeries::new(
                 [(0.0, 0.0), (end, 0.0)],
@@ -115,13 +95,7 @@ pub fn basis_svg(family: Family, values: &[Rational], allow_outside: bool) -> Re
                 }
             }
         }
-        chart
-            .configure_series_labels()
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .position(SeriesLabelPosition::UpperRight)
-            .draw()
-            .map_err(draw)?;
+        legend(&mut chart)?;
         root.present().map_err(draw)?;
     }
     Ok(svg)

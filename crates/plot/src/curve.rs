@@ -7,7 +7,7 @@ use rug::Rational;
 use trig_core::Family;
 
 use crate::error::{PlotError, Result, draw};
-use crate::style::{SIZE, colour, equal_aspect, padded};
+use crate::style::{SIZE, chart, colour, equal_aspect, legend, padded, settings};
 
 /// Points per curve.
 const SAMPLES: usize = 201;
@@ -37,22 +37,7 @@ pub fn curve_svg(
     {
         return Err(PlotError::Input("control points must be finite".into()));
     }
-    let settings: Vec<Vec<Rational>> = match info.params.len() {
-        0 => vec![vec![]],
-        1 if !values.is_empty() => values.iter().map(|v| vec![v.clone()]).collect(),
-        1 => {
-            return Err(PlotError::Input(format!(
-                "give at least one value of {}",
-                info.params[0].name
-            )));
-        }
-        n => {
-            return Err(PlotError::Input(format!(
-                "`{}` has {n} parameters; curve plots vary one",
-                info.id
-            )));
-        }
-    };
+    let settings = settings(&info, values, "curve")?;
     let end = info.variable.end(&1.0_f64);
     let mut curves = Vec::new();
     for s in &settings {
@@ -93,19 +78,7 @@ pub fn curve_svg(
             "{} curve with its control polygon — {}",
             info.id, info.citation
         );
-        let mut chart = ChartBuilder::on(&root)
-            .caption(caption, ("sans-serif", 18))
-            .margin(12)
-            .x_label_area_size(45)
-            .y_label_area_size(55)
-            .build_cartesian_2d(xr.0..xr.1, yr.0..yr.1)
-            .map_err(draw)?;
-        chart
-            .configure_mesh()
-            .x_desc("x")
-            .y_desc("y")
-            .draw()
-            .map_err(draw)?;
+        let mut chart = chart(&root, caption, (xr.0, xr.1), (yr.0, yr.1), "x", "y")?;
         let grey = RGBColor(90, 90, 90);
         chart
             .draw_series(LineSeries::new(
@@ -130,13 +103,7 @@ pub fn curve_svg(
                 .label(label)
                 .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], c.stroke_width(2)));
         }
-        chart
-            .configure_series_labels()
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .position(SeriesLabelPosition::UpperRight)
-            .draw()
-            .map_err(draw)?;
+        legend(&mut chart)?;
         root.present().map_err(draw)?;
     }
     Ok(svg)

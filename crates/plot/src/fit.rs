@@ -5,7 +5,7 @@ use plotters::prelude::*;
 use trig_fit::{Outline, OutlineFit};
 
 use crate::error::{Result, draw};
-use crate::style::{SIZE, colour, equal_aspect, padded};
+use crate::style::{SIZE, chart, colour, equal_aspect, legend, padded};
 
 /// Points drawn per fitted segment.
 const SAMPLES: usize = 60;
@@ -65,19 +65,14 @@ pub fn fit_svg(outline: &Outline, fit: &OutlineFit) -> Result<String> {
             params,
             fit.segments.len()
         );
-        let mut chart = ChartBuilder::on(&root)
-            .caption(caption, ("sans-serif", 18))
-            .margin(12)
-            .x_label_area_size(45)
-            .y_label_area_size(55)
-            .build_cartesian_2d(xr.0..xr.1, yr.0..yr.1)
-            .map_err(draw)?;
-        chart
-            .configure_mesh()
-            .x_desc("x (px, 512 px per em)")
-            .y_desc("y (px)")
-            .draw()
-            .map_err(draw)?;
+        let mut chart = chart(
+            &root,
+            caption,
+            (xr.0, xr.1),
+            (yr.0, yr.1),
+            "x (px, 512 px per em)",
+            "y (px)",
+        )?;
         let grey = RGBColor(150, 150, 150);
         chart
             .draw_series(data.iter().map(|&p| Circle::new(p, 1, grey.filled())))
@@ -109,13 +104,7 @@ pub fn fit_svg(outline: &Outline, fit: &OutlineFit) -> Result<String> {
             .map_err(draw)?
             .label("breakpoints (segment ends, interpolated)")
             .legend(move |(x, y)| Cross::new((x + 10, y), 4, BLACK.stroke_width(2)));
-        chart
-            .configure_series_labels()
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .position(SeriesLabelPosition::UpperRight)
-            .draw()
-            .map_err(draw)?;
+        legend(&mut chart)?;
         root.present().map_err(draw)?;
     }
     Ok(svg)

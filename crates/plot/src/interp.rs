@@ -6,7 +6,7 @@
 use plotters::prelude::*;
 
 use crate::error::{PlotError, Result, draw};
-use crate::style::{SIZE, colour, padded};
+use crate::style::{SIZE, chart, colour, legend, padded};
 
 /// One interpolant: its legend label and its pieces, each a sampled polyline.
 #[derive(Debug, Clone, PartialEq)]
@@ -38,19 +38,7 @@ pub fn interp_svg(
     {
         let root = SVGBackend::with_string(&mut svg, SIZE).into_drawing_area();
         root.fill(&WHITE).map_err(draw)?;
-        let mut chart = ChartBuilder::on(&root)
-            .caption(title, ("sans-serif", 18))
-            .margin(12)
-            .x_label_area_size(45)
-            .y_label_area_size(55)
-            .build_cartesian_2d(xr.0..xr.1, yr.0..yr.1)
-            .map_err(draw)?;
-        chart
-            .configure_mesh()
-            .x_desc("x")
-            .y_desc("y = P(x)")
-            .draw()
-            .map_err(draw)?;
+        let mut chart = chart(&root, title, (xr.0, xr.1), (yr.0, yr.1), "x", "y = P(x)")?;
         chart
             .draw_series(LineSeries::new(
                 [(xr.0, 0.0), (xr.1, 0.0)],
@@ -75,13 +63,7 @@ pub fn interp_svg(
             .map_err(draw)?
             .label("data points")
             .legend(|(x, y)| Circle::new((x + 10, y), 4, BLACK.filled()));
-        chart
-            .configure_series_labels()
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .position(SeriesLabelPosition::UpperRight)
-            .draw()
-            .map_err(draw)?;
+        legend(&mut chart)?;
         root.present().map_err(draw)?;
     }
     Ok(svg)

@@ -46,12 +46,30 @@ pub fn nonnegative_on(
     param: Option<&str>,
     bx: &ParamBox,
 ) -> Verdict {
-    let trig = family.info().variable.is_trigonometric();
+    let info = family.info();
+    nonnegative_named(
+        info.variable.is_trigonometric(),
+        fs,
+        info.functions,
+        param,
+        bx,
+    )
+}
+
+/// The same for functions given with their names (any basis, a spec file's
+/// included): holds when every one is certified.
+pub fn nonnegative_named(
+    trig: bool,
+    fs: &[trig_symbolic::Sym],
+    names: &[impl AsRef<str>],
+    param: Option<&str>,
+    bx: &ParamBox,
+) -> Verdict {
     let mut status = Status::Holds;
     let mut evidence = Vec::new();
-    for (f, name) in fs.iter().zip(family.info().functions) {
+    for (f, name) in fs.iter().zip(names) {
         let (s, line) = describe(
-            &format!("{name} ≥ 0"),
+            &format!("{} ≥ 0", name.as_ref()),
             &certify(f, trig, param, bx),
             trig,
             param,
@@ -124,7 +142,8 @@ pub fn nonnegative_on_box(
     Verdict::new(status, CERTIFIED, evidence)
 }
 
-fn show_end(e: &EndPoint, param: &str, trig: bool) -> String {
+/// One end of a maximal interval, as the report shows it.
+pub fn show_end(e: &EndPoint, param: &str, trig: bool) -> String {
     let outside = |o: &Outside| match o {
         Outside::Counterexample(p, z, v) => {
             format!(
@@ -160,28 +179,66 @@ fn show_end(e: &EndPoint, param: &str, trig: bool) -> String {
 pub fn maximal_versus_published(family: Family) -> (MaximalRange, Verdict) {
     let info = family.info();
     let spec = info.params[0];
-    let trig = info.variable.is_trigonometric();
     let start = match (spec.range.lo.value(), spec.range.hi.value()) {
         (Some(a), Some(b)) => (a + b) / 2u32,
         (Some(a), None) => a + 1u32,
         (None, Some(b)) => b - 1u32,
         (None, None) => Rational::new(),
     };
-    let fs = basis(family);
-    let r = maximal_range(&fs, trig, spec.name, &start);
+    let published = Published {
+        name: spec.name,
+        symbol: spec.symbol,
+        range: spec.range.to_string(),
+        source: spec.range_source,
+    };
+    maximal_against(
+        &basis(family),
+        info.variable.is_trigonometric(),
+        &published,
+        &start,
+        |r| {
+            let found = Range {
+                lo: end_bound(&r.lo),
+                hi: end_bound(&r.hi),
+            };
+            (found.to_string(), found == spec.range)
+        },
+    )
+}
+
+/// A published parameter range, as the report cites it.
+#[derive(Debug, Clone)]
+pub struct Published<'a> {
+    pub name: &'a str,
+    pub symbol: &'a str,
+    /// The range as printed.
+    pub range: String,
+    pub source: &'a str,
+}
+
+/// The maximal nonnegativity interval of `fs` around `start`, compared with
+/// the published range: `found` shows the interval and says whether it is the
+/// published one. Holds when it is and both ends are exact (or unbounded),
+/// fails otherwise; the interval and certificates are evidence.
+pub fn maximal_against(
+    fs: &[trig_symbolic::Sym],
+    trig: bool,
+    published: &Published<'_>,
+    start: &Rational,
+    found: impl Fn(&MaximalRange) -> (String, bool),
+) -> (MaximalRange, Verdict) {
+    let name = published.name;
+    let r = maximal_range(fs, trig, name, start);
     let (cs, cline) = describe(
         "every function ≥ 0 on the maximal interval",
         &r.certificate,
         trig,
-        Some(spec.name),
+        Some(name),
     );
-    let found = Range {
-        lo: end_bound(&r.lo),
-        hi: end_bound(&r.hi),
-    };
+    let (found_text, equal) = found(&r);
     let same = matches!(r.lo, EndPoint::Exact { .. } | EndPoint::Unbounded)
         && matches!(r.hi, EndPoint::Exact { .. } | EndPoint::Unbounded)
-        && found == spec.range;
+        && equal;
     let status = if cs != Status::Holds {
         cs
     } else if same {
@@ -192,14 +249,11 @@ pub fn maximal_versus_published(family: Family) -> (MaximalRange, Verdict) {
     let evidence = vec![
         format!(
             "published range of {}: {} ({})",
-            spec.symbol, spec.range, spec.range_source
+            published.symbol, published.range, published.source
         ),
-        format!(
-            "maximal interval containing {start} on which every function is ≥ 0: {}",
-            found
-        ),
-        format!("lower end: {}", show_end(&r.lo, spec.name, trig)),
-        format!("upper end: {}", show_end(&r.hi, spec.name, trig)),
+        format!("maximal interval containing {start} on which every function is ≥ 0: {found_text}"),
+        format!("lower end: {}", show_end(&r.lo, name, trig)),
+        format!("upper end: {}", show_end(&r.hi, name, trig)),
         cline,
     ];
     let verdict = Verdict::new(status, CERTIFIED, evidence);
@@ -252,11 +306,27 @@ pub fn monotone(
     bx: &ParamBox,
 ) -> Verdict {
     let info = family.info();
-    let trig = info.variable.is_trigonometric();
-    let f = &basis(family)[index];
+    monotone_named(
+        &basis(family)[index],
+        info.functions[index],
+        info.variable.is_trigonometric(),
+        increasing,
+        param,
+        bx,
+    )
+}
+
+/// The same for one function `f` named `name` (any basis).
+pub fn monotone_named(
+    f: &trig_symbolic::Sym,
+    name: &str,
+    trig: bool,
+    increasing: bool,
+    param: Option<&str>,
+    bx: &ParamBox,
+) -> Verdict {
     let d = if trig { f.d_angle() } else { f.d_t() };
     let g = if increasing { d } else { -d };
-    let name = info.functions[index];
     let what = if increasing {
         format!("{name}' ≥ 0 ({name} increasing)")
     } else {

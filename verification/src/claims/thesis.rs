@@ -19,7 +19,8 @@ use crate::exact::{
 use crate::numeric::{differ, half_pi_minus, point, show, value};
 use crate::verdict::{Status, Verdict};
 
-const fn claim(
+/// A claim of the thesis (seed 001); shared by the thesis claim files.
+pub(super) const fn claim(
     id: &'static str,
     source: &'static str,
     statement: &'static str,

@@ -16,24 +16,10 @@ use trig_interp::{
 };
 use trig_symbolic::Sym;
 
-use crate::claim::{Claim, Seed};
+use super::thesis::claim;
+use crate::claim::Claim;
 use crate::exact::{IDENTITY, identities};
 use crate::verdict::{Status, Verdict};
-
-const fn claim(
-    id: &'static str,
-    source: &'static str,
-    statement: &'static str,
-    check: fn() -> Verdict,
-) -> Claim {
-    Claim {
-        id,
-        seed: Seed::S001,
-        source,
-        statement,
-        check,
-    }
-}
 
 pub const CLAIMS: &[Claim] = &[
     claim(

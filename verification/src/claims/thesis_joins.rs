@@ -14,27 +14,13 @@ use trig_core::Family;
 use trig_deriv::{End, JoinKind, Wrt, curve_endpoint_derivatives, endpoint_derivatives};
 use trig_symbolic::Sym;
 
-use crate::claim::{Claim, Seed};
+use super::thesis::claim;
+use crate::claim::Claim;
 use crate::exact::{identities, symbols};
 use crate::joins::{Printed, PrintedJoin, audit, audit_surface};
 use crate::verdict::{Status, Verdict};
 
 mod cylinder;
-
-const fn claim(
-    id: &'static str,
-    source: &'static str,
-    statement: &'static str,
-    check: fn() -> Verdict,
-) -> Claim {
-    Claim {
-        id,
-        seed: Seed::S001,
-        source,
-        statement,
-        check,
-    }
-}
 
 pub const CLAIMS: &[Claim] = &[
     claim(
