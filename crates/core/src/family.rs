@@ -410,17 +410,7 @@ impl Family {
         if !self.has_formulas() {
             return Err(CoreError::NoFormulas(info.id.to_string()));
         }
-        if !x.is_finite() {
-            return Err(CoreError::NotFinite {
-                what: "the evaluation point".into(),
-            });
-        }
-        if !allow_outside && !info.variable.contains(x) {
-            return Err(CoreError::PointOutsideDomain {
-                value: format!("{}", x.to_f64()),
-                domain: info.variable.domain().into(),
-            });
-        }
+        info.variable.check_point(x, allow_outside)?;
         let params: Vec<T> = p.iter().map(|q| x.rational(q)).collect();
         let values = self.eval(&info.variable.atoms(x), &params);
         if values.iter().any(|v| !v.is_finite()) {

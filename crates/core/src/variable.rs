@@ -16,6 +16,23 @@ pub enum Variable {
 }
 
 impl Variable {
+    /// Checks an evaluation point: finite, and inside the domain unless
+    /// `allow_outside`.
+    pub fn check_point<T: Real>(&self, x: &T, allow_outside: bool) -> crate::error::Result<()> {
+        if !x.is_finite() {
+            return Err(crate::error::CoreError::NotFinite {
+                what: "the evaluation point".into(),
+            });
+        }
+        if !allow_outside && !self.contains(x) {
+            return Err(crate::error::CoreError::PointOutsideDomain {
+                value: format!("{}", x.to_f64()),
+                domain: self.domain().into(),
+            });
+        }
+        Ok(())
+    }
+
     /// The domain as printed.
     pub fn domain(&self) -> &'static str {
         match self {

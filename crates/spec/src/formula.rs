@@ -22,7 +22,7 @@
 //! recurrences). `−`, `·`, `×` are accepted for `-`, `*`.
 
 use rug::Rational;
-use trig_core::{Variable, parse_exact};
+use trig_core::{Ring, Variable, parse_exact};
 use trig_symbolic::Sym;
 
 use crate::error::FormulaError;
@@ -292,7 +292,7 @@ impl Parser<'_, '_> {
         };
         self.at += 1;
         let exponent = u32::try_from(n).unwrap_or(0);
-        let raised = pow(&base, exponent);
+        let raised = base.powi(exponent);
         if negative {
             self.divide(Sym::one(), &raised, pos)
         } else {
@@ -504,23 +504,6 @@ fn number(text: &str, pos: usize) -> Result<Sym, FormulaError> {
         )
     })?;
     Ok(Sym::rational(q))
-}
-
-/// `xⁿ` by repeated squaring.
-fn pow(x: &Sym, n: u32) -> Sym {
-    let mut result = Sym::one();
-    let mut base = x.clone();
-    let mut e = n;
-    while e > 0 {
-        if e & 1 == 1 {
-            result = result * &base;
-        }
-        e >>= 1;
-        if e > 0 {
-            base = base.clone() * &base;
-        }
-    }
-    result
 }
 
 /// `(sin kθ, cos kθ)` in `s`, `c`: `sₖ = 2c·sₖ₋₁ − sₖ₋₂`, `cₖ = 2c·cₖ₋₁ − cₖ₋₂`.

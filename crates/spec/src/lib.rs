@@ -162,17 +162,7 @@ impl Spec {
         p: &[Rational],
         allow_outside: bool,
     ) -> Result<Vec<T>, CoreError> {
-        if !x.is_finite() {
-            return Err(CoreError::NotFinite {
-                what: "the evaluation point".into(),
-            });
-        }
-        if !allow_outside && !self.variable.contains(x) {
-            return Err(CoreError::PointOutsideDomain {
-                value: format!("{}", x.to_f64()),
-                domain: self.variable.domain().into(),
-            });
-        }
+        self.variable.check_point(x, allow_outside)?;
         if p.len() != self.params.len() {
             return Err(CoreError::Count {
                 what: format!("parameters of `{}`", self.id),
