@@ -15,6 +15,7 @@ pub mod figures;
 pub mod joins;
 pub mod minimum;
 pub mod numeric;
+pub mod region_audit;
 pub mod report;
 pub mod spec_audit;
 pub mod verdict;

@@ -7,7 +7,8 @@ use rug::Rational;
 use trig_interp::Proof;
 use trig_symbolic::Sym;
 
-use crate::certify::nonneg::{Certificate, ParamBox, certify};
+use crate::certify::nonneg::{Certificate, certify};
+use trig_certify::ParamBox;
 
 /// Proves `f(θ) ≥ 0` on `[0, π/2]` (no shape parameter), or finds where it
 /// is negative.
@@ -16,10 +17,10 @@ pub fn prove(f: &Sym) -> Proof {
         f,
         true,
         None,
-        &ParamBox::Interval(Rational::new(), Rational::new()),
+        &ParamBox::closed(Rational::new(), Rational::new()),
     ) {
         Certificate::NonNegative { .. } => Proof::NonNegative,
         Certificate::Counterexample { z, .. } => Proof::Negative { z },
-        Certificate::Undecided(why) => Proof::Undecided(why),
+        Certificate::Pole(why) | Certificate::Undecided(why) => Proof::Undecided(why),
     }
 }

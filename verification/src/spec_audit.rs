@@ -19,12 +19,12 @@ use trig_symbolic::Sym;
 use crate::certify::evidence::{
     CERTIFIED, Published, maximal_against, monotone_named, nonnegative_named,
 };
-use crate::certify::nonneg::ParamBox;
-use crate::certify::range::EndPoint;
 use crate::exact::{IDENTITY, at_end, identities, identity, reflect, sum, symbols};
 use crate::numeric::{PREC, differ, show};
+use crate::region_audit::{self, Axis};
 use crate::report::{Document, Entry};
 use crate::verdict::{Status, Verdict};
+use trig_certify::ParamBox;
 
 /// Jet length: derivative orders `0..K`.
 const K: usize = 8;
@@ -108,15 +108,15 @@ pub fn decide(spec: &Spec, claim: &SpecClaim) -> Verdict {
                 let r = range
                     .clone()
                     .unwrap_or_else(|| spec.params[0].range.clone());
-                match param_box(&r) {
-                    Some(bx) => {
-                        nonnegative_on(spec, &spec.symbolic(), Some(&spec.params[0].name), &bx)
-                    }
-                    None => Verdict::not_checkable("a range unbounded below is not supported"),
-                }
+                nonnegative_on(
+                    spec,
+                    &spec.symbolic(),
+                    Some(&spec.params[0].name),
+                    &r.to_box(),
+                )
             }
             (0, _) => nonnegative_on(spec, &spec.symbolic(), None, &point_box()),
-            _ => corners(spec),
+            _ => several(spec, *maximal),
         },
         Check::Monotone { items, range } => {
             let r = range
@@ -170,16 +170,7 @@ fn params(spec: &Spec) -> Vec<Sym> {
 }
 
 fn point_box() -> ParamBox {
-    ParamBox::Interval(Rational::new(), Rational::new())
-}
-
-/// The closed hull of a range as a certification box.
-fn param_box(r: &SpecRange) -> Option<ParamBox> {
-    match (r.lo.value(), r.hi.value()) {
-        (Some(a), Some(b)) => Some(ParamBox::Interval(a.clone(), b.clone())),
-        (Some(a), None) => Some(ParamBox::FromTo(a.clone())),
-        _ => None,
-    }
+    ParamBox::closed(Rational::new(), Rational::new())
 }
 
 /// `Σ b_i − 1` when the names share a prefix (`b0, b1, …`), else the sum.
@@ -370,69 +361,35 @@ fn nonnegative_on(spec: &Spec, fs: &[Sym], param: Option<&str>, bx: &ParamBox) -
     nonnegative_named(spec.variable.is_trigonometric(), fs, &names, param, bx)
 }
 
-/// Several parameters: each function affine in every parameter is ≥ 0 on
-/// the box exactly when it is at the box's corners; others are not decided.
-fn corners(spec: &Spec) -> Verdict {
-    let mut bounds = Vec::new();
-    for p in &spec.params {
-        match (p.range.lo.value(), p.range.hi.value()) {
-            (Some(a), Some(b)) => bounds.push((p, a.clone(), b.clone())),
-            _ => {
-                return Verdict::not_checkable(format!(
-                    "several parameters with the unbounded range {} of {}: not supported",
-                    p.range, p.symbol
-                ));
+/// Several parameters: the box of declared ranges against the region —
+/// containment, and when `maximal`, equality (two parameters).
+fn several(spec: &Spec, maximal: bool) -> Verdict {
+    let axes: Vec<Axis<'_>> = spec
+        .params
+        .iter()
+        .map(|p| Axis {
+            name: &p.name,
+            symbol: &p.symbol,
+            set: p.range.to_box(),
+            source: &p.source,
+        })
+        .collect();
+    let names: Vec<&str> = spec.functions.iter().map(|f| f.name.as_str()).collect();
+    let (fs, trig) = (spec.symbolic(), spec.variable.is_trigonometric());
+    match <[Axis<'_>; 2]>::try_from(axes) {
+        Ok(two) if maximal => region_audit::maximal(&fs, &names, trig, two),
+        Ok(two) => region_audit::contained(&fs, &names, trig, &two),
+        Err(axes) => {
+            let mut v = region_audit::contained(&fs, &names, trig, &axes);
+            if maximal && v.status == Status::Holds {
+                v.status = Status::NotCheckable;
+                v.evidence.push(
+                    "maximality is decided for two parameters at most: containment only".into(),
+                );
             }
+            v
         }
     }
-    let fs = spec.symbolic();
-    if let Some(f) = spec.functions.iter().zip(&fs).find(|(_, f)| {
-        bounds
-            .iter()
-            .any(|(p, ..)| f.numerator().degree_in(&p.name) > 1 || !f.denominator().is_empty())
-    }) {
-        return Verdict::not_checkable(format!(
-            "{} is not affine in each parameter: nonnegativity over a box of several parameters is certified only for multi-affine functions (checked at the box corners)",
-            f.0.name
-        ));
-    }
-    let mut parts = Vec::new();
-    for mask in 0..(1u32 << bounds.len()) {
-        let corner: Vec<(String, Rational)> = bounds
-            .iter()
-            .enumerate()
-            .map(|(k, (p, a, b))| {
-                (
-                    p.name.clone(),
-                    if mask >> k & 1 == 0 {
-                        a.clone()
-                    } else {
-                        b.clone()
-                    },
-                )
-            })
-            .collect();
-        let at: Vec<Sym> = fs
-            .iter()
-            .map(|f| {
-                corner
-                    .iter()
-                    .fold(f.clone(), |g, (n, q)| g.subs(n, &Sym::rational(q.clone())))
-            })
-            .collect();
-        let label = corner
-            .iter()
-            .map(|(n, q)| format!("{n} = {q}"))
-            .collect::<Vec<_>>()
-            .join(", ");
-        parts.push((
-            format!("corner {label}"),
-            nonnegative_on(spec, &at, None, &point_box()),
-        ));
-    }
-    let mut v = Verdict::all(CERTIFIED, parts);
-    v.evidence.insert(0, "every function is affine in each parameter, so its minimum over the parameter box is attained at a corner".into());
-    v
 }
 
 /// The whole battery entry for nonnegativity.
@@ -440,18 +397,7 @@ fn nonnegativity(spec: &Spec) -> Verdict {
     match spec.params.len() {
         0 => nonnegative_on(spec, &spec.symbolic(), None, &point_box()),
         1 => maximal_versus_published(spec, None),
-        _ => corners(spec),
-    }
-}
-
-/// A found end as a range end: exact ends and certified bracket sides are
-/// included, unbounded ends open.
-fn found_end(e: &EndPoint) -> trig_spec::range::End {
-    match e {
-        EndPoint::Exact { value, .. } | EndPoint::Bracket { ok: value, .. } => {
-            trig_spec::range::End::Closed(value.clone())
-        }
-        EndPoint::Unbounded => trig_spec::range::End::Unbounded,
+        _ => several(spec, true),
     }
 }
 
@@ -469,20 +415,15 @@ fn maximal_versus_published(spec: &Spec, claimed: Option<&SpecRange>) -> Verdict
         name: &p.name,
         symbol: &p.symbol,
         range: published.to_string(),
+        set: published.to_box(),
         source: &source,
     };
+    let names: Vec<&str> = spec.functions.iter().map(|f| f.name.as_str()).collect();
     maximal_against(
         &spec.symbolic(),
+        &names,
         spec.variable.is_trigonometric(),
         &cited,
-        &published.interior_point(),
-        |r| {
-            let found = SpecRange {
-                lo: found_end(&r.lo),
-                hi: found_end(&r.hi),
-            };
-            (found.to_string(), found == *published)
-        },
     )
     .1
 }
@@ -490,10 +431,7 @@ fn maximal_versus_published(spec: &Spec, claimed: Option<&SpecRange>) -> Verdict
 fn monotone(spec: &Spec, index: usize, increasing: bool, range: Option<&SpecRange>) -> Verdict {
     let (param, bx) = match (spec.params.as_slice(), range) {
         ([], _) => (None, point_box()),
-        ([p], Some(r)) => match param_box(r) {
-            Some(bx) => (Some(p.name.as_str()), bx),
-            None => return Verdict::not_checkable("a range unbounded below is not supported"),
-        },
+        ([p], Some(r)) => (Some(p.name.as_str()), r.to_box()),
         _ => {
             return Verdict::not_checkable(
                 "monotonicity is certified for bases with at most one parameter",

@@ -24,6 +24,26 @@ impl Status {
         Status::NotCheckable,
     ];
 
+    /// The status of "every part holds" from the parts' statuses: a failed
+    /// part decides it (fails; a part that holds only after a correction
+    /// counts as failing as printed); otherwise an undecided part leaves it
+    /// not-checkable; otherwise it holds.
+    pub fn conjunction(parts: impl IntoIterator<Item = Status>) -> Status {
+        let mut undecided = false;
+        for s in parts {
+            match s {
+                Status::Fails | Status::HoldsAfterCorrection => return Status::Fails,
+                Status::NotCheckable => undecided = true,
+                Status::Holds => {}
+            }
+        }
+        if undecided {
+            Status::NotCheckable
+        } else {
+            Status::Holds
+        }
+    }
+
     /// The verdict as the report prints it.
     pub fn label(&self) -> &'static str {
         match self {
@@ -77,14 +97,12 @@ impl Verdict {
         Verdict::new(Status::NotCheckable, "none possible", vec![reason.into()])
     }
 
-    /// Combines the verdicts of the parts of one claim: it holds only if
-    /// every part holds; the evidence of every part is kept, in order.
+    /// Combines the verdicts of the parts of one claim (a conjunction): it
+    /// holds only if every part holds, fails when a part fails, and is
+    /// not-checkable when no part fails but one could not be decided; the
+    /// evidence of every part is kept, in order.
     pub fn all(method: impl Into<String>, parts: Vec<(String, Verdict)>) -> Self {
-        let status = if parts.iter().all(|(_, v)| v.status == Status::Holds) {
-            Status::Holds
-        } else {
-            Status::Fails
-        };
+        let status = Status::conjunction(parts.iter().map(|(_, v)| v.status));
         let evidence = parts
             .iter()
             .flat_map(|(name, v)| {

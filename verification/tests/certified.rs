@@ -4,8 +4,9 @@
 
 use proptest::prelude::*;
 use rug::{Float, Rational};
+use trig_certify::ParamBox;
 use trig_core::{Family, Mpfr, Real, Ring, Variable};
-use trig_verification::certify::nonneg::{Certificate, ParamBox, certify};
+use trig_verification::certify::nonneg::{Certificate, certify};
 use trig_verification::exact::basis;
 
 const PREC: u32 = 256;
@@ -46,15 +47,15 @@ fn counterexamples_recheck(family: Family, bx: ParamBox) -> usize {
 fn counterexamples_are_negative_in_mpfr() {
     let q = |a: i64, b: i64| Rational::from((a, b));
     // outside the thesis range, inside seed 000's published one, outside Usman's
-    let mut n = counterexamples_recheck(Family::ThesisCubic, ParamBox::Interval(q(1, 1), q(2, 1)));
+    let mut n = counterexamples_recheck(Family::ThesisCubic, ParamBox::closed(q(1, 1), q(2, 1)));
     n += counterexamples_recheck(
         Family::ThesisCubic,
-        ParamBox::Interval(q(-3, 1), q(-2, 1) - q(1, 1000)),
+        ParamBox::closed(q(-3, 1), q(-2, 1) - q(1, 1000)),
     );
-    n += counterexamples_recheck(Family::Seed000Uniform, ParamBox::Interval(q(0, 1), q(4, 1)));
+    n += counterexamples_recheck(Family::Seed000Uniform, ParamBox::closed(q(0, 1), q(4, 1)));
     n += counterexamples_recheck(
         Family::Usman,
-        ParamBox::Interval(q(2, 1) + q(1, 100), q(3, 1)),
+        ParamBox::closed(q(2, 1) + q(1, 100), q(3, 1)),
     );
     assert!(n >= 4, "the boxes do contain negative values ({n} found)");
 }
@@ -69,7 +70,7 @@ proptest! {
     fn certified_region_is_nonnegative_in_mpfr(m in -2.0..=1.0f64, z in 0.0..=1.0f64) {
         let p = [Rational::from_f64(m).unwrap()];
         for f in basis(Family::ThesisCubic) {
-            let cert = certify(&f, true, Some("m"), &ParamBox::Interval(Rational::from(-2), Rational::from(1)));
+            let cert = certify(&f, true, Some("m"), &ParamBox::closed(Rational::from(-2), Rational::from(1)));
             prop_assert!(matches!(cert, Certificate::NonNegative { .. }), "{:?}", cert);
         }
         for v in numeric_at(Family::ThesisCubic, &p, &Rational::from_f64(z).unwrap()) {

@@ -3,8 +3,9 @@
 
 use proptest::prelude::*;
 use rug::{Float, Rational};
+use trig_certify::ParamBox;
 use trig_core::{Family, Mpfr, Real};
-use trig_verification::certify::nonneg::{BoxCertificate, ParamBox, certify_box};
+use trig_verification::certify::nonneg::{BoxCertificate, certify_box};
 use trig_verification::certify::unimodal::{Maximum, profile};
 use trig_verification::exact::basis;
 use trig_verification::{Status, Verdict, run};
@@ -83,7 +84,7 @@ fn e4_is_refuted_on_the_published_box_and_the_counterexample_rechecks() {
     let e4 = verdict("E4");
     assert_eq!(e4.status, Status::Fails);
     let one = Rational::from(1);
-    let unit = ParamBox::Interval(-one.clone(), one);
+    let unit = ParamBox::closed(-one.clone(), one);
     let b = basis(Family::Eh);
     let params = [("lambda", unit.clone()), ("mu", unit)];
     for (i, f) in b.iter().enumerate() {
@@ -106,16 +107,16 @@ fn two_parameter_boxes_both_ways() {
     let b0 = &basis(Family::Eh)[0];
     let q = |a: i64, b: i64| Rational::from((a, b));
     let inside = [
-        ("lambda", ParamBox::Interval(q(-3, 1), q(5, 1))),
-        ("mu", ParamBox::Interval(q(-7, 1), q(7, 1))),
+        ("lambda", ParamBox::closed(q(-3, 1), q(5, 1))),
+        ("mu", ParamBox::closed(q(-7, 1), q(7, 1))),
     ];
     assert!(matches!(
         certify_box(b0, false, &inside),
         BoxCertificate::NonNegative { .. }
     ));
     let beyond = [
-        ("lambda", ParamBox::Interval(q(-301, 100), q(-301, 100))),
-        ("mu", ParamBox::Interval(q(0, 1), q(1, 1))),
+        ("lambda", ParamBox::closed(q(-301, 100), q(-301, 100))),
+        ("mu", ParamBox::closed(q(0, 1), q(1, 1))),
     ];
     match certify_box(b0, false, &beyond) {
         BoxCertificate::Counterexample { params, z, value } => {
@@ -126,8 +127,8 @@ fn two_parameter_boxes_both_ways() {
     }
     // a half-line in λ: b0 ≥ 0 for λ ∈ [0, ∞)
     let half = [
-        ("lambda", ParamBox::FromTo(q(0, 1))),
-        ("mu", ParamBox::Interval(q(0, 1), q(1, 1))),
+        ("lambda", ParamBox::from_closed(q(0, 1))),
+        ("mu", ParamBox::closed(q(0, 1), q(1, 1))),
     ];
     assert!(matches!(
         certify_box(b0, false, &half),

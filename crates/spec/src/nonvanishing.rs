@@ -1,87 +1,43 @@
 //! Division by an expression that can vanish is refused: before a formula
 //! divides by `d`, we prove `d ≠ 0` on the whole domain (θ ∈ [0, π/2] or
-//! t ∈ [0, 1]) for every parameter in the closure of its declared range.
+//! t ∈ [0, 1]) for every parameter in its declared range, open and
+//! infinite ends excluded exactly.
 //!
-//! Method (exact, rational arithmetic): the numerator of `d` is mapped to a
-//! polynomial on the unit box — `z = tan(θ/2)` for `s`, `c` (Weierstrass),
-//! `p = a + (b − a)y` for a bounded range, `p = a + y/(1 − y)` for a
-//! half-line, `π ∈ [314159/100000, 314160/100000]` — then the box is
-//! bisected: a box is settled when interval arithmetic shows the polynomial
-//! has one strict sign there. An exact zero at a sampled point, or two
-//! samples of opposite signs (intermediate value theorem), is a proof that
-//! `d` vanishes; a budget of boxes bounds the work, and exhausting it is
-//! reported (we never accept a division we could not prove safe).
-
-use std::collections::BTreeMap;
+//! The proof is the certifier's ([`trig_certify::nonneg::definite_sign`]):
+//! Weierstrass `z = tan(θ/2)`, every parameter set mapped onto a unit
+//! coordinate, `π ∈ [314159/100000, 314160/100000]`, and exact Bernstein
+//! subdivision until `d` has one strict sign on every cell. Otherwise the
+//! file is refused with an exact witness: a rational point where `d = 0`,
+//! or two where its signs differ; or, when the subdivision cannot decide,
+//! with that said (a division we could not prove safe is never accepted).
 
 use rug::Rational;
+use trig_certify::ParamBox;
+use trig_certify::nonneg::definite_sign;
 use trig_core::Variable;
-use trig_symbolic::{Poly, Sym};
+use trig_symbolic::Sym;
 
-use crate::range::{End, SpecRange};
+use crate::range::SpecRange;
 
-/// Boxes examined before giving up.
-pub const BUDGET: usize = 4_000;
+/// The name `π` takes while it is bounded as a parameter.
+const PI_VAR: &str = "__pi";
 
 /// `Ok` when `d` cannot vanish; otherwise why (with a witness).
 pub fn check(d: &Sym, variable: Variable, params: &[(String, SpecRange)]) -> Result<(), String> {
     let n = Sym::from_poly(d.numerator().clone());
-    if n.as_rational().is_some() {
-        return if n.is_zero() {
+    if let Some(q) = n.as_rational() {
+        return if q == 0 {
             Err("division by zero".into())
         } else {
             Ok(())
         };
     }
-    let mut maps: Vec<(String, Sym)> = Vec::new();
-    let mut q = n.clone();
-    let vars = n.variables();
-    if vars.contains("s") || vars.contains("c") {
-        let z = Sym::var("__y_z");
-        let w = Sym::one() + &(z.clone() * &z);
-        q = q
-            .subs("s", &(Sym::int(2) * &z / &w))
-            .subs("c", &((Sym::one() - &(z.clone() * &z)) / &w));
-        maps.push(("tan(θ/2)".into(), z));
-    }
-    if vars.contains("t") && !variable.is_trigonometric() {
-        let y = Sym::var("__y_t");
-        q = q.subs("t", &y);
-        maps.push((String::from("t"), y));
-    }
-    if vars.contains("pi") {
-        let y = Sym::var("__y_pi");
-        let a = Sym::rational(Rational::from((314_159, 100_000)));
-        let value = a + &(Sym::rational(Rational::from((1, 100_000))) * &y);
-        q = q.subs("pi", &value);
-        maps.push(("pi".into(), value));
-    }
-    for (name, range) in params {
-        if !vars.contains(name.as_str()) {
-            continue;
-        }
-        let y = Sym::var(&format!("__y_{name}"));
-        let frac = y.clone() / &(Sym::one() - &y);
-        let value = match (&range.lo, &range.hi) {
-            (lo, hi) if lo.value().is_some() && hi.value().is_some() => {
-                let (a, b) = (
-                    lo.value().cloned().unwrap_or_default(),
-                    hi.value().cloned().unwrap_or_default(),
-                );
-                Sym::rational(a.clone()) + &(Sym::rational(b - a) * &y)
-            }
-            (End::Closed(a) | End::Open(a), End::Unbounded) => Sym::rational(a.clone()) + &frac,
-            (End::Unbounded, End::Closed(b) | End::Open(b)) => Sym::rational(b.clone()) - &frac,
-            _ => (Sym::int(2) * &y - &Sym::one()) / &(y.clone() * &(Sym::one() - &y)),
-        };
-        q = q.subs(name, &value);
-        maps.push((name.clone(), value));
-    }
-    let poly = q.numerator().clone();
-    let unknown: Vec<String> = poly
+    let trig = variable.is_trigonometric();
+    let own = if trig { ["s", "c"] } else { ["t", "t"] };
+    let unknown: Vec<String> = n
         .variables()
         .into_iter()
-        .filter(|v| !v.starts_with("__y_"))
+        .filter(|v| !own.contains(&v.as_str()) && v != "pi" && !params.iter().any(|(p, _)| p == v))
         .collect();
     if !unknown.is_empty() {
         return Err(format!(
@@ -89,140 +45,31 @@ pub fn check(d: &Sym, variable: Variable, params: &[(String, SpecRange)]) -> Res
             unknown.join(", ")
         ));
     }
-    let names: Vec<String> = poly.variables().into_iter().collect();
-    let witness = |point: &BTreeMap<String, Rational>| -> String {
-        maps.iter()
-            .filter_map(|(label, value)| {
-                let v = value.eval_rational(&|n| point.get(n).cloned()).ok()?;
-                Some(format!("{label} = {v}"))
-            })
-            .collect::<Vec<_>>()
-            .join(", ")
-    };
-    match search(&poly, &names) {
-        Search::NonZero => Ok(()),
-        Search::Zero(p) => Err(format!(
-            "division by `{d}`, which vanishes in the declared domain and range: it is 0 at {}",
-            witness(&p)
-        )),
-        Search::SignChange(a, b) => Err(format!(
-            "division by `{d}`, which vanishes in the declared domain and range: it changes sign between {} and {}",
-            witness(&a),
-            witness(&b)
-        )),
-        Search::Budget => Err(format!(
-            "division by `{d}`: could not prove that it does not vanish in the declared domain and range ({BUDGET} boxes); restate the formula or narrow the range"
-        )),
-    }
-}
-
-enum Search {
-    NonZero,
-    Zero(BTreeMap<String, Rational>),
-    SignChange(BTreeMap<String, Rational>, BTreeMap<String, Rational>),
-    Budget,
-}
-
-type Cell = Vec<(Rational, Rational)>;
-
-fn value_at(p: &Poly, names: &[String], point: &BTreeMap<String, Rational>) -> Rational {
-    let _ = names;
-    p.eval_rational(&|n| point.get(n).cloned())
-        .unwrap_or_default()
-}
-
-/// Bounds of `p` on a box inside `[0, 1]ⁿ` (all variables nonnegative).
-fn bounds(p: &Poly, names: &[String], cell: &Cell) -> (Rational, Rational) {
-    let mut lo = Rational::new();
-    let mut hi = Rational::new();
-    for (m, q) in p.terms() {
-        let (mut a, mut b) = (Rational::from(1), Rational::from(1));
-        for (v, e) in m.factors() {
-            let i = names.iter().position(|n| n == v.name()).unwrap_or(0);
-            let (l, h) = &cell[i];
-            for _ in 0..e {
-                a *= l;
-                b *= h;
-            }
-        }
-        if *q >= 0 {
-            lo += a * q;
-            hi += b * q;
-        } else {
-            lo += b * q;
-            hi += a * q;
-        }
-    }
-    (lo, hi)
-}
-
-fn search(p: &Poly, names: &[String]) -> Search {
-    let point = |cell: &Cell, pick: &dyn Fn(&(Rational, Rational)) -> Rational| {
-        names
-            .iter()
-            .zip(cell)
-            .map(|(n, iv)| (n.clone(), pick(iv)))
-            .collect::<BTreeMap<_, _>>()
-    };
-    let root: Cell = names
+    let n = n.subs("pi", &Sym::var(PI_VAR));
+    let mut boxes: Vec<(&str, ParamBox)> = params
         .iter()
-        .map(|_| (Rational::new(), Rational::from(1)))
+        .filter(|(name, _)| n.variables().contains(name))
+        .map(|(name, r)| (name.as_str(), r.to_box()))
         .collect();
-    // corners of the whole box first: zeros on the boundary are common
-    let mut reference: Option<(Rational, BTreeMap<String, Rational>)> = None;
-    for mask in 0..(1u32 << names.len().min(8)) {
-        let corner: BTreeMap<String, Rational> = names
-            .iter()
-            .enumerate()
-            .map(|(i, n)| (n.clone(), Rational::from((mask >> i) & 1)))
-            .collect();
-        let v = value_at(p, names, &corner);
-        if v == 0 {
-            return Search::Zero(corner);
-        }
-        match &reference {
-            None => reference = Some((v, corner)),
-            Some((r, at)) if (*r > 0) != (v > 0) => return Search::SignChange(at.clone(), corner),
-            Some(_) => {}
-        }
+    if n.variables().contains(PI_VAR) {
+        boxes.push((
+            PI_VAR,
+            ParamBox::closed(
+                Rational::from((314_159, 100_000)),
+                Rational::from((314_160, 100_000)),
+            ),
+        ));
     }
-    let Some((sign, at)) = reference else {
-        return Search::NonZero;
-    };
-    let positive = sign > 0;
-    let mut stack = vec![(root, 0usize)];
-    let mut examined = 0;
-    while let Some((cell, axis)) = stack.pop() {
-        examined += 1;
-        if examined > BUDGET {
-            return Search::Budget;
+    definite_sign(&n, trig, &boxes).map(|_| ()).map_err(|why| {
+        let why = why.replace(PI_VAR, "pi");
+        if why.contains("cannot fix the sign") {
+            format!(
+                "division by `{d}`: could not prove that it does not vanish in the declared domain and range ({why}); restate the formula or narrow the range"
+            )
+        } else {
+            format!("division by `{d}`, which vanishes in the declared domain and range: {why}")
         }
-        let (lo, hi) = bounds(p, names, &cell);
-        if lo > 0 || hi < 0 {
-            if (lo > 0) != positive {
-                return Search::SignChange(at, point(&cell, &|iv| iv.0.clone()));
-            }
-            continue;
-        }
-        let mid = point(&cell, &|iv| (iv.0.clone() + &iv.1) / 2u32);
-        let v = value_at(p, names, &mid);
-        if v == 0 {
-            return Search::Zero(mid);
-        }
-        if (v > 0) != positive {
-            return Search::SignChange(at, mid);
-        }
-        let (a, b) = cell[axis].clone();
-        let m = (a.clone() + &b) / 2u32;
-        let mut left = cell.clone();
-        left[axis] = (a, m.clone());
-        let mut right = cell;
-        right[axis] = (m, b);
-        let next = (axis + 1) % names.len();
-        stack.push((left, next));
-        stack.push((right, next));
-    }
-    Search::NonZero
+    })
 }
 
 #[cfg(test)]
@@ -288,5 +135,26 @@ mod tests {
         assert!(check(&(Sym::var("t") + &Sym::one()), Variable::Polynomial, &[]).is_ok());
         assert!(check(&(Sym::int(2) - &Sym::pi()), Variable::Angle, &[]).is_ok());
         assert!(check(&Sym::var("P0"), Variable::Angle, &[]).is_err());
+    }
+
+    #[test]
+    fn rational_bernstein_denominators_are_accepted_with_exact_refusals() {
+        // (1 − t)² + 2w t(1 − t) + t² = 1 + 2(w − 1)t(1 − t) > 0 for w > −1
+        let (t, w) = (Sym::var("t"), Sym::var("w"));
+        let d = Sym::one() + &(Sym::int(2) * &(w.clone() - &Sym::one()) * &t * &(Sym::one() - &t));
+        for ok in ["[0, inf)", "[-1/10, 1000]", "(-1, 0]"] {
+            let p = vec![("w".to_string(), range(ok))];
+            assert!(check(&d, Variable::Polynomial, &p).is_ok(), "{ok}");
+        }
+        // at w = −1 the denominator is 0 at t = 1/2: a rational witness
+        let p = vec![("w".to_string(), range("[-1, 0]"))];
+        let e = check(&d, Variable::Polynomial, &p).unwrap_err();
+        assert!(e.contains("w = -1") && e.contains("t = 1/2"), "{e}");
+        // 1/(1 − λ) on λ ∈ [0, 1): the open end is excluded exactly
+        let l = Sym::var("lambda");
+        let p = vec![("lambda".to_string(), range("[0, 1)"))];
+        assert!(check(&(Sym::one() - &l), Variable::Angle, &p).is_ok());
+        let p = vec![("lambda".to_string(), range("[0, 1]"))];
+        assert!(check(&(Sym::one() - &l), Variable::Angle, &p).is_err());
     }
 }

@@ -106,6 +106,19 @@ impl SpecRange {
     }
 
     /// A value inside: the midpoint, one beyond a single finite end, or 0.
+    /// The range as a parameter set of the certifier.
+    pub fn to_box(&self) -> trig_certify::ParamBox {
+        let bound = |e: &End| match e {
+            End::Closed(q) => trig_certify::Bound::Closed(q.clone()),
+            End::Open(q) => trig_certify::Bound::Open(q.clone()),
+            End::Unbounded => trig_certify::Bound::Infinite,
+        };
+        trig_certify::ParamBox {
+            lo: bound(&self.lo),
+            hi: bound(&self.hi),
+        }
+    }
+
     pub fn interior_point(&self) -> Rational {
         match (self.lo.value(), self.hi.value()) {
             (Some(a), Some(b)) => (a.clone() + b) / 2u32,

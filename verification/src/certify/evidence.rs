@@ -2,15 +2,19 @@
 //! and maximal parameter ranges.
 
 use rug::Rational;
-use trig_core::{Bound, Family, Range};
+use trig_certify::{Bound, ParamBox, describe_z};
+use trig_core::Family;
 
-use super::nonneg::{BoxCertificate, Certificate, ParamBox, certify, certify_box, describe_z};
+use super::nonneg::{BoxCertificate, Certificate, certify, certify_box};
 use super::range::{EndPoint, MaximalRange, Outside, certify_all, maximal_range};
 use crate::exact::basis;
 use crate::verdict::{Status, Verdict};
 
 /// How nonnegativity is decided, as the report states it.
-pub const CERTIFIED: &str = "certified: Weierstrass z = tan(θ/2), exact Bernstein subdivision over (z, parameter) boxes in rational arithmetic; counterexamples exact";
+pub const CERTIFIED: &str = "certified: Weierstrass z = tan(θ/2), exact Bernstein subdivision over (z, parameter) boxes in rational arithmetic (denominators proved of one sign first); counterexamples exact and re-evaluated";
+
+/// How a maximal range is decided, as the report states it.
+pub const MAXIMAL: &str = "certified: every end of the admissible set is a root of a boundary polynomial (discriminant in z = tan(θ/2) or t, values at the domain ends); its roots are isolated exactly (Sturm) and one certified point test per gap decides where the set ends; ends are exact real algebraic numbers; the interval is then certified by exact Bernstein subdivision";
 
 /// One line for a certificate about `what`.
 pub fn describe(
@@ -33,6 +37,10 @@ pub fn describe(
                 param.map_or(String::new(), |n| format!("{n} = {p}, ")),
                 describe_z(z, trig)
             ),
+        ),
+        Certificate::Pole(why) => (
+            Status::Fails,
+            format!("{what}: not defined on the whole domain: {why}"),
         ),
         Certificate::Undecided(why) => (Status::NotCheckable, format!("{what}: undecided ({why})")),
     }
@@ -74,35 +82,37 @@ pub fn nonnegative_named(
             trig,
             param,
         );
-        if s != Status::Holds && status == Status::Holds {
-            status = s;
-        }
+        status = Status::conjunction([status, s]);
         evidence.push(line);
     }
     Verdict::new(status, CERTIFIED, evidence)
 }
 
 /// Nonnegativity of every function of a family on a box of several
-/// parameters (tensor Bernstein subdivision in `(z, p₁, …, p_d)`): holds
-/// when every function is certified, fails with an exact counterexample.
+/// parameters (see [`nonnegative_on_box_named`]).
 pub fn nonnegative_on_box(
     family: Family,
     fs: &[trig_symbolic::Sym],
     params: &[(&str, ParamBox)],
 ) -> Verdict {
     let info = family.info();
-    let trig = info.variable.is_trigonometric();
-    let show_box = |bx: &ParamBox| match bx {
-        ParamBox::Interval(a, b) => format!("[{a}, {b}]"),
-        ParamBox::FromTo(a) => format!("[{a}, ∞)"),
-    };
-    let region: Vec<String> = params
-        .iter()
-        .map(|(n, bx)| format!("{n} ∈ {}", show_box(bx)))
-        .collect();
+    nonnegative_on_box_named(info.variable.is_trigonometric(), fs, info.functions, params)
+}
+
+/// Nonnegativity of every function on a box of several parameters (tensor
+/// Bernstein subdivision in `(z, p₁, …, p_d)`): holds when every function
+/// is certified, fails with an exact counterexample or pole.
+pub fn nonnegative_on_box_named(
+    trig: bool,
+    fs: &[trig_symbolic::Sym],
+    names: &[impl AsRef<str>],
+    params: &[(&str, ParamBox)],
+) -> Verdict {
+    let region: Vec<String> = params.iter().map(|(n, bx)| format!("{n} ∈ {bx}")).collect();
     let mut status = Status::Holds;
     let mut evidence = vec![format!("parameter box {}", region.join(" × "))];
-    for (f, name) in fs.iter().zip(info.functions) {
+    for (f, name) in fs.iter().zip(names) {
+        let name = name.as_ref();
         let (s, line) = match certify_box(f, trig, params) {
             BoxCertificate::NonNegative { boxes } => (
                 Status::Holds,
@@ -129,81 +139,140 @@ pub fn nonnegative_on_box(
                     ),
                 )
             }
+            BoxCertificate::Pole(why) => (
+                Status::Fails,
+                format!("{name} ≥ 0: not defined on the whole domain and box: {why}"),
+            ),
             BoxCertificate::Undecided(why) => (
                 Status::NotCheckable,
                 format!("{name} ≥ 0: undecided ({why})"),
             ),
         };
-        if s != Status::Holds && status == Status::Holds {
-            status = s;
-        }
+        status = Status::conjunction([status, s]);
         evidence.push(line);
     }
     Verdict::new(status, CERTIFIED, evidence)
 }
 
+/// Why a parameter value is outside, as the report shows it.
+fn show_outside(o: &Outside, param: &str, trig: bool) -> String {
+    match o {
+        Outside::Counterexample(p, z, v) => format!(
+            "counterexample {param} = {p}, {}: value {v} (exact)",
+            describe_z(z, trig)
+        ),
+        Outside::Pole(p, why) => format!("at {param} = {p} a function is not defined: {why}"),
+        Outside::Undecided(p) => format!("{param} = {p} not certified either way"),
+    }
+}
+
 /// One end of a maximal interval, as the report shows it.
 pub fn show_end(e: &EndPoint, param: &str, trig: bool) -> String {
-    let outside = |o: &Outside| match o {
-        Outside::Counterexample(p, z, v) => {
-            format!(
-                "counterexample {param} = {p}, {}: value {v}",
-                describe_z(z, trig)
-            )
-        }
-        Outside::Undecided(p) => format!("{param} = {p} not certified either way"),
-    };
     match e {
-        EndPoint::Exact { value, outside: o } => {
-            format!("exact end {value}; just beyond, {}", outside(o))
+        EndPoint::Exact {
+            value,
+            closed,
+            inside,
+            outside,
+        } => {
+            let kind = if value.rational.is_some() {
+                "rational"
+            } else {
+                "irrational"
+            };
+            format!(
+                "exact end {} ({kind}, {}), proved: a root of the boundary polynomial {}; every gap between boundary roots from the start to it is admissible (last test {param} = {inside} certified), and beyond it, {}",
+                value.describe(param, 12),
+                if *closed { "included" } else { "excluded" },
+                value.poly_text(param),
+                show_outside(outside, param, trig)
+            )
         }
         EndPoint::Bracket {
             ok,
             bad,
-            outside: o,
-        } => {
-            format!(
-                "end in ({:.15}, {:.15}); {}",
-                ok.to_f64(),
-                bad.to_f64(),
-                outside(o)
-            )
+            outside,
+            why,
+        } => format!(
+            "bracket only (not an exact end: {why}): the end lies in ({}, {}); {}",
+            trig_certify::algebraic::decimal(ok, 15, false),
+            trig_certify::algebraic::decimal(bad, 15, true),
+            show_outside(outside, param, trig)
+        ),
+        EndPoint::Unbounded => {
+            "none: admissible on the whole half-line (every gap between boundary roots certified)"
+                .into()
         }
-        EndPoint::Unbounded => "unbounded".into(),
+        EndPoint::Undecided { at, why } => format!("not decided: {why} ({param} = {at})"),
     }
 }
 
+/// The found interval, e.g. `[-2, 1]` or `[0, root of … ]`.
+fn show_interval(r: &MaximalRange, param: &str) -> String {
+    let end = |e: &EndPoint, lower: bool| match e {
+        EndPoint::Exact { value, closed, .. } => {
+            let v = match &value.rational {
+                Some(q) => q.to_string(),
+                None => format!(
+                    "≈{}",
+                    trig_certify::algebraic::decimal(&value.lo, 12, !lower)
+                ),
+            };
+            let bracket = match (lower, closed) {
+                (true, true) => "[",
+                (true, false) => "(",
+                (false, true) => "]",
+                (false, false) => ")",
+            };
+            if lower {
+                format!("{bracket}{v}")
+            } else {
+                format!("{v}{bracket}")
+            }
+        }
+        EndPoint::Bracket { ok, bad, .. } => {
+            let (a, b) = if lower { (bad, ok) } else { (ok, bad) };
+            format!("end in ({:.15}, {:.15})", a.to_f64(), b.to_f64())
+        }
+        EndPoint::Unbounded if lower => "(-inf".into(),
+        EndPoint::Unbounded => "+inf)".into(),
+        EndPoint::Undecided { .. } => "?".into(),
+    };
+    let _ = param;
+    format!("{}, {}", end(&r.lo, true), end(&r.hi, false))
+}
+
 /// The maximal nonnegativity interval of a one-parameter family, compared
-/// with its published range. Holds when they coincide (ends and their
-/// inclusion), fails otherwise; the interval and certificates are evidence.
+/// with its published range (see [`maximal_against`]).
 pub fn maximal_versus_published(family: Family) -> (MaximalRange, Verdict) {
     let info = family.info();
     let spec = info.params[0];
-    let start = match (spec.range.lo.value(), spec.range.hi.value()) {
-        (Some(a), Some(b)) => (a + b) / 2u32,
-        (Some(a), None) => a + 1u32,
-        (None, Some(b)) => b - 1u32,
-        (None, None) => Rational::new(),
-    };
     let published = Published {
         name: spec.name,
         symbol: spec.symbol,
         range: spec.range.to_string(),
+        set: catalog_box(&spec.range),
         source: spec.range_source,
     };
     maximal_against(
         &basis(family),
+        info.functions,
         info.variable.is_trigonometric(),
         &published,
-        &start,
-        |r| {
-            let found = Range {
-                lo: end_bound(&r.lo),
-                hi: end_bound(&r.hi),
-            };
-            (found.to_string(), found == spec.range)
-        },
     )
+}
+
+/// A catalog range as a parameter set.
+pub fn catalog_box(r: &trig_core::Range) -> ParamBox {
+    let bound = |b: &trig_core::Bound| match b {
+        trig_core::Bound::Closed(..) => Bound::Closed(b.value().unwrap_or_default()),
+        trig_core::Bound::Open(..) => Bound::Open(b.value().unwrap_or_default()),
+        trig_core::Bound::Unbounded => Bound::Infinite,
+    };
+    ParamBox {
+        lo: bound(&r.lo),
+        hi: bound(&r.hi),
+    }
 }
 
 /// A published parameter range, as the report cites it.
@@ -213,82 +282,119 @@ pub struct Published<'a> {
     pub symbol: &'a str,
     /// The range as printed.
     pub range: String,
+    /// The range as a set.
+    pub set: ParamBox,
     pub source: &'a str,
 }
 
-/// The maximal nonnegativity interval of `fs` around `start`, compared with
-/// the published range: `found` shows the interval and says whether it is the
-/// published one. Holds when it is and both ends are exact (or unbounded),
-/// fails otherwise; the interval and certificates are evidence.
+impl Published<'_> {
+    /// A point strictly inside the range, where the search starts.
+    fn start(&self) -> Rational {
+        match (self.set.lo.value(), self.set.hi.value()) {
+            (Some(a), Some(b)) => Rational::from(a + b) / 2u32,
+            (Some(a), None) => a.clone() + 1u32,
+            (None, Some(b)) => b.clone() - 1u32,
+            (None, None) => Rational::new(),
+        }
+    }
+}
+
+/// The maximal nonnegativity interval of `fs` around a point inside the
+/// published range, compared with it. Holds when both ends are proved and
+/// equal to the published ones (value and inclusion); fails when they are
+/// proved different, when the start is not admissible, or when a bracket
+/// excludes the published end; not-checkable when a decision could not be
+/// completed.
 pub fn maximal_against(
     fs: &[trig_symbolic::Sym],
+    names: &[impl AsRef<str>],
     trig: bool,
     published: &Published<'_>,
-    start: &Rational,
-    found: impl Fn(&MaximalRange) -> (String, bool),
 ) -> (MaximalRange, Verdict) {
     let name = published.name;
-    let r = maximal_range(fs, trig, name, start);
+    let start = published.start();
+    let names: Vec<&str> = names.iter().map(AsRef::as_ref).collect();
+    let r = maximal_range(fs, &names, trig, name, &start);
+    let mut evidence = vec![format!(
+        "published range of {}: {} ({})",
+        published.symbol, published.range, published.source
+    )];
+    if let Some(o) = &r.start_outside {
+        evidence.push(format!(
+            "the search starts inside the published range at {name} = {start}, which is not admissible: {}",
+            show_outside(o, name, trig)
+        ));
+        let status = match o {
+            Outside::Undecided(_) => Status::NotCheckable,
+            _ => Status::Fails,
+        };
+        return (r, Verdict::new(status, MAXIMAL, evidence));
+    }
+    evidence.push(format!(
+        "maximal interval containing {start} on which every function is ≥ 0: {}",
+        show_interval(&r, name)
+    ));
+    evidence.push(format!("lower end: {}", show_end(&r.lo, name, trig)));
+    evidence.push(format!("upper end: {}", show_end(&r.hi, name, trig)));
     let (cs, cline) = describe(
-        "every function ≥ 0 on the maximal interval",
+        "cross-check, every function ≥ 0 on the closed rational part of the interval",
         &r.certificate,
         trig,
         Some(name),
     );
-    let (found_text, equal) = found(&r);
-    let same = matches!(r.lo, EndPoint::Exact { .. } | EndPoint::Unbounded)
-        && matches!(r.hi, EndPoint::Exact { .. } | EndPoint::Unbounded)
-        && equal;
-    let status = if cs != Status::Holds {
-        cs
-    } else if same {
-        Status::Holds
-    } else {
-        Status::Fails
-    };
-    let evidence = vec![
-        format!(
-            "published range of {}: {} ({})",
-            published.symbol, published.range, published.source
-        ),
-        format!("maximal interval containing {start} on which every function is ≥ 0: {found_text}"),
-        format!("lower end: {}", show_end(&r.lo, name, trig)),
-        format!("upper end: {}", show_end(&r.hi, name, trig)),
-        cline,
+    evidence.push(cline);
+    let ends = [
+        (&r.lo, &published.set.lo, true),
+        (&r.hi, &published.set.hi, false),
     ];
-    let verdict = Verdict::new(status, CERTIFIED, evidence);
-    (r, verdict)
+    let mut status = Status::conjunction(
+        ends.into_iter()
+            .map(|(found, printed, lower)| end_status(found, printed, lower)),
+    );
+    let bracketed =
+        matches!(r.lo, EndPoint::Bracket { .. }) || matches!(r.hi, EndPoint::Bracket { .. });
+    if cs == Status::Fails || (bracketed && cs != Status::Holds) {
+        evidence.push(
+            "the certificate of the interval is missing or contradicts the ends: no verdict".into(),
+        );
+        status = Status::NotCheckable;
+    }
+    (r, Verdict::new(status, MAXIMAL, evidence))
 }
 
-/// A found end as a bound: exact ends are included (closed), brackets are
-/// shown by their certified side, unbounded ends are open.
-fn end_bound(e: &EndPoint) -> Bound {
-    let small =
-        |q: &Rational| -> Option<(i64, i64)> { Some((q.numer().to_i64()?, q.denom().to_i64()?)) };
-    match e {
-        EndPoint::Exact { value, .. } | EndPoint::Bracket { ok: value, .. } => match small(value) {
-            Some((n, d)) => Bound::Closed(n, d),
-            None => Bound::Unbounded,
+/// Whether a found end matches the printed one: proved equal (holds),
+/// proved different (fails), or not decided.
+fn end_status(found: &EndPoint, printed: &Bound, lower: bool) -> Status {
+    match found {
+        EndPoint::Exact { .. } | EndPoint::Unbounded => {
+            if found.rational_bound().as_ref() == Some(printed) {
+                Status::Holds
+            } else {
+                Status::Fails
+            }
+        }
+        EndPoint::Bracket { ok, bad, .. } => match printed.value() {
+            // the end lies strictly between ok and bad
+            Some(v) if (lower && (v > ok || v <= bad)) || (!lower && (v < ok || v >= bad)) => {
+                Status::Fails
+            }
+            None => Status::Fails,
+            Some(_) => Status::NotCheckable,
         },
-        EndPoint::Unbounded => Bound::Unbounded,
+        EndPoint::Undecided { .. } => Status::NotCheckable,
     }
 }
 
-/// Certifies a whole family on its published parameter range (closed
-/// hull of it; open ends are approached from inside, so the closure is
-/// a stronger statement).
+/// Certifies a whole family on its published parameter range (open and
+/// infinite ends excluded exactly, see [`trig_certify::domain`]).
 pub fn on_published_range(family: Family) -> Verdict {
     let info = family.info();
     let spec = info.params[0];
-    let bx = match (spec.range.lo.value(), spec.range.hi.value()) {
-        (Some(a), Some(b)) => ParamBox::Interval(a, b),
-        (Some(a), None) => ParamBox::FromTo(a),
-        _ => return Verdict::not_checkable("a range unbounded below is not supported"),
-    };
+    let bx = catalog_box(&spec.range);
     let trig = info.variable.is_trigonometric();
     let cert = certify_all(&basis(family), trig, spec.name, &bx);
     let (status, line) = describe(
-        &format!("all functions, {} ∈ closure of {}", spec.symbol, spec.range),
+        &format!("all functions, {} ∈ {}", spec.symbol, spec.range),
         &cert,
         trig,
         Some(spec.name),
@@ -342,7 +448,7 @@ mod tests {
 
     #[test]
     fn monotonicity_is_proved_or_refuted() {
-        let range = ParamBox::Interval(Rational::from(-2), Rational::from(1));
+        let range = ParamBox::closed(Rational::from(-2), Rational::from(1));
         assert_eq!(
             monotone(Family::ThesisCubic, 0, false, Some("m"), &range).status,
             Status::Holds

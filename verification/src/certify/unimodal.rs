@@ -14,9 +14,9 @@ use rug::Rational;
 use trig_core::Family;
 use trig_symbolic::{Poly, Sym};
 
-use super::nonneg::{describe_z, in_z};
 use super::sturm::UPoly;
 use crate::verdict::{Status, Verdict};
+use trig_certify::{describe_z, in_z};
 
 /// How maxima are counted, as the report states it.
 pub const STURM: &str = "certified: sign changes of the derivative counted exactly — Weierstrass z = tan(θ/2) (or t), Sturm sequences over Q isolate every root of the numerator in (0, 1), signs evaluated exactly between roots";

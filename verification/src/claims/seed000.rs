@@ -10,10 +10,10 @@ use trig_symbolic::Sym;
 
 use super::seed000_appendix_c::{NONUNIFORM_J, nonuniform_knots};
 use crate::certify::evidence::nonnegative_on;
-use crate::certify::nonneg::ParamBox;
 use crate::claim::{Claim, Seed};
 use crate::exact::{IDENTITY, basis, identities, residual_verdict, sum};
 use crate::verdict::{Status, Verdict};
+use trig_certify::ParamBox;
 
 pub const CLAIMS: &[Claim] = &[
     Claim {
@@ -261,7 +261,7 @@ fn m2() -> Verdict {
         Family::Seed000Uniform,
         &f,
         Some("zeta"),
-        &ParamBox::Interval(Rational::new(), Rational::from(4)),
+        &ParamBox::closed(Rational::new(), Rational::from(4)),
     );
     let at = |g: &Sym, s: i64, c: i64| g.subs("s", &Sym::int(s)).subs("c", &Sym::int(c));
     let (first, last) = (at(&f[3], 0, 1), at(&f[0], 1, 0));

@@ -10,10 +10,11 @@ use trig_symbolic::Sym;
 use super::seed000_appendix_c::{NONUNIFORM_J, nonuniform_knots};
 use super::seed000_appendix_print::{Formula, compare, zeta};
 use crate::certify::evidence::{CERTIFIED, describe};
-use crate::certify::nonneg::{ParamBox, certify, in_z};
+use crate::certify::nonneg::certify;
 use crate::claim::{Claim, Seed};
 use crate::exact::{IDENTITY, basis, symbols};
 use crate::verdict::{Status, Verdict};
+use trig_certify::{ParamBox, in_z};
 
 pub const CLAIMS: &[Claim] = &[Claim {
     id: "M11",
@@ -83,7 +84,7 @@ fn conclusion() -> Verdict {
     // positivity as F − 1/200 ≥ 0 (D ≤ 106 and l ≥ 3/4 on ζ ∈ [0, 4])
     let f = basis(Family::Seed000Uniform);
     let margin = Sym::rational(Rational::from((1, 200)));
-    let bx = ParamBox::Interval(Rational::new(), Rational::from(4));
+    let bx = ParamBox::closed(Rational::new(), Rational::from(4));
     for (name, g) in [("F1", &f[1]), ("F2", &f[2])] {
         let what = format!("uniform (Appendix A) middle piece {name} − 1/200 ≥ 0, ζ ∈ [0, 4]");
         let (status, line) = describe(

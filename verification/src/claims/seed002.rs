@@ -7,11 +7,11 @@ use trig_deriv::{End, Wrt, curve_endpoint_derivatives};
 use trig_symbolic::{Poly, Sym};
 
 use crate::certify::evidence::nonnegative_on;
-use crate::certify::nonneg::ParamBox;
 use crate::certify::unimodal::exactly_one_maximum;
 use crate::claim::{Claim, Seed};
 use crate::exact::{basis, combination, identities, identity, reflect, sum, symbols, symmetry};
 use crate::verdict::{Status, Verdict};
+use trig_certify::ParamBox;
 
 pub const CLAIMS: &[Claim] = &[
     Claim {
@@ -194,7 +194,7 @@ fn d2() -> Verdict {
         Family::Seed002Quartic,
         &basis(Family::Seed002Quartic),
         None,
-        &ParamBox::Interval(zero.clone(), zero),
+        &ParamBox::closed(zero.clone(), zero),
     )
 }
 

@@ -7,10 +7,10 @@ use trig_deriv::{End, Wrt, curve_endpoint_derivatives, endpoint_derivatives};
 use trig_symbolic::Sym;
 
 use crate::certify::evidence::{nonnegative_on, nonnegative_on_box};
-use crate::certify::nonneg::ParamBox;
 use crate::claim::{Claim, Seed};
 use crate::exact::{IDENTITY, basis, combination, identities, reflect, sum, symbols, symmetry};
 use crate::verdict::{Status, Verdict};
+use trig_certify::ParamBox;
 
 pub const CLAIMS: &[Claim] = &[
     Claim {
@@ -347,7 +347,7 @@ fn e13() -> Verdict {
 /// certified with tensor Bernstein boxes in `(t, λ, μ)`.
 fn e4() -> Verdict {
     let one = rug::Rational::from(1);
-    let unit = ParamBox::Interval(-one.clone(), one);
+    let unit = ParamBox::closed(-one.clone(), one);
     nonnegative_on_box(
         Family::Eh,
         &basis(Family::Eh),
@@ -435,12 +435,7 @@ fn e12() -> Verdict {
         let zero = rug::Rational::new();
         parts.push((
             format!("λ = μ = {v}: nonnegativity"),
-            nonnegative_on(
-                Family::Eh,
-                &fs,
-                None,
-                &ParamBox::Interval(zero.clone(), zero),
-            ),
+            nonnegative_on(Family::Eh, &fs, None, &ParamBox::closed(zero.clone(), zero)),
         ));
     }
     Verdict::all(crate::certify::evidence::CERTIFIED, parts)

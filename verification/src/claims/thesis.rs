@@ -11,13 +11,13 @@ use trig_symbolic::Sym;
 use crate::certify::evidence::{
     maximal_versus_published, monotone, nonnegative_on, on_published_range,
 };
-use crate::certify::nonneg::ParamBox;
 use crate::claim::{Claim, Seed};
 use crate::exact::{
     at_end, basis, combination, identities, identity, residual_verdict, sum, symbols, symmetry,
 };
 use crate::numeric::{differ, half_pi_minus, point, show, value};
 use crate::verdict::{Status, Verdict};
+use trig_certify::ParamBox;
 
 /// A claim of the thesis (seed 001); shared by the thesis claim files.
 pub(super) const fn claim(
@@ -418,7 +418,7 @@ fn t2() -> Verdict {
         Family::ThesisQuadratic,
         &basis(Family::ThesisQuadratic),
         Some("beta"),
-        &ParamBox::FromTo(Rational::new()),
+        &ParamBox::from_closed(Rational::new()),
     )
 }
 
@@ -454,11 +454,11 @@ fn t29() -> Verdict {
 }
 
 fn beta_half_line() -> ParamBox {
-    ParamBox::FromTo(Rational::new())
+    ParamBox::from_closed(Rational::new())
 }
 
 fn m_range() -> ParamBox {
-    ParamBox::Interval(Rational::from(-2), Rational::from(1))
+    ParamBox::closed(Rational::from(-2), Rational::from(1))
 }
 
 fn t3() -> Verdict {
@@ -536,7 +536,7 @@ fn t31() -> Verdict {
                     family,
                     &fs,
                     None,
-                    &ParamBox::Interval(zero.clone(), zero.clone()),
+                    &ParamBox::closed(zero.clone(), zero.clone()),
                 ),
             ));
         }

@@ -153,9 +153,17 @@ fn interval(family: Family, range: SearchRange) -> Result<(f64, f64), CliError> 
         return Ok((lo, hi));
     }
     let (certified, _) = trig_verification::certify::evidence::maximal_versus_published(family);
+    // the certified side of each end (an irrational end by the inner side
+    // of its isolating interval)
     let end = |e: &EndPoint| match e {
-        EndPoint::Exact { value, .. } | EndPoint::Bracket { ok: value, .. } => Some(value.to_f64()),
-        EndPoint::Unbounded => None,
+        EndPoint::Exact { inside, value, .. } => Some(
+            value
+                .rational
+                .as_ref()
+                .map_or_else(|| inside.to_f64(), |q| q.to_f64()),
+        ),
+        EndPoint::Bracket { ok, .. } => Some(ok.to_f64()),
+        EndPoint::Unbounded | EndPoint::Undecided { .. } => None,
     };
     let clo = end(&certified.lo).map_or(lo, |v| v.max(lo));
     let chi = end(&certified.hi).map_or(hi, |v| v.min(hi));

@@ -6,13 +6,18 @@
 //! `P ≥ 0` on the box; corner coefficients are the values at the corners, so
 //! a negative corner is an exact counterexample. Otherwise the box is split
 //! in half along its widest side of positive degree (de Casteljau, exact)
-//! and both halves are tested, up to a depth limit. The two-variable API
-//! (`z` and one parameter coordinate `y`) is a thin layer over this.
+//! and both halves are tested, up to a depth limit.
+//!
+//! Faces of the cube can be *excluded* ([`Excluded`]): the face `y = 1` of a
+//! half-line `p = a + y/(1 − y)` is the point at infinity, the face of an
+//! open range end is not in the set. A corner on an excluded face is never
+//! a counterexample, and strict positivity is proved on the cube minus its
+//! excluded faces: with all `b_α ≥ 0`, `P > 0` there as soon as `b_α > 0`
+//! for every `α` whose index on each excluded face's axis is the one whose
+//! Bernstein polynomial is positive off that face (`B₀ = (1 − y)ⁿ > 0` for
+//! `y < 1`, `Bₙ = yⁿ > 0` for `y > 0`).
 
 use rug::Rational;
-
-/// Power-basis coefficients `a[i][j]` of `Σ a_{ij} zⁱ yʲ`.
-pub type Power = Vec<Vec<Rational>>;
 
 /// Coefficients of a polynomial in `d` variables, indexed by exponent (or
 /// Bernstein index) tuples `α` with `αₖ ≤ degrees[k]`, stored flat with the
@@ -77,24 +82,6 @@ impl Tensor {
     }
 }
 
-/// Outcome of a sign test on `[0,1]²`.
-#[derive(Debug, Clone, PartialEq)]
-pub enum Sign {
-    /// `P ≥ 0` everywhere; the number of boxes the proof used.
-    NonNegative { boxes: usize },
-    /// `P(z, y) < 0` at this exact point.
-    Negative {
-        z: Rational,
-        y: Rational,
-        value: Rational,
-    },
-    /// The depth limit was reached on this box without a decision.
-    Undecided {
-        z: (Rational, Rational),
-        y: (Rational, Rational),
-    },
-}
-
 /// Outcome of a sign test on `[0,1]^d`.
 #[derive(Debug, Clone, PartialEq)]
 pub enum SignNd {
@@ -139,21 +126,6 @@ pub fn tensor_to_bernstein(a: &Tensor) -> Tensor {
         b.map_fibers(axis, power_to_bernstein);
     }
     b
-}
-
-/// Bernstein coefficients on `[0,1]²` from power coefficients:
-/// `b_{kl} = Σ_{i≤k} Σ_{j≤l} C(k,i)/C(n,i) · C(l,j)/C(m,j) · a_{ij}`.
-pub fn to_bernstein(a: &Power) -> Vec<Vec<Rational>> {
-    let b = tensor_to_bernstein(&from_power(a));
-    let m = b.degrees[1] + 1;
-    b.coeffs.chunks(m).map(<[Rational]>::to_vec).collect()
-}
-
-fn from_power(a: &Power) -> Tensor {
-    Tensor {
-        degrees: vec![a.len() - 1, a[0].len() - 1],
-        coeffs: a.iter().flatten().cloned().collect(),
-    }
 }
 
 /// One de Casteljau split at 1/2 of a coefficient sequence.
@@ -224,31 +196,41 @@ impl Patch {
         )
     }
 
-    /// A corner with a negative (or, when strict, nonpositive) value.
-    fn bad_corner(&self, strict: bool) -> Option<(Vec<Rational>, Rational)> {
+    /// Whether the corner coordinate of `axis` (upper when `upper`) lies on
+    /// an excluded face of the unit cube.
+    fn on_excluded(&self, axis: usize, upper: bool, excluded: &[Excluded]) -> bool {
+        let (lo, hi) = &self.cell[axis];
+        if upper {
+            excluded[axis].hi && *hi == 1
+        } else {
+            excluded[axis].lo && *lo == 0
+        }
+    }
+
+    /// A corner with a negative (or, when strict, nonpositive) value that
+    /// lies on no excluded face.
+    fn bad_corner(&self, strict: bool, excluded: &[Excluded]) -> Option<(Vec<Rational>, Rational)> {
         let d = self.cell.len();
         (0..1usize << d).find_map(|mask| {
-            let alpha: Vec<usize> = (0..d)
-                .map(|k| {
-                    if mask >> k & 1 == 1 {
-                        self.b.degrees[k]
-                    } else {
-                        0
-                    }
-                })
-                .collect();
+            let upper = |k: usize| mask >> k & 1 == 1;
             // a corner of a degree-0 direction is counted once
-            if (0..d).any(|k| mask >> k & 1 == 1 && self.b.degrees[k] == 0) {
+            if (0..d).any(|k| upper(k) && self.b.degrees[k] == 0) {
                 return None;
             }
+            if (0..d).any(|k| self.on_excluded(k, upper(k), excluded)) {
+                return None;
+            }
+            let alpha: Vec<usize> = (0..d)
+                .map(|k| if upper(k) { self.b.degrees[k] } else { 0 })
+                .collect();
             let v = &self.b.coeffs[self.b.position(&alpha)];
             (*v < 0 || (strict && *v == 0)).then(|| {
                 let point = (0..d)
                     .map(|k| {
-                        if alpha[k] == 0 {
-                            self.cell[k].0.clone()
-                        } else {
+                        if upper(k) {
                             self.cell[k].1.clone()
+                        } else {
+                            self.cell[k].0.clone()
                         }
                     })
                     .collect();
@@ -256,29 +238,75 @@ impl Patch {
             })
         })
     }
+
+    /// True when the coefficients prove the sign on this cell (minus the
+    /// excluded faces it touches): all `≥ 0`, and when strict, `> 0` on the
+    /// indices whose Bernstein polynomials are positive off those faces.
+    fn proves(&self, strict: bool, excluded: &[Excluded]) -> bool {
+        if self.b.coeffs.iter().any(|x| *x < 0) {
+            return false;
+        }
+        if !strict {
+            return true;
+        }
+        // per axis, the index that must carry the positivity (None: any)
+        let pinned: Vec<Option<usize>> = (0..self.cell.len())
+            .map(|k| {
+                if self.on_excluded(k, true, excluded) {
+                    Some(0)
+                } else if self.on_excluded(k, false, excluded) {
+                    Some(self.b.degrees[k])
+                } else {
+                    None
+                }
+            })
+            .collect();
+        let strides: Vec<usize> = (0..pinned.len()).map(|k| self.b.stride(k)).collect();
+        self.b.coeffs.iter().enumerate().all(|(i, x)| {
+            let selected = pinned.iter().enumerate().all(|(k, pin)| {
+                pin.is_none_or(|j| (i / strides[k]) % (self.b.degrees[k] + 1) == j)
+            });
+            !selected || *x > 0
+        })
+    }
+}
+
+/// Which faces of one axis of the unit cube are not part of the set: the
+/// face at infinity of a half-line, the face of an open range end.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Excluded {
+    /// The face `x = 0`.
+    pub lo: bool,
+    /// The face `x = 1`.
+    pub hi: bool,
 }
 
 /// Decides the sign of `P` (power coefficients on `[0,1]^d`) by subdivision
 /// up to `max_depth` halvings: `P ≥ 0`, or `P > 0` when `strict` (then a
-/// corner value `≤ 0` is the counterexample).
-pub fn sign_on_unit_cube(a: &Tensor, max_depth: u32, strict: bool) -> SignNd {
+/// corner value `≤ 0` is the counterexample), on the cube minus the
+/// `excluded` faces (one entry per axis; missing entries exclude nothing).
+pub fn sign_on_unit_cube(
+    a: &Tensor,
+    max_depth: u32,
+    strict: bool,
+    excluded: &[Excluded],
+) -> SignNd {
+    let d = a.degrees.len();
+    let mut excluded = excluded.to_vec();
+    excluded.resize(d, Excluded::default());
     let unit = (Rational::new(), Rational::from(1));
     let mut stack = vec![Patch {
         b: tensor_to_bernstein(a),
-        cell: vec![unit; a.degrees.len()],
+        cell: vec![unit; d],
         depth: 0,
     }];
     let mut boxes = 0;
     while let Some(p) = stack.pop() {
-        if p.b
-            .coeffs
-            .iter()
-            .all(|x| if strict { *x > 0 } else { *x >= 0 })
-        {
+        if p.proves(strict, &excluded) {
             boxes += 1;
             continue;
         }
-        if let Some((point, value)) = p.bad_corner(strict) {
+        if let Some((point, value)) = p.bad_corner(strict, &excluded) {
             return SignNd::Negative { point, value };
         }
         if p.depth >= max_depth {
@@ -291,24 +319,6 @@ pub fn sign_on_unit_cube(a: &Tensor, max_depth: u32, strict: bool) -> SignNd {
     SignNd::NonNegative { boxes }
 }
 
-/// Decides the sign of `P` (power coefficients on `[0,1]²`) by subdivision
-/// up to `max_depth` halvings: `P ≥ 0`, or `P > 0` when `strict` (then a
-/// corner value `≤ 0` is the counterexample).
-pub fn sign_on_unit_box(a: &Power, max_depth: u32, strict: bool) -> Sign {
-    match sign_on_unit_cube(&from_power(a), max_depth, strict) {
-        SignNd::NonNegative { boxes } => Sign::NonNegative { boxes },
-        SignNd::Negative { point, value } => Sign::Negative {
-            z: point[0].clone(),
-            y: point[1].clone(),
-            value,
-        },
-        SignNd::Undecided { cell } => Sign::Undecided {
-            z: cell[0].clone(),
-            y: cell[1].clone(),
-        },
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -317,58 +327,102 @@ mod tests {
         Rational::from(n)
     }
 
+    fn r(a: i64, b: i64) -> Rational {
+        Rational::from((a, b))
+    }
+
+    /// `Σ a[i][j] zⁱ yʲ` as a tensor.
+    fn rows(a: &[Vec<Rational>]) -> Tensor {
+        Tensor {
+            degrees: vec![a.len() - 1, a[0].len() - 1],
+            coeffs: a.iter().flatten().cloned().collect(),
+        }
+    }
+
     #[test]
     fn a_nonnegative_polynomial_is_certified_and_a_negative_one_refuted() {
         // (z − 1/2)² + (y − 1/2)² + 1/100 > 0: the coefficients on the whole
-        // square are not all ≥ 0 (b₁₁ = −1/2 + 1/100 + …), subdivision proves it
-        let r = |a, b| Rational::from((a, b));
-        let sq = vec![
+        // square are not all ≥ 0, subdivision proves it
+        let sq = rows(&[
             vec![r(51, 100), q(-1), q(1)],
             vec![q(-1), q(0), q(0)],
             vec![q(1), q(0), q(0)],
-        ];
-        assert!(to_bernstein(&sq).iter().flatten().any(|x| *x < 0));
+        ]);
+        assert!(tensor_to_bernstein(&sq).coeffs.iter().any(|x| *x < 0));
         assert!(matches!(
-            sign_on_unit_box(&sq, 20, false),
-            Sign::NonNegative { .. }
+            sign_on_unit_cube(&sq, 20, false, &[]),
+            SignNd::NonNegative { .. }
         ));
         // z − 1/2 is negative at z = 0
-        let lin = vec![vec![Rational::from((-1, 2))], vec![q(1)]];
-        match sign_on_unit_box(&lin, 20, false) {
-            Sign::Negative { z, value, .. } => {
-                assert_eq!(z, 0);
-                assert_eq!(value, Rational::from((-1, 2)));
+        let lin = rows(&[vec![r(-1, 2)], vec![q(1)]]);
+        match sign_on_unit_cube(&lin, 20, false, &[]) {
+            SignNd::Negative { point, value } => {
+                assert_eq!(point[0], 0);
+                assert_eq!(value, r(-1, 2));
             }
             other => panic!("{other:?}"),
         }
         // (z − 1/2)² − 1/1000 dips below zero only inside: found by subdivision
-        let dip = vec![
-            vec![Rational::from((1, 4)) - Rational::from((1, 1000))],
-            vec![q(-1)],
-            vec![q(1)],
-        ];
+        let dip = rows(&[vec![r(1, 4) - r(1, 1000)], vec![q(-1)], vec![q(1)]]);
         assert!(matches!(
-            sign_on_unit_box(&dip, 30, false),
-            Sign::Negative { .. }
+            sign_on_unit_cube(&dip, 30, false, &[]),
+            SignNd::Negative { .. }
         ));
     }
 
     #[test]
     fn bernstein_coefficients_of_one_are_all_one() {
-        let one = vec![vec![q(1), q(0)], vec![q(0), q(0)]];
-        assert!(to_bernstein(&one).iter().flatten().all(|x| *x == 1));
+        let one = rows(&[vec![q(1), q(0)], vec![q(0), q(0)]]);
+        assert!(tensor_to_bernstein(&one).coeffs.iter().all(|x| *x == 1));
+    }
+
+    #[test]
+    fn excluded_faces_are_not_counterexamples_and_allow_strictness() {
+        // 1 − y vanishes only on the face y = 1: strictly positive off it
+        let p = rows(&[vec![q(1), q(-1)]]);
+        let off_top = [
+            Excluded::default(),
+            Excluded {
+                lo: false,
+                hi: true,
+            },
+        ];
+        assert!(matches!(
+            sign_on_unit_cube(&p, 10, true, &[]),
+            SignNd::Negative { ref point, .. } if point[1] == 1
+        ));
+        assert!(matches!(
+            sign_on_unit_cube(&p, 10, true, &off_top),
+            SignNd::NonNegative { .. }
+        ));
+        // (1 − y)(1 − 2z + 2z²) + 2y z(1 − z): the rational quadratic's
+        // denominator for w = y/(1 − y), zero at the face y = 1 only
+        let d = rows(&[vec![q(1), q(-1)], vec![q(-2), q(4)], vec![q(2), q(-4)]]);
+        assert!(matches!(
+            sign_on_unit_cube(&d, 30, true, &off_top),
+            SignNd::NonNegative { .. }
+        ));
+        // y − 1/2 is negative near y = 0 whatever faces are excluded
+        let e = rows(&[vec![r(-1, 2), q(1)]]);
+        let both = [Excluded::default(), Excluded { lo: true, hi: true }];
+        match sign_on_unit_cube(&e, 30, false, &both) {
+            SignNd::Negative { point, value } => {
+                assert!(point[1] > 0 && point[1] < r(1, 2), "{point:?}");
+                assert!(value < 0);
+            }
+            other => panic!("{other:?}"),
+        }
     }
 
     #[test]
     fn three_variables_certify_and_refute() {
         // x + y + z − 1/10 on [0,1]³: negative at the origin corner
-        let r = |a, b| Rational::from((a, b));
         let mut t = Tensor::zeros(vec![1, 1, 1]);
         t.coeffs[0] = r(-1, 10);
         t.add(&[1, 0, 0], &q(1));
         t.add(&[0, 1, 0], &q(1));
         t.add(&[0, 0, 1], &q(1));
-        match sign_on_unit_cube(&t, 30, false) {
+        match sign_on_unit_cube(&t, 30, false, &[]) {
             SignNd::Negative { point, value } => {
                 assert_eq!(point, vec![q(0), q(0), q(0)]);
                 assert_eq!(value, r(-1, 10));
@@ -385,7 +439,7 @@ mod tests {
         s.coeffs[0] = r(1, 1000);
         assert!(tensor_to_bernstein(&s).coeffs.iter().any(|x| *x < 0));
         assert!(matches!(
-            sign_on_unit_cube(&s, 40, false),
+            sign_on_unit_cube(&s, 40, false, &[]),
             SignNd::NonNegative { boxes } if boxes > 1
         ));
     }

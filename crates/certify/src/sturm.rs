@@ -64,6 +64,83 @@ impl UPoly {
         self.eval(x).cmp0() as i32
     }
 
+    /// The leading coefficient (zero for the zero polynomial).
+    pub fn leading(&self) -> Rational {
+        self.0.last().cloned().unwrap_or_default()
+    }
+
+    /// The product.
+    pub fn mul(&self, other: &UPoly) -> UPoly {
+        if self.is_zero() || other.is_zero() {
+            return UPoly::new(vec![]);
+        }
+        let mut c = vec![Rational::new(); self.0.len() + other.0.len() - 1];
+        for (i, x) in self.0.iter().enumerate() {
+            for (j, y) in other.0.iter().enumerate() {
+                c[i + j] += x.clone() * y;
+            }
+        }
+        UPoly::new(c)
+    }
+
+    /// The same roots with coprime integer coefficients and a positive
+    /// leading coefficient.
+    pub fn integer_primitive(&self) -> UPoly {
+        let mut num = rug::Integer::new();
+        let mut den = rug::Integer::from(1);
+        for q in &self.0 {
+            num.gcd_mut(q.numer());
+            den.lcm_mut(q.denom());
+        }
+        if num == 0 {
+            return self.clone();
+        }
+        let mut g = Rational::from((num, den));
+        if self.leading() < 0 {
+            g = -g;
+        }
+        UPoly::new(self.0.iter().map(|a| a.clone() / &g).collect())
+    }
+
+    /// Cauchy's bound: every root `r` has `|r| < 1 + max |aᵢ/aₙ|`.
+    pub fn root_bound(&self) -> Rational {
+        let lead = self.leading().abs();
+        let max = self.0[..self.0.len().saturating_sub(1)]
+            .iter()
+            .map(|a| a.clone().abs() / &lead)
+            .max()
+            .unwrap_or_default();
+        max + 1u32
+    }
+
+    /// The polynomial in `var`, highest power first, e.g. `x^2 - 4*x - 4`.
+    pub fn display(&self, var: &str) -> String {
+        let mut out = String::new();
+        for (i, a) in self.0.iter().enumerate().rev() {
+            if *a == 0 {
+                continue;
+            }
+            let sign = if *a < 0 { "-" } else { "+" };
+            let abs = a.clone().abs();
+            let coef = match (i, abs == 1) {
+                (0, _) => abs.to_string(),
+                (_, true) => String::new(),
+                _ => format!("{abs}*"),
+            };
+            let power = match i {
+                0 => String::new(),
+                1 => var.to_string(),
+                _ => format!("{var}^{i}"),
+            };
+            if out.is_empty() {
+                out = format!("{}{coef}{power}", if *a < 0 { "-" } else { "" });
+            } else {
+                out = format!("{out} {sign} {coef}{power}");
+            }
+        }
+        if out.is_empty() { "0".into() } else { out }
+    }
+
     /// The derivative.
     pub fn derivative(&self) -> UPoly {
         UPoly::new(
@@ -213,18 +290,8 @@ mod tests {
     fn from_roots(roots: &[Rational]) -> UPoly {
         roots.iter().fold(UPoly::new(vec![q(1, 1)]), |acc, r| {
             let lin = UPoly::new(vec![-r.clone(), q(1, 1)]);
-            mul(&acc, &lin)
+            acc.mul(&lin)
         })
-    }
-
-    fn mul(a: &UPoly, b: &UPoly) -> UPoly {
-        let mut c = vec![Rational::new(); a.0.len() + b.0.len() - 1];
-        for (i, x) in a.0.iter().enumerate() {
-            for (j, y) in b.0.iter().enumerate() {
-                c[i + j] += x.clone() * y;
-            }
-        }
-        UPoly::new(c)
     }
 
     #[test]
