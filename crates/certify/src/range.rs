@@ -200,13 +200,27 @@ fn coprime_basis(cands: &[Candidate], param: &str) -> Option<Vec<(UPoly, bool)>>
     Some(basis)
 }
 
-/// A rational strictly between two isolated roots (or beyond the last).
+/// A rational strictly between two isolated roots (or beyond the last):
+/// the simplest one, unless that is a root isolated as a point.
 fn gap_point(after: &Algebraic, before: Option<&Algebraic>, dir: i32) -> Rational {
-    match (before, dir > 0) {
-        (Some(b), true) => simplest_between(&after.hi, &b.lo),
-        (Some(b), false) => simplest_between(&b.hi, &after.lo),
-        (None, true) => after.hi.clone().ceil() + 1u32,
-        (None, false) => after.lo.clone().floor() - 1u32,
+    let Some(b) = before else {
+        return if dir > 0 {
+            after.hi.clone().ceil() + 1u32
+        } else {
+            after.lo.clone().floor() - 1u32
+        };
+    };
+    let (lo, hi) = if dir > 0 {
+        (&after.hi, &b.lo)
+    } else {
+        (&b.hi, &after.lo)
+    };
+    let q = simplest_between(lo, hi);
+    let is_root = |x: &Rational| [after, b].iter().any(|r| r.rational.as_ref() == Some(x));
+    if is_root(&q) {
+        Rational::from(lo + hi) / 2u32
+    } else {
+        q
     }
 }
 
