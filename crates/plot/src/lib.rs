@@ -14,6 +14,7 @@ pub mod curve;
 pub mod error;
 pub mod fit;
 pub mod interp;
+pub mod region;
 mod style;
 
 pub use basis::basis_svg;
@@ -21,3 +22,4 @@ pub use curve::curve_svg;
 pub use error::PlotError;
 pub use fit::fit_svg;
 pub use interp::{Interpolant, interp_svg};
+pub use region::{RegionCell, RegionKind, region_svg};

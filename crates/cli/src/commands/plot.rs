@@ -5,9 +5,14 @@ use std::path::{Path, PathBuf};
 
 use clap::{Args, Subcommand};
 use rug::Rational;
+use trig_certify::region::CellKind;
 use trig_core::{Bound, Family, parse_exact};
 use trig_interp::{DataSet, Scheme, Variant, f64_segments};
-use trig_plot::{Interpolant, basis_svg, curve_svg, fit_svg, interp_svg};
+use trig_plot::{
+    Interpolant, RegionCell, RegionKind, basis_svg, curve_svg, fit_svg, interp_svg, region_svg,
+};
+use trig_spec::Spec;
+use trig_verification::region_audit::{Axis, classify_window};
 
 use super::fit::{FitSetup, Runs, prepare};
 use super::{CliError, CmdResult};
@@ -55,6 +60,17 @@ enum PlotKind {
         optimise: bool,
         #[command(flatten)]
         setup: FitSetup,
+        /// SVG file to write.
+        #[arg(long)]
+        output: PathBuf,
+    },
+    /// The region of two shape parameters where every function of a spec
+    /// file's basis is nonnegative: certified cells inside and outside, the
+    /// undecided edge, the printed box.
+    Region {
+        /// Spec file (TOML, docs/spec.md) of a basis with two parameters.
+        #[arg(long, value_name = "FILE")]
+        spec: PathBuf,
         /// SVG file to write.
         #[arg(long)]
         output: PathBuf,
@@ -178,6 +194,7 @@ pub fn run(args: &PlotArgs) -> CmdResult {
                 .ok_or_else(|| CliError::Usage("nothing fitted".into()))?;
             write(output, &fit_svg(&outline, &method.fit).map_err(plot_err)?)
         }
+        PlotKind::Region { spec, output } => write(output, &region(spec)?),
         PlotKind::Interp {
             data,
             scheme,
@@ -212,6 +229,62 @@ pub fn run(args: &PlotArgs) -> CmdResult {
             )
         }
     }
+}
+
+/// The classified window around the printed box of a two-parameter spec.
+fn region(path: &Path) -> Result<String, CliError> {
+    let spec =
+        Spec::from_file(path).map_err(|e| CliError::Usage(e.to_string().replace('\n', " ")))?;
+    let [p, q] = spec.params.as_slice() else {
+        return Err(CliError::Usage(format!(
+            "`{}` has {} parameters; plot region draws two",
+            spec.id,
+            spec.params.len()
+        )));
+    };
+    fn axis(p: &trig_spec::SpecParam) -> Axis<'_> {
+        Axis {
+            name: &p.name,
+            symbol: &p.symbol,
+            set: p.range.to_box(),
+            source: &p.source,
+        }
+    }
+    let axes = [axis(p), axis(q)];
+    let names: Vec<&str> = spec.functions.iter().map(|f| f.name.as_str()).collect();
+    let reg = classify_window(
+        &spec.symbolic(),
+        &names,
+        spec.variable.is_trigonometric(),
+        &axes,
+    );
+    let cells: Vec<RegionCell> = reg
+        .cells
+        .iter()
+        .map(|c| RegionCell {
+            x: (c.lo[0].to_f64(), c.hi[0].to_f64()),
+            y: (c.lo[1].to_f64(), c.hi[1].to_f64()),
+            kind: match c.kind {
+                CellKind::Inside => RegionKind::Inside,
+                CellKind::Outside { .. } => RegionKind::Outside,
+                CellKind::Boundary => RegionKind::Edge,
+            },
+        })
+        .collect();
+    let side = |set: &trig_certify::ParamBox| {
+        (
+            set.lo.value().map_or(f64::NEG_INFINITY, |v| v.to_f64()),
+            set.hi.value().map_or(f64::INFINITY, |v| v.to_f64()),
+        )
+    };
+    let title = format!("{}: where every function is ≥ 0", spec.id);
+    region_svg(
+        &title,
+        (&p.symbol, &q.symbol),
+        &cells,
+        Some((side(&axes[0].set), side(&axes[1].set))),
+    )
+    .map_err(plot_err)
 }
 
 /// `x0,y0,x1,y1,…` as points (default: thesis Figure 6.3).
