@@ -159,5 +159,28 @@ maximal = true
     assert_eq!(get("box").0, "holds");
     let (v, e) = get("maximal");
     assert_eq!(v, "fails", "{e}");
-    assert!(e.contains("the region is larger than the box"), "{e}");
+    // the face λ = 1/2 lies on no boundary polynomial (the edge is λ + μ = ±1);
+    // the section μ = 0 extends to λ ∈ [−1, 1]
+    assert!(e.contains("is not on the region's edge"), "{e}");
+    assert!(e.contains("exact end 1 (rational, included)"), "{e}");
+}
+
+#[test]
+fn an_irrational_end_is_an_exact_algebraic_number_not_a_rational_guess() {
+    // ends 2 ∓ 2√2, roots of λ² − 4λ − 4; at λ = 7, t = 1/2:
+    // k = 21/4, b0 = (1/4)(1 − 21/16) = −5/64
+    let (v, e) = claim("irrational-end.toml", "IE-maximal");
+    assert_eq!(v, "fails", "{e:?}");
+    assert!(
+        has(
+            &e,
+            "lambda^2 - 4*lambda - 4 = 0 in [4.828427124746, 4.828427124747] (minimal polynomial) (irrational, included)"
+        ),
+        "{e:?}"
+    );
+    assert!(
+        has(&e, "counterexample lambda = 7, t = 1/2: value -5/64"),
+        "{e:?}"
+    );
+    assert_eq!(claim("irrational-end.toml", "IE-inside").0, "holds");
 }

@@ -17,7 +17,7 @@
 //!     ([`trig_certify::region`]) and the verdict says what was proved.
 
 use rug::Rational;
-use trig_certify::boundary::end_conditions;
+use trig_certify::boundary::{candidates, end_conditions};
 use trig_certify::region::{CellKind, Region, region};
 use trig_certify::{Bound, ParamBox};
 use trig_symbolic::Sym;
@@ -182,27 +182,19 @@ fn coupled(
         evidence.extend(lines.into_iter().map(|l| format!("necessary: {l}")));
         return Verdict::new(Status::Holds, REGION, evidence);
     }
-    let reg = classify_window(fs, names, trig, axes);
-    evidence.extend(describe_region(&reg, names, axes));
-    // a certified-admissible cell outside the box refutes maximality
-    let (blo, bhi) = box_corners(axes);
-    if let Some(c) = reg
-        .cells
-        .iter()
-        .find(|c| c.kind == CellKind::Inside && c.outside_of(&blo, &bhi))
-    {
-        evidence.push(format!(
-            "the region is larger than the box: every function is certified ≥ 0 for all ({}, {}) in [{}, {}] × [{}, {}], outside the box",
-            axes[0].symbol, axes[0].symbol, c.lo[0], c.hi[0], c.lo[1], c.hi[1]
-        ));
-        return Verdict::new(Status::Fails, REGION, evidence);
-    }
-    for (k, upper) in [(0, false), (0, true), (1, false), (1, true)] {
+    // the face test needs every boundary polynomial
+    let boundary = candidates(fs, names, trig).unwrap_or_default();
+    let faces = if boundary.is_empty() {
+        vec![]
+    } else {
+        vec![(0, false), (0, true), (1, false), (1, true)]
+    };
+    for (k, upper) in faces {
         let set = &axes[k].set;
         let end = if upper { &set.hi } else { &set.lo };
         let Some(v) = end.value() else { continue };
         let line = Sym::var(axes[k].name) - &Sym::rational(v.clone());
-        let on_edge = reg.boundary.iter().any(|c| {
+        let on_edge = boundary.iter().any(|c| {
             Sym::from_poly(c.poly.clone())
                 .subs(axes[k].name, &Sym::rational(v.clone()))
                 .is_zero()
@@ -215,6 +207,21 @@ fn coupled(
             evidence.extend(face_witness(fs, names, trig, axes, k, v));
             return Verdict::new(Status::Fails, REGION, evidence);
         }
+    }
+    let reg = classify_window(fs, names, trig, axes);
+    evidence.extend(describe_region(&reg, names, axes));
+    // a certified-admissible cell outside the box refutes maximality
+    let (blo, bhi) = box_corners(axes);
+    if let Some(c) = reg
+        .cells
+        .iter()
+        .find(|c| c.kind == CellKind::Inside && c.outside_of(&blo, &bhi))
+    {
+        evidence.push(format!(
+            "the region is larger than the box: every function is certified ≥ 0 for all ({}, {}) in [{}, {}] × [{}, {}], outside the box",
+            axes[0].symbol, axes[1].symbol, c.lo[0], c.hi[0], c.lo[1], c.hi[1]
+        ));
+        return Verdict::new(Status::Fails, REGION, evidence);
     }
     evidence.push("every finite face of the box lies on the zero set of a boundary polynomial, as the edge of the region must; that the region does not extend beyond the faces between the decided cells is not proved: equality is not decided".into());
     Verdict::new(Status::NotCheckable, REGION, evidence)

@@ -259,23 +259,8 @@ fn exact_end(
                     }
                     None => true,
                 };
-                // witnesses next to the end when they decide, else the gap points
-                let near_in = if dir > 0 { &value.lo } else { &value.hi };
-                let near_out = if dir > 0 { &value.hi } else { &value.lo };
-                let inside = if value.rational.is_none() && point(fs, trig, param, near_in).is_ok()
-                {
-                    near_in.clone()
-                } else {
-                    inside
-                };
-                let outside = match point(fs, trig, param, near_out) {
-                    Err(o @ (Outside::Counterexample(..) | Outside::Pole(..)))
-                        if value.rational.is_none() =>
-                    {
-                        o
-                    }
-                    _ => outside,
-                };
+                // the witnesses are the gap points: the simplest rationals of
+                // the gaps next to the end, where admissibility is constant
                 return EndPoint::Exact {
                     value,
                     closed,

@@ -181,7 +181,7 @@ pub fn show_end(e: &EndPoint, param: &str, trig: bool) -> String {
                 "irrational"
             };
             format!(
-                "exact end {} ({kind}, {}), proved: a root of the boundary polynomial {}; every gap between boundary roots from the start to it is admissible (last test {param} = {inside} certified), and beyond it, {}",
+                "exact end {} ({kind}, {}), proved: a root of the boundary polynomial {}; admissibility is constant between consecutive boundary roots: the gaps from the start to it are admissible (the last at {param} = {inside}, certified), the gap beyond it is not: {}",
                 value.describe(param, 12),
                 if *closed { "included" } else { "excluded" },
                 value.poly_text(param),
@@ -445,6 +445,39 @@ pub fn monotone_named(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn undecided_ends_are_never_failures() {
+        let q = |a: i64, b: i64| Rational::from((a, b));
+        let undecided = EndPoint::Undecided {
+            at: q(1, 1),
+            why: "depth".into(),
+        };
+        assert_eq!(
+            end_status(&undecided, &Bound::Closed(q(1, 1)), false),
+            Status::NotCheckable
+        );
+        let bracket = EndPoint::Bracket {
+            ok: q(1, 1),
+            bad: q(11, 10),
+            outside: Outside::Undecided(q(11, 10)),
+            why: "no boundary polynomial".into(),
+        };
+        // the printed end 21/20 lies in the bracket: not decided
+        assert_eq!(
+            end_status(&bracket, &Bound::Closed(q(21, 20)), false),
+            Status::NotCheckable
+        );
+        // the printed end 2 lies beyond the inadmissible 11/10: refuted
+        assert_eq!(
+            end_status(&bracket, &Bound::Closed(q(2, 1)), false),
+            Status::Fails
+        );
+        assert_eq!(
+            end_status(&EndPoint::Unbounded, &Bound::Infinite, false),
+            Status::Holds
+        );
+    }
 
     #[test]
     fn monotonicity_is_proved_or_refuted() {
