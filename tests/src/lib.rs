@@ -52,6 +52,15 @@ pub fn binary() -> PathBuf {
     .clone()
 }
 
+/// The path of a shipped spec file under `examples/`.
+pub fn example(name: &str) -> String {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../examples")
+        .join(name)
+        .display()
+        .to_string()
+}
+
 /// Runs `trig-audit` with `args`.
 pub fn run(args: &[&str]) -> Output {
     Command::new(binary())

@@ -8,15 +8,7 @@
 
 use std::path::PathBuf;
 
-use trig_e2e::stdout_ok;
-
-fn example(name: &str) -> String {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../examples")
-        .join(name)
-        .display()
-        .to_string()
-}
+use trig_e2e::{example, stdout_ok};
 
 /// The verdict and evidence of one claim of a spec file.
 fn claim(file: &str, id: &str) -> (String, Vec<String>) {

@@ -4,15 +4,7 @@
 
 use std::path::PathBuf;
 
-use trig_e2e::{assert_errors, run, stdout_ok};
-
-fn example(name: &str) -> String {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../examples")
-        .join(name)
-        .display()
-        .to_string()
-}
+use trig_e2e::{assert_errors, example, run, stdout_ok};
 
 /// Writes `text` to a fresh file in the target directory and returns its path.
 fn bad_file(name: &str, text: &str) -> String {

@@ -488,7 +488,13 @@ mod tests {
         let (t, p) = (Sym::var("t"), Sym::var("p"));
         let w = t.clone() * &(Sym::one() - &t);
         let f = Sym::one() - &(p.clone() * &p * &w) + &(Sym::int(4) * &p * &w);
-        let r = maximal_range(&[f.clone()], &["f"], false, "p", &Rational::new());
+        let r = maximal_range(
+            std::slice::from_ref(&f),
+            &["f"],
+            false,
+            "p",
+            &Rational::new(),
+        );
         match &r.hi {
             EndPoint::Exact {
                 value,

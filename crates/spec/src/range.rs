@@ -92,20 +92,9 @@ impl SpecRange {
 
     /// True when `x` lies in the range.
     pub fn contains(&self, x: &Rational) -> bool {
-        let above = match &self.lo {
-            End::Closed(a) => x >= a,
-            End::Open(a) => x > a,
-            End::Unbounded => true,
-        };
-        let below = match &self.hi {
-            End::Closed(b) => x <= b,
-            End::Open(b) => x < b,
-            End::Unbounded => true,
-        };
-        above && below
+        self.to_box().contains(x)
     }
 
-    /// A value inside: the midpoint, one beyond a single finite end, or 0.
     /// The range as a parameter set of the certifier.
     pub fn to_box(&self) -> trig_certify::ParamBox {
         let bound = |e: &End| match e {
@@ -119,6 +108,7 @@ impl SpecRange {
         }
     }
 
+    /// A value inside: the midpoint, one beyond a single finite end, or 0.
     pub fn interior_point(&self) -> Rational {
         match (self.lo.value(), self.hi.value()) {
             (Some(a), Some(b)) => (a.clone() + b) / 2u32,
