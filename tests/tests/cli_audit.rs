@@ -47,3 +47,43 @@ fn bad_audit_requests_fail_cleanly() {
     let out = run(&["audit", "--output", "/nonexistent-dir/x.md"]);
     assert!(!out.status.success());
 }
+
+#[test]
+fn closed_and_full_standard_output_end_without_a_panic() {
+    use std::process::{Command, Stdio};
+    // a reader that goes away before the output is written: exit 0, as
+    // Unix tools do
+    let mut child = Command::new(trig_e2e::binary())
+        .args(["list"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("spawn");
+    drop(child.stdout.take());
+    let out = child.wait_with_output().expect("wait");
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(
+        out.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    // a full disk: one line on standard error, exit 2
+    if let Ok(full) = std::fs::File::create("/dev/full") {
+        let out = Command::new(trig_e2e::binary())
+            .args(["list"])
+            .stdout(full)
+            .output()
+            .expect("run");
+        assert_eq!(out.status.code(), Some(2));
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            err.starts_with("error: cannot write to standard output") && err.lines().count() == 1,
+            "{err}"
+        );
+    }
+}

@@ -7,6 +7,7 @@ mod cell;
 mod commands;
 mod format;
 
+use std::io::{ErrorKind, Write};
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
@@ -58,12 +59,24 @@ fn main() -> ExitCode {
         Command::Interp(args) => commands::interp::run(&args),
     };
     match result {
-        Ok(text) => {
-            print!("{text}");
-            ExitCode::SUCCESS
-        }
+        Ok(text) => write_stdout(&text),
         Err(e) => {
             eprintln!("error: {e}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+/// Writes the result to standard output. A closed pipe ends the program
+/// quietly with success (as Unix tools do: `trig-audit audit | head`);
+/// any other write error (a full disk) is a one-line error, exit status 2.
+fn write_stdout(text: &str) -> ExitCode {
+    let mut out = std::io::stdout().lock();
+    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) if e.kind() == ErrorKind::BrokenPipe => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: cannot write to standard output: {e}");
             ExitCode::from(2)
         }
     }
