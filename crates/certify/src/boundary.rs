@@ -15,7 +15,7 @@
 use trig_symbolic::{Poly, Sym};
 
 use crate::domain::in_z;
-use crate::resultant::{coefficients_in, from_coefficients, resultant};
+use crate::resultant::{from_coefficients, resultant};
 
 /// One boundary polynomial in the parameters, with where it comes from.
 #[derive(Debug, Clone, PartialEq)]
@@ -117,7 +117,7 @@ fn conditions(n: &Poly, name: &str) -> Result<Vec<(Poly, String)>, String> {
     ];
     if m.degree_in("z") >= 2 {
         // the leading coefficient in z: a root can escape to z = ∞ there
-        let cs = coefficients_in(&m, "z");
+        let cs = m.coefficients_in("z");
         let lead = cs.last().cloned().unwrap_or_default();
         let disc = resultant(&m, &from_coefficients(&derivative(&cs), "z"), "z");
         if disc.is_zero() {

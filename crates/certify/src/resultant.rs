@@ -9,16 +9,6 @@
 
 use trig_symbolic::{Monomial, Poly};
 
-/// The coefficients of `p` as a polynomial in `var`, lowest power first.
-pub fn coefficients_in(p: &Poly, var: &str) -> Vec<Poly> {
-    let mut out = vec![Poly::zero(); p.degree_in(var) as usize + 1];
-    for (mono, q) in p.terms() {
-        let (rest, e) = mono.split(var);
-        out[e as usize] = out[e as usize].clone() + &Poly::term(rest, q.clone());
-    }
-    out
-}
-
 /// `Σ cᵢ varⁱ` from coefficients.
 pub fn from_coefficients(cs: &[Poly], var: &str) -> Poly {
     cs.iter().enumerate().fold(Poly::zero(), |acc, (i, c)| {
@@ -32,7 +22,7 @@ pub fn from_coefficients(cs: &[Poly], var: &str) -> Poly {
 
 /// `Res_var(a, b)` (degrees as they are; zero when either is zero).
 pub fn resultant(a: &Poly, b: &Poly, var: &str) -> Poly {
-    let (ca, cb) = (coefficients_in(a, var), coefficients_in(b, var));
+    let (ca, cb) = (a.coefficients_in(var), b.coefficients_in(var));
     let (m, n) = (ca.len() - 1, cb.len() - 1);
     if a.is_zero() || b.is_zero() {
         return Poly::zero();
@@ -112,6 +102,6 @@ mod tests {
         let r = resultant(&a, &b, "z");
         let expected = Poly::int(2) - &v("p");
         assert!(r == expected || r == -expected.clone(), "{r}");
-        assert_eq!(from_coefficients(&coefficients_in(&a, "z"), "z"), a);
+        assert_eq!(from_coefficients(&a.coefficients_in("z"), "z"), a);
     }
 }

@@ -18,8 +18,10 @@
 //! never numerical tests.
 //!
 //! Denominators are kept factored, `D = Π fᵢ^eᵢ`, with primitive factors of
-//! positive leading coefficient; a factor is cancelled only when it divides
-//! the numerator exactly ([`Poly::exact_div`]).
+//! positive leading coefficient; a factor is cancelled when it divides the
+//! numerator exactly ([`Poly::exact_div`]), and a factor free of `s`, `c`
+//! also by its greatest common divisor with the numerator ([`gcd`]), so
+//! `(m + 2)/(m² − 4)` is `1/(m − 2)`.
 //!
 //! [`Sym`] implements [`trig_core::Ring`], so every formula of the catalog
 //! can be evaluated symbolically:
@@ -41,7 +43,9 @@
 mod calculus;
 mod error;
 mod eval;
+pub mod gcd;
 mod linear;
+mod modular;
 pub mod monomial;
 pub mod poly;
 mod print;

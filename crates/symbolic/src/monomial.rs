@@ -125,6 +125,13 @@ impl Monomial {
         Monomial { factors }
     }
 
+    /// `(inside, outside)`: the factors whose variable satisfies `keep`, and
+    /// the others (`self = inside · outside`).
+    pub fn partition(&self, keep: impl Fn(&Var) -> bool) -> (Monomial, Monomial) {
+        let (inside, outside) = self.factors.iter().cloned().partition(|(v, _)| keep(v));
+        (Monomial { factors: inside }, Monomial { factors: outside })
+    }
+
     /// The monomial without the variable `name`, and the exponent it had.
     pub fn split(&self, name: &str) -> (Monomial, u32) {
         let mut e = 0;

@@ -277,6 +277,17 @@ impl Poly {
         (u, p)
     }
 
+    /// The coefficients `[p₀, p₁, …]` of `self = Σ pᵢ·nameⁱ`, each free of
+    /// `name` (`[0]` for the zero polynomial).
+    pub fn coefficients_in(&self, name: &str) -> Vec<Poly> {
+        let mut out = vec![Poly::zero(); self.degree_in(name) as usize + 1];
+        for (m, q) in &self.terms {
+            let (rest, e) = m.split(name);
+            out[e as usize].add_term(rest, q.clone());
+        }
+        out
+    }
+
     /// The polynomial with the variable `name` replaced by `value`.
     pub fn subs(&self, name: &str, value: &Poly) -> Poly {
         let mut powers = vec![Poly::one()];

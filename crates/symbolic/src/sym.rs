@@ -9,6 +9,7 @@ use rug::Rational;
 use rug::ops::Pow;
 
 use crate::error::SymError;
+use crate::gcd::common_factor;
 use crate::poly::Poly;
 use crate::var::PI;
 
@@ -291,14 +292,18 @@ fn insert_factor(num: &mut Poly, den: &mut BTreeMap<Poly, u32>, p: &Poly, e: u32
     }
 }
 
-/// Removes from `den` every factor that divides `num` exactly, as often as
-/// it does.
+/// Brings `num / den` to lowest terms: every factor that divides `num`
+/// exactly is removed as often as it does, and a factor free of `s`, `c`
+/// that shares a divisor `g` with `num` is split, `g` cancelled
+/// ([`crate::gcd::common_factor`]). Each split lowers the degree of `num`,
+/// so this ends.
 fn cancel(mut num: Poly, den: BTreeMap<Poly, u32>) -> Sym {
     if num.is_zero() {
         return Sym::zero();
     }
-    let mut out = BTreeMap::new();
-    for (f, mut e) in den {
+    let mut out: BTreeMap<Poly, u32> = BTreeMap::new();
+    let mut pending: Vec<(Poly, u32)> = den.into_iter().collect();
+    while let Some((f, mut e)) = pending.pop() {
         while e > 0 {
             match num.exact_div(&f) {
                 Some(q) => {
@@ -308,8 +313,24 @@ fn cancel(mut num: Poly, den: BTreeMap<Poly, u32>) -> Sym {
                 None => break,
             }
         }
-        if e > 0 {
-            out.insert(f, e);
+        if e == 0 {
+            continue;
+        }
+        let Some(g) = common_factor(&num, &f) else {
+            *out.entry(f).or_insert(0) += e;
+            continue;
+        };
+        num = num.exact_div(&g).expect("a common factor divides");
+        let (unit, rest) = f
+            .exact_div(&g)
+            .expect("a common factor divides")
+            .canonical();
+        num = num.scale(&unit.recip());
+        if e > 1 {
+            pending.push((f, e - 1));
+        }
+        if rest.as_constant().is_none() {
+            pending.push((rest, 1));
         }
     }
     Sym { num, den: out }
@@ -377,6 +398,25 @@ mod tests {
         let x = v("beta") / &d + &(Sym::int(1) / &d);
         assert_eq!(x.as_rational(), Some(Rational::from(1)));
         assert!(x.denominator().is_empty());
+    }
+
+    #[test]
+    fn lowest_terms_through_gcd() {
+        // (m + 2)/(m² − 4) = 1/(m − 2): m² − 4 does not divide m + 2, but
+        // the two share m + 2.
+        let m = v("m");
+        let x = (m.clone() + &Sym::int(2)) / &(m.clone() * &m - &Sym::int(4));
+        assert_eq!(x.to_string(), "1/(m - 2)");
+        // Several parameters and a trigonometric numerator:
+        // (λ + μ)(s + c)/((λ + μ)²(λ − μ)) = (s + c)/((λ + μ)(λ − μ)).
+        let (l, u) = (v("lambda"), v("mu"));
+        let sum = l.clone() + &u;
+        let num = sum.clone() * &(v("s") + &v("c"));
+        let y = num / &(sum.clone() * &sum * &(l.clone() - &u));
+        assert_eq!(y.numerator(), (v("s") + &v("c")).numerator());
+        let rest = sum * &(l - &u);
+        assert_eq!(&y.denominator_poly(), rest.numerator());
+        assert_eq!(y * &rest, v("s") + &v("c"));
     }
 
     #[test]

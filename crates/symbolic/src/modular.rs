@@ -1,0 +1,174 @@
+//! A cheap proof that polynomials over ℚ are coprime, by a modular image.
+//!
+//! Let `G = gcd(f, n₁, …, n_k)` in `ℚ[x₁, …, x_r]` and `x` a variable of
+//! `f`. A ring homomorphism `φ` that fixes `x`, sends every other variable
+//! to an integer and reduces modulo a prime `p` (defined on every
+//! coefficient that occurs, i.e. `p` divides no denominator) maps `G` to a
+//! common divisor of `φ(f), φ(n₁), …` in `𝔽_p[x]`. Since `lc_x G` divides
+//! `lc_x f`, when `φ(lc_x f) ≠ 0` the image keeps its degree:
+//! `deg_x G = deg_x φ(G) ≤ deg gcd(φ(f), φ(n₁), …)`. So when that univariate
+//! gcd is a constant for *every* variable `x` of `f`, `G` is free of all of
+//! them, and `G` divides `f`, so `G` is a constant: `f` and the `nᵢ` are
+//! coprime. This is a proof, not a heuristic; when an image is unlucky (a
+//! leading coefficient or a denominator vanishes mod `p`, or the images share
+//! a factor by accident) the answer is only "not proved", and the exact
+//! gcd decides.
+
+use crate::poly::Poly;
+
+/// The prime `2³¹ − 1`: products of residues fit in `u64`.
+const P: u64 = 2_147_483_647;
+
+/// True when `f` and all `others` are proved to have no nonconstant common
+/// divisor (see the [module documentation](self)); false means "not proved".
+pub fn coprime(f: &Poly, others: &[Poly]) -> bool {
+    let vars = f.variables();
+    !vars.is_empty()
+        && vars.iter().all(|x| {
+            let Some(mut g) = image(f, x).filter(|g| g.len() == f.degree_in(x) as usize + 1) else {
+                return false;
+            };
+            for n in others {
+                let Some(img) = image(n, x) else {
+                    return false;
+                };
+                g = gcd(g, img);
+                if g.len() == 1 {
+                    return true;
+                }
+            }
+            g.len() == 1
+        })
+}
+
+/// `φ(p)` as a polynomial in `x` over `𝔽_p` (coefficients lowest first, no
+/// trailing zeros), or `None` when a denominator vanishes mod `p`.
+fn image(p: &Poly, x: &str) -> Option<Vec<u64>> {
+    let mut out = vec![0u64; p.degree_in(x) as usize + 1];
+    for (m, q) in p.terms() {
+        let den = u64::from(q.denom().mod_u(P as u32));
+        if den == 0 {
+            return None;
+        }
+        let mut value = u64::from(q.numer().mod_u(P as u32)) * inverse(den) % P;
+        let mut power = 0;
+        for (v, e) in m.factors() {
+            if v.name() == x {
+                power = e as usize;
+            } else {
+                value = value * pow(substitute(v.name()), u64::from(e)) % P;
+            }
+        }
+        out[power] = (out[power] + value) % P;
+    }
+    trim(&mut out);
+    Some(out)
+}
+
+/// The integer a variable other than the main one is sent to: a fixed
+/// pseudo-random residue derived from its name (the same in every image).
+fn substitute(name: &str) -> u64 {
+    let hash = name.bytes().fold(0xcbf2_9ce4_8422_2325_u64, |h, b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
+    });
+    2 + hash % (P - 3)
+}
+
+fn pow(mut base: u64, mut e: u64) -> u64 {
+    let mut out = 1;
+    base %= P;
+    while e > 0 {
+        if e & 1 == 1 {
+            out = out * base % P;
+        }
+        base = base * base % P;
+        e >>= 1;
+    }
+    out
+}
+
+fn inverse(a: u64) -> u64 {
+    pow(a, P - 2)
+}
+
+fn trim(p: &mut Vec<u64>) {
+    while p.len() > 1 && p.last() == Some(&0) {
+        p.pop();
+    }
+}
+
+/// The monic gcd in `𝔽_p[x]` (`[0]` for two zeros).
+fn gcd(mut a: Vec<u64>, mut b: Vec<u64>) -> Vec<u64> {
+    trim(&mut a);
+    trim(&mut b);
+    while b != [0] {
+        let r = remainder(a, &b);
+        a = b;
+        b = r;
+    }
+    a
+}
+
+/// `a mod b`, `b ≠ 0`.
+fn remainder(mut a: Vec<u64>, b: &[u64]) -> Vec<u64> {
+    let db = b.len() - 1;
+    let lead = inverse(b[db]);
+    while a.len() > db && a != [0] {
+        let da = a.len() - 1;
+        let q = a[da] * lead % P;
+        for (i, bi) in b.iter().enumerate() {
+            let k = da - db + i;
+            a[k] = (a[k] + P - q * bi % P) % P;
+        }
+        a.pop();
+        trim(&mut a);
+        if db == 0 {
+            return vec![0];
+        }
+    }
+    a
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn v(name: &str) -> Poly {
+        Poly::var(name)
+    }
+
+    fn n(k: i64) -> Poly {
+        Poly::int(k)
+    }
+
+    #[test]
+    fn coprime_pairs_are_proved() {
+        let (l, u) = (v("lambda"), v("mu"));
+        let f = &(&l.pow(2) - &n(4)) * &u;
+        let others = [&(&l + &n(3)) * &(&u + &n(1)), &l - &(&u * &n(-7))];
+        assert!(coprime(&f, &others));
+        // negative and fractional coefficients
+        let g = &(&l * &n(-3)) + &Poly::constant(rug::Rational::from((1, 2)));
+        assert!(coprime(&g, &[&l - &n(5)]));
+    }
+
+    #[test]
+    fn a_common_factor_is_never_called_coprime() {
+        let (l, u) = (v("lambda"), v("mu"));
+        let common = &(&l * &u) - &n(2);
+        let f = &common * &(&l + &n(1));
+        let others = [&common * &(&u - &n(3)), &common * &common];
+        assert!(!coprime(&f, &others));
+        assert!(!coprime(&(&l + &n(2)), &[&l.pow(2) - &n(4)]));
+    }
+
+    #[test]
+    fn modular_gcd() {
+        // (x − 1)(x − 2) and (x − 1)(x + 5): gcd x − 1 (monic: P − 1 + x)
+        let a = vec![2, P - 3, 1];
+        let b = vec![P - 5, 4, 1];
+        let g = gcd(a, b);
+        assert_eq!(g.len(), 2);
+        assert_eq!(g[0] * inverse(g[1]) % P, P - 1);
+    }
+}
