@@ -25,7 +25,7 @@ fn range(c: &mut Criterion, file: &str, label: &str) {
     let names: Vec<&str> = spec.functions.iter().map(|f| f.name.as_str()).collect();
     let p = &spec.params[0];
     let start = p.range.interior_point();
-    let trig = spec.variable.is_trigonometric();
+    let trig = spec.domain.is_trigonometric();
     c.bench_function(label, |b| {
         b.iter(|| black_box(maximal_range(&fs, &names, trig, &p.name, &start)))
     });
@@ -43,7 +43,7 @@ fn region_of(c: &mut Criterion, file: &str, label: &str, window: bool) {
             source: &spec.params[k].source,
         })
     };
-    let trig = spec.variable.is_trigonometric();
+    let trig = spec.domain.is_trigonometric();
     c.bench_function(label, |b| {
         b.iter(|| {
             if window {

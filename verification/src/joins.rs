@@ -83,11 +83,12 @@ pub struct PrintedJoin {
 impl PrintedJoin {
     fn setup(&self, wrt: Wrt) -> JoinSetup<'_> {
         JoinSetup {
-            family: self.family,
+            basis: self.family,
             first_params: &self.first_params,
             second_params: &self.second_params,
             wrt,
             h: (Sym::var("h1"), Sym::var("h2")),
+            factors: trig_deriv::default_factors(),
         }
     }
 
@@ -162,6 +163,7 @@ fn convention(wrt: Wrt) -> &'static str {
         Wrt::Angle => "angle θ",
         Wrt::U => "u",
         Wrt::X => "x (h₁ ≠ h₂)",
+        Wrt::Variable => "the basis variable",
     }
 }
 

@@ -79,11 +79,12 @@ proptest! {
         let second: Vec<Sym> = (0..n).map(|i| Sym::var(&format!("Q{i}"))).collect();
         let (h1, h2) = (Rational::from(h.0), Rational::from(h.1));
         let setup = JoinSetup {
-            family,
+            basis: family,
             first_params: &sp1,
             second_params: &sp2,
             wrt,
             h: (sym(&h1), sym(&h2)),
+            factors: trig_deriv::default_factors(),
         };
         let Ok(join) = solve_join(&setup, kind, &first, &second) else {
             // inconsistent (e.g. C³ of the thesis basis with different m): the

@@ -25,6 +25,8 @@ pub mod nonneg;
 pub mod range;
 pub mod region;
 pub mod resultant;
+pub mod standard;
 pub mod sturm;
 
 pub use domain::{Bound, ParamBox, describe_z, in_z};
+pub use standard::{Standard, standardize};

@@ -4,9 +4,10 @@
 //! and the audit's checkers take `impl Basis`, so a user-supplied basis runs
 //! through the same machinery as the catalog: one evaluator.
 
+use crate::domain::Domain;
 use crate::family::Family;
 use crate::scalar::Ring;
-use crate::variable::{Atoms, Variable};
+use crate::variable::Atoms;
 
 /// A basis of functions `b₀ … b_{n−1}` in one [`Variable`] with shape
 /// parameters, evaluated once generically (f64, MPFR, jets, the exact ring).
@@ -14,8 +15,8 @@ pub trait Basis {
     /// Stable id used in reports and error messages.
     fn id(&self) -> String;
 
-    /// The native variable.
-    fn variable(&self) -> Variable;
+    /// The domain `x ∈ [a, b]` and the atoms the formulas are written in.
+    fn domain(&self) -> Domain;
 
     /// ASCII names of the shape parameters, in evaluation order.
     fn param_names(&self) -> Vec<String>;
@@ -37,8 +38,10 @@ impl Basis for Family {
         self.info().id.to_string()
     }
 
-    fn variable(&self) -> Variable {
-        self.info().variable
+    fn domain(&self) -> Domain {
+        let info = self.info();
+        let names: Vec<&str> = info.params.iter().map(|p| p.name).collect();
+        Domain::from_variable(info.variable, &names)
     }
 
     fn param_names(&self) -> Vec<String> {
@@ -67,8 +70,8 @@ impl<B: Basis + ?Sized> Basis for &B {
         (**self).id()
     }
 
-    fn variable(&self) -> Variable {
-        (**self).variable()
+    fn domain(&self) -> Domain {
+        (**self).domain()
     }
 
     fn param_names(&self) -> Vec<String> {
@@ -87,12 +90,14 @@ impl<B: Basis + ?Sized> Basis for &B {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::variable::Variable;
 
     fn first_value<B: Basis>(basis: B) -> f64 {
         let atoms = Atoms {
             s: 0.0,
             c: 1.0,
             t: 0.0,
+            e: 1.0,
         };
         basis.eval(&atoms, &[0.5])[0]
     }
@@ -106,7 +111,10 @@ mod tests {
     fn family_and_reference_delegate_to_the_catalog() {
         let f = Family::ThesisCubic;
         assert_eq!(f.id(), "thesis-cubic");
-        assert_eq!(Basis::variable(&f), Variable::UnitAngle);
+        assert_eq!(
+            f.domain(),
+            Domain::from_variable(Variable::UnitAngle, &["m"])
+        );
         assert_eq!(f.param_names(), vec!["m"]);
         assert_eq!(f.function_names(), vec!["b0", "b1", "b2", "b3"]);
         // b₀(u = 0) = 1 both by value and by reference

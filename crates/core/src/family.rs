@@ -324,7 +324,7 @@ impl Family {
     /// If `p` has the wrong length or the family has no formulas: callers
     /// validate first ([`Family::params_from_pairs`]).
     pub fn eval<T: Ring>(&self, x: &Atoms<T>, p: &[T]) -> Vec<T> {
-        let Atoms { s, c, t } = x;
+        let Atoms { s, c, t, .. } = x;
         assert_eq!(p.len(), self.info().params.len(), "parameter count");
         match self {
             Family::ThesisQuadratic => thesis::quadratic(s, c, &p[0]).to_vec(),

@@ -29,11 +29,27 @@ impl Ring for f64 {
     fn is_zero(&self) -> bool {
         *self == 0.0
     }
+
+    fn try_sin_cos(&self) -> Option<(Self, Self)> {
+        Some(Real::sin_cos(self))
+    }
+
+    fn try_exp(&self) -> Option<Self> {
+        Some(Real::exp(self))
+    }
+
+    fn try_sqrt(&self) -> Option<Self> {
+        (*self >= 0.0).then(|| f64::sqrt(*self))
+    }
 }
 
 impl Real for f64 {
     fn sin_cos(&self) -> (Self, Self) {
         f64::sin_cos(*self)
+    }
+
+    fn exp(&self) -> Self {
+        f64::exp(*self)
     }
 
     fn to_f64(&self) -> f64 {

@@ -18,8 +18,10 @@
 //! assert_eq!(b, vec![1.0, 0.0, 0.0, 0.0]);
 //! ```
 
+pub mod angles;
 pub mod basis;
 pub mod curve;
+pub mod domain;
 pub mod error;
 pub mod families;
 pub mod family;
@@ -33,6 +35,7 @@ pub mod surface;
 pub mod variable;
 
 pub use basis::Basis;
+pub use domain::{Affine, Domain};
 pub use error::{CoreError, Result};
 pub use family::{Family, FamilyInfo, SEED000_NONUNIFORM, catalog};
 pub use mpfr::Mpfr;

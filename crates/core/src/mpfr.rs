@@ -113,6 +113,18 @@ impl Ring for Mpfr {
     fn is_zero(&self) -> bool {
         self.0.is_zero()
     }
+
+    fn try_sin_cos(&self) -> Option<(Self, Self)> {
+        Some(Real::sin_cos(self))
+    }
+
+    fn try_exp(&self) -> Option<Self> {
+        Some(Real::exp(self))
+    }
+
+    fn try_sqrt(&self) -> Option<Self> {
+        (!self.0.is_sign_negative() || self.0.is_zero()).then(|| Mpfr(self.0.clone().sqrt()))
+    }
 }
 
 impl Real for Mpfr {
@@ -120,6 +132,10 @@ impl Real for Mpfr {
         let prec = self.prec();
         let (s, c) = self.0.clone().sin_cos(Float::new(prec));
         (Mpfr(s), Mpfr(c))
+    }
+
+    fn exp(&self) -> Self {
+        Mpfr(self.0.clone().exp())
     }
 
     fn to_f64(&self) -> f64 {

@@ -63,6 +63,26 @@ pub trait Ring:
     /// i.e. when dividing by it is undefined.
     fn is_zero(&self) -> bool;
 
+    /// `(sin self, cos self)` when the backend can form them: numerically
+    /// (f64, MPFR, jets over them), or, in the exact ring, as the paired
+    /// symbols `sin(p)`, `cos(p)` of a rational multiple of one parameter.
+    /// `None` when it cannot (the caller reports it).
+    fn try_sin_cos(&self) -> Option<(Self, Self)> {
+        None
+    }
+
+    /// `exp self` when the backend can form it (as [`Ring::try_sin_cos`]).
+    fn try_exp(&self) -> Option<Self> {
+        None
+    }
+
+    /// `√self` when the backend can form it: numerically for `self ≥ 0`,
+    /// exactly in the exact ring for rationals whose square-free part is a
+    /// product of the primes 2, 3, 5, 7 (the atoms `sqrt(p)`).
+    fn try_sqrt(&self) -> Option<Self> {
+        None
+    }
+
     /// `self²`.
     fn square(&self) -> Self {
         self.clone() * self
@@ -90,6 +110,9 @@ pub trait Ring:
 pub trait Real: Ring + PartialOrd {
     /// `(sin self, cos self)`.
     fn sin_cos(&self) -> (Self, Self);
+
+    /// `exp self`.
+    fn exp(&self) -> Self;
 
     /// Nearest f64 (for display and cross-checks only).
     fn to_f64(&self) -> f64;

@@ -72,7 +72,12 @@ impl Variable {
             Variable::Angle | Variable::Polynomial => x.clone(),
         };
         let (s, c) = theta.sin_cos();
-        Atoms { s, c, t: x.clone() }
+        Atoms {
+            s,
+            c,
+            t: x.clone(),
+            e: x.int(1),
+        }
     }
 
     /// True when `x` lies in the domain.
@@ -89,7 +94,9 @@ impl fmt::Display for Variable {
 }
 
 /// The quantities a formula is written in: `s = sin θ`, `c = cos θ` for the
-/// trigonometric families and `t` for the polynomial ones.
+/// trigonometric families, `t` (the variable itself) for the polynomial
+/// ones, and `e = exp(κx)` for exponential and hyperbolic bases
+/// ([`crate::Domain`]; `1` where unused).
 ///
 /// Numeric backends fill all three from a point ([`Variable::atoms`]); the
 /// exact ring fills them with symbols, and jets with truncated series, so the
@@ -99,4 +106,5 @@ pub struct Atoms<T> {
     pub s: T,
     pub c: T,
     pub t: T,
+    pub e: T,
 }

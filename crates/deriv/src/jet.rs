@@ -31,7 +31,7 @@ pub struct Jet<T, const K: usize> {
 
 /// `k!` in the context of `like`, as a product of ring integers (exact in
 /// exact rings, and in f64 for `k ≤ 18`; no big-number allocation).
-fn factorial<T: Ring>(like: &T, k: usize) -> T {
+pub(crate) fn factorial<T: Ring>(like: &T, k: usize) -> T {
     (2..=k as i64).fold(like.int(1), |acc, j| acc * &like.int(j))
 }
 
@@ -127,11 +127,10 @@ fn div_coeffs<T: Ring, const K: usize>(a: &[T; K], b: &[T; K]) -> [T; K] {
     q
 }
 
-/// `(sin x, cos x)` by the joint recurrence: `s₀, c₀ = sin_cos(x₀)`,
+/// `(sin x, cos x)` by the joint recurrence from `s₀, c₀ = sin x₀, cos x₀`:
 /// `k·s_k = Σ_{j=1..k} j·x_j·c_{k−j}`, `k·c_k = −Σ_{j=1..k} j·x_j·s_{k−j}`
 /// (from `s' = x'c`, `c' = −x's`).
-fn sin_cos_coeffs<T: Real, const K: usize>(x: &[T; K]) -> ([T; K], [T; K]) {
-    let (s0, c0) = x[0].sin_cos();
+fn sin_cos_coeffs<T: Ring, const K: usize>(x: &[T; K], s0: T, c0: T) -> ([T; K], [T; K]) {
     // j·x_j: the coefficients of x' (shifted by one).
     let dx: [T; K] = std::array::from_fn(|j| x[j].clone() * &x[j].int(j as i64));
     let mut s: [T; K] = std::array::from_fn(|_| s0.clone());
@@ -149,6 +148,19 @@ fn sin_cos_coeffs<T: Real, const K: usize>(x: &[T; K]) -> ([T; K], [T; K]) {
         c[k] = ck / &kk;
     }
     (s, c)
+}
+
+/// `exp x` by the recurrence from `e₀ = exp x₀`: `k·e_k = Σ_{j=1..k} j·x_j·e_{k−j}`
+/// (from `e' = x'e`).
+fn exp_coeffs<T: Ring, const K: usize>(x: &[T; K], e0: T) -> [T; K] {
+    let mut e: [T; K] = std::array::from_fn(|_| e0.clone());
+    for k in 1..K {
+        let sum = (1..=k).fold(x[0].int(0), |acc, j| {
+            acc + &(x[j].clone() * &x[j].int(j as i64) * &e[k - j])
+        });
+        e[k] = sum / &x[0].int(k as i64);
+    }
+    e
 }
 
 /// The series of `sin(θ₀+ε)`, `cos(θ₀+ε)` from `s0 = sin θ₀`, `c0 = cos θ₀`
@@ -185,24 +197,12 @@ fn angle_series<T: Ring, const K: usize>(s0: &T, c0: &T) -> ([T; K], [T; K]) {
 /// `(π/2)^k` ([`trig_core::Variable::angle_rate`]).
 pub fn angle_atoms<T: Ring, const K: usize>(s0: &T, c0: &T, theta0: T) -> Atoms<Jet<T, K>> {
     let (s, c) = angle_series(s0, c0);
+    let one = theta0.int(1);
     Atoms {
         s: Jet::from_coeffs(s),
         c: Jet::from_coeffs(c),
         t: Jet::variable(theta0),
-    }
-}
-
-/// Jet atoms for a polynomial family at `t0`: `t = t0 + ε`. The atoms `s`,
-/// `c` are filled with the series of `sin ε`, `cos ε` (the construction of
-/// [`angle_atoms`] with `s0 = 0`, `c0 = 1`) only so that the struct is
-/// complete; polynomial families never read them.
-pub fn polynomial_atoms<T: Ring, const K: usize>(t0: T) -> Atoms<Jet<T, K>> {
-    let (s0, c0) = (t0.int(0), t0.int(1));
-    let (s, c) = angle_series(&s0, &c0);
-    Atoms {
-        s: Jet::from_coeffs(s),
-        c: Jet::from_coeffs(c),
-        t: Jet::variable(t0),
+        e: Jet::constant(one),
     }
 }
 
@@ -316,6 +316,41 @@ impl<T: Ring, const K: usize> Ring for Jet<T, K> {
             c: mul_coeffs(&self.c, &self.c),
         }
     }
+
+    /// When the value's sine and cosine can be formed, the series by the
+    /// joint recurrence.
+    fn try_sin_cos(&self) -> Option<(Self, Self)> {
+        let (s0, c0) = self.value().try_sin_cos()?;
+        let (s, c) = sin_cos_coeffs(&self.c, s0, c0);
+        Some((Jet { c: s }, Jet { c }))
+    }
+
+    /// When the value's square root can be formed and is nonzero, the
+    /// series by `r_k = (x_k − Σ_{j=1..k−1} r_j r_{k−j}) / (2r₀)`.
+    fn try_sqrt(&self) -> Option<Self> {
+        let r0 = self.value().try_sqrt()?;
+        if K > 1 && r0.is_zero() {
+            return None;
+        }
+        let mut r: [T; K] = std::array::from_fn(|_| r0.clone());
+        let two_r0 = r0.clone() * &r0.int(2);
+        for k in 1..K {
+            let sum = (1..k).fold(self.c[k].clone(), |acc, j| {
+                acc - &(r[j].clone() * &r[k - j])
+            });
+            r[k] = sum / &two_r0;
+        }
+        Some(Jet { c: r })
+    }
+
+    /// When the value's exponential can be formed, the series by its
+    /// recurrence.
+    fn try_exp(&self) -> Option<Self> {
+        let e0 = self.value().try_exp()?;
+        Some(Jet {
+            c: exp_coeffs(&self.c, e0),
+        })
+    }
 }
 
 /// Equality of values (constant terms) only; see the module docs.
@@ -334,8 +369,15 @@ impl<T: PartialOrd, const K: usize> PartialOrd for Jet<T, K> {
 
 impl<T: Real, const K: usize> Real for Jet<T, K> {
     fn sin_cos(&self) -> (Self, Self) {
-        let (s, c) = sin_cos_coeffs(&self.c);
+        let (s0, c0) = self.value().sin_cos();
+        let (s, c) = sin_cos_coeffs(&self.c, s0, c0);
         (Jet { c: s }, Jet { c })
+    }
+
+    fn exp(&self) -> Self {
+        Jet {
+            c: exp_coeffs(&self.c, self.value().exp()),
+        }
     }
 
     /// The value as f64.
@@ -585,19 +627,6 @@ mod tests {
             assert!((a.s.derivative(k) - s.derivative(k)).abs() < 1e-15);
             assert!((a.c.derivative(k) - c.derivative(k)).abs() < 1e-15);
         }
-    }
-
-    #[test]
-    fn polynomial_atoms_give_the_polynomial_derivatives() {
-        let t0 = 0.25_f64;
-        let atoms: Atoms<Jet<f64, 5>> = polynomial_atoms(t0);
-        let jets = Family::Bernstein3.eval(&atoms, &[]);
-        let direct = family_derivatives::<f64, 5>(Family::Bernstein3, &t0, &[]);
-        for (jet, row) in jets.iter().zip(&direct) {
-            assert_eq!(&jet.derivatives(), row);
-        }
-        // B₀ = (1−t)³: −3(1−t)², 6(1−t), −6, 0
-        assert_eq!(direct[0], vec![0.421875, -1.6875, 4.5, -6.0, 0.0]);
     }
 
     #[test]

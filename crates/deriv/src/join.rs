@@ -21,7 +21,7 @@
 use std::fmt;
 use std::str::FromStr;
 
-use trig_core::{Family, Ring};
+use trig_core::{Basis, Family, Ring};
 use trig_symbolic::Sym;
 
 use crate::table::{End, Wrt, curve_endpoint_derivatives};
@@ -61,13 +61,13 @@ impl JoinKind {
     }
 
     /// The right-hand side of the order-`j` condition from the first
-    /// segment's derivatives `d` at its end (orders `0…`).
-    fn target(&self, j: usize, d: &[Sym]) -> Sym {
-        let (alpha, beta) = (Sym::var("alpha"), Sym::var("beta"));
+    /// segment's derivatives `d` at its end (orders `0…`), with the `G`
+    /// factors `α`, `β`.
+    fn target(&self, j: usize, d: &[Sym], [alpha, beta]: &[Sym; 2]) -> Sym {
         match (self, j) {
             (JoinKind::C(_), _) | (_, 0) => d[j].clone(),
-            (JoinKind::G1 | JoinKind::G2, 1) => alpha * &d[1],
-            (JoinKind::G2, 2) => alpha.square() * &d[2] + &(beta * &d[1]),
+            (JoinKind::G1 | JoinKind::G2, 1) => alpha.clone() * &d[1],
+            (JoinKind::G2, 2) => alpha.square() * &d[2] + &(beta.clone() * &d[1]),
             _ => unreachable!("order {j} exceeds the kind's order"),
         }
     }
@@ -118,10 +118,16 @@ pub enum JoinError {
     },
 }
 
-/// Two segments of one family meeting at a join.
+/// The usual names of the `G¹`/`G²` factors: `α`, `β`.
+pub fn default_factors() -> [Sym; 2] {
+    [Sym::var("alpha"), Sym::var("beta")]
+}
+
+/// Two segments of one basis (a catalog family or a spec file) meeting at
+/// a join.
 #[derive(Debug, Clone)]
-pub struct JoinSetup<'a> {
-    pub family: Family,
+pub struct JoinSetup<'a, B: Basis = Family> {
+    pub basis: B,
     /// Shape parameters of the first segment `Q₁`.
     pub first_params: &'a [Sym],
     /// Shape parameters of the second segment `Q₂`.
@@ -130,9 +136,12 @@ pub struct JoinSetup<'a> {
     pub wrt: Wrt,
     /// Interval lengths of the two segments (used by [`Wrt::X`] only).
     pub h: (Sym, Sym),
+    /// The symbols of the `G` factors `α`, `β` ([`default_factors`]; a spec
+    /// whose parameter is called `alpha` renames them).
+    pub factors: [Sym; 2],
 }
 
-impl JoinSetup<'_> {
+impl<B: Basis> JoinSetup<'_, B> {
     /// `Q₂⁽ʲ⁾(0) − target_j(Q₁)` for `j = 0…order`, for the given control
     /// points (symbols, numbers or printed formulas): all zero exactly when
     /// the join holds.
@@ -140,13 +149,13 @@ impl JoinSetup<'_> {
         let q1 = self.derivatives(self.first_params, first, End::End, &self.h.0);
         let q2 = self.derivatives(self.second_params, second, End::Start, &self.h.1);
         (0..=kind.order())
-            .map(|j| q2[j].clone() - &kind.target(j, &q1))
+            .map(|j| q2[j].clone() - &kind.target(j, &q1, &self.factors))
             .collect()
     }
 
     fn derivatives(&self, params: &[Sym], points: &[Sym], end: End, h: &Sym) -> Vec<Sym> {
         curve_endpoint_derivatives::<Sym, ORDERS>(
-            self.family,
+            &self.basis,
             params,
             points,
             None,
@@ -191,8 +200,8 @@ impl Join {
 
 /// Solves the join conditions for the second segment's control points,
 /// named by `second` (symbols), with the first segment's points `first`.
-pub fn solve_join(
-    setup: &JoinSetup<'_>,
+pub fn solve_join<B: Basis>(
+    setup: &JoinSetup<'_, B>,
     kind: JoinKind,
     first: &[Sym],
     second: &[Sym],
@@ -274,11 +283,12 @@ mod tests {
 
     fn setup<'a>(family: Family, p1: &'a [Sym], p2: &'a [Sym], wrt: Wrt) -> JoinSetup<'a> {
         JoinSetup {
-            family,
+            basis: family,
             first_params: p1,
             second_params: p2,
             wrt,
             h: (Sym::var("h1"), Sym::var("h2")),
+            factors: default_factors(),
         }
     }
 

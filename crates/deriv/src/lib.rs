@@ -7,8 +7,10 @@
 pub mod jet;
 pub mod join;
 
-pub use jet::{Jet, angle_atoms, family_derivatives, polynomial_atoms};
-pub use join::{Forced, Join, JoinError, JoinKind, JoinSetup, solve_join, vanishing};
+pub use jet::{Jet, angle_atoms, family_derivatives};
+pub use join::{
+    Forced, Join, JoinError, JoinKind, JoinSetup, default_factors, solve_join, vanishing,
+};
 pub mod table;
 
 pub use table::{

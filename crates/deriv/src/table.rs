@@ -15,16 +15,16 @@
 
 use std::fmt;
 
-use trig_core::{Atoms, Basis, Ring};
+use trig_core::{Atoms, Basis, Domain, Ring};
 
-use crate::jet::{Jet, angle_atoms, polynomial_atoms};
+use crate::jet::{Jet, angle_atoms, factorial};
 
 /// Which end of the domain.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum End {
-    /// `u = 0` (`θ = 0`, `t = 0`).
+    /// `x = a` (`u = 0`, `θ = 0`, `t = 0` for the catalog).
     Start,
-    /// `u = 1` (`θ = π/2`, `t = 1`).
+    /// `x = b` (`u = 1`, `θ = π/2`, `t = 1` for the catalog).
     End,
 }
 
@@ -40,12 +40,16 @@ impl fmt::Display for End {
 /// The variable derivatives are taken with respect to.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Wrt {
-    /// The angle `θ` (`t` for polynomial families).
+    /// The angle `θ = ωx` of the atoms `s`, `c` (the variable itself for
+    /// bases without an angle).
     Angle,
-    /// `u ∈ [0, 1]` with `θ = πu/2`.
+    /// The unit parameter `u ∈ [0, 1]`, `x = a + (b − a)u` (for the thesis
+    /// `θ = πu/2`).
     U,
-    /// A data abscissa `x` over an interval of length `h`.
+    /// A data abscissa over an interval of length `h`: `u = (x − xᵢ)/h`.
     X,
+    /// The basis's own variable `x ∈ [a, b]`.
+    Variable,
 }
 
 impl Wrt {
@@ -57,6 +61,7 @@ impl Wrt {
             (Wrt::X, true) => "with respect to x, θ = π(x − x_i)/(2h) (factor (π/(2h))^k)",
             (Wrt::Angle | Wrt::U, false) => "with respect to t",
             (Wrt::X, false) => "with respect to x, t = (x − x_i)/h (factor h^(−k))",
+            (Wrt::Variable, _) => "with respect to the basis variable",
         }
     }
 }
@@ -67,41 +72,107 @@ impl fmt::Display for Wrt {
             Wrt::Angle => "angle",
             Wrt::U => "u",
             Wrt::X => "x",
+            Wrt::Variable => "variable",
         })
     }
 }
 
-/// `dθ/d(variable)` for the convention: 1, π/2 or π/(2h) (1, 1, 1/h for
-/// polynomial bases). `h` is the interval length for [`Wrt::X`] and supplies
-/// the ring context.
-pub fn rate<T: Ring>(basis: impl Basis, wrt: Wrt, h: &T) -> T {
-    let trig = basis.variable().is_trigonometric();
-    let half_pi = h.pi() * &h.ratio(1, 2);
-    match (wrt, trig) {
-        (Wrt::Angle, _) | (Wrt::U, false) => h.int(1),
-        (Wrt::U, true) => half_pi,
-        (Wrt::X, true) => half_pi / h,
-        (Wrt::X, false) => h.int(1) / h,
+/// True when the jets are seeded in the angle `θ` (formulas in `s`, `c`
+/// alone, as the catalog's trigonometric families), otherwise in the
+/// variable `x`.
+fn seeded_in_angle(domain: &Domain) -> bool {
+    domain.is_pure_trigonometric()
+}
+
+/// `d(seed)/d(wrt)`: the factor by which one derivative in the seed
+/// variable (`θ` or `x`) exceeds one in the convention `wrt`. With
+/// `ω = dθ/dx` and the domain length `L = b − a`: `1, ω, ωL, ωL/h` for
+/// `θ`-seeded jets (angle, variable, u, data abscissa), `1/ω, 1, L, L/h`
+/// for `x`-seeded ones. `h` is the interval length for [`Wrt::X`] and
+/// supplies the ring context; `params` are the shape parameters (`L` may
+/// depend on them).
+pub fn rate<T: Ring>(basis: impl Basis, wrt: Wrt, h: &T, params: &[T]) -> T {
+    let domain = basis.domain();
+    let omega = domain.angle_rate(h);
+    let length = domain.end_value(h, params) - &domain.start_value(h, params);
+    let one = h.int(1);
+    let in_x = match wrt {
+        Wrt::Angle => one.clone() / &omega,
+        Wrt::Variable => one,
+        Wrt::U => length,
+        Wrt::X => length / h,
+    };
+    if seeded_in_angle(&domain) {
+        in_x * &omega
+    } else {
+        in_x
     }
 }
 
-/// Jet atoms at one end of the basis's domain, built from exact values.
+/// The series of `sin(ω(x₀ + ε))`, `cos(ω(x₀ + ε))`, `exp(κ(x₀ + ε))` from
+/// their exact values at `x₀`: coefficients `ωᵏ·(s₀, c₀, −s₀, −c₀, …)/k!`
+/// and `κᵏe₀/k!`, built in the ring.
+fn scaled_atoms<T: Ring, const K: usize>(at: &Atoms<T>, omega: &T, kappa: &T) -> Atoms<Jet<T, K>> {
+    let Atoms { s, c, .. } = angle_atoms::<T, K>(&at.s, &at.c, at.t.clone());
+    let powers = |r: &T| -> Vec<T> {
+        let mut out = vec![r.int(1)];
+        for k in 1..K {
+            out.push(out[k - 1].clone() * r);
+        }
+        out
+    };
+    let (w, kk) = (powers(omega), powers(kappa));
+    let scale = |jet: &Jet<T, K>, p: &[T]| {
+        Jet::from_coeffs(std::array::from_fn(|k| jet.coeffs()[k].clone() * &p[k]))
+    };
+    let exp = Jet::from_coeffs(std::array::from_fn(|k| {
+        at.e.clone() * &kk[k] / &factorial(&at.e, k)
+    }));
+    Atoms {
+        s: scale(&s, &w),
+        c: scale(&c, &w),
+        t: Jet::variable(at.t.clone()),
+        e: exp,
+    }
+}
+
+/// Jet atoms at one end of the basis's domain, built from the exact atoms
+/// there ([`Domain::atoms_at`]): seeded in `θ` for formulas in `s`, `c`
+/// alone, in `x` otherwise (see [`rate`]).
+///
+/// # Panics
+/// When the ring cannot form the atoms at the end exactly (the exact ring
+/// at an angle that is not a multiple of π/12, or `exp` of a nonzero
+/// constant); spec files are refused for that when read.
 pub fn end_atoms<T: Ring, const K: usize>(
     basis: impl Basis,
     end: End,
     like: &T,
+    params: &[T],
 ) -> Atoms<Jet<T, K>> {
-    let (zero, one) = (like.int(0), like.int(1));
-    if basis.variable().is_trigonometric() {
-        match end {
-            End::Start => angle_atoms(&zero, &one, zero.clone()),
-            End::End => angle_atoms(&one, &zero, like.pi() * &like.ratio(1, 2)),
-        }
+    let domain = basis.domain();
+    let x = match end {
+        End::Start => &domain.start,
+        End::End => &domain.end,
+    };
+    let at = domain
+        .atoms_at(x, like, params)
+        .expect("the ring forms the atoms at the ends (validated when the basis is read)");
+    if seeded_in_angle(&domain) {
+        let theta = x
+            .times(domain.angle.as_ref().expect("an angle"))
+            .map_or_else(
+                || at.t.clone() * &domain.angle_rate(like),
+                |a| a.eval(like, params),
+            );
+        angle_atoms(&at.s, &at.c, theta)
     } else {
-        polynomial_atoms(match end {
-            End::Start => zero,
-            End::End => one,
-        })
+        let omega = domain.angle_rate(like);
+        let kappa = domain
+            .exp
+            .as_ref()
+            .map_or_else(|| like.int(0), |k| like.rational(k));
+        scaled_atoms(&at, &omega, &kappa)
     }
 }
 
@@ -116,9 +187,9 @@ pub fn endpoint_derivatives<T: Ring, const K: usize>(
     wrt: Wrt,
     h: &T,
 ) -> Vec<Vec<T>> {
-    let atoms = end_atoms::<T, K>(&basis, end, h);
-    let params: Vec<Jet<T, K>> = params.iter().cloned().map(Jet::constant).collect();
-    scale(basis.eval(&atoms, &params), &rate(&basis, wrt, h))
+    let atoms = end_atoms::<T, K>(&basis, end, h, params);
+    let jparams: Vec<Jet<T, K>> = params.iter().cloned().map(Jet::constant).collect();
+    scale(basis.eval(&atoms, &jparams), &rate(&basis, wrt, h, params))
 }
 
 /// The derivatives of orders `0..K` of each jet, the `k`-th multiplied by `rateᵏ`.
@@ -154,7 +225,7 @@ pub fn curve_endpoint_derivatives<T: Ring, const K: usize>(
     wrt: Wrt,
     h: &T,
 ) -> Vec<T> {
-    let atoms = end_atoms::<T, K>(&basis, end, h);
+    let atoms = end_atoms::<T, K>(&basis, end, h, params);
     let jparams: Vec<Jet<T, K>> = params.iter().cloned().map(Jet::constant).collect();
     let functions = basis.eval(&atoms, &jparams);
     assert_eq!(
@@ -181,7 +252,7 @@ pub fn curve_endpoint_derivatives<T: Ring, const K: usize>(
         Some(_) => numerator / &sum(weighted.into_iter()),
         None => numerator,
     };
-    scale(vec![curve], &rate(&basis, wrt, h)).remove(0)
+    scale(vec![curve], &rate(&basis, wrt, h, params)).remove(0)
 }
 
 fn sum<T: Ring>(mut terms: impl Iterator<Item = T>) -> T {
@@ -192,7 +263,7 @@ fn sum<T: Ring>(mut terms: impl Iterator<Item = T>) -> T {
 /// One-sided derivatives at one knot of a uniform piecewise basis function.
 #[derive(Debug, Clone, PartialEq)]
 pub struct KnotDerivatives<T> {
-    /// Knot index `0…4` (knots at `n = 0, 1, 2, 3, 4`).
+    /// Knot index `0…n` (knots at `0, 1, …, n` for `n` pieces).
     pub knot: usize,
     /// Limits from the left (`None` at the first knot), orders `0..K`.
     pub left: Option<Vec<T>>,
@@ -200,27 +271,26 @@ pub struct KnotDerivatives<T> {
     pub right: Option<Vec<T>>,
 }
 
-/// One-sided derivatives at the five knots of the uniform B-spline basis
-/// function assembled from `basis`'s segment functions (piece `k` is
-/// function `3 − k`, see `trig_core::piecewise`). With [`Wrt::U`] they are
-/// derivatives in the global knot parameter `n` (unit spacing).
-///
-/// # Panics
-/// If the basis has fewer than four functions.
+/// One-sided derivatives at the `n + 1` knots of the uniform B-spline basis
+/// function assembled from `basis`'s `n` segment functions (piece `k` is
+/// function `n − 1 − k`: four pieces for the catalog's cubic families, see
+/// `trig_core::piecewise`). With [`Wrt::U`] they are derivatives in the
+/// global knot parameter (unit spacing).
 pub fn knot_derivatives<T: Ring, const K: usize>(
     basis: impl Basis,
     params: &[T],
     wrt: Wrt,
     h: &T,
 ) -> Vec<KnotDerivatives<T>> {
-    use trig_core::piecewise::{PIECES, segment_function};
     let start = endpoint_derivatives::<T, K>(&basis, params, End::Start, wrt, h);
     let end = endpoint_derivatives::<T, K>(&basis, params, End::End, wrt, h);
-    (0..=PIECES)
+    let pieces = start.len();
+    let function = |piece: usize| pieces - 1 - piece;
+    (0..=pieces)
         .map(|knot| KnotDerivatives {
             knot,
-            left: (knot > 0).then(|| end[segment_function(knot - 1)].clone()),
-            right: (knot < PIECES).then(|| start[segment_function(knot)].clone()),
+            left: (knot > 0).then(|| end[function(knot - 1)].clone()),
+            right: (knot < pieces).then(|| start[function(knot)].clone()),
         })
         .collect()
 }

@@ -46,7 +46,8 @@ impl<T: Real> Piece<T> {
         let atoms = Atoms {
             s,
             c,
-            t: theta.clone(),
+            e: like.int(1),
+            t: theta,
         };
         let b = Family::ThesisCubic.eval(&atoms, &[like.rational(&self.m)]);
         b.iter()

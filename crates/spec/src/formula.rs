@@ -1,51 +1,63 @@
-//! The formula language of spec files, parsed straight into the exact ring
-//! [`Sym`] (so f64, MPFR, jets and the symbolic ring all evaluate the one
-//! parsed value — no second evaluator).
+//! Formulas of spec files, lowered from their syntax tree ([`crate::ast`])
+//! into the exact ring [`Sym`] — so f64, MPFR, jets and the symbolic ring
+//! all evaluate the one lowered value, with no second evaluator.
 //!
-//! Grammar (usual precedence, left-associative, `^` binds tightest):
+//! Names: the shape parameters (ASCII name or printed symbol), the
+//! functions and definitions of the file (in any order: resolved on use,
+//! cycles refused), `pi` (or `π`), the variable, the shorthands `s`, `c`
+//! for the declared angle of the legacy variables, and extra symbols the
+//! caller allows (control points of join formulas).
 //!
-//! ```text
-//! expr   := term (('+' | '-') term)*
-//! term   := unary (('*' | '/') unary)*
-//! unary  := ('-' | '+') unary | power
-//! power  := atom ('^' ['-'] integer)?
-//! atom   := number | name | ('sin' | 'cos') '(' angle ')' | '(' expr ')'
-//! ```
+//! Calls, each kept in the exact ring ([`trig_core::Domain`] holds the
+//! base rates found in the whole file, [`crate::frequencies`]):
+//! * `sin`, `cos` of `k·ωx + Σ kᵢbᵢpᵢ + qπ` (integers `k`, `kᵢ`): multiple
+//!   angles of the atoms `s = sin ωx`, `c = cos ωx` and `sin(bᵢpᵢ)`,
+//!   `cos(bᵢpᵢ)`, combined by the sum formula; `qπ` a multiple of π/12;
+//! * `exp`, `sinh`, `cosh` of `k·κx + Σ kᵢbᵢpᵢ`: powers of `E = exp(κx)`
+//!   and `exp(bᵢpᵢ)`, `sinh z = (eᶻ − e⁻ᶻ)/2`;
+//! * `sqrt` of a rational whose square-free part is a product of 2, 3, 5, 7.
 //!
-//! Numbers are decimals read exactly (`0.6` = 3/5). Names: the shape
-//! parameters (ASCII name or printed symbol), functions defined earlier in
-//! the file, `pi` (or `π`), `s` = sin θ and `c` = cos θ for trigonometric
-//! bases, the variable `t` for polynomial bases, and any extra symbols the
-//! caller allows (control points of join formulas). `sin`/`cos` take the
-//! declared angle (`pi*u/2` for `u ∈ [0,1]`, `t` for `t ∈ [0, π/2]`) or an
-//! integer multiple of it (`cos(2*t)` expands by the multiple-angle
-//! recurrences). `−`, `·`, `×` are accepted for `-`, `*`.
+//! The cost of a formula is bounded as a whole: every intermediate value
+//! has at most [`MAX_TERMS`] terms and degree [`MAX_DEGREE`], and the
+//! multiplications of one formula (powers included) at most [`MAX_WORK`]
+//! term products — checked before each product is formed.
+
+use std::cell::Cell;
 
 use rug::Rational;
-use trig_core::{Ring, Variable, parse_exact};
+use trig_core::angles::{angle_sum, multiple_angle};
+use trig_core::{Affine, Domain, Ring};
 use trig_symbolic::Sym;
 
+use crate::ast::{self, Expr, Func, Node};
 use crate::error::FormulaError;
 
-/// Longest formula accepted (characters).
-pub const MAX_LEN: usize = 10_000;
-/// Deepest nesting of parentheses and unary signs.
-pub const MAX_DEPTH: usize = 64;
-/// Largest exponent magnitude in `x^n`.
-pub const MAX_EXPONENT: i64 = 64;
-/// Largest multiple `k` in `sin(k θ)`.
-pub const MAX_MULTIPLE: i64 = 24;
+/// Most terms of any intermediate value (numerator and denominator factors).
+pub const MAX_TERMS: usize = 4_000;
+/// Highest total degree of any intermediate value.
+pub const MAX_DEGREE: u64 = 128;
+/// Most term products (`|a|·|b|` per multiplication) of one formula.
+pub const MAX_WORK: u64 = 20_000_000;
 
-/// What names mean while parsing one formula.
+/// The ring names of the atoms: `t` is the variable (whatever its printed
+/// name), `E = exp(κx)`.
+pub const T: &str = "t";
+/// See [`T`].
+pub const E: &str = "E";
+
+/// What names mean while lowering one formula.
 pub struct Scope<'a> {
-    /// The declared variable.
-    pub variable: Variable,
-    /// Its name in formulas: `u` or `t`.
+    /// The domain with its base rates.
+    pub domain: &'a Domain,
+    /// The variable's name in formulas (`u`, `t`, `x`, …).
     pub var_name: &'a str,
+    /// For the legacy variables, `k` with the declared angle `= k·ω`: the
+    /// shorthands `s`, `c` are its sine and cosine.
+    pub shorthand: Option<i64>,
     /// Shape parameters: (ASCII name, printed symbol).
     pub params: &'a [(String, String)],
-    /// Functions defined so far: (name, value).
-    pub functions: &'a [(String, Sym)],
+    /// The functions and definitions of the file, by name.
+    pub resolve: &'a dyn Fn(&str) -> Option<Result<Sym, String>>,
     /// Further symbols allowed as themselves (e.g. control points `P0`).
     pub extra: &'a [String],
     /// Decides whether division by a value is allowed (`Err` says why not).
@@ -55,312 +67,258 @@ pub struct Scope<'a> {
 impl std::fmt::Debug for Scope<'_> {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("Scope")
-            .field("variable", &self.variable)
+            .field("domain", &self.domain)
             .field("params", &self.params)
             .finish_non_exhaustive()
     }
 }
 
-/// Parses `text` in `scope`.
+/// Parses and lowers `text` in `scope`.
 pub fn parse(text: &str, scope: &Scope<'_>) -> Result<Sym, FormulaError> {
-    let chars: Vec<char> = text.chars().collect();
-    if chars.len() > MAX_LEN {
-        return Err(FormulaError::new(
-            MAX_LEN,
-            format!("formula longer than {MAX_LEN} characters"),
-        ));
-    }
-    let tokens = lex(&chars)?;
-    let mut p = Parser {
-        tokens,
-        at: 0,
+    lower(&ast::parse(text)?, scope)
+}
+
+/// Lowers a syntax tree in `scope`.
+pub fn lower(e: &Expr, scope: &Scope<'_>) -> Result<Sym, FormulaError> {
+    Lowering {
         scope,
-        depth: 0,
-        angle: false,
-        end: chars.len(),
-    };
-    let value = p.expr()?;
-    match p.peek() {
-        None => Ok(value),
-        Some(t) => Err(FormulaError::new(
-            t.pos,
-            format!(
-                "expected an operator (+ - * / ^) or the end, found {}",
-                t.kind.describe()
-            ),
-        )),
+        work: Cell::new(0),
     }
+    .value(e)
 }
 
-#[derive(Debug, Clone, PartialEq)]
-enum Kind {
-    Number(String),
-    Name(String),
-    Op(char),
-    Open,
-    Close,
+/// An argument `x·(a + bπ) + rest`, linear in the variable and the
+/// parameters (the argument of `sin`, `exp`, …, a symmetry map, a domain
+/// end).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Linear {
+    /// The coefficient of the variable, `a + bπ`.
+    pub x: Affine,
+    /// Constant and parameter part.
+    pub rest: Affine,
 }
 
-impl Kind {
-    fn describe(&self) -> String {
-        match self {
-            Kind::Number(n) => format!("the number `{n}`"),
-            Kind::Name(n) => format!("`{n}`"),
-            Kind::Op(c) => format!("`{c}`"),
-            Kind::Open => "`(`".into(),
-            Kind::Close => "`)`".into(),
+impl Linear {
+    fn constant(&self) -> Option<&Rational> {
+        (self.x == Affine::default())
+            .then(|| self.rest.as_rational())
+            .flatten()
+    }
+
+    fn scale(&self, q: &Rational) -> Linear {
+        Linear {
+            x: self.x.scale(q),
+            rest: self.rest.scale(q),
         }
     }
+
+    fn plus(&self, o: &Linear) -> Linear {
+        Linear {
+            x: self.x.plus(&o.x),
+            rest: self.rest.plus(&o.rest),
+        }
+    }
+
+    /// `q·π` alone.
+    fn pi_multiple(&self) -> Option<&Rational> {
+        let pure =
+            self.x == Affine::default() && self.rest.constant == 0 && self.rest.params.is_empty();
+        pure.then_some(&self.rest.pi)
+    }
+
+    /// Rational in everything (no π, no parameters) but the variable.
+    fn rational_in_x(&self) -> bool {
+        self.x.pi == 0 && self.rest.pi == 0 && self.rest.params.is_empty()
+    }
 }
 
-#[derive(Debug, Clone)]
-struct Token {
-    kind: Kind,
-    pos: usize,
-}
-
-fn lex(chars: &[char]) -> Result<Vec<Token>, FormulaError> {
-    let mut out = Vec::new();
-    let mut i = 0;
-    while i < chars.len() {
-        let ch = chars[i];
-        let start = i;
-        let kind = match ch {
-            c if c.is_whitespace() => {
-                i += 1;
-                continue;
-            }
-            '0'..='9' | '.' => {
-                while i < chars.len() && (chars[i].is_ascii_digit() || chars[i] == '.') {
-                    i += 1;
-                }
-                out.push(Token {
-                    kind: Kind::Number(chars[start..i].iter().collect()),
-                    pos: start,
-                });
-                continue;
-            }
-            c if c.is_alphabetic() || c == '_' => {
-                while i < chars.len() && (chars[i].is_alphanumeric() || chars[i] == '_') {
-                    i += 1;
-                }
-                out.push(Token {
-                    kind: Kind::Name(chars[start..i].iter().collect()),
-                    pos: start,
-                });
-                continue;
-            }
-            '+' | '-' | '*' | '/' | '^' => Kind::Op(ch),
-            '−' => Kind::Op('-'),
-            '·' | '×' => Kind::Op('*'),
-            '(' => Kind::Open,
-            ')' => Kind::Close,
-            other => {
+/// Reads an argument that must be linear in the variable `var_name` and
+/// the parameters (`what` names it in errors: "the argument of sin").
+pub fn linear(
+    e: &Expr,
+    var_name: &str,
+    params: &[(String, String)],
+    what: &str,
+) -> Result<Linear, FormulaError> {
+    let refuse = |pos: usize| {
+        FormulaError::new(
+            pos,
+            format!(
+                "{what} must be linear in {var_name} and the parameters, with rational or π coefficients (e.g. {var_name}/2, pi*{var_name}/2, alpha - {var_name})"
+            ),
+        )
+    };
+    let rec = |x: &Expr| linear(x, var_name, params, what);
+    Ok(match &e.node {
+        Node::Number(q) => Linear {
+            rest: Affine::rational(q.clone()),
+            ..Linear::default()
+        },
+        Node::Name(n) if n == var_name => Linear {
+            x: Affine::rational(Rational::from(1)),
+            ..Linear::default()
+        },
+        Node::Name(n) if n == "pi" || n == "π" => Linear {
+            rest: Affine::pi_times(Rational::from(1)),
+            ..Linear::default()
+        },
+        Node::Name(n) => match params.iter().position(|(a, s)| a == n || s == n) {
+            Some(i) => Linear {
+                rest: Affine::param(i),
+                ..Linear::default()
+            },
+            None => {
                 return Err(FormulaError::new(
-                    start,
+                    e.pos,
                     format!(
-                        "unexpected character `{other}` (expected a number, a name, + - * / ^ or parentheses)"
+                        "`{n}` may not appear in {what}: only {var_name}, the parameters, pi and numbers"
                     ),
                 ));
             }
-        };
-        out.push(Token { kind, pos: start });
-        i += 1;
-    }
-    Ok(out)
-}
-
-struct Parser<'s, 'a> {
-    tokens: Vec<Token>,
-    at: usize,
-    scope: &'s Scope<'a>,
-    depth: usize,
-    /// Inside the argument of `sin`/`cos`: the variable is allowed.
-    angle: bool,
-    end: usize,
-}
-
-impl Parser<'_, '_> {
-    fn peek(&self) -> Option<&Token> {
-        self.tokens.get(self.at)
-    }
-
-    fn pos(&self) -> usize {
-        self.peek().map_or(self.end, |t| t.pos)
-    }
-
-    fn eat_op(&mut self, ops: &[char]) -> Option<(char, usize)> {
-        match self.peek() {
-            Some(Token {
-                kind: Kind::Op(c),
-                pos,
-            }) if ops.contains(c) => {
-                let found = (*c, *pos);
-                self.at += 1;
-                Some(found)
+        },
+        Node::Neg(a) => rec(a)?.scale(&Rational::from(-1)),
+        Node::Add(a, b) => rec(a)?.plus(&rec(b)?),
+        Node::Sub(a, b) => rec(a)?.plus(&rec(b)?.scale(&Rational::from(-1))),
+        Node::Mul(a, b) => {
+            let (l, r) = (rec(a)?, rec(b)?);
+            if let Some(q) = r.constant() {
+                l.scale(q)
+            } else if let Some(q) = l.constant() {
+                r.scale(q)
+            } else {
+                // q·π times something rational in the variable: π·x/2
+                let (pi, other) = match (l.pi_multiple(), r.pi_multiple()) {
+                    (Some(q), _) if r.rational_in_x() => (q.clone(), r),
+                    (_, Some(q)) if l.rational_in_x() => (q.clone(), l),
+                    _ => return Err(refuse(e.pos)),
+                };
+                Linear {
+                    x: Affine::pi_times(Rational::from(&other.x.constant * &pi)),
+                    rest: Affine::pi_times(Rational::from(&other.rest.constant * &pi)),
+                }
             }
-            _ => None,
         }
+        Node::Div(a, b) => match rec(b)?.constant() {
+            Some(q) if *q != 0 => rec(a)?.scale(&Rational::from(q.recip_ref())),
+            _ => return Err(refuse(e.pos)),
+        },
+        Node::Pow(a, 1) => rec(a)?,
+        Node::Pow(..) | Node::Call(..) => return Err(refuse(e.pos)),
+    })
+}
+
+struct Lowering<'s, 'a> {
+    scope: &'s Scope<'a>,
+    /// Term products spent so far.
+    work: Cell<u64>,
+}
+
+/// `(terms, degree)` of an exact value: numerator and denominator factors.
+fn size(x: &Sym) -> (usize, u64) {
+    let num = x.numerator();
+    x.denominator()
+        .iter()
+        .fold((num.len(), num.total_degree()), |(t, d), (f, e)| {
+            (t + f.len(), d + f.total_degree() * u64::from(*e))
+        })
+}
+
+impl Lowering<'_, '_> {
+    fn params(&self) -> Vec<Sym> {
+        self.scope.params.iter().map(|(n, _)| Sym::var(n)).collect()
     }
 
-    fn enter(&mut self) -> Result<(), FormulaError> {
-        self.depth += 1;
-        if self.depth > MAX_DEPTH {
+    /// Checks the bounds of an intermediate value.
+    fn bounded(&self, x: Sym, pos: usize) -> Result<Sym, FormulaError> {
+        let (terms, degree) = size(&x);
+        if terms > MAX_TERMS || degree > MAX_DEGREE {
             return Err(FormulaError::new(
-                self.pos(),
-                format!("nested more than {MAX_DEPTH} levels deep"),
+                pos,
+                format!(
+                    "the formula is too large here: an intermediate value has {terms} terms and degree {degree} (limits {MAX_TERMS} terms, degree {MAX_DEGREE})"
+                ),
             ));
         }
-        Ok(())
+        Ok(x)
     }
 
-    fn expr(&mut self) -> Result<Sym, FormulaError> {
-        self.enter()?;
-        let mut acc = self.term()?;
-        while let Some((op, _)) = self.eat_op(&['+', '-']) {
-            let rhs = self.term()?;
-            acc = if op == '+' { acc + &rhs } else { acc - &rhs };
+    /// `a·b`, after charging its cost and checking the degree bound.
+    fn product(&self, a: &Sym, b: &Sym, pos: usize) -> Result<Sym, FormulaError> {
+        let ((ta, da), (tb, db)) = (size(a), size(b));
+        if da + db > MAX_DEGREE {
+            return Err(FormulaError::new(
+                pos,
+                format!(
+                    "the formula's degree would exceed {MAX_DEGREE} here (degrees {da} and {db})"
+                ),
+            ));
         }
-        self.depth -= 1;
-        Ok(acc)
-    }
-
-    fn term(&mut self) -> Result<Sym, FormulaError> {
-        let mut acc = self.unary()?;
-        while let Some((op, pos)) = self.eat_op(&['*', '/']) {
-            let rhs = self.unary()?;
-            acc = if op == '*' {
-                acc * &rhs
-            } else {
-                self.divide(acc, &rhs, pos)?
-            };
+        let spent = self.work.get() + (ta as u64).max(1) * (tb as u64).max(1);
+        if spent > MAX_WORK {
+            return Err(FormulaError::new(
+                pos,
+                format!(
+                    "the formula is too costly to expand exactly (more than {MAX_WORK} term products); simplify it"
+                ),
+            ));
         }
-        Ok(acc)
+        self.work.set(spent);
+        self.bounded(a.clone() * b, pos)
     }
 
-    fn divide(&self, a: Sym, b: &Sym, pos: usize) -> Result<Sym, FormulaError> {
+    fn divide(&self, a: &Sym, b: &Sym, pos: usize) -> Result<Sym, FormulaError> {
         if b.is_zero() {
             return Err(FormulaError::new(pos, "division by zero"));
         }
-        if self.angle {
-            if b.as_rational().is_none() {
-                return Err(FormulaError::new(
-                    pos,
-                    "inside sin/cos only division by a nonzero number is allowed",
-                ));
+        (self.scope.divisor)(b).map_err(|why| FormulaError::new(pos, why))?;
+        let q = a
+            .checked_div(b)
+            .ok_or_else(|| FormulaError::new(pos, "division by zero"))?;
+        self.bounded(q, pos)
+    }
+
+    /// `xⁿ` by repeated squaring, every product charged.
+    fn power(&self, x: &Sym, n: u32, pos: usize) -> Result<Sym, FormulaError> {
+        let mut result = Sym::one();
+        let mut base = x.clone();
+        let mut e = n;
+        while e > 0 {
+            if e & 1 == 1 {
+                result = self.product(&result, &base, pos)?;
             }
-        } else {
-            (self.scope.divisor)(b).map_err(|why| FormulaError::new(pos, why))?;
-        }
-        a.checked_div(b)
-            .ok_or_else(|| FormulaError::new(pos, "division by zero"))
-    }
-
-    fn unary(&mut self) -> Result<Sym, FormulaError> {
-        if let Some((op, _)) = self.eat_op(&['-', '+']) {
-            self.enter()?;
-            let x = self.unary()?;
-            self.depth -= 1;
-            return Ok(if op == '-' { -x } else { x });
-        }
-        self.power()
-    }
-
-    fn power(&mut self) -> Result<Sym, FormulaError> {
-        let base = self.atom()?;
-        let Some((_, pos)) = self.eat_op(&['^']) else {
-            return Ok(base);
-        };
-        let negative = self.eat_op(&['-']).is_some();
-        let n = match self.peek() {
-            Some(Token {
-                kind: Kind::Number(text),
-                ..
-            }) if text.chars().all(|c| c.is_ascii_digit()) => text
-                .parse::<i64>()
-                .ok()
-                .filter(|n| *n <= MAX_EXPONENT)
-                .ok_or_else(|| {
-                    FormulaError::new(pos, format!("exponent larger than {MAX_EXPONENT}"))
-                })?,
-            _ => {
-                return Err(FormulaError::new(
-                    self.pos(),
-                    "expected an integer exponent after `^` (e.g. x^2, x^-1)",
-                ));
+            e >>= 1;
+            if e > 0 {
+                base = self.product(&base, &base, pos)?;
             }
-        };
-        self.at += 1;
-        let exponent = u32::try_from(n).unwrap_or(0);
-        let raised = base.powi(exponent);
-        if negative {
-            self.divide(Sym::one(), &raised, pos)
-        } else {
-            Ok(raised)
         }
+        Ok(result)
     }
 
-    fn atom(&mut self) -> Result<Sym, FormulaError> {
-        let Some(token) = self.peek().cloned() else {
-            return Err(FormulaError::new(
-                self.end,
-                "unexpected end of formula (expected a number, a name or `(`)",
-            ));
-        };
-        self.at += 1;
-        match token.kind {
-            Kind::Number(text) => number(&text, token.pos),
-            Kind::Open => {
-                let x = self.expr()?;
-                match self.peek() {
-                    Some(Token {
-                        kind: Kind::Close, ..
-                    }) => {
-                        self.at += 1;
-                        Ok(x)
-                    }
-                    _ => Err(FormulaError::new(
-                        self.pos(),
-                        format!("expected `)` to close the `(` at position {}", token.pos),
-                    )),
+    fn value(&self, e: &Expr) -> Result<Sym, FormulaError> {
+        let pos = e.pos;
+        match &e.node {
+            Node::Number(q) => Ok(Sym::rational(q.clone())),
+            Node::Name(n) => self.name(n, pos),
+            Node::Neg(a) => Ok(-self.value(a)?),
+            Node::Add(a, b) => self.bounded(self.value(a)? + &self.value(b)?, pos),
+            Node::Sub(a, b) => self.bounded(self.value(a)? - &self.value(b)?, pos),
+            Node::Mul(a, b) => self.product(&self.value(a)?, &self.value(b)?, pos),
+            Node::Div(a, b) => self.divide(&self.value(a)?, &self.value(b)?, pos),
+            Node::Pow(a, n) => {
+                let x = self.value(a)?;
+                let raised = self.power(&x, n.unsigned_abs() as u32, pos)?;
+                if *n < 0 {
+                    self.divide(&Sym::one(), &raised, pos)
+                } else {
+                    Ok(raised)
                 }
             }
-            Kind::Name(name) => self.name(&name, token.pos),
-            other => Err(FormulaError::new(
-                token.pos,
-                format!(
-                    "expected a number, a name or `(`, found {}",
-                    other.describe()
-                ),
-            )),
+            Node::Call(f, arg) => self.call(*f, arg, pos),
         }
     }
 
-    fn name(&mut self, name: &str, pos: usize) -> Result<Sym, FormulaError> {
-        let called = matches!(
-            self.peek(),
-            Some(Token {
-                kind: Kind::Open,
-                ..
-            })
-        );
-        if name == "sin" || name == "cos" {
-            if !called {
-                return Err(FormulaError::new(
-                    pos,
-                    format!("expected `(` after `{name}`"),
-                ));
-            }
-            return self.trig_call(name == "sin", pos);
-        }
-        if called {
-            return Err(FormulaError::new(
-                pos,
-                format!("unknown function `{name}` (expected sin or cos)"),
-            ));
-        }
+    fn name(&self, name: &str, pos: usize) -> Result<Sym, FormulaError> {
         let scope = self.scope;
-        let trig = scope.variable.is_trigonometric();
         if name == "pi" || name == "π" {
             return Ok(Sym::pi());
         }
@@ -371,250 +329,309 @@ impl Parser<'_, '_> {
         {
             return Ok(Sym::var(p));
         }
-        if let Some((_, value)) = scope.functions.iter().rev().find(|(n, _)| n == name) {
-            return Ok(value.clone());
+        if let Some(found) = (scope.resolve)(name) {
+            return found.map_err(|why| FormulaError::new(pos, why));
         }
         if scope.extra.iter().any(|e| e == name) {
             return Ok(Sym::var(name));
         }
         if name == scope.var_name {
-            if !trig {
-                return Ok(Sym::var("t"));
-            }
-            if self.angle {
-                return Ok(Sym::var("__x"));
-            }
-            return Err(FormulaError::new(
-                pos,
-                format!(
-                    "wrong variable: `{name}` may appear only inside sin(…)/cos(…) as the angle {}; write s, c or sin({})",
-                    angle_text(scope),
-                    angle_text(scope)
-                ),
-            ));
+            return Ok(Sym::var(T));
         }
-        if name == "s" || name == "c" {
-            if trig {
-                return Ok(Sym::var(name));
-            }
-            return Err(FormulaError::new(
-                pos,
-                format!(
-                    "wrong variable: `{name}` (sin/cos of an angle) in a basis polynomial in {}",
-                    scope.var_name
-                ),
-            ));
+        if let ("s" | "c", Some(k)) = (name, scope.shorthand) {
+            let (s, c) = multiple_angle(&Sym::var("s"), &Sym::var("c"), k);
+            return Ok(if name == "s" { s } else { c });
         }
         if ["u", "t", "x", "theta", "θ"].contains(&name) {
             return Err(FormulaError::new(
                 pos,
                 format!(
                     "wrong variable: `{name}`; this basis is declared in {}",
-                    scope.variable.domain()
+                    scope.domain
                 ),
             ));
         }
+        let hint = if ["s", "c"].contains(&name) {
+            format!(
+                "; `{name}` is a shorthand of the legacy variables only: write sin({v}) or cos({v})",
+                v = scope.var_name
+            )
+        } else {
+            String::new()
+        };
         Err(FormulaError::new(
             pos,
             format!(
-                "unknown symbol `{name}` (expected {})",
+                "unknown symbol `{name}` (expected {}){hint}",
                 expected_names(scope)
             ),
         ))
     }
 
-    fn trig_call(&mut self, sine: bool, pos: usize) -> Result<Sym, FormulaError> {
+    fn call(&self, f: Func, arg: &Expr, pos: usize) -> Result<Sym, FormulaError> {
         let scope = self.scope;
-        if !scope.variable.is_trigonometric() {
-            return Err(FormulaError::new(
-                pos,
-                format!(
-                    "wrong variable: sin/cos in a basis polynomial in {}",
-                    scope.var_name
-                ),
-            ));
+        if f == Func::Sqrt {
+            let x = self.value(arg)?;
+            return x
+                .as_rational()
+                .and_then(|q| Sym::rational(q).try_sqrt())
+                .ok_or_else(|| {
+                    FormulaError::new(
+                        pos,
+                        "sqrt takes a number whose square-free part is a product of 2, 3, 5, 7 (e.g. sqrt(2), sqrt(3/4))",
+                    )
+                });
         }
-        if self.angle {
-            return Err(FormulaError::new(pos, "sin/cos inside sin/cos"));
-        }
-        self.at += 1; // `(`
-        self.angle = true;
-        let arg = self.expr()?;
-        self.angle = false;
-        match self.peek() {
-            Some(Token {
-                kind: Kind::Close, ..
-            }) => self.at += 1,
-            _ => {
-                return Err(FormulaError::new(
-                    self.pos(),
-                    "expected `)` to close the argument of sin/cos",
-                ));
+        let what = format!("the argument of {}", f.name());
+        let l = linear(arg, scope.var_name, scope.params, &what)?;
+        let params = self.params();
+        let domain = scope.domain;
+        let multiple = |coef: &Affine,
+                        base: Option<&Affine>,
+                        kind: &str|
+         -> Result<i64, FormulaError> {
+            if *coef == Affine::default() {
+                return Ok(0);
             }
-        }
-        let unit = if scope.variable == trig_core::Variable::UnitAngle {
-            Sym::pi() * &Sym::var("__x") / &Sym::int(2)
-        } else {
-            Sym::var("__x")
+            let k = base
+                .and_then(|b| ratio(coef, b))
+                .filter(|k| *k.denom() == 1);
+            k.and_then(|k| k.numer().to_i64())
+                .filter(|k| k.unsigned_abs() <= 64)
+                .ok_or_else(|| {
+                    FormulaError::new(
+                        arg.pos,
+                        format!(
+                            "the {kind} rate of {} is not an integer multiple (at most 64) of the base rate found in the file",
+                            scope.var_name
+                        ),
+                    )
+                })
         };
-        let k = (arg / &unit)
-            .as_rational()
-            .filter(|k| *k.denom() == 1 && *k > 0 && *k <= MAX_MULTIPLE)
-            .and_then(|k| k.numer().to_i64())
+        if f.is_trigonometric() {
+            let k = multiple(&l.x, domain.angle.as_ref(), "angle")?;
+            let (s, c) = (Sym::var("s"), Sym::var("c"));
+            let rest = domain
+                .sin_cos_of(&l.rest, &Sym::one(), &params)
+                .ok_or_else(|| {
+                    FormulaError::new(
+                        arg.pos,
+                        format!(
+                            "sin/cos of {} cannot be formed exactly: constant angles must be multiples of pi/12",
+                            l.rest.text(&names(scope.params))
+                        ),
+                    )
+                })?;
+            let (sin, cos) = angle_sum(&multiple_angle(&s, &c, k), &rest);
+            let value = if f == Func::Sin { sin } else { cos };
+            return self.bounded(value, pos);
+        }
+        // exp, sinh, cosh
+        let kappa = domain.exp.clone().map(Affine::rational);
+        let k = multiple(&l.x, kappa.as_ref(), "exponential")?;
+        let rest = domain
+            .exp_of(&l.rest, &Sym::one(), &params)
             .ok_or_else(|| {
                 FormulaError::new(
-                    pos,
+                    arg.pos,
                     format!(
-                        "the argument of sin/cos must be the declared angle {} (or a positive integer multiple of it, at most {MAX_MULTIPLE})",
-                        angle_text(scope)
+                        "exp of {} cannot be formed exactly: the argument may hold the variable and parameters, no nonzero constant or pi",
+                        l.rest.text(&names(scope.params))
                     ),
                 )
             })?;
-        let (s, c) = multiple_angle(k);
-        Ok(if sine { s } else { c })
+        let e = Sym::var(E);
+        let ek = if k >= 0 {
+            self.power(&e, k as u32, pos)?
+        } else {
+            Sym::one() / &self.power(&e, k.unsigned_abs() as u32, pos)?
+        };
+        let up = self.product(&ek, &rest, pos)?;
+        let down = Sym::one() / &up;
+        let value = match f {
+            Func::Exp => up,
+            Func::Sinh => (up - &down) / &Sym::int(2),
+            _ => (up + &down) / &Sym::int(2),
+        };
+        self.bounded(value, pos)
     }
 }
 
-fn angle_text(scope: &Scope<'_>) -> String {
-    if scope.variable == trig_core::Variable::UnitAngle {
-        format!("pi*{}/2", scope.var_name)
-    } else {
-        scope.var_name.to_string()
+/// `a/b` when it is rational (both rational, or both rational multiples of
+/// π; no parameters).
+pub(crate) fn ratio(a: &Affine, b: &Affine) -> Option<Rational> {
+    if !a.params.is_empty() || !b.params.is_empty() {
+        return None;
     }
+    match (a.as_rational(), b.as_rational()) {
+        (Some(x), Some(y)) if *y != 0 => Some(Rational::from(x / y)),
+        _ if a.constant == 0 && b.constant == 0 && b.pi != 0 => Some(Rational::from(&a.pi / &b.pi)),
+        _ => None,
+    }
+}
+
+fn names(params: &[(String, String)]) -> Vec<String> {
+    params.iter().map(|(n, _)| n.clone()).collect()
 }
 
 fn expected_names(scope: &Scope<'_>) -> String {
     let mut names: Vec<String> = scope.params.iter().map(|(n, _)| n.clone()).collect();
-    names.extend(scope.functions.iter().map(|(n, _)| n.clone()));
     names.extend(scope.extra.iter().cloned());
-    if scope.variable.is_trigonometric() {
-        names.extend(["s", "c", "sin(…)", "cos(…)"].map(String::from));
-    } else {
-        names.push(scope.var_name.to_string());
+    names.push(scope.var_name.to_string());
+    if scope.shorthand.is_some() {
+        names.extend(["s", "c"].map(String::from));
     }
     names.push("pi".into());
+    names.push(format!("{}(…)", ast::FUNCTIONS));
     names.join(", ")
-}
-
-fn number(text: &str, pos: usize) -> Result<Sym, FormulaError> {
-    let q: Rational = parse_exact(text).map_err(|_| {
-        FormulaError::new(
-            pos,
-            format!("`{text}` is not a number (expected e.g. 3, 0.6)"),
-        )
-    })?;
-    Ok(Sym::rational(q))
-}
-
-/// `(sin kθ, cos kθ)` in `s`, `c`: `sₖ = 2c·sₖ₋₁ − sₖ₋₂`, `cₖ = 2c·cₖ₋₁ − cₖ₋₂`.
-fn multiple_angle(k: i64) -> (Sym, Sym) {
-    let (s, c) = (Sym::var("s"), Sym::var("c"));
-    let two_c = Sym::int(2) * &c;
-    let (mut s0, mut s1) = (Sym::zero(), s);
-    let (mut c0, mut c1) = (Sym::one(), c);
-    for _ in 1..k {
-        let s2 = two_c.clone() * &s1 - &s0;
-        let c2 = two_c.clone() * &c1 - &c0;
-        (s0, s1, c0, c1) = (s1, s2, c1, c2);
-    }
-    (s1, c1)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use trig_core::Variable;
 
-    fn scope_with<'a>(
-        variable: Variable,
-        var_name: &'a str,
-        params: &'a [(String, String)],
-        functions: &'a [(String, Sym)],
-    ) -> Scope<'a> {
-        Scope {
-            variable,
-            var_name,
-            params,
-            functions,
-            extra: &[],
-            divisor: &|_| Ok(()),
-        }
+    fn q(a: i64, b: i64) -> Rational {
+        Rational::from((a, b))
     }
 
-    fn m() -> Vec<(String, String)> {
+    fn params() -> Vec<(String, String)> {
         vec![("m".into(), "m".into()), ("lambda".into(), "λ".into())]
+    }
+
+    fn with<R>(domain: &Domain, shorthand: Option<i64>, f: impl FnOnce(&Scope<'_>) -> R) -> R {
+        let params = params();
+        let scope = Scope {
+            domain,
+            var_name: &domain.name,
+            shorthand,
+            params: &params,
+            resolve: &|n| (n == "b0").then(|| Ok(Sym::var("s"))),
+            extra: &[],
+            divisor: &|_| Ok(()),
+        };
+        f(&scope)
+    }
+
+    fn domain(v: Variable) -> Domain {
+        Domain::from_variable(v, &["m", "lambda"])
     }
 
     #[test]
     fn thesis_cubic_b0_parses_to_the_catalog_value() {
-        let params = m();
-        let scope = scope_with(Variable::UnitAngle, "u", &params, &[]);
-        let b0 = parse("(1 - sin(pi*u/2))^2 * (1 - m*s)", &scope).unwrap();
+        let d = domain(Variable::UnitAngle);
+        let b0 = with(&d, Some(1), |s| parse("(1 - sin(pi*u/2))^2 * (1 - m*s)", s)).unwrap();
         let catalog =
             trig_core::Family::ThesisCubic.eval(&trig_symbolic::symbolic_atoms(), &[Sym::var("m")]);
         assert_eq!(b0, catalog[0]);
         assert_ne!(b0, catalog[1]);
         // decimals are exact, Greek symbols name parameters
-        let x = parse("0.6*λ − 3/5·lambda", &scope).unwrap();
+        let x = with(&d, Some(1), |s| parse("0.6*λ − 3/5·lambda", s)).unwrap();
         assert!(x.is_zero());
     }
 
     #[test]
-    fn multiple_angles_expand() {
-        let params = m();
-        let scope = scope_with(Variable::Angle, "t", &params, &[]);
-        let c2 = parse("cos(2*t)", &scope).unwrap();
-        assert_eq!(c2, parse("c^2 - s^2", &scope).unwrap());
-        let s3 = parse("sin(t*3)", &scope).unwrap();
-        assert_eq!(s3, parse("3*s - 4*s^3", &scope).unwrap());
+    fn multiple_and_half_angles_and_sums() {
+        let d = domain(Variable::Angle);
+        let p = |text: &str| with(&d, Some(1), |s| parse(text, s)).unwrap();
+        assert_eq!(p("cos(2*t)"), p("c^2 - s^2"));
+        assert_eq!(p("sin(t*3)"), p("3*s - 4*s^3"));
+        assert_eq!(p("sin(pi/2 - t)"), p("c"));
+        assert_eq!(p("cos(t + pi)"), p("-c"));
+        // half angles: with base ω = 1/2 the shorthand s is sin(2·(t/2))
+        let half = Domain {
+            angle: Some(Affine::rational(q(1, 2))),
+            ..domain(Variable::Angle)
+        };
+        let h = |text: &str| with(&half, Some(2), |s| parse(text, s)).unwrap();
+        assert_eq!(h("sin(t)"), h("2*sin(t/2)*cos(t/2)"));
+        assert_eq!(h("s"), h("sin(t)"));
+        assert_eq!(h("cos(3*t/2)"), h("4*cos(t/2)^3 - 3*cos(t/2)"));
+        // sin of π/4 is exact
+        assert_eq!(h("sin(pi/4)^2"), Sym::rational(q(1, 2)));
+    }
+
+    #[test]
+    fn exponentials_and_the_variable_outside_sin() {
+        let d = Domain {
+            exp: Some(q(1, 1)),
+            uses_variable: true,
+            ..domain(Variable::Polynomial)
+        };
+        let p = |text: &str| with(&d, None, |s| parse(text, s)).unwrap();
+        assert_eq!(p("cosh(t)^2 - sinh(t)^2"), Sym::one());
+        assert_eq!(p("exp(2*t)*exp(-t)"), p("exp(t)"));
+        assert_eq!(p("t*exp(t)"), Sym::var("t") * &Sym::var(E));
+        let e = with(&d, None, |s| parse("exp(1)", s)).unwrap_err();
+        assert!(e.message.contains("cannot be formed exactly"), "{e:?}");
+        assert_eq!(p("sqrt(12)"), Sym::int(2) * &Sym::var("sqrt(3)"));
     }
 
     #[test]
     fn errors_name_the_position_and_what_was_expected() {
-        let params = m();
-        let fns = vec![("b0".to_string(), Sym::var("s"))];
-        let trig = scope_with(Variable::UnitAngle, "u", &params, &fns);
-        let poly = scope_with(Variable::Polynomial, "t", &params, &[]);
-        let err = |text: &str, scope: &Scope<'_>| parse(text, scope).unwrap_err();
-        assert_eq!(err("1 + q", &trig).position, 4);
-        assert!(err("1 + q", &trig).message.contains("unknown symbol `q`"));
-        assert!(err("u*s", &trig).message.contains("wrong variable"));
-        assert!(err("t + s", &trig).message.contains("wrong variable"));
-        assert!(err("sin(t)", &poly).message.contains("wrong variable"));
-        assert!(err("sin(u)", &trig).message.contains("declared angle"));
+        let d = domain(Variable::UnitAngle);
+        let err = |text: &str| with(&d, Some(1), |s| parse(text, s)).unwrap_err();
+        assert_eq!(err("1 + q").position, 4);
+        assert!(err("1 + q").message.contains("unknown symbol `q`"));
         assert!(
-            err("sin(m*pi*u/2)", &trig)
+            err("t + s")
                 .message
-                .contains("declared angle")
+                .contains("wrong variable: `t`; this basis is declared in u in [0, 1]")
         );
-        assert_eq!(err("(1 + s", &trig).position, 6);
-        assert!(err("2 s", &trig).message.contains("expected an operator"));
-        assert!(err("1/(s - s)", &trig).message.contains("division by zero"));
-        assert!(err("s^m", &trig).message.contains("integer exponent"));
-        assert!(err("tan(u)", &trig).message.contains("unknown function"));
-        assert!(err("1 # 2", &trig).message.contains("unexpected character"));
-        assert!(err("", &trig).message.contains("unexpected end"));
-        assert!(err(&"(".repeat(100), &trig).message.contains("nested"));
-        // defined functions and t in polynomial bases
-        assert_eq!(parse("b0*2", &trig).unwrap(), Sym::int(2) * &Sym::var("s"));
-        assert_eq!(parse("t^2", &poly).unwrap(), Sym::var("t") * &Sym::var("t"));
+        assert!(err("sin(m*u)").message.contains("must be linear"));
+        assert!(
+            err("sin(pi*u/3)")
+                .message
+                .contains("not an integer multiple")
+        );
+        assert!(err("2 s").message.contains("expected `*`"));
+        assert!(err("1/(s - s)").message.contains("division by zero"));
+        // a formula's cost is bounded as a whole, not per power
+        assert!(err("((1 + s + c)^64)^8").message.contains("degree"));
+        assert!(err("cos(24*pi*u/2)^64").message.contains("degree"));
+        // defined names and the variable outside sin
+        assert_eq!(
+            with(&d, Some(1), |s| parse("b0*2", s)).unwrap(),
+            Sym::int(2) * &Sym::var("s")
+        );
+        assert_eq!(
+            with(&d, Some(1), |s| parse("u^2", s)).unwrap(),
+            Sym::var(T) * &Sym::var(T)
+        );
     }
 
     #[test]
     fn divisions_go_through_the_scope_check() {
-        let params = m();
+        let d = domain(Variable::UnitAngle);
+        let params = params();
         let scope = Scope {
-            divisor: &|d: &Sym| {
-                if d.variables().contains("m") {
+            domain: &d,
+            var_name: "u",
+            shorthand: Some(1),
+            params: &params,
+            resolve: &|_| None,
+            extra: &[],
+            divisor: &|x: &Sym| {
+                if x.variables().contains("m") {
                     Err("can vanish".into())
                 } else {
                     Ok(())
                 }
             },
-            ..scope_with(Variable::UnitAngle, "u", &params, &[])
         };
         let e = parse("s/(m + 2)", &scope).unwrap_err();
         assert_eq!((e.position, e.message.as_str()), (1, "can vanish"));
         assert!(parse("s/(lambda + 2)", &scope).is_ok());
         assert!(parse("m^-1", &scope).is_err());
+    }
+
+    #[test]
+    fn linear_arguments() {
+        let p = params();
+        let l = linear(&ast::parse("pi*u/2 - lambda/3 + 1").unwrap(), "u", &p, "x").unwrap();
+        assert_eq!(l.x, Affine::pi_times(q(1, 2)));
+        assert_eq!(l.rest.text(&["m".into(), "lambda".into()]), "-lambda/3 + 1");
+        assert!(linear(&ast::parse("u*u").unwrap(), "u", &p, "x").is_err());
+        assert!(linear(&ast::parse("sin(u)").unwrap(), "u", &p, "x").is_err());
     }
 }

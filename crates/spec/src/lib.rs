@@ -30,19 +30,24 @@
 //! assert_eq!(v, vec![0.25, 0.5, 0.25]);
 //! ```
 
+mod ast;
+pub mod claims;
 pub mod error;
 pub mod formula;
+pub mod frequencies;
 pub mod nonvanishing;
 pub mod range;
 mod raw;
+mod source;
 pub mod spec;
 
+pub use claims::{Check, Condition, Monotone, Printed, SpecClaim};
 pub use error::{FormulaError, Location, SpecError};
 pub use range::SpecRange;
-pub use spec::{Check, Condition, Monotone, Printed, Spec, SpecClaim, SpecFunction, SpecParam};
+pub use spec::{Spec, SpecFunction, SpecParam};
 
 use rug::Rational;
-use trig_core::{Atoms, Basis, CoreError, Real, Ring, Variable, parse_exact};
+use trig_core::{Atoms, Basis, CoreError, Domain, Real, Ring, parse_exact};
 use trig_symbolic::Sym;
 
 impl Basis for Spec {
@@ -50,8 +55,8 @@ impl Basis for Spec {
         self.id.clone()
     }
 
-    fn variable(&self) -> Variable {
-        self.variable
+    fn domain(&self) -> Domain {
+        self.domain.clone()
     }
 
     fn param_names(&self) -> Vec<String> {
@@ -66,6 +71,8 @@ impl Basis for Spec {
     /// (numerator and denominator factors through [`trig_symbolic::Poly::eval`],
     /// then one division with the ring's own semantics: IEEE values in
     /// floating rings, which [`Spec::eval_at`] turns into typed errors).
+    /// The atoms of parameters (`sin(α/2)`, `exp(β)`) and radicals are
+    /// formed in the ring from the parameter values.
     fn eval<T: Ring>(&self, x: &Atoms<T>, p: &[T]) -> Vec<T> {
         assert_eq!(p.len(), self.params.len(), "parameter count");
         let assign = |name: &str| -> Option<T> {
@@ -73,18 +80,48 @@ impl Basis for Spec {
                 "s" => Some(x.s.clone()),
                 "c" => Some(x.c.clone()),
                 "t" => Some(x.t.clone()),
+                "E" => Some(x.e.clone()),
                 "pi" => Some(x.t.pi()),
                 _ => self
                     .params
                     .iter()
                     .position(|q| q.name == name)
-                    .map(|i| p[i].clone()),
+                    .map(|i| p[i].clone())
+                    .or_else(|| self.atom_value(name, &x.t, p)),
             }
         };
         self.functions
             .iter()
             .map(|f| eval_sym(&f.value, &x.t, &assign))
             .collect()
+    }
+}
+
+impl Spec {
+    /// The value of a parameter atom (`sin(X)`, `cos(X)`, `exp(X)` of a
+    /// base multiple `X` of one parameter) or a radical `sqrt(p)`, formed in
+    /// the ring of `like` ([`Ring::try_sin_cos`]).
+    fn atom_value<T: Ring>(&self, name: &str, like: &T, p: &[T]) -> Option<T> {
+        if let Some(n) = name.strip_prefix("sqrt(").and_then(|r| r.strip_suffix(')')) {
+            return like.int(n.parse().ok()?).try_sqrt();
+        }
+        let symbols: Vec<Sym> = self.params.iter().map(|q| Sym::var(&q.name)).collect();
+        let d = &self.domain;
+        for (i, base) in &d.param_angles {
+            let x = symbols[*i].clone() * &Sym::rational(base.clone());
+            let (s, c) = x.try_sin_cos()?;
+            if name == s.to_string() || name == c.to_string() {
+                let (vs, vc) = (p[*i].clone() * &like.rational(base)).try_sin_cos()?;
+                return Some(if name == s.to_string() { vs } else { vc });
+            }
+        }
+        for (i, base) in &d.param_exps {
+            let x = symbols[*i].clone() * &Sym::rational(base.clone());
+            if name == x.try_exp()?.to_string() {
+                return (p[*i].clone() * &like.rational(base)).try_exp();
+            }
+        }
+        None
     }
 }
 
@@ -162,7 +199,6 @@ impl Spec {
         p: &[Rational],
         allow_outside: bool,
     ) -> Result<Vec<T>, CoreError> {
-        self.variable.check_point(x, allow_outside)?;
         if p.len() != self.params.len() {
             return Err(CoreError::Count {
                 what: format!("parameters of `{}`", self.id),
@@ -171,7 +207,8 @@ impl Spec {
             });
         }
         let params: Vec<T> = p.iter().map(|q| x.rational(q)).collect();
-        let values = Basis::eval(self, &self.variable.atoms(x), &params);
+        self.domain.check_point(x, &params, allow_outside)?;
+        let values = Basis::eval(self, &self.domain.atoms(x), &params);
         if values.iter().any(|v| !v.is_finite()) {
             return Err(CoreError::DivisionByZero {
                 quantity: format!("`{}` at this point", self.id),

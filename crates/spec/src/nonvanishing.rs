@@ -1,20 +1,24 @@
 //! Division by an expression that can vanish is refused: before a formula
-//! divides by `d`, we prove `d ≠ 0` on the whole domain (θ ∈ [0, π/2] or
-//! t ∈ [0, 1]) for every parameter in its declared range, open and
-//! infinite ends excluded exactly.
+//! divides by `d`, we prove `d ≠ 0` on the whole domain for every parameter
+//! in its declared range, open and infinite ends excluded exactly.
 //!
-//! The proof is the certifier's ([`trig_certify::nonneg::definite_sign`]):
-//! Weierstrass `z = tan(θ/2)`, every parameter set mapped onto a unit
-//! coordinate, `π ∈ [314159/100000, 314160/100000]`, and exact Bernstein
-//! subdivision until `d` has one strict sign on every cell. Otherwise the
-//! file is refused with an exact witness: a rational point where `d = 0`,
-//! or two where its signs differ; or, when the subdivision cannot decide,
-//! with that said (a division we could not prove safe is never accepted).
+//! Products of exponential atoms (`E = exp(κx)`, `exp(βp)`) never vanish.
+//! Otherwise the proof is the certifier's
+//! ([`trig_certify::nonneg::definite_sign`]) on the standard pieces of the
+//! domain ([`trig_certify::standardize`]): Weierstrass `z = tan(θ/2)`,
+//! every parameter set mapped onto a unit coordinate,
+//! `π ∈ [314159/100000, 314160/100000]`, and exact Bernstein subdivision
+//! until `d` has one strict sign on every cell. Otherwise the file is
+//! refused with an exact witness: a rational point where `d = 0`, or two
+//! where its signs differ; or, when the subdivision cannot decide (or the
+//! divisor is not polynomial in sin, cos or the variable on a standard
+//! domain), with that said (a division we could not prove safe is never
+//! accepted).
 
 use rug::Rational;
-use trig_certify::ParamBox;
 use trig_certify::nonneg::definite_sign;
-use trig_core::Variable;
+use trig_certify::{ParamBox, standardize};
+use trig_core::Domain;
 use trig_symbolic::Sym;
 
 use crate::range::SpecRange;
@@ -22,8 +26,13 @@ use crate::range::SpecRange;
 /// The name `π` takes while it is bounded as a parameter.
 const PI_VAR: &str = "__pi";
 
+/// True for the atoms that are positive wherever they are defined.
+fn positive_atom(v: &str) -> bool {
+    v == "E" || v.starts_with("exp(")
+}
+
 /// `Ok` when `d` cannot vanish; otherwise why (with a witness).
-pub fn check(d: &Sym, variable: Variable, params: &[(String, SpecRange)]) -> Result<(), String> {
+pub fn check(d: &Sym, domain: &Domain, params: &[(String, SpecRange)]) -> Result<(), String> {
     let n = Sym::from_poly(d.numerator().clone());
     if let Some(q) = n.as_rational() {
         return if q == 0 {
@@ -32,49 +41,70 @@ pub fn check(d: &Sym, variable: Variable, params: &[(String, SpecRange)]) -> Res
             Ok(())
         };
     }
-    let trig = variable.is_trigonometric();
-    let own = if trig { ["s", "c"] } else { ["t", "t"] };
-    let unknown: Vec<String> = n
-        .variables()
-        .into_iter()
-        .filter(|v| !own.contains(&v.as_str()) && v != "pi" && !params.iter().any(|(p, _)| p == v))
-        .collect();
+    let single = d.numerator().len() == 1;
+    if single && n.variables().iter().all(|v| positive_atom(v)) {
+        return Ok(());
+    }
+    let known = |v: &str| {
+        ["s", "c", "t", "E", "pi"].contains(&v)
+            || v.contains('(')
+            || params.iter().any(|(p, _)| p == v)
+    };
+    let unknown: Vec<String> = n.variables().into_iter().filter(|v| !known(v)).collect();
     if !unknown.is_empty() {
         return Err(format!(
             "division by `{d}`, which depends on {}: only divisions by expressions in the variable, the parameters and pi are allowed",
             unknown.join(", ")
         ));
     }
-    let n = n.subs("pi", &Sym::var(PI_VAR));
-    let mut boxes: Vec<(&str, ParamBox)> = params
-        .iter()
-        .filter(|(name, _)| n.variables().contains(name))
-        .map(|(name, r)| (name.as_str(), r.to_box()))
-        .collect();
-    if n.variables().contains(PI_VAR) {
-        boxes.push((
-            PI_VAR,
-            ParamBox::closed(
-                Rational::from((314_159, 100_000)),
-                Rational::from((314_160, 100_000)),
-            ),
-        ));
-    }
-    definite_sign(&n, trig, &boxes).map(|_| ()).map_err(|why| {
-        let why = why.replace(PI_VAR, "pi");
-        if why.contains("cannot fix the sign") {
-            format!(
-                "division by `{d}`: could not prove that it does not vanish in the declared domain and range ({why}); restate the formula or narrow the range"
-            )
-        } else {
-            format!("division by `{d}`, which vanishes in the declared domain and range: {why}")
+    let st = standardize(&n, domain).map_err(|why| {
+        format!("division by `{d}`: could not prove that it does not vanish ({why}); restate the formula")
+    })?;
+    let mut sign = 0;
+    for piece in &st.pieces {
+        let piece = piece.subs("pi", &Sym::var(PI_VAR));
+        let mut boxes: Vec<(&str, ParamBox)> = params
+            .iter()
+            .filter(|(name, _)| piece.variables().contains(name))
+            .map(|(name, r)| (name.as_str(), r.to_box()))
+            .collect();
+        if piece.variables().contains(PI_VAR) {
+            boxes.push((
+                PI_VAR,
+                ParamBox::closed(
+                    Rational::from((314_159, 100_000)),
+                    Rational::from((314_160, 100_000)),
+                ),
+            ));
         }
-    })
+        let s = definite_sign(&piece, st.trigonometric, &boxes).map_err(|why| {
+            let why = why.replace(PI_VAR, "pi");
+            if why.contains("cannot fix the sign") {
+                format!(
+                    "division by `{d}`: could not prove that it does not vanish in the declared domain and range ({why}); restate the formula or narrow the range"
+                )
+            } else {
+                format!("division by `{d}`, which vanishes in the declared domain and range: {why}")
+            }
+        })?;
+        if sign != 0 && s != sign {
+            return Err(format!(
+                "division by `{d}`, which changes sign between the quarter turns of the domain"
+            ));
+        }
+        sign = s;
+    }
+    Ok(())
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use trig_core::Variable;
+
+    fn v(x: Variable) -> Domain {
+        Domain::from_variable(x, &[])
+    }
 
     fn range(text: &str) -> SpecRange {
         SpecRange::parse(text).unwrap()
@@ -85,18 +115,18 @@ mod tests {
         let m = Sym::var("m");
         let p = vec![("m".to_string(), range("[-2, 1]"))];
         // m + 3 > 0 on [−2, 1]
-        assert!(check(&(m.clone() + &Sym::int(3)), Variable::UnitAngle, &p).is_ok());
+        assert!(check(&(m.clone() + &Sym::int(3)), &v(Variable::UnitAngle), &p).is_ok());
         // m + 2 vanishes at the end m = −2
-        let e = check(&(m.clone() + &Sym::int(2)), Variable::UnitAngle, &p).unwrap_err();
+        let e = check(&(m.clone() + &Sym::int(2)), &v(Variable::UnitAngle), &p).unwrap_err();
         assert!(e.contains("m = -2"), "{e}");
         // m changes sign inside
-        let e = check(&m, Variable::UnitAngle, &p).unwrap_err();
+        let e = check(&m, &v(Variable::UnitAngle), &p).unwrap_err();
         assert!(e.contains("vanishes"), "{e}");
         // 1 + m s ≥ 1 − 2 < 0 somewhere: vanishes; 3 + m s > 0
         assert!(
             check(
                 &(Sym::one() + &(m.clone() * &Sym::var("s"))),
-                Variable::Angle,
+                &v(Variable::Angle),
                 &p
             )
             .is_err()
@@ -104,7 +134,7 @@ mod tests {
         assert!(
             check(
                 &(Sym::int(3) + &(m.clone() * &Sym::var("s"))),
-                Variable::Angle,
+                &v(Variable::Angle),
                 &p
             )
             .is_ok()
@@ -112,12 +142,12 @@ mod tests {
         // seed 000's 6ζ² − 6ζ + 10 on [0, 4]; a half-line β + 1, β ∈ [0, ∞)
         let z = Sym::var("zeta");
         let d = Sym::int(6) * &z * &z - &(Sym::int(6) * &z) + &Sym::int(10);
-        assert!(check(&d, Variable::Angle, &[("zeta".into(), range("[0, 4]"))]).is_ok());
+        assert!(check(&d, &v(Variable::Angle), &[("zeta".into(), range("[0, 4]"))]).is_ok());
         let b = Sym::var("beta") + &Sym::one();
         assert!(
             check(
                 &b,
-                Variable::UnitAngle,
+                &v(Variable::UnitAngle),
                 &[("beta".into(), range("[0, inf)"))]
             )
             .is_ok()
@@ -126,15 +156,22 @@ mod tests {
         assert!(
             check(
                 &b,
-                Variable::UnitAngle,
+                &v(Variable::UnitAngle),
                 &[("beta".into(), range("[0, inf)"))]
             )
             .is_err()
         );
         // 1 + t on [0, 1]; 2 − π (sign known); control points are refused
-        assert!(check(&(Sym::var("t") + &Sym::one()), Variable::Polynomial, &[]).is_ok());
-        assert!(check(&(Sym::int(2) - &Sym::pi()), Variable::Angle, &[]).is_ok());
-        assert!(check(&Sym::var("P0"), Variable::Angle, &[]).is_err());
+        assert!(
+            check(
+                &(Sym::var("t") + &Sym::one()),
+                &v(Variable::Polynomial),
+                &[]
+            )
+            .is_ok()
+        );
+        assert!(check(&(Sym::int(2) - &Sym::pi()), &v(Variable::Angle), &[]).is_ok());
+        assert!(check(&Sym::var("P0"), &v(Variable::Angle), &[]).is_err());
     }
 
     #[test]
@@ -144,17 +181,17 @@ mod tests {
         let d = Sym::one() + &(Sym::int(2) * &(w.clone() - &Sym::one()) * &t * &(Sym::one() - &t));
         for ok in ["[0, inf)", "[-1/10, 1000]", "(-1, 0]"] {
             let p = vec![("w".to_string(), range(ok))];
-            assert!(check(&d, Variable::Polynomial, &p).is_ok(), "{ok}");
+            assert!(check(&d, &v(Variable::Polynomial), &p).is_ok(), "{ok}");
         }
         // at w = −1 the denominator is 0 at t = 1/2: a rational witness
         let p = vec![("w".to_string(), range("[-1, 0]"))];
-        let e = check(&d, Variable::Polynomial, &p).unwrap_err();
+        let e = check(&d, &v(Variable::Polynomial), &p).unwrap_err();
         assert!(e.contains("w = -1") && e.contains("t = 1/2"), "{e}");
         // 1/(1 − λ) on λ ∈ [0, 1): the open end is excluded exactly
         let l = Sym::var("lambda");
         let p = vec![("lambda".to_string(), range("[0, 1)"))];
-        assert!(check(&(Sym::one() - &l), Variable::Angle, &p).is_ok());
+        assert!(check(&(Sym::one() - &l), &v(Variable::Angle), &p).is_ok());
         let p = vec![("lambda".to_string(), range("[0, 1]"))];
-        assert!(check(&(Sym::one() - &l), Variable::Angle, &p).is_err());
+        assert!(check(&(Sym::one() - &l), &v(Variable::Angle), &p).is_err());
     }
 }

@@ -15,8 +15,11 @@ pub struct RawSpec {
     pub title: Option<String>,
     pub citation: String,
     pub variable: Spanned<String>,
+    pub domain: Option<Spanned<String>>,
     #[serde(default)]
     pub parameters: Vec<RawParam>,
+    #[serde(default)]
+    pub definitions: Vec<RawFunction>,
     pub functions: Vec<RawFunction>,
     #[serde(default)]
     pub claims: Vec<RawClaim>,
@@ -32,7 +35,7 @@ pub struct RawParam {
     pub source: Option<String>,
 }
 
-/// `[[functions]]`.
+/// `[[functions]]` and `[[definitions]]`.
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RawFunction {
@@ -54,10 +57,13 @@ pub struct RawClaim {
     pub map: Option<Spanned<String>>,
     pub index: Option<Spanned<String>>,
     pub at: Option<BTreeMap<String, Spanned<String>>>,
+    pub params: Option<BTreeMap<String, Spanned<String>>>,
     pub end: Option<Spanned<String>>,
     pub order: Option<Spanned<i64>>,
     pub wrt: Option<Spanned<String>>,
     pub values: Option<Vec<Spanned<String>>>,
+    pub value: Option<Spanned<String>>,
     pub join: Option<Spanned<String>>,
+    pub different: Option<bool>,
     pub conditions: Option<Vec<Spanned<String>>>,
 }

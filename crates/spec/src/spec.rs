@@ -1,17 +1,24 @@
-//! A validated spec: the basis (variable, parameters with exact ranges,
-//! functions as exact [`Sym`] values) and the claims to check.
+//! A validated spec: the basis (domain and atoms, parameters with exact
+//! ranges, definitions and functions as exact [`Sym`] values) and the
+//! claims to check ([`crate::claims`]).
+
+use std::cell::RefCell;
+use std::collections::BTreeMap;
 
 use rug::Rational;
 use toml::Spanned;
-use trig_core::{Variable, parse_exact};
-use trig_deriv::{End, Wrt};
+use trig_core::{Affine, Domain, Variable};
 use trig_symbolic::Sym;
 
-use crate::error::{FormulaError, Location, Result, SpecError};
-use crate::formula::{Scope, parse};
+use crate::ast::{self, Expr};
+use crate::claims::{SpecClaim, claim};
+use crate::error::{FormulaError, Result, SpecError};
+use crate::formula::{Scope, linear, lower};
+use crate::frequencies::{Usage, domain};
 use crate::nonvanishing;
 use crate::range::SpecRange;
-use crate::raw::{RawClaim, RawSpec};
+use crate::raw::{RawFunction, RawSpec};
+use crate::source::Source;
 
 /// A shape parameter.
 #[derive(Debug, Clone, PartialEq)]
@@ -26,7 +33,7 @@ pub struct SpecParam {
     pub source: String,
 }
 
-/// One basis function.
+/// One basis function or definition.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SpecFunction {
     pub name: String,
@@ -34,84 +41,6 @@ pub struct SpecFunction {
     pub formula: String,
     /// Its exact value.
     pub value: Sym,
-}
-
-/// A printed value `name = formula` of one function.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Printed {
-    pub function: usize,
-    pub text: String,
-    pub value: Sym,
-}
-
-/// A printed monotonicity statement about one function.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Monotone {
-    pub function: usize,
-    pub increasing: bool,
-}
-
-/// A printed join condition `Qk = formula in P0…, Q0…`.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Condition {
-    /// Index `k` of the second segment's control point.
-    pub point: usize,
-    pub text: String,
-    pub value: Sym,
-}
-
-/// What a claim of the file asserts, in a form the audit can decide.
-#[derive(Debug, Clone, PartialEq)]
-pub enum Check {
-    /// `Σ bᵢ = 1`.
-    Unity,
-    /// Every function ≥ 0 on the domain for the parameter range (the
-    /// declared one unless given); `maximal`: the range is the maximal one.
-    Nonnegative {
-        range: Option<SpecRange>,
-        maximal: bool,
-    },
-    /// Each listed function monotone on the domain for the range.
-    Monotone {
-        items: Vec<Monotone>,
-        range: Option<SpecRange>,
-    },
-    /// `bᵢ(x) = b_{offset−i}(map(x))`; `map` is printed in the variable,
-    /// `at` gives parameter values for a numeric counterexample when the
-    /// map leaves the domain.
-    Symmetry {
-        map_text: String,
-        map: Sym,
-        index_text: String,
-        offset: i64,
-        at: Vec<Rational>,
-    },
-    /// Printed function values at one end.
-    EndpointValues { end: End, values: Vec<Printed> },
-    /// Printed derivatives of one order at one end.
-    EndpointDerivatives {
-        end: End,
-        order: usize,
-        wrt: Wrt,
-        values: Vec<Printed>,
-    },
-    /// Printed conditions making two segments `Σ bᵢPᵢ`, `Σ bᵢQᵢ` join `Cᵏ`.
-    Join {
-        order: usize,
-        wrt: Wrt,
-        conditions: Vec<Condition>,
-    },
-    /// The B-spline assembly (piece k is function 3 − k) is `Cᵏ` at its knots.
-    Continuity { order: usize },
-}
-
-/// A claim of the file.
-#[derive(Debug, Clone, PartialEq)]
-pub struct SpecClaim {
-    pub id: String,
-    pub source: String,
-    pub statement: String,
-    pub check: Check,
 }
 
 /// A validated spec file.
@@ -122,60 +51,35 @@ pub struct Spec {
     pub id: String,
     pub title: String,
     pub citation: String,
-    pub variable: Variable,
-    /// The variable's name in formulas: `u` or `t`.
+    /// The domain `x ∈ [a, b]` and the atoms of the formulas.
+    pub domain: Domain,
+    /// The legacy variable when the file declares one (`unit-angle`,
+    /// `angle`, `polynomial`): their reports keep the catalog's wording.
+    pub legacy: Option<Variable>,
+    /// The variable's name in formulas (`u`, `t`, …).
     pub var_name: String,
+    /// For the legacy trigonometric variables, `k` with the declared angle
+    /// `= k·ω`: the shorthands `s`, `c` are its sine and cosine.
+    pub shorthand: Option<i64>,
     pub params: Vec<SpecParam>,
+    /// Helper definitions (not basis functions).
+    pub definitions: Vec<SpecFunction>,
     pub functions: Vec<SpecFunction>,
     pub claims: Vec<SpecClaim>,
 }
 
-/// Names a parameter or function may not take.
+/// Names a parameter, function or definition may not take.
 const RESERVED: &[&str] = &[
-    "s", "c", "t", "u", "x", "z", "i", "pi", "sin", "cos", "theta", "h",
+    "s", "c", "t", "u", "x", "z", "i", "E", "e", "pi", "sin", "cos", "sinh", "cosh", "exp", "sqrt",
+    "theta", "h", "alpha1", "alpha2",
 ];
 
 /// Highest derivative order a claim may ask for (jets carry `0..=MAX_ORDER`).
 pub const MAX_ORDER: usize = 6;
-
-/// Maps byte offsets of the file to lines and columns.
-struct Source<'a> {
-    file: &'a str,
-    text: &'a str,
-}
-
-impl Source<'_> {
-    fn at(&self, offset: usize) -> Location {
-        let offset = offset.min(self.text.len());
-        let before = self.text.get(..offset).unwrap_or("");
-        let line = before.matches('\n').count() + 1;
-        let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
-        Location {
-            file: self.file.to_string(),
-            line,
-            column,
-        }
-    }
-
-    fn invalid<T>(&self, span: std::ops::Range<usize>, field: &str, message: String) -> Result<T> {
-        Err(SpecError::Invalid {
-            at: self.at(span.start),
-            field: field.into(),
-            message,
-        })
-    }
-
-    /// A formula error at its position inside the (single-line) string.
-    fn formula_error(&self, text: &Spanned<String>, error: FormulaError) -> SpecError {
-        let mut at = self.at(text.span().start);
-        at.column += 1 + error.position;
-        SpecError::Formula {
-            at,
-            formula: text.get_ref().clone(),
-            error,
-        }
-    }
-}
+/// Most shape parameters of a spec.
+pub const MAX_PARAMS: usize = 8;
+/// Most functions (and, separately, definitions) of a spec.
+pub const MAX_FUNCTIONS: usize = 64;
 
 impl Spec {
     /// Reads and validates the spec file at `path`.
@@ -206,35 +110,66 @@ impl Spec {
             .collect()
     }
 
+    /// The functions and definitions by name, with their values.
+    fn named_values(&self) -> Vec<(String, Sym)> {
+        self.functions
+            .iter()
+            .chain(&self.definitions)
+            .map(|f| (f.name.clone(), f.value.clone()))
+            .collect()
+    }
+
     /// Parses a further formula in this spec's variable and parameters
-    /// (functions by name too), with `extra` symbols allowed.
+    /// (functions and definitions by name too), with `extra` symbols
+    /// allowed and parameters renamed by `rename` (e.g. `lambda` ↦
+    /// `lambda2` for the second segment of a join).
     pub fn parse_formula(
         &self,
         text: &str,
         extra: &[String],
     ) -> std::result::Result<Sym, FormulaError> {
         let params = self.param_pairs();
-        let functions: Vec<(String, Sym)> = self
-            .functions
-            .iter()
-            .map(|f| (f.name.clone(), f.value.clone()))
-            .collect();
+        let values = self.named_values();
         let ranges = self.ranges();
-        let divisor = |d: &Sym| nonvanishing::check(d, self.variable, &ranges);
-        parse(
-            text,
+        let divisor = |d: &Sym| nonvanishing::check(d, &self.domain, &ranges);
+        let resolve = |n: &str| {
+            values
+                .iter()
+                .find(|(m, _)| m == n)
+                .map(|(_, v)| Ok(v.clone()))
+        };
+        let e = ast::parse(text)?;
+        lower(
+            &e,
             &Scope {
-                variable: self.variable,
+                domain: &self.domain,
                 var_name: &self.var_name,
+                shorthand: self.shorthand,
                 params: &params,
-                functions: &functions,
+                resolve: &resolve,
                 extra,
                 divisor: &divisor,
             },
         )
     }
 
-    fn ranges(&self) -> Vec<(String, SpecRange)> {
+    /// Reads an expression linear in the variable and the parameters (a
+    /// symmetry map `pi/2 - t`).
+    pub fn parse_linear(
+        &self,
+        text: &str,
+        what: &str,
+    ) -> std::result::Result<crate::formula::Linear, FormulaError> {
+        linear(
+            &ast::parse(text)?,
+            &self.var_name,
+            &self.param_pairs(),
+            what,
+        )
+    }
+
+    /// The declared parameter ranges by name.
+    pub fn ranges(&self) -> Vec<(String, SpecRange)> {
         self.params
             .iter()
             .map(|p| (p.name.clone(), p.range.clone()))
@@ -251,6 +186,74 @@ fn identifier(name: &str) -> bool {
         && !name.starts_with("__")
 }
 
+/// The legacy variables: (variable, name, end, declared angle).
+fn legacy(keyword: &str) -> Option<(Variable, &'static str)> {
+    match keyword {
+        "unit-angle" | "u" => Some((Variable::UnitAngle, "u")),
+        "angle" => Some((Variable::Angle, "t")),
+        "polynomial" => Some((Variable::Polynomial, "t")),
+        _ => None,
+    }
+}
+
+/// `[a, b]` of the `domain` field: exact ends linear in π and the
+/// parameters, `a < b` for every parameter value of the declared ranges.
+fn domain_ends(
+    src: &Source<'_>,
+    field: &Spanned<String>,
+    params: &[(String, String)],
+    ranges: &[SpecRange],
+) -> Result<(Affine, Affine)> {
+    let text = field.get_ref().trim();
+    let expected = "expected `[a, b]` with ends in numbers, pi and the parameters (e.g. [0, alpha], [-pi/2, pi/2])";
+    let inner = text
+        .strip_prefix('[')
+        .and_then(|t| t.strip_suffix(']'))
+        .and_then(|t| t.split_once(','));
+    let Some((a, b)) = inner else {
+        return src.invalid(field.span(), "domain", format!("`{text}`: {expected}"));
+    };
+    let end = |s: &str| -> Result<Affine> {
+        let l = ast::parse(s)
+            .and_then(|e| linear(&e, "__none", params, "a domain end"))
+            .map_err(|e| SpecError::Invalid {
+                at: src.at(field.span().start),
+                field: "domain".into(),
+                message: format!("`{}`: {}", s.trim(), e.message),
+            })?;
+        Ok(l.rest)
+    };
+    let (a, b) = (end(a)?, end(b)?);
+    let length = b.plus(&a.scale(&Rational::from(-1)));
+    if !positive_on(&length, ranges) {
+        return src.invalid(
+            field.span(),
+            "domain",
+            format!("`{text}`: the end is not above the start for every parameter in its range"),
+        );
+    }
+    Ok((a, b))
+}
+
+/// `L > 0` for every parameter value in the ranges (`L` linear: at the
+/// corners of the box, with `π ∈ (3.14159, 3.14160)`; an unbounded
+/// parameter must not occur).
+fn positive_on(l: &Affine, ranges: &[SpecRange]) -> bool {
+    let pi_lo = Rational::from((314_159, 100_000));
+    let pi_hi = Rational::from((314_160, 100_000));
+    let pi = if l.pi >= 0 { pi_lo } else { pi_hi };
+    let mut least = Rational::from(&l.constant + &(l.pi.clone() * &pi));
+    for (i, q) in &l.params {
+        let range = &ranges[*i];
+        let worst = if *q > 0 { &range.lo } else { &range.hi };
+        match worst.value() {
+            Some(v) => least += Rational::from(q * v),
+            None => return false,
+        }
+    }
+    least > 0
+}
+
 fn build(src: &Source<'_>, raw: RawSpec) -> Result<Spec> {
     let id = raw.id.get_ref().trim().to_string();
     if id.is_empty()
@@ -264,89 +267,117 @@ fn build(src: &Source<'_>, raw: RawSpec) -> Result<Spec> {
             format!("`{id}`: expected a nonempty id of letters, digits, `-`, `_`, `.`"),
         );
     }
-    let (variable, var_name) = match raw.variable.get_ref().trim() {
-        "unit-angle" | "u" => (Variable::UnitAngle, "u"),
-        "angle" => (Variable::Angle, "t"),
-        "polynomial" | "t" => (Variable::Polynomial, "t"),
-        other => {
+    let keyword = raw.variable.get_ref().trim();
+    let (legacy, var_name) = match legacy(keyword) {
+        Some((v, name)) => (Some(v), name.to_string()),
+        None if identifier(keyword) && !RESERVED[4..].contains(&keyword) => {
+            (None, keyword.to_string())
+        }
+        None => {
             return src.invalid(
                 raw.variable.span(),
                 "variable",
                 format!(
-                    "`{other}`: expected `unit-angle` (u ∈ [0, 1], θ = πu/2), `angle` (t ∈ [0, π/2]) or `polynomial` (t ∈ [0, 1])"
+                    "`{keyword}`: expected `unit-angle` (u ∈ [0, 1], θ = πu/2), `angle` (t ∈ [0, π/2]), `polynomial` (t ∈ [0, 1]), or the name of the variable (e.g. `t`) with a `domain`"
                 ),
             );
         }
     };
+    let params = read_params(src, &raw, &var_name)?;
+    let pairs: Vec<(String, String)> = params
+        .iter()
+        .map(|p| (p.name.clone(), p.symbol.clone()))
+        .collect();
+    let ranges: Vec<SpecRange> = params.iter().map(|p| p.range.clone()).collect();
+    let (ends, declared) = match (legacy, &raw.domain) {
+        (Some(v), None) => {
+            let d = Domain::from_variable(v, &[]);
+            ((d.start, d.end), d.angle)
+        }
+        (Some(_), Some(d)) => {
+            return src.invalid(
+                d.span(),
+                "domain",
+                format!("the variable `{keyword}` fixes its domain; declare `variable = \"t\"` (any name) to give your own"),
+            );
+        }
+        (None, Some(d)) => (domain_ends(src, d, &pairs, &ranges)?, None),
+        (None, None) => {
+            return src.invalid(
+                raw.variable.span(),
+                "domain",
+                format!("the variable `{keyword}` needs a domain, e.g. domain = \"[0, 1]\""),
+            );
+        }
+    };
+    // every formula's tree, then the base rates of the whole file
+    let entries = read_entries(src, &raw, &pairs, &var_name)?;
+    let mut usage = Usage::default();
+    for (entry, e) in &entries {
+        usage
+            .scan(e, &var_name, &pairs)
+            .map_err(|err| src.formula_error(&entry.formula, err))?;
+    }
+    if legacy == Some(Variable::Polynomial)
+        && !(usage.angle_rates.is_empty() && usage.exp_rates.is_empty())
+    {
+        return src.invalid(
+            raw.variable.span(),
+            "variable",
+            "sin/cos/exp of the variable in a basis declared `polynomial`; declare `variable = \"t\"` with a `domain` instead".into(),
+        );
+    }
+    let names: Vec<String> = params.iter().map(|p| p.name.clone()).collect();
+    let domain = domain(&var_name, names, ends, &usage, declared.as_ref())
+        .or_else(|m| src.invalid(raw.variable.span(), "variable", m))?;
+    let shorthand = match (&declared, &domain.angle) {
+        (Some(decl), Some(base)) => {
+            crate::formula::ratio(decl, base).and_then(|k| k.numer().to_i64())
+        }
+        _ => None,
+    };
+    let symbols: Vec<Sym> = params.iter().map(|p| Sym::var(&p.name)).collect();
+    for (end, x) in [("start", &domain.start), ("end", &domain.end)] {
+        if domain.atoms_at(x, &Sym::one(), &symbols).is_none() {
+            return src.invalid(
+                raw.domain.as_ref().map_or(raw.variable.span(), |d| d.span()),
+                "domain",
+                format!(
+                    "at the {end} {} the atoms are not exact (sin/cos of a constant angle must be at a multiple of pi/12, exp of a nonzero constant is not supported): choose the domain or the angle rate so they are",
+                    x.text(&domain.param_names)
+                ),
+            );
+        }
+    }
     let mut spec = Spec {
         file: src.file.to_string(),
         id,
-        title: raw.title.unwrap_or_default(),
-        citation: raw.citation,
-        variable,
-        var_name: var_name.to_string(),
-        params: Vec::new(),
+        title: raw.title.clone().unwrap_or_default(),
+        citation: raw.citation.clone(),
+        domain,
+        legacy,
+        var_name,
+        shorthand,
+        params,
+        definitions: Vec::new(),
         functions: Vec::new(),
         claims: Vec::new(),
     };
-    for p in raw.parameters {
-        let name = p.name.get_ref().trim().to_string();
-        let taken = spec
-            .params
-            .iter()
-            .any(|q| q.name == name || q.symbol == name);
-        if !identifier(&name) || RESERVED.contains(&name.as_str()) || taken {
-            return src.invalid(
-                p.name.span(),
-                "parameters.name",
-                format!(
-                    "`{name}`: expected a new ASCII identifier other than {}",
-                    RESERVED.join(", ")
-                ),
-            );
-        }
-        let range = SpecRange::parse(p.range.get_ref())
-            .or_else(|m| src.invalid(p.range.span(), "parameters.range", m))?;
-        spec.params.push(SpecParam {
-            symbol: p.symbol.unwrap_or_else(|| name.clone()),
-            name,
-            range,
-            source: p.source.unwrap_or_else(|| "spec file".into()),
-        });
-    }
-    if raw.functions.is_empty() {
-        return Err(SpecError::Invalid {
-            at: src.at(0),
-            field: "functions".into(),
-            message: "expected at least one [[functions]] entry".into(),
-        });
-    }
-    for f in raw.functions {
-        let name = f.name.get_ref().trim().to_string();
-        let taken = spec.functions.iter().any(|g| g.name == name)
-            || spec
-                .params
-                .iter()
-                .any(|p| p.name == name || p.symbol == name);
-        if !identifier(&name) || RESERVED.contains(&name.as_str()) || taken {
-            return src.invalid(
-                f.name.span(),
-                "functions.name",
-                format!(
-                    "`{name}`: expected a new ASCII identifier (not a parameter, not reserved)"
-                ),
-            );
-        }
-        let value = spec
-            .parse_formula(f.formula.get_ref(), &[])
-            .map_err(|e| src.formula_error(&f.formula, e))?;
-        spec.functions.push(SpecFunction {
-            name,
-            formula: f.formula.get_ref().clone(),
+    let values = lower_all(src, &spec, &entries)?;
+    let n_definitions = raw.definitions.len();
+    for ((entry, _), value) in entries.iter().zip(values) {
+        let f = SpecFunction {
+            name: entry.name.get_ref().trim().to_string(),
+            formula: entry.formula.get_ref().clone(),
             value,
-        });
+        };
+        if spec.definitions.len() < n_definitions {
+            spec.definitions.push(f);
+        } else {
+            spec.functions.push(f);
+        }
     }
-    for c in raw.claims {
+    for c in &raw.claims {
         let claim = claim(src, &spec, c)?;
         if spec.claims.iter().any(|d| d.id == claim.id) {
             return Err(SpecError::Invalid {
@@ -360,299 +391,174 @@ fn build(src: &Source<'_>, raw: RawSpec) -> Result<Spec> {
     Ok(spec)
 }
 
-fn need<'r, T>(
-    src: &Source<'_>,
-    c: &'r RawClaim,
-    field: &'r Option<T>,
-    name: &str,
-) -> Result<&'r T> {
-    field.as_ref().ok_or_else(|| SpecError::Invalid {
-        at: src.at(c.check.span().start),
-        field: format!("claims.{name}"),
-        message: format!(
-            "check `{}` of claim `{}` needs the field `{name}`",
-            c.check.get_ref(),
-            c.id.get_ref()
-        ),
-    })
+fn read_params(src: &Source<'_>, raw: &RawSpec, var_name: &str) -> Result<Vec<SpecParam>> {
+    let mut params: Vec<SpecParam> = Vec::new();
+    if raw.parameters.len() > MAX_PARAMS {
+        return src.invalid(
+            raw.parameters[MAX_PARAMS].name.span(),
+            "parameters",
+            format!("more than {MAX_PARAMS} parameters (the limit of a spec)"),
+        );
+    }
+    for p in &raw.parameters {
+        let name = p.name.get_ref().trim().to_string();
+        let taken = params.iter().any(|q| q.name == name || q.symbol == name);
+        if !identifier(&name) || RESERVED.contains(&name.as_str()) || name == var_name || taken {
+            return src.invalid(
+                p.name.span(),
+                "parameters.name",
+                format!(
+                    "`{name}`: expected a new ASCII identifier other than the variable and {}",
+                    RESERVED.join(", ")
+                ),
+            );
+        }
+        let range = SpecRange::parse(p.range.get_ref())
+            .or_else(|m| src.invalid(p.range.span(), "parameters.range", m))?;
+        params.push(SpecParam {
+            symbol: p.symbol.clone().unwrap_or_else(|| name.clone()),
+            name,
+            range,
+            source: p.source.clone().unwrap_or_else(|| "spec file".into()),
+        });
+    }
+    Ok(params)
 }
 
-fn function_index(
+/// The definitions, then the functions, each with its syntax tree; names
+/// checked.
+fn read_entries<'r>(
     src: &Source<'_>,
-    spec: &Spec,
-    name: &Spanned<String>,
-    text: &str,
-) -> Result<usize> {
-    spec.functions
+    raw: &'r RawSpec,
+    params: &[(String, String)],
+    var_name: &str,
+) -> Result<Vec<(&'r RawFunction, Expr)>> {
+    if raw.functions.is_empty() {
+        return Err(SpecError::Invalid {
+            at: src.at(0),
+            field: "functions".into(),
+            message: "expected at least one [[functions]] entry".into(),
+        });
+    }
+    for (list, what) in [
+        (&raw.functions, "functions"),
+        (&raw.definitions, "definitions"),
+    ] {
+        if list.len() > MAX_FUNCTIONS {
+            return src.invalid(
+                list[MAX_FUNCTIONS].name.span(),
+                what,
+                format!("more than {MAX_FUNCTIONS} {what} (the limit of a spec)"),
+            );
+        }
+    }
+    let mut out: Vec<(&RawFunction, Expr)> = Vec::new();
+    for (f, what) in raw
+        .definitions
         .iter()
-        .position(|f| f.name == text.trim())
-        .ok_or_else(|| SpecError::Invalid {
-            at: src.at(name.span().start),
-            field: "claims".into(),
-            message: format!(
-                "`{}`: unknown function (expected one of {})",
-                text.trim(),
-                spec.functions
-                    .iter()
-                    .map(|f| f.name.as_str())
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            ),
-        })
+        .map(|f| (f, "definitions"))
+        .chain(raw.functions.iter().map(|f| (f, "functions")))
+    {
+        let name = f.name.get_ref().trim();
+        let taken = out.iter().any(|(g, _)| g.name.get_ref().trim() == name)
+            || params.iter().any(|(p, s)| p == name || s == name);
+        if !identifier(name) || RESERVED.contains(&name) || name == var_name || taken {
+            return src.invalid(
+                f.name.span(),
+                &format!("{what}.name"),
+                format!("`{name}`: expected a new ASCII identifier (not a parameter, the variable, another function or definition, or reserved)"),
+            );
+        }
+        let e = ast::parse(f.formula.get_ref()).map_err(|e| src.formula_error(&f.formula, e))?;
+        out.push((f, e));
+    }
+    Ok(out)
 }
 
-/// `name = formula` entries.
-fn printed(src: &Source<'_>, spec: &Spec, items: &[Spanned<String>]) -> Result<Vec<Printed>> {
-    items
-        .iter()
-        .map(|item| {
-            let Some((name, formula)) = item.get_ref().split_once('=') else {
-                return src.invalid(
-                    item.span(),
-                    "claims.values",
-                    format!("`{}`: expected `NAME = VALUE`", item.get_ref()),
-                );
-            };
-            let function = function_index(src, spec, item, name)?;
-            let value = spec.parse_formula(formula, &[]).map_err(|mut e| {
-                e.position += name.chars().count() + 1;
-                src.formula_error(item, e)
-            })?;
-            Ok(Printed {
-                function,
-                text: item.get_ref().trim().to_string(),
-                value,
-            })
+/// Lowers every definition and function, each on first use (any order;
+/// cycles are refused), every error located in its own formula.
+fn lower_all(src: &Source<'_>, spec: &Spec, entries: &[(&RawFunction, Expr)]) -> Result<Vec<Sym>> {
+    let lowerer = Lowerer {
+        spec,
+        entries,
+        index: entries
+            .iter()
+            .enumerate()
+            .map(|(i, (f, _))| (f.name.get_ref().trim(), i))
+            .collect(),
+        states: RefCell::new(vec![State::Pending; entries.len()]),
+        params: spec.param_pairs(),
+        ranges: spec.ranges(),
+    };
+    (0..entries.len())
+        .map(|i| match lowerer.get(i) {
+            State::Done(v) => Ok(v),
+            State::Failed(origin, e) => Err(src.formula_error(&entries[origin].0.formula, e)),
+            State::Pending | State::InProgress => unreachable!("lowered by get"),
         })
         .collect()
 }
 
-fn one_param_range(
-    src: &Source<'_>,
-    spec: &Spec,
-    range: &Option<Spanned<String>>,
-) -> Result<Option<SpecRange>> {
-    let Some(r) = range else { return Ok(None) };
-    if spec.params.len() != 1 {
-        return src.invalid(
-            r.span(),
-            "claims.range",
-            "a range is only accepted for a basis with exactly one parameter".into(),
-        );
-    }
-    SpecRange::parse(r.get_ref())
-        .map(Some)
-        .or_else(|m| src.invalid(r.span(), "claims.range", m))
+/// The state of one name while the definitions are lowered on demand.
+#[derive(Clone)]
+enum State {
+    Pending,
+    InProgress,
+    Done(Sym),
+    /// The formula of entry `origin` has this error.
+    Failed(usize, FormulaError),
 }
 
-fn order_field(src: &Source<'_>, c: &RawClaim, order: &Spanned<i64>) -> Result<usize> {
-    usize::try_from(*order.get_ref())
-        .ok()
-        .filter(|k| *k <= MAX_ORDER)
-        .ok_or_else(|| SpecError::Invalid {
-            at: src.at(order.span().start),
-            field: "claims.order".into(),
-            message: format!(
-                "{}: expected an order from 0 to {MAX_ORDER} (claim `{}`)",
-                order.get_ref(),
-                c.id.get_ref()
-            ),
-        })
+struct Lowerer<'a> {
+    spec: &'a Spec,
+    entries: &'a [(&'a RawFunction, Expr)],
+    index: BTreeMap<&'a str, usize>,
+    states: RefCell<Vec<State>>,
+    params: Vec<(String, String)>,
+    ranges: Vec<(String, SpecRange)>,
 }
 
-fn claim(src: &Source<'_>, spec: &Spec, c: RawClaim) -> Result<SpecClaim> {
-    let id = c.id.get_ref().trim().to_string();
-    if id.is_empty() {
-        return src.invalid(c.id.span(), "claims.id", "expected a nonempty id".into());
-    }
-    let check = match c.check.get_ref().trim() {
-        "unity" => Check::Unity,
-        "nonnegative" => Check::Nonnegative {
-            range: one_param_range(src, spec, &c.range)?,
-            maximal: c.maximal.unwrap_or(false),
-        },
-        "monotone" => {
-            let items = need(src, &c, &c.functions, "functions")?
-                .iter()
-                .map(|item| {
-                    let text = item.get_ref();
-                    let (name, dir) = text.trim().rsplit_once(' ').unwrap_or((text, ""));
-                    let increasing = match dir {
-                        "increasing" => true,
-                        "decreasing" => false,
-                        _ => {
-                            return src.invalid(
-                                item.span(),
-                                "claims.functions",
-                                format!(
-                                    "`{text}`: expected `NAME increasing` or `NAME decreasing`"
-                                ),
-                            );
-                        }
-                    };
-                    Ok(Monotone {
-                        function: function_index(src, spec, item, name)?,
-                        increasing,
-                    })
-                })
-                .collect::<Result<Vec<_>>>()?;
-            Check::Monotone {
-                items,
-                range: one_param_range(src, spec, &c.range)?,
-            }
+impl Lowerer<'_> {
+    /// Entry `i`, lowered on first request with its dependencies.
+    fn get(&self, i: usize) -> State {
+        let state = self.states.borrow()[i].clone();
+        if !matches!(state, State::Pending) {
+            return state;
         }
-        "symmetry" => {
-            let map = need(src, &c, &c.map, "map")?;
-            let in_var = Spec {
-                variable: Variable::Polynomial,
-                ..spec.clone()
-            };
-            let value = in_var
-                .parse_formula(map.get_ref(), &[])
-                .map_err(|e| src.formula_error(map, e))?;
-            let constant = value.clone() + &Sym::var("t");
-            if value.diff("t").is_zero()
-                || !constant.diff("t").is_zero()
-                || constant.variables().iter().any(|v| v != "pi")
-            {
-                return src.invalid(map.span(), "claims.map", format!("`{}`: expected a reflection `A - {}` with a constant A (e.g. 1 - u, pi/2 - t)", map.get_ref(), spec.var_name));
-            }
-            let index = need(src, &c, &c.index, "index")?;
-            let compact: String = index
-                .get_ref()
-                .chars()
-                .filter(|ch| !ch.is_whitespace())
-                .collect();
-            let offset = compact
-                .strip_suffix("-i")
-                .and_then(|a| a.parse::<i64>().ok())
-                .ok_or_else(|| SpecError::Invalid {
-                    at: src.at(index.span().start),
-                    field: "claims.index".into(),
-                    message: format!("`{}`: expected `N - i` with an integer N", index.get_ref()),
-                })?;
-            let mut at = Vec::new();
-            for p in &spec.params {
-                let value = match c.at.as_ref().and_then(|m| m.get(&p.name)) {
-                    Some(v) => parse_exact(v.get_ref()).map_err(|e| SpecError::Invalid {
-                        at: src.at(v.span().start),
-                        field: "claims.at".into(),
-                        message: e.to_string(),
-                    })?,
-                    None => p.range.interior_point(),
-                };
-                at.push(value);
-            }
-            Check::Symmetry {
-                map_text: map.get_ref().trim().to_string(),
-                map: value,
-                index_text: index.get_ref().trim().to_string(),
-                offset,
-                at,
-            }
-        }
-        "endpoint-values" => Check::EndpointValues {
-            end: end_field(src, need(src, &c, &c.end, "end")?)?,
-            values: printed(src, spec, need(src, &c, &c.values, "values")?)?,
-        },
-        "endpoint-derivatives" => Check::EndpointDerivatives {
-            end: end_field(src, need(src, &c, &c.end, "end")?)?,
-            order: order_field(src, &c, need(src, &c, &c.order, "order")?)?,
-            wrt: wrt_field(src, spec, c.wrt.as_ref())?,
-            values: printed(src, spec, need(src, &c, &c.values, "values")?)?,
-        },
-        "join" => {
-            let kind = need(src, &c, &c.join, "join")?;
-            let order = match kind.get_ref().trim() {
-                "C0" => 0,
-                "C1" => 1,
-                "C2" => 2,
-                "C3" => 3,
-                other => {
-                    return src.invalid(
-                        kind.span(),
-                        "claims.join",
-                        format!("`{other}`: expected C0, C1, C2 or C3"),
-                    );
+        self.states.borrow_mut()[i] = State::InProgress;
+        let failure: RefCell<Option<(usize, FormulaError)>> = RefCell::new(None);
+        let resolve = |n: &str| -> Option<std::result::Result<Sym, String>> {
+            let j = *self.index.get(n)?;
+            Some(match self.get(j) {
+                State::Done(v) => Ok(v),
+                State::InProgress => Err(format!(
+                    "`{n}` is defined through itself (a circular definition)"
+                )),
+                State::Failed(origin, e) => {
+                    *failure.borrow_mut() = Some((origin, e));
+                    Err(format!("`{n}` could not be read"))
                 }
-            };
-            let n = spec.functions.len();
-            let extra: Vec<String> = (0..n)
-                .flat_map(|i| [format!("P{i}"), format!("Q{i}")])
-                .collect();
-            let conditions = need(src, &c, &c.conditions, "conditions")?
-                .iter()
-                .map(|item| {
-                    let text = item.get_ref();
-                    let Some((lhs, rhs)) = text.split_once('=') else {
-                        return src.invalid(item.span(), "claims.conditions", format!("`{text}`: expected `Qk = formula in P0…P{}, Q0…`", n - 1));
-                    };
-                    let point = lhs.trim().strip_prefix('Q').and_then(|k| k.parse::<usize>().ok()).filter(|k| *k < n);
-                    let Some(point) = point else {
-                        return src.invalid(item.span(), "claims.conditions", format!("`{}`: expected a control point Q0…Q{} of the second segment on the left", lhs.trim(), n - 1));
-                    };
-                    let value = spec.parse_formula(rhs, &extra).map_err(|mut e| {
-                        e.position += lhs.chars().count() + 1;
-                        src.formula_error(item, e)
-                    })?;
-                    Ok(Condition { point, text: text.trim().to_string(), value })
-                })
-                .collect::<Result<Vec<_>>>()?;
-            Check::Join {
-                order,
-                wrt: wrt_field(src, spec, c.wrt.as_ref())?,
-                conditions,
-            }
-        }
-        "continuity" => {
-            if spec.functions.len() != 4 {
-                return src.invalid(c.check.span(), "claims.check", "continuity at knots needs four segment functions (piece k of the B-spline is function 3 − k)".into());
-            }
-            Check::Continuity {
-                order: order_field(src, &c, need(src, &c, &c.order, "order")?)?,
-            }
-        }
-        other => {
-            return src.invalid(
-                c.check.span(),
-                "claims.check",
-                format!("`{other}`: expected unity, nonnegative, monotone, symmetry, endpoint-values, endpoint-derivatives, join or continuity"),
-            );
-        }
-    };
-    Ok(SpecClaim {
-        id,
-        source: c.source,
-        statement: c.statement,
-        check,
-    })
-}
-
-fn end_field(src: &Source<'_>, end: &Spanned<String>) -> Result<End> {
-    match end.get_ref().trim() {
-        "start" | "0" => Ok(End::Start),
-        "end" | "1" => Ok(End::End),
-        other => src.invalid(
-            end.span(),
-            "claims.end",
-            format!("`{other}`: expected `start` or `end`"),
-        ),
-    }
-}
-
-fn wrt_field(src: &Source<'_>, spec: &Spec, wrt: Option<&Spanned<String>>) -> Result<Wrt> {
-    let Some(w) = wrt else { return Ok(Wrt::Angle) };
-    match (w.get_ref().trim(), spec.variable) {
-        ("angle" | "theta" | "θ", _) => Ok(Wrt::Angle),
-        ("u", Variable::UnitAngle) => Ok(Wrt::U),
-        ("t", Variable::Polynomial | Variable::Angle) => Ok(Wrt::Angle),
-        (other, _) => src.invalid(
-            w.span(),
-            "claims.wrt",
-            format!(
-                "`{other}`: expected `angle` or the basis variable `{}`",
-                spec.var_name
-            ),
-        ),
+                State::Pending => unreachable!("requested above"),
+            })
+        };
+        let divisor = |d: &Sym| nonvanishing::check(d, &self.spec.domain, &self.ranges);
+        let scope = Scope {
+            domain: &self.spec.domain,
+            var_name: &self.spec.var_name,
+            shorthand: self.spec.shorthand,
+            params: &self.params,
+            resolve: &resolve,
+            extra: &[],
+            divisor: &divisor,
+        };
+        let result = match lower(&self.entries[i].1, &scope) {
+            Ok(v) => State::Done(v),
+            Err(e) => match failure.into_inner() {
+                Some((origin, inner)) => State::Failed(origin, inner),
+                None => State::Failed(i, e),
+            },
+        };
+        self.states.borrow_mut()[i] = result.clone();
+        result
     }
 }

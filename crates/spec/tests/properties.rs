@@ -9,7 +9,7 @@
 
 use proptest::prelude::*;
 use rug::Rational;
-use trig_core::{Basis, Variable};
+use trig_core::{Basis, Domain, Variable};
 use trig_spec::Spec;
 use trig_spec::formula::{Scope, parse};
 use trig_symbolic::Sym;
@@ -99,12 +99,13 @@ fn params() -> Vec<(String, String)> {
     vec![("m".into(), "m".into()), ("lambda".into(), "λ".into())]
 }
 
-fn scope<'a>(params: &'a [(String, String)]) -> Scope<'a> {
+fn scope<'a>(domain: &'a Domain, params: &'a [(String, String)]) -> Scope<'a> {
     Scope {
-        variable: Variable::UnitAngle,
+        domain,
         var_name: "u",
+        shorthand: Some(1),
         params,
-        functions: &[],
+        resolve: &|_| None,
         extra: &[],
         divisor: &|d: &Sym| {
             if d.is_zero() {
@@ -135,15 +136,17 @@ proptest! {
     #[test]
     fn print_then_parse_round_trips(f in formula()) {
         let p = params();
+        let d = Domain::from_variable(Variable::UnitAngle, &["m", "lambda"]);
         let printed = f.value.to_string();
-        let back = parse(&printed, &scope(&p)).map_err(|e| TestCaseError::fail(format!("{printed}: {e}")))?;
+        let back = parse(&printed, &scope(&d, &p)).map_err(|e| TestCaseError::fail(format!("{printed}: {e}")))?;
         prop_assert_eq!(back, f.value);
     }
 
     #[test]
     fn parsed_text_equals_direct_construction(f in formula()) {
         let p = params();
-        let parsed = parse(&f.text, &scope(&p)).map_err(|e| TestCaseError::fail(format!("{}: {e}", f.text)))?;
+        let d = Domain::from_variable(Variable::UnitAngle, &["m", "lambda"]);
+        let parsed = parse(&f.text, &scope(&d, &p)).map_err(|e| TestCaseError::fail(format!("{}: {e}", f.text)))?;
         prop_assert_eq!(&parsed, &f.value);
         // same values in f64 (relative 1e-9: both evaluate the same reduced form)
         if let (Some(a), Some(b)) = (eval_f64(&parsed), eval_f64(&f.value)) {
@@ -177,6 +180,24 @@ const FRAGMENTS: &[&str] = &[
     "[[claims]]\nid = \"D\"\nsource = \"s\"\nstatement = \"p\"\ncheck = \"join\"\njoin = \"C1\"\nconditions = [\"Q1 = 2*P3 - P2\", \"P0 = 1\"]\n",
     "[[claims]]\nid = \"E\"\nsource = \"s\"\nstatement = \"p\"\ncheck = \"continuity\"\norder = 99\n",
     "[[claims]]\nid = \"F\"\nsource = \"s\"\nstatement = \"p\"\ncheck = \"monotone\"\nfunctions = [\"b0 sideways\"]\n",
+    "variable = \"t\"\ndomain = \"[0, alpha]\"\n",
+    "variable = \"x\"\ndomain = \"[-pi/2, pi/2]\"\n",
+    "variable = \"t\"\ndomain = \"[1, 0]\"\n",
+    "domain = \"[0, pi]\"\n",
+    "[[parameters]]\nname = \"alpha\"\nrange = \"(0, 3)\"\n",
+    "[[parameters]]\nname = \"mu\"\nrange = \"[-2, 1]\"\n",
+    "[[definitions]]\nname = \"w\"\nformula = \"alpha - sin(alpha)\"\n",
+    "[[definitions]]\nname = \"k\"\nformula = \"k + 1\"\n",
+    "[[functions]]\nname = \"z0\"\nformula = \"(t - sin(t))/w\"\n",
+    "[[functions]]\nname = \"z1\"\nformula = \"1 - z0 - z2\"\n",
+    "[[functions]]\nname = \"z2\"\nformula = \"sinh(t)*exp(-2*t) + cos(3*t/2)*sin(t/2)\"\n",
+    "[[functions]]\nname = \"z3\"\nformula = \"cos(24*t)^64\"\n",
+    "[[functions]]\nname = \"z4\"\nformula = \"((1 + s)^64)^64\"\n",
+    "[[functions]]\nname = \"z5\"\nformula = \"2 s + sqrt(2)*sin(pi/4)\"\n",
+    "[[claims]]\nid = \"G\"\nsource = \"s\"\nstatement = \"p\"\ncheck = \"symmetry\"\nmap = \"alpha - t\"\nindex = \"3 - i\"\nparams = { m = \"mu\", mu = \"m\" }\n",
+    "[[claims]]\nid = \"H\"\nsource = \"s\"\nstatement = \"p\"\ncheck = \"join\"\njoin = \"G2\"\ndifferent = true\nconditions = [\"Q0 = P3\", \"Q1 = P3 + gamma*(P3 - P2)/m1\"]\n",
+    "[[claims]]\nid = \"I\"\nsource = \"s\"\nstatement = \"p\"\ncheck = \"curve-derivative\"\nend = \"start\"\norder = 1\nvalue = \"(m + 2)*(P1 - P0)\"\n",
+    "[[claims]]\nid = \"J\"\nsource = \"s\"\nstatement = \"p\"\ncheck = \"convex-hull\"\n",
     "garbage = [1, 2\n",
     "\u{0}\u{ff}\n",
 ];
@@ -198,7 +219,10 @@ proptest! {
             if let Ok(spec) = Spec::from_str_named(t, "fuzz.toml") {
                 // a spec that loads evaluates without panicking
                 let p: Vec<f64> = spec.params.iter().map(|q| q.range.interior_point().to_f64()).collect();
-                let atoms = spec.variable.atoms(&0.25f64);
+                let d = spec.domain.clone();
+                let pv: Vec<f64> = p.clone();
+                let x = (d.start_value(&0.0, &pv) + d.end_value(&0.0, &pv)) / 2.0;
+                let atoms = d.atoms(&x);
                 let _ = Basis::eval(&spec, &atoms, &p);
             }
         }

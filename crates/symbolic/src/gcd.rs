@@ -19,7 +19,6 @@ use std::collections::{BTreeMap, BTreeSet};
 
 use crate::monomial::Monomial;
 use crate::poly::Poly;
-use crate::var::{COS, SIN};
 
 /// `gcd(a, b)` for polynomials free of `s` and `c`: primitive, positive
 /// leading coefficient; `gcd(0, 0) = 0`. `None` when either involves `s`
@@ -59,7 +58,8 @@ pub fn common_factor(num: &Poly, f: &Poly) -> Option<Poly> {
 }
 
 fn is_trig(p: &Poly) -> bool {
-    p.degree_in(SIN) > 0 || p.degree_in(COS) > 0
+    p.terms()
+        .any(|(m, _)| m.factors().any(|(v, _)| v.is_trig()))
 }
 
 /// The coefficients of `p` as a polynomial in the variables outside
@@ -174,6 +174,7 @@ fn pseudo_remainder(a: &Poly, b: &Poly, x: &str) -> Poly {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::var::{COS, SIN};
 
     fn v(name: &str) -> Poly {
         Poly::var(name)

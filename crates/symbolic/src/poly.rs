@@ -16,7 +16,7 @@ use std::ops::{Add, Mul, Neg, Sub};
 use rug::{Integer, Rational};
 
 use crate::monomial::Monomial;
-use crate::var::{COS, SIN, Var};
+use crate::var::Var;
 
 /// A polynomial `Σ cᵢ·mᵢ` with rational coefficients, in normal form
 /// modulo `s² + c² − 1`. The derived order (used to key denominator
@@ -120,27 +120,37 @@ impl Poly {
             .collect()
     }
 
-    /// Adds `q·m`, rewriting `s^k` (`k ≥ 2`) as `s^(k mod 2)·(1 − c²)^⌊k/2⌋`.
+    /// Adds `q·m`, rewriting every power `vᵏ` (`k ≥ 2`) of a reduced atom
+    /// by its square rule ([`Var::square`]): `sᵏ = s^(k mod 2)·(1 − c²)^⌊k/2⌋`
+    /// for a sine atom with cosine partner `c`, `sqrt(p)ᵏ = sqrt(p)^(k mod 2)·p^⌊k/2⌋`.
     pub(crate) fn add_term(&mut self, m: Monomial, q: Rational) {
         if q == 0 {
             return;
         }
-        let k = m.exponent(SIN);
-        if k < 2 {
+        let Some((v, k)) = m.factors().find(|(v, e)| *e >= 2 && v.is_reduced()) else {
             self.accumulate(m, q);
             return;
-        }
-        let (rest, _) = m.split(SIN);
-        let base = rest.mul(&Monomial::var(Var::new(SIN), k % 2));
+        };
+        let v = v.clone();
+        let (rest, _) = m.split(v.name());
+        let base = rest.mul(&Monomial::var(v.clone(), k % 2));
         let j = k / 2;
-        let mut binom = Integer::from(1);
-        for i in 0..=j {
-            let mut coef = Rational::from(&q * &binom);
-            if i % 2 == 1 {
-                coef = -coef;
+        match v.square().expect("a reduced atom has a square rule") {
+            (None, p) => {
+                let coef = Rational::from(&q * &Integer::from(rug::ops::Pow::pow(&p, j)));
+                self.add_term(base, coef);
             }
-            self.accumulate(base.mul(&Monomial::var(Var::new(COS), 2 * i)), coef);
-            binom = binom * (j - i) / (i + 1);
+            (Some(cosine), _) => {
+                let mut binom = Integer::from(1);
+                for i in 0..=j {
+                    let mut coef = Rational::from(&q * &binom);
+                    if i % 2 == 1 {
+                        coef = -coef;
+                    }
+                    self.add_term(base.mul(&Monomial::var(cosine.clone(), 2 * i)), coef);
+                    binom = binom * (j - i) / (i + 1);
+                }
+            }
         }
     }
 
@@ -221,11 +231,29 @@ impl Poly {
                 }
             }
         }
-        if d.degree_in(SIN) == 0 {
-            return self.divide_free_of_sin(d);
+        // Make the divisor free of every reduced atom (sine, radical)
+        // through its conjugates (`d₀ + d₁s ↦ d₀ − d₁s`), multiplying `self`
+        // alike: `d·d̄` is even in the atom, so its normal form lacks it.
+        let (mut num, mut den) = (self.clone(), d.clone());
+        while let Some(atom) = den.reduced_atoms().into_iter().next() {
+            let conj = den.subs(atom.name(), &-Poly::var(atom.name()));
+            num = &num * &conj;
+            den = &den * &conj;
         }
-        let conj = d.subs(SIN, &-Poly::var(SIN));
-        (self * &conj).divide_free_of_sin(&(d * &conj))
+        num.divide_free_of_sin(&den)
+    }
+
+    /// The sine atoms (`s`, `sin(X)`) and radicals that occur.
+    fn reduced_atoms(&self) -> Vec<Var> {
+        let mut out: Vec<Var> = Vec::new();
+        for m in self.terms.keys() {
+            for (v, _) in m.factors() {
+                if v.is_reduced() && !out.contains(v) {
+                    out.push(v.clone());
+                }
+            }
+        }
+        out
     }
 
     /// Division algorithm by a nonzero divisor free of `s` (no reduction

@@ -25,12 +25,21 @@ pub const COS: &str = "c";
 pub const T: &str = "t";
 /// The name of the symbol π.
 pub const PI: &str = "pi";
+/// The name of the exponential atom `E = exp(κx)` of a basis's variable.
+pub const EXP: &str = "E";
 
 /// Position class of a name in the variable order.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
 enum Class {
     Parameter(usize),
     Pi,
+    /// `sin(X)` of a parameter expression `X` (paired with `cos(X)`).
+    ParamSin,
+    /// `cos(X)`.
+    ParamCos,
+    /// `sqrt(p)` of a prime `p` (`sqrt(p)² = p`): exact sines and cosines
+    /// of multiples of π/12.
+    Radical,
     Sin,
     Cos,
     T,
@@ -44,6 +53,9 @@ impl Class {
             SIN => Class::Sin,
             COS => Class::Cos,
             T => Class::T,
+            _ if name.starts_with("sin(") && name.ends_with(')') => Class::ParamSin,
+            _ if name.starts_with("cos(") && name.ends_with(')') => Class::ParamCos,
+            _ if radicand(name).is_some() => Class::Radical,
             _ => PARAMETERS
                 .iter()
                 .position(|p| *p == name)
@@ -74,11 +86,57 @@ impl Var {
         &self.name
     }
 
-    /// True for `s` and `c`, whose degrees are not preserved by the
-    /// reduction modulo `s² + c² − 1`.
+    /// True for the paired atoms `s`, `c` and `sin(X)`, `cos(X)`, whose
+    /// degrees are not preserved by the reduction modulo `s² + c² − 1`.
     pub fn is_trig(&self) -> bool {
-        matches!(self.class, Class::Sin | Class::Cos)
+        matches!(
+            self.class,
+            Class::Sin | Class::Cos | Class::ParamSin | Class::ParamCos | Class::Radical
+        )
     }
+
+    /// For a sine atom (`s`, `sin(X)`), its cosine partner (`c`, `cos(X)`):
+    /// the normal form rewrites `sin² = 1 − cos²`.
+    pub fn cosine_partner(&self) -> Option<Var> {
+        match self.class {
+            Class::Sin => Some(Var::new(COS)),
+            Class::ParamSin => Some(Var::new(&format!("cos{}", &self.name[3..]))),
+            _ => None,
+        }
+    }
+
+    /// True for a sine atom (`s`, `sin(X)`).
+    pub fn is_sine(&self) -> bool {
+        self.cosine_partner().is_some()
+    }
+
+    /// True for the atoms the normal form reduces by a square rule
+    /// ([`Var::square`]): sine atoms and radicals. Their degrees are not
+    /// preserved by multiplication, and division clears them by conjugates.
+    pub fn is_reduced(&self) -> bool {
+        self.is_sine() || self.class == Class::Radical
+    }
+
+    /// `v²` in lower terms when the normal form rewrites it: `1 − c²` for a
+    /// sine atom with cosine partner `c`, `p` for `sqrt(p)`.
+    pub fn square(&self) -> Option<(Option<Var>, rug::Integer)> {
+        match self.class {
+            Class::Radical => radicand(&self.name).map(|p| (None, rug::Integer::from(p))),
+            _ => self
+                .cosine_partner()
+                .map(|c| (Some(c), rug::Integer::from(1))),
+        }
+    }
+}
+
+/// `p` for the name `sqrt(p)` of a radical atom (`p` = 2, 3, 5, 7).
+fn radicand(name: &str) -> Option<u32> {
+    let p = name
+        .strip_prefix("sqrt(")?
+        .strip_suffix(')')?
+        .parse::<u32>()
+        .ok()?;
+    [2, 3, 5, 7].contains(&p).then_some(p)
 }
 
 /// Splits a name into the part before its trailing digits and the digits.
@@ -114,12 +172,12 @@ impl Hash for Var {
 
 impl Ord for Var {
     fn cmp(&self, other: &Self) -> Ordering {
-        self.class.cmp(&other.class).then_with(|| {
-            if self.class == Class::Other {
+        // classes with one member compare equal; the others by name
+        self.class.cmp(&other.class).then_with(|| match self.class {
+            Class::Other | Class::ParamSin | Class::ParamCos | Class::Radical => {
                 natural(&self.name, &other.name)
-            } else {
-                Ordering::Equal
             }
+            _ => Ordering::Equal,
         })
     }
 }
@@ -161,6 +219,20 @@ mod tests {
             [
                 "m", "beta", "zeta", "pi", "s", "c", "t", "P2", "P10", "h1", "w0"
             ]
+        );
+    }
+
+    #[test]
+    fn parameter_trig_atoms_pair_up() {
+        let s = Var::new("sin(alpha/2)");
+        assert!(s.is_trig() && s.is_sine());
+        assert_eq!(s.cosine_partner().unwrap().name(), "cos(alpha/2)");
+        assert!(Var::new("cos(alpha/2)").is_trig() && !Var::new("cos(alpha/2)").is_sine());
+        assert_eq!(Var::new("s").cosine_partner().unwrap().name(), "c");
+        assert!(!Var::new(EXP).is_trig());
+        assert_eq!(
+            sorted(&["s", "sin(alpha)", "pi", "alpha", "E"]),
+            ["alpha", "pi", "sin(alpha)", "s", "E"]
         );
     }
 

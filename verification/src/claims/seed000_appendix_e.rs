@@ -85,7 +85,7 @@ fn rational_table<const K: usize>(
 ) -> Vec<Vec<Vec<Sym>>> {
     let (w, h) = (symbols("w", 4), symbols("H", 4));
     let q = Sym::var("q");
-    let dt = rate(Family::Seed000Blending, Wrt::X, &q);
+    let dt = rate(Family::Seed000Blending, Wrt::X, &q, &[zeta()]);
     [End::Start, End::End]
         .into_iter()
         .map(|end| {
@@ -122,7 +122,7 @@ fn rational_table<const K: usize>(
 
 /// Jets of `l₀…l₃` at an end of the span.
 fn blending_jets<const K: usize>(end: End) -> Vec<Jet<Sym, K>> {
-    let atoms = end_atoms::<Sym, K>(Family::Seed000Blending, end, &Sym::one());
+    let atoms = end_atoms::<Sym, K>(Family::Seed000Blending, end, &Sym::one(), &[zeta()]);
     Family::Seed000Blending.eval(&atoms, &[Jet::constant(zeta())])
 }
 
@@ -149,7 +149,7 @@ fn general<const K: usize>() -> Vec<Vec<Vec<Sym>>> {
 /// The uniform case: the Appendix A basis `F_i = l_i/(6ζ² − 6ζ + 10)`.
 fn uniform() -> Vec<Vec<Vec<Sym>>> {
     rational_table(|end| {
-        let atoms = end_atoms::<Sym, THIRD>(Family::Seed000Uniform, end, &Sym::one());
+        let atoms = end_atoms::<Sym, THIRD>(Family::Seed000Uniform, end, &Sym::one(), &[zeta()]);
         Family::Seed000Uniform.eval(&atoms, &[Jet::constant(zeta())])
     })
 }

@@ -383,6 +383,7 @@ fn eh_curve(points: &[Sym], lambda: &Sym, mu: &Sym, t: &Sym) -> Sym {
         s: Sym::zero(),
         c: Sym::one(),
         t: t.clone(),
+        e: Sym::one(),
     };
     combination(
         &Family::Eh.eval(&atoms, &[lambda.clone(), mu.clone()]),
@@ -452,6 +453,7 @@ fn hermite_conditions(t: &Sym, hd: &Sym) -> Vec<(String, Sym, Sym)> {
         s: Sym::zero(),
         c: Sym::one(),
         t: t.clone(),
+        e: Sym::one(),
     };
     let a = Family::Hermite.eval(&atoms, &[]);
     let h = combination(&a, &[y0.clone(), y1.clone(), hi * &d0, hd.clone() * &d1]);

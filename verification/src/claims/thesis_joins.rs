@@ -558,11 +558,12 @@ fn t39() -> Verdict {
         for same in [true, false] {
             let join = thesis_join(kind, same, vec![]);
             let setup = trig_deriv::JoinSetup {
-                family: join.family,
+                basis: join.family,
                 first_params: &join.first_params,
                 second_params: &join.second_params,
                 wrt: Wrt::Angle,
                 h: (Sym::one(), Sym::one()),
+                factors: trig_deriv::default_factors(),
             };
             match trig_deriv::solve_join(&setup, kind, &join.first, &join.second) {
                 Ok(solved) => {

@@ -9,7 +9,7 @@ use serde_json::json;
 use trig_core::families::seed000_nonuniform::NonUniform;
 use trig_core::knots::{check_knots, locate};
 use trig_core::{
-    Atoms, Basis, CoreError, Family, Mpfr, Real, Ring, SEED000_NONUNIFORM, Variable, parse_exact,
+    Atoms, Basis, CoreError, Domain, Family, Mpfr, Real, Ring, SEED000_NONUNIFORM, parse_exact,
     piecewise,
 };
 use trig_spec::Spec;
@@ -146,10 +146,10 @@ impl Basis for Subject {
         }
     }
 
-    fn variable(&self) -> Variable {
+    fn domain(&self) -> Domain {
         match self {
-            Subject::Family(f) => Basis::variable(f),
-            Subject::Spec(s) => s.variable,
+            Subject::Family(f) => f.domain(),
+            Subject::Spec(s) => s.domain.clone(),
         }
     }
 

@@ -93,11 +93,12 @@ fn solve(family: Family, kind: JoinKind, params: ParamsArg, wrt: Wrt) -> Result<
     let first: Vec<Sym> = (0..n).map(|i| Sym::var(&format!("P{i}"))).collect();
     let second: Vec<Sym> = (0..n).map(|i| Sym::var(&format!("Q{i}"))).collect();
     let setup = JoinSetup {
-        family,
+        basis: family,
         first_params: &first_params,
         second_params: &second_params,
         wrt,
         h: (Sym::var("h1"), Sym::var("h2")),
+        factors: trig_deriv::default_factors(),
     };
     let join =
         solve_join(&setup, kind, &first, &second).map_err(|e| CliError::Usage(e.to_string()))?;

@@ -251,13 +251,10 @@ fn region(path: &Path) -> Result<String, CliError> {
         }
     }
     let axes = [axis(p), axis(q)];
-    let names: Vec<&str> = spec.functions.iter().map(|f| f.name.as_str()).collect();
-    let reg = classify_window(
-        &spec.symbolic(),
-        &names,
-        spec.variable.is_trigonometric(),
-        &axes,
-    );
+    let (trig, fs, names) = trig_verification::spec_audit::standard_pieces(&spec)
+        .map_err(|why| CliError::Usage(format!("plot region: {why}")))?;
+    let names: Vec<&str> = names.iter().map(String::as_str).collect();
+    let reg = classify_window(&fs, &names, trig, &axes);
     let cells: Vec<RegionCell> = reg
         .cells
         .iter()

@@ -159,7 +159,7 @@ pub fn run(args: &TableArgs) -> CmdResult {
     let heading = format!(
         "{id} ({}): derivatives {}, {mode}",
         family.citation(),
-        wrt.describe(family.variable().is_trigonometric())
+        wrt.describe(family.domain().is_trigonometric())
     );
     Ok(render_blocks(&heading, &blocks, args.format))
 }

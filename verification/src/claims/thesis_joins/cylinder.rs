@@ -107,11 +107,12 @@ fn listing_nets() -> Vec<([Point; 4], [Point; 4])> {
 fn seam_failures(rows: &[([Point; 4], [Point; 4])], p_to_q: bool) -> Vec<String> {
     let m = [n(1)];
     let setup = JoinSetup {
-        family: Family::ThesisCubic,
+        basis: Family::ThesisCubic,
         first_params: &m,
         second_params: &m,
         wrt: Wrt::Angle,
         h: (Sym::one(), Sym::one()),
+        factors: trig_deriv::default_factors(),
     };
     let mut failures = Vec::new();
     for (r, (p, q)) in rows.iter().enumerate() {

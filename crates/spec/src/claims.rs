@@ -1,0 +1,512 @@
+//! The claims of a spec file, read into checks the audit can decide.
+
+use rug::Rational;
+use toml::Spanned;
+use trig_core::{Affine, parse_exact};
+use trig_deriv::{End, JoinKind, Wrt};
+use trig_symbolic::Sym;
+
+use crate::error::{Result, SpecError};
+use crate::range::SpecRange;
+use crate::raw::RawClaim;
+use crate::source::Source;
+use crate::spec::{MAX_ORDER, Spec};
+
+/// A printed value `name = formula` of one function.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Printed {
+    pub function: usize,
+    pub text: String,
+    pub value: Sym,
+}
+
+/// A printed monotonicity statement about one function.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Monotone {
+    pub function: usize,
+    pub increasing: bool,
+}
+
+/// A printed join condition `Qk = formula in P0…, Q0…`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Condition {
+    /// Index `k` of the second segment's control point.
+    pub point: usize,
+    pub text: String,
+    pub value: Sym,
+}
+
+/// What a claim of the file asserts, in a form the audit can decide.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Check {
+    /// `Σ bᵢ = 1`.
+    Unity,
+    /// Every function ≥ 0 on the domain for the parameter range (the
+    /// declared one unless given); `maximal`: the range is the maximal one.
+    Nonnegative {
+        range: Option<SpecRange>,
+        maximal: bool,
+    },
+    /// Each listed function monotone on the domain for the range.
+    Monotone {
+        items: Vec<Monotone>,
+        range: Option<SpecRange>,
+    },
+    /// `bᵢ(x; p) = b_{offset−i}(A − x; σ(p))`: the map `x ↦ A − x` printed
+    /// in the variable, the parameters substituted by `σ` (exchange
+    /// symmetry `λ ↔ μ`; the identity unless given); `at` gives parameter
+    /// values for a numeric counterexample when the map is not the
+    /// reflection of the domain.
+    Symmetry {
+        map_text: String,
+        /// `A`.
+        map: Affine,
+        index_text: String,
+        offset: i64,
+        at: Vec<Rational>,
+        /// `σ(p)` for each parameter, in order.
+        params: Vec<Sym>,
+        /// The printed substitution (`lambda = mu, mu = lambda`), empty
+        /// for the identity.
+        params_text: String,
+    },
+    /// Printed function values at one end.
+    EndpointValues { end: End, values: Vec<Printed> },
+    /// Printed derivatives of one order at one end.
+    EndpointDerivatives {
+        end: End,
+        order: usize,
+        wrt: Wrt,
+        values: Vec<Printed>,
+    },
+    /// Printed derivative of the curve `Σ bᵢPᵢ` at one end, a combination
+    /// of the control points (terminal tangents `r'(0) = 3(P1 − P0)`).
+    CurveDerivative {
+        end: End,
+        order: usize,
+        wrt: Wrt,
+        text: String,
+        value: Sym,
+    },
+    /// Printed conditions making two segments `Σ bᵢPᵢ` (end) and
+    /// `Σ bᵢQᵢ` (start) join: `Cᵏ`, `G¹` (`Q'(0) = αP'(1)`), `G²`; with
+    /// `different`, the first segment has the parameters `p1`, the second
+    /// `p2`. `factors` are the names of the `G` factors `α`, `β`.
+    Join {
+        kind: JoinKind,
+        wrt: Wrt,
+        different: bool,
+        factors: [String; 2],
+        conditions: Vec<Condition>,
+    },
+    /// Unity and nonnegativity on the range: the convex-hull property of
+    /// every curve `Σ bᵢPᵢ` (the standard sufficient condition).
+    ConvexHull { range: Option<SpecRange> },
+    /// The uniform B-spline assembled from the `n` functions (piece `k` is
+    /// function `n − 1 − k`) is `Cᵏ` at its knots.
+    Continuity { order: usize },
+}
+
+/// A claim of the file.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SpecClaim {
+    pub id: String,
+    pub source: String,
+    pub statement: String,
+    pub check: Check,
+}
+
+impl Spec {
+    /// The names of the `G¹`/`G²` factors: `alpha`, `beta`, unless a shape
+    /// parameter has that name (then `gamma`, `delta`).
+    pub fn join_factors(&self) -> [String; 2] {
+        let taken = |n: &str| self.params.iter().any(|p| p.name == n);
+        if taken("alpha") || taken("beta") {
+            ["gamma".into(), "delta".into()]
+        } else {
+            ["alpha".into(), "beta".into()]
+        }
+    }
+
+    /// The parameters of the two segments of a join with different
+    /// parameters: `p1`, `p2` for each parameter `p`.
+    pub fn segment_params(&self, segment: usize) -> Vec<Sym> {
+        self.params
+            .iter()
+            .map(|p| Sym::var(&format!("{}{segment}", p.name)))
+            .collect()
+    }
+
+    fn control_points(&self) -> Vec<String> {
+        (0..self.functions.len())
+            .flat_map(|i| [format!("P{i}"), format!("Q{i}")])
+            .collect()
+    }
+}
+
+fn need<'r, T>(
+    src: &Source<'_>,
+    c: &'r RawClaim,
+    field: &'r Option<T>,
+    name: &str,
+) -> Result<&'r T> {
+    field.as_ref().ok_or_else(|| SpecError::Invalid {
+        at: src.at(c.check.span().start),
+        field: format!("claims.{name}"),
+        message: format!(
+            "check `{}` of claim `{}` needs the field `{name}`",
+            c.check.get_ref(),
+            c.id.get_ref()
+        ),
+    })
+}
+
+fn function_index(
+    src: &Source<'_>,
+    spec: &Spec,
+    name: &Spanned<String>,
+    text: &str,
+) -> Result<usize> {
+    spec.functions
+        .iter()
+        .position(|f| f.name == text.trim())
+        .ok_or_else(|| SpecError::Invalid {
+            at: src.at(name.span().start),
+            field: "claims".into(),
+            message: format!(
+                "`{}`: unknown function (expected one of {})",
+                text.trim(),
+                spec.functions
+                    .iter()
+                    .map(|f| f.name.as_str())
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ),
+        })
+}
+
+/// A formula after `prefix` in the string `item` (`NAME = formula`):
+/// errors point into the item.
+fn formula_in(
+    src: &Source<'_>,
+    spec: &Spec,
+    item: &Spanned<String>,
+    prefix: &str,
+    text: &str,
+    extra: &[String],
+) -> Result<Sym> {
+    spec.parse_formula(text, extra).map_err(|mut e| {
+        e.position += prefix.chars().count();
+        src.formula_error(item, e)
+    })
+}
+
+/// `name = formula` entries.
+fn printed(src: &Source<'_>, spec: &Spec, items: &[Spanned<String>]) -> Result<Vec<Printed>> {
+    items
+        .iter()
+        .map(|item| {
+            let Some((name, formula)) = item.get_ref().split_once('=') else {
+                return src.invalid(
+                    item.span(),
+                    "claims.values",
+                    format!("`{}`: expected `NAME = VALUE`", item.get_ref()),
+                );
+            };
+            let function = function_index(src, spec, item, name)?;
+            let value = formula_in(src, spec, item, &format!("{name}="), formula, &[])?;
+            Ok(Printed {
+                function,
+                text: item.get_ref().trim().to_string(),
+                value,
+            })
+        })
+        .collect()
+}
+
+fn one_param_range(
+    src: &Source<'_>,
+    spec: &Spec,
+    range: &Option<Spanned<String>>,
+) -> Result<Option<SpecRange>> {
+    let Some(r) = range else { return Ok(None) };
+    if spec.params.len() != 1 {
+        return src.invalid(
+            r.span(),
+            "claims.range",
+            "a range is only accepted for a basis with exactly one parameter".into(),
+        );
+    }
+    SpecRange::parse(r.get_ref())
+        .map(Some)
+        .or_else(|m| src.invalid(r.span(), "claims.range", m))
+}
+
+fn order_field(src: &Source<'_>, c: &RawClaim, order: &Spanned<i64>) -> Result<usize> {
+    usize::try_from(*order.get_ref())
+        .ok()
+        .filter(|k| *k <= MAX_ORDER)
+        .ok_or_else(|| SpecError::Invalid {
+            at: src.at(order.span().start),
+            field: "claims.order".into(),
+            message: format!(
+                "{}: expected an order from 0 to {MAX_ORDER} (claim `{}`)",
+                order.get_ref(),
+                c.id.get_ref()
+            ),
+        })
+}
+
+/// Reads one claim.
+pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
+    let id = c.id.get_ref().trim().to_string();
+    if id.is_empty() {
+        return src.invalid(c.id.span(), "claims.id", "expected a nonempty id".into());
+    }
+    let check = match c.check.get_ref().trim() {
+        "unity" => Check::Unity,
+        "nonnegative" => Check::Nonnegative {
+            range: one_param_range(src, spec, &c.range)?,
+            maximal: c.maximal.unwrap_or(false),
+        },
+        "convex-hull" => Check::ConvexHull {
+            range: one_param_range(src, spec, &c.range)?,
+        },
+        "monotone" => monotone(src, spec, c)?,
+        "symmetry" => symmetry(src, spec, c)?,
+        "endpoint-values" => Check::EndpointValues {
+            end: end_field(src, need(src, c, &c.end, "end")?)?,
+            values: printed(src, spec, need(src, c, &c.values, "values")?)?,
+        },
+        "endpoint-derivatives" => Check::EndpointDerivatives {
+            end: end_field(src, need(src, c, &c.end, "end")?)?,
+            order: order_field(src, c, need(src, c, &c.order, "order")?)?,
+            wrt: wrt_field(src, spec, c.wrt.as_ref())?,
+            values: printed(src, spec, need(src, c, &c.values, "values")?)?,
+        },
+        "curve-derivative" => {
+            let item = need(src, c, &c.value, "value")?;
+            let points: Vec<String> = (0..spec.functions.len()).map(|i| format!("P{i}")).collect();
+            Check::CurveDerivative {
+                end: end_field(src, need(src, c, &c.end, "end")?)?,
+                order: order_field(src, c, need(src, c, &c.order, "order")?)?,
+                wrt: wrt_field(src, spec, c.wrt.as_ref())?,
+                text: item.get_ref().trim().to_string(),
+                value: formula_in(src, spec, item, "", item.get_ref(), &points)?,
+            }
+        }
+        "join" => join(src, spec, c)?,
+        "continuity" => {
+            if spec.functions.len() < 2 {
+                return src.invalid(c.check.span(), "claims.check", "continuity at knots needs at least two segment functions (piece k of the B-spline is function n − 1 − k)".into());
+            }
+            Check::Continuity {
+                order: order_field(src, c, need(src, c, &c.order, "order")?)?,
+            }
+        }
+        other => {
+            return src.invalid(
+                c.check.span(),
+                "claims.check",
+                format!("`{other}`: expected unity, nonnegative, convex-hull, monotone, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join or continuity"),
+            );
+        }
+    };
+    Ok(SpecClaim {
+        id,
+        source: c.source.clone(),
+        statement: c.statement.clone(),
+        check,
+    })
+}
+
+fn monotone(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check> {
+    let items = need(src, c, &c.functions, "functions")?
+        .iter()
+        .map(|item| {
+            let text = item.get_ref();
+            let (name, dir) = text.trim().rsplit_once(' ').unwrap_or((text, ""));
+            let increasing = match dir {
+                "increasing" => true,
+                "decreasing" => false,
+                _ => {
+                    return src.invalid(
+                        item.span(),
+                        "claims.functions",
+                        format!("`{text}`: expected `NAME increasing` or `NAME decreasing`"),
+                    );
+                }
+            };
+            Ok(Monotone {
+                function: function_index(src, spec, item, name)?,
+                increasing,
+            })
+        })
+        .collect::<Result<Vec<_>>>()?;
+    Ok(Check::Monotone {
+        items,
+        range: one_param_range(src, spec, &c.range)?,
+    })
+}
+
+fn symmetry(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check> {
+    let map = need(src, c, &c.map, "map")?;
+    let expected = format!(
+        "`{}`: expected a reflection `A - {}` with A a number, pi or the parameters (e.g. 1 - u, pi/2 - t, alpha - t)",
+        map.get_ref(),
+        spec.var_name
+    );
+    let l = spec
+        .parse_linear(map.get_ref(), "a symmetry map")
+        .map_err(|e| src.formula_error(map, e))?;
+    if l.x != Affine::rational(Rational::from(-1)) {
+        return src.invalid(map.span(), "claims.map", expected);
+    }
+    let index = need(src, c, &c.index, "index")?;
+    let compact: String = index
+        .get_ref()
+        .chars()
+        .filter(|ch| !ch.is_whitespace())
+        .collect();
+    let offset = compact
+        .strip_suffix("-i")
+        .and_then(|a| a.parse::<i64>().ok())
+        .ok_or_else(|| SpecError::Invalid {
+            at: src.at(index.span().start),
+            field: "claims.index".into(),
+            message: format!("`{}`: expected `N - i` with an integer N", index.get_ref()),
+        })?;
+    let mut at = Vec::new();
+    for p in &spec.params {
+        let value = match c.at.as_ref().and_then(|m| m.get(&p.name)) {
+            Some(v) => parse_exact(v.get_ref()).map_err(|e| SpecError::Invalid {
+                at: src.at(v.span().start),
+                field: "claims.at".into(),
+                message: e.to_string(),
+            })?,
+            None => p.range.interior_point(),
+        };
+        at.push(value);
+    }
+    let mut params: Vec<Sym> = spec.params.iter().map(|p| Sym::var(&p.name)).collect();
+    let mut shown = Vec::new();
+    if let Some(map) = &c.params {
+        for (name, value) in map {
+            let Some(i) = spec.params.iter().position(|p| &p.name == name) else {
+                return src.invalid(
+                    value.span(),
+                    "claims.params",
+                    format!("`{name}`: not a parameter of the basis"),
+                );
+            };
+            params[i] = formula_in(src, spec, value, "", value.get_ref(), &[])?;
+            shown.push(format!("{name} ↦ {}", value.get_ref().trim()));
+        }
+    }
+    Ok(Check::Symmetry {
+        map_text: map.get_ref().trim().to_string(),
+        map: l.rest,
+        index_text: index.get_ref().trim().to_string(),
+        offset,
+        at,
+        params,
+        params_text: shown.join(", "),
+    })
+}
+
+fn join(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check> {
+    let kind_field = need(src, c, &c.join, "join")?;
+    let kind: JoinKind = kind_field
+        .get_ref()
+        .trim()
+        .parse()
+        .map_err(|_| SpecError::Invalid {
+            at: src.at(kind_field.span().start),
+            field: "claims.join".into(),
+            message: format!(
+                "`{}`: expected C0, C1, C2, C3, G1 or G2",
+                kind_field.get_ref().trim()
+            ),
+        })?;
+    let different = c.different.unwrap_or(false);
+    let n = spec.functions.len();
+    let factors = spec.join_factors();
+    let mut extra = spec.control_points();
+    extra.extend(factors.iter().cloned());
+    if different {
+        for k in [1, 2] {
+            extra.extend(spec.segment_params(k).iter().map(ToString::to_string));
+        }
+    }
+    let conditions = need(src, c, &c.conditions, "conditions")?
+        .iter()
+        .map(|item| {
+            let text = item.get_ref();
+            let Some((lhs, rhs)) = text.split_once('=') else {
+                return src.invalid(item.span(), "claims.conditions", format!("`{text}`: expected `Qk = formula in P0…P{}, Q0…`", n - 1));
+            };
+            let point = lhs.trim().strip_prefix('Q').and_then(|k| k.parse::<usize>().ok()).filter(|k| *k < n);
+            let Some(point) = point else {
+                return src.invalid(item.span(), "claims.conditions", format!("`{}`: expected a control point Q0…Q{} of the second segment on the left", lhs.trim(), n - 1));
+            };
+            let value = formula_in(src, spec, item, &format!("{lhs}="), rhs, &extra)?;
+            if different {
+                if let Some(p) = spec.params.iter().find(|p| value.variables().contains(&p.name)) {
+                    return src.invalid(item.span(), "claims.conditions", format!("`{text}`: with different parameters write {0}1 (first segment) or {0}2 (second), not {0}", p.name));
+                }
+            }
+            Ok(Condition { point, text: text.trim().to_string(), value })
+        })
+        .collect::<Result<Vec<_>>>()?;
+    Ok(Check::Join {
+        kind,
+        wrt: wrt_field(src, spec, c.wrt.as_ref())?,
+        different,
+        factors,
+        conditions,
+    })
+}
+
+fn end_field(src: &Source<'_>, end: &Spanned<String>) -> Result<End> {
+    match end.get_ref().trim() {
+        "start" | "0" => Ok(End::Start),
+        "end" | "1" => Ok(End::End),
+        other => src.invalid(
+            end.span(),
+            "claims.end",
+            format!("`{other}`: expected `start` or `end`"),
+        ),
+    }
+}
+
+/// `wrt`: `angle` (the angle of the atoms), `u` (the unit parameter,
+/// `θ = πu/2` for the thesis), or the variable's own name.
+fn wrt_field(src: &Source<'_>, spec: &Spec, wrt: Option<&Spanned<String>>) -> Result<Wrt> {
+    let default = if spec.legacy.is_some() {
+        Wrt::Angle
+    } else {
+        Wrt::Variable
+    };
+    let Some(w) = wrt else { return Ok(default) };
+    let text = w.get_ref().trim();
+    let angle_is_variable = spec
+        .legacy
+        .is_some_and(|v| v != trig_core::Variable::UnitAngle);
+    match text {
+        "angle" | "theta" | "θ" if spec.domain.is_trigonometric() || spec.legacy.is_some() => {
+            Ok(Wrt::Angle)
+        }
+        "u" if spec.legacy == Some(trig_core::Variable::UnitAngle) => Ok(Wrt::U),
+        t if t == spec.var_name && angle_is_variable => Ok(Wrt::Angle),
+        t if t == spec.var_name => Ok(Wrt::Variable),
+        "u" if spec.legacy.is_none() => Ok(Wrt::U),
+        other => src.invalid(
+            w.span(),
+            "claims.wrt",
+            format!(
+                "`{other}`: expected `angle`, `u` (the unit parameter) or the basis variable `{}`",
+                spec.var_name
+            ),
+        ),
+    }
+}

@@ -1,0 +1,203 @@
+//! Inequalities of a spec basis — nonnegativity, maximal ranges and
+//! regions, monotonicity, the convex hull — decided by the one
+//! certification engine on the standard pieces of the domain
+//! ([`trig_certify::standardize`]).
+
+use trig_certify::standardize;
+use trig_spec::{Monotone, Spec, SpecRange};
+use trig_symbolic::Sym;
+
+use super::{not_certifiable, point_box, unity};
+use crate::certify::evidence::{
+    CERTIFIED, Published, maximal_against, monotone_named, nonnegative_named,
+};
+use crate::region_audit::{self, Axis};
+use crate::verdict::{Status, Verdict};
+
+/// The functions on the standard domain: `(trigonometric, functions,
+/// names)`, every function split into its pieces (named `b0 on θ ∈ …` when
+/// there are several), or why the basis is not standard.
+pub fn pieces(spec: &Spec) -> Result<(bool, Vec<Sym>, Vec<String>), String> {
+    let mut trig = None;
+    let (mut fs, mut names) = (Vec::new(), Vec::new());
+    for f in &spec.functions {
+        let st = standardize(&f.value, &spec.domain).map_err(|why| format!("{}: {why}", f.name))?;
+        if trig.is_some_and(|t| t != st.trigonometric) {
+            return Err("the functions mix sin/cos and the variable".into());
+        }
+        trig = Some(st.trigonometric);
+        for (piece, label) in st.pieces.into_iter().zip(st.labels) {
+            fs.push(piece);
+            names.push(if label.is_empty() {
+                f.name.clone()
+            } else {
+                format!("{} on {label}", f.name)
+            });
+        }
+    }
+    Ok((trig.unwrap_or(false), fs, names))
+}
+
+/// Every function `≥ 0` for the parameters in `bx` (one parameter) or at
+/// none.
+fn nonnegative_on(spec: &Spec, param: Option<&str>, bx: &trig_certify::ParamBox) -> Verdict {
+    match pieces(spec) {
+        Ok((trig, fs, names)) => nonnegative_named(trig, &fs, &names, param, bx),
+        Err(why) => not_certifiable(&why),
+    }
+}
+
+/// Several parameters: the box of declared ranges against the region —
+/// containment, and when `maximal`, equality (two parameters).
+fn several(spec: &Spec, maximal: bool) -> Verdict {
+    let (trig, fs, names) = match pieces(spec) {
+        Ok(p) => p,
+        Err(why) => return not_certifiable(&why),
+    };
+    let names: Vec<&str> = names.iter().map(String::as_str).collect();
+    let axes: Vec<Axis<'_>> = spec
+        .params
+        .iter()
+        .map(|p| Axis {
+            name: &p.name,
+            symbol: &p.symbol,
+            set: p.range.to_box(),
+            source: &p.source,
+        })
+        .collect();
+    match <[Axis<'_>; 2]>::try_from(axes) {
+        Ok(two) if maximal => region_audit::maximal(&fs, &names, trig, two),
+        Ok(two) => region_audit::contained(&fs, &names, trig, &two),
+        Err(axes) => {
+            let mut v = region_audit::contained(&fs, &names, trig, &axes);
+            if maximal && v.status == Status::Holds {
+                v.status = Status::NotCheckable;
+                v.evidence.push(
+                    "maximality is decided for two parameters at most: containment only".into(),
+                );
+            }
+            v
+        }
+    }
+}
+
+/// The whole battery entry for nonnegativity.
+pub fn nonnegativity(spec: &Spec) -> Verdict {
+    match spec.params.len() {
+        0 => nonnegative_on(spec, None, &point_box()),
+        1 => maximal_versus_published(spec, None),
+        _ => several(spec, true),
+    }
+}
+
+/// A printed nonnegativity claim.
+pub fn nonnegative_claim(spec: &Spec, range: Option<&SpecRange>, maximal: bool) -> Verdict {
+    match (spec.params.len(), maximal) {
+        (1, true) => maximal_versus_published(spec, range),
+        (1, false) => {
+            let r = range
+                .cloned()
+                .unwrap_or_else(|| spec.params[0].range.clone());
+            nonnegative_on(spec, Some(&spec.params[0].name), &r.to_box())
+        }
+        (0, _) => nonnegative_on(spec, None, &point_box()),
+        _ => several(spec, maximal),
+    }
+}
+
+/// The convex-hull property: unity and nonnegativity on the range.
+pub fn convex_hull(spec: &Spec, range: Option<&SpecRange>) -> Verdict {
+    let mut v = Verdict::all(
+        CERTIFIED,
+        vec![
+            ("partition of unity".into(), unity(spec)),
+            (
+                "nonnegativity".into(),
+                nonnegative_claim(spec, range, false),
+            ),
+        ],
+    );
+    v.evidence.insert(
+        0,
+        "a curve Σ b_i P_i lies in the convex hull of its control points when the b_i sum to 1 and are ≥ 0 (both decided below)".into(),
+    );
+    v
+}
+
+/// The maximal nonnegativity interval of a one-parameter basis against the
+/// published (declared, or the claim's) range.
+fn maximal_versus_published(spec: &Spec, claimed: Option<&SpecRange>) -> Verdict {
+    let (trig, fs, names) = match pieces(spec) {
+        Ok(p) => p,
+        Err(why) => return not_certifiable(&why),
+    };
+    let p = &spec.params[0];
+    let published = claimed.unwrap_or(&p.range);
+    let source = if claimed.is_some() {
+        "as claimed".to_string()
+    } else {
+        p.source.clone()
+    };
+    let cited = Published {
+        name: &p.name,
+        symbol: &p.symbol,
+        range: published.to_string(),
+        set: published.to_box(),
+        source: &source,
+    };
+    maximal_against(&fs, &names, trig, &cited).1
+}
+
+/// Printed monotonicity: the certified sign of the derivative on every
+/// piece (a continuous function monotone on each closed piece is monotone
+/// on their union; the pieces keep the direction of the variable).
+pub fn monotone_claim(spec: &Spec, items: &[Monotone], range: Option<&SpecRange>) -> Verdict {
+    let r = range
+        .cloned()
+        .or_else(|| spec.params.first().map(|p| p.range.clone()));
+    let (param, bx) = match (spec.params.as_slice(), &r) {
+        ([], _) => (None, point_box()),
+        ([p], Some(r)) => (Some(p.name.as_str()), r.to_box()),
+        _ => {
+            return Verdict::not_checkable(
+                "monotonicity is certified for bases with at most one parameter",
+            );
+        }
+    };
+    let single = |m: &Monotone| -> Verdict {
+        let f = &spec.functions[m.function];
+        let st = match standardize(&f.value, &spec.domain) {
+            Ok(st) => st,
+            Err(why) => return not_certifiable(&why),
+        };
+        let parts: Vec<(String, Verdict)> = st
+            .pieces
+            .iter()
+            .zip(&st.labels)
+            .map(|(piece, label)| {
+                let name = if label.is_empty() {
+                    f.name.clone()
+                } else {
+                    format!("{} on {label}", f.name)
+                };
+                let v = monotone_named(piece, &name, st.trigonometric, m.increasing, param, &bx);
+                (name, v)
+            })
+            .collect();
+        match <[(String, Verdict); 1]>::try_from(parts) {
+            Ok([(_, v)]) => v,
+            Err(parts) => Verdict::all(CERTIFIED, parts),
+        }
+    };
+    if let [m] = items {
+        single(m)
+    } else {
+        Verdict::all(
+            CERTIFIED,
+            items
+                .iter()
+                .map(|m| (spec.functions[m.function].name.clone(), single(m)))
+                .collect(),
+        )
+    }
+}
