@@ -24,10 +24,9 @@ pub enum CoreError {
     /// A value that could not be parsed.
     #[error("cannot read `{input}` as {expected}")]
     Malformed { input: String, expected: String },
-    /// A parameter outside its published range.
-    #[error(
-        "{name} = {value} is outside the published range {range} of `{family}` (pass --allow-outside-range to evaluate anyway)"
-    )]
+    /// A parameter outside its published range. (Commands that take
+    /// `--allow-outside-range` add that hint.)
+    #[error("{name} = {value} is outside the published range {range} of `{family}`")]
     OutOfRange {
         family: String,
         name: String,
@@ -56,6 +55,25 @@ pub enum CoreError {
         expected: usize,
         got: usize,
     },
+    /// A divisor that contains zero in its enclosure at the highest
+    /// precision tried: neither proved zero nor proved nonzero.
+    #[error("{quantity}: a denominator cannot be certified nonzero (tried up to {bits} bits)")]
+    NotCertifiedNonzero { quantity: String, bits: u32 },
+    /// A finite exact value beyond the range of the arithmetic (f64, or
+    /// MPFR's exponent range).
+    #[error("{quantity} overflows the range of the arithmetic")]
+    Overflow { quantity: String },
+    /// A comparison that enclosures could not decide at the highest precision.
+    #[error("cannot decide {what} (tried up to {bits} bits)")]
+    Undecidable { what: String, bits: u32 },
+    /// An exact input that f64 cannot hold.
+    #[error("{what} {kind} f64")]
+    NotRepresentable { what: String, kind: String },
+    /// A request beyond a documented limit of the cost model.
+    #[error(
+        "{what}: at most {limit} (a limit of trig-audit, to keep every request bounded in time)"
+    )]
+    Limit { what: String, limit: String },
     /// A weight that is not positive.
     #[error("weight w{index} = {value} is not positive")]
     NonPositiveWeight { index: usize, value: String },

@@ -393,7 +393,7 @@ impl Family {
                     return Err(CoreError::OutOfRange {
                         family: info.id.into(),
                         name: spec.name.into(),
-                        value: text.clone(),
+                        value: crate::echo::echo(text),
                         range: spec.range.to_string(),
                     });
                 }
@@ -421,9 +421,13 @@ impl Family {
                 .map(|(s, v)| format!("{}={v}", s.name))
                 .collect::<Vec<_>>()
                 .join(", ");
-            return Err(CoreError::DivisionByZero {
-                quantity: format!("`{}` at {at}", info.id),
-            });
+            let quantity = format!("`{}` at {at}", info.id);
+            return Err(crate::certified::nonfinite_error(
+                self,
+                x.to_f64(),
+                p,
+                quantity,
+            ));
         }
         Ok(values)
     }

@@ -20,12 +20,16 @@
 
 pub mod angles;
 pub mod basis;
+pub mod certified;
 pub mod curve;
+pub mod decimal;
+pub mod echo;
 pub mod domain;
 pub mod error;
 pub mod families;
 pub mod family;
 mod float;
+pub mod interval;
 pub mod knots;
 pub mod mpfr;
 pub mod param;
@@ -36,8 +40,11 @@ pub mod variable;
 
 pub use basis::Basis;
 pub use domain::{Affine, Domain};
+pub use decimal::Decimal;
+pub use echo::echo;
 pub use error::{CoreError, Result};
 pub use family::{Family, FamilyInfo, SEED000_NONUNIFORM, catalog};
+pub use interval::{Fault, Interval};
 pub use mpfr::Mpfr;
 pub use param::{Bound, ParamSpec, Range, parse_exact};
 pub use scalar::{Real, Ring, RingOps};

@@ -5,6 +5,7 @@ use std::fmt;
 use rug::Rational;
 use rug::ops::Pow;
 
+use crate::echo::echo;
 use crate::error::{CoreError, Result};
 
 /// One end of a parameter range.
@@ -99,18 +100,29 @@ pub struct ParamSpec {
     pub range_source: &'static str,
 }
 
+/// Longest number accepted, in characters (the cost model: exact inputs stay
+/// small enough for every later step).
+pub const MAX_NUMBER_LEN: usize = 10_000;
+
 /// Reads a number exactly: an integer, a decimal (`0.6` is `3/5`), a
-/// fraction (`-1/2`), or a decimal with exponent (`1e-3`).
+/// fraction (`-1/2`), or a decimal with exponent (`1e-3`, `|exponent| ≤
+/// 10,000`), at most [`MAX_NUMBER_LEN`] characters.
 pub fn parse_exact(input: &str) -> Result<Rational> {
+    if input.len() > MAX_NUMBER_LEN {
+        return Err(CoreError::Limit {
+            what: format!("number `{}`", echo(input)),
+            limit: format!("{MAX_NUMBER_LEN} characters"),
+        });
+    }
     let malformed = || CoreError::Malformed {
-        input: input.to_string(),
+        input: echo(input),
         expected: "a number (integer, decimal such as 0.6, or fraction such as 1/2)".into(),
     };
     let text = input.trim();
     let lower = text.to_ascii_lowercase();
     if lower.contains("nan") || lower.contains("inf") {
         return Err(CoreError::NotFinite {
-            what: format!("`{input}`"),
+            what: format!("`{}`", echo(input)),
         });
     }
     if let Some((num, den)) = text.split_once('/') {
@@ -118,7 +130,7 @@ pub fn parse_exact(input: &str) -> Result<Rational> {
         let den: Rational = parse_decimal(den.trim()).ok_or_else(malformed)?;
         if den == 0 {
             return Err(CoreError::DivisionByZero {
-                quantity: format!("`{input}`"),
+                quantity: format!("`{}`", echo(input)),
             });
         }
         return Ok(num / den);

@@ -1,0 +1,348 @@
+//! Certified evaluation: enclosures of exact values from exact inputs, the
+//! precision raised until the requested digits are proved, domain checks on
+//! the exact input, and certified error bounds of f64 results.
+//!
+//! Every function here takes its inputs as exact rationals (the command
+//! line reads numbers exactly) and evaluates the one generic formula of a
+//! [`Basis`] on [`Interval`]s, so what it prints is proved about the exact
+//! value the user asked for — not about a rounded input or a rounded
+//! computation. Work is bounded: precisions double from the one the digits
+//! need up to [`MAX_BITS`]; what is not proved by then is reported as such
+//! (fewer digits, or an error naming the limit), never guessed.
+
+use rug::Rational;
+
+use crate::basis::Basis;
+use crate::decimal::{Decimal, bound_text};
+use crate::error::{CoreError, Result};
+use crate::interval::{Fault, Interval};
+use crate::param::parse_exact;
+use crate::scalar::{Real, Ring};
+use crate::variable::Variable;
+
+/// The highest working precision, in bits (about 19,700 decimal digits).
+pub const MAX_BITS: u32 = 1 << 16;
+
+/// The most significant digits a request may ask for.
+pub const MAX_DIGITS: usize = 10_000;
+
+/// The smallest working precision.
+const MIN_BITS: u32 = 64;
+
+/// Digits certified for f64 cross-checks: more than f64 carries, so the
+/// enclosure's own width is negligible in the stated bound.
+pub const F64_CHECK_DIGITS: usize = 20;
+
+/// The f64 result is shown (with its bound) when its certified error is at
+/// most this fraction of the largest value of its set; otherwise the
+/// certified value replaces it.
+const F64_TOLERANCE: f64 = 1e-8;
+
+/// Enclosures proved at some working precision.
+#[derive(Debug, Clone)]
+pub struct Enclosures {
+    pub values: Vec<Interval>,
+    /// Working precision of the last evaluation, in bits.
+    pub bits: u32,
+}
+
+impl Enclosures {
+    /// The fewest proved significant digits over the values that are not
+    /// enclosures of zero (`usize::MAX` when all are exact).
+    pub fn digits(&self, max: usize) -> usize {
+        self.values
+            .iter()
+            .map(|v| v.decimal(max))
+            .filter(|d| !matches!(d, Decimal::Small { .. }))
+            .map(|d| d.digits())
+            .min()
+            .unwrap_or(usize::MAX)
+    }
+}
+
+/// Checks a set of enclosures: a divisor proved zero, one not proved
+/// nonzero, or an end beyond MPFR's exponent range are errors naming
+/// `what`.
+pub fn check(values: &[Interval], what: &str, bits: u32) -> Result<()> {
+    match values.iter().filter_map(Interval::fault).max() {
+        Some(Fault::DivisionByZero) => Err(CoreError::DivisionByZero {
+            quantity: what.to_string(),
+        }),
+        Some(Fault::ZeroNotExcluded) => Err(CoreError::NotCertifiedNonzero {
+            quantity: what.to_string(),
+            bits,
+        }),
+        None if values.iter().any(|v| !v.is_finite()) => Err(CoreError::Overflow {
+            quantity: what.to_string(),
+        }),
+        None => Ok(()),
+    }
+}
+
+/// Evaluates `f` once at `bits` and checks the result.
+pub fn at_bits(
+    bits: u32,
+    what: &str,
+    f: &mut impl FnMut(u32) -> Vec<Interval>,
+) -> Result<Enclosures> {
+    let values = f(bits);
+    check(&values, what, bits)?;
+    Ok(Enclosures { values, bits })
+}
+
+/// True when every value has `digits` proved significant digits, or is an
+/// enclosure of zero narrower than `10^−digits` times the largest value
+/// (at least 1).
+fn resolved(values: &[Interval], digits: usize) -> bool {
+    let scale = values
+        .iter()
+        .filter(|v| !v.contains_zero())
+        .map(|v| v.mag().to_f64())
+        .fold(1.0_f64, f64::max);
+    let tiny = scale * 10f64.powi(-(digits.min(300) as i32));
+    values.iter().all(|v| match v.decimal(digits) {
+        Decimal::Small { .. } => v.mag().to_f64() <= tiny,
+        d => d.digits() >= digits,
+    })
+}
+
+/// Evaluates `f` at increasing precision — from the precision `digits`
+/// needs, doubling, up to [`MAX_BITS`] — until every value is
+/// [`resolved`]. Returns the last enclosures (possibly with fewer digits
+/// than asked: [`Enclosures::digits`] says how many are proved). A divisor
+/// not proved nonzero is retried at higher precision and is an error at
+/// [`MAX_BITS`].
+pub fn to_digits(
+    digits: usize,
+    what: &str,
+    mut f: impl FnMut(u32) -> Vec<Interval>,
+) -> Result<Enclosures> {
+    let need = (digits as f64 * std::f64::consts::LOG2_10).ceil() as u32 + 32;
+    let mut bits = need.clamp(MIN_BITS, MAX_BITS);
+    loop {
+        match at_bits(bits, what, &mut f) {
+            Ok(e) if bits >= MAX_BITS || resolved(&e.values, digits) => return Ok(e),
+            Err(CoreError::NotCertifiedNonzero { .. }) if bits < MAX_BITS => {}
+            Err(e) => return Err(e),
+            Ok(_) => {}
+        }
+        bits = bits.saturating_mul(2).min(MAX_BITS);
+    }
+}
+
+/// The functions of `basis` at the exact point `x` with exact parameters,
+/// enclosed at `bits`.
+pub fn enclose_basis<B: Basis + ?Sized>(
+    basis: &B,
+    x: &Rational,
+    params: &[Rational],
+    bits: u32,
+) -> Vec<Interval> {
+    let xi = Interval::from_rational(bits, x);
+    let p: Vec<Interval> = params.iter().map(|q| xi.rational(q)).collect();
+    basis.eval(&basis.variable().atoms(&xi), &p)
+}
+
+/// Whether the exact point `x` lies in the domain of `variable` (compared
+/// with `π/2` by enclosures of increasing precision).
+pub fn domain_contains(variable: Variable, x: &Rational) -> Result<bool> {
+    if *x < 0 {
+        return Ok(false);
+    }
+    let mut bits = MIN_BITS;
+    loop {
+        let xi = Interval::from_rational(bits, x);
+        let end = variable.end(&xi);
+        if xi <= end {
+            return Ok(true);
+        }
+        if xi > end {
+            return Ok(false);
+        }
+        if bits >= MAX_BITS {
+            return Err(CoreError::Undecidable {
+                what: format!("whether the point is in the domain {}", variable.domain()),
+                bits,
+            });
+        }
+        bits = bits.saturating_mul(2).min(MAX_BITS);
+    }
+}
+
+/// Checks the exact point `x` (as typed: `input`) against the domain of
+/// `variable`.
+pub fn check_domain(variable: Variable, x: &Rational, input: &str) -> Result<()> {
+    if domain_contains(variable, x)? {
+        Ok(())
+    } else {
+        Err(CoreError::PointOutsideDomain {
+            value: crate::echo::echo(input),
+            domain: variable.domain().into(),
+        })
+    }
+}
+
+/// The exact rational `q` as an f64, an error naming `what` when it
+/// overflows or underflows (a nonzero value that rounds to zero or to a
+/// subnormal number).
+pub fn to_f64(q: &Rational, what: &str) -> Result<f64> {
+    let x = q.to_f64();
+    if x.is_finite() && (x.is_normal() || *q == 0) {
+        Ok(x)
+    } else {
+        Err(CoreError::NotRepresentable {
+            what: what.to_string(),
+            kind: if x.is_finite() {
+                "underflows"
+            } else {
+                "overflows"
+            }
+            .into(),
+        })
+    }
+}
+
+/// An f64 result checked against an enclosure of the exact value.
+#[derive(Debug, Clone, PartialEq)]
+pub enum CheckedF64 {
+    /// The f64 result as printed, and a proved bound of its distance from
+    /// the exact value.
+    Accurate { text: String, bound: String },
+    /// The f64 result is not finite or too far off: the certified value
+    /// (and how far off f64 was, when finite).
+    Replaced {
+        decimal: Decimal,
+        f64_error: Option<String>,
+    },
+}
+
+impl CheckedF64 {
+    /// The text to print for the value.
+    pub fn value_text(&self) -> String {
+        match self {
+            CheckedF64::Accurate { text, .. } => text.clone(),
+            CheckedF64::Replaced { decimal, .. } => decimal.to_string(),
+        }
+    }
+}
+
+/// Checks f64 results against enclosures of their exact values (one set:
+/// the tolerance is relative to the set's largest value). The bound is
+/// between the printed decimal and the exact value.
+pub fn check_f64(values: &[f64], exact: &[Interval]) -> Vec<CheckedF64> {
+    let scale = exact
+        .iter()
+        .map(|v| v.mag().to_f64())
+        .fold(0.0_f64, f64::max);
+    values
+        .iter()
+        .zip(exact)
+        .map(|(&v, e)| {
+            let text = v.to_string();
+            let bound = v
+                .is_finite()
+                .then(|| parse_exact(&text).ok())
+                .flatten()
+                .and_then(|d| e.distance_bound(&d));
+            match bound {
+                Some(b) if b.to_f64() <= F64_TOLERANCE * scale => CheckedF64::Accurate {
+                    text,
+                    bound: bound_text(&b),
+                },
+                b => CheckedF64::Replaced {
+                    decimal: e.decimal(17),
+                    f64_error: b.map(|b| bound_text(&b)),
+                },
+            }
+        })
+        .collect()
+}
+
+/// The error for non-finite f64 values of `basis` at `x`: an overflow
+/// when the exact values are finite but beyond the range of f64, otherwise
+/// a division by zero in `quantity`.
+pub fn nonfinite_error<B: Basis + ?Sized>(
+    basis: &B,
+    x: f64,
+    params: &[Rational],
+    quantity: String,
+) -> CoreError {
+    let exact = Rational::from_f64(x).filter(|_| params.len() == basis.param_names().len());
+    if let Some(x) = exact {
+        let values = enclose_basis(basis, &x, params, 128);
+        if check(&values, &quantity, 128).is_ok()
+            && values.iter().any(|v| v.mag().to_f64() > f64::MAX)
+        {
+            return CoreError::Overflow { quantity };
+        }
+    }
+    CoreError::DivisionByZero { quantity }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::family::Family;
+
+    fn q(n: i64, d: i64) -> Rational {
+        Rational::from((n, d))
+    }
+
+    #[test]
+    fn domain_checks_use_the_exact_point() {
+        let just_above = parse_exact("1.00000000000000000000000001").unwrap();
+        assert!(!domain_contains(Variable::UnitAngle, &just_above).unwrap());
+        assert!(domain_contains(Variable::UnitAngle, &q(1, 1)).unwrap());
+        // 1.5707963267948966 < π/2 < 1.5707963267948967
+        let below = parse_exact("1.5707963267948966").unwrap();
+        let above = parse_exact("1.5707963267948967").unwrap();
+        assert!(domain_contains(Variable::Angle, &below).unwrap());
+        assert!(!domain_contains(Variable::Angle, &above).unwrap());
+        assert!(!domain_contains(Variable::Polynomial, &q(-1, 10)).unwrap());
+    }
+
+    #[test]
+    fn digits_are_raised_until_proved() {
+        let e = to_digits(50, "b", |bits| {
+            enclose_basis(&Family::ThesisCubic, &q(1, 4), &[q(3, 5)], bits)
+        })
+        .unwrap();
+        assert!(e.digits(50) >= 50, "{}", e.digits(50));
+        // b3(1/4; 3/5): digits from `bc -l` at scale 60
+        let b3 = e.values[3].decimal(50).to_string();
+        assert_eq!(b3, "2.5823702910142048907010730505698383907471382003678e-3");
+    }
+
+    #[test]
+    fn a_proved_zero_divisor_is_a_division_by_zero() {
+        // thesis-quadratic with β = −1 divides by β + 1 = 0
+        let r = to_digits(10, "H", |bits| {
+            enclose_basis(&Family::ThesisQuadratic, &q(1, 2), &[q(-1, 1)], bits)
+        });
+        assert!(matches!(r, Err(CoreError::DivisionByZero { .. })), "{r:?}");
+    }
+
+    #[test]
+    fn f64_results_carry_bounds_or_are_replaced() {
+        let exact = [
+            Interval::from_rational(128, &q(1, 3)),
+            Interval::from_rational(128, &q(2, 3)),
+        ];
+        let checked = check_f64(&[1.0 / 3.0, 0.5], &exact);
+        let CheckedF64::Accurate { bound, .. } = &checked[0] else {
+            panic!("{checked:?}")
+        };
+        // 0.3333333333333333 is 1/3 − 3.3…e-17
+        assert_eq!(bound, "3.4e-17");
+        assert!(matches!(&checked[1], CheckedF64::Replaced { .. }));
+        assert_eq!(checked[1].value_text(), "6.6666666666666667e-1");
+    }
+
+    #[test]
+    fn f64_conversion_refuses_overflow_and_underflow() {
+        assert!(to_f64(&parse_exact("1e400").unwrap(), "m").is_err());
+        assert!(to_f64(&parse_exact("1e-400").unwrap(), "h").is_err());
+        assert_eq!(to_f64(&q(1, 4), "h").unwrap(), 0.25);
+        assert_eq!(to_f64(&q(0, 1), "h").unwrap(), 0.0);
+    }
+}
