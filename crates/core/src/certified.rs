@@ -140,7 +140,7 @@ pub fn enclose_basis<B: Basis + ?Sized>(
 ) -> Vec<Interval> {
     let xi = Interval::from_rational(bits, x);
     let p: Vec<Interval> = params.iter().map(|q| xi.rational(q)).collect();
-    basis.eval(&basis.variable().atoms(&xi), &p)
+    basis.eval(&basis.domain().atoms(&xi), &p)
 }
 
 /// Whether the exact point `x` lies in the domain of `variable` (compared

@@ -378,6 +378,29 @@ impl Ring for Interval {
         self.fault.is_none() && self.lo.is_zero() && self.hi.is_zero()
     }
 
+    fn try_sin_cos(&self) -> Option<(Self, Self)> {
+        Some(Real::sin_cos(self))
+    }
+
+    fn try_exp(&self) -> Option<Self> {
+        Some(Real::exp(self))
+    }
+
+    /// `[√lo↓, √hi↑]` for `lo ≥ 0`.
+    fn try_sqrt(&self) -> Option<Self> {
+        if self.fault.is_some() || self.lo < 0 {
+            return None;
+        }
+        let prec = self.prec();
+        Some(Interval {
+            lo: Float::with_val_round(prec, self.lo.sqrt_ref(), Round::Down).0,
+            hi: directed(prec, Round::Up, |r| {
+                Float::with_val_round(prec, self.hi.sqrt_ref(), r).0
+            }),
+            fault: None,
+        })
+    }
+
     /// `x²` without the dependency of `x·x`: `[0, max(lo², hi²)]` when the
     /// interval contains zero.
     fn square(&self) -> Self {
@@ -439,6 +462,24 @@ impl Real for Interval {
             Float::with_val_round(prec, m.cos_ref(), Round::Up).0,
         );
         (s, c)
+    }
+
+    /// `exp` is increasing: `[exp(lo)↓, exp(hi)↑]` (an overflowed upper
+    /// end is `+∞`, so [`Real::is_finite`] reports it).
+    fn exp(&self) -> Self {
+        if self.fault.is_some() {
+            return self.clone();
+        }
+        let prec = self.prec();
+        Interval {
+            lo: directed(prec, Round::Down, |r| {
+                Float::with_val_round(prec, self.lo.exp_ref(), r).0
+            }),
+            hi: directed(prec, Round::Up, |r| {
+                Float::with_val_round(prec, self.hi.exp_ref(), r).0
+            }),
+            fault: None,
+        }
     }
 
     /// The midpoint, rounded to f64 (for display and cross-checks only).

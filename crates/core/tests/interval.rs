@@ -145,3 +145,17 @@ fn catastrophic_cancellation_is_caught_and_overcome() {
     };
     assert_eq!(text, "1.340780792994259709957402499820584612748e154");
 }
+
+#[test]
+fn exp_and_sqrt_enclose_the_exact_values() {
+    use trig_core::{Interval, Real, Ring};
+    let x = Interval::from_rational(64, &rug::Rational::from((1, 3)));
+    let e = x.exp();
+    let exact = rug::Float::with_val(256, rug::Float::with_val(256, 1) / 3u32).exp();
+    assert!(*e.lo() <= exact && exact <= *e.hi());
+    let two = x.int(2);
+    let r = two.try_sqrt().unwrap();
+    let s2 = rug::Float::with_val(256, 2).sqrt();
+    assert!(*r.lo() <= s2 && s2 <= *r.hi());
+    assert!(x.int(-1).try_sqrt().is_none());
+}
