@@ -18,8 +18,10 @@
 //! witness is an exact point, re-evaluated before it is returned.
 
 pub mod algebraic;
+pub mod atoms;
 pub mod bernstein;
 pub mod boundary;
+pub mod branch;
 pub mod domain;
 pub mod nonneg;
 pub mod range;

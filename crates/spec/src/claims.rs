@@ -34,6 +34,9 @@ pub struct Condition {
     pub point: usize,
     pub text: String,
     pub value: Sym,
+    /// Divisions of the printed formula not proved nonzero over the ranges
+    /// (why, with the witness): the formula is singular there.
+    pub singular: Vec<String>,
 }
 
 /// What a claim of the file asserts, in a form the audit can decide.
@@ -433,9 +436,13 @@ fn join(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check> {
     let factors = spec.join_factors();
     let mut extra = spec.control_points();
     extra.extend(factors.iter().cloned());
+    let mut segment_ranges = Vec::new();
     if different {
         for k in [1, 2] {
-            extra.extend(spec.segment_params(k).iter().map(ToString::to_string));
+            for (p, s) in spec.params.iter().zip(spec.segment_params(k)) {
+                extra.push(s.to_string());
+                segment_ranges.push((s.to_string(), p.range.clone()));
+            }
         }
     }
     let conditions = need(src, c, &c.conditions, "conditions")?
@@ -449,13 +456,18 @@ fn join(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check> {
             let Some(point) = point else {
                 return src.invalid(item.span(), "claims.conditions", format!("`{}`: expected a control point Q0…Q{} of the second segment on the left", lhs.trim(), n - 1));
             };
-            let value = formula_in(src, spec, item, &format!("{lhs}="), rhs, &extra)?;
+            let (value, singular) = spec
+                .parse_claim_formula(rhs, &extra, &segment_ranges)
+                .map_err(|mut e| {
+                    e.position += lhs.chars().count() + 1;
+                    src.formula_error(item, e)
+                })?;
             if different {
                 if let Some(p) = spec.params.iter().find(|p| value.variables().contains(&p.name)) {
                     return src.invalid(item.span(), "claims.conditions", format!("`{text}`: with different parameters write {0}1 (first segment) or {0}2 (second), not {0}", p.name));
                 }
             }
-            Ok(Condition { point, text: text.trim().to_string(), value })
+            Ok(Condition { point, text: text.trim().to_string(), value, singular })
         })
         .collect::<Result<Vec<_>>>()?;
     Ok(Check::Join {
@@ -479,34 +491,46 @@ fn end_field(src: &Source<'_>, end: &Spanned<String>) -> Result<End> {
     }
 }
 
-/// `wrt`: `angle` (the angle of the atoms), `u` (the unit parameter,
-/// `θ = πu/2` for the thesis), or the variable's own name.
+/// `wrt`: `angle` (the declared angle of the legacy variables, the angle
+/// of the atoms otherwise), `u` (the unit parameter, `θ = πu/2` for the
+/// thesis), or the variable's own name.
 fn wrt_field(src: &Source<'_>, spec: &Spec, wrt: Option<&Spanned<String>>) -> Result<Wrt> {
-    let default = if spec.legacy.is_some() {
-        Wrt::Angle
-    } else {
-        Wrt::Variable
-    };
-    let Some(w) = wrt else { return Ok(default) };
-    let text = w.get_ref().trim();
+    let text = wrt.map_or("angle", |w| w.get_ref().trim());
+    let span = wrt.map_or(0..0, |w| w.span());
     let angle_is_variable = spec
         .legacy
         .is_some_and(|v| v != trig_core::Variable::UnitAngle);
-    match text {
-        "angle" | "theta" | "θ" if spec.domain.is_trigonometric() || spec.legacy.is_some() => {
-            Ok(Wrt::Angle)
-        }
-        "u" if spec.legacy == Some(trig_core::Variable::UnitAngle) => Ok(Wrt::U),
-        t if t == spec.var_name && angle_is_variable => Ok(Wrt::Angle),
-        t if t == spec.var_name => Ok(Wrt::Variable),
-        "u" if spec.legacy.is_none() => Ok(Wrt::U),
-        other => src.invalid(
-            w.span(),
+    let refined = spec.shorthand.is_some_and(|k| k != 1);
+    let angle = if refined && angle_is_variable {
+        // the declared angle is t itself; the atoms' angle is a fraction of it
+        Wrt::Variable
+    } else {
+        Wrt::Angle
+    };
+    let refuse = |other: &str| {
+        src.invalid(
+            span.clone(),
             "claims.wrt",
             format!(
                 "`{other}`: expected `angle`, `u` (the unit parameter) or the basis variable `{}`",
                 spec.var_name
             ),
+        )
+    };
+    match text {
+        _ if wrt.is_none() && spec.legacy.is_none() => Ok(Wrt::Variable),
+        "angle" | "theta" | "θ" if refined && !angle_is_variable => src.invalid(
+            span,
+            "claims.wrt",
+            "derivatives in the declared angle πu/2 are not available when the formulas use other multiples of it: use wrt = \"u\"".into(),
         ),
+        "angle" | "theta" | "θ" if spec.domain.is_trigonometric() || spec.legacy.is_some() => {
+            Ok(angle)
+        }
+        "u" if spec.legacy == Some(trig_core::Variable::UnitAngle) => Ok(Wrt::U),
+        t if t == spec.var_name && angle_is_variable => Ok(angle),
+        t if t == spec.var_name => Ok(Wrt::Variable),
+        "u" if spec.legacy.is_none() => Ok(Wrt::U),
+        other => refuse(other),
     }
 }

@@ -266,6 +266,34 @@ impl Lowering<'_, '_> {
         self.bounded(a.clone() * b, pos)
     }
 
+    /// `a / b` with the divisor checked factor by factor as written
+    /// (`1/(A·g)` checks `A` and `g`, a power its base): a product is
+    /// nonzero exactly when its factors are, and each is smaller to prove.
+    fn quotient(&self, a: &Sym, b: &Expr, pos: usize) -> Result<Sym, FormulaError> {
+        /// The factors of a product as written, with multiplicities.
+        fn factors<'e>(e: &'e Expr, times: u32, out: &mut Vec<(&'e Expr, u32)>) {
+            match &e.node {
+                Node::Mul(x, y) => {
+                    factors(x, times, out);
+                    factors(y, times, out);
+                }
+                Node::Pow(x, n) if *n > 0 => factors(x, times * *n as u32, out),
+                _ => out.push((e, times)),
+            }
+        }
+        let mut parts = Vec::new();
+        factors(b, 1, &mut parts);
+        // each factor divides separately, so the value keeps them apart
+        let mut q = a.clone();
+        for (part, times) in parts {
+            let v = self.value(part)?;
+            for _ in 0..times {
+                q = self.divide(&q, &v, pos)?;
+            }
+        }
+        Ok(q)
+    }
+
     fn divide(&self, a: &Sym, b: &Sym, pos: usize) -> Result<Sym, FormulaError> {
         if b.is_zero() {
             return Err(FormulaError::new(pos, "division by zero"));
@@ -303,7 +331,7 @@ impl Lowering<'_, '_> {
             Node::Add(a, b) => self.bounded(self.value(a)? + &self.value(b)?, pos),
             Node::Sub(a, b) => self.bounded(self.value(a)? - &self.value(b)?, pos),
             Node::Mul(a, b) => self.product(&self.value(a)?, &self.value(b)?, pos),
-            Node::Div(a, b) => self.divide(&self.value(a)?, &self.value(b)?, pos),
+            Node::Div(a, b) => self.quotient(&self.value(a)?, b, pos),
             Node::Pow(a, n) => {
                 let x = self.value(a)?;
                 let raised = self.power(&x, n.unsigned_abs() as u32, pos)?;

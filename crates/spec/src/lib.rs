@@ -75,53 +75,12 @@ impl Basis for Spec {
     /// formed in the ring from the parameter values.
     fn eval<T: Ring>(&self, x: &Atoms<T>, p: &[T]) -> Vec<T> {
         assert_eq!(p.len(), self.params.len(), "parameter count");
-        let assign = |name: &str| -> Option<T> {
-            match name {
-                "s" => Some(x.s.clone()),
-                "c" => Some(x.c.clone()),
-                "t" => Some(x.t.clone()),
-                "E" => Some(x.e.clone()),
-                "pi" => Some(x.t.pi()),
-                _ => self
-                    .params
-                    .iter()
-                    .position(|q| q.name == name)
-                    .map(|i| p[i].clone())
-                    .or_else(|| self.atom_value(name, &x.t, p)),
-            }
-        };
+        let atoms = trig_certify::atoms::param_atoms(&self.domain);
+        let assign = |name: &str| trig_certify::atoms::value(name, &self.domain, x, p, &atoms);
         self.functions
             .iter()
             .map(|f| eval_sym(&f.value, &x.t, &assign))
             .collect()
-    }
-}
-
-impl Spec {
-    /// The value of a parameter atom (`sin(X)`, `cos(X)`, `exp(X)` of a
-    /// base multiple `X` of one parameter) or a radical `sqrt(p)`, formed in
-    /// the ring of `like` ([`Ring::try_sin_cos`]).
-    fn atom_value<T: Ring>(&self, name: &str, like: &T, p: &[T]) -> Option<T> {
-        if let Some(n) = name.strip_prefix("sqrt(").and_then(|r| r.strip_suffix(')')) {
-            return like.int(n.parse().ok()?).try_sqrt();
-        }
-        let symbols: Vec<Sym> = self.params.iter().map(|q| Sym::var(&q.name)).collect();
-        let d = &self.domain;
-        for (i, base) in &d.param_angles {
-            let x = symbols[*i].clone() * &Sym::rational(base.clone());
-            let (s, c) = x.try_sin_cos()?;
-            if name == s.to_string() || name == c.to_string() {
-                let (vs, vc) = (p[*i].clone() * &like.rational(base)).try_sin_cos()?;
-                return Some(if name == s.to_string() { vs } else { vc });
-            }
-        }
-        for (i, base) in &d.param_exps {
-            let x = symbols[*i].clone() * &Sym::rational(base.clone());
-            if name == x.try_exp()?.to_string() {
-                return (p[*i].clone() * &like.rational(base)).try_exp();
-            }
-        }
-        None
     }
 }
 

@@ -16,6 +16,7 @@
 //! accepted).
 
 use rug::Rational;
+use trig_certify::branch::{self, Outcome};
 use trig_certify::nonneg::definite_sign;
 use trig_certify::{ParamBox, standardize};
 use trig_core::Domain;
@@ -29,6 +30,54 @@ const PI_VAR: &str = "__pi";
 /// True for the atoms that are positive wherever they are defined.
 fn positive_atom(v: &str) -> bool {
     v == "E" || v.starts_with("exp(")
+}
+
+/// The strict sign of `n` by interval branch and bound (functions not
+/// polynomial in sin, cos or the variable on a standard domain).
+fn interval_sign(
+    d: &Sym,
+    n: &Sym,
+    domain: &Domain,
+    params: &[(String, SpecRange)],
+) -> Result<(), String> {
+    let axes = params
+        .iter()
+        .map(|(name, r)| {
+            r.to_axis().ok_or_else(|| {
+                format!("division by `{d}`: the range of {name} is unbounded; the interval method needs bounded ranges")
+            })
+        })
+        .collect::<Result<Vec<_>, String>>()?;
+    let positive = |x: &Sym| branch::positive(x, domain, &axes);
+    match (positive(n), positive(&-n.clone())) {
+        (Outcome::Proved { .. }, _) | (_, Outcome::Proved { .. }) => Ok(()),
+        (
+            Outcome::Negative {
+                x: x1, params: p1, ..
+            },
+            Outcome::Negative {
+                x: x2, params: p2, ..
+            },
+        ) => Err(format!(
+            "division by `{d}`, which changes sign: it is negative at {} and positive at {} (certified enclosures)",
+            at(domain, x1, &p1),
+            at(domain, x2, &p2)
+        )),
+        (Outcome::Undecided(why), _) | (_, Outcome::Undecided(why)) => Err(format!(
+            "division by `{d}`: could not prove that it does not vanish in the declared domain and range ({why}); restate the formula or narrow the range"
+        )),
+    }
+}
+
+fn at(domain: &Domain, x: f64, params: &[Rational]) -> String {
+    let mut parts: Vec<String> = domain
+        .param_names
+        .iter()
+        .zip(params)
+        .map(|(n, v)| format!("{n} = {v}"))
+        .collect();
+    parts.push(format!("{} ≈ {x:.6}", domain.name));
+    parts.join(", ")
 }
 
 /// `Ok` when `d` cannot vanish; otherwise why (with a witness).
@@ -57,9 +106,13 @@ pub fn check(d: &Sym, domain: &Domain, params: &[(String, SpecRange)]) -> Result
             unknown.join(", ")
         ));
     }
-    let st = standardize(&n, domain).map_err(|why| {
-        format!("division by `{d}`: could not prove that it does not vanish ({why}); restate the formula")
-    })?;
+    let pi_range = params
+        .iter()
+        .any(|(name, r)| r.pi && n.variables().contains(name));
+    let st = match standardize(&n, domain) {
+        Ok(st) if !pi_range => st,
+        _ => return interval_sign(d, &n, domain, params),
+    };
     let mut sign = 0;
     for piece in &st.pieces {
         let piece = piece.subs("pi", &Sym::var(PI_VAR));

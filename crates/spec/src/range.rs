@@ -25,11 +25,62 @@ impl End {
     }
 }
 
-/// A parameter range `lo … hi`.
+/// A parameter range `lo … hi`; with `pi`, the finite ends are the
+/// printed rational multiples of π (`(0, pi)` for C-curves).
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct SpecRange {
     pub lo: End,
     pub hi: End,
+    pub pi: bool,
+}
+
+/// `q` for an end printed `q*pi`, `pi*q`, `pi/r`, `q*pi/r` or `pi`
+/// (`None` when there is no π).
+fn pi_multiple(s: &str) -> Result<Option<Rational>, String> {
+    let compact: String = s.chars().filter(|c| !c.is_whitespace()).collect();
+    let compact = compact.replace('π', "pi");
+    if !compact.contains("pi") {
+        return Ok(None);
+    }
+    let (before, after) = compact.split_once("pi").expect("contains pi");
+    let coef = match before.trim_end_matches('*') {
+        "" => Rational::from(1),
+        "-" => Rational::from(-1),
+        c => parse_exact(c).map_err(|e| e.to_string())?,
+    };
+    let rest = after.trim_start_matches('*');
+    let value = match rest.strip_prefix('/') {
+        Some(d) => coef / parse_exact(d).map_err(|e| e.to_string())?,
+        None if rest.is_empty() => coef,
+        None => coef * parse_exact(rest).map_err(|e| e.to_string())?,
+    };
+    Ok(Some(value))
+}
+
+/// The sign of `x − q·π`, decided with π enclosed at rising precision
+/// (`x = qπ` only for `x = q = 0`: π is irrational).
+fn compare_pi(x: &Rational, q: &Rational) -> std::cmp::Ordering {
+    use rug::float::{Constant, Round};
+    if *q == 0 {
+        return x.cmp0();
+    }
+    let mut bits = 64;
+    loop {
+        let lo = rug::Float::with_val_round(bits, Constant::Pi, Round::Down).0;
+        let hi = rug::Float::with_val_round(bits, Constant::Pi, Round::Up).0;
+        let (a, b) = (
+            q * lo.to_rational().expect("finite"),
+            q * hi.to_rational().expect("finite"),
+        );
+        let (a, b) = if a < b { (a, b) } else { (b, a) };
+        if *x < a {
+            return std::cmp::Ordering::Less;
+        }
+        if *x > b {
+            return std::cmp::Ordering::Greater;
+        }
+        bits *= 2;
+    }
 }
 
 impl SpecRange {
@@ -72,13 +123,22 @@ impl SpecRange {
                 }
                 return Ok(End::Unbounded);
             }
-            let q = parse_exact(&s).map_err(|e| format!("`{text}`: {e}"))?;
+            let q = match pi_multiple(&s).map_err(|e| format!("`{text}`: {e}"))? {
+                Some(q) => q,
+                None => parse_exact(&s).map_err(|e| format!("`{text}`: {e}"))?,
+            };
             Ok(if open { End::Open(q) } else { End::Closed(q) })
         };
-        let range = SpecRange {
-            lo: end(a, open_lo, true)?,
-            hi: end(b, open_hi, false)?,
-        };
+        let with_pi = |s: &str| matches!(pi_multiple(s), Ok(Some(_)));
+        let nonzero = |e: &End| e.value().is_some_and(|q| *q != 0);
+        let (lo, hi) = (end(a, open_lo, true)?, end(b, open_hi, false)?);
+        let pi = with_pi(a) || with_pi(b);
+        if pi && ((!with_pi(a) && nonzero(&lo)) || (!with_pi(b) && nonzero(&hi))) {
+            return Err(format!(
+                "`{text}`: give both finite ends as multiples of pi, or neither (e.g. (0, pi), [pi/6, pi/2])"
+            ));
+        }
+        let range = SpecRange { lo, hi, pi };
         if let (Some(lo), Some(hi)) = (range.lo.value(), range.hi.value()) {
             let both_closed = matches!((&range.lo, &range.hi), (End::Closed(_), End::Closed(_)));
             if lo > hi || (lo == hi && !both_closed) {
@@ -92,14 +152,37 @@ impl SpecRange {
 
     /// True when `x` lies in the range.
     pub fn contains(&self, x: &Rational) -> bool {
-        self.to_box().contains(x)
+        if !self.pi {
+            return self.to_box().contains(x);
+        }
+        use std::cmp::Ordering::{Equal, Greater, Less};
+        let above = match &self.lo {
+            End::Closed(q) => matches!(compare_pi(x, q), Greater | Equal),
+            End::Open(q) => compare_pi(x, q) == Greater,
+            End::Unbounded => true,
+        };
+        let below = match &self.hi {
+            End::Closed(q) => matches!(compare_pi(x, q), Less | Equal),
+            End::Open(q) => compare_pi(x, q) == Less,
+            End::Unbounded => true,
+        };
+        above && below
     }
 
-    /// The range as a parameter set of the certifier.
+    /// The range as a parameter set of the Bernstein engine (rational
+    /// ends). A range in multiples of π has none: the callers use the
+    /// interval engine for it ([`SpecRange::to_axis`]); here its ends are
+    /// rounded outward to rationals (`π < 3.1416`), for containment proofs
+    /// only.
     pub fn to_box(&self) -> trig_certify::ParamBox {
+        let pi = if self.pi {
+            Rational::from((31_416, 10_000))
+        } else {
+            Rational::from(1)
+        };
         let bound = |e: &End| match e {
-            End::Closed(q) => trig_certify::Bound::Closed(q.clone()),
-            End::Open(q) => trig_certify::Bound::Open(q.clone()),
+            End::Closed(q) => trig_certify::Bound::Closed(Rational::from(q * &pi)),
+            End::Open(q) => trig_certify::Bound::Open(Rational::from(q * &pi)),
             End::Unbounded => trig_certify::Bound::Infinite,
         };
         trig_certify::ParamBox {
@@ -108,9 +191,26 @@ impl SpecRange {
         }
     }
 
-    /// A value inside: the midpoint, one beyond a single finite end, or 0.
+    /// The range as an axis of the interval engine, when it is bounded.
+    pub fn to_axis(&self) -> Option<trig_certify::branch::Axis> {
+        Some(trig_certify::branch::Axis {
+            lo: self.lo.value()?.clone(),
+            hi: self.hi.value()?.clone(),
+            lo_open: matches!(self.lo, End::Open(_)),
+            hi_open: matches!(self.hi, End::Open(_)),
+            pi: self.pi,
+        })
+    }
+
+    /// A value inside: the midpoint, one beyond a single finite end, or 0
+    /// (for multiples of π, the midpoint times 3.14159 < π).
     pub fn interior_point(&self) -> Rational {
-        match (self.lo.value(), self.hi.value()) {
+        let unit = if self.pi {
+            Rational::from((314_159, 100_000))
+        } else {
+            Rational::from(1)
+        };
+        unit * match (self.lo.value(), self.hi.value()) {
             (Some(a), Some(b)) => (a.clone() + b) / 2u32,
             (Some(a), None) => a.clone() + 1u32,
             (None, Some(b)) => b.clone() - 1u32,
@@ -122,15 +222,28 @@ impl SpecRange {
 /// Printed as `trig_core::Range` prints: `[-2, 1]`, `(1/2, 2]`, `[0, +inf)`.
 impl fmt::Display for SpecRange {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let v = |q: &Rational| {
+            if !self.pi || *q == 0 {
+                q.to_string()
+            } else if *q == 1 {
+                "pi".into()
+            } else if *q.numer() == 1 {
+                format!("pi/{}", q.denom())
+            } else if *q.denom() == 1 {
+                format!("{}*pi", q.numer())
+            } else {
+                format!("{}*pi/{}", q.numer(), q.denom())
+            }
+        };
         match &self.lo {
-            End::Closed(q) => write!(f, "[{q}")?,
-            End::Open(q) => write!(f, "({q}")?,
+            End::Closed(q) => write!(f, "[{}", v(q))?,
+            End::Open(q) => write!(f, "({}", v(q))?,
             End::Unbounded => f.write_str("(-inf")?,
         }
         f.write_str(", ")?;
         match &self.hi {
-            End::Closed(q) => write!(f, "{q}]"),
-            End::Open(q) => write!(f, "{q})"),
+            End::Closed(q) => write!(f, "{}]", v(q)),
+            End::Open(q) => write!(f, "{})", v(q)),
             End::Unbounded => f.write_str("+inf)"),
         }
     }
@@ -175,5 +288,26 @@ mod tests {
         assert!(SpecRange::parse("[0, inf]").unwrap_err().contains("open"));
         assert!(SpecRange::parse("[inf, 0)").is_err());
         assert!(SpecRange::parse("[a, 2]").is_err());
+        assert!(
+            SpecRange::parse("[1, pi]")
+                .unwrap_err()
+                .contains("multiples of pi")
+        );
+    }
+
+    #[test]
+    fn ranges_in_multiples_of_pi() {
+        let r = SpecRange::parse("(0, pi)").unwrap();
+        assert!(r.pi && r.to_string() == "(0, pi)");
+        assert!(r.contains(&Rational::from((314_159, 100_000))));
+        assert!(!r.contains(&Rational::from((314_160, 100_000))));
+        assert!(!r.contains(&Rational::new()));
+        let s = SpecRange::parse("[pi/6, 3*pi/4]").unwrap();
+        assert_eq!(s.to_string(), "[pi/6, 3*pi/4]");
+        assert!(s.contains(&s.interior_point()));
+        assert_eq!(
+            SpecRange::parse("[-pi/2, 2π]").unwrap().to_string(),
+            "[-1*pi/2, 2*pi]"
+        );
     }
 }

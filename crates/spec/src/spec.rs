@@ -128,10 +128,44 @@ impl Spec {
         text: &str,
         extra: &[String],
     ) -> std::result::Result<Sym, FormulaError> {
+        let ranges = self.ranges();
+        self.parse_with(text, extra, &|d: &Sym| {
+            nonvanishing::check(d, &self.domain, &ranges)
+        })
+    }
+
+    /// Parses a printed claim formula: a division that cannot be proved
+    /// nonzero over the ranges (`extra_ranges` give ranges to further
+    /// symbols, e.g. `lambda2` of a second segment) is accepted when it is
+    /// not identically zero, and reported in the second value — a printed
+    /// formula singular inside the printed range is a finding, not a
+    /// malformed file.
+    pub fn parse_claim_formula(
+        &self,
+        text: &str,
+        extra: &[String],
+        extra_ranges: &[(String, SpecRange)],
+    ) -> std::result::Result<(Sym, Vec<String>), FormulaError> {
+        let mut ranges = self.ranges();
+        ranges.extend(extra_ranges.iter().cloned());
+        let singular = RefCell::new(Vec::new());
+        let value = self.parse_with(text, extra, &|d: &Sym| {
+            if let Err(why) = nonvanishing::check(d, &self.domain, &ranges) {
+                singular.borrow_mut().push(why);
+            }
+            Ok(())
+        })?;
+        Ok((value, singular.into_inner()))
+    }
+
+    fn parse_with(
+        &self,
+        text: &str,
+        extra: &[String],
+        divisor: &dyn Fn(&Sym) -> std::result::Result<(), String>,
+    ) -> std::result::Result<Sym, FormulaError> {
         let params = self.param_pairs();
         let values = self.named_values();
-        let ranges = self.ranges();
-        let divisor = |d: &Sym| nonvanishing::check(d, &self.domain, &ranges);
         let resolve = |n: &str| {
             values
                 .iter()
@@ -148,7 +182,7 @@ impl Spec {
                 params: &params,
                 resolve: &resolve,
                 extra,
-                divisor: &divisor,
+                divisor,
             },
         )
     }
@@ -236,22 +270,31 @@ fn domain_ends(
 }
 
 /// `L > 0` for every parameter value in the ranges (`L` linear: at the
-/// corners of the box, with `π ∈ (3.14159, 3.14160)`; an unbounded
-/// parameter must not occur).
+/// corners of the box, with `π ∈ (3.14159, 3.14160)`; a corner at an open
+/// end may give `0`, which is not attained; an unbounded parameter must
+/// not occur).
 fn positive_on(l: &Affine, ranges: &[SpecRange]) -> bool {
-    let pi_lo = Rational::from((314_159, 100_000));
-    let pi_hi = Rational::from((314_160, 100_000));
-    let pi = if l.pi >= 0 { pi_lo } else { pi_hi };
-    let mut least = Rational::from(&l.constant + &(l.pi.clone() * &pi));
+    let (pi_lo, pi_hi) = (
+        Rational::from((314_159, 100_000)),
+        Rational::from((314_160, 100_000)),
+    );
+    let pi = if l.pi >= 0 { &pi_lo } else { &pi_hi };
+    let mut least = Rational::from(&l.constant + &(l.pi.clone() * pi));
+    let mut open = false;
     for (i, q) in &l.params {
         let range = &ranges[*i];
         let worst = if *q > 0 { &range.lo } else { &range.hi };
-        match worst.value() {
-            Some(v) => least += Rational::from(q * v),
-            None => return false,
+        let Some(v) = worst.value() else {
+            return false;
+        };
+        let mut contribution = Rational::from(q * v);
+        if range.pi {
+            contribution *= if contribution >= 0 { &pi_lo } else { &pi_hi };
         }
+        least += contribution;
+        open |= matches!(worst, crate::range::End::Open(_));
     }
-    least > 0
+    least > 0 || (least == 0 && open)
 }
 
 fn build(src: &Source<'_>, raw: RawSpec) -> Result<Spec> {

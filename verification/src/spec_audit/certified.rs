@@ -7,7 +7,8 @@ use trig_certify::standardize;
 use trig_spec::{Monotone, Spec, SpecRange};
 use trig_symbolic::Sym;
 
-use super::{not_certifiable, point_box, unity};
+use super::interval;
+use super::{point_box, unity};
 use crate::certify::evidence::{
     CERTIFIED, Published, maximal_against, monotone_named, nonnegative_named,
 };
@@ -18,6 +19,12 @@ use crate::verdict::{Status, Verdict};
 /// names)`, every function split into its pieces (named `b0 on θ ∈ …` when
 /// there are several), or why the basis is not standard.
 pub fn pieces(spec: &Spec) -> Result<(bool, Vec<Sym>, Vec<String>), String> {
+    if let Some(p) = spec.params.iter().find(|p| p.range.pi) {
+        return Err(format!(
+            "the range {} of {} is in multiples of π",
+            p.range, p.symbol
+        ));
+    }
     let mut trig = None;
     let (mut fs, mut names) = (Vec::new(), Vec::new());
     for f in &spec.functions {
@@ -38,13 +45,34 @@ pub fn pieces(spec: &Spec) -> Result<(bool, Vec<Sym>, Vec<String>), String> {
     Ok((trig.unwrap_or(false), fs, names))
 }
 
-/// Every function `≥ 0` for the parameters in `bx` (one parameter) or at
-/// none.
-fn nonnegative_on(spec: &Spec, param: Option<&str>, bx: &trig_certify::ParamBox) -> Verdict {
+/// Every function `≥ 0` for the parameters in `range` (one parameter;
+/// the declared ranges otherwise): exact Bernstein subdivision on the
+/// standard pieces, the interval engine for other bases.
+fn nonnegative_on(spec: &Spec, range: Option<&SpecRange>) -> Verdict {
     match pieces(spec) {
-        Ok((trig, fs, names)) => nonnegative_named(trig, &fs, &names, param, bx),
-        Err(why) => not_certifiable(&why),
+        Ok((trig, fs, names)) => match spec.params.as_slice() {
+            [] => nonnegative_named(trig, &fs, &names, None, &point_box()),
+            [p] => {
+                let r = range.unwrap_or(&p.range);
+                nonnegative_named(trig, &fs, &names, Some(&p.name), &r.to_box())
+            }
+            _ => several(spec, false),
+        },
+        Err(why) => by_intervals(spec, range, &why),
     }
+}
+
+/// The interval engine on the whole basis, with why it was needed.
+fn by_intervals(spec: &Spec, range: Option<&SpecRange>, why: &str) -> Verdict {
+    let (axes, notes) = interval::axes(spec, range);
+    let fs: Vec<(String, Sym)> = spec
+        .functions
+        .iter()
+        .map(|f| (f.name.clone(), f.value.clone()))
+        .collect();
+    let mut v = interval::all_nonnegative(spec, &fs, &axes, &notes);
+    v.evidence.insert(0, format!("not polynomial in sin, cos or the variable on a standard domain ({why}): the interval engine decides"));
+    v
 }
 
 /// Several parameters: the box of declared ranges against the region —
@@ -52,7 +80,14 @@ fn nonnegative_on(spec: &Spec, param: Option<&str>, bx: &trig_certify::ParamBox)
 fn several(spec: &Spec, maximal: bool) -> Verdict {
     let (trig, fs, names) = match pieces(spec) {
         Ok(p) => p,
-        Err(why) => return not_certifiable(&why),
+        Err(why) => {
+            let mut v = by_intervals(spec, None, &why);
+            if maximal && v.status == Status::Holds {
+                v.status = Status::NotCheckable;
+                v.evidence.push("the box is contained in the region; its maximality needs the polynomial method (boundary polynomials), which does not apply".into());
+            }
+            return v;
+        }
     };
     let names: Vec<&str> = names.iter().map(String::as_str).collect();
     let axes: Vec<Axis<'_>> = spec
@@ -84,7 +119,7 @@ fn several(spec: &Spec, maximal: bool) -> Verdict {
 /// The whole battery entry for nonnegativity.
 pub fn nonnegativity(spec: &Spec) -> Verdict {
     match spec.params.len() {
-        0 => nonnegative_on(spec, None, &point_box()),
+        0 => nonnegative_on(spec, None),
         1 => maximal_versus_published(spec, None),
         _ => several(spec, true),
     }
@@ -94,13 +129,7 @@ pub fn nonnegativity(spec: &Spec) -> Verdict {
 pub fn nonnegative_claim(spec: &Spec, range: Option<&SpecRange>, maximal: bool) -> Verdict {
     match (spec.params.len(), maximal) {
         (1, true) => maximal_versus_published(spec, range),
-        (1, false) => {
-            let r = range
-                .cloned()
-                .unwrap_or_else(|| spec.params[0].range.clone());
-            nonnegative_on(spec, Some(&spec.params[0].name), &r.to_box())
-        }
-        (0, _) => nonnegative_on(spec, None, &point_box()),
+        (0 | 1, _) => nonnegative_on(spec, range),
         _ => several(spec, maximal),
     }
 }
@@ -127,12 +156,16 @@ pub fn convex_hull(spec: &Spec, range: Option<&SpecRange>) -> Verdict {
 /// The maximal nonnegativity interval of a one-parameter basis against the
 /// published (declared, or the claim's) range.
 fn maximal_versus_published(spec: &Spec, claimed: Option<&SpecRange>) -> Verdict {
-    let (trig, fs, names) = match pieces(spec) {
-        Ok(p) => p,
-        Err(why) => return not_certifiable(&why),
-    };
     let p = &spec.params[0];
     let published = claimed.unwrap_or(&p.range);
+    let (trig, fs, names) = match pieces(spec) {
+        Ok(p) => p,
+        Err(why) => {
+            let mut v = interval::maximal(spec, published);
+            v.evidence.insert(0, format!("published range of {}: {published} ({}); not polynomial in sin, cos or the variable on a standard domain ({why}): the interval engine decides", p.symbol, if claimed.is_some() { "as claimed" } else { &p.source }));
+            return v;
+        }
+    };
     let source = if claimed.is_some() {
         "as claimed".to_string()
     } else {
@@ -168,7 +201,7 @@ pub fn monotone_claim(spec: &Spec, items: &[Monotone], range: Option<&SpecRange>
         let f = &spec.functions[m.function];
         let st = match standardize(&f.value, &spec.domain) {
             Ok(st) => st,
-            Err(why) => return not_certifiable(&why),
+            Err(_) => return interval::monotone(spec, &f.name, &f.value, m.increasing, r.as_ref()),
         };
         let parts: Vec<(String, Verdict)> = st
             .pieces

@@ -421,7 +421,8 @@ pub fn endpoint_derivative_values(
 /// The convention of the standard table: the angle for formulas in
 /// `s`, `c` alone, the variable otherwise.
 fn table_wrt(spec: &Spec) -> Wrt {
-    if spec.domain.is_pure_trigonometric() || spec.legacy.is_some() {
+    let declared_angle = spec.shorthand.is_none_or(|k| k == 1);
+    if (spec.domain.is_pure_trigonometric() || spec.legacy.is_some()) && declared_angle {
         Wrt::Angle
     } else {
         Wrt::Variable
@@ -436,19 +437,10 @@ pub fn table_convention(spec: &Spec) -> String {
 /// One exact derivative in the table's convention: `d/dθ` (`s ↦ c`,
 /// `c ↦ −s`) or `d/dx` (`s ↦ ωc`, `c ↦ −ωs`, `t ↦ 1`, `E ↦ κE`).
 fn derive(spec: &Spec, f: &Sym) -> Sym {
-    let d = &spec.domain;
-    if table_wrt(spec) == Wrt::Angle && d.is_trigonometric() {
+    if table_wrt(spec) == Wrt::Angle && spec.domain.is_trigonometric() {
         return f.d_angle();
     }
-    let omega = d.angle_rate(&Sym::one());
-    let kappa = Sym::rational(d.exp.clone().unwrap_or_default());
-    let (s, c, e) = (Sym::var("s"), Sym::var("c"), Sym::var("E"));
-    f.derive(&[
-        ("s", omega.clone() * &c),
-        ("c", -(omega * &s)),
-        ("t", Sym::one()),
-        ("E", kappa * &e),
-    ])
+    trig_certify::atoms::d_variable(f, &spec.domain)
 }
 
 /// The standard derivative table, computed twice: by Taylor jets seeded

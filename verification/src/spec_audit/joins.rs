@@ -141,6 +141,17 @@ pub fn printed_join(
     }
     head.push(describe_wrt(spec, wrt));
     v.evidence.splice(0..0, head);
+    let singular: Vec<String> = conditions
+        .iter()
+        .flat_map(|c| c.singular.iter().cloned())
+        .collect();
+    if !singular.is_empty() {
+        v.status = Status::Fails;
+        v.evidence.push(format!(
+            "the printed conditions are singular inside the printed ranges, where they give no join: {}",
+            singular.join("; ")
+        ));
+    }
     if v.status == Status::Fails {
         if let Ok(lines) = forced_lines(spec, &s, kind) {
             v = v.with_correction(format!("the join holds with {}", lines.join("; ")));

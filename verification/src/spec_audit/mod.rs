@@ -13,6 +13,7 @@
 
 mod certified;
 mod geometry;
+mod interval;
 mod joins;
 
 pub use certified::pieces as standard_pieces;
@@ -22,7 +23,6 @@ use trig_certify::ParamBox;
 use trig_spec::{Check, Spec, SpecClaim};
 use trig_symbolic::Sym;
 
-use crate::certify::evidence::CERTIFIED;
 use crate::exact::{identity, sum};
 use crate::report::{Document, Entry};
 use crate::verdict::Verdict;
@@ -186,11 +186,4 @@ fn sum_label(spec: &Spec) -> String {
 
 fn unity(spec: &Spec) -> Verdict {
     identity(&sum_label(spec), &sum(&spec.symbolic()), &Sym::one())
-}
-
-/// Why a check was not made (used when the method does not apply).
-fn not_certifiable(why: &str) -> Verdict {
-    Verdict::not_checkable(format!(
-        "{why}; the exact Bernstein method ({CERTIFIED}) needs functions polynomial in sin, cos of an angle between multiples of π/2, or in the variable on rational ends"
-    ))
 }

@@ -1,0 +1,724 @@
+//! Signs of functions that are not polynomial in `sin`, `cos` or the
+//! variable — `t` beside `sin t` (C-curves), `sinh`, `exp`, sines of
+//! parameters, domains `[0, α]` — by interval branch and bound with
+//! outward rounding ([`trig_core::Interval`]), so every `holds` is a proof.
+//!
+//! The variable is normalised, `x = a(p) + L(p)·τ` with `τ ∈ [0, 1]`; a
+//! box is `τ ∈ [τ₀, τ₁]` times an interval for each parameter. On a box:
+//!
+//! 1. the function is enclosed by evaluating its exact formula on
+//!    intervals: a lower end `≥ 0` proves it there, an upper end `< 0` is a
+//!    certified counterexample (the box's rational centre);
+//! 2. on a box touching a face of the whole region (`τ = 0`, `τ = 1`, a
+//!    parameter's range end) — where basis functions vanish and enclosures
+//!    cannot decide — the function is `≥ 0` when it is `≥ 0` on the face
+//!    (exactly zero there, decided in the exact ring, or proved on the
+//!    face's lower-dimensional box) and its derivative into the box is
+//!    `≥ 0` (decided the same way: derivatives are exact, by the chain rule
+//!    `∂τ = L·∂x`, `∂pᵢ = ∂pᵢ|ₓ + (aᵢ + Lᵢτ)·∂x`);
+//! 3. otherwise the box is split along its widest side.
+//!
+//! Strict signs (for divisors) use the same steps; at an open range end
+//! the face itself is excluded, so `α − sin α > 0` on `(0, π)` is proved
+//! from `(α − sin α)‴ = cos α > 0` near `α = 0`. A decision that does not
+//! finish within the budget is undecided, never a failure.
+
+use std::cell::RefCell;
+use std::rc::Rc;
+use std::time::{Duration, Instant};
+
+use rug::float::Round;
+use rug::{Float, Rational};
+use trig_core::{Affine, Atoms, Domain, Interval, Ring};
+use trig_symbolic::Sym;
+
+use crate::atoms::{ParamAtom, d_param, d_variable, param_atoms, value};
+
+/// Working precision of the enclosures (bits).
+const PREC: u32 = 64;
+/// Most box evaluations of one decision.
+const BUDGET: usize = 40_000;
+/// Longest time of one decision.
+const TIME: Duration = Duration::from_secs(4);
+/// Deepest chain of face arguments (derivative order).
+const MAX_ORDER: usize = 8;
+/// Deepest subdivision.
+const MAX_DEPTH: usize = 40;
+/// Most box evaluations of one face argument before it is abandoned.
+const ATTEMPT: usize = 4_000;
+
+/// What the face of a face argument must satisfy: strictly positive for a
+/// strict goal on a closed face, `≥ 0` otherwise.
+fn face_goal(goal: Goal, open: bool) -> Goal {
+    if goal == Goal::Positive && !open {
+        Goal::Positive
+    } else {
+        Goal::NonNegative
+    }
+}
+
+/// A parameter's set: `[lo, hi]` with open ends where flagged; with `pi`
+/// the ends are multiples of π (the parameter is `π·y`, `y ∈ [lo, hi]`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Axis {
+    pub lo: Rational,
+    pub hi: Rational,
+    pub lo_open: bool,
+    pub hi_open: bool,
+    pub pi: bool,
+}
+
+/// The decision about one sign question.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Outcome {
+    /// Proved, after this many box evaluations.
+    Proved { boxes: usize },
+    /// The function is negative on a whole box: at its centre `τ`
+    /// (`x = a + Lτ`) and parameters (in units of π on π axes), its value
+    /// lies in `[lo, hi]`, `hi < 0`.
+    Negative {
+        tau: Rational,
+        params: Vec<Rational>,
+        x: f64,
+        value: (f64, f64),
+    },
+    /// Not decided (the reason).
+    Undecided(String),
+}
+
+/// `Σ coef(τ)·sym`: an exact function with polynomial factors in `τ`
+/// from the chain rule.
+#[derive(Debug, Clone)]
+struct Term {
+    coef: Vec<Rational>,
+    sym: Sym,
+}
+
+type Expr = Vec<Term>;
+
+/// An expression with its first derivatives along each coordinate, formed
+/// on first use (the monotonicity test and the face arguments share them).
+struct Fun {
+    e: Expr,
+    d: RefCell<Vec<Option<Rc<Fun>>>>,
+}
+
+impl Fun {
+    fn new(e: Expr, dims: usize) -> Rc<Fun> {
+        Rc::new(Fun {
+            e,
+            d: RefCell::new(vec![None; dims]),
+        })
+    }
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Goal {
+    NonNegative,
+    /// `> 0` except on the region's open faces.
+    Positive,
+}
+
+struct Engine<'a> {
+    domain: &'a Domain,
+    axes: &'a [Axis],
+    atoms: Vec<ParamAtom>,
+    evaluations: usize,
+    /// The evaluation count at which the current attempt gives up.
+    limit: usize,
+    started: Instant,
+}
+
+fn float(q: &Rational, round: Round) -> Float {
+    Float::with_val_round(PREC, q, round).0
+}
+
+fn interval(lo: &Rational, hi: &Rational) -> Interval {
+    Interval::from_ends(PREC, &float(lo, Round::Down), &float(hi, Round::Up))
+}
+
+fn poly_mul(a: &[Rational], b: &[Rational]) -> Vec<Rational> {
+    let mut out = vec![Rational::new(); a.len() + b.len() - 1];
+    for (i, x) in a.iter().enumerate() {
+        for (j, y) in b.iter().enumerate() {
+            out[i + j] += Rational::from(x * y);
+        }
+    }
+    out
+}
+
+fn poly_derivative(a: &[Rational]) -> Vec<Rational> {
+    if a.len() <= 1 {
+        return vec![Rational::new()];
+    }
+    a.iter()
+        .enumerate()
+        .skip(1)
+        .map(|(k, q)| Rational::from(q * k as u32))
+        .collect()
+}
+
+fn poly_at(a: &[Rational], x: &Rational) -> Rational {
+    a.iter().rev().fold(Rational::new(), |acc, q| acc * x + q)
+}
+
+impl Engine<'_> {
+    fn out_of_budget(&self) -> bool {
+        self.evaluations >= self.limit.min(BUDGET) || self.started.elapsed() > TIME
+    }
+
+    /// `a(p)`, `L(p) = b(p) − a(p)` as exact values in the parameters.
+    fn start_and_length(&self) -> (Sym, Sym) {
+        let p: Vec<Sym> = self
+            .domain
+            .param_names
+            .iter()
+            .map(|n| Sym::var(n))
+            .collect();
+        let a = self.domain.start.eval(&Sym::one(), &p);
+        let b = self.domain.end.eval(&Sym::one(), &p);
+        (a.clone(), b - &a)
+    }
+
+    /// The enclosure of `e` on the box `[lo, hi]` (coordinate 0 is `τ`).
+    fn enclose(&mut self, e: &Expr, bx: &[(Rational, Rational)]) -> Option<Interval> {
+        self.evaluations += 1;
+        let tau = interval(&bx[0].0, &bx[0].1);
+        let p = self.params(&tau, &bx[1..]);
+        let d = self.domain;
+        let a = d.start_value(&tau, &p);
+        let x = a.clone() + &((d.end_value(&tau, &p) - &a) * &tau);
+        let theta = x.clone() * &d.angle_rate(&tau);
+        let (s, c) = theta.try_sin_cos()?;
+        let ex = match &d.exp {
+            Some(k) => (x.clone() * &tau.rational(k)).try_exp()?,
+            None => tau.int(1),
+        };
+        let atoms = Atoms { s, c, t: x, e: ex };
+        let mut sum = tau.int(0);
+        for term in e {
+            let coef = term
+                .coef
+                .iter()
+                .rev()
+                .fold(tau.int(0), |acc, q| acc * &tau + &tau.rational(q));
+            let v = term
+                .sym
+                .eval(&tau, &|n| value(n, d, &atoms, &p, &self.atoms))
+                .ok()?;
+            sum = sum + &(coef * &v);
+        }
+        trig_core::Real::is_finite(&sum).then_some(sum)
+    }
+
+    /// The parameters on the box's coordinates (`π·y` on a π axis).
+    fn params(&self, like: &Interval, coords: &[(Rational, Rational)]) -> Vec<Interval> {
+        coords
+            .iter()
+            .zip(self.axes)
+            .map(|((l, h), a)| {
+                let y = interval(l, h);
+                if a.pi { y * &like.pi() } else { y }
+            })
+            .collect()
+    }
+
+    /// `∂/∂(coordinate k)` of `f`, formed once (along a π axis the factor
+    /// π > 0 is left out: only signs are used).
+    fn derived(&self, f: &Rc<Fun>, k: usize) -> Rc<Fun> {
+        if let Some(d) = &f.d.borrow()[k] {
+            return d.clone();
+        }
+        let d = Fun::new(self.derivative(&f.e, k), f.d.borrow().len());
+        f.d.borrow_mut()[k] = Some(d.clone());
+        d
+    }
+
+    /// A lower bound of `f` on the box, sharpened by monotonicity: a side
+    /// along which `f` is proved monotone is replaced by its lower end.
+    fn lower_bound(&mut self, f: &Rc<Fun>, bx: &[(Rational, Rational)]) -> Option<Float> {
+        let mut reduced = bx.to_vec();
+        for k in 0..bx.len() {
+            if bx[k].0 == bx[k].1 {
+                continue;
+            }
+            let d = self.derived(f, k);
+            let Some(v) = self.enclose(&d.e, bx) else {
+                continue;
+            };
+            if *v.lo() >= 0 {
+                reduced[k] = (bx[k].0.clone(), bx[k].0.clone());
+            } else if *v.hi() <= 0 {
+                reduced[k] = (bx[k].1.clone(), bx[k].1.clone());
+            }
+        }
+        self.enclose(&f.e, &reduced).map(|v| v.lo().clone())
+    }
+
+    /// `∂/∂(coordinate k)` of `e` (`k = 0` is `τ`).
+    fn derivative(&self, e: &Expr, k: usize) -> Expr {
+        let (_, length) = self.start_and_length();
+        let mut out: Expr = Vec::new();
+        let mut push = |coef: Vec<Rational>, sym: Sym| {
+            if sym.is_zero() || coef.iter().all(|q| *q == 0) {
+                return;
+            }
+            match out.iter_mut().find(|t| t.coef == coef) {
+                Some(t) => t.sym = t.sym.clone() + &sym,
+                None => out.push(Term { coef, sym }),
+            }
+        };
+        for t in e {
+            let dx = d_variable(&t.sym, self.domain);
+            if k == 0 {
+                push(poly_derivative(&t.coef), t.sym.clone());
+                push(t.coef.clone(), length.clone() * &dx);
+            } else {
+                let i = k - 1;
+                // ∂x/∂pᵢ = aᵢ + Lᵢτ
+                let coef_of = |a: &Affine| {
+                    a.params
+                        .iter()
+                        .find(|(j, _)| *j == i)
+                        .map_or_else(Rational::new, |(_, q)| q.clone())
+                };
+                let ai = coef_of(&self.domain.start);
+                let li = Rational::from(&coef_of(&self.domain.end) - &ai);
+                push(t.coef.clone(), d_param(&t.sym, self.domain, i, &self.atoms));
+                push(poly_mul(&t.coef, &[ai, li]), dx);
+            }
+        }
+        out
+    }
+
+    /// `e` exactly zero on the face `coordinate k = v` (for `τ`: the atoms
+    /// at that end; for a parameter: substituted when it has no atoms).
+    fn zero_on_face(&self, e: &Expr, k: usize, v: &Rational) -> bool {
+        let p: Vec<Sym> = self
+            .domain
+            .param_names
+            .iter()
+            .map(|n| Sym::var(n))
+            .collect();
+        let mut total = Sym::zero();
+        for t in e {
+            let face = if k == 0 {
+                let end = if *v == 0 {
+                    &self.domain.start
+                } else {
+                    &self.domain.end
+                };
+                let Some(at) = self.domain.atoms_at(end, &Sym::one(), &p) else {
+                    return false;
+                };
+                Sym::rational(poly_at(&t.coef, v))
+                    * &t.sym
+                        .subs("s", &at.s)
+                        .subs("c", &at.c)
+                        .subs("t", &at.t)
+                        .subs("E", &at.e)
+            } else {
+                // the parameter and its atoms at the face value, when exact
+                // (a formula zero for every x is zero on the face)
+                let i = k - 1;
+                let v = if self.axes[i].pi {
+                    Sym::rational(v.clone()) * &Sym::pi()
+                } else {
+                    Sym::rational(v.clone())
+                };
+                let mut at = p.clone();
+                at[i] = v.clone();
+                let symbols = trig_symbolic::symbolic_atoms();
+                let mut face = t.sym.subs(&self.domain.param_names[i], &v);
+                for atom in self.atoms.iter().filter(|a| a.param == i) {
+                    if !face.variables().contains(&atom.name) {
+                        continue;
+                    }
+                    match value(&atom.name, self.domain, &symbols, &at, &self.atoms) {
+                        Some(exact) => face = face.subs(&atom.name, &exact),
+                        None => return false,
+                    }
+                }
+                // τ stays free (a formal variable: zero for every τ is sound)
+                let tau = Sym::var("__tau");
+                let coef = t
+                    .coef
+                    .iter()
+                    .rev()
+                    .fold(Sym::zero(), |acc, q| acc * &tau + &Sym::rational(q.clone()));
+                coef * &face
+            };
+            total = total + &face;
+        }
+        total.is_zero()
+    }
+
+    /// Decides the goal for `e` on the box; `order` counts face arguments.
+    fn decide(
+        &mut self,
+        f: &Rc<Fun>,
+        bx: &[(Rational, Rational)],
+        goal: Goal,
+        order: usize,
+        depth: usize,
+    ) -> Outcome {
+        let e = &f.e;
+        if self.out_of_budget() {
+            return Outcome::Undecided(format!(
+                "the interval search stopped after {} boxes ({:.1} s)",
+                self.evaluations,
+                self.started.elapsed().as_secs_f64()
+            ));
+        }
+        if e.is_empty() {
+            return match goal {
+                Goal::NonNegative => Outcome::Proved {
+                    boxes: self.evaluations,
+                },
+                Goal::Positive => Outcome::Undecided("identically zero".into()),
+            };
+        }
+        if let Some(v) = self.enclose(e, bx) {
+            let lo = if *v.lo() >= 0 {
+                Some(v.lo().clone())
+            } else {
+                self.lower_bound(f, bx)
+            };
+            let proved = lo.is_some_and(|lo| match goal {
+                Goal::NonNegative => lo >= 0,
+                Goal::Positive => lo > 0,
+            });
+            if proved {
+                return Outcome::Proved {
+                    boxes: self.evaluations,
+                };
+            }
+            if *v.hi() < 0 {
+                return if order == 0 {
+                    self.negative_at(bx, &v)
+                } else {
+                    Outcome::Undecided(
+                        "a derivative is negative: the face argument does not apply".into(),
+                    )
+                };
+            }
+        }
+        // face arguments on the faces of the whole region, on boxes near them
+        for k in 0..bx.len() {
+            let global = if k == 0 {
+                Rational::from(1)
+            } else {
+                Rational::from(&self.axes[k - 1].hi - &self.axes[k - 1].lo)
+            };
+            if bx[k].0 == bx[k].1 || Rational::from(&bx[k].1 - &bx[k].0) * 4u32 > global {
+                continue;
+            }
+            for lower in [true, false] {
+                if order >= MAX_ORDER {
+                    break;
+                }
+                if let Some(out) = self.face_argument(f, bx, goal, order, depth, k, lower) {
+                    return out;
+                }
+            }
+        }
+        if depth >= MAX_DEPTH {
+            return Outcome::Undecided("subdivision depth limit".into());
+        }
+        // split the widest side
+        let Some(k) = (0..bx.len())
+            .filter(|&k| bx[k].0 != bx[k].1)
+            .max_by(|&i, &j| {
+                let w = |k: usize| Rational::from(&bx[k].1 - &bx[k].0);
+                w(i).cmp(&w(j))
+            })
+        else {
+            return Outcome::Undecided("not decided at a point".into());
+        };
+        let mid = Rational::from(&bx[k].0 + &bx[k].1) / 2u32;
+        let mut result = Outcome::Proved { boxes: 0 };
+        for half in [
+            (bx[k].0.clone(), mid.clone()),
+            (mid.clone(), bx[k].1.clone()),
+        ] {
+            let mut child = bx.to_vec();
+            child[k] = half;
+            // a negative box anywhere decides; an undecided one is kept
+            // while the other half is searched for one
+            match self.decide(f, &child, goal, order, depth + 1) {
+                Outcome::Proved { boxes } => {
+                    if let Outcome::Proved { .. } = result {
+                        result = Outcome::Proved { boxes };
+                    }
+                }
+                negative @ Outcome::Negative { .. } => return negative,
+                undecided => result = undecided,
+            }
+        }
+        result
+    }
+
+    /// The face argument on side `lower` of coordinate `k`, when that side
+    /// lies on the region's boundary: `None` when it does not apply or fails.
+    #[allow(clippy::too_many_arguments)]
+    fn face_argument(
+        &mut self,
+        f: &Rc<Fun>,
+        bx: &[(Rational, Rational)],
+        goal: Goal,
+        order: usize,
+        depth: usize,
+        k: usize,
+        lower: bool,
+    ) -> Option<Outcome> {
+        let (global, open) = if k == 0 {
+            (
+                if lower {
+                    Rational::new()
+                } else {
+                    Rational::from(1)
+                },
+                false,
+            )
+        } else {
+            let a = &self.axes[k - 1];
+            if lower {
+                (a.lo.clone(), a.lo_open)
+            } else {
+                (a.hi.clone(), a.hi_open)
+            }
+        };
+        let side = if lower { &bx[k].0 } else { &bx[k].1 };
+        if *side != global {
+            return None;
+        }
+        // the face value: ≥ 0 (exactly zero, or proved on the face box)
+        let outer = self.limit;
+        self.limit = outer.min(self.evaluations + ATTEMPT);
+        let result = self.face_attempt(f, bx, goal, order, depth, k, lower, global, open);
+        self.limit = outer;
+        result
+    }
+
+    /// The two halves of a face argument (see [`Engine::face_argument`]).
+    #[allow(clippy::too_many_arguments)]
+    fn face_attempt(
+        &mut self,
+        f: &Rc<Fun>,
+        bx: &[(Rational, Rational)],
+        goal: Goal,
+        order: usize,
+        depth: usize,
+        k: usize,
+        lower: bool,
+        global: Rational,
+        open: bool,
+    ) -> Option<Outcome> {
+        let face_ok = (face_goal(goal, open) == Goal::NonNegative
+            && self.zero_on_face(&f.e, k, &global))
+            || {
+                let mut face = bx.to_vec();
+                face[k] = (global.clone(), global.clone());
+                matches!(
+                    self.decide(f, &face, face_goal(goal, open), order, depth),
+                    Outcome::Proved { .. }
+                )
+            };
+        if !face_ok {
+            return None;
+        }
+        // the derivative into the box (negated on an upper side)
+        let mut d = self.derived(f, k);
+        if !lower {
+            let negated: Expr =
+                d.e.iter()
+                    .map(|t| Term {
+                        coef: t.coef.clone(),
+                        sym: -t.sym.clone(),
+                    })
+                    .collect();
+            d = Fun::new(negated, bx.len());
+        }
+        let inner_goal = if goal == Goal::Positive && open {
+            Goal::Positive
+        } else {
+            Goal::NonNegative
+        };
+        match self.decide(&d, bx, inner_goal, order + 1, depth) {
+            out @ Outcome::Proved { .. } => Some(out),
+            _ => None,
+        }
+    }
+
+    /// A grid of points (8 steps per side, at most 4096 points) where the
+    /// function is certified negative, if any: a quick counterexample.
+    fn probe(&mut self, f: &Rc<Fun>, bx: &[(Rational, Rational)]) -> Option<Outcome> {
+        let steps = if bx.len() <= 2 { 8u32 } else { 4 };
+        let mut index = vec![0u32; bx.len()];
+        loop {
+            let point: Vec<(Rational, Rational)> = bx
+                .iter()
+                .zip(&index)
+                .map(|((lo, hi), i)| {
+                    let q = lo.clone()
+                        + Rational::from(hi - lo) * Rational::from((2 * *i + 1, 2 * steps));
+                    (q.clone(), q)
+                })
+                .collect();
+            if let Some(v) = self.enclose(&f.e, &point) {
+                if *v.hi() < 0 {
+                    return Some(self.negative_at(&point, &v));
+                }
+            }
+            let k = index.iter().position(|i| *i + 1 < steps)?;
+            index[k] += 1;
+            for i in &mut index[..k] {
+                *i = 0;
+            }
+        }
+    }
+
+    fn negative_at(&self, bx: &[(Rational, Rational)], v: &Interval) -> Outcome {
+        let centre: Vec<Rational> = bx
+            .iter()
+            .map(|(l, h)| Rational::from(l + h) / 2u32)
+            .collect();
+        let tau = interval(&centre[0], &centre[0]);
+        let point: Vec<(Rational, Rational)> =
+            centre[1..].iter().map(|q| (q.clone(), q.clone())).collect();
+        let p = self.params(&tau, &point);
+        let d = self.domain;
+        let a = d.start_value(&tau, &p);
+        let x = a.clone() + &((d.end_value(&tau, &p) - &a) * &tau);
+        Outcome::Negative {
+            tau: centre[0].clone(),
+            params: centre[1..].to_vec(),
+            x: trig_core::Real::to_f64(&x),
+            value: (v.lo().to_f64(), v.hi().to_f64()),
+        }
+    }
+}
+
+/// `f ≥ 0` for every `x` of the domain and every parameter in `axes`
+/// (one axis per parameter of the domain, in order; bounded).
+pub fn nonnegative(f: &Sym, domain: &Domain, axes: &[Axis]) -> Outcome {
+    run(f, domain, axes, Goal::NonNegative)
+}
+
+/// `f > 0` on the domain for every parameter in `axes` (open ends
+/// excluded).
+pub fn positive(f: &Sym, domain: &Domain, axes: &[Axis]) -> Outcome {
+    run(f, domain, axes, Goal::Positive)
+}
+
+fn run(f: &Sym, domain: &Domain, axes: &[Axis], goal: Goal) -> Outcome {
+    let mut engine = Engine {
+        domain,
+        axes,
+        atoms: param_atoms(domain),
+        evaluations: 0,
+        limit: BUDGET,
+        started: Instant::now(),
+    };
+    let mut bx = vec![(Rational::new(), Rational::from(1))];
+    bx.extend(axes.iter().map(|a| (a.lo.clone(), a.hi.clone())));
+    let e = Fun::new(
+        vec![Term {
+            coef: vec![Rational::from(1)],
+            sym: f.clone(),
+        }],
+        bx.len(),
+    );
+    if let Some(negative) = engine.probe(&e, &bx) {
+        return negative;
+    }
+    engine.decide(&e, &bx, goal, 0, 0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use trig_core::Affine;
+
+    fn q(a: i64, b: i64) -> Rational {
+        Rational::from((a, b))
+    }
+
+    /// `t ∈ [0, α]` with `s, c = sin t, cos t`, `sin α`, `cos α` atoms.
+    fn c_curve(exp: bool) -> Domain {
+        Domain {
+            name: "t".into(),
+            param_names: vec!["alpha".into()],
+            start: Affine::default(),
+            end: Affine::param(0),
+            angle: Some(Affine::rational(q(1, 1))),
+            uses_variable: true,
+            exp: exp.then(|| q(1, 1)),
+            param_angles: vec![(0, q(1, 1))],
+            param_exps: if exp { vec![(0, q(1, 1))] } else { Vec::new() },
+        }
+    }
+
+    fn alpha(lo: Rational, hi: Rational, lo_open: bool, hi_open: bool) -> Vec<Axis> {
+        vec![Axis {
+            lo,
+            hi,
+            lo_open,
+            hi_open,
+            pi: false,
+        }]
+    }
+
+    fn v(n: &str) -> Sym {
+        Sym::var(n)
+    }
+
+    #[test]
+    fn c_curve_denominators_are_positive_up_to_the_open_end() {
+        let d = c_curve(false);
+        // (0, 3.14]: α − sin α > 0 needs the face argument at the open end 0
+        let axes = alpha(q(0, 1), q(314, 100), true, false);
+        let a = v("alpha") - &v("sin(alpha)");
+        assert!(
+            matches!(positive(&a, &d, &axes), Outcome::Proved { .. }),
+            "{:?}",
+            positive(&a, &d, &axes)
+        );
+        // 2 − 2cos α − α sin α > 0 on (0, 3.14]
+        let g = Sym::int(2) - &(Sym::int(2) * &v("cos(alpha)")) - &(v("alpha") * &v("sin(alpha)"));
+        assert!(matches!(positive(&g, &d, &axes), Outcome::Proved { .. }));
+        // with the end 0 closed, α − sin α vanishes there: not positive
+        let closed = alpha(q(0, 1), q(314, 100), false, false);
+        assert!(!matches!(positive(&a, &d, &closed), Outcome::Proved { .. }));
+    }
+
+    #[test]
+    fn nonnegative_with_the_variable_beside_sin() {
+        let d = c_curve(false);
+        let axes = alpha(q(1, 10), q(3, 1), false, false);
+        // t − sin t ≥ 0 on [0, α]: zero at t = 0, derivative 1 − cos t ≥ 0
+        let f = v("t") - &v("s");
+        let out = nonnegative(&f, &d, &axes);
+        assert!(matches!(out, Outcome::Proved { .. }), "{out:?}");
+        // cos t < 0 beyond π/2: a certified negative box
+        match nonnegative(&v("c"), &d, &axes) {
+            Outcome::Negative { x, value, .. } => {
+                assert!(x > std::f64::consts::FRAC_PI_2 && value.1 < 0.0);
+            }
+            other => panic!("{other:?}"),
+        }
+    }
+
+    #[test]
+    fn exponentials() {
+        let d = c_curve(true);
+        let axes = alpha(q(1, 2), q(2, 1), false, false);
+        // e^t − 1 − t ≥ 0 (zero at t = 0 to second order)
+        let f = v("E") - &Sym::one() - &v("t");
+        assert!(matches!(nonnegative(&f, &d, &axes), Outcome::Proved { .. }));
+        // exp(α) − 1 − α > 0 on (0, 2]
+        let open = alpha(q(0, 1), q(2, 1), true, false);
+        let g = v("exp(alpha)") - &Sym::one() - &v("alpha");
+        assert!(matches!(positive(&g, &d, &open), Outcome::Proved { .. }));
+    }
+}

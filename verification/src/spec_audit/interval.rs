@@ -1,0 +1,374 @@
+//! Inequalities of spec bases that are not polynomial in sin, cos or the
+//! variable on a standard domain (C-curves, hyperbolic and exponential
+//! bases, half angles, parameter-dependent domains): decided by the
+//! interval engine ([`trig_certify::branch`]). Every `holds` is a proof;
+//! witnesses are rational points with certified enclosures of the value;
+//! maximal ranges are bracketed (an end found this way is never called
+//! exact unless the basis is undefined there).
+
+use rug::Rational;
+use trig_certify::branch::{self, Axis, Outcome};
+use trig_spec::{Spec, SpecRange};
+use trig_symbolic::{Poly, Sym};
+
+use crate::verdict::{Status, Verdict};
+
+/// How the interval method decides, as the report states it.
+pub const INTERVAL: &str = "certified: interval branch and bound in 128-bit MPFR with outward rounding over (variable, parameters); next to the domain's ends and the range ends by exact derivatives (≥ 0 on the face and a derivative ≥ 0 into the box); denominators proved of one strict sign first; counterexamples are boxes where the value is certified negative";
+
+/// Width kept of an unbounded range (the search is then partial).
+const TRUNCATE: i64 = 64;
+
+/// The axes of the parameters for a claim: the declared ranges, `range`
+/// replacing the only parameter's; unbounded ranges truncated (noted).
+pub fn axes(spec: &Spec, range: Option<&SpecRange>) -> (Vec<Axis>, Vec<String>) {
+    let mut notes = Vec::new();
+    let axes = spec
+        .params
+        .iter()
+        .map(|p| {
+            let r = range.filter(|_| spec.params.len() == 1).unwrap_or(&p.range);
+            r.to_axis().unwrap_or_else(|| {
+                let (lo, hi, lo_open, hi_open) = match (r.lo.value(), r.hi.value()) {
+                    (Some(a), None) => (
+                        a.clone(),
+                        a.clone() + TRUNCATE,
+                        matches!(r.lo, trig_spec::range::End::Open(_)),
+                        false,
+                    ),
+                    (None, Some(b)) => (
+                        b.clone() - TRUNCATE,
+                        b.clone(),
+                        false,
+                        matches!(r.hi, trig_spec::range::End::Open(_)),
+                    ),
+                    _ => (
+                        Rational::from(-TRUNCATE),
+                        Rational::from(TRUNCATE),
+                        false,
+                        false,
+                    ),
+                };
+                notes.push(format!(
+                    "the range {r} of {} is unbounded: only [{lo}, {hi}] was searched",
+                    p.symbol
+                ));
+                Axis {
+                    lo,
+                    hi,
+                    lo_open,
+                    hi_open,
+                    pi: r.pi,
+                }
+            })
+        })
+        .collect();
+    (axes, notes)
+}
+
+/// `q`, or `q·π` on an axis in multiples of π.
+fn value_text(q: &Rational, pi: bool) -> String {
+    if pi {
+        format!("{q}·π")
+    } else {
+        q.to_string()
+    }
+}
+
+fn describe_point(spec: &Spec, axes: &[Axis], params: &[Rational], x: f64) -> String {
+    let mut parts: Vec<String> = spec
+        .params
+        .iter()
+        .zip(params)
+        .zip(axes)
+        .map(|((p, v), a)| format!("{} = {}", p.symbol, value_text(v, a.pi)))
+        .collect();
+    parts.push(format!("{} ≈ {x:.6}", spec.var_name));
+    parts.join(", ")
+}
+
+/// `f ≥ 0` on the domain for the parameters in `axes`: the strict sign of
+/// each denominator factor, then the sign of the numerator.
+pub fn nonnegative(spec: &Spec, name: &str, f: &Sym, axes: &[Axis]) -> (Status, String) {
+    let d = &spec.domain;
+    let mut sign = 1;
+    for (factor, e) in f.denominator() {
+        let g = Sym::from_poly(factor.clone());
+        let s = match (
+            branch::positive(&g, d, axes),
+            branch::positive(&-g.clone(), d, axes),
+        ) {
+            (Outcome::Proved { .. }, _) => 1,
+            (_, Outcome::Proved { .. }) => -1,
+            _ => {
+                return (
+                    Status::NotCheckable,
+                    format!("{name} ≥ 0: the sign of its denominator factor {g} was not proved"),
+                );
+            }
+        };
+        if e % 2 == 1 {
+            sign *= s;
+        }
+    }
+    let num = Sym::from_poly(f.numerator().clone() * &Poly::int(sign));
+    match branch::nonnegative(&num, d, axes) {
+        Outcome::Proved { boxes } => (
+            Status::Holds,
+            format!("{name} ≥ 0: certified on the whole domain ({boxes} interval boxes)"),
+        ),
+        Outcome::Negative {
+            params, x, value, ..
+        } => (
+            Status::Fails,
+            format!(
+                "{name} ≥ 0: violated at {} (its numerator lies in [{:.6e}, {:.6e}] there, certified)",
+                describe_point(spec, axes, &params, x),
+                value.0,
+                value.1
+            ),
+        ),
+        Outcome::Undecided(why) => (
+            Status::NotCheckable,
+            format!("{name} ≥ 0: undecided ({why})"),
+        ),
+    }
+}
+
+/// Every function `≥ 0` for the parameters of `axes`.
+pub fn all_nonnegative(
+    spec: &Spec,
+    fs: &[(String, Sym)],
+    axes: &[Axis],
+    notes: &[String],
+) -> Verdict {
+    let mut status = Status::Holds;
+    let mut evidence: Vec<String> = notes.to_vec();
+    let mut done: Vec<Option<Status>> = vec![None; fs.len()];
+    for (k, (name, f)) in fs.iter().enumerate() {
+        // f(x) = g(a + b − x) exactly for a decided g: f ≥ 0 follows from g ≥ 0
+        let partner = (0..fs.len()).find(|&j| j != k && mirrors(spec, f, &fs[j].1));
+        if let Some(j) = partner.filter(|&j| done[j] == Some(Status::Holds)) {
+            evidence.push(format!(
+                "{name} ≥ 0 follows from {} ≥ 0: {name}(x) = {}(a + b − x) exactly and the reflection maps the domain onto itself",
+                fs[j].0, fs[j].0
+            ));
+            done[k] = Some(Status::Holds);
+            continue;
+        }
+        let (mut s, mut line) = memo(spec, name, f, axes);
+        if s == Status::NotCheckable {
+            if let Some(j) = partner.filter(|&j| done[j].is_none()) {
+                let (s2, line2) = memo(spec, &fs[j].0, &fs[j].1, axes);
+                if s2 == Status::Holds {
+                    (s, line) = (
+                        s2,
+                        format!(
+                            "{line2}; {name} ≥ 0 follows: {name}(x) = {}(a + b − x) exactly",
+                            fs[j].0
+                        ),
+                    );
+                    done[j] = Some(Status::Holds);
+                }
+            }
+        }
+        if s == Status::NotCheckable {
+            if let Some((inner, text)) = away_from_open_ends(axes) {
+                let (s2, line2) = memo(spec, name, f, &inner);
+                if s2 != Status::NotCheckable {
+                    line = format!("{line}; on the inner range {text}: {line2}");
+                    if s2 == Status::Fails {
+                        s = s2;
+                    }
+                }
+            }
+        }
+        done[k] = Some(s);
+        status = Status::conjunction([status, s]);
+        evidence.push(line);
+    }
+    if status == Status::Holds && !notes.is_empty() {
+        status = Status::NotCheckable;
+    }
+    Verdict::new(status, INTERVAL, evidence)
+}
+
+/// [`nonnegative`], remembered across the claims of one run (the battery
+/// and the file's claims ask the same questions).
+fn memo(spec: &Spec, name: &str, f: &Sym, axes: &[Axis]) -> (Status, String) {
+    use std::collections::HashMap;
+    use std::sync::{Mutex, OnceLock};
+    type Cache = Mutex<HashMap<String, (Status, String)>>;
+    static CACHE: OnceLock<Cache> = OnceLock::new();
+    let key = format!("{}|{name}|{f}|{axes:?}", spec.file);
+    let cache = CACHE.get_or_init(|| Mutex::new(HashMap::new()));
+    if let Some(hit) = cache.lock().ok().and_then(|c| c.get(&key).cloned()) {
+        return hit;
+    }
+    let result = nonnegative(spec, name, f, axes);
+    if let Ok(mut c) = cache.lock() {
+        c.insert(key, result.clone());
+    }
+    result
+}
+
+/// True when `f(x) = g(a + b − x)` exactly (same parameters).
+fn mirrors(spec: &Spec, f: &Sym, g: &Sym) -> bool {
+    let a = spec.domain.reflection();
+    let params: Vec<Sym> = spec.params.iter().map(|p| Sym::var(&p.name)).collect();
+    super::geometry::reflect(spec, g, &a, &params).is_ok_and(|r| (r - f).is_zero())
+}
+
+/// The axes with every open end moved inward by an eighth of the width
+/// (a partial search when the whole one is undecided), with its text.
+fn away_from_open_ends(axes: &[Axis]) -> Option<(Vec<Axis>, String)> {
+    if !axes.iter().any(|a| a.lo_open || a.hi_open) {
+        return None;
+    }
+    let mut texts = Vec::new();
+    let inner = axes
+        .iter()
+        .map(|a| {
+            let step = Rational::from(&a.hi - &a.lo) / 8u32;
+            let mut b = a.clone();
+            if a.lo_open {
+                b.lo = Rational::from(&a.lo + &step);
+                b.lo_open = false;
+            }
+            if a.hi_open {
+                b.hi = Rational::from(&a.hi - &step);
+                b.hi_open = false;
+            }
+            texts.push(format!(
+                "[{}, {}]",
+                value_text(&b.lo, b.pi),
+                value_text(&b.hi, b.pi)
+            ));
+            b
+        })
+        .collect();
+    Some((inner, texts.join(" × ")))
+}
+
+fn functions(spec: &Spec) -> Vec<(String, Sym)> {
+    spec.functions
+        .iter()
+        .map(|f| (f.name.clone(), f.value.clone()))
+        .collect()
+}
+
+/// The declared (or claimed) range against the maximal one, for one
+/// parameter: containment is proved; an end is exact only where the basis
+/// is undefined (a denominator vanishes identically there); otherwise a
+/// point just beyond it decides: admissible refutes maximality, a
+/// certified counterexample brackets the end.
+pub fn maximal(spec: &Spec, range: &SpecRange) -> Verdict {
+    let (ax, notes) = axes(spec, Some(range));
+    let fs = functions(spec);
+    let inside = all_nonnegative(spec, &fs, &ax, &notes);
+    if inside.status != Status::Holds {
+        return inside;
+    }
+    let p = &spec.params[0];
+    let mut status = Status::Holds;
+    let mut evidence = inside.evidence;
+    let width = Rational::from(&ax[0].hi - &ax[0].lo);
+    let step = width / 64u32;
+    for (end, outward) in [(range.lo.value(), -1), (range.hi.value(), 1)] {
+        let Some(v) = end else {
+            continue;
+        };
+        let shown = value_text(v, range.pi);
+        if undefined_at(spec, v, range.pi) {
+            evidence.push(format!(
+                "the end {} = {shown} is exact: a denominator vanishes identically there, so the basis is not defined at it",
+                p.symbol
+            ));
+            continue;
+        }
+        let w: Rational = v.clone() + step.clone() * Rational::from(outward);
+        let point = vec![Axis {
+            lo: w.clone(),
+            hi: w.clone(),
+            lo_open: false,
+            hi_open: false,
+            pi: range.pi,
+        }];
+        let beyond = all_nonnegative(spec, &fs, &point, &[]);
+        match beyond.status {
+            Status::Holds => {
+                status = Status::Fails;
+                evidence.push(format!(
+                    "not maximal: beyond the end {shown}, at {} = {}, every function is certified ≥ 0",
+                    p.symbol,
+                    value_text(&w, range.pi)
+                ));
+            }
+            Status::Fails => {
+                status = Status::conjunction([status, Status::NotCheckable]);
+                evidence.push(format!(
+                    "the end {shown} is bracketed, not exact: at {} = {} a function is certified negative ({}), so the maximal range ends in [{}, {}]",
+                    p.symbol,
+                    value_text(&w, range.pi),
+                    beyond.evidence.iter().find(|l| l.contains("violated")).cloned().unwrap_or_default(),
+                    value_text(if outward < 0 { &w } else { v }, range.pi),
+                    value_text(if outward < 0 { v } else { &w }, range.pi)
+                ));
+            }
+            _ => {
+                status = Status::conjunction([status, Status::NotCheckable]);
+                evidence.push(format!(
+                    "beyond the end {shown} (at {} = {}) the search was not decided",
+                    p.symbol,
+                    value_text(&w, range.pi)
+                ));
+            }
+        }
+    }
+    Verdict::new(status, INTERVAL, evidence)
+}
+
+/// True when some denominator factor is identically zero at `p = v` (its
+/// atoms of the parameter substituted when they are exact there).
+fn undefined_at(spec: &Spec, v: &Rational, pi: bool) -> bool {
+    use trig_certify::atoms::{param_atoms, value};
+    let d = &spec.domain;
+    let atoms = param_atoms(d);
+    let params = [if pi {
+        Sym::rational(v.clone()) * &Sym::pi()
+    } else {
+        Sym::rational(v.clone())
+    }];
+    let symbols = trig_symbolic::symbolic_atoms();
+    spec.functions.iter().any(|f| {
+        f.value.denominator().keys().any(|factor| {
+            let mut at = Sym::from_poly(factor.clone()).subs(&spec.params[0].name, &params[0]);
+            for a in atoms.iter().filter(|a| a.param == 0) {
+                match value(&a.name, d, &symbols, &params, &atoms) {
+                    Some(e) => at = at.subs(&a.name, &e),
+                    None => return false,
+                }
+            }
+            at.is_zero()
+        })
+    })
+}
+
+/// Monotonicity by the sign of the derivative in the variable.
+pub fn monotone(
+    spec: &Spec,
+    name: &str,
+    f: &Sym,
+    increasing: bool,
+    range: Option<&SpecRange>,
+) -> Verdict {
+    let d = trig_certify::atoms::d_variable(f, &spec.domain);
+    let g = if increasing { d } else { -d };
+    let (ax, notes) = axes(spec, range);
+    let what = if increasing {
+        format!("{name}' ≥ 0 ({name} increasing)")
+    } else {
+        format!("−{name}' ≥ 0 ({name} decreasing)")
+    };
+    all_nonnegative(spec, &[(what, g)], &ax, &notes)
+}
