@@ -2,7 +2,7 @@
 //! (spec files under `examples/`), end to end through `audit --spec`.
 //!
 //! The expected results were derived independently of the tool (SymPy,
-//! `examples/independent/derive.py`, results in `expected.md` there, and by
+//! `examples/independent/*.py`, results in its `README.md`, and by
 //! hand in each file's header): exact range ends, quotient bases, regions
 //! of two parameters, exact counterexamples re-checkable by hand.
 

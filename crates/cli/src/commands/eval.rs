@@ -64,6 +64,18 @@ pub fn param_pairs(raw: &[String]) -> Result<Vec<(String, String)>, CliError> {
         .collect()
 }
 
+/// The catalog family `id`; `seed000-nonuniform`, whose segment functions
+/// depend on a knot vector, is named with what it needs instead of being
+/// called unknown.
+pub fn family_by_id(id: &str) -> Result<Family, CliError> {
+    if id == SEED000_NONUNIFORM.id {
+        return Err(CliError::Usage(format!(
+            "`{id}` needs a knot vector: its segment functions change from span to span, so only `trig-audit eval {id} --knots …` evaluates it; for the uniform case use seed000-uniform"
+        )));
+    }
+    Ok(Family::from_id(id)?)
+}
+
 /// A basis to work on: a catalog family or a spec file's basis.
 #[derive(Debug, Clone)]
 pub enum Subject {
@@ -82,7 +94,7 @@ impl Subject {
                 .map(|s| Subject::Spec(Box::new(s)))
                 .map_err(|e| CliError::Usage(e.to_string().replace('\n', " "))),
             (Some(id), None) => {
-                let family = Family::from_id(id)?;
+                let family = family_by_id(id)?;
                 if !family.has_formulas() {
                     return Err(CoreError::NoFormulas(id.into()).into());
                 }

@@ -116,7 +116,7 @@ pub fn families(id: &str) -> Result<Vec<Family>, CliError> {
     if id == "all" {
         Ok(COMPARED.to_vec())
     } else {
-        Ok(vec![Family::from_id(id)?])
+        Ok(vec![super::eval::family_by_id(id)?])
     }
 }
 

@@ -3,10 +3,11 @@
 
 use clap::{Args, ValueEnum};
 use serde_json::json;
-use trig_core::Family;
+use trig_core::Basis;
 use trig_deriv::{JoinKind, JoinSetup, Wrt, solve_join, vanishing};
 use trig_symbolic::Sym;
 
+use super::eval::Subject;
 use super::table::WrtArg;
 use super::{CliError, CmdResult};
 use crate::cell::Cell;
@@ -30,7 +31,11 @@ pub enum JoinFormat {
 #[derive(Debug, Args)]
 pub struct JoinArgs {
     /// Family id (see `trig-audit list`).
-    family: String,
+    #[arg(required_unless_present = "spec", conflicts_with = "spec")]
+    family: Option<String>,
+    /// A spec file (TOML) defining the basis instead of a catalog family (docs/spec.md).
+    #[arg(long, value_name = "FILE")]
+    spec: Option<std::path::PathBuf>,
     /// Join kind: c0, c1, c2, c3, g1 (Q₂'(0) = α Q₁'(1)) or g2 (and Q₂''(0) = α² Q₁''(1) + β Q₁'(1)).
     #[arg(long)]
     kind: String,
@@ -47,7 +52,7 @@ pub struct JoinArgs {
 
 /// The solved join, ready to print.
 struct Solved {
-    family: Family,
+    family: Subject,
     kind: JoinKind,
     wrt: Wrt,
     first_params: Vec<Sym>,
@@ -58,13 +63,7 @@ struct Solved {
 }
 
 pub fn run(args: &JoinArgs) -> CmdResult {
-    let family = Family::from_id(&args.family)?;
-    if !family.has_formulas() {
-        return Err(CliError::Usage(format!(
-            "family `{}` has no formulas in our copy; nothing to join",
-            args.family
-        )));
-    }
+    let family = Subject::from_args(args.family.as_deref(), args.spec.as_deref())?;
     let kind: JoinKind = args
         .kind
         .parse()
@@ -77,28 +76,32 @@ pub fn run(args: &JoinArgs) -> CmdResult {
     })
 }
 
-fn solve(family: Family, kind: JoinKind, params: ParamsArg, wrt: Wrt) -> Result<Solved, CliError> {
-    let info = family.info();
+fn solve(family: Subject, kind: JoinKind, params: ParamsArg, wrt: Wrt) -> Result<Solved, CliError> {
+    let param_names = family.param_names();
     let names = |suffix: &str| -> Vec<Sym> {
-        info.params
+        param_names
             .iter()
-            .map(|p| Sym::var(&format!("{}{suffix}", p.name)))
+            .map(|p| Sym::var(&format!("{p}{suffix}")))
             .collect()
     };
     let (first_params, second_params) = match params {
         ParamsArg::Same => (names(""), names("")),
         ParamsArg::Different => (names("1"), names("2")),
     };
-    let n = info.functions.len();
+    let n = family.function_names().len();
     let first: Vec<Sym> = (0..n).map(|i| Sym::var(&format!("P{i}"))).collect();
     let second: Vec<Sym> = (0..n).map(|i| Sym::var(&format!("Q{i}"))).collect();
+    let factors = match &family {
+        Subject::Spec(spec) => spec.join_factors().map(|n| Sym::var(&n)),
+        Subject::Family(_) => trig_deriv::default_factors(),
+    };
     let setup = JoinSetup {
-        basis: family,
+        basis: &family,
         first_params: &first_params,
         second_params: &second_params,
         wrt,
         h: (Sym::var("h1"), Sym::var("h2")),
-        factors: trig_deriv::default_factors(),
+        factors,
     };
     let join =
         solve_join(&setup, kind, &first, &second).map_err(|e| CliError::Usage(e.to_string()))?;
@@ -148,13 +151,9 @@ fn conditions(kind: JoinKind) -> &'static str {
 }
 
 fn header(s: &Solved) -> Vec<String> {
-    let trig = s.family.info().variable.is_trigonometric();
+    let trig = s.family.domain().is_trigonometric();
     vec![
-        format!(
-            "family: {} ({})",
-            s.family.info().id,
-            s.family.info().citation
-        ),
+        format!("family: {} ({})", s.family.id(), s.family.citation()),
         format!("join: {} — {}", s.kind, conditions(s.kind)),
         format!("derivatives: {}", s.wrt.describe(trig)),
         format!(
@@ -211,7 +210,7 @@ fn tex(s: &Solved) -> String {
 
 fn json_value(s: &Solved) -> serde_json::Value {
     json!({
-        "family": s.family.info().id,
+        "family": s.family.id(),
         "kind": s.kind.to_string(),
         "wrt": s.wrt.to_string(),
         "first_params": s.first_params.iter().map(|p| p.to_string()).collect::<Vec<_>>(),

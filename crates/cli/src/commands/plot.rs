@@ -151,7 +151,7 @@ pub fn run(args: &PlotArgs) -> CmdResult {
             values: v,
             output,
         } => {
-            let family = Family::from_id(family)?;
+            let family = super::eval::family_by_id(family)?;
             let vals = values(family, &v.values)?;
             write(
                 output,
@@ -164,7 +164,7 @@ pub fn run(args: &PlotArgs) -> CmdResult {
             control,
             output,
         } => {
-            let family = Family::from_id(family)?;
+            let family = super::eval::family_by_id(family)?;
             let vals = values(family, &v.values)?;
             let control = control_points(control)?;
             write(

@@ -1,0 +1,204 @@
+//! Every feature of the spec language for real papers, end to end through
+//! the command line, each decided both ways (a claim that holds and one
+//! that fails). Expected results are derived independently
+//! (`examples/independent/README.md`) or by hand in the comments.
+
+use std::path::PathBuf;
+
+use trig_e2e::{assert_errors, example, stdout_ok};
+
+/// A spec file written for one test.
+fn spec_file(name: &str, text: &str) -> String {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cli_spec_features");
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let path = dir.join(name);
+    std::fs::write(&path, text).expect("write spec");
+    path.display().to_string()
+}
+
+/// The verdict and evidence of one claim of a spec file.
+fn claim(path: &str, id: &str) -> (String, String) {
+    let text = stdout_ok(&["audit", "--spec", path, "--claim", id, "--format", "json"]);
+    let json: serde_json::Value = serde_json::from_str(&text).expect("json");
+    let c = &json["claims"][0];
+    (
+        c["verdict"].as_str().unwrap_or_default().to_string(),
+        c["evidence"].to_string(),
+    )
+}
+
+fn verdict(path: &str, id: &str) -> String {
+    claim(path, id).0
+}
+
+#[test]
+fn exchange_symmetry_tangents_and_joins_of_a_two_parameter_basis() {
+    let hmh = example("han-ma-huang-cubic.toml");
+    // b_i(t; λ, μ) = b_{3−i}(π/2 − t; μ, λ) holds; with λ, μ kept it fails
+    assert_eq!(verdict(&hmh, "HMH-symmetry"), "holds");
+    let (v, e) = claim(&hmh, "HMH-symmetry-kept");
+    assert_eq!(v, "fails", "{e}");
+    // the battery finds the exchange symmetry by itself
+    let (v, e) = claim(&hmh, "symmetry");
+    assert_eq!(v, "holds");
+    assert!(e.contains("exchanged"), "{e}");
+    // r'(0) = (λ + 2)(P1 − P0) in t
+    assert_eq!(verdict(&hmh, "HMH-tangent"), "holds");
+    // the solved C1 and G1 joins divide by λ2 + 2, zero at λ2 = −2 in the
+    // printed closed range: a finding, with the exact residuals zero
+    let (v, e) = claim(&hmh, "HMH-C1");
+    assert_eq!(v, "fails");
+    assert!(e.contains("singular") && e.contains("lambda2 = -2"), "{e}");
+    // on ranges open at −2 the same printed conditions hold
+    let open = std::fs::read_to_string(&hmh)
+        .expect("read")
+        .replace("range = \"[-2, 1]\"", "range = \"(-2, 1]\"")
+        .replace("id = \"han-ma-huang-cubic\"", "id = \"hmh-open\"");
+    let open = spec_file("hmh-open.toml", &open);
+    assert_eq!(verdict(&open, "HMH-C1"), "holds");
+    assert_eq!(verdict(&open, "HMH-G1"), "holds");
+    // a wrong tangent (the u-convention factor printed in t) fails
+    let wrong = std::fs::read_to_string(&hmh).expect("read").replace(
+        "value = \"(lambda + 2)*(P1 - P0)\"",
+        "value = \"(lambda + 2)*pi/2*(P1 - P0)\"",
+    );
+    let wrong = spec_file("hmh-wrong-tangent.toml", &wrong);
+    let (v, e) = claim(&wrong, "HMH-tangent");
+    assert_eq!(v, "fails");
+    assert!(e.contains("lambda*P1"), "{e}");
+}
+
+#[test]
+fn half_angles_and_functions_defined_through_others() {
+    let half = example("trig-bbasis-half-angle.toml");
+    // b1 = 1 − b0 − b2 (b2 defined after b1); values and derivatives in t
+    for id in [
+        "HB-han",
+        "HB-nonnegative",
+        "HB-derivatives",
+        "HB-tangent-end",
+        "unity",
+        "symmetry",
+    ] {
+        assert_eq!(verdict(&half, id), "holds", "{id}");
+    }
+    // derivatives in the half angle would be twice as large: b0'(0) = −2 is wrong in t
+    let wrong = std::fs::read_to_string(&half).expect("read").replace(
+        "values = [\"b0 = -1\", \"b1 = 1\", \"b2 = 0\"]",
+        "values = [\"b0 = -2\", \"b1 = 2\", \"b2 = 0\"]",
+    );
+    let wrong = spec_file("half-wrong.toml", &wrong);
+    assert_eq!(verdict(&wrong, "HB-derivatives"), "fails");
+    // a circle of definitions is refused where it closes
+    let cycle = spec_file(
+        "cycle.toml",
+        "id = \"cycle\"\ncitation = \"x\"\nvariable = \"polynomial\"\n[[definitions]]\nname = \"a\"\nformula = \"b + t\"\n[[definitions]]\nname = \"b\"\nformula = \"a - t\"\n[[functions]]\nname = \"f0\"\nformula = \"a\"\n",
+    );
+    assert_errors(&[(&["audit", "--spec", &cycle], "circular definition")]);
+}
+
+#[test]
+fn the_variable_beside_sin_and_hyperbolic_and_exponential_atoms() {
+    let cb = example("c-bezier-cubic.toml");
+    for id in ["CB-unity", "CB-symmetry", "CB-tangent"] {
+        assert_eq!(verdict(&cb, id), "holds", "{id}");
+    }
+    let hb = example("h-bezier-cubic.toml");
+    for id in ["HB3-unity", "HB3-symmetry", "HB3-tangent", "HB3-second"] {
+        assert_eq!(verdict(&hb, id), "holds", "{id}");
+    }
+    // the exponential Bernstein basis is not symmetric: α = ln 3, t = ln 2
+    // gives 1/8 against 1/64 (README B7); the residual is exact
+    let eb = example("exp-bernstein-cubic.toml");
+    assert_eq!(verdict(&eb, "EB-unity"), "holds");
+    assert_eq!(verdict(&eb, "EB-tangent"), "holds");
+    let (v, e) = claim(&eb, "EB-symmetry");
+    assert_eq!(v, "fails");
+    assert!(e.contains("exp(alpha)"), "{e}");
+}
+
+#[test]
+fn domains_with_pi_and_quarter_turns() {
+    // (1 ∓ sin t)/2 on [−π/2, π/2]: nonnegative (proved on two quarter turns,
+    // rotated exactly), symmetric under t ↦ −t; sin t alone is not ≥ 0
+    let text = "id = \"sym\"\ncitation = \"constructed\"\nvariable = \"t\"\ndomain = \"[-pi/2, pi/2]\"\n[[functions]]\nname = \"b0\"\nformula = \"(1 - sin(t))/2\"\n[[functions]]\nname = \"b1\"\nformula = \"(1 + sin(t))/2\"\n[[claims]]\nid = \"S-nonneg\"\nsource = \"x\"\nstatement = \"b_i ≥ 0\"\ncheck = \"nonnegative\"\n[[claims]]\nid = \"S-sym\"\nsource = \"x\"\nstatement = \"b_i(t) = b_{1−i}(−t)\"\ncheck = \"symmetry\"\nmap = \"0 - t\"\nindex = \"1 - i\"\n[[claims]]\nid = \"S-hull\"\nsource = \"x\"\nstatement = \"convex hull\"\ncheck = \"convex-hull\"\n";
+    let path = spec_file("sym.toml", text);
+    for id in ["S-nonneg", "S-sym", "S-hull", "unity", "interpolation"] {
+        assert_eq!(verdict(&path, id), "holds", "{id}");
+    }
+    let bad = spec_file(
+        "sym-bad.toml",
+        &text
+            .replace("(1 - sin(t))/2", "sin(t)")
+            .replace("(1 + sin(t))/2", "1 - sin(t)"),
+    );
+    let (v, e) = claim(&bad, "S-nonneg");
+    assert_eq!(v, "fails");
+    assert!(e.contains("violated"), "{e}");
+    // a domain whose end is not above its start is refused
+    let reversed = spec_file("reversed.toml", &text.replace("[-pi/2, pi/2]", "[pi, 0]"));
+    assert_errors(&[(&["audit", "--spec", &reversed], "not above the start")]);
+}
+
+#[test]
+fn b_splines_of_three_and_five_pieces() {
+    let q = example("bspline-quadratic.toml");
+    assert_eq!(verdict(&q, "BQ-C1"), "holds");
+    assert_eq!(verdict(&q, "BQ-C2"), "fails");
+    let q4 = example("bspline-quartic.toml");
+    assert_eq!(verdict(&q4, "B4-C3"), "holds");
+    let (v, e) = claim(&q4, "B4-C4");
+    assert_eq!(v, "fails");
+    assert!(e.contains("jump of order 4"), "{e}");
+}
+
+#[test]
+fn joins_and_tables_of_spec_bases_from_the_command_line() {
+    // the join solver on a spec: Han, Ma & Huang C1 with different parameters
+    let out = stdout_ok(&[
+        "join",
+        "--spec",
+        &example("han-ma-huang-cubic.toml"),
+        "--kind",
+        "c1",
+        "--params",
+        "different",
+    ]);
+    assert!(out.contains("Q₁") && out.contains("λ₂ = −2"), "{out}");
+    // an exact table of a C-curve at its parameter end t = α
+    let out = stdout_ok(&[
+        "table",
+        "--spec",
+        &example("c-bezier-cubic.toml"),
+        "--order",
+        "1",
+    ]);
+    assert!(
+        out.contains("sin(α)") || out.contains("sin(alpha)"),
+        "{out}"
+    );
+    // seed000-nonuniform is named with what it needs
+    assert_errors(&[
+        (&["table", "seed000-nonuniform"], "needs a knot vector"),
+        (
+            &["join", "seed000-nonuniform", "--kind", "c1"],
+            "needs a knot vector",
+        ),
+    ]);
+}
+
+#[test]
+fn formula_errors_and_cost_limits() {
+    let header = "id = \"e\"\ncitation = \"x\"\nvariable = \"angle\"\n[[functions]]\nname = \"b0\"\nformula = ";
+    let file = |name: &str, formula: &str| spec_file(name, &format!("{header}\"{formula}\"\n"));
+    let times = file("times.toml", "2 s");
+    let power = file("power.toml", "((1 + s)^64)^64");
+    let cos = file("cos.toml", "cos(24*t)^64");
+    let exp = file("exp.toml", "exp(1)");
+    assert_errors(&[
+        (&["audit", "--spec", &times], "at position 2: expected `*`"),
+        (&["audit", "--spec", &power], "degree"),
+        (&["audit", "--spec", &cos], "degree"),
+        (&["audit", "--spec", &exp], "cannot be formed exactly"),
+    ]);
+}
