@@ -202,3 +202,19 @@ fn formula_errors_and_cost_limits() {
         (&["audit", "--spec", &exp], "cannot be formed exactly"),
     ]);
 }
+
+#[test]
+fn a_triangular_region_of_two_parameters_is_described_exactly() {
+    // f0 = (1 − t)(λt + 1 − t), f1 = t(μ(1 − t) + t), f2 = (2 − λ − μ)t(1 − t):
+    // Σ f = 1, and all f ≥ 0 exactly on the triangle λ ≥ 0, μ ≥ 0, λ + μ ≤ 2
+    let text = "id = \"triangle\"\ncitation = \"constructed\"\nvariable = \"polynomial\"\n[[parameters]]\nname = \"lambda\"\nrange = \"[0, 1]\"\n[[parameters]]\nname = \"mu\"\nrange = \"[0, 1]\"\n[[functions]]\nname = \"f0\"\nformula = \"(1 - t)*(lambda*t + 1 - t)\"\n[[functions]]\nname = \"f1\"\nformula = \"t*(mu*(1 - t) + t)\"\n[[functions]]\nname = \"f2\"\nformula = \"(2 - lambda - mu)*t*(1 - t)\"\n[[claims]]\nid = \"T-box\"\nsource = \"x\"\nstatement = \"the box is the region\"\ncheck = \"nonnegative\"\nmaximal = true\n";
+    let path = spec_file("triangle.toml", text);
+    assert_eq!(verdict(&path, "unity"), "holds");
+    let (v, e) = claim(&path, "T-box");
+    assert_eq!(v, "fails", "{e}");
+    for edge in ["lambda + mu - 2 = 0", "lambda = 0", "mu = 0"] {
+        assert!(e.contains(edge), "{edge}: {e}");
+    }
+    // the containment part holds
+    assert!(e.contains("containment"), "{e}");
+}

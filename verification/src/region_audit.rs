@@ -205,6 +205,7 @@ fn coupled(
                 axes[k].symbol
             ));
             evidence.extend(face_witness(fs, names, trig, axes, k, v));
+            evidence.push(edge_line(&boundary));
             return Verdict::new(Status::Fails, REGION, evidence);
         }
     }
@@ -333,16 +334,25 @@ pub fn describe_region(reg: &Region, names: &[&str], axes: &[Axis<'_>; 2]) -> Ve
     }
     match &reg.boundary_note {
         Some(why) => out.push(format!("boundary polynomials not computed: {why}")),
-        None => out.push(format!(
-            "the region's edge lies on: {}",
-            reg.boundary
-                .iter()
-                .map(|c| format!("{} = 0 ({})", short(&c.poly.to_string()), c.origin))
-                .collect::<Vec<_>>()
-                .join("; ")
-        )),
+        None => out.push(edge_line(&reg.boundary)),
     }
     out
+}
+
+/// The exact polynomial conditions on whose zero sets the region's edge
+/// lies (each boundary polynomial once, up to a constant factor).
+fn edge_line(boundary: &[trig_certify::boundary::Candidate]) -> String {
+    let mut seen: Vec<trig_symbolic::Poly> = Vec::new();
+    let mut parts = Vec::new();
+    for c in boundary {
+        let (_, p) = c.poly.canonical();
+        if seen.contains(&p) {
+            continue;
+        }
+        parts.push(format!("{} = 0 ({})", short(&p.to_string()), c.origin));
+        seen.push(p);
+    }
+    format!("the region's edge lies on: {}", parts.join("; "))
 }
 
 /// A polynomial as text, or its size when it is too long to read.
