@@ -1,6 +1,8 @@
 //! Claims as data: id, source, the statement as printed, and the checker
 //! that decides it. A claim never carries its verdict.
 
+use std::sync::OnceLock;
+
 use crate::verdict::Verdict;
 
 /// The five source documents.
@@ -66,4 +68,12 @@ pub struct Claim {
     pub statement: &'static str,
     /// The checker.
     pub check: fn() -> Verdict,
+}
+
+/// The verdict of `check`, computed once per process and kept in `cell`:
+/// for a claim that is also quoted by an umbrella claim (T26 quotes
+/// T26a–k, M8 quotes M4b), so the audit decides it once. Claims run in
+/// parallel; a second caller waits for the first computation.
+pub(crate) fn shared(cell: &'static OnceLock<Verdict>, check: impl FnOnce() -> Verdict) -> Verdict {
+    cell.get_or_init(check).clone()
 }

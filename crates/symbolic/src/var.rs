@@ -9,8 +9,9 @@
 
 use std::cmp::Ordering;
 use std::fmt;
+use std::collections::HashMap;
 use std::hash::{Hash, Hasher};
-use std::sync::Arc;
+use std::sync::{Mutex, OnceLock, PoisonError};
 
 /// Shape parameters, earliest first in the variable order.
 pub const PARAMETERS: [&str; 9] = [
@@ -62,35 +63,97 @@ impl Class {
                 .map_or(Class::Other, Class::Parameter),
         }
     }
+
+    /// True for the classes with several members, ordered by name.
+    fn by_name(self) -> bool {
+        matches!(
+            self,
+            Class::Other | Class::ParamSin | Class::ParamCos | Class::Radical
+        )
+    }
 }
 
 /// A named variable. Equality and hashing are by name; the order is the
 /// fixed variable order described in the [module documentation](self).
-#[derive(Clone)]
-pub struct Var {
+///
+/// Names are interned: every variable with the same name points to one
+/// shared, immutable record (kept for the life of the process — a program
+/// uses a bounded set of names), so a `Var` is a `Copy` pointer, equality
+/// is a pointer comparison, and the order compares keys computed once per
+/// name instead of the names.
+#[derive(Clone, Copy)]
+pub struct Var(&'static Interned);
+
+/// The record behind a [`Var`]: its name and its precomputed order key.
+struct Interned {
+    name: &'static str,
     class: Class,
-    name: Arc<str>,
+    /// For names of a class ordered by name ([`Class::by_name`]) whose key
+    /// decides [`natural`] order:
+    /// the first 8 bytes of the name without its trailing digits (big
+    /// endian, zero padded) and the trailing number. `None` for a longer
+    /// prefix, a prefix containing a NUL byte, or more than 19 digits.
+    key: Option<(u64, u64)>,
+}
+
+impl Interned {
+    fn new(name: &'static str) -> Interned {
+        let class = Class::of(name);
+        let (prefix, digits) = split_digits(name);
+        let key = (class.by_name()
+            && prefix.len() <= 8
+            && !prefix.as_bytes().contains(&0)
+            && digits.len() <= 19)
+            .then(|| {
+                let mut head = [0u8; 8];
+                head[..prefix.len()].copy_from_slice(prefix.as_bytes());
+                (u64::from_be_bytes(head), digits.parse::<u64>().unwrap_or(0))
+            });
+        Interned { name, class, key }
+    }
+}
+
+/// Every name seen so far.
+fn table() -> &'static Mutex<HashMap<&'static str, &'static Interned>> {
+    static TABLE: OnceLock<Mutex<HashMap<&'static str, &'static Interned>>> = OnceLock::new();
+    TABLE.get_or_init(Default::default)
 }
 
 impl Var {
     /// The variable called `name` (any string).
     pub fn new(name: &str) -> Var {
-        Var {
-            class: Class::of(name),
-            name: Arc::from(name),
+        let mut table = table().lock().unwrap_or_else(PoisonError::into_inner);
+        if let Some(record) = table.get(name) {
+            return Var(record);
         }
+        let name: &'static str = Box::leak(name.into());
+        let record: &'static Interned = Box::leak(Box::new(Interned::new(name)));
+        table.insert(name, record);
+        Var(record)
+    }
+
+    /// `sin θ`, the variable [`SIN`].
+    pub fn sin() -> Var {
+        static SIN_VAR: OnceLock<Var> = OnceLock::new();
+        *SIN_VAR.get_or_init(|| Var::new(SIN))
+    }
+
+    /// `cos θ`, the variable [`COS`].
+    pub fn cos() -> Var {
+        static COS_VAR: OnceLock<Var> = OnceLock::new();
+        *COS_VAR.get_or_init(|| Var::new(COS))
     }
 
     /// The name.
-    pub fn name(&self) -> &str {
-        &self.name
+    pub fn name(&self) -> &'static str {
+        self.0.name
     }
 
     /// True for the paired atoms `s`, `c` and `sin(X)`, `cos(X)`, whose
     /// degrees are not preserved by the reduction modulo `s² + c² − 1`.
     pub fn is_trig(&self) -> bool {
         matches!(
-            self.class,
+            self.0.class,
             Class::Sin | Class::Cos | Class::ParamSin | Class::ParamCos | Class::Radical
         )
     }
@@ -98,9 +161,9 @@ impl Var {
     /// For a sine atom (`s`, `sin(X)`), its cosine partner (`c`, `cos(X)`):
     /// the normal form rewrites `sin² = 1 − cos²`.
     pub fn cosine_partner(&self) -> Option<Var> {
-        match self.class {
-            Class::Sin => Some(Var::new(COS)),
-            Class::ParamSin => Some(Var::new(&format!("cos{}", &self.name[3..]))),
+        match self.0.class {
+            Class::Sin => Some(Var::cos()),
+            Class::ParamSin => Some(Var::new(&format!("cos{}", &self.name()[3..]))),
             _ => None,
         }
     }
@@ -114,14 +177,14 @@ impl Var {
     /// ([`Var::square`]): sine atoms and radicals. Their degrees are not
     /// preserved by multiplication, and division clears them by conjugates.
     pub fn is_reduced(&self) -> bool {
-        self.is_sine() || self.class == Class::Radical
+        self.is_sine() || self.0.class == Class::Radical
     }
 
     /// `v²` in lower terms when the normal form rewrites it: `1 − c²` for a
     /// sine atom with cosine partner `c`, `p` for `sqrt(p)`.
     pub fn square(&self) -> Option<(Option<Var>, rug::Integer)> {
-        match self.class {
-            Class::Radical => radicand(&self.name).map(|p| (None, rug::Integer::from(p))),
+        match self.0.class {
+            Class::Radical => radicand(self.name()).map(|p| (None, rug::Integer::from(p))),
             _ => self
                 .cosine_partner()
                 .map(|c| (Some(c), rug::Integer::from(1))),
@@ -158,7 +221,8 @@ fn natural(a: &str, b: &str) -> Ordering {
 
 impl PartialEq for Var {
     fn eq(&self, other: &Self) -> bool {
-        self.name == other.name
+        // one record per name
+        std::ptr::eq(self.0, other.0)
     }
 }
 
@@ -166,16 +230,26 @@ impl Eq for Var {}
 
 impl Hash for Var {
     fn hash<H: Hasher>(&self, state: &mut H) {
-        self.name.hash(state);
+        self.0.name.hash(state);
     }
 }
 
 impl Ord for Var {
     fn cmp(&self, other: &Self) -> Ordering {
+        let (a, b) = (self.0, other.0);
+        if std::ptr::eq(a, b) {
+            return Ordering::Equal;
+        }
         // classes with one member compare equal; the others by name
-        self.class.cmp(&other.class).then_with(|| match self.class {
+        a.class.cmp(&b.class).then_with(|| match a.class {
             Class::Other | Class::ParamSin | Class::ParamCos | Class::Radical => {
-                natural(&self.name, &other.name)
+                match (a.key, b.key) {
+                    // Equal keys mean equal prefixes and trailing numbers,
+                    // i.e. names that differ only in leading zeros:
+                    // `natural` then compares the names.
+                    (Some(ka), Some(kb)) => ka.cmp(&kb).then_with(|| a.name.cmp(b.name)),
+                    _ => natural(a.name, b.name),
+                }
             }
             _ => Ordering::Equal,
         })
@@ -190,13 +264,13 @@ impl PartialOrd for Var {
 
 impl fmt::Debug for Var {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.name)
+        f.write_str(self.name())
     }
 }
 
 impl fmt::Display for Var {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.name)
+        f.write_str(self.name())
     }
 }
 
@@ -234,6 +308,33 @@ mod tests {
             sorted(&["s", "sin(alpha)", "pi", "alpha", "E"]),
             ["alpha", "pi", "sin(alpha)", "s", "E"]
         );
+    }
+
+    #[test]
+    fn the_interned_key_orders_as_the_names_do() {
+        let names = [
+            "P", "P0", "P00", "P1", "P01", "P2", "P10", "P010", "Q", "a", "ab", "abcdefgh",
+            "abcdefgh1", "abcdefghi", "abcdefghi2", "abcdefgh\u{0}", "x99999999999999999999",
+            "x100000000000000000000", "x18446744073709551615", "x18446744073709551616", "h1",
+            "w0", "m1", "m", "pi", "s", "c", "t", "sin(alpha)", "sin(alpha/2)", "cos(alpha)",
+            "sqrt(2)", "sqrt(3)", "E",
+        ];
+        for a in names {
+            for b in names {
+                let (va, vb) = (Var::new(a), Var::new(b));
+                let want = Class::of(a).cmp(&Class::of(b)).then_with(|| {
+                    if Class::of(a).by_name() {
+                        natural(a, b)
+                    } else {
+                        Ordering::Equal
+                    }
+                });
+                assert_eq!(va.cmp(&vb), want, "{a} vs {b}");
+                assert_eq!(va == vb, a == b);
+            }
+        }
+        assert_eq!(Var::sin(), Var::new(SIN));
+        assert_eq!(Var::cos().name(), COS);
     }
 
     #[test]

@@ -3,12 +3,14 @@
 //! (M4, M4b, M8) decided by the exact knot-jump computation of
 //! [`crate::continuity`].
 
+use std::sync::OnceLock;
+
 use trig_core::Family;
 use trig_deriv::{End, Wrt, endpoint_derivatives};
 use trig_symbolic::Sym;
 
 use super::seed000_appendix_print::{Formula, compare, zeta};
-use crate::claim::{Claim, Seed};
+use crate::claim::{Claim, Seed, shared};
 use crate::continuity::{
     self, ContinuityError, KnotContinuity, METHOD, achieved, curve_end, nonuniform_bspline,
     uniform_bspline,
@@ -499,46 +501,49 @@ fn multiple_knots(k: usize) -> Vec<Sym> {
 }
 
 fn m4b() -> Verdict {
-    let mut parts = Vec::new();
-    for k in 2..=4 {
-        let knots = multiple_knots(k);
-        let label = format!(
-            "multiplicity {k} (claimed C^{}), printed coefficients (2)–(3), knots {}",
-            3 - k as i64,
-            knots
-                .iter()
-                .map(|x| x.to_string())
-                .collect::<Vec<_>>()
-                .join(", ")
+    static VERDICT: OnceLock<Verdict> = OnceLock::new();
+    shared(&VERDICT, || {
+        let mut parts = Vec::new();
+        for k in 2..=4 {
+            let knots = multiple_knots(k);
+            let label = format!(
+                "multiplicity {k} (claimed C^{}), printed coefficients (2)–(3), knots {}",
+                3 - k as i64,
+                knots
+                    .iter()
+                    .map(|x| x.to_string())
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            );
+            let v = match nonuniform_bspline(&knots, &zeta(), NONUNIFORM_J) {
+                Ok(pieces) => {
+                    let cont = continuity::continuity(&pieces, true, Some("zeta"));
+                    let want = 3 - k as i64;
+                    let ok = cont.iter().all(|c| c.smoothness.rank() >= want);
+                    Verdict::new(
+                        if ok { Status::Holds } else { Status::Fails },
+                        METHOD,
+                        cont.iter().map(|c| c.describe(Some("zeta"))).collect(),
+                    )
+                }
+                Err(ContinuityError::Construction(e)) => Verdict::not_checkable(format!(
+                    "the printed construction (2)–(3) is undefined at coincident knots: {e}"
+                )),
+                Err(e) => Verdict::not_checkable(e.to_string()),
+            };
+            parts.push((label, v));
+        }
+        let uniform = Verdict::not_checkable(
+            "the uniform construction (Appendix A) has unit knot spacing only: it has no knots of multiplicity k > 1",
         );
-        let v = match nonuniform_bspline(&knots, &zeta(), NONUNIFORM_J) {
-            Ok(pieces) => {
-                let cont = continuity::continuity(&pieces, true, Some("zeta"));
-                let want = 3 - k as i64;
-                let ok = cont.iter().all(|c| c.smoothness.rank() >= want);
-                Verdict::new(
-                    if ok { Status::Holds } else { Status::Fails },
-                    METHOD,
-                    cont.iter().map(|c| c.describe(Some("zeta"))).collect(),
-                )
-            }
-            Err(ContinuityError::Construction(e)) => Verdict::not_checkable(format!(
-                "the printed construction (2)–(3) is undefined at coincident knots: {e}"
-            )),
-            Err(e) => Verdict::not_checkable(e.to_string()),
-        };
-        parts.push((label, v));
-    }
-    let uniform = Verdict::not_checkable(
-        "the uniform construction (Appendix A) has unit knot spacing only: it has no knots of multiplicity k > 1",
-    );
-    parts.push(("uniform reading".into(), uniform));
-    let all = Verdict::all(METHOD, parts.clone());
-    if parts.iter().all(|(_, v)| v.status == Status::NotCheckable) {
-        Verdict::new(Status::NotCheckable, "none possible", all.evidence)
-    } else {
-        all
-    }
+        parts.push(("uniform reading".into(), uniform));
+        let all = Verdict::all(METHOD, parts.clone());
+        if parts.iter().all(|(_, v)| v.status == Status::NotCheckable) {
+            Verdict::new(Status::NotCheckable, "none possible", all.evidence)
+        } else {
+            all
+        }
+    })
 }
 
 fn m8() -> Verdict {

@@ -9,6 +9,8 @@
 //! case), derivatives in `n` with `t = π(n − n_j)/(2q_j)` (factor
 //! `(π/(2q_j))^k`, as printed).
 
+use std::sync::OnceLock;
+
 use trig_core::Family;
 use trig_deriv::table::{end_atoms, rate};
 use trig_deriv::{End, Jet, Wrt};
@@ -146,11 +148,26 @@ fn general<const K: usize>() -> Vec<Vec<Vec<Sym>>> {
     })
 }
 
-/// The uniform case: the Appendix A basis `F_i = l_i/(6ζ² − 6ζ + 10)`.
-fn uniform() -> Vec<Vec<Vec<Sym>>> {
-    rational_table(|end| {
-        let atoms = end_atoms::<Sym, THIRD>(Family::Seed000Uniform, end, &Sym::one(), &[zeta()]);
-        Family::Seed000Uniform.eval(&atoms, &[Jet::constant(zeta())])
+/// [`general`] to the first order, computed once (M12 and M12b share it).
+fn general_first() -> &'static [Vec<Vec<Sym>>] {
+    static TABLE: OnceLock<Vec<Vec<Vec<Sym>>>> = OnceLock::new();
+    TABLE.get_or_init(general::<FIRST>)
+}
+
+/// The uniform case: the Appendix A basis `F_i = l_i/(6ζ² − 6ζ + 10)`,
+/// computed once (M7, M10, M13 and M13b share it).
+fn uniform() -> &'static [Vec<Vec<Sym>>] {
+    static TABLE: OnceLock<Vec<Vec<Vec<Sym>>>> = OnceLock::new();
+    TABLE.get_or_init(|| {
+        rational_table(|end| {
+            let atoms = end_atoms::<Sym, THIRD>(
+                Family::Seed000Uniform,
+                end,
+                &Sym::one(),
+                &[zeta()],
+            );
+            Family::Seed000Uniform.eval(&atoms, &[Jet::constant(zeta())])
+        })
     })
 }
 
@@ -221,7 +238,7 @@ fn m7() -> Verdict {
         e("(A42)", 2, 1, 0, format!("4(S + 1)w2 H2 / {DB}")),
         e("(A43)", 3, 1, 0, format!("(S)w3 H3 / {DB}")),
     ];
-    decide(&entries, &uniform(), UNIFORM)
+    decide(&entries, uniform(), UNIFORM)
 }
 
 fn m10() -> Verdict {
@@ -273,7 +290,7 @@ fn m10() -> Verdict {
             format!("(pi/(2q))(1 + 2S)[({DB} - S(-w1 + w3)) / {DB}^2] w3 H3"),
         ),
     ];
-    decide(&entries, &uniform(), UNIFORM)
+    decide(&entries, uniform(), UNIFORM)
 }
 
 fn m13() -> Verdict {
@@ -337,13 +354,13 @@ fn m13() -> Verdict {
             ),
         ),
     ];
-    decide(&entries, &uniform(), UNIFORM)
+    decide(&entries, uniform(), UNIFORM)
 }
 
 fn m13b() -> Verdict {
     decide(
         &[e("(A55) read as Q''_3", 3, 0, 2, "0")],
-        &uniform(),
+        uniform(),
         UNIFORM,
     )
 }
@@ -442,7 +459,7 @@ fn m12_entries() -> Vec<Entry> {
 }
 
 fn m12() -> Verdict {
-    decide(&m12_entries(), &general::<FIRST>(), GENERAL)
+    decide(&m12_entries(), general_first(), GENERAL)
 }
 
 fn m12b() -> Verdict {
@@ -491,7 +508,7 @@ fn m12b() -> Verdict {
             format!("{p}(1 + 2S)[((c3 - c1)B - [S(c1 + c3) + 4(S + 1)c2] L) / B^2] w2 H2"),
         ),
     ];
-    decide(&entries, &general::<FIRST>(), GENERAL)
+    decide(&entries, general_first(), GENERAL)
 }
 
 fn m15() -> Verdict {

@@ -9,13 +9,15 @@
 //! `S₂(u, v; m₁*, m₂*)` join across `v` with, per the theorems, `m₁ = m₁*`
 //! (and `m₂ = m₂*`); the printed point formulas apply to every column.
 
+use std::sync::OnceLock;
+
 use rug::Rational;
 use trig_core::Family;
 use trig_deriv::{End, JoinKind, Wrt, curve_endpoint_derivatives, endpoint_derivatives};
 use trig_symbolic::Sym;
 
 use super::thesis::claim;
-use crate::claim::Claim;
+use crate::claim::{Claim, shared};
 use crate::exact::{identities, symbols};
 use crate::joins::{Printed, PrintedJoin, audit, audit_surface};
 use crate::verdict::{Status, Verdict};
@@ -359,47 +361,74 @@ fn surface(kind: JoinKind, same: bool, printed: Vec<Printed>) -> Verdict {
 }
 
 fn t26a() -> Verdict {
-    surface(JoinKind::C(1), true, vec![c0(), c1_same()])
+    static VERDICT: OnceLock<Verdict> = OnceLock::new();
+    shared(&VERDICT, || {
+        surface(JoinKind::C(1), true, vec![c0(), c1_same()])
+    })
 }
 
 fn t26b() -> Verdict {
-    surface(JoinKind::C(1), false, vec![c0(), c1_different()])
+    static VERDICT: OnceLock<Verdict> = OnceLock::new();
+    shared(&VERDICT, || {
+        surface(JoinKind::C(1), false, vec![c0(), c1_different()])
+    })
 }
 
 fn t26c() -> Verdict {
-    surface(JoinKind::G1, true, vec![c0(), g1_same()])
+    static VERDICT: OnceLock<Verdict> = OnceLock::new();
+    shared(&VERDICT, || {
+        surface(JoinKind::G1, true, vec![c0(), g1_same()])
+    })
 }
 
 fn t26d() -> Verdict {
-    surface(JoinKind::G1, false, vec![c0(), g1_different()])
+    static VERDICT: OnceLock<Verdict> = OnceLock::new();
+    shared(&VERDICT, || {
+        surface(JoinKind::G1, false, vec![c0(), g1_different()])
+    })
 }
 
 fn t26e() -> Verdict {
-    surface(JoinKind::C(2), true, vec![c0(), c1_same(), c2_same()])
+    static VERDICT: OnceLock<Verdict> = OnceLock::new();
+    shared(&VERDICT, || {
+        surface(JoinKind::C(2), true, vec![c0(), c1_same(), c2_same()])
+    })
 }
 
 fn t26f() -> Verdict {
-    surface(
-        JoinKind::C(2),
-        false,
-        vec![c0(), c1_different(), c2_different()],
-    )
+    static VERDICT: OnceLock<Verdict> = OnceLock::new();
+    shared(&VERDICT, || {
+        surface(
+            JoinKind::C(2),
+            false,
+            vec![c0(), c1_different(), c2_different()],
+        )
+    })
 }
 
 fn t26g() -> Verdict {
-    surface(JoinKind::G2, true, vec![c0(), g1_same(), g2_same()])
+    static VERDICT: OnceLock<Verdict> = OnceLock::new();
+    shared(&VERDICT, || {
+        surface(JoinKind::G2, true, vec![c0(), g1_same(), g2_same()])
+    })
 }
 
 fn t26h() -> Verdict {
-    surface(
-        JoinKind::G2,
-        false,
-        vec![c0(), g1_different(), Printed::new(2, g2_bracket())],
-    )
+    static VERDICT: OnceLock<Verdict> = OnceLock::new();
+    shared(&VERDICT, || {
+        surface(
+            JoinKind::G2,
+            false,
+            vec![c0(), g1_different(), Printed::new(2, g2_bracket())],
+        )
+    })
 }
 
 fn t26i() -> Verdict {
-    surface(JoinKind::G2, false, vec![c0(), g2_different()])
+    static VERDICT: OnceLock<Verdict> = OnceLock::new();
+    shared(&VERDICT, || {
+        surface(JoinKind::G2, false, vec![c0(), g2_different()])
+    })
 }
 
 fn t26() -> Verdict {

@@ -7,11 +7,14 @@
 //! with numbers (m = 1); its final nets are rebuilt here statement by
 //! statement and both seams are checked exactly.
 
+use std::sync::OnceLock;
+
 use trig_core::Family;
 use trig_deriv::{JoinKind, JoinSetup, Wrt};
 use trig_symbolic::Sym;
 
 use super::{lin, n, v};
+use crate::claim::shared;
 use crate::exact::{sum, symbols};
 use crate::joins::{Printed, PrintedJoin, audit_surface};
 use crate::verdict::{Status, Verdict};
@@ -45,20 +48,23 @@ fn seam(from: &str, to: &str) -> PrintedJoin {
 
 /// The printed seam formulas of 5.4.3 (C⁰, C¹, C² rows).
 pub fn t26j() -> Verdict {
-    let m = v("m");
-    Verdict::all(
-        crate::joins::METHOD,
-        vec![
-            (
-                "seam P → Q (Q0 = P3, Q1 = 2P3 − P2, Q2 = P1 − (4m+4)P2 + (4m+4)P3)".into(),
-                audit_surface(&seam("P", "Q"), &m),
-            ),
-            (
-                "seam Q → P (P0 = Q3, P1 = 2Q3 − Q2, P2 = Q1 − (4m+4)Q2 + (4m+4)Q3)".into(),
-                audit_surface(&seam("Q", "P"), &m),
-            ),
-        ],
-    )
+    static VERDICT: OnceLock<Verdict> = OnceLock::new();
+    shared(&VERDICT, || {
+        let m = v("m");
+        Verdict::all(
+            crate::joins::METHOD,
+            vec![
+                (
+                    "seam P → Q (Q0 = P3, Q1 = 2P3 − P2, Q2 = P1 − (4m+4)P2 + (4m+4)P3)".into(),
+                    audit_surface(&seam("P", "Q"), &m),
+                ),
+                (
+                    "seam Q → P (P0 = Q3, P1 = 2Q3 − Q2, P2 = Q1 − (4m+4)Q2 + (4m+4)Q3)".into(),
+                    audit_surface(&seam("Q", "P"), &m),
+                ),
+            ],
+        )
+    })
 }
 
 type Point = [Sym; 3];
@@ -144,35 +150,38 @@ fn seam_failures(rows: &[([Point; 4], [Point; 4])], p_to_q: bool) -> Vec<String>
 
 /// The Appendix 1 cylinder: both seams, exactly, with the listing's numbers.
 pub fn t26k() -> Verdict {
-    let rows = listing_nets();
-    let mut evidence = Vec::new();
-    let mut holds = true;
-    for (name, p_to_q) in [
-        ("seam P → Q (z1 | z4)", true),
-        ("seam Q → P (z4 | z1)", false),
-    ] {
-        let failures = seam_failures(&rows, p_to_q);
-        holds &= failures.is_empty();
-        if failures.is_empty() {
-            evidence.push(format!("{name}: C² holds exactly in every row"));
-        } else {
-            evidence.extend(failures.into_iter().map(|f| format!("{name}: {f}")));
+    static VERDICT: OnceLock<Verdict> = OnceLock::new();
+    shared(&VERDICT, || {
+        let rows = listing_nets();
+        let mut evidence = Vec::new();
+        let mut holds = true;
+        for (name, p_to_q) in [
+            ("seam P → Q (z1 | z4)", true),
+            ("seam Q → P (z4 | z1)", false),
+        ] {
+            let failures = seam_failures(&rows, p_to_q);
+            holds &= failures.is_empty();
+            if failures.is_empty() {
+                evidence.push(format!("{name}: C² holds exactly in every row"));
+            } else {
+                evidence.extend(failures.into_iter().map(|f| format!("{name}: {f}")));
+            }
         }
-    }
-    evidence.push(
-        "listing order: Q1, Q2 are computed from the original P1, P2, P3; P1 and P2 are then overwritten from Q1, Q2, Q3, so the P → Q seam no longer matches the final P net (a nonzero row jump is a nonzero surface jump: the u-basis functions are linearly independent)".into(),
-    );
-    let status = if holds { Status::Holds } else { Status::Fails };
-    let v = Verdict::new(
-        status,
-        "the listing's control nets rebuilt statement by statement (exact integers, m = 1); C⁰–C² jumps across both seams in the angle convention",
-        evidence,
-    );
-    if holds {
-        v
-    } else {
-        v.with_correction(
-            "compute the seam points of the second seam before overwriting, or solve both seams together (the tube closes with 8 conditions per row on 8 points)",
-        )
-    }
+        evidence.push(
+            "listing order: Q1, Q2 are computed from the original P1, P2, P3; P1 and P2 are then overwritten from Q1, Q2, Q3, so the P → Q seam no longer matches the final P net (a nonzero row jump is a nonzero surface jump: the u-basis functions are linearly independent)".into(),
+        );
+        let status = if holds { Status::Holds } else { Status::Fails };
+        let v = Verdict::new(
+            status,
+            "the listing's control nets rebuilt statement by statement (exact integers, m = 1); C⁰–C² jumps across both seams in the angle convention",
+            evidence,
+        );
+        if holds {
+            v
+        } else {
+            v.with_correction(
+                "compute the seam points of the second seam before overwriting, or solve both seams together (the tube closes with 8 conditions per row on 8 points)",
+            )
+        }
+    })
 }
