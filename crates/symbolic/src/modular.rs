@@ -15,6 +15,7 @@
 //! gcd decides.
 
 use crate::poly::Poly;
+use crate::var::Var;
 
 /// The prime `2³¹ − 1`: products of residues fit in `u64`.
 const P: u64 = 2_147_483_647;
@@ -44,6 +45,9 @@ pub fn coprime(f: &Poly, others: &[Poly]) -> bool {
 /// `φ(p)` as a polynomial in `x` over `𝔽_p` (coefficients lowest first, no
 /// trailing zeros), or `None` when a denominator vanishes mod `p`.
 fn image(p: &Poly, x: &str) -> Option<Vec<u64>> {
+    let main = Var::new(x);
+    // the residue each other variable is sent to, computed once per image
+    let mut residues: Vec<(Var, u64)> = Vec::new();
     let mut out = vec![0u64; p.degree_in(x) as usize + 1];
     for (m, q) in p.terms() {
         let den = u64::from(q.denom().mod_u(P as u32));
@@ -53,10 +57,18 @@ fn image(p: &Poly, x: &str) -> Option<Vec<u64>> {
         let mut value = u64::from(q.numer().mod_u(P as u32)) * inverse(den) % P;
         let mut power = 0;
         for (v, e) in m.factors() {
-            if v.name() == x {
+            if *v == main {
                 power = e as usize;
             } else {
-                value = value * pow(substitute(v.name()), u64::from(e)) % P;
+                let r = match residues.iter().find(|(w, _)| w == v) {
+                    Some(&(_, r)) => r,
+                    None => {
+                        let r = substitute(v.name());
+                        residues.push((*v, r));
+                        r
+                    }
+                };
+                value = value * pow(r, u64::from(e)) % P;
             }
         }
         out[power] = (out[power] + value) % P;

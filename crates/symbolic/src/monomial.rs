@@ -19,9 +19,16 @@ use crate::var::Var;
 #[derive(Clone, Default, PartialEq, Eq, Hash)]
 pub struct Monomial {
     factors: Vec<(Var, u32)>,
+    /// The total degree, `Σ eᵢ` (kept: the order compares it first).
+    degree: u64,
 }
 
 impl Monomial {
+    fn from_factors(factors: Vec<(Var, u32)>) -> Monomial {
+        let degree = factors.iter().map(|(_, e)| u64::from(*e)).sum();
+        Monomial { factors, degree }
+    }
+
     /// The monomial `1`.
     pub fn one() -> Monomial {
         Monomial::default()
@@ -34,6 +41,7 @@ impl Monomial {
         } else {
             Monomial {
                 factors: vec![(v, e)],
+                degree: u64::from(e),
             }
         }
     }
@@ -45,7 +53,7 @@ impl Monomial {
 
     /// Total degree.
     pub fn degree(&self) -> u64 {
-        self.factors.iter().map(|(_, e)| u64::from(*e)).sum()
+        self.degree
     }
 
     /// The exponent of the variable `name` (0 when absent).
@@ -85,7 +93,10 @@ impl Monomial {
         }
         out.extend_from_slice(&a[i..]);
         out.extend_from_slice(&b[j..]);
-        Monomial { factors: out }
+        Monomial {
+            factors: out,
+            degree: self.degree + other.degree,
+        }
     }
 
     /// `self / other` when `other` divides `self`.
@@ -109,7 +120,10 @@ impl Monomial {
         if rest.next().is_some() {
             return None;
         }
-        Some(Monomial { factors: out })
+        Some(Monomial {
+            factors: out,
+            degree: self.degree - other.degree,
+        })
     }
 
     /// The greatest common divisor (minimum exponents).
@@ -122,14 +136,14 @@ impl Monomial {
                 (f > 0).then(|| (v.clone(), (*e).min(f)))
             })
             .collect();
-        Monomial { factors }
+        Monomial::from_factors(factors)
     }
 
     /// `(inside, outside)`: the factors whose variable satisfies `keep`, and
     /// the others (`self = inside · outside`).
     pub fn partition(&self, keep: impl Fn(&Var) -> bool) -> (Monomial, Monomial) {
         let (inside, outside) = self.factors.iter().cloned().partition(|(v, _)| keep(v));
-        (Monomial { factors: inside }, Monomial { factors: outside })
+        (Monomial::from_factors(inside), Monomial::from_factors(outside))
     }
 
     /// The monomial without the variable `name`, and the exponent it had.
@@ -147,7 +161,13 @@ impl Monomial {
             })
             .cloned()
             .collect();
-        (Monomial { factors }, e)
+        (
+            Monomial {
+                factors,
+                degree: self.degree - u64::from(e),
+            },
+            e,
+        )
     }
 }
 
@@ -169,8 +189,8 @@ fn lex(a: &[(Var, u32)], b: &[(Var, u32)]) -> Ordering {
 
 impl Ord for Monomial {
     fn cmp(&self, other: &Self) -> Ordering {
-        self.degree()
-            .cmp(&other.degree())
+        self.degree
+            .cmp(&other.degree)
             .then_with(|| lex(&self.factors, &other.factors))
     }
 }
