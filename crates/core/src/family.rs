@@ -29,6 +29,22 @@ pub enum Family {
     Seed003,
 }
 
+/// A family's formula: the `N` functions at the atoms `s = sin θ`,
+/// `c = cos θ`, `t` and the parameters (see [`Family::with_formula`]).
+pub trait Formula<T, const N: usize>: Fn(&T, &T, &T, &[T]) -> [T; N] {}
+
+impl<T, const N: usize, F: Fn(&T, &T, &T, &[T]) -> [T; N]> Formula<T, N> for F {}
+
+/// Receives a family's formula, whatever its number of functions
+/// ([`Family::with_formula`]).
+pub trait FormulaVisitor<T> {
+    /// What the visitor makes of the formula.
+    type Output;
+
+    /// Uses `formula`.
+    fn visit<const N: usize>(self, formula: impl Formula<T, N>) -> Self::Output;
+}
+
 /// Static description of a family.
 #[derive(Debug, Clone, Copy)]
 pub struct FamilyInfo {
@@ -324,22 +340,44 @@ impl Family {
     /// If `p` has the wrong length or the family has no formulas: callers
     /// validate first ([`Family::params_from_pairs`]).
     pub fn eval<T: Ring>(&self, x: &Atoms<T>, p: &[T]) -> Vec<T> {
-        let Atoms { s, c, t, .. } = x;
+        /// Collects the functions at one point.
+        struct AtPoint<'a, T>(&'a Atoms<T>, &'a [T]);
+        impl<T> FormulaVisitor<T> for AtPoint<'_, T> {
+            type Output = Vec<T>;
+            fn visit<const N: usize>(self, formula: impl Formula<T, N>) -> Vec<T> {
+                let Atoms { s, c, t, .. } = self.0;
+                formula(s, c, t, self.1).into()
+            }
+        }
         assert_eq!(p.len(), self.info().params.len(), "parameter count");
+        self.with_formula(AtPoint(x, p))
+    }
+
+    /// Hands the family's formula, as a function of the atoms `s, c, t` and
+    /// the parameters, to `visitor`: the one place where a family is tied
+    /// to its formula, for [`Family::eval`] and the batch evaluator
+    /// ([`crate::batch`]), which runs it over many points without
+    /// allocating.
+    ///
+    /// # Panics
+    /// If the family has no formulas.
+    pub fn with_formula<T: Ring, V: FormulaVisitor<T>>(&self, visitor: V) -> V::Output {
         match self {
-            Family::ThesisQuadratic => thesis::quadratic(s, c, &p[0]).to_vec(),
-            Family::ThesisCubic => thesis::cubic(s, c, &p[0]).to_vec(),
-            Family::Han => thesis::han(s, c, &p[0]).to_vec(),
-            Family::MajeedQayyum => thesis::majeed_qayyum(s, c, &p[0]).to_vec(),
-            Family::Usman => thesis::usman(s, c, &p[0]).to_vec(),
-            Family::HanListing => thesis::han_listing(s, c, &p[0]).to_vec(),
-            Family::Seed000Blending => seed000::blending(s, c, &p[0]).to_vec(),
-            Family::Seed000Uniform => seed000::uniform(s, c, &p[0]).to_vec(),
-            Family::Seed002Quartic => seed002::quartic(s, c).to_vec(),
-            Family::Eh => seed004::eh(t, &p[0], &p[1]).to_vec(),
-            Family::Hermite => seed004::hermite(t).to_vec(),
-            Family::Bernstein3 => reference::bernstein3(t).to_vec(),
-            Family::BSpline3 => reference::bspline3(t).to_vec(),
+            Family::ThesisQuadratic => visitor.visit(|s, c, _, p| thesis::quadratic(s, c, &p[0])),
+            Family::ThesisCubic => visitor.visit(|s, c, _, p| thesis::cubic(s, c, &p[0])),
+            Family::Han => visitor.visit(|s, c, _, p| thesis::han(s, c, &p[0])),
+            Family::MajeedQayyum => {
+                visitor.visit(|s, c, _, p| thesis::majeed_qayyum(s, c, &p[0]))
+            }
+            Family::Usman => visitor.visit(|s, c, _, p| thesis::usman(s, c, &p[0])),
+            Family::HanListing => visitor.visit(|s, c, _, p| thesis::han_listing(s, c, &p[0])),
+            Family::Seed000Blending => visitor.visit(|s, c, _, p| seed000::blending(s, c, &p[0])),
+            Family::Seed000Uniform => visitor.visit(|s, c, _, p| seed000::uniform(s, c, &p[0])),
+            Family::Seed002Quartic => visitor.visit(|s, c, _, _| seed002::quartic(s, c)),
+            Family::Eh => visitor.visit(|_, _, t, p| seed004::eh(t, &p[0], &p[1])),
+            Family::Hermite => visitor.visit(|_, _, t, _| seed004::hermite(t)),
+            Family::Bernstein3 => visitor.visit(|_, _, t, _| reference::bernstein3(t)),
+            Family::BSpline3 => visitor.visit(|_, _, t, _| reference::bspline3(t)),
             Family::Seed003 => panic!("seed003 has no formulas"),
         }
     }

@@ -20,6 +20,7 @@
 
 pub mod angles;
 pub mod basis;
+pub mod batch;
 pub mod certified;
 pub mod curve;
 pub mod decimal;
@@ -35,6 +36,7 @@ pub mod mpfr;
 pub mod param;
 pub mod piecewise;
 pub mod scalar;
+pub mod sincos;
 pub mod surface;
 pub mod variable;
 
@@ -42,8 +44,9 @@ pub use basis::Basis;
 pub use decimal::Decimal;
 pub use domain::{Affine, Domain};
 pub use echo::echo;
+pub use batch::Batch;
 pub use error::{CoreError, Result};
-pub use family::{Family, FamilyInfo, SEED000_NONUNIFORM, catalog};
+pub use family::{Family, FamilyInfo, Formula, FormulaVisitor, SEED000_NONUNIFORM, catalog};
 pub use interval::{Fault, Interval};
 pub use mpfr::Mpfr;
 pub use param::{Bound, ParamSpec, Range, parse_exact};
