@@ -9,7 +9,7 @@
 
 use std::cmp::Ordering;
 use std::fmt;
-use std::ops::{Add, Div, Mul, Neg, Sub};
+use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 
 use rug::Float;
 use rug::float::Constant;
@@ -60,13 +60,22 @@ impl PartialOrd for Mpfr {
     }
 }
 
+/// `a op b` at the larger precision of the operands, correctly rounded.
+/// When the left operand is owned and at least as precise, the result is
+/// computed in its storage (`a op= b`, the same rounding) instead of a new
+/// allocation: formulas written with owned left operands allocate only for
+/// their clones.
 macro_rules! binary_op {
-    ($Trait:ident, $method:ident) => {
+    ($Trait:ident, $method:ident, $assign:ident) => {
         impl $Trait<&Mpfr> for Mpfr {
             type Output = Mpfr;
-            fn $method(self, rhs: &Mpfr) -> Mpfr {
-                let prec = self.prec().max(rhs.prec());
-                Mpfr(Float::with_val(prec, (&self.0).$method(&rhs.0)))
+            fn $method(mut self, rhs: &Mpfr) -> Mpfr {
+                if self.prec() >= rhs.prec() {
+                    self.0.$assign(&rhs.0);
+                    self
+                } else {
+                    Mpfr(Float::with_val(rhs.prec(), (&self.0).$method(&rhs.0)))
+                }
             }
         }
         impl $Trait<Mpfr> for Mpfr {
@@ -78,10 +87,10 @@ macro_rules! binary_op {
     };
 }
 
-binary_op!(Add, add);
-binary_op!(Sub, sub);
-binary_op!(Mul, mul);
-binary_op!(Div, div);
+binary_op!(Add, add, add_assign);
+binary_op!(Sub, sub, sub_assign);
+binary_op!(Mul, mul, mul_assign);
+binary_op!(Div, div, div_assign);
 
 impl Neg for Mpfr {
     type Output = Mpfr;
@@ -160,6 +169,22 @@ mod tests {
         // 1/3 is built exactly then rounded once: 3·(1/3) − 1 is a single ulp at most.
         let err = (third * &x.int(3) - &x.int(1)).to_f64().abs();
         assert!(err < 1e-75, "{err}");
+    }
+
+    #[test]
+    fn operations_round_once_at_the_larger_precision() {
+        let third = |prec| Mpfr::from_rational(prec, &rug::Rational::from((1, 3)));
+        let (a, b) = (third(64), third(256));
+        for (got, want) in [
+            (a.clone() * &b, Float::with_val(256, &a.0 * &b.0)),
+            (b.clone() * &a, Float::with_val(256, &b.0 * &a.0)),
+            (b.clone() - &a, Float::with_val(256, &b.0 - &a.0)),
+            (a.clone() / &b, Float::with_val(256, &a.0 / &b.0)),
+            (b.clone() + &b, Float::with_val(256, &b.0 + &b.0)),
+        ] {
+            assert_eq!(got.prec(), 256);
+            assert_eq!(got.0, want);
+        }
     }
 
     #[test]
