@@ -69,6 +69,25 @@ pub fn run(args: &[&str]) -> Output {
         .expect("run trig-audit")
 }
 
+/// Runs `trig-audit` with `input` on its standard input.
+pub fn run_with_input(args: &[&str], input: &str) -> Output {
+    use std::io::Write;
+    let mut child = Command::new(binary())
+        .args(args)
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("run trig-audit");
+    child
+        .stdin
+        .take()
+        .expect("piped standard input")
+        .write_all(input.as_bytes())
+        .expect("write standard input");
+    child.wait_with_output().expect("wait for trig-audit")
+}
+
 /// Runs `trig-audit`, asserts success, returns standard output.
 pub fn stdout_ok(args: &[&str]) -> String {
     let out = run(args);

@@ -1,6 +1,6 @@
 //! End-to-end tests of `trig-audit list` and `trig-audit eval`.
 
-use trig_e2e::{FAMILIES, assert_errors, error_line, stdout_ok};
+use trig_e2e::{FAMILIES, assert_errors, error_line, example, run_with_input, stdout_ok};
 
 #[test]
 fn list_shows_every_catalog_entry_with_citations() {
@@ -196,4 +196,101 @@ fn uniform_knots_make_the_printed_c_j2_divide_by_zero() {
         "8.5",
     ]);
     assert!(err.contains("division by zero in c_{8,2}"), "{err}");
+}
+
+/// `--at-file` (and `-` for standard input) gives, for every point, the
+/// same digits as `--at` at that point: one batch, same values.
+#[test]
+fn eval_at_file_matches_eval_at_each_point() {
+    let points = ["0", "0.25", "1/3", "0.9", "1"];
+    let path = std::env::temp_dir().join(format!("trig-e2e-points-{}.txt", std::process::id()));
+    std::fs::write(&path, format!("# u\n{}\n\n", points.join("\n"))).expect("write points");
+    let file = path.display().to_string();
+    for prec in [None, Some("200")] {
+        let mut args = vec!["eval", "han", "--param", "lambda=-1/2", "--at-file", &file];
+        args.extend(prec.iter().flat_map(|p| ["--prec", *p]));
+        let out = stdout_ok(&args);
+        let mut lines = out.lines();
+        assert!(
+            lines
+                .next()
+                .expect("title")
+                .starts_with("# han at 5 points [lambda=-1/2]")
+        );
+        assert_eq!(lines.next(), Some("# at\tb0\tb1\tb2\tb3"));
+        for (line, at) in lines.zip(points) {
+            let mut one = vec!["eval", "han", "--param", "lambda=-1/2", "--at", at];
+            one.extend(prec.iter().flat_map(|p| ["--prec", *p]));
+            let single = stdout_ok(&one);
+            let values: Vec<&str> = single.lines().skip(1).map(|l| &l[5..]).collect();
+            let row: Vec<&str> = line.split('\t').collect();
+            assert_eq!(row[0], at);
+            if prec.is_some() {
+                // MPFR: the batch runs the same operations, so the same digits
+                assert_eq!(row[1..], values[..], "at {at}");
+            } else {
+                // f64: sin/cos from the batch kernel, within 3 ulp of libm's
+                for (b, v) in row[1..].iter().zip(&values) {
+                    let (b, v): (f64, f64) = (b.parse().unwrap(), v.parse().unwrap());
+                    assert!((b - v).abs() < 1e-14, "at {at}: {b} vs {v}");
+                }
+            }
+        }
+    }
+    let piped = run_with_input(
+        &[
+            "eval",
+            "han",
+            "--param",
+            "lambda=-1/2",
+            "--at-file",
+            "-",
+            "--format",
+            "json",
+        ],
+        "0.25\n1\n",
+    );
+    assert!(piped.status.success());
+    let json: serde_json::Value = serde_json::from_slice(&piped.stdout).expect("JSON");
+    assert_eq!(json["at"], serde_json::json!(["0.25", "1"]));
+    assert_eq!(json["values"]["b3"].as_array().map(Vec::len), Some(2));
+    let spec = stdout_ok(&[
+        "eval",
+        "--spec",
+        &example("thesis-cubic.toml"),
+        "--param",
+        "m=0.6",
+        "--at-file",
+        &file,
+    ]);
+    assert_eq!(spec.lines().count(), 2 + points.len());
+    std::fs::write(&path, "0.5\n2\n").expect("write points");
+    assert_errors(&[
+        (
+            &["eval", "han", "--param", "lambda=0", "--at-file", &file],
+            "point 2 is outside the domain",
+        ),
+        (
+            &[
+                "eval",
+                "han",
+                "--param",
+                "lambda=0",
+                "--at-file",
+                "/nonexistent/points",
+            ],
+            "cannot read /nonexistent/points",
+        ),
+        (
+            &["eval", "bspline3", "--piecewise", "--at-file", &file],
+            "--at-file evaluates the functions",
+        ),
+    ]);
+    let bad = run_with_input(
+        &["eval", "han", "--param", "lambda=0", "--at-file", "-"],
+        "x\n",
+    );
+    let err = String::from_utf8_lossy(&bad.stderr);
+    assert!(err.contains("standard input line 1"), "{err}");
+    let _ = std::fs::remove_file(&path);
 }

@@ -37,7 +37,9 @@ fn bench(c: &mut Criterion) {
     let mut out = vec![0.0; 4 * POINTS];
     group.bench_function("thesis_cubic_batch_f64", |b| {
         b.iter(|| {
-            batch.eval_into(black_box(&xs), &mut out).expect("in domain");
+            batch
+                .eval_into(black_box(&xs), &mut out)
+                .expect("in domain");
             black_box(out[POINTS / 2])
         })
     });
@@ -45,7 +47,9 @@ fn bench(c: &mut Criterion) {
         b.iter(|| {
             let mut acc = 0.0;
             for x in &xs {
-                acc += Family::ThesisCubic.eval_at(x, &m, false).expect("in domain")[1];
+                acc += Family::ThesisCubic
+                    .eval_at(x, &m, false)
+                    .expect("in domain")[1];
             }
             black_box(acc)
         })
@@ -76,14 +80,20 @@ fn bench(c: &mut Criterion) {
     let mut out = vec![like.clone(); 4 * MPFR_POINTS];
     group.bench_function("thesis_cubic_batch_mpfr336", |b| {
         b.iter(|| {
-            batch.eval_into(black_box(&mxs), &mut out).expect("in domain");
+            batch
+                .eval_into(black_box(&mxs), &mut out)
+                .expect("in domain");
             black_box(&out[MPFR_POINTS / 2]);
         })
     });
     group.bench_function("thesis_cubic_eval_at_mpfr336", |b| {
         b.iter(|| {
             for x in &mxs {
-                black_box(Family::ThesisCubic.eval_at(x, &m, false).expect("in domain"));
+                black_box(
+                    Family::ThesisCubic
+                        .eval_at(x, &m, false)
+                        .expect("in domain"),
+                );
             }
         })
     });

@@ -79,7 +79,8 @@ impl BatchReal for Mpfr {
 pub struct Batch<T> {
     family: Family,
     variable: Variable,
-    exact: Vec<Rational>,
+    /// The parameters as given, for error messages.
+    labels: Vec<String>,
     params: Vec<T>,
     /// `dθ/dx`: `π/2` for `u`, 1 for the angle.
     rate: T,
@@ -100,6 +101,20 @@ impl<T: BatchReal> Batch<T> {
         like: &T,
         allow_outside: bool,
     ) -> Result<Batch<T>> {
+        let values = params.iter().map(|q| like.rational(q)).collect();
+        let mut batch = Batch::from_values(family, values, like, allow_outside)?;
+        batch.labels = params.iter().map(ToString::to_string).collect();
+        Ok(batch)
+    }
+
+    /// The family with parameters already in the scalar type (e.g. a shape
+    /// parameter found by optimisation), otherwise as [`Batch::new`].
+    pub fn from_values(
+        family: Family,
+        params: Vec<T>,
+        like: &T,
+        allow_outside: bool,
+    ) -> Result<Batch<T>> {
         let info = family.info();
         if !family.has_formulas() {
             return Err(CoreError::NoFormulas(info.id.to_string()));
@@ -115,8 +130,8 @@ impl<T: BatchReal> Batch<T> {
         Ok(Batch {
             family,
             variable: info.variable,
-            exact: params.to_vec(),
-            params: params.iter().map(|q| like.rational(q)).collect(),
+            labels: params.iter().map(|p| p.to_f64().to_string()).collect(),
+            params,
             rate: info.variable.angle_rate(like),
             allow_outside,
             sin: vec![zero.clone(); CHUNK],
@@ -152,11 +167,45 @@ impl<T: BatchReal> Batch<T> {
         }
         // Fast path: every point in the domain (NaN fails the comparisons).
         let (zero, end) = (self.rate.int(0), self.variable.end(&self.rate));
-        if !xs.iter().fold(true, |ok, x| ok & (*x >= zero) & (*x <= end)) {
+        if !xs
+            .iter()
+            .fold(true, |ok, x| ok & (*x >= zero) & (*x <= end))
+        {
             for x in xs {
                 self.variable.check_point(x, self.allow_outside)?;
             }
         }
+        if !self.fill(xs, out) {
+            let at = self
+                .family
+                .info()
+                .params
+                .iter()
+                .zip(&self.labels)
+                .map(|(s, v)| format!("{}={v}", s.name))
+                .collect::<Vec<_>>()
+                .join(", ");
+            return Err(CoreError::DivisionByZero {
+                quantity: format!("`{}` at {at}", self.family.info().id),
+            });
+        }
+        Ok(())
+    }
+
+    /// The formula's values at every point, without the checks of
+    /// [`Batch::eval_into`] (as [`Family::eval`] is to
+    /// [`Family::eval_at`]): any point, and non-finite values as they come.
+    ///
+    /// # Panics
+    /// If `out.len()` is not [`Batch::functions`] × `xs.len()`.
+    pub fn values_into(&mut self, xs: &[T], out: &mut [T]) {
+        assert_eq!(out.len(), self.functions() * xs.len(), "output length");
+        self.fill(xs, out);
+    }
+
+    /// Fills `out`; true when every value is finite.
+    fn fill(&mut self, xs: &[T], out: &mut [T]) -> bool {
+        let len = xs.len();
         let mut finite = true;
         for start in (0..len).step_by(CHUNK) {
             let chunk = &xs[start..len.min(start + CHUNK)];
@@ -183,21 +232,7 @@ impl<T: BatchReal> Batch<T> {
                 start,
             });
         }
-        if !finite {
-            let at = self
-                .family
-                .info()
-                .params
-                .iter()
-                .zip(&self.exact)
-                .map(|(s, v)| format!("{}={v}", s.name))
-                .collect::<Vec<_>>()
-                .join(", ");
-            return Err(CoreError::DivisionByZero {
-                quantity: format!("`{}` at {at}", self.family.info().id),
-            });
-        }
-        Ok(())
+        finite
     }
 
     /// Every function at every point, as a new function-major vector (see
@@ -344,8 +379,7 @@ mod tests {
             Err(CoreError::NoFormulas(_))
         ));
         // β = −1 makes β/(β+1) divide by zero
-        let mut pole =
-            Batch::new(Family::ThesisQuadratic, &exact(&[(-1, 1)]), &0.0, true).unwrap();
+        let mut pole = Batch::new(Family::ThesisQuadratic, &exact(&[(-1, 1)]), &0.0, true).unwrap();
         assert!(matches!(
             pole.eval(&[0.5]),
             Err(CoreError::DivisionByZero { .. })

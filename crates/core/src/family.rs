@@ -366,9 +366,7 @@ impl Family {
             Family::ThesisQuadratic => visitor.visit(|s, c, _, p| thesis::quadratic(s, c, &p[0])),
             Family::ThesisCubic => visitor.visit(|s, c, _, p| thesis::cubic(s, c, &p[0])),
             Family::Han => visitor.visit(|s, c, _, p| thesis::han(s, c, &p[0])),
-            Family::MajeedQayyum => {
-                visitor.visit(|s, c, _, p| thesis::majeed_qayyum(s, c, &p[0]))
-            }
+            Family::MajeedQayyum => visitor.visit(|s, c, _, p| thesis::majeed_qayyum(s, c, &p[0])),
             Family::Usman => visitor.visit(|s, c, _, p| thesis::usman(s, c, &p[0])),
             Family::HanListing => visitor.visit(|s, c, _, p| thesis::han_listing(s, c, &p[0])),
             Family::Seed000Blending => visitor.visit(|s, c, _, p| seed000::blending(s, c, &p[0])),

@@ -6,7 +6,7 @@
 //! or the polynomial variable itself (Bernstein). The functions are those of
 //! [`Family::eval`] — never re-typed here.
 
-use trig_core::Family;
+use trig_core::{Batch, Family};
 use trig_deriv::table::{End, Wrt, endpoint_derivatives};
 
 use crate::error::{FitError, Result};
@@ -87,10 +87,21 @@ impl SegmentBasis {
 
     /// `b₀(t) … b₃(t)` at the local parameter `t ∈ [0, 1]`.
     pub fn values(&self, t: f64) -> [f64; 4] {
-        let x = t * self.end;
-        let atoms = self.family.info().variable.atoms(&x);
-        let v = self.family.eval(&atoms, &self.params);
-        [v[0], v[1], v[2], v[3]]
+        self.values_at(&[t])[0]
+    }
+
+    /// `b₀ … b₃` at every local parameter of `ts`, in one batch
+    /// ([`Batch`]: parameters converted once, vectorised `sin`/`cos`).
+    pub fn values_at(&self, ts: &[f64]) -> Vec<[f64; 4]> {
+        let xs: Vec<f64> = ts.iter().map(|t| t * self.end).collect();
+        let mut batch = Batch::from_values(self.family, self.params.clone(), &0.0, true)
+            .expect("checked by SegmentBasis::new: formulas, parameter count");
+        let mut out = vec![0.0; 4 * xs.len()];
+        batch.values_into(&xs, &mut out);
+        let n = xs.len();
+        (0..n)
+            .map(|i| [out[i], out[n + i], out[2 * n + i], out[3 * n + i]])
+            .collect()
     }
 
     /// First derivatives `dbᵢ/dt` at `t = 0` and at `t = 1` (Taylor jets of

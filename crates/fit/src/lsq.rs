@@ -25,7 +25,7 @@ pub type Control = [P2; 4];
 
 /// The basis values `b₀(tᵢ) … b₃(tᵢ)` at every parameter (the design matrix).
 pub fn design(basis: &SegmentBasis, t: &[f64]) -> Vec<[f64; 4]> {
-    t.iter().map(|&ti| basis.values(ti)).collect()
+    basis.values_at(t)
 }
 
 /// `Pᵢ − V₀b₀(tᵢ) − V₃b₃(tᵢ)`: the data less the fixed end control points.

@@ -228,8 +228,10 @@ impl OutlineFit {
                 };
                 let control: Control = c.map(|[x, y]| P2::new(x, y));
                 let n = samples.max(2);
-                Ok((0..n)
-                    .map(|i| curve_point(&basis.values(i as f64 / (n - 1) as f64), &control))
+                let t: Vec<f64> = (0..n).map(|i| i as f64 / (n - 1) as f64).collect();
+                Ok(design(&basis, &t)
+                    .iter()
+                    .map(|b| curve_point(b, &control))
                     .collect())
             })
             .collect()

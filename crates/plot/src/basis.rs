@@ -3,7 +3,7 @@
 
 use plotters::prelude::*;
 use rug::Rational;
-use trig_core::Family;
+use trig_core::{Batch, Family};
 
 use crate::error::{Result, draw};
 use crate::style::{SIZE, chart, colour, legend, padded, settings};
@@ -29,16 +29,17 @@ pub fn basis_svg(family: Family, values: &[Rational], allow_outside: bool) -> Re
         family.params_from_pairs(&pairs, allow_outside)?;
     }
     let end = info.variable.end(&1.0_f64);
+    let xs: Vec<f64> = (0..SAMPLES)
+        .map(|i| end * i as f64 / (SAMPLES - 1) as f64)
+        .collect();
     let mut series = Vec::new();
     for s in &settings {
-        let mut curves = vec![Vec::with_capacity(SAMPLES); info.functions.len()];
-        for i in 0..SAMPLES {
-            let x = end * i as f64 / (SAMPLES - 1) as f64;
-            let b = family.eval_at(&x, s, true)?;
-            for (curve, v) in curves.iter_mut().zip(b) {
-                curve.push((x, v));
-            }
-        }
+        // function-major: one slice of SAMPLES values per function
+        let values = Batch::new(family, s, &0.0, true)?.eval(&xs)?;
+        let curves: Vec<Vec<(f64, f64)>> = values
+            .chunks(SAMPLES)
+            .map(|column| xs.iter().copied().zip(column.iter().copied()).collect())
+            .collect();
         series.push((s.clone(), curves));
     }
     let (ylo, yhi) = padded(

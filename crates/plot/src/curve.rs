@@ -4,7 +4,7 @@
 
 use plotters::prelude::*;
 use rug::Rational;
-use trig_core::Family;
+use trig_core::{Batch, Family};
 
 use crate::error::{PlotError, Result, draw};
 use crate::style::{SIZE, chart, colour, equal_aspect, legend, padded, settings};
@@ -48,15 +48,23 @@ pub fn curve_svg(
             .map(|(p, v)| (p.name.to_string(), v.to_string()))
             .collect();
         family.params_from_pairs(&pairs, allow_outside)?;
-        let mut pts = Vec::with_capacity(SAMPLES);
-        for i in 0..SAMPLES {
-            let x = end * i as f64 / (SAMPLES - 1) as f64;
-            let b = family.eval_at(&x, s, true)?;
-            let p = b.iter().zip(control).fold((0.0, 0.0), |acc, (bi, v)| {
-                (acc.0 + bi * v.0, acc.1 + bi * v.1)
-            });
-            pts.push(p);
-        }
+        let xs: Vec<f64> = (0..SAMPLES)
+            .map(|i| end * i as f64 / (SAMPLES - 1) as f64)
+            .collect();
+        // function-major: b_k at every sample is values[k·SAMPLES..]
+        let values = Batch::new(family, s, &0.0, true)?.eval(&xs)?;
+        let pts: Vec<(f64, f64)> = (0..SAMPLES)
+            .map(|i| {
+                values
+                    .iter()
+                    .skip(i)
+                    .step_by(SAMPLES)
+                    .zip(control)
+                    .fold((0.0, 0.0), |acc, (bi, v)| {
+                        (acc.0 + bi * v.0, acc.1 + bi * v.1)
+                    })
+            })
+            .collect();
         curves.push((s.clone(), pts));
     }
     let all = || {

@@ -143,7 +143,10 @@ impl Monomial {
     /// the others (`self = inside · outside`).
     pub fn partition(&self, keep: impl Fn(&Var) -> bool) -> (Monomial, Monomial) {
         let (inside, outside) = self.factors.iter().cloned().partition(|(v, _)| keep(v));
-        (Monomial::from_factors(inside), Monomial::from_factors(outside))
+        (
+            Monomial::from_factors(inside),
+            Monomial::from_factors(outside),
+        )
     }
 
     /// The monomial without the variable `name`, and the exponent it had.

@@ -8,8 +8,8 @@
 //! (`P2` before `P10`), then by the whole name.
 
 use std::cmp::Ordering;
-use std::fmt;
 use std::collections::HashMap;
+use std::fmt;
 use std::hash::{Hash, Hasher};
 use std::sync::{Mutex, OnceLock, PoisonError};
 

@@ -17,6 +17,8 @@ use trig_spec::Spec;
 use super::{CliError, CmdResult};
 use crate::format::{TextOrJson, json};
 
+mod points;
+
 /// Largest precision accepted (MPFR allows more; this keeps output sane).
 const MAX_PREC: u32 = 1 << 16;
 
@@ -33,8 +35,18 @@ pub struct EvalArgs {
     params: Vec<String>,
     /// Point in the family's native variable (with --piecewise or --knots: the
     /// global knot parameter).
-    #[arg(long, allow_hyphen_values = true)]
-    at: String,
+    #[arg(
+        long,
+        allow_hyphen_values = true,
+        required_unless_present = "at_file",
+        conflicts_with = "at_file"
+    )]
+    at: Option<String>,
+    /// Evaluate at every point listed in FILE instead (`-`: standard input):
+    /// one number per line, read exactly like --at; blank lines and lines
+    /// starting with `#` are skipped. All points go through one batch.
+    #[arg(long, value_name = "FILE")]
+    at_file: Option<std::path::PathBuf>,
     /// Evaluate in MPFR with this many bits instead of f64.
     #[arg(long)]
     prec: Option<u32>,
@@ -199,7 +211,10 @@ struct Evaluation {
 }
 
 pub fn run(args: &EvalArgs) -> CmdResult {
-    let at = parse_exact(&args.at)?;
+    if let Some(path) = &args.at_file {
+        return points::run(args, path);
+    }
+    let at = parse_exact(args.at.as_deref().unwrap_or_default())?;
     let eval = match args.prec {
         None => evaluate(args, &at, |q| q.to_f64())?,
         Some(bits) if (2..=MAX_PREC).contains(&bits) => {
@@ -321,7 +336,7 @@ fn render(args: &EvalArgs, e: &Evaluation) -> String {
                 "family": e.id,
                 "citation": e.citation,
                 "params": params.iter().map(|(n, v)| (n.clone(), json!(v))).collect::<serde_json::Map<_, _>>(),
-                "at": args.at,
+                "at": args.at.as_deref().unwrap_or_default(),
                 "precision": precision,
                 "note": e.note,
                 "values": values,
@@ -334,7 +349,7 @@ fn render(args: &EvalArgs, e: &Evaluation) -> String {
                 out,
                 "{} at {} [{}] ({precision}){}",
                 e.id,
-                args.at,
+                args.at.as_deref().unwrap_or_default(),
                 shown.join(", "),
                 e.note.as_ref().map_or(String::new(), |n| format!("; {n}"))
             );
