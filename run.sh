@@ -7,27 +7,77 @@
 #   ./run.sh lint              rustfmt check and clippy with -D warnings
 #   ./run.sh bench             criterion benchmarks (figures in BENCHMARKS.md)
 #   ./run.sh figures           redraw the figures the audit report links (docs/figures/)
+#
+# Standard output carries only the command's own output (the report):
+# installers and cargo's build progress go to standard error.
 set -euo pipefail
 cd "$(dirname "$0")"
 
-ensure_m4() {
-  # GMP's build (behind rug) needs m4.
-  if command -v m4 >/dev/null 2>&1; then return; fi
-  echo "run.sh: installing m4 (needed to build GMP/MPFR)" >&2
-  local sudo=""
-  if [ "$(id -u)" != 0 ]; then sudo="sudo"; fi
-  $sudo apt-get update -qq
-  $sudo apt-get install -y -qq m4
+as_root() {
+  if [ "$(id -u)" = 0 ]; then "$@"; else sudo "$@"; fi
+}
+
+# apt-get quietly, every line it prints on standard error.
+install_packages() {
+  echo "run.sh: installing $* (apt-get)" >&2
+  {
+    as_root apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive as_root apt-get install -y -qq "$@"
+  } >&2
+}
+
+# True when the system's GMP and MPFR headers are recent enough for
+# gmp-mpfr-sys 1.7 (GMP >= 6.3, MPFR >= 4.2): then rug links them.
+system_gmp_usable() {
+  command -v cc >/dev/null 2>&1 || return 1
+  printf '%s\n' '#include <gmp.h>' '#include <mpfr.h>' \
+    '#if __GNU_MP_VERSION < 6 || (__GNU_MP_VERSION == 6 && __GNU_MP_VERSION_MINOR < 3)' \
+    '#error GMP older than 6.3' '#endif' \
+    '#if MPFR_VERSION < MPFR_VERSION_NUM(4, 2, 0)' '#error MPFR older than 4.2' '#endif' |
+    cc -E -x c - >/dev/null 2>&1
+}
+
+# GMP and MPFR behind rug: the distribution's libgmp-dev and libmpfr-dev when
+# they are (or can be installed) recent enough -- Debian 13 has GMP 6.3.0 and
+# MPFR 4.2.2; Debian 12's GMP 6.2.1 is too old for gmp-mpfr-sys 1.7 -- else
+# built from source once (needs m4), cached in ~/.cache/gmp-mpfr-sys and
+# without their own test suites (feature c-no-tests).
+FEATURES=()
+prepare_gmp() {
+  if system_gmp_usable; then
+    FEATURES=(--features trig-core/system-gmp)
+    return
+  fi
+  if command -v apt-cache >/dev/null 2>&1; then
+    local candidate
+    candidate=$(apt-cache policy libgmp-dev 2>/dev/null | awk '/Candidate:/ {print $2}')
+    if [ -n "$candidate" ] && [ "$candidate" != "(none)" ] &&
+      dpkg --compare-versions "$candidate" ge "2:6.3"; then
+      install_packages libgmp-dev libmpfr-dev
+      if system_gmp_usable; then
+        FEATURES=(--features trig-core/system-gmp)
+        return
+      fi
+    fi
+  fi
+  if ! command -v m4 >/dev/null 2>&1; then
+    install_packages m4
+  fi
 }
 
 cmd="${1:-}"
 shift || true
-ensure_m4
 case "$cmd" in
-  audit) cargo run --release --quiet -p trig-audit -- audit "$@" ;;
-  test)  cargo test --workspace --quiet ;;
-  lint)  cargo fmt --all --check && cargo clippy --workspace --all-targets --quiet -- -D warnings ;;
-  bench) cargo bench --workspace ;;
-  figures) TRIG_AUDIT_REDRAW_FIGURES=1 cargo test --quiet -p trig-e2e --test cli_figures ;;
+  audit | test | lint | bench | figures) prepare_gmp ;;
   *) echo "usage: ./run.sh audit|test|lint|bench|figures" >&2; exit 2 ;;
+esac
+case "$cmd" in
+  audit) cargo run --release -p trig-audit "${FEATURES[@]}" -- audit "$@" ;;
+  test) cargo test --workspace "${FEATURES[@]}" ;;
+  lint)
+    cargo fmt --all --check
+    cargo clippy --workspace --all-targets "${FEATURES[@]}" -- -D warnings
+    ;;
+  bench) cargo bench --workspace "${FEATURES[@]}" ;;
+  figures) TRIG_AUDIT_REDRAW_FIGURES=1 cargo test -p trig-e2e --test cli_figures "${FEATURES[@]}" ;;
 esac
