@@ -81,6 +81,8 @@ pub struct Batch<T> {
     variable: Variable,
     /// The parameters as given, for error messages.
     labels: Vec<String>,
+    /// The exact parameters, when given so ([`Batch::new`]).
+    exact: Option<Vec<Rational>>,
     params: Vec<T>,
     /// `dθ/dx`: `π/2` for `u`, 1 for the angle.
     rate: T,
@@ -104,6 +106,7 @@ impl<T: BatchReal> Batch<T> {
         let values = params.iter().map(|q| like.rational(q)).collect();
         let mut batch = Batch::from_values(family, values, like, allow_outside)?;
         batch.labels = params.iter().map(ToString::to_string).collect();
+        batch.exact = Some(params.to_vec());
         Ok(batch)
     }
 
@@ -131,6 +134,7 @@ impl<T: BatchReal> Batch<T> {
             family,
             variable: info.variable,
             labels: params.iter().map(|p| p.to_f64().to_string()).collect(),
+            exact: None,
             params,
             rate: info.variable.angle_rate(like),
             allow_outside,
@@ -185,8 +189,20 @@ impl<T: BatchReal> Batch<T> {
                 .map(|(s, v)| format!("{}={v}", s.name))
                 .collect::<Vec<_>>()
                 .join(", ");
-            return Err(CoreError::DivisionByZero {
-                quantity: format!("`{}` at {at}", self.family.info().id),
+            let quantity = format!("`{}` at {at}", self.family.info().id);
+            // the first point with a non-finite value, judged as eval_at does
+            let n = xs.len();
+            let first = (0..n)
+                .find(|&i| (0..self.functions()).any(|k| !out[k * n + i].is_finite()))
+                .unwrap_or(0);
+            return Err(match &self.exact {
+                Some(p) => crate::certified::nonfinite_error(
+                    &self.family,
+                    xs[first].to_f64(),
+                    p,
+                    quantity,
+                ),
+                None => CoreError::DivisionByZero { quantity },
             });
         }
         Ok(())
