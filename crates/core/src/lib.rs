@@ -41,10 +41,10 @@ pub mod surface;
 pub mod variable;
 
 pub use basis::Basis;
+pub use batch::Batch;
 pub use decimal::Decimal;
 pub use domain::{Affine, Domain};
 pub use echo::echo;
-pub use batch::Batch;
 pub use error::{CoreError, Result};
 pub use family::{Family, FamilyInfo, Formula, FormulaVisitor, SEED000_NONUNIFORM, catalog};
 pub use interval::{Fault, Interval};

@@ -42,9 +42,9 @@
 const REDUCE_LIMIT: f64 = 1_048_576.0;
 
 /// fdlibm's `pio2_1`: the first 33 bits of `π/2`.
-const PIO2_1: f64 = 1.570_796_326_734_125_614_17e0;
+const PIO2_1: f64 = 1.5707963267341256;
 /// fdlibm's `pio2_1t`: `π/2 − pio2_1`, rounded.
-const PIO2_1T: f64 = 6.077_100_506_506_192_249_32e-11;
+const PIO2_1T: f64 = 6.077100506506192e-11;
 /// `1.5·2⁵²`: adding it rounds to an integer (ties to even) and leaves
 /// that integer in the low bits of the mantissa.
 const ROUNDER: f64 = 6_755_399_441_055_744.0;
@@ -52,23 +52,23 @@ const ROUNDER: f64 = 6_755_399_441_055_744.0;
 /// fdlibm's `k_sin.c` coefficients `S1…S6`: on `|x| ≤ π/4`,
 /// `|sin x / x − (1 + x²·S(x²))| ≤ 2⁻⁵⁸` (the bound stated with them).
 const SIN_COEFFS: [f64; 6] = [
-    -1.666_666_666_666_663_243_48e-1,
-    8.333_333_333_322_489_461_24e-3,
-    -1.984_126_982_985_794_931_34e-4,
-    2.755_731_370_707_006_767_89e-6,
-    -2.505_076_025_340_686_341_95e-8,
-    1.589_690_995_211_550_102_21e-10,
+    -0.16666666666666632,
+    0.00833333333332249,
+    -0.0001984126982985795,
+    2.7557313707070068e-06,
+    -2.5050760253406863e-08,
+    1.58969099521155e-10,
 ];
 
 /// fdlibm's `k_cos.c` coefficients `C1…C6`: on `|x| ≤ π/4`,
 /// `|cos x − (1 − x²/2 + x⁴·C(x²))| ≤ 2⁻⁵⁸`.
 const COS_COEFFS: [f64; 6] = [
-    4.166_666_666_666_660_190_37e-2,
-    -1.388_888_888_887_410_957_49e-3,
-    2.480_158_728_947_672_941_78e-5,
-    -2.755_731_435_139_066_330_35e-7,
-    2.087_572_321_298_174_827_90e-9,
-    -1.135_964_755_778_819_482_65e-11,
+    0.0416666666666666,
+    -0.001388888888887411,
+    2.480158728947673e-05,
+    -2.7557314351390663e-07,
+    2.087572321298175e-09,
+    -1.1359647557788195e-11,
 ];
 
 /// `(sin θ, cos θ)` for `|θ| ≤ 2²⁰`, branch-free, for `LANES` angles
@@ -165,10 +165,8 @@ fn sin_cos_lanes<const LANES: usize>(theta: &mut [f64], cos: &mut [f64]) {
         reduced(&mut lanes, &mut lanes_cos);
         for (((ti, ci), &s), &co) in t.iter_mut().zip(c.iter_mut()).zip(&lanes).zip(&lanes_cos) {
             let x = *ti;
-            (*ti, *ci) = (s, co);
-            if far && !(x.abs() <= REDUCE_LIMIT) {
-                (*ti, *ci) = x.sin_cos();
-            }
+            let near = x.abs() <= REDUCE_LIMIT;
+            (*ti, *ci) = if far && !near { x.sin_cos() } else { (s, co) };
         }
     }
 }

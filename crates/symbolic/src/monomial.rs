@@ -77,15 +77,15 @@ impl Monomial {
         while i < a.len() && j < b.len() {
             match a[i].0.cmp(&b[j].0) {
                 Ordering::Less => {
-                    out.push(a[i].clone());
+                    out.push(a[i]);
                     i += 1;
                 }
                 Ordering::Greater => {
-                    out.push(b[j].clone());
+                    out.push(b[j]);
                     j += 1;
                 }
                 Ordering::Equal => {
-                    out.push((a[i].0.clone(), a[i].1 + b[j].1));
+                    out.push((a[i].0, a[i].1 + b[j].1));
                     i += 1;
                     j += 1;
                 }
@@ -114,7 +114,7 @@ impl Monomial {
             match e.cmp(&d) {
                 Ordering::Less => return None,
                 Ordering::Equal => {}
-                Ordering::Greater => out.push((v.clone(), e - d)),
+                Ordering::Greater => out.push((*v, e - d)),
             }
         }
         if rest.next().is_some() {
@@ -133,7 +133,7 @@ impl Monomial {
             .iter()
             .filter_map(|(v, e)| {
                 let f = other.exponent(v.name());
-                (f > 0).then(|| (v.clone(), (*e).min(f)))
+                (f > 0).then(|| (*v, (*e).min(f)))
             })
             .collect();
         Monomial::from_factors(factors)

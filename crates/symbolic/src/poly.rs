@@ -131,9 +131,9 @@ impl Poly {
             self.accumulate(m, q);
             return;
         };
-        let v = v.clone();
+        let v = *v;
         let (rest, _) = m.split(v.name());
-        let base = rest.mul(&Monomial::var(v.clone(), k % 2));
+        let base = rest.mul(&Monomial::var(v, k % 2));
         let j = k / 2;
         match v.square().expect("a reduced atom has a square rule") {
             (None, p) => {
@@ -147,7 +147,7 @@ impl Poly {
                     if i % 2 == 1 {
                         coef = -coef;
                     }
-                    self.add_term(base.mul(&Monomial::var(cosine.clone(), 2 * i)), coef);
+                    self.add_term(base.mul(&Monomial::var(cosine, 2 * i)), coef);
                     binom = binom * (j - i) / (i + 1);
                 }
             }
@@ -249,7 +249,7 @@ impl Poly {
         for m in self.terms.keys() {
             for (v, _) in m.factors() {
                 if v.is_reduced() && !out.contains(v) {
-                    out.push(v.clone());
+                    out.push(*v);
                 }
             }
         }
@@ -342,7 +342,7 @@ impl Poly {
         for (m, q) in &self.terms {
             let (rest, e) = m.split(name);
             if e > 0 {
-                let m = rest.mul(&Monomial::var(v.clone(), e - 1));
+                let m = rest.mul(&Monomial::var(v, e - 1));
                 out.add_term(m, Rational::from(q * e));
             }
         }

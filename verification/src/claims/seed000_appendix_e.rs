@@ -160,12 +160,8 @@ fn uniform() -> &'static [Vec<Vec<Sym>>] {
     static TABLE: OnceLock<Vec<Vec<Vec<Sym>>>> = OnceLock::new();
     TABLE.get_or_init(|| {
         rational_table(|end| {
-            let atoms = end_atoms::<Sym, THIRD>(
-                Family::Seed000Uniform,
-                end,
-                &Sym::one(),
-                &[zeta()],
-            );
+            let atoms =
+                end_atoms::<Sym, THIRD>(Family::Seed000Uniform, end, &Sym::one(), &[zeta()]);
             Family::Seed000Uniform.eval(&atoms, &[Jet::constant(zeta())])
         })
     })
