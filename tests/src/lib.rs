@@ -23,7 +23,7 @@ pub const FAMILIES: &[&str] = &[
 ];
 
 /// Path of the `trig-audit` binary in this workspace's target directory,
-/// built once (in the test profile's sibling `debug` directory) if missing.
+/// built once (in the test profile, `debug` directory) if missing.
 pub fn binary() -> PathBuf {
     static BIN: OnceLock<PathBuf> = OnceLock::new();
     BIN.get_or_init(|| {
@@ -35,9 +35,13 @@ pub fn binary() -> PathBuf {
             .map(PathBuf::from)
             .unwrap_or_else(|| root.join("target"));
         let status = Command::new(env!("CARGO"))
+            // the test profile: after `cargo test --workspace` (which
+            // builds the binary in that profile) this is a no-op
             .args([
                 "build",
                 "--quiet",
+                "--profile",
+                "test",
                 "-p",
                 "trig-audit",
                 "--bin",

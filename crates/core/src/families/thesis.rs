@@ -28,10 +28,13 @@ pub fn cubic<T: Ring>(s: &T, c: &T, m: &T) -> [T; 4] {
     let omc = one.clone() - c;
     let ms = m.clone() * s;
     let mc = m.clone() * c;
-    let b0 = oms.square() * &(one.clone() - &ms);
-    let b1 = ms * &oms.square() - &(two.clone() * s * &(s.clone() - &one));
-    let b2 = mc.clone() * &omc.square() - &(two * c * &(c.clone() - &one));
-    let b3 = omc.square() * &(one - &mc);
+    // (1−s)², (1−c)² formed once each (the same values in every ring)
+    let oms2 = oms.square();
+    let omc2 = omc.square();
+    let b0 = oms2.clone() * &(one.clone() - &ms);
+    let b1 = ms * &oms2 - &(two.clone() * s * &(s.clone() - &one));
+    let b2 = mc.clone() * &omc2 - &(two * c * &(c.clone() - &one));
+    let b3 = omc2 * &(one - &mc);
     [b0, b1, b2, b3]
 }
 
