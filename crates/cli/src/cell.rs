@@ -1,6 +1,6 @@
 //! Table cells: how exact and numeric values print in each output format.
 
-use trig_core::Mpfr;
+use trig_core::Decimal;
 use trig_symbolic::Sym;
 
 /// A value that can stand in a table.
@@ -54,24 +54,6 @@ impl Cell for Sym {
     }
 }
 
-impl Cell for f64 {
-    fn text(&self) -> String {
-        self.to_string()
-    }
-    fn latex(&self) -> String {
-        latex_number(&self.to_string())
-    }
-}
-
-impl Cell for Mpfr {
-    fn text(&self) -> String {
-        self.to_string()
-    }
-    fn latex(&self) -> String {
-        latex_number(&self.to_string())
-    }
-}
-
 /// `1.5e-3` → `1.5 \times 10^{-3}`.
 fn latex_number(s: &str) -> String {
     match s.split_once('e') {
@@ -80,14 +62,61 @@ fn latex_number(s: &str) -> String {
     }
 }
 
-/// A rendered table: a title, column headers, and labelled rows of cells
-/// already printed in the three styles.
+impl Rendered {
+    /// A number printed as `text` (an f64 or proved decimal digits).
+    pub fn number(text: &str) -> Self {
+        Rendered {
+            text: text.to_string(),
+            unicode: text.to_string(),
+            latex: latex_number(text),
+        }
+    }
+
+    /// What an enclosure proves: digits, `0 ± bound`, or an enclosure.
+    pub fn decimal(d: &Decimal) -> Self {
+        let latex = match d {
+            Decimal::Digits { text, .. } => latex_number(text),
+            Decimal::Small { bound } => format!("0 \\pm {}", latex_number(bound)),
+            Decimal::Range { lo, hi } => format!("[{}, {}]", latex_number(lo), latex_number(hi)),
+            Decimal::Undefined(_) => format!("\\text{{{d}}}"),
+        };
+        Rendered {
+            text: d.to_string(),
+            unicode: d.to_string(),
+            latex,
+        }
+    }
+}
+
+/// A table: a title, column headers, and labelled rows of cells — values
+/// of a ring, or (by default) cells already printed in the three styles.
 #[derive(Debug, Clone)]
-pub struct Block {
+pub struct Block<C = Rendered> {
     pub title: String,
     pub corner: String,
     pub columns: Vec<String>,
-    pub rows: Vec<(String, Vec<Rendered>)>,
+    pub rows: Vec<(String, Vec<C>)>,
+}
+
+impl<C> Block<C> {
+    /// The same table with every cell mapped.
+    pub fn map<D>(self, mut f: impl FnMut(C) -> D) -> Block<D> {
+        Block {
+            title: self.title,
+            corner: self.corner,
+            columns: self.columns,
+            rows: self
+                .rows
+                .into_iter()
+                .map(|(label, cells)| (label, cells.into_iter().map(&mut f).collect()))
+                .collect(),
+        }
+    }
+
+    /// Every cell, row by row.
+    pub fn cells(&self) -> impl Iterator<Item = &C> {
+        self.rows.iter().flat_map(|(_, cells)| cells.iter())
+    }
 }
 
 /// One cell printed in every style.

@@ -14,11 +14,11 @@ use rug::Rational;
 
 use crate::basis::Basis;
 use crate::decimal::{Decimal, bound_text};
+use crate::domain::Domain;
 use crate::error::{CoreError, Result};
 use crate::interval::{Fault, Interval};
 use crate::param::parse_exact;
 use crate::scalar::{Real, Ring};
-use crate::variable::Variable;
 
 /// The highest working precision, in bits (about 19,700 decimal digits).
 pub const MAX_BITS: u32 = 1 << 16;
@@ -83,9 +83,9 @@ pub fn check(values: &[Interval], what: &str, bits: u32) -> Result<()> {
 pub fn at_bits(
     bits: u32,
     what: &str,
-    f: &mut impl FnMut(u32) -> Vec<Interval>,
+    f: &mut impl FnMut(u32) -> Result<Vec<Interval>>,
 ) -> Result<Enclosures> {
-    let values = f(bits);
+    let values = f(bits)?;
     check(&values, what, bits)?;
     Ok(Enclosures { values, bits })
 }
@@ -115,7 +115,7 @@ fn resolved(values: &[Interval], digits: usize) -> bool {
 pub fn to_digits(
     digits: usize,
     what: &str,
-    mut f: impl FnMut(u32) -> Vec<Interval>,
+    mut f: impl FnMut(u32) -> Result<Vec<Interval>>,
 ) -> Result<Enclosures> {
     let need = (digits as f64 * std::f64::consts::LOG2_10).ceil() as u32 + 32;
     let mut bits = need.clamp(MIN_BITS, MAX_BITS);
@@ -143,25 +143,24 @@ pub fn enclose_basis<B: Basis + ?Sized>(
     basis.eval(&basis.domain().atoms(&xi), &p)
 }
 
-/// Whether the exact point `x` lies in the domain of `variable` (compared
-/// with `π/2` by enclosures of increasing precision).
-pub fn domain_contains(variable: Variable, x: &Rational) -> Result<bool> {
-    if *x < 0 {
-        return Ok(false);
-    }
+/// Whether the exact point `x` lies in `domain` for the exact parameters
+/// `params` (ends with π or parameters compared by enclosures of
+/// increasing precision).
+pub fn domain_contains(domain: &Domain, x: &Rational, params: &[Rational]) -> Result<bool> {
     let mut bits = MIN_BITS;
     loop {
         let xi = Interval::from_rational(bits, x);
-        let end = variable.end(&xi);
-        if xi <= end {
-            return Ok(true);
-        }
-        if xi > end {
+        let p: Vec<Interval> = params.iter().map(|q| xi.rational(q)).collect();
+        let (start, end) = (domain.start_value(&xi, &p), domain.end_value(&xi, &p));
+        if xi < start || xi > end {
             return Ok(false);
+        }
+        if xi >= start && xi <= end {
+            return Ok(true);
         }
         if bits >= MAX_BITS {
             return Err(CoreError::Undecidable {
-                what: format!("whether the point is in the domain {}", variable.domain()),
+                what: format!("whether the point is in the domain {domain}"),
                 bits,
             });
         }
@@ -169,15 +168,14 @@ pub fn domain_contains(variable: Variable, x: &Rational) -> Result<bool> {
     }
 }
 
-/// Checks the exact point `x` (as typed: `input`) against the domain of
-/// `variable`.
-pub fn check_domain(variable: Variable, x: &Rational, input: &str) -> Result<()> {
-    if domain_contains(variable, x)? {
+/// Checks the exact point `x` (as typed: `input`) against `domain`.
+pub fn check_domain(domain: &Domain, x: &Rational, params: &[Rational], input: &str) -> Result<()> {
+    if domain_contains(domain, x, params)? {
         Ok(())
     } else {
         Err(CoreError::PointOutsideDomain {
             value: crate::echo::echo(input),
-            domain: variable.domain().into(),
+            domain: domain.to_string(),
         })
     }
 }
@@ -283,6 +281,7 @@ pub fn nonfinite_error<B: Basis + ?Sized>(
 mod tests {
     use super::*;
     use crate::family::Family;
+    use crate::variable::Variable;
 
     fn q(n: i64, d: i64) -> Rational {
         Rational::from((n, d))
@@ -291,20 +290,27 @@ mod tests {
     #[test]
     fn domain_checks_use_the_exact_point() {
         let just_above = parse_exact("1.00000000000000000000000001").unwrap();
-        assert!(!domain_contains(Variable::UnitAngle, &just_above).unwrap());
-        assert!(domain_contains(Variable::UnitAngle, &q(1, 1)).unwrap());
+        let domain = |v: Variable| Domain::from_variable(v, &[]);
+        let unit = domain(Variable::UnitAngle);
+        assert!(!domain_contains(&unit, &just_above, &[]).unwrap());
+        assert!(domain_contains(&unit, &q(1, 1), &[]).unwrap());
         // 1.5707963267948966 < π/2 < 1.5707963267948967
         let below = parse_exact("1.5707963267948966").unwrap();
         let above = parse_exact("1.5707963267948967").unwrap();
-        assert!(domain_contains(Variable::Angle, &below).unwrap());
-        assert!(!domain_contains(Variable::Angle, &above).unwrap());
-        assert!(!domain_contains(Variable::Polynomial, &q(-1, 10)).unwrap());
+        assert!(domain_contains(&domain(Variable::Angle), &below, &[]).unwrap());
+        assert!(!domain_contains(&domain(Variable::Angle), &above, &[]).unwrap());
+        assert!(!domain_contains(&domain(Variable::Polynomial), &q(-1, 10), &[]).unwrap());
     }
 
     #[test]
     fn digits_are_raised_until_proved() {
         let e = to_digits(50, "b", |bits| {
-            enclose_basis(&Family::ThesisCubic, &q(1, 4), &[q(3, 5)], bits)
+            Ok(enclose_basis(
+                &Family::ThesisCubic,
+                &q(1, 4),
+                &[q(3, 5)],
+                bits,
+            ))
         })
         .unwrap();
         assert!(e.digits(50) >= 50, "{}", e.digits(50));
@@ -317,7 +323,12 @@ mod tests {
     fn a_proved_zero_divisor_is_a_division_by_zero() {
         // thesis-quadratic with β = −1 divides by β + 1 = 0
         let r = to_digits(10, "H", |bits| {
-            enclose_basis(&Family::ThesisQuadratic, &q(1, 2), &[q(-1, 1)], bits)
+            Ok(enclose_basis(
+                &Family::ThesisQuadratic,
+                &q(1, 2),
+                &[q(-1, 1)],
+                bits,
+            ))
         });
         assert!(matches!(r, Err(CoreError::DivisionByZero { .. })), "{r:?}");
     }

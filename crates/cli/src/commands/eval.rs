@@ -1,26 +1,33 @@
-//! `trig-audit eval`: every function of a family at one point, in f64 or in
-//! MPFR at a chosen precision.
+//! `trig-audit eval`: every function of a family at one point, exact
+//! input, certified output: f64 with a proved error bound per value, or the
+//! proved digits of interval arithmetic at a chosen precision (`--prec`) or
+//! to a requested number of digits (`--digits`).
 
-use std::fmt::{Display, Write};
+use std::fmt::Write;
 
 use clap::Args;
 use rug::Rational;
 use serde_json::json;
+use trig_core::certified::{
+    self, CheckedF64, F64_CHECK_DIGITS, MAX_BITS, MAX_DIGITS, at_bits, check_domain, check_f64,
+    to_digits,
+};
+use trig_core::decimal::max_digits;
 use trig_core::families::seed000_nonuniform::NonUniform;
-use trig_core::knots::{check_knots, locate};
 use trig_core::{
-    Atoms, Basis, CoreError, Domain, Family, Mpfr, Real, Ring, SEED000_NONUNIFORM, parse_exact,
-    piecewise,
+    Atoms, Basis, CoreError, Domain, Family, Interval, Real, Ring, SEED000_NONUNIFORM, echo,
+    parse_exact, piecewise,
 };
 use trig_spec::Spec;
+use trig_symbolic::Sym;
 
-use super::{CliError, CmdResult};
+use super::{CliError, CmdResult, range_hint};
 use crate::format::{TextOrJson, json};
 
 mod points;
 
-/// Largest precision accepted (MPFR allows more; this keeps output sane).
-const MAX_PREC: u32 = 1 << 16;
+/// Most knots `--knots` takes (the cost model).
+const MAX_KNOTS: usize = 10_000;
 
 #[derive(Debug, Args)]
 pub struct EvalArgs {
@@ -44,12 +51,18 @@ pub struct EvalArgs {
     at: Option<String>,
     /// Evaluate at every point listed in FILE instead (`-`: standard input):
     /// one number per line, read exactly like --at; blank lines and lines
-    /// starting with `#` are skipped. All points go through one batch.
+    /// starting with `#` are skipped. Each value is certified as for --at.
     #[arg(long, value_name = "FILE")]
     at_file: Option<std::path::PathBuf>,
-    /// Evaluate in MPFR with this many bits instead of f64.
+    /// Evaluate in certified MPFR interval arithmetic at this many bits
+    /// (2 to 65536) instead of f64; only proved digits are printed.
     #[arg(long)]
     prec: Option<u32>,
+    /// Print this many significant digits (1 to 10000), every one proved:
+    /// the working precision is raised until they are (or the output says
+    /// how many are).
+    #[arg(long)]
+    digits: Option<usize>,
     /// Evaluate the uniform B-spline basis function over knots 0,1,2,3,4.
     #[arg(long)]
     piecewise: bool,
@@ -147,19 +160,6 @@ impl Subject {
             Subject::Spec(s) => s.params_from_pairs(pairs, allow_outside),
         }
     }
-
-    /// Numeric evaluation with typed errors.
-    pub fn eval_at<T: Real>(
-        &self,
-        x: &T,
-        p: &[Rational],
-        allow_outside: bool,
-    ) -> Result<Vec<T>, CoreError> {
-        match self {
-            Subject::Family(f) => f.eval_at(x, p, allow_outside),
-            Subject::Spec(s) => s.eval_at(x, p, allow_outside),
-        }
-    }
 }
 
 impl Basis for Subject {
@@ -199,45 +199,189 @@ impl Basis for Subject {
     }
 }
 
+/// What `eval` computes, for any scalar built from the exact inputs: the
+/// functions of a basis at a point, the uniform B-spline basis function on
+/// one of its pieces, or seed 000's non-uniform segment functions on one
+/// span. Points, pieces and spans are located on the exact input.
+enum Problem {
+    Basis {
+        subject: Subject,
+        x: Rational,
+        params: Vec<Rational>,
+    },
+    Piecewise {
+        family: Family,
+        piece: usize,
+        local: Rational,
+        params: Vec<Rational>,
+    },
+    NonUniform {
+        knots: Vec<Rational>,
+        span: usize,
+        local: Rational,
+        zeta: Rational,
+    },
+}
+
+impl Problem {
+    /// The exact inputs with their names (checked to fit f64 in f64 mode).
+    fn inputs<'a>(&'a self, names: &[String], at: &str) -> Vec<(String, &'a Rational)> {
+        let named = |params: &'a [Rational]| -> Vec<(String, &'a Rational)> {
+            names.iter().cloned().zip(params.iter()).collect()
+        };
+        match self {
+            Problem::Basis { x, params, .. } => {
+                let mut v = named(params);
+                v.push((format!("the point {}", echo(at)), x));
+                v
+            }
+            Problem::Piecewise { params, .. } => named(params),
+            Problem::NonUniform { knots, zeta, .. } => knots
+                .iter()
+                .enumerate()
+                .map(|(i, k)| (format!("knot n_{i}"), k))
+                .chain([("zeta".to_string(), zeta)])
+                .collect(),
+        }
+    }
+
+    /// The values in the scalar `make` builds from exact rationals.
+    fn compute<T: Real>(&self, make: &dyn Fn(&Rational) -> T) -> Result<Vec<T>, CoreError> {
+        match self {
+            Problem::Basis { subject, x, params } => {
+                let x = make(x);
+                let p: Vec<T> = params.iter().map(make).collect();
+                Ok(subject.eval(&subject.domain().atoms(&x), &p))
+            }
+            Problem::Piecewise {
+                family,
+                piece,
+                local,
+                params,
+            } => {
+                let local = make(local);
+                let x = local.clone() * &family.info().variable.end(&local);
+                let p: Vec<T> = params.iter().map(make).collect();
+                let values = family.eval(&family.info().variable.atoms(&x), &p);
+                Ok(vec![values[piecewise::segment_function(*piece)].clone()])
+            }
+            Problem::NonUniform {
+                knots,
+                span,
+                local,
+                zeta,
+            } => {
+                let local = make(local);
+                let theta = local.clone() * &SEED000_NONUNIFORM.variable.end(&local);
+                let (s, c) = theta.sin_cos();
+                let formulas = NonUniform::new(knots.iter().map(make).collect(), make(zeta));
+                Ok(formulas.segment(*span as i64, &s, &c)?.to_vec())
+            }
+        }
+    }
+}
+
+/// The arithmetic of an evaluation.
+#[derive(Debug, Clone, Copy)]
+pub enum Mode {
+    /// f64, each value with a certified error bound (or replaced by the
+    /// certified value when f64 is off).
+    F64,
+    /// Intervals at a fixed precision: the digits that precision proves.
+    Bits(u32),
+    /// Intervals at increasing precision until this many digits are proved.
+    Digits(usize),
+}
+
+impl Mode {
+    fn of(args: &EvalArgs) -> Result<Mode, CliError> {
+        precision_mode(args.prec, args.digits)
+    }
+
+    fn describe(&self, bits: u32, proved: usize) -> String {
+        match *self {
+            Mode::F64 => format!("f64; ± certified error bounds, enclosures at {bits} bits"),
+            Mode::Bits(b) => format!("mpfr-{b}, certified: only proved digits are printed"),
+            Mode::Digits(n) if proved >= n => {
+                format!("{n} significant digits, all proved; mpfr-{bits}")
+            }
+            Mode::Digits(n) => format!(
+                "{n} digits requested, {} proved at the {bits}-bit limit",
+                if proved == 0 {
+                    "none".to_string()
+                } else {
+                    format!("{proved}")
+                }
+            ),
+        }
+    }
+}
+
+/// `--prec` and `--digits` as a [`Mode`], checked against the limits.
+pub fn precision_mode(prec: Option<u32>, digits: Option<usize>) -> Result<Mode, CliError> {
+    match (prec, digits) {
+        (Some(_), Some(_)) => Err(CliError::Usage(
+            "--prec and --digits exclude each other: --digits raises the precision itself".into(),
+        )),
+        (Some(bits), None) if (2..=MAX_BITS).contains(&bits) => Ok(Mode::Bits(bits)),
+        (Some(bits), None) => Err(CliError::Usage(format!(
+            "--prec {bits}: expected a precision from 2 to {MAX_BITS} bits"
+        ))),
+        (None, Some(n)) if (1..=MAX_DIGITS).contains(&n) => Ok(Mode::Digits(n)),
+        (None, Some(n)) => Err(CliError::Usage(format!(
+            "--digits {n}: expected 1 to {MAX_DIGITS} significant digits"
+        ))),
+        (None, None) => Ok(Mode::F64),
+    }
+}
+
+/// One printed value.
+struct Shown {
+    text: String,
+    /// Proved bound of |printed − exact| (f64 mode).
+    bound: Option<String>,
+    /// Why the f64 result was replaced.
+    note: Option<String>,
+    /// Proved significant digits (`None`: exact).
+    digits: Option<usize>,
+}
+
 /// What was evaluated: names and values as text.
 struct Evaluation {
     id: String,
     citation: String,
-    param_names: Vec<String>,
-    params: Vec<Rational>,
     names: Vec<String>,
-    values: Vec<String>,
+    values: Vec<Shown>,
+    precision: String,
     note: Option<String>,
 }
 
 pub fn run(args: &EvalArgs) -> CmdResult {
+    let mode = Mode::of(args)?;
     if let Some(path) = &args.at_file {
-        return points::run(args, path);
+        return points::run(args, path, mode);
     }
-    let at = parse_exact(args.at.as_deref().unwrap_or_default())?;
-    let eval = match args.prec {
-        None => evaluate(args, &at, |q| q.to_f64())?,
-        Some(bits) if (2..=MAX_PREC).contains(&bits) => {
-            evaluate(args, &at, |q| Mpfr::from_rational(bits, q))?
-        }
-        Some(bits) => {
-            return Err(CliError::Usage(format!(
-                "--prec {bits}: expected a precision from 2 to {MAX_PREC} bits"
-            )));
-        }
-    };
+    let at_text = args.at.as_deref().unwrap_or_default();
+    let at = parse_exact(at_text)?;
+    let eval = evaluate(args, at_text, &at, mode)?;
     Ok(render(args, &eval))
 }
 
-fn evaluate<T: Real + Display>(
-    args: &EvalArgs,
-    at: &Rational,
-    make: impl Fn(&Rational) -> T,
-) -> Result<Evaluation, CliError> {
+/// The problem `eval` was asked, located on the exact input, with its
+/// description.
+struct Setup {
+    problem: Problem,
+    id: String,
+    citation: String,
+    param_names: Vec<String>,
+    names: Vec<String>,
+    note: Option<String>,
+}
+
+fn setup(args: &EvalArgs, at_text: &str, at: &Rational) -> Result<Setup, CliError> {
     let pairs = param_pairs(&args.params)?;
-    let x = make(at);
     if args.family.as_deref() == Some(SEED000_NONUNIFORM.id) && args.spec.is_none() {
-        return nonuniform(args, &pairs, &x, &make);
+        return nonuniform(args, &pairs, at_text, at);
     }
     if !args.knots.is_empty() {
         return Err(CliError::Usage(format!(
@@ -246,7 +390,9 @@ fn evaluate<T: Real + Display>(
         )));
     }
     let subject = Subject::from_args(args.family.as_deref(), args.spec.as_deref())?;
-    let params = subject.params_from_pairs(&pairs, args.allow_outside_range)?;
+    let params = subject
+        .params_from_pairs(&pairs, args.allow_outside_range)
+        .map_err(range_hint)?;
     let (id, citation, param_names) = (subject.id(), subject.citation(), subject.param_names());
     if args.piecewise {
         let Subject::Family(family) = subject else {
@@ -254,92 +400,241 @@ fn evaluate<T: Real + Display>(
                 "--piecewise applies to catalog families only".into(),
             ));
         };
-        let value = piecewise::eval_uniform(family, &x, &params)?;
-        return Ok(Evaluation {
+        if !family.info().piecewise {
+            return Err(CliError::Usage(format!(
+                "--piecewise needs a family with uniform B-spline segment functions (seed000-uniform, bspline3); `{id}` is not one"
+            )));
+        }
+        let (piece, local) = locate_exact(&uniform_knots(), at, at_text)?;
+        return Ok(Setup {
+            problem: Problem::Piecewise {
+                family,
+                piece,
+                local,
+                params,
+            },
             id,
             citation,
             param_names,
-            params,
             names: vec!["B(n)".into()],
-            values: vec![value.to_string()],
             note: Some("uniform B-spline basis function on knots 0,1,2,3,4".into()),
         });
     }
-    let values = subject.eval_at(&x, &params, args.allow_outside_range)?;
-    Ok(Evaluation {
+    if !args.allow_outside_range {
+        check_domain(&subject.domain(), at, &params, at_text).map_err(range_hint)?;
+    }
+    let names = subject.function_names();
+    Ok(Setup {
+        problem: Problem::Basis {
+            subject,
+            x: at.clone(),
+            params,
+        },
         id,
         citation,
         param_names,
-        params,
-        names: subject.function_names(),
-        values: values.iter().map(|v| v.to_string()).collect(),
+        names,
         note: None,
     })
 }
 
-fn nonuniform<T: Real + Display>(
+fn evaluate(
+    args: &EvalArgs,
+    at_text: &str,
+    at: &Rational,
+    mode: Mode,
+) -> Result<Evaluation, CliError> {
+    let s = setup(args, at_text, at)?;
+    let what = format!("`{}` at this point", s.id);
+    let enclose = |bits: u32| {
+        s.problem
+            .compute(&|q: &Rational| Interval::from_rational(bits, q))
+    };
+    let (values, bits, proved) = match mode {
+        Mode::F64 => {
+            for (name, q) in s.problem.inputs(&s.param_names, at_text) {
+                certified::to_f64(q, &name).map_err(|e| {
+                    CliError::Usage(format!("{e} (evaluate with --digits N or --prec BITS)"))
+                })?;
+            }
+            let exact = to_digits(F64_CHECK_DIGITS, &what, enclose)?;
+            // f64 failures (a rounded divisor that is exactly zero) leave
+            // the certified values in place
+            let f64_values = s
+                .problem
+                .compute(&|q: &Rational| q.to_f64())
+                .unwrap_or_else(|_| vec![f64::NAN; exact.values.len()]);
+            let shown = check_f64(&f64_values, &exact.values)
+                .into_iter()
+                .map(|c| match c {
+                    CheckedF64::Accurate { text, bound } => Shown {
+                        text,
+                        bound: Some(bound),
+                        note: None,
+                        digits: None,
+                    },
+                    CheckedF64::Replaced { decimal, f64_error } => Shown {
+                        digits: Some(decimal.digits()),
+                        text: decimal.to_string(),
+                        bound: None,
+                        note: Some(match f64_error {
+                            Some(e) => {
+                                format!("certified value; the f64 result is off by up to {e}")
+                            }
+                            None => "certified value; the f64 result is not finite".into(),
+                        }),
+                    },
+                })
+                .collect();
+            (shown, exact.bits, 0)
+        }
+        Mode::Bits(bits) => {
+            let mut f = enclose;
+            let e = at_bits(bits, &what, &mut f)?;
+            let max = max_digits(bits);
+            (decimals(&e.values, max), bits, e.digits(max))
+        }
+        Mode::Digits(n) => {
+            let e = to_digits(n, &what, enclose)?;
+            (decimals(&e.values, n), e.bits, e.digits(n))
+        }
+    };
+    Ok(Evaluation {
+        id: s.id,
+        citation: s.citation,
+        names: s.names,
+        values,
+        precision: mode.describe(bits, proved),
+        note: s.note,
+    })
+}
+
+/// The proved decimals of enclosures, at most `max` digits each.
+fn decimals(values: &[Interval], max: usize) -> Vec<Shown> {
+    values
+        .iter()
+        .map(|v| {
+            let d = v.decimal(max);
+            Shown {
+                digits: Some(d.digits()),
+                text: d.to_string(),
+                bound: None,
+                note: None,
+            }
+        })
+        .collect()
+}
+
+/// Knots `0, 1, 2, 3, 4` of the uniform B-spline basis function.
+fn uniform_knots() -> Vec<Rational> {
+    (0..=piecewise::PIECES as i64).map(Rational::from).collect()
+}
+
+/// The span `i` with `knots[i] ≤ x < knots[i+1]` (the last span closed)
+/// and the exact local coordinate, for strictly increasing exact knots.
+fn locate_exact(
+    knots: &[Rational],
+    x: &Rational,
+    input: &str,
+) -> Result<(usize, Rational), CoreError> {
+    let last = knots.len() - 1;
+    if *x < knots[0] || *x > knots[last] {
+        return Err(CoreError::PointOutsideDomain {
+            value: echo(input),
+            domain: format!("[{}, {}]", knots[0], knots[last]),
+        });
+    }
+    let i = knots[1..last].iter().take_while(|k| *k <= x).count();
+    let local = Rational::from(x - &knots[i]) / Rational::from(&knots[i + 1] - &knots[i]);
+    Ok((i, local))
+}
+
+fn nonuniform(
     args: &EvalArgs,
     pairs: &[(String, String)],
-    n: &T,
-    make: &impl Fn(&Rational) -> T,
-) -> Result<Evaluation, CliError> {
+    at_text: &str,
+    n: &Rational,
+) -> Result<Setup, CliError> {
     let info = SEED000_NONUNIFORM;
-    let zeta = Family::Seed000Uniform.params_from_pairs(pairs, args.allow_outside_range)?;
-    let knots: Vec<T> = args
-        .knots
-        .iter()
-        .map(|k| parse_exact(k).map(|q| make(&q)))
-        .collect::<Result<_, CoreError>>()?;
-    check_knots(&knots, 2)?;
-    let (span, local) = locate(&knots, n)?;
-    let theta = local * &info.variable.end(n);
-    let (s, c) = theta.sin_cos();
-    let formulas = NonUniform::new(knots, make(&zeta[0]));
-    let values = formulas.segment(span as i64, &s, &c)?;
-    if values.iter().any(|v| !v.is_finite()) {
-        return Err(CoreError::DivisionByZero {
-            quantity: format!("the segment functions on span {span}"),
+    let zeta = Family::Seed000Uniform
+        .params_from_pairs(pairs, args.allow_outside_range)
+        .map_err(range_hint)?;
+    if args.knots.len() > MAX_KNOTS {
+        return Err(CoreError::Limit {
+            what: format!("--knots with {} knots", args.knots.len()),
+            limit: format!("{MAX_KNOTS} knots"),
         }
         .into());
     }
-    Ok(Evaluation {
+    let knots: Vec<Rational> = args
+        .knots
+        .iter()
+        .map(|k| parse_exact(k))
+        .collect::<Result<_, CoreError>>()?;
+    if knots.len() < 2 {
+        return Err(CoreError::Knots(format!("need at least 2 knots, got {}", knots.len())).into());
+    }
+    for (i, w) in knots.windows(2).enumerate() {
+        if w[1] <= w[0] {
+            let what = if w[1] == w[0] {
+                "a zero-length interval"
+            } else {
+                "decreasing"
+            };
+            return Err(CoreError::Knots(format!(
+                "n_{i} = {} and n_{} = {}: {what}",
+                echo(&args.knots[i]),
+                i + 1,
+                echo(&args.knots[i + 1])
+            ))
+            .into());
+        }
+    }
+    let (span, local) = locate_exact(&knots, n, at_text)?;
+    // The printed coefficients exactly first: a denominator that vanishes
+    // is named (a division by zero), one that does not is then proved
+    // nonzero by enclosures at a high enough precision.
+    let sym = |q: &Rational| Sym::rational(q.clone());
+    NonUniform::new(knots.iter().map(sym).collect(), sym(&zeta[0])).span(span as i64)?;
+    let note = format!("span j = {span}, local angle t_j = ({local})·π/2");
+    Ok(Setup {
+        problem: Problem::NonUniform {
+            knots,
+            span,
+            local,
+            zeta: zeta.into_iter().next().expect("seed 000 has one parameter"),
+        },
         id: info.id.to_string(),
         citation: info.citation.to_string(),
         param_names: info.params.iter().map(|p| p.name.to_string()).collect(),
-        params: zeta,
         names: info.functions.iter().map(|s| s.to_string()).collect(),
-        values: values.iter().map(|v| v.to_string()).collect(),
-        note: Some(format!(
-            "span j = {span}, local angle t_j = {}",
-            theta.to_f64()
-        )),
+        note: Some(note),
     })
 }
 
 fn render(args: &EvalArgs, e: &Evaluation) -> String {
-    let precision = args.prec.map_or("f64".to_string(), |b| format!("mpfr-{b}"));
-    let params: Vec<(String, String)> = e
-        .param_names
-        .iter()
-        .zip(&e.params)
-        .map(|(p, v)| (p.clone(), v.to_string()))
-        .collect();
+    // the parameters as typed (validated by now)
+    let params = param_pairs(&args.params).unwrap_or_default();
     match args.format {
         TextOrJson::Json => {
-            let values: serde_json::Map<_, _> = e
-                .names
-                .iter()
-                .zip(&e.values)
-                .map(|(n, v)| (n.clone(), json!(v)))
-                .collect();
+            let map = |f: &dyn Fn(&Shown) -> serde_json::Value| -> serde_json::Map<_, _> {
+                e.names
+                    .iter()
+                    .zip(&e.values)
+                    .map(|(n, v)| (n.clone(), f(v)))
+                    .collect()
+            };
             json(&json!({
                 "family": e.id,
                 "citation": e.citation,
                 "params": params.iter().map(|(n, v)| (n.clone(), json!(v))).collect::<serde_json::Map<_, _>>(),
                 "at": args.at.as_deref().unwrap_or_default(),
-                "precision": precision,
+                "precision": e.precision,
                 "note": e.note,
-                "values": values,
+                "values": map(&|v| json!(v.text)),
+                "error_bounds": map(&|v| json!(v.bound)),
+                "proved_digits": map(&|v| json!(v.digits.filter(|d| *d != usize::MAX))),
+                "notes": map(&|v| json!(v.note)),
             }))
         }
         TextOrJson::Text => {
@@ -347,14 +642,20 @@ fn render(args: &EvalArgs, e: &Evaluation) -> String {
             let shown: Vec<String> = params.iter().map(|(n, v)| format!("{n}={v}")).collect();
             let _ = writeln!(
                 out,
-                "{} at {} [{}] ({precision}){}",
+                "{} at {} [{}] ({}){}",
                 e.id,
                 args.at.as_deref().unwrap_or_default(),
                 shown.join(", "),
+                e.precision,
                 e.note.as_ref().map_or(String::new(), |n| format!("; {n}"))
             );
             for (n, v) in e.names.iter().zip(&e.values) {
-                let _ = writeln!(out, "{n} = {v}");
+                let bound = v
+                    .bound
+                    .as_ref()
+                    .map_or(String::new(), |b| format!(" ± {b}"));
+                let note = v.note.as_ref().map_or(String::new(), |b| format!(" ({b})"));
+                let _ = writeln!(out, "{n} = {}{bound}{note}", v.text);
             }
             out
         }

@@ -20,3 +20,15 @@ pub enum CliError {
 
 /// Result of a command: the text to print.
 pub type CmdResult = Result<String, CliError>;
+
+/// The error of a command that takes `--allow-outside-range`: a parameter
+/// outside its published range or a point outside the domain gets the hint.
+pub fn range_hint(e: trig_core::CoreError) -> CliError {
+    use trig_core::CoreError::{OutOfRange, PointOutsideDomain};
+    match e {
+        OutOfRange { .. } | PointOutsideDomain { .. } => CliError::Usage(format!(
+            "{e} (pass --allow-outside-range to evaluate anyway)"
+        )),
+        e => e.into(),
+    }
+}

@@ -3,17 +3,23 @@
 
 use clap::{Args, ValueEnum};
 use rug::Rational;
-use trig_core::{Basis, Mpfr, Ring, parse_exact};
+use trig_core::certified::{self, CheckedF64, F64_CHECK_DIGITS, at_bits, check_f64, to_digits};
+use trig_core::decimal::{bound_text, max_digits};
+use trig_core::{Basis, CoreError, Interval, Ring, parse_exact};
 use trig_deriv::{End, Wrt, curve_endpoint_derivatives, endpoint_derivatives, knot_derivatives};
 use trig_symbolic::Sym;
 
-use super::eval::{Subject, param_pairs};
-use super::{CliError, CmdResult};
+use super::eval::{Mode, Subject, param_pairs, precision_mode};
+use super::{CliError, CmdResult, range_hint};
 use crate::cell::{Block, Cell, Rendered};
 use crate::format::{TableFormat, render_blocks};
 
-/// Highest order a table can have.
+/// Highest order a table can have (the cost model).
 pub const MAX_ORDER: usize = 12;
+
+/// Highest order of an exact rational-curve table (`--curve --rational`):
+/// the quotient rule's terms grow with the order (the cost model).
+pub const MAX_RATIONAL_ORDER: usize = 6;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum At {
@@ -62,9 +68,17 @@ pub struct TableArgs {
     /// Shape parameter for --numeric, as name=value.
     #[arg(long = "param", value_name = "NAME=VALUE", requires = "numeric")]
     params: Vec<String>,
-    /// MPFR precision in bits for --numeric (default: f64).
+    /// Certified MPFR interval arithmetic at this many bits for --numeric
+    /// (default: f64 with a certified error bound); only proved digits are printed.
     #[arg(long, requires = "numeric")]
     prec: Option<u32>,
+    /// For --numeric: this many significant digits per entry, every one
+    /// proved (the working precision is raised until they are).
+    #[arg(long, requires = "numeric")]
+    digits: Option<usize>,
+    /// For --numeric: parameters outside their published range.
+    #[arg(long, requires = "numeric")]
+    allow_outside_range: bool,
     /// Interval length h for --wrt x in a numeric table (exact tables keep the symbol h).
     #[arg(long, requires = "numeric", allow_hyphen_values = true)]
     h: Option<String>,
@@ -84,84 +98,178 @@ pub fn run(args: &TableArgs) -> CmdResult {
     let family = Subject::from_args(args.family.as_deref(), args.spec.as_deref())?;
     let id = family.id();
     if args.order > MAX_ORDER {
-        return Err(CliError::Usage(format!(
-            "--order {}: at most {MAX_ORDER}",
-            args.order
-        )));
+        return Err(CoreError::Limit {
+            what: format!("--order {}", args.order),
+            limit: MAX_ORDER.to_string(),
+        }
+        .into());
+    }
+    if args.curve && args.rational && args.order > MAX_RATIONAL_ORDER {
+        return Err(CoreError::Limit {
+            what: format!("--curve --rational --order {}", args.order),
+            limit: MAX_RATIONAL_ORDER.to_string(),
+        }
+        .into());
     }
     if args.at == At::Knots && (!family.piecewise() || args.curve) {
         return Err(CliError::Usage(format!(
             "--at knots needs a family with uniform B-spline pieces (seed000-uniform, bspline3, or a spec with four segment functions), without --curve; `{id}` is not one"
         )));
     }
-    let wrt = Wrt::from(args.wrt);
     if args.curve && args.numeric {
         return Err(CliError::Usage(
             "--curve tables are exact combinations of the control points; drop --numeric".into(),
         ));
     }
-    let blocks = if args.numeric {
-        let pairs = param_pairs(&args.params)?;
-        let p = family.params_from_pairs(&pairs, true)?;
-        let h = match &args.h {
-            Some(text) => parse_exact(text)?,
-            None => Rational::from(1),
-        };
-        if h <= 0 {
-            return Err(CliError::Usage("--h must be positive".into()));
-        }
-        match args.prec {
-            None => build(
-                args,
-                &family,
-                &p.iter().map(Rational::to_f64).collect::<Vec<_>>(),
-                &h.to_f64(),
-                None,
-            ),
-            Some(bits) if (2..=1 << 16).contains(&bits) => {
-                let mk = |q: &Rational| Mpfr::from_rational(bits, q);
-                build(
-                    args,
-                    &family,
-                    &p.iter().map(mk).collect::<Vec<_>>(),
-                    &mk(&h),
-                    None,
-                )
-            }
-            Some(bits) => {
-                return Err(CliError::Usage(format!(
-                    "--prec {bits}: expected 2 to 65536 bits"
-                )));
-            }
-        }
+    let (blocks, mode) = if args.numeric {
+        numeric(args, &family)?
     } else {
-        let params: Vec<Sym> = family.param_names().iter().map(|p| Sym::var(p)).collect();
-        let h = if wrt == Wrt::X {
-            Sym::var("h")
-        } else {
-            Sym::one()
-        };
-        let n = family.function_names().len();
-        let points: Vec<Sym> = (0..n).map(|i| Sym::var(&format!("P{i}"))).collect();
-        let weights: Vec<Sym> = (0..n).map(|i| Sym::var(&format!("w{i}"))).collect();
-        build(args, &family, &params, &h, Some((&points, &weights)))
-    };
-    let mode = if args.numeric {
-        let shown: Vec<String> = args.params.clone();
-        format!(
-            "numeric ({}, {})",
-            args.prec.map_or("f64".into(), |b| format!("MPFR {b} bits")),
-            shown.join(", ")
-        )
-    } else {
-        "exact".to_string()
+        (exact(args, &family), "exact".to_string())
     };
     let heading = format!(
         "{id} ({}): derivatives {}, {mode}",
         family.citation(),
-        wrt.describe(family.domain().is_trigonometric())
+        Wrt::from(args.wrt).describe(family.domain().is_trigonometric())
     );
     Ok(render_blocks(&heading, &blocks, args.format))
+}
+
+/// The exact table: parameters (and `h`) as symbols, π symbolic; curve
+/// tables as combinations of the control points `P0, P1, …`.
+fn exact(args: &TableArgs, family: &Subject) -> Vec<Block> {
+    let params: Vec<Sym> = family.param_names().iter().map(|p| Sym::var(p)).collect();
+    let h = if Wrt::from(args.wrt) == Wrt::X {
+        Sym::var("h")
+    } else {
+        Sym::one()
+    };
+    let n = family.function_names().len();
+    let names: Vec<String> = (0..n).map(|i| format!("P{i}")).collect();
+    let points: Vec<Sym> = names.iter().map(|p| Sym::var(p)).collect();
+    let weights: Vec<Sym> = (0..n).map(|i| Sym::var(&format!("w{i}"))).collect();
+    build(args, family, &params, &h, Some((&points, &weights)))
+        .into_iter()
+        .map(|b| {
+            b.map(|v| {
+                if args.curve {
+                    v.combination(&names)
+                } else {
+                    Rendered::of(&v)
+                }
+            })
+        })
+        .collect()
+}
+
+/// The numeric table at exact parameter values: f64 with a certified
+/// error bound (entries f64 gets wrong replaced by certified values), or
+/// the proved digits of interval jets (`--prec`, `--digits`).
+fn numeric(args: &TableArgs, family: &Subject) -> Result<(Vec<Block>, String), CliError> {
+    let pairs = param_pairs(&args.params)?;
+    let p = family
+        .params_from_pairs(&pairs, args.allow_outside_range)
+        .map_err(range_hint)?;
+    let h = match &args.h {
+        Some(text) => parse_exact(text)?,
+        None => Rational::from(1),
+    };
+    if h <= 0 {
+        return Err(CliError::Usage("--h must be positive".into()));
+    }
+    let what = format!("the derivatives of `{}`", family.id());
+    let mut last = Vec::new();
+    let mut enclose = |bits: u32| {
+        let mk = |q: &Rational| Interval::from_rational(bits, q);
+        let blocks = build(
+            args,
+            family,
+            &p.iter().map(mk).collect::<Vec<_>>(),
+            &mk(&h),
+            None,
+        );
+        let cells = blocks.iter().flat_map(Block::cells).cloned().collect();
+        last = blocks;
+        Ok(cells)
+    };
+    let mode = precision_mode(args.prec, args.digits)?;
+    let (blocks, arithmetic) = match mode {
+        Mode::F64 => {
+            let names = family.param_names();
+            for (name, q) in names.iter().zip(&p).chain([(&"--h".to_string(), &h)]) {
+                certified::to_f64(q, name)
+                    .map_err(|e| CliError::Usage(format!("{e} (use --digits N or --prec BITS)")))?;
+            }
+            let e = to_digits(F64_CHECK_DIGITS, &what, &mut enclose)?;
+            let floats = build(
+                args,
+                family,
+                &p.iter().map(Rational::to_f64).collect::<Vec<_>>(),
+                &h.to_f64(),
+                None,
+            );
+            let values: Vec<f64> = floats.iter().flat_map(Block::cells).copied().collect();
+            let mut checked = check_f64(&values, &e.values).into_iter();
+            let (mut worst, mut replaced) = (Rational::new(), 0);
+            let blocks = floats
+                .into_iter()
+                .map(|b| {
+                    b.map(|_| match checked.next() {
+                        Some(CheckedF64::Accurate { text, bound }) => {
+                            if let Ok(q) = parse_exact(&bound) {
+                                worst = worst.clone().max(q);
+                            }
+                            Rendered::number(&text)
+                        }
+                        Some(CheckedF64::Replaced { decimal, .. }) => {
+                            replaced += 1;
+                            Rendered::decimal(&decimal)
+                        }
+                        None => Rendered::number("?"),
+                    })
+                })
+                .collect();
+            let mut note = format!(
+                "f64, every entry within {} of the exact value (certified)",
+                bound_text(&worst)
+            );
+            if replaced > 0 {
+                note.push_str(&format!(
+                    "; {replaced} entries where f64 is off show proved digits instead"
+                ));
+            }
+            (blocks, note)
+        }
+        Mode::Bits(bits) => {
+            at_bits(bits, &what, &mut enclose)?;
+            let note = format!("MPFR {bits} bits, proved digits only");
+            (render_decimals(last, max_digits(bits)), note)
+        }
+        Mode::Digits(n) => {
+            let e = to_digits(n, &what, &mut enclose)?;
+            let proved = e.digits(n);
+            let note = if proved >= n {
+                format!("{n} significant digits, all proved (MPFR {} bits)", e.bits)
+            } else {
+                format!(
+                    "{n} digits requested, {proved} proved at the {}-bit limit",
+                    e.bits
+                )
+            };
+            (render_decimals(last, n), note)
+        }
+    };
+    Ok((
+        blocks,
+        format!("numeric ({arithmetic}, {})", args.params.join(", ")),
+    ))
+}
+
+/// Interval cells printed as their proved digits.
+fn render_decimals(blocks: Vec<Block<Interval>>, max: usize) -> Vec<Block> {
+    blocks
+        .into_iter()
+        .map(|b| b.map(|v| Rendered::decimal(&v.decimal(max))))
+        .collect()
 }
 
 /// Control points and weights of a curve table (symbols, exact mode only).
@@ -169,13 +277,13 @@ type CurveData<'a, T> = Option<(&'a [T], &'a [T])>;
 
 /// Builds the blocks of a numeric or exact table, choosing the jet length
 /// for the requested order.
-fn build<T: Ring + Cell>(
+fn build<T: Ring>(
     args: &TableArgs,
     family: &Subject,
     params: &[T],
     h: &T,
     curve: CurveData<'_, T>,
-) -> Vec<Block> {
+) -> Vec<Block<T>> {
     macro_rules! with_order {
         ($($n:literal),*) => {
             match args.order {
@@ -187,24 +295,24 @@ fn build<T: Ring + Cell>(
     with_order!(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12)
 }
 
-fn blocks<T: Ring + Cell, const K: usize>(
+fn blocks<T: Ring, const K: usize>(
     args: &TableArgs,
     family: &Subject,
     params: &[T],
     h: &T,
     curve: CurveData<'_, T>,
-) -> Vec<Block> {
+) -> Vec<Block<T>> {
     let wrt = Wrt::from(args.wrt);
     let orders = || (0..K).map(|k| k.to_string());
     if args.at == At::Knots {
         let knots = knot_derivatives::<T, K>(family, params, wrt, h);
         let mut columns = Vec::new();
-        let mut cols: Vec<Vec<Rendered>> = Vec::new();
+        let mut cols: Vec<Vec<T>> = Vec::new();
         for k in &knots {
             for (side, values) in [("-", &k.left), ("+", &k.right)] {
                 if let Some(v) = values {
                     columns.push(format!("n{}{side}", k.knot));
-                    cols.push(v.iter().map(Rendered::of).collect());
+                    cols.push(v.clone());
                 }
             }
         }
@@ -228,7 +336,6 @@ fn blocks<T: Ring + Cell, const K: usize>(
         .map(|&end| {
             let title = format!("{end} of the domain");
             if let (true, Some((points, weights))) = (args.curve, curve) {
-                let names: Vec<String> = (0..points.len()).map(|i| format!("P{i}")).collect();
                 let values = curve_endpoint_derivatives::<T, K>(
                     family,
                     params,
@@ -251,7 +358,7 @@ fn blocks<T: Ring + Cell, const K: usize>(
                     columns: vec!["derivative".into()],
                     rows: orders()
                         .zip(values.iter())
-                        .map(|(l, v)| (l, vec![v.combination(&names)]))
+                        .map(|(l, v)| (l, vec![v.clone()]))
                         .collect(),
                 }
             } else {
@@ -262,9 +369,7 @@ fn blocks<T: Ring + Cell, const K: usize>(
                     columns: family.function_names(),
                     rows: orders()
                         .enumerate()
-                        .map(|(k, label)| {
-                            (label, table.iter().map(|f| Rendered::of(&f[k])).collect())
-                        })
+                        .map(|(k, label)| (label, table.iter().map(|f| f[k].clone()).collect()))
                         .collect(),
                 }
             }

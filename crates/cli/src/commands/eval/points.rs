@@ -1,20 +1,20 @@
 //! `trig-audit eval --at-file FILE`: every function at many points, read
-//! from a file or standard input, evaluated in one batch
-//! ([`trig_core::Batch`]: parameters converted once, vectorised `sin`/`cos`
-//! in f64, reused buffers in MPFR). For scripts: the text output is
+//! from a file or standard input, each value certified as for one `--at`
+//! (f64 with a proved error bound, or proved digits under `--prec` and
+//! `--digits`; the uncertified fast path is the library's
+//! [`trig_core::Batch`]). For scripts: the text output is
 //! tab-separated columns under `#` header lines (`numpy.loadtxt` reads it
 //! as is), the JSON output one array per column.
 
-use std::fmt::{Display, Write};
+use std::fmt::Write;
 use std::io::Read;
 use std::path::Path;
 
 use rug::Rational;
 use serde_json::json;
-use trig_core::batch::BatchReal;
-use trig_core::{Basis, Batch, Mpfr, SEED000_NONUNIFORM, parse_exact};
+use trig_core::{SEED000_NONUNIFORM, parse_exact};
 
-use super::{CliError, CmdResult, EvalArgs, MAX_PREC, Subject, param_pairs};
+use super::{CliError, CmdResult, EvalArgs, Evaluation, Mode, Shown, evaluate, param_pairs};
 use crate::format::{TextOrJson, json};
 
 /// The points of `path` (`-` for standard input): the text as written and
@@ -53,8 +53,10 @@ fn read_points(path: &Path) -> Result<Vec<(String, Rational)>, CliError> {
     Ok(points)
 }
 
-/// Evaluates `--at-file` and renders the table.
-pub(super) fn run(args: &EvalArgs, path: &Path) -> CmdResult {
+/// Evaluates `--at-file` and renders the table: every point through the
+/// certified evaluation of a single `--at` (f64 values with certified error
+/// bounds, or proved digits under `--prec`/`--digits`).
+pub(super) fn run(args: &EvalArgs, path: &Path, mode: Mode) -> CmdResult {
     if args.piecewise
         || !args.knots.is_empty()
         || (args.family.as_deref() == Some(SEED000_NONUNIFORM.id) && args.spec.is_none())
@@ -64,111 +66,79 @@ pub(super) fn run(args: &EvalArgs, path: &Path) -> CmdResult {
                 .into(),
         ));
     }
-    let subject = Subject::from_args(args.family.as_deref(), args.spec.as_deref())?;
-    let params =
-        subject.params_from_pairs(&param_pairs(&args.params)?, args.allow_outside_range)?;
     let points = read_points(path)?;
-    let rows = match args.prec {
-        None => evaluate(args, &subject, &params, &points, 0.0_f64, |q| q.to_f64())?,
-        Some(bits) if (2..=MAX_PREC).contains(&bits) => evaluate(
-            args,
-            &subject,
-            &params,
-            &points,
-            Mpfr::from_f64(bits, 0.0),
-            |q| Mpfr::from_rational(bits, q),
-        )?,
-        Some(bits) => {
-            return Err(CliError::Usage(format!(
-                "--prec {bits}: expected a precision from 2 to {MAX_PREC} bits"
-            )));
-        }
+    let rows = points
+        .iter()
+        .map(|(text, q)| evaluate(args, text, q, mode))
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(render(args, &points, &rows))
+}
+
+fn render(args: &EvalArgs, points: &[(String, Rational)], rows: &[Evaluation]) -> String {
+    let first = &rows[0];
+    let params = param_pairs(&args.params).unwrap_or_default();
+    let column = |k: usize, f: &dyn Fn(&Shown) -> serde_json::Value| {
+        json!(rows.iter().map(|r| f(&r.values[k])).collect::<Vec<_>>())
     };
-    Ok(render(args, &subject, &params, &points, &rows))
-}
-
-/// The values, one row per point (`rows[i][k] = b_k(xᵢ)` as text).
-fn evaluate<T: BatchReal + Display>(
-    args: &EvalArgs,
-    subject: &Subject,
-    params: &[Rational],
-    points: &[(String, Rational)],
-    like: T,
-    make: impl Fn(&Rational) -> T,
-) -> Result<Vec<Vec<String>>, CliError> {
-    let xs: Vec<T> = points.iter().map(|(_, q)| make(q)).collect();
-    let allow = args.allow_outside_range;
-    match subject {
-        Subject::Family(family) => {
-            let mut batch = Batch::new(*family, params, &like, allow)?;
-            let values = batch.eval(&xs)?;
-            let n = xs.len();
-            Ok((0..n)
-                .map(|i| {
-                    (0..batch.functions())
-                        .map(|k| values[k * n + i].to_string())
-                        .collect()
-                })
-                .collect())
-        }
-        // A spec's formulas are syntax trees: one point at a time.
-        Subject::Spec(spec) => xs
-            .iter()
-            .map(|x| {
-                let values = spec.eval_at(x, params, allow)?;
-                Ok(values.iter().map(ToString::to_string).collect())
-            })
-            .collect(),
-    }
-}
-
-fn render(
-    args: &EvalArgs,
-    subject: &Subject,
-    params: &[Rational],
-    points: &[(String, Rational)],
-    rows: &[Vec<String>],
-) -> String {
-    let precision = args.prec.map_or("f64".to_string(), |b| format!("mpfr-{b}"));
-    let names = subject.function_names();
-    let shown: Vec<(String, String)> = subject
-        .param_names()
-        .into_iter()
-        .zip(params.iter().map(ToString::to_string))
-        .collect();
+    let precision = rows
+        .iter()
+        .map(|r| r.precision.as_str())
+        .max_by_key(|p| p.len())
+        .unwrap_or_default();
     match args.format {
         TextOrJson::Json => {
-            let values: serde_json::Map<_, _> = names
-                .iter()
-                .enumerate()
-                .map(|(k, name)| {
-                    let column: Vec<&str> = rows.iter().map(|r| r[k].as_str()).collect();
-                    (name.clone(), json!(column))
-                })
-                .collect();
+            let map = |f: &dyn Fn(&Shown) -> serde_json::Value| -> serde_json::Map<_, _> {
+                first
+                    .names
+                    .iter()
+                    .enumerate()
+                    .map(|(k, n)| (n.clone(), column(k, f)))
+                    .collect()
+            };
             json(&json!({
-                "family": subject.id(),
-                "citation": subject.citation(),
-                "params": shown.iter().map(|(n, v)| (n.clone(), json!(v))).collect::<serde_json::Map<_, _>>(),
+                "family": first.id,
+                "citation": first.citation,
+                "params": params.iter().map(|(n, v)| (n.clone(), json!(v))).collect::<serde_json::Map<_, _>>(),
                 "precision": precision,
                 "at": points.iter().map(|(text, _)| text.as_str()).collect::<Vec<_>>(),
-                "values": values,
+                "values": map(&|v| json!(v.text)),
+                "error_bounds": map(&|v| json!(v.bound)),
+                "proved_digits": map(&|v| json!(v.digits.filter(|d| *d != usize::MAX))),
+                "notes": map(&|v| json!(v.note)),
             }))
         }
         TextOrJson::Text => {
-            let shown: Vec<String> = shown.iter().map(|(n, v)| format!("{n}={v}")).collect();
+            let shown: Vec<String> = params.iter().map(|(n, v)| format!("{n}={v}")).collect();
             let mut out = String::new();
             let _ = writeln!(
                 out,
                 "# {} at {} points [{}] ({precision}); {}",
-                subject.id(),
+                first.id,
                 points.len(),
                 shown.join(", "),
-                subject.citation()
+                first.citation
             );
-            let _ = writeln!(out, "# at\t{}", names.join("\t"));
-            for ((text, _), row) in points.iter().zip(rows) {
-                let _ = writeln!(out, "{text}\t{}", row.join("\t"));
+            let bounds: Vec<&str> = rows
+                .iter()
+                .flat_map(|r| r.values.iter().filter_map(|v| v.bound.as_deref()))
+                .collect();
+            if let Some(largest) = bounds
+                .iter()
+                .max_by(|a, b| a.parse::<f64>().unwrap_or(0.0).total_cmp(&b.parse().unwrap_or(0.0)))
+            {
+                let _ = writeln!(out, "# every f64 value is within {largest} of the exact value");
+            }
+            for ((text, _), r) in points.iter().zip(rows) {
+                for (n, v) in r.names.iter().zip(&r.values) {
+                    if let Some(note) = &v.note {
+                        let _ = writeln!(out, "# at {text}: {n}: {note}");
+                    }
+                }
+            }
+            let _ = writeln!(out, "# at\t{}", first.names.join("\t"));
+            for ((text, _), r) in points.iter().zip(rows) {
+                let values: Vec<&str> = r.values.iter().map(|v| v.text.as_str()).collect();
+                let _ = writeln!(out, "{text}\t{}", values.join("\t"));
             }
             out
         }
