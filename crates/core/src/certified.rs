@@ -256,25 +256,35 @@ pub fn check_f64(values: &[f64], exact: &[Interval]) -> Vec<CheckedF64> {
         .collect()
 }
 
-/// The error for non-finite f64 values of `basis` at `x`: an overflow
-/// when the exact values are finite but beyond the range of f64, otherwise
-/// a division by zero in `quantity`.
-pub fn nonfinite_error<B: Basis + ?Sized>(
+/// The error for non-finite values of `basis` at `x` in a floating
+/// backend: a parameter the backend cannot hold, a division by zero (the
+/// exact value at the backend's point has a divisor not proved nonzero), or
+/// else an overflow of the backend's range (the exact values are finite).
+pub fn nonfinite_error<B: Basis + ?Sized, T: Real>(
     basis: &B,
-    x: f64,
+    x: &T,
     params: &[Rational],
     quantity: String,
 ) -> CoreError {
-    let exact = Rational::from_f64(x).filter(|_| params.len() == basis.param_names().len());
-    if let Some(x) = exact {
-        let values = enclose_basis(basis, &x, params, 128);
-        if check(&values, &quantity, 128).is_ok()
-            && values.iter().any(|v| v.mag().to_f64() > f64::MAX)
-        {
-            return CoreError::Overflow { quantity };
-        }
+    let names = basis.param_names();
+    if let Some((name, _)) = names
+        .iter()
+        .zip(params)
+        .find(|(_, q)| !x.rational(q).is_finite())
+    {
+        return CoreError::NotRepresentable {
+            what: format!("parameter {name}"),
+            kind: "overflows".into(),
+        };
     }
-    CoreError::DivisionByZero { quantity }
+    let Some(point) = x.to_rational().filter(|_| params.len() == names.len()) else {
+        return CoreError::DivisionByZero { quantity };
+    };
+    let values = enclose_basis(basis, &point, params, 128);
+    match check(&values, &quantity, 128) {
+        Err(CoreError::Overflow { .. }) | Ok(()) => CoreError::Overflow { quantity },
+        Err(_) => CoreError::DivisionByZero { quantity },
+    }
 }
 
 #[cfg(test)]

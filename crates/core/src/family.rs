@@ -454,16 +454,11 @@ impl Family {
                 .params
                 .iter()
                 .zip(p)
-                .map(|(s, v)| format!("{}={v}", s.name))
+                .map(|(s, v)| format!("{}={}", s.name, crate::echo::echo(&v.to_string())))
                 .collect::<Vec<_>>()
                 .join(", ");
             let quantity = format!("`{}` at {at}", info.id);
-            return Err(crate::certified::nonfinite_error(
-                self,
-                x.to_f64(),
-                p,
-                quantity,
-            ));
+            return Err(crate::certified::nonfinite_error(self, x, p, quantity));
         }
         Ok(values)
     }

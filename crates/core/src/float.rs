@@ -59,6 +59,10 @@ impl Real for f64 {
     fn is_finite(&self) -> bool {
         f64::is_finite(*self)
     }
+
+    fn to_rational(&self) -> Option<rug::Rational> {
+        rug::Rational::from_f64(*self)
+    }
 }
 
 #[cfg(test)]

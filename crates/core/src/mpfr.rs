@@ -41,11 +41,6 @@ impl Mpfr {
         let digits = (f64::from(self.prec()) * std::f64::consts::LOG10_2).ceil() as usize + 1;
         self.0.to_string_radix(10, Some(digits))
     }
-
-    /// The exact value as a rational (`None` for NaN or infinities).
-    pub fn to_rational(&self) -> Option<rug::Rational> {
-        self.0.to_rational()
-    }
 }
 
 impl fmt::Display for Mpfr {
@@ -153,6 +148,10 @@ impl Real for Mpfr {
 
     fn is_finite(&self) -> bool {
         self.0.is_finite()
+    }
+
+    fn to_rational(&self) -> Option<rug::Rational> {
+        self.0.to_rational()
     }
 }
 

@@ -120,6 +120,12 @@ pub trait Real: Ring + PartialOrd {
     /// True when the value is neither NaN nor infinite.
     fn is_finite(&self) -> bool;
 
+    /// The exact value as a rational, for backends whose values are exact
+    /// binary numbers (f64, MPFR); `None` otherwise (enclosures, jets).
+    fn to_rational(&self) -> Option<rug::Rational> {
+        None
+    }
+
     /// `sin self`.
     fn sin(&self) -> Self {
         self.sin_cos().0

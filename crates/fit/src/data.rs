@@ -9,11 +9,16 @@
 use std::path::Path;
 
 use nalgebra::Point2;
+use trig_core::echo;
 
 use crate::error::{FitError, Result};
 
 /// A point of the plane.
 pub type P2 = Point2<f64>;
+
+/// Largest coordinate magnitude accepted: squared distances of up to a
+/// million points stay far inside the range of f64.
+pub const MAX_COORDINATE: f64 = 1e100;
 
 /// A glyph outline: closed contours with their provenance comments.
 #[derive(Debug, Clone, PartialEq)]
@@ -64,7 +69,7 @@ impl Outline {
                 if line.replace(' ', "") != "contour,x,y" {
                     return Err(bad(
                         number,
-                        format!("expected the header `contour,x,y`, found `{line}`"),
+                        format!("expected the header `contour,x,y`, found `{}`", echo(line)),
                     ));
                 }
                 header = true;
@@ -74,20 +79,31 @@ impl Outline {
             let [c, x, y] = fields[..] else {
                 return Err(bad(
                     number,
-                    format!("expected `contour,x,y`, found `{line}`"),
+                    format!("expected `contour,x,y`, found `{}`", echo(line)),
                 ));
             };
             let c: usize = c.parse().map_err(|_| {
                 bad(
                     number,
-                    format!("contour `{c}` is not a nonnegative integer"),
+                    format!("contour `{}` is not a nonnegative integer", echo(c)),
                 )
             })?;
             let coord = |s: &str| -> Result<f64> {
-                s.parse::<f64>()
+                let v = s
+                    .parse::<f64>()
                     .ok()
                     .filter(|v| v.is_finite())
-                    .ok_or_else(|| bad(number, format!("`{s}` is not a finite number")))
+                    .ok_or_else(|| bad(number, format!("`{}` is not a finite number", echo(s))))?;
+                if v.abs() > MAX_COORDINATE {
+                    return Err(bad(
+                        number,
+                        format!(
+                            "coordinate `{}` is larger than {MAX_COORDINATE:e} in magnitude (squared errors and chord lengths must stay finite)",
+                            echo(s)
+                        ),
+                    ));
+                }
+                Ok(v)
             };
             let p = P2::new(coord(x)?, coord(y)?);
             match c.cmp(&contours.len()) {
@@ -153,6 +169,7 @@ mod tests {
             ("contour,x,y\n0,1,nan\n", 2),
             ("contour,x,y\n0,1,2\n2,1,2\n", 3),
             ("contour,x,y\n", 1),
+            ("contour,x,y\n0,1e308,2\n", 2),
         ] {
             match Outline::parse(text, "g", "t") {
                 Err(FitError::Malformed { line: l, .. }) => assert_eq!(l, line, "{text}"),

@@ -14,6 +14,7 @@
 //!
 //! [`pipeline::fit_outline`] runs all of it.
 
+pub mod banded;
 pub mod basis;
 pub mod chord;
 pub mod corners;

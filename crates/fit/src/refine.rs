@@ -21,12 +21,15 @@
 //!
 //! The end slopes come from the family's Taylor jets, so segments with
 //! different shape parameters join as in thesis (4.7). The KKT system
-//! `[H Cᵀ; C 0][x; μ] = [g; d]` is solved by nalgebra's LU decomposition,
-//! one right-hand side per coordinate.
+//! `[H Cᵀ; C 0][x; μ] = [g; d]` is sparse — `H` is block diagonal (2 × 2 per
+//! segment) and each constraint touches two neighbouring segments — so it
+//! is solved as a banded system after a bandwidth-reducing ordering
+//! ([`crate::banded`]): linear in the number of segments, with no dense
+//! matrix, one right-hand side per coordinate.
 
-use nalgebra::DMatrix;
 use serde::Serialize;
 
+use crate::banded::{Sparse, breadth_first};
 use crate::basis::SegmentBasis;
 use crate::data::P2;
 use crate::error::{FitError, Result};
@@ -64,18 +67,24 @@ pub fn refine(pieces: &[Piece<'_>], continuity: Continuity) -> Result<Vec<Contro
         .filter_map(|(a, p)| p.smooth_successor.map(|b| (a, b)))
         .collect();
     let size = 2 * k + joins.len();
-    let mut m = DMatrix::<f64>::zeros(size, size);
-    let mut rhs = DMatrix::<f64>::zeros(size, 2);
+    let mut m = Sparse::new(size);
+    let mut rhs = vec![[0.0; 2]; size];
     for (j, p) in pieces.iter().enumerate() {
         let rows = design(p.basis, p.t);
         let (v0, v3) = (p.points[0], p.points[p.points.len() - 1]);
+        let mut h = [[0.0; 2]; 2];
         for (b, r) in rows.iter().zip(residual_targets(&rows, p.points, &v0, &v3)) {
             for (u, bu) in [(0, b[1]), (1, b[2])] {
                 for (v, bv) in [(0, b[1]), (1, b[2])] {
-                    m[(2 * j + u, 2 * j + v)] += bu * bv;
+                    h[u][v] += bu * bv;
                 }
-                rhs[(2 * j + u, 0)] += bu * r.x;
-                rhs[(2 * j + u, 1)] += bu * r.y;
+                rhs[2 * j + u][0] += bu * r.x;
+                rhs[2 * j + u][1] += bu * r.y;
+            }
+        }
+        for (u, row) in h.iter().enumerate() {
+            for (v, &value) in row.iter().enumerate() {
+                m.add(2 * j + u, 2 * j + v, value);
             }
         }
     }
@@ -83,6 +92,7 @@ pub fn refine(pieces: &[Piece<'_>], continuity: Continuity) -> Result<Vec<Contro
         Continuity::Local => 1.0,
         Continuity::ArcLength => 1.0 / p.length,
     };
+    let mut edges: Vec<(usize, usize)> = (0..k).map(|j| (2 * j, 2 * j + 1)).collect();
     for (row, &(a, b)) in joins.iter().enumerate() {
         let r = 2 * k + row;
         let (pa, pb) = (&pieces[a], &pieces[b]);
@@ -97,19 +107,17 @@ pub fn refine(pieces: &[Piece<'_>], continuity: Continuity) -> Result<Vec<Contro
             (2 * b + 1, -sb * d[2]),
         ];
         for (col, c) in coeffs {
-            m[(r, col)] += c;
-            m[(col, r)] += c;
+            m.add(r, col, c);
+            m.add(col, r, c);
+            edges.push((r, col));
         }
         let (a0, a3) = (pa.points[0].coords, pa.points[pa.points.len() - 1].coords);
         let (b0, b3) = (pb.points[0].coords, pb.points[pb.points.len() - 1].coords);
         let fixed = (b0 * d[0] + b3 * d[3]) * sb - (a0 * e[0] + a3 * e[3]) * sa;
-        rhs[(r, 0)] = fixed.x;
-        rhs[(r, 1)] = fixed.y;
+        rhs[r] = [fixed.x, fixed.y];
     }
     let x = m
-        .lu()
-        .solve(&rhs)
-        .filter(|x| x.iter().all(|v| v.is_finite()))
+        .solve(&rhs, &breadth_first(size, &edges))
         .ok_or_else(|| FitError::Singular {
             what: format!(
                 "C1 refinement ({} segments, {} smooth joins)",
@@ -123,8 +131,8 @@ pub fn refine(pieces: &[Piece<'_>], continuity: Continuity) -> Result<Vec<Contro
         .map(|(j, p)| {
             [
                 p.points[0],
-                P2::new(x[(2 * j, 0)], x[(2 * j, 1)]),
-                P2::new(x[(2 * j + 1, 0)], x[(2 * j + 1, 1)]),
+                P2::new(x[2 * j][0], x[2 * j][1]),
+                P2::new(x[2 * j + 1][0], x[2 * j + 1][1]),
                 p.points[p.points.len() - 1],
             ]
         })

@@ -28,23 +28,51 @@ pub fn colour(k: usize) -> RGBColor {
     PALETTE[k % PALETTE.len()]
 }
 
-/// `[lo, hi]` of `values` widened by `margin` of the width (and never empty).
+/// Largest coordinate magnitude a picture's axes can span: beyond it the
+/// axis arithmetic (widths, tick steps) leaves the range of f64.
+pub const MAX_COORDINATE: f64 = 1e300;
+
+/// `[lo, hi]` of `values` widened by `margin` of the width (and never
+/// empty: at least a relative 10⁻⁹ of the magnitude). Widths are computed
+/// in halves, so no intermediate overflows; non-finite values make the
+/// range non-finite, which [`chart`] refuses.
 pub fn padded(values: impl Iterator<Item = f64>, margin: f64) -> (f64, f64) {
     let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
-        (a.min(v), b.max(v))
+        if v.is_nan() {
+            (f64::NAN, f64::NAN)
+        } else {
+            (a.min(v), b.max(v))
+        }
     });
-    let w = (hi - lo).max(1e-9);
-    (lo - margin * w, hi + margin * w)
+    let half = (hi / 2.0 - lo / 2.0)
+        .max(1e-9 * lo.abs().max(hi.abs()) / 2.0)
+        .max(5e-10);
+    (lo - 2.0 * margin * half, hi + 2.0 * margin * half)
 }
 
 /// Equal x and y scales: widens the smaller of the two ranges so one data
 /// unit has the same length on both axes of a `SIZE` picture's plot area.
 pub fn equal_aspect(x: (f64, f64), y: (f64, f64), area: (f64, f64)) -> ((f64, f64), (f64, f64)) {
-    let (wx, wy) = (x.1 - x.0, y.1 - y.0);
-    let per_px = (wx / area.0).max(wy / area.1);
-    let (cx, cy) = ((x.0 + x.1) / 2.0, (y.0 + y.1) / 2.0);
-    let (hx, hy) = (per_px * area.0 / 2.0, per_px * area.1 / 2.0);
+    let (hx, hy) = (x.1 / 2.0 - x.0 / 2.0, y.1 / 2.0 - y.0 / 2.0);
+    let per_px = (hx / area.0).max(hy / area.1);
+    let (cx, cy) = (x.0 / 2.0 + x.1 / 2.0, y.0 / 2.0 + y.1 / 2.0);
+    let (hx, hy) = (per_px * area.0, per_px * area.1);
     ((cx - hx, cx + hx), (cy - hy, cy + hy))
+}
+
+/// Refuses axis ranges that cannot be drawn: non-finite, beyond
+/// ±[`MAX_COORDINATE`], or empty.
+fn check_range(axis: &str, r: (f64, f64)) -> Result<()> {
+    let inside = |v: f64| v.is_finite() && v.abs() <= MAX_COORDINATE;
+    if !(inside(r.0) && inside(r.1)) {
+        return Err(PlotError::Input(format!(
+            "the {axis} values reach beyond ±{MAX_COORDINATE:e} (or are not finite); such a picture cannot be drawn"
+        )));
+    }
+    if r.1 <= r.0 {
+        return Err(PlotError::Input(format!("the {axis} range is empty")));
+    }
+    Ok(())
 }
 
 /// The chart every plot draws on: caption, margins, and a mesh with the axis
@@ -61,6 +89,8 @@ pub fn chart<'a, 'b>(
     x_desc: &str,
     y_desc: &str,
 ) -> Result<Chart<'a, 'b>> {
+    check_range(x_desc, x)?;
+    check_range(y_desc, y)?;
     let mut chart = ChartBuilder::on(root)
         .caption(caption.as_ref(), ("sans-serif", 18))
         .margin(12)

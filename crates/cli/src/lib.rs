@@ -1,0 +1,162 @@
+//! `trig-audit`: the command-line front end, as a library so that tests can
+//! run whole command lines in-process (the fuzz suite in `tests/`).
+//!
+//! [`run`] parses one command line and runs it. Every failure is one line
+//! `error: …` (control characters escaped, long messages cut) with exit
+//! status 2; nothing reachable from here panics on bad input.
+
+mod cell;
+mod commands;
+mod format;
+
+use std::ffi::OsString;
+
+use clap::error::ErrorKind;
+use clap::{Parser, Subcommand};
+
+use crate::commands::{
+    audit::AuditArgs, eval::EvalArgs, fit::FitArgs, interp::InterpArgs, join::JoinArgs,
+    list::ListArgs, plot::PlotArgs, table::TableArgs,
+};
+
+/// Machine-checked audits of trigonometric and polynomial spline bases.
+#[derive(Debug, Parser)]
+#[command(name = "trig-audit", version, about)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Decide every published claim and print the report (the main job).
+    Audit(AuditArgs),
+    /// Print the catalog of bases: id, citation, variable, parameters and ranges.
+    List(ListArgs),
+    /// Evaluate every function of a family at a point: f64 with certified error bounds, or proved digits (--prec, --digits).
+    Eval(EvalArgs),
+    /// Exact (or numeric) tables of endpoint derivatives, in Markdown, LaTeX, CSV or JSON.
+    Table(TableArgs),
+    /// Control points a C0–C3, G1 or G2 join forces, derived exactly.
+    Join(JoinArgs),
+    /// Fit cubic (trigonometric) curves to an outline: thesis Chapter 6 tables and comparison.
+    Fit(FitArgs),
+    /// Draw SVG pictures: basis functions, curves, fitted outlines, interpolants.
+    Plot(PlotArgs),
+    /// A positivity-preserving interpolant of thesis 4.3 on its data: pieces, knot jumps, certified minimum.
+    Interp(InterpArgs),
+}
+
+/// What a command line produced.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Outcome {
+    /// The text for standard output (exit status 0).
+    Output(String),
+    /// Help or version text (standard output, exit status 0).
+    Help(String),
+    /// A one-line message for standard error (exit status 2).
+    Error(String),
+}
+
+/// Longest error message, in characters: the head and the tail are kept.
+pub const MAX_ERROR: usize = 600;
+
+/// Runs one command line (`args[0]` is the program name).
+pub fn run<I, T>(args: I) -> Outcome
+where
+    I: IntoIterator<Item = T>,
+    T: Into<OsString> + Clone,
+{
+    let cli = match Cli::try_parse_from(args) {
+        Ok(cli) => cli,
+        Err(e) => {
+            return match e.kind() {
+                ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => Outcome::Help(e.to_string()),
+                ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => Outcome::Error(one_line(
+                    "a subcommand is required: audit, list, eval, table, join, fit, plot or interp (see trig-audit --help)",
+                )),
+                _ => {
+                    let text = e.to_string();
+                    let first = text.lines().next().unwrap_or("bad command line");
+                    let first = first.strip_prefix("error: ").unwrap_or(first);
+                    Outcome::Error(one_line(&format!("{first} (see --help)")))
+                }
+            };
+        }
+    };
+    let result = match cli.command {
+        Command::Audit(args) => commands::audit::run(&args),
+        Command::List(args) => commands::list::run(&args),
+        Command::Eval(args) => commands::eval::run(&args),
+        Command::Table(args) => commands::table::run(&args),
+        Command::Join(args) => commands::join::run(&args),
+        Command::Fit(args) => commands::fit::run(&args),
+        Command::Plot(args) => commands::plot::run(&args),
+        Command::Interp(args) => commands::interp::run(&args),
+    };
+    match result {
+        Ok(text) => Outcome::Output(text),
+        Err(e) => Outcome::Error(one_line(&e.to_string())),
+    }
+}
+
+/// `message` on one line (control characters escaped) and at most
+/// [`MAX_ERROR`] characters (the middle cut, its length stated).
+pub fn one_line(message: &str) -> String {
+    let flat: String = message
+        .chars()
+        .flat_map(|c| {
+            if c.is_control() {
+                c.escape_default().collect::<Vec<_>>()
+            } else {
+                vec![c]
+            }
+        })
+        .collect();
+    let count = flat.chars().count();
+    if count <= MAX_ERROR {
+        return flat;
+    }
+    let head: String = flat.chars().take(MAX_ERROR * 2 / 3).collect();
+    let tail: String = flat.chars().skip(count - MAX_ERROR / 4).collect();
+    format!(
+        "{head} … [{} characters cut] … {tail}",
+        count - MAX_ERROR * 2 / 3 - MAX_ERROR / 4
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn errors_are_one_bounded_line() {
+        let long = format!("a\nb{}", "x".repeat(5000));
+        let line = one_line(&long);
+        assert!(!line.contains('\n'));
+        assert!(line.chars().count() < MAX_ERROR + 60, "{}", line.len());
+        assert!(line.starts_with("a\\nb"));
+    }
+
+    #[test]
+    fn clap_errors_are_one_line() {
+        for args in [
+            &["trig-audit", "eval", "--bogus"][..],
+            &["trig-audit", "eval", "thesis-cubic", "--at"],
+            &["trig-audit"],
+            &[
+                "trig-audit",
+                "table",
+                "x",
+                "--order",
+                "99999999999999999999999",
+            ],
+        ] {
+            match run(args) {
+                Outcome::Error(line) => assert!(!line.contains('\n'), "{line}"),
+                other => panic!("{args:?}: {other:?}"),
+            }
+        }
+        assert!(matches!(run(["trig-audit", "--help"]), Outcome::Help(_)));
+    }
+}
