@@ -6,6 +6,7 @@
 //! 256-bit MPFR counterexample as evidence when a claim fails. A claim never
 //! carries its verdict: [`run`] computes every verdict.
 
+pub mod budget;
 pub mod certify;
 pub mod claim;
 mod claims;

@@ -10,6 +10,8 @@
 //! need up to [`MAX_BITS`]; what is not proved by then is reported as such
 //! (fewer digits, or an error naming the limit), never guessed.
 
+use std::time::{Duration, Instant};
+
 use rug::Rational;
 
 use crate::basis::Basis;
@@ -38,12 +40,30 @@ pub const F64_CHECK_DIGITS: usize = 20;
 /// certified value replaces it.
 const F64_TOLERANCE: f64 = 1e-8;
 
+/// Time budget of one certified evaluation. The cost of each precision
+/// step is predicted from the step before (doubling the precision at most
+/// quadruples the work of MPFR's arithmetic and functions at these sizes):
+/// a step that would end past the budget is not started.
+pub const TIME_BUDGET: Duration = Duration::from_secs(10);
+
+/// Why an evaluation stopped short of its target.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Stop {
+    /// The precision reached [`MAX_BITS`].
+    MaxBits,
+    /// The next step would have run past [`TIME_BUDGET`].
+    Time,
+}
+
 /// Enclosures proved at some working precision.
 #[derive(Debug, Clone)]
 pub struct Enclosures {
     pub values: Vec<Interval>,
     /// Working precision of the last evaluation, in bits.
     pub bits: u32,
+    /// Why the precision was not raised further, when the target was not
+    /// reached.
+    pub stopped: Option<Stop>,
 }
 
 impl Enclosures {
@@ -79,15 +99,82 @@ pub fn check(values: &[Interval], what: &str, bits: u32) -> Result<()> {
     }
 }
 
-/// Evaluates `f` once at `bits` and checks the result.
+/// Evaluates `f` at doubling precisions from [`MIN_BITS`]: up to `target`
+/// bits, then on while `more` says the result is not good enough, up to
+/// [`MAX_BITS`]; each step only if its predicted cost fits the
+/// [`TIME_BUDGET`]. A divisor not proved nonzero is retried at the next
+/// precision; other errors end the climb.
+fn climb(
+    target: u32,
+    what: &str,
+    f: &mut impl FnMut(u32) -> Result<Vec<Interval>>,
+    more: impl Fn(&[Interval]) -> bool,
+) -> Result<Enclosures> {
+    let start = Instant::now();
+    let mut bits = MIN_BITS.min(target);
+    let mut last: Option<Enclosures> = None;
+    loop {
+        let step = Instant::now();
+        let result = f(bits).and_then(|values| check(&values, what, bits).map(|()| values));
+        let took = step.elapsed();
+        let failure = match result {
+            Ok(values) => {
+                let done = bits >= target && !more(&values);
+                last = Some(Enclosures {
+                    values,
+                    bits,
+                    stopped: None,
+                });
+                if done {
+                    break;
+                }
+                None
+            }
+            Err(e @ CoreError::NotCertifiedNonzero { .. }) => Some(e),
+            Err(e) => return Err(e),
+        };
+        let stop = if bits >= MAX_BITS {
+            Stop::MaxBits
+        } else if start.elapsed() + took * 4 > TIME_BUDGET {
+            Stop::Time
+        } else {
+            bits = bits.saturating_mul(2).min(MAX_BITS);
+            continue;
+        };
+        return match (failure, last) {
+            (Some(e), _) => Err(e),
+            (None, Some(mut e)) => {
+                e.stopped = Some(stop);
+                Ok(e)
+            }
+            (None, None) => Err(CoreError::Limit {
+                what: what.to_string(),
+                limit: format!("{} s of computation", TIME_BUDGET.as_secs()),
+            }),
+        };
+    }
+    last.ok_or_else(|| CoreError::Limit {
+        what: what.to_string(),
+        limit: format!("{} s of computation", TIME_BUDGET.as_secs()),
+    })
+}
+
+/// Evaluates `f` at `bits` (after cheaper steps that predict its cost) and
+/// checks the result; an error naming the budget when `bits` cannot be
+/// reached within [`TIME_BUDGET`].
 pub fn at_bits(
     bits: u32,
     what: &str,
     f: &mut impl FnMut(u32) -> Result<Vec<Interval>>,
 ) -> Result<Enclosures> {
-    let values = f(bits)?;
-    check(&values, what, bits)?;
-    Ok(Enclosures { values, bits })
+    let e = climb(bits, what, f, |_| false)?;
+    if e.bits < bits {
+        return Err(CoreError::Limit {
+            what: format!("{what} at {bits} bits (predicted from {} bits)", e.bits),
+            limit: format!("{} s of computation", TIME_BUDGET.as_secs()),
+        });
+    }
+    Ok(e)
 }
 
 /// True when every value has `digits` proved significant digits, or is an
@@ -106,28 +193,20 @@ fn resolved(values: &[Interval], digits: usize) -> bool {
     })
 }
 
-/// Evaluates `f` at increasing precision — from the precision `digits`
-/// needs, doubling, up to [`MAX_BITS`] — until every value is
-/// [`resolved`]. Returns the last enclosures (possibly with fewer digits
-/// than asked: [`Enclosures::digits`] says how many are proved). A divisor
-/// not proved nonzero is retried at higher precision and is an error at
-/// [`MAX_BITS`].
+/// Evaluates `f` at increasing precision until every value is
+/// [`resolved`] to `digits`, or [`MAX_BITS`] or the [`TIME_BUDGET`] is
+/// reached. Returns the last enclosures: possibly with fewer digits than
+/// asked ([`Enclosures::digits`] says how many are proved,
+/// [`Enclosures::stopped`] why).
 pub fn to_digits(
     digits: usize,
     what: &str,
     mut f: impl FnMut(u32) -> Result<Vec<Interval>>,
 ) -> Result<Enclosures> {
     let need = (digits as f64 * std::f64::consts::LOG2_10).ceil() as u32 + 32;
-    let mut bits = need.clamp(MIN_BITS, MAX_BITS);
-    loop {
-        match at_bits(bits, what, &mut f) {
-            Ok(e) if bits >= MAX_BITS || resolved(&e.values, digits) => return Ok(e),
-            Err(CoreError::NotCertifiedNonzero { .. }) if bits < MAX_BITS => {}
-            Err(e) => return Err(e),
-            Ok(_) => {}
-        }
-        bits = bits.saturating_mul(2).min(MAX_BITS);
-    }
+    climb(need.clamp(MIN_BITS, MAX_BITS), what, &mut f, |v| {
+        !resolved(v, digits)
+    })
 }
 
 /// The functions of `basis` at the exact point `x` with exact parameters,

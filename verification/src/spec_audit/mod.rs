@@ -18,11 +18,16 @@ mod joins;
 
 pub use certified::pieces as standard_pieces;
 
+use std::sync::Arc;
+use std::time::Duration;
+
 use rug::Rational;
 use trig_certify::ParamBox;
 use trig_spec::{Check, Spec, SpecClaim};
 use trig_symbolic::Sym;
 
+use crate::budget::{bounded, within};
+use crate::certify::evidence::CERTIFIED;
 use crate::exact::{identity, sum};
 use crate::report::{Document, Entry};
 use crate::verdict::Verdict;
@@ -58,7 +63,26 @@ pub fn intro(spec: &Spec) -> String {
 
 /// The standard battery, then the file's claims.
 pub fn audit(spec: &Spec) -> Vec<Entry> {
+    audit_within(spec, None)
+}
+
+/// A decision of the audit, run on the spec.
+type Decision<T> = Box<dyn FnOnce(&Spec) -> T + Send>;
+
+/// [`audit`], each decision bounded by `budget` (a decision that runs
+/// over is `not-checkable`, see [`crate::budget`]).
+pub fn audit_within(spec: &Spec, budget: Option<Duration>) -> Vec<Entry> {
     let doc = document(spec);
+    let shared = Arc::new(spec.clone());
+    let run = |f: Decision<Verdict>| -> Verdict {
+        match budget {
+            None => f(spec),
+            Some(limit) => {
+                let s = Arc::clone(&shared);
+                within(limit, move || f(&s))
+            }
+        }
+    };
     let entry = |id: &str, source: &str, statement: String, verdict: Verdict| Entry {
         id: id.to_string(),
         document: doc.clone(),
@@ -73,13 +97,24 @@ pub fn audit(spec: &Spec) -> Vec<Entry> {
         .map(|f| f.name.as_str())
         .collect::<Vec<_>>()
         .join(", ");
-    let (symmetry_text, symmetry) = geometry::battery_symmetry(spec);
+    let (symmetry_text, symmetry) = match budget {
+        None => geometry::battery_symmetry(spec),
+        Some(limit) => {
+            let s = Arc::clone(&shared);
+            bounded(limit, move || geometry::battery_symmetry(&s)).unwrap_or_else(|why| {
+                (
+                    "symmetry of the functions".into(),
+                    Verdict::not_checkable(why),
+                )
+            })
+        }
+    };
     let mut out = vec![
-        entry("unity", "standard battery", format!("partition of unity: {}", sum_label(spec)), unity(spec)),
-        entry("nonnegativity", "standard battery", format!("{names} ≥ 0 on the domain exactly for the declared parameter ranges"), certified::nonnegativity(spec)),
+        entry("unity", "standard battery", format!("partition of unity: {}", sum_label(spec)), run(Box::new(unity))),
+        entry("nonnegativity", "standard battery", format!("{names} ≥ 0 on the domain exactly for the declared parameter ranges"), run(Box::new(certified::nonnegativity))),
         entry("symmetry", "standard battery", symmetry_text, symmetry),
-        entry("interpolation", "standard battery", "endpoint interpolation: only the first function is nonzero at the start (value 1), only the last at the end (value 1)".into(), geometry::interpolation(spec)),
-        entry("derivatives", "standard battery", format!("exact endpoint derivatives of orders 0–{} {}, by jets and by symbolic differentiation", TABLE_ORDERS - 1, geometry::table_convention(spec)), geometry::derivative_table(spec)),
+        entry("interpolation", "standard battery", "endpoint interpolation: only the first function is nonzero at the start (value 1), only the last at the end (value 1)".into(), run(Box::new(geometry::interpolation))),
+        entry("derivatives", "standard battery", format!("exact endpoint derivatives of orders 0–{} {}, by jets and by symbolic differentiation", TABLE_ORDERS - 1, geometry::table_convention(spec)), run(Box::new(geometry::derivative_table))),
     ];
     for order in [1, 2] {
         out.push(entry(
@@ -88,14 +123,18 @@ pub fn audit(spec: &Spec) -> Vec<Entry> {
             format!(
                 "C{order} join of Σ b_i P_i (end) and Σ b_i Q_i (start): derived conditions on Q"
             ),
-            joins::derived_join(spec, order),
+            run(Box::new(move |s: &Spec| joins::derived_join(s, order))),
         ));
     }
-    out.extend(
-        spec.claims
-            .iter()
-            .map(|c| entry(&c.id, &c.source, c.statement.clone(), decide(spec, c))),
-    );
+    out.extend(spec.claims.iter().map(|c| {
+        let claim = c.clone();
+        entry(
+            &c.id,
+            &c.source,
+            c.statement.clone(),
+            run(Box::new(move |s: &Spec| decide(s, &claim))),
+        )
+    }));
     out
 }
 

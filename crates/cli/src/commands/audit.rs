@@ -3,9 +3,11 @@
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
+use std::time::Duration;
 
 use clap::{Args, ValueEnum};
 use trig_spec::Spec;
+use trig_verification::budget::CLAIM_BUDGET;
 use trig_verification::report::Entry;
 use trig_verification::{Seed, report, run as run_audit, spec_audit};
 
@@ -36,6 +38,20 @@ pub struct AuditArgs {
     /// Write the report to this file (atomically) instead of standard output.
     #[arg(long)]
     output: Option<PathBuf>,
+    /// With --spec: seconds each claim's decision may take (0.1 to 3600);
+    /// a decision that runs over is reported `not-checkable`.
+    #[arg(long, default_value_t = CLAIM_BUDGET.as_secs_f64(), value_parser = time_limit)]
+    time_limit: f64,
+}
+
+/// A time limit in seconds, from 0.1 to 3600.
+fn time_limit(text: &str) -> Result<f64, String> {
+    let t: f64 = text.parse().map_err(|_| "expected seconds".to_string())?;
+    if (0.1..=3600.0).contains(&t) {
+        Ok(t)
+    } else {
+        Err("expected 0.1 to 3600 seconds".into())
+    }
 }
 
 pub fn run(args: &AuditArgs) -> CmdResult {
@@ -43,7 +59,8 @@ pub fn run(args: &AuditArgs) -> CmdResult {
         Some(path) => {
             let spec = Spec::from_file(path)
                 .map_err(|e| CliError::Usage(e.to_string().replace('\n', " ")))?;
-            let entries: Vec<Entry> = spec_audit::audit(&spec)
+            let budget = Duration::from_secs_f64(args.time_limit);
+            let entries: Vec<Entry> = spec_audit::audit_within(&spec, Some(budget))
                 .into_iter()
                 .filter(|e| {
                     args.claim

@@ -9,8 +9,8 @@ use clap::Args;
 use rug::Rational;
 use serde_json::json;
 use trig_core::certified::{
-    self, CheckedF64, F64_CHECK_DIGITS, MAX_BITS, MAX_DIGITS, at_bits, check_domain, check_f64,
-    to_digits,
+    self, CheckedF64, F64_CHECK_DIGITS, MAX_BITS, MAX_DIGITS, Stop, TIME_BUDGET, at_bits,
+    check_domain, check_f64, to_digits,
 };
 use trig_core::decimal::max_digits;
 use trig_core::families::seed000_nonuniform::NonUniform;
@@ -298,7 +298,7 @@ impl Mode {
         precision_mode(args.prec, args.digits)
     }
 
-    fn describe(&self, bits: u32, proved: usize) -> String {
+    fn describe(&self, bits: u32, proved: usize, stopped: Option<Stop>) -> String {
         match *self {
             Mode::F64 => format!("f64; ± certified error bounds, enclosures at {bits} bits"),
             Mode::Bits(b) => format!("mpfr-{b}, certified: only proved digits are printed"),
@@ -306,14 +306,26 @@ impl Mode {
                 format!("{n} significant digits, all proved; mpfr-{bits}")
             }
             Mode::Digits(n) => format!(
-                "{n} digits requested, {} proved at the {bits}-bit limit",
+                "{n} digits requested, {} proved{}",
                 if proved == 0 {
                     "none".to_string()
                 } else {
                     format!("{proved}")
-                }
+                },
+                shortfall(bits, stopped)
             ),
         }
+    }
+}
+
+/// Why fewer digits than requested are proved.
+pub fn shortfall(bits: u32, stopped: Option<Stop>) -> String {
+    match stopped {
+        Some(Stop::Time) => format!(
+            " within the time limit of {} s (at {bits} bits)",
+            TIME_BUDGET.as_secs()
+        ),
+        _ => format!(" at the {bits}-bit limit"),
     }
 }
 
@@ -450,7 +462,7 @@ fn evaluate(
         s.problem
             .compute(&|q: &Rational| Interval::from_rational(bits, q))
     };
-    let (values, bits, proved) = match mode {
+    let (values, bits, proved, stopped) = match mode {
         Mode::F64 => {
             for (name, q) in s.problem.inputs(&s.param_names, at_text) {
                 certified::to_f64(q, &name).map_err(|e| {
@@ -486,17 +498,17 @@ fn evaluate(
                     },
                 })
                 .collect();
-            (shown, exact.bits, 0)
+            (shown, exact.bits, 0, None)
         }
         Mode::Bits(bits) => {
             let mut f = enclose;
             let e = at_bits(bits, &what, &mut f)?;
             let max = max_digits(bits);
-            (decimals(&e.values, max), bits, e.digits(max))
+            (decimals(&e.values, max), bits, e.digits(max), None)
         }
         Mode::Digits(n) => {
             let e = to_digits(n, &what, enclose)?;
-            (decimals(&e.values, n), e.bits, e.digits(n))
+            (decimals(&e.values, n), e.bits, e.digits(n), e.stopped)
         }
     };
     Ok(Evaluation {
@@ -504,7 +516,7 @@ fn evaluate(
         citation: s.citation,
         names: s.names,
         values,
-        precision: mode.describe(bits, proved),
+        precision: mode.describe(bits, proved, stopped),
         note: s.note,
     })
 }

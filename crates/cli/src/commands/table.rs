@@ -9,7 +9,7 @@ use trig_core::{Basis, CoreError, Interval, Ring, parse_exact};
 use trig_deriv::{End, Wrt, curve_endpoint_derivatives, endpoint_derivatives, knot_derivatives};
 use trig_symbolic::Sym;
 
-use super::eval::{Mode, Subject, param_pairs, precision_mode};
+use super::eval::{Mode, Subject, param_pairs, precision_mode, shortfall};
 use super::{CliError, CmdResult, range_hint};
 use crate::cell::{Block, Cell, Rendered};
 use crate::format::{TableFormat, render_blocks};
@@ -251,8 +251,8 @@ fn numeric(args: &TableArgs, family: &Subject) -> Result<(Vec<Block>, String), C
                 format!("{n} significant digits, all proved (MPFR {} bits)", e.bits)
             } else {
                 format!(
-                    "{n} digits requested, {proved} proved at the {}-bit limit",
-                    e.bits
+                    "{n} digits requested, {proved} proved{}",
+                    shortfall(e.bits, e.stopped)
                 )
             };
             (render_decimals(last, n), note)
