@@ -1,6 +1,8 @@
 //! Helpers for the end-to-end tests: locate (building if needed) the
 //! `trig-audit` binary of this workspace and run it.
 
+pub mod fuzz;
+
 use std::path::PathBuf;
 use std::process::{Command, Output};
 use std::sync::OnceLock;
