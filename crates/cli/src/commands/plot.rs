@@ -15,7 +15,7 @@ use trig_spec::Spec;
 use trig_verification::region_audit::{Axis, classify_window};
 
 use super::fit::{FitSetup, Runs, prepare};
-use super::{CliError, CmdResult};
+use super::{CliError, CmdResult, range_hint};
 
 #[derive(Debug, Args)]
 pub struct PlotArgs {
@@ -144,6 +144,14 @@ fn plot_err(e: trig_plot::PlotError) -> CliError {
     }
 }
 
+/// [`plot_err`] for the plots that take `--allow-outside-range`.
+fn plot_err_hinted(e: trig_plot::PlotError) -> CliError {
+    match e {
+        trig_plot::PlotError::Core(c) => range_hint(c),
+        other => plot_err(other),
+    }
+}
+
 pub fn run(args: &PlotArgs) -> CmdResult {
     match &args.what {
         PlotKind::Basis {
@@ -155,7 +163,7 @@ pub fn run(args: &PlotArgs) -> CmdResult {
             let vals = values(family, &v.values)?;
             write(
                 output,
-                &basis_svg(family, &vals, v.allow_outside_range).map_err(plot_err)?,
+                &basis_svg(family, &vals, v.allow_outside_range).map_err(plot_err_hinted)?,
             )
         }
         PlotKind::Curve {
@@ -169,7 +177,8 @@ pub fn run(args: &PlotArgs) -> CmdResult {
             let control = control_points(control)?;
             write(
                 output,
-                &curve_svg(family, &control, &vals, v.allow_outside_range).map_err(plot_err)?,
+                &curve_svg(family, &control, &vals, v.allow_outside_range)
+                    .map_err(plot_err_hinted)?,
             )
         }
         PlotKind::Fit {
