@@ -9,7 +9,7 @@ use std::path::PathBuf;
 use proptest::prelude::*;
 use proptest::strategy::BoxedStrategy;
 use rug::Rational;
-use trig_core::{Family, Variable};
+use trig_core::{Basis as _, Domain, Family};
 use trig_spec::Spec;
 
 /// What the oracle can check beyond "no panic, no hang, one-line errors".
@@ -65,7 +65,22 @@ struct Basis {
     arg: Vec<String>,
     subject: Option<Subject>,
     params: Vec<Param>,
-    variable: Variable,
+    /// The domain `[a, b]` (ends at interior parameter values), rounded.
+    span: (f64, f64),
+}
+
+/// The ends of `domain` in f64 with the parameters at interior values.
+fn span(domain: &Domain, params: &[Param]) -> (f64, f64) {
+    let p: Vec<f64> = params
+        .iter()
+        .map(|p| match (&p.lo, &p.hi) {
+            (Some(a), Some(b)) => ((a.clone() + b) / 2u32).to_f64(),
+            (Some(a), None) => a.to_f64() + 1.0,
+            (None, Some(b)) => b.to_f64() - 1.0,
+            (None, None) => 0.0,
+        })
+        .collect();
+    (domain.start_value(&1.0, &p), domain.end_value(&1.0, &p))
 }
 
 fn examples_dir() -> PathBuf {
@@ -78,10 +93,8 @@ fn bases(scratch: &std::path::Path) -> Vec<Basis> {
     let mut out: Vec<Basis> = Family::ALL
         .into_iter()
         .filter(Family::has_formulas)
-        .map(|f| Basis {
-            arg: vec![f.info().id.to_string()],
-            subject: Some(Subject::Family(f)),
-            params: f
+        .map(|f| {
+            let params: Vec<Param> = f
                 .info()
                 .params
                 .iter()
@@ -90,8 +103,13 @@ fn bases(scratch: &std::path::Path) -> Vec<Basis> {
                     lo: p.range.lo.value(),
                     hi: p.range.hi.value(),
                 })
-                .collect(),
-            variable: f.info().variable,
+                .collect();
+            Basis {
+                arg: vec![f.info().id.to_string()],
+                subject: Some(Subject::Family(f)),
+                span: span(&f.domain(), &params),
+                params,
+            }
         })
         .collect();
     let mut files: Vec<PathBuf> = [examples_dir(), scratch.to_path_buf()]
@@ -111,19 +129,21 @@ fn bases(scratch: &std::path::Path) -> Vec<Basis> {
         let Ok(spec) = Spec::from_file(&path) else {
             continue;
         };
+        let params: Vec<Param> = spec
+            .params
+            .iter()
+            .map(|p| Param {
+                name: p.name.clone(),
+                lo: p.range.lo.value().cloned(),
+                hi: p.range.hi.value().cloned(),
+            })
+            .collect();
+        let span = span(&spec.domain, &params);
         out.push(Basis {
             arg: vec!["--spec".into(), path.display().to_string()],
             subject: Some(Subject::Spec(path)),
-            params: spec
-                .params
-                .iter()
-                .map(|p| Param {
-                    name: p.name.clone(),
-                    lo: p.range.lo.value().cloned(),
-                    hi: p.range.hi.value().cloned(),
-                })
-                .collect(),
-            variable: spec.variable,
+            params,
+            span,
         });
     }
     for odd in [
@@ -142,7 +162,7 @@ fn bases(scratch: &std::path::Path) -> Vec<Basis> {
                 lo: Some(Rational::new()),
                 hi: Some(Rational::from(4)),
             }],
-            variable: Variable::Angle,
+            span: (0.0, std::f64::consts::FRAC_PI_2),
         });
     }
     out
@@ -251,15 +271,12 @@ fn params(ps: &[Param]) -> BoxedStrategy<Vec<(String, String)>> {
     each.prop_map(|v| v.into_iter().flatten().collect()).boxed()
 }
 
-/// A point: mostly inside the domain of `variable`, sometimes hostile.
-fn point(variable: Variable) -> BoxedStrategy<String> {
-    let scale = if variable == Variable::Angle {
-        Rational::from((15_707, 10_000))
-    } else {
-        Rational::from(1)
-    };
+/// A point: mostly inside the domain `span`, sometimes hostile.
+fn point(span: (f64, f64)) -> BoxedStrategy<String> {
+    let lo = Rational::from_f64(span.0).unwrap_or_default();
+    let scale = Rational::from_f64(span.1 - span.0).unwrap_or_default();
     prop_oneof![
-        12 => (0u32..=1000).prop_map(move |k| (Rational::from((k, 1000)) * &scale).to_string()),
+        12 => (0u32..=1000).prop_map(move |k| (lo.clone() + Rational::from((k, 1000)) * &scale).to_string()),
         2 => proptest::sample::select(vec!["0", "1", "0.5", "1.5707963267948966", "0.0"]).prop_map(String::from),
         3 => hostile_number(),
     ]
@@ -374,7 +391,7 @@ fn eval(bases: &[Basis], heavy: bool) -> BoxedStrategy<Case> {
             (
                 Just(b.clone()),
                 params(&b.params),
-                point(b.variable),
+                point(b.span),
                 arithmetic(heavy),
                 flag("--allow-outside-range", 2),
                 flag("--piecewise", 1),
