@@ -107,7 +107,8 @@ pub fn run_case(args: &[String], limit: Duration) -> Result<Outcome, Failure> {
     }
 }
 
-/// Where plot output and the hostile outline go.
+/// Where plot output and the hostile outline and spec go (removed after
+/// a campaign).
 pub fn scratch() -> PathBuf {
     std::env::temp_dir().join(format!("trig-audit-fuzz-{}", std::process::id()))
 }
