@@ -59,7 +59,10 @@ pub enum Outcome {
 }
 
 /// Longest error message, in characters: the head and the tail are kept.
-pub const MAX_ERROR: usize = 600;
+/// (Echoes of input are bounded where they are made, see
+/// [`trig_core::echo`]; this bounds everything else, e.g. a long formula
+/// an exact computation derived.)
+pub const MAX_ERROR: usize = 10_000;
 
 /// Runs one command line (`args[0]` is the program name).
 pub fn run<I, T>(args: I) -> Outcome
@@ -79,7 +82,8 @@ where
                     let text = e.to_string();
                     let first = text.lines().next().unwrap_or("bad command line");
                     let first = first.strip_prefix("error: ").unwrap_or(first);
-                    Outcome::Error(one_line(&format!("{first} (see --help)")))
+                    // clap quotes the offending argument whole: keep it short
+                    Outcome::Error(bounded(&format!("{first} (see --help)"), MAX_USAGE_ERROR))
                 }
             };
         }
@@ -100,28 +104,28 @@ where
     }
 }
 
+/// Longest command-line (usage) error, in characters.
+const MAX_USAGE_ERROR: usize = 300;
+
 /// `message` on one line (control characters escaped) and at most
 /// [`MAX_ERROR`] characters (the middle cut, its length stated).
 pub fn one_line(message: &str) -> String {
-    let flat: String = message
-        .chars()
-        .flat_map(|c| {
-            if c.is_control() {
-                c.escape_default().collect::<Vec<_>>()
-            } else {
-                vec![c]
-            }
-        })
-        .collect();
+    bounded(message, MAX_ERROR)
+}
+
+/// `message` on one line and at most `max` characters.
+fn bounded(message: &str, max: usize) -> String {
+    let flat = trig_core::echo::escape_controls(message);
     let count = flat.chars().count();
-    if count <= MAX_ERROR {
+    if count <= max {
         return flat;
     }
-    let head: String = flat.chars().take(MAX_ERROR * 2 / 3).collect();
-    let tail: String = flat.chars().skip(count - MAX_ERROR / 4).collect();
+    let (keep_head, keep_tail) = (max * 2 / 3, max / 4);
+    let head: String = flat.chars().take(keep_head).collect();
+    let tail: String = flat.chars().skip(count - keep_tail).collect();
     format!(
         "{head} … [{} characters cut] … {tail}",
-        count - MAX_ERROR * 2 / 3 - MAX_ERROR / 4
+        count - keep_head - keep_tail
     )
 }
 
@@ -131,7 +135,7 @@ mod tests {
 
     #[test]
     fn errors_are_one_bounded_line() {
-        let long = format!("a\nb{}", "x".repeat(5000));
+        let long = format!("a\nb{}", "x".repeat(50_000));
         let line = one_line(&long);
         assert!(!line.contains('\n'));
         assert!(line.chars().count() < MAX_ERROR + 60, "{}", line.len());

@@ -8,12 +8,9 @@
 /// Longest echoed input, in characters.
 pub const MAX_ECHO: usize = 60;
 
-/// `input` on one line, at most [`MAX_ECHO`] characters of it.
-pub fn echo(input: &str) -> String {
-    let count = input.chars().count();
-    let shown: String = input
-        .chars()
-        .take(MAX_ECHO)
+/// `text` with its control characters (line breaks, tabs, …) escaped.
+pub fn escape_controls(text: &str) -> String {
+    text.chars()
         .flat_map(|c| {
             if c.is_control() {
                 c.escape_default().collect::<Vec<_>>()
@@ -21,7 +18,14 @@ pub fn echo(input: &str) -> String {
                 vec![c]
             }
         })
-        .collect();
+        .collect()
+}
+
+/// `input` on one line, at most [`MAX_ECHO`] characters of it.
+pub fn echo(input: &str) -> String {
+    let count = input.chars().count();
+    let head: String = input.chars().take(MAX_ECHO).collect();
+    let shown = escape_controls(&head);
     if count > MAX_ECHO {
         format!("{shown}… ({count} characters)")
     } else {

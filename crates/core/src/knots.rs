@@ -6,14 +6,24 @@ use crate::scalar::Real;
 /// Checks that `knots` has at least `min_len` finite, strictly increasing
 /// entries (no zero-length interval).
 pub fn check_knots<T: Real>(knots: &[T], min_len: usize) -> Result<()> {
+    if let Some(i) = knots.iter().position(|k| !k.is_finite()) {
+        return Err(CoreError::Knots(format!("knot n_{i} is not finite")));
+    }
+    check_increasing(knots, min_len, |i| knots[i].to_f64().to_string())
+}
+
+/// Checks that `knots` has at least `min_len` strictly increasing entries;
+/// `show(i)` prints knot `i` in the message (exact knots: as typed).
+pub fn check_increasing<T: PartialOrd>(
+    knots: &[T],
+    min_len: usize,
+    show: impl Fn(usize) -> String,
+) -> Result<()> {
     if knots.len() < min_len {
         return Err(CoreError::Knots(format!(
             "need at least {min_len} knots, got {}",
             knots.len()
         )));
-    }
-    if let Some(i) = knots.iter().position(|k| !k.is_finite()) {
-        return Err(CoreError::Knots(format!("knot n_{i} is not finite")));
     }
     for (i, w) in knots.windows(2).enumerate() {
         if w[1] <= w[0] {
@@ -25,9 +35,9 @@ pub fn check_knots<T: Real>(knots: &[T], min_len: usize) -> Result<()> {
             return Err(CoreError::Knots(format!(
                 "n_{} = {} and n_{} = {}: {what}",
                 i,
-                w[0].to_f64(),
+                show(i),
                 i + 1,
-                w[1].to_f64()
+                show(i + 1)
             )));
         }
     }

@@ -283,62 +283,55 @@ fn point(span: (f64, f64)) -> BoxedStrategy<String> {
     .boxed()
 }
 
-/// `--prec` values; `heavy` adds the largest precisions.
-fn prec(heavy: bool) -> BoxedStrategy<String> {
+/// A count option's values: mostly `usual`, sometimes `odd` (invalid or
+/// at a limit), with `heavy` also the `big` ones.
+fn amounts(
+    usual: std::ops::Range<u64>,
+    odd: Vec<&'static str>,
+    big: Vec<&'static str>,
+    heavy: bool,
+) -> BoxedStrategy<String> {
     let mut v: Vec<BoxedStrategy<String>> = vec![
-        (2u32..700).prop_map(|b| b.to_string()).boxed(),
-        (2u32..700).prop_map(|b| b.to_string()).boxed(),
-        proptest::sample::select(vec![
-            "0",
-            "1",
-            "2",
-            "53",
-            "256",
-            "1024",
-            "65537",
-            "4294967295",
-            "99999999999",
-            "-1",
-            "x",
-        ])
-        .prop_map(String::from)
-        .boxed(),
+        usual.clone().prop_map(|b| b.to_string()).boxed(),
+        usual.prop_map(|b| b.to_string()).boxed(),
+        proptest::sample::select(odd).prop_map(String::from).boxed(),
     ];
     if heavy {
-        v.push(
-            proptest::sample::select(vec!["4096", "16384", "65536"])
-                .prop_map(String::from)
-                .boxed(),
-        );
+        v.push(proptest::sample::select(big).prop_map(String::from).boxed());
     }
     proptest::strategy::Union::new(v).boxed()
 }
 
+/// `--prec` values; `heavy` adds the largest precisions.
+fn prec(heavy: bool) -> BoxedStrategy<String> {
+    let odd = vec![
+        "0",
+        "1",
+        "2",
+        "53",
+        "256",
+        "1024",
+        "65537",
+        "4294967295",
+        "99999999999",
+        "-1",
+        "x",
+    ];
+    amounts(2..700, odd, vec!["4096", "16384", "65536"], heavy)
+}
+
 /// `--digits` values; `heavy` adds the largest counts.
 fn digits(heavy: bool) -> BoxedStrategy<String> {
-    let mut v: Vec<BoxedStrategy<String>> = vec![
-        (1usize..80).prop_map(|d| d.to_string()).boxed(),
-        (1usize..80).prop_map(|d| d.to_string()).boxed(),
-        proptest::sample::select(vec![
-            "0",
-            "17",
-            "100",
-            "10001",
-            "99999999999999999999",
-            "-3",
-            "1.5",
-        ])
-        .prop_map(String::from)
-        .boxed(),
+    let odd = vec![
+        "0",
+        "17",
+        "100",
+        "10001",
+        "99999999999999999999",
+        "-3",
+        "1.5",
     ];
-    if heavy {
-        v.push(
-            proptest::sample::select(vec!["1000", "3000", "10000"])
-                .prop_map(String::from)
-                .boxed(),
-        );
-    }
-    proptest::strategy::Union::new(v).boxed()
+    amounts(1..80, odd, vec!["1000", "3000", "10000"], heavy)
 }
 
 /// The arithmetic options of `eval` and `table --numeric`.

@@ -14,6 +14,7 @@ use trig_core::certified::{
 };
 use trig_core::decimal::max_digits;
 use trig_core::families::seed000_nonuniform::NonUniform;
+use trig_core::knots::check_increasing;
 use trig_core::{
     Atoms, Basis, CoreError, Domain, Family, Interval, Real, Ring, SEED000_NONUNIFORM, echo,
     parse_exact, piecewise,
@@ -583,25 +584,7 @@ fn nonuniform(
         .iter()
         .map(|k| parse_exact(k))
         .collect::<Result<_, CoreError>>()?;
-    if knots.len() < 2 {
-        return Err(CoreError::Knots(format!("need at least 2 knots, got {}", knots.len())).into());
-    }
-    for (i, w) in knots.windows(2).enumerate() {
-        if w[1] <= w[0] {
-            let what = if w[1] == w[0] {
-                "a zero-length interval"
-            } else {
-                "decreasing"
-            };
-            return Err(CoreError::Knots(format!(
-                "n_{i} = {} and n_{} = {}: {what}",
-                echo(&args.knots[i]),
-                i + 1,
-                echo(&args.knots[i + 1])
-            ))
-            .into());
-        }
-    }
+    check_increasing(&knots, 2, |i| echo(&args.knots[i]))?;
     let (span, local) = locate_exact(&knots, n, at_text)?;
     // The printed coefficients exactly first: a denominator that vanishes
     // is named (a division by zero), one that does not is then proved
