@@ -307,9 +307,11 @@ impl CheckedF64 {
 /// the tolerance is relative to the set's largest value). The bound is
 /// between the printed decimal and the exact value.
 pub fn check_f64(values: &[f64], exact: &[Interval]) -> Vec<CheckedF64> {
+    // the largest value f64 can hold (values beyond it are replaced anyway)
     let scale = exact
         .iter()
         .map(|v| v.mag().to_f64())
+        .filter(|m| m.is_finite())
         .fold(0.0_f64, f64::max);
     values
         .iter()
