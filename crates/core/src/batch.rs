@@ -196,9 +196,7 @@ impl<T: BatchReal> Batch<T> {
                 .find(|&i| (0..self.functions()).any(|k| !out[k * n + i].is_finite()))
                 .unwrap_or(0);
             return Err(match &self.exact {
-                Some(p) => {
-                    crate::certified::nonfinite_error(&self.family, xs[first].to_f64(), p, quantity)
-                }
+                Some(p) => crate::certified::nonfinite_error(&self.family, &xs[first], p, quantity),
                 None => CoreError::DivisionByZero { quantity },
             });
         }

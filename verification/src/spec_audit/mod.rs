@@ -27,7 +27,6 @@ use trig_spec::{Check, Spec, SpecClaim};
 use trig_symbolic::Sym;
 
 use crate::budget::{bounded, within};
-use crate::certify::evidence::CERTIFIED;
 use crate::exact::{identity, sum};
 use crate::report::{Document, Entry};
 use crate::verdict::Verdict;

@@ -122,11 +122,15 @@ fn render(args: &EvalArgs, points: &[(String, Rational)], rows: &[Evaluation]) -
                 .iter()
                 .flat_map(|r| r.values.iter().filter_map(|v| v.bound.as_deref()))
                 .collect();
-            if let Some(largest) = bounds
-                .iter()
-                .max_by(|a, b| a.parse::<f64>().unwrap_or(0.0).total_cmp(&b.parse().unwrap_or(0.0)))
-            {
-                let _ = writeln!(out, "# every f64 value is within {largest} of the exact value");
+            if let Some(largest) = bounds.iter().max_by(|a, b| {
+                a.parse::<f64>()
+                    .unwrap_or(0.0)
+                    .total_cmp(&b.parse().unwrap_or(0.0))
+            }) {
+                let _ = writeln!(
+                    out,
+                    "# every f64 value is within {largest} of the exact value"
+                );
             }
             for ((text, _), r) in points.iter().zip(rows) {
                 for (n, v) in r.names.iter().zip(&r.values) {
