@@ -298,3 +298,50 @@ fn eval_at_file_matches_eval_at_each_point() {
     assert!(err.contains("standard input line 1"), "{err}");
     let _ = std::fs::remove_file(&path);
 }
+
+/// Points in multiples of π are exact: the end `π/2` of `[0, π/2]` is in
+/// the domain (decided exactly, not by rounding), a decimal just above it
+/// is not, and at `π/4` Majeed–Qayyum's `g0` (η = 1) is `3/2 − √2`
+/// (hand computation: the thesis (6.1) at θ = π/4, sin = cos = √2/2).
+#[test]
+fn points_may_be_rational_multiples_of_pi() {
+    let at = |point: &str| {
+        stdout_ok(&[
+            "eval",
+            "majeed-qayyum",
+            "--param",
+            "eta=1",
+            "--at",
+            point,
+            "--digits",
+            "15",
+        ])
+    };
+    let end = at("pi/2");
+    assert!(end.contains("g3 = 1.00000000000000"), "{end}");
+    let quarter = at("pi/4");
+    // 3/2 − √2 = 0.0857864376269049512…
+    assert!(quarter.contains("g0 = 8.57864376269050e-2"), "{quarter}");
+    assert_eq!(at("2*pi/8"), quarter.replace("pi/4", "2*pi/8"));
+    assert_errors(&[
+        (
+            &[
+                "eval",
+                "majeed-qayyum",
+                "--param",
+                "eta=1",
+                "--at",
+                "1.5708",
+            ],
+            "outside the domain",
+        ),
+        (
+            &["eval", "majeed-qayyum", "--param", "eta=1", "--at", "pi/0"],
+            "division by zero",
+        ),
+        (
+            &["eval", "bspline3", "--piecewise", "--at", "pi/2"],
+            "take a rational point",
+        ),
+    ]);
+}

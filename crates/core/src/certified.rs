@@ -10,13 +10,14 @@
 //! need up to [`MAX_BITS`]; what is not proved by then is reported as such
 //! (fewer digits, or an error naming the limit), never guessed.
 
+use std::cmp::Ordering;
 use std::time::{Duration, Instant};
 
 use rug::Rational;
 
 use crate::basis::Basis;
 use crate::decimal::{Decimal, bound_text};
-use crate::domain::Domain;
+use crate::domain::{Affine, Domain};
 use crate::error::{CoreError, Result};
 use crate::interval::{Fault, Interval};
 use crate::param::parse_exact;
@@ -222,24 +223,22 @@ pub fn enclose_basis<B: Basis + ?Sized>(
     basis.eval(&basis.domain().atoms(&xi), &p)
 }
 
-/// Whether the exact point `x` lies in `domain` for the exact parameters
-/// `params` (ends with π or parameters compared by enclosures of
-/// increasing precision).
-pub fn domain_contains(domain: &Domain, x: &Rational, params: &[Rational]) -> Result<bool> {
+/// The sign of the exact real `a = q₀ + q_π·π` (no parameters): exact when
+/// `q_π = 0` (or both vanish), else by enclosures of increasing precision
+/// (π is irrational, so a nonzero value is decided).
+pub fn affine_sign(a: &Affine) -> Result<Ordering> {
+    if a.pi == 0 {
+        return Ok(a.constant.cmp0());
+    }
     let mut bits = MIN_BITS;
     loop {
-        let xi = Interval::from_rational(bits, x);
-        let p: Vec<Interval> = params.iter().map(|q| xi.rational(q)).collect();
-        let (start, end) = (domain.start_value(&xi, &p), domain.end_value(&xi, &p));
-        if xi < start || xi > end {
-            return Ok(false);
-        }
-        if xi >= start && xi <= end {
-            return Ok(true);
+        let zero = Interval::from_rational(bits, &Rational::new());
+        if let Some(order) = a.eval(&zero, &[]).partial_cmp(&zero) {
+            return Ok(order);
         }
         if bits >= MAX_BITS {
             return Err(CoreError::Undecidable {
-                what: format!("whether the point is in the domain {domain}"),
+                what: format!("the sign of {}", a.text(&[])),
                 bits,
             });
         }
@@ -247,8 +246,17 @@ pub fn domain_contains(domain: &Domain, x: &Rational, params: &[Rational]) -> Re
     }
 }
 
+/// Whether the exact point `x` (a rational or a rational multiple of π)
+/// lies in `domain` for the exact parameters `params`: the differences to
+/// the ends, `x − a` and `b − x`, decided exactly by [`affine_sign`].
+pub fn domain_contains(domain: &Domain, x: &Affine, params: &[Rational]) -> Result<bool> {
+    let minus = |a: &Affine, b: &Affine| a.plus(&b.scale(&Rational::from(-1))).at(params);
+    Ok(affine_sign(&minus(x, &domain.start))? != Ordering::Less
+        && affine_sign(&minus(&domain.end, x))? != Ordering::Less)
+}
+
 /// Checks the exact point `x` (as typed: `input`) against `domain`.
-pub fn check_domain(domain: &Domain, x: &Rational, params: &[Rational], input: &str) -> Result<()> {
+pub fn check_domain(domain: &Domain, x: &Affine, params: &[Rational], input: &str) -> Result<()> {
     if domain_contains(domain, x, params)? {
         Ok(())
     } else {
@@ -380,17 +388,23 @@ mod tests {
 
     #[test]
     fn domain_checks_use_the_exact_point() {
-        let just_above = parse_exact("1.00000000000000000000000001").unwrap();
+        let point = |text: &str| crate::param::parse_point(text).unwrap();
         let domain = |v: Variable| Domain::from_variable(v, &[]);
         let unit = domain(Variable::UnitAngle);
-        assert!(!domain_contains(&unit, &just_above, &[]).unwrap());
-        assert!(domain_contains(&unit, &q(1, 1), &[]).unwrap());
+        let angle = domain(Variable::Angle);
+        assert!(!domain_contains(&unit, &point("1.00000000000000000000000001"), &[]).unwrap());
+        assert!(domain_contains(&unit, &point("1"), &[]).unwrap());
         // 1.5707963267948966 < π/2 < 1.5707963267948967
-        let below = parse_exact("1.5707963267948966").unwrap();
-        let above = parse_exact("1.5707963267948967").unwrap();
-        assert!(domain_contains(&domain(Variable::Angle), &below, &[]).unwrap());
-        assert!(!domain_contains(&domain(Variable::Angle), &above, &[]).unwrap());
-        assert!(!domain_contains(&domain(Variable::Polynomial), &q(-1, 10), &[]).unwrap());
+        assert!(domain_contains(&angle, &point("1.5707963267948966"), &[]).unwrap());
+        assert!(!domain_contains(&angle, &point("1.5707963267948967"), &[]).unwrap());
+        assert!(!domain_contains(&domain(Variable::Polynomial), &point("-1/10"), &[]).unwrap());
+        // multiples of π: the end itself exactly, just past it, and π/4 < 1
+        assert!(domain_contains(&angle, &point("pi/2"), &[]).unwrap());
+        assert!(domain_contains(&angle, &point("0*pi"), &[]).unwrap());
+        assert!(!domain_contains(&angle, &point("-pi/1000000"), &[]).unwrap());
+        assert!(!domain_contains(&angle, &point("1000001*pi/2000000"), &[]).unwrap());
+        assert!(domain_contains(&unit, &point("pi/4"), &[]).unwrap());
+        assert!(!domain_contains(&unit, &point("pi/3"), &[]).unwrap());
     }
 
     #[test]

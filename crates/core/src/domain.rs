@@ -134,6 +134,19 @@ impl Affine {
         out
     }
 
+    /// The value for the exact parameters `params`: `q₀ + q_π·π`.
+    pub fn at(&self, params: &[Rational]) -> Affine {
+        let mut constant = self.constant.clone();
+        for (i, q) in &self.params {
+            constant += Rational::from(q * &params[*i]);
+        }
+        Affine {
+            constant,
+            pi: self.pi.clone(),
+            params: Vec::new(),
+        }
+    }
+
     /// As printed, with the parameters named (`pi/2`, `2*alpha - 1`).
     pub fn text(&self, names: &[String]) -> String {
         let mut terms: Vec<(String, Rational)> = Vec::new();

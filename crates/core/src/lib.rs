@@ -49,6 +49,6 @@ pub use error::{CoreError, Result};
 pub use family::{Family, FamilyInfo, Formula, FormulaVisitor, SEED000_NONUNIFORM, catalog};
 pub use interval::{Fault, Interval};
 pub use mpfr::Mpfr;
-pub use param::{Bound, ParamSpec, Range, parse_exact};
+pub use param::{Bound, ParamSpec, Range, parse_exact, parse_point};
 pub use scalar::{Real, Ring, RingOps};
 pub use variable::{Atoms, Variable};

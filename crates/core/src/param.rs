@@ -5,6 +5,7 @@ use std::fmt;
 use rug::Rational;
 use rug::ops::Pow;
 
+use crate::domain::Affine;
 use crate::echo::echo;
 use crate::error::{CoreError, Result};
 
@@ -138,6 +139,41 @@ pub fn parse_exact(input: &str) -> Result<Rational> {
     parse_decimal(text).ok_or_else(malformed)
 }
 
+/// Reads a point exactly: a number as [`parse_exact`] reads it, or a
+/// rational multiple of π — `pi`, `-pi/2`, `pi/4`, `3*pi/8`, `3pi/8`,
+/// `0.5*pi` (`π` is accepted for `pi`). The result is `q₀` or `q·π`.
+pub fn parse_point(input: &str) -> Result<Affine> {
+    let text = input.trim();
+    let lower = text.to_ascii_lowercase().replace('π', "pi");
+    let Some((left, right)) = lower.split_once("pi") else {
+        return parse_exact(input).map(Affine::rational);
+    };
+    let malformed = || CoreError::Malformed {
+        input: echo(input),
+        expected: "a number, or a rational multiple of pi such as pi/4, -pi/2 or 3*pi/8".into(),
+    };
+    let left = left.trim();
+    let left = left.strip_suffix('*').map_or(left, str::trim);
+    let factor = match left {
+        "" | "+" => Rational::from(1),
+        "-" => Rational::from(-1),
+        number => parse_exact(number).map_err(|_| malformed())?,
+    };
+    let right = right.trim();
+    let divisor = match right.strip_prefix('/') {
+        None if right.is_empty() => Rational::from(1),
+        None => return Err(malformed()),
+        Some(d) if d.contains('/') => return Err(malformed()),
+        Some(d) => parse_exact(d).map_err(|_| malformed())?,
+    };
+    if divisor == 0 {
+        return Err(CoreError::DivisionByZero {
+            quantity: format!("`{}`", echo(input)),
+        });
+    }
+    Ok(Affine::pi_times(factor / divisor))
+}
+
 fn parse_decimal(text: &str) -> Option<Rational> {
     let (mantissa, exponent) = match text.find(['e', 'E']) {
         Some(i) => (&text[..i], text[i + 1..].parse::<i32>().ok()?),
@@ -177,6 +213,31 @@ fn parse_decimal(text: &str) -> Option<Rational> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn points_are_rationals_or_rational_multiples_of_pi() {
+        let pi = |n: i32, d: i32| Affine::pi_times(Rational::from((n, d)));
+        assert_eq!(
+            parse_point("0.25").unwrap(),
+            Affine::rational(Rational::from((1, 4)))
+        );
+        for (text, want) in [
+            ("pi", pi(1, 1)),
+            ("-pi", pi(-1, 1)),
+            ("pi/4", pi(1, 4)),
+            (" -pi / 2 ", pi(-1, 2)),
+            ("3*pi/8", pi(3, 8)),
+            ("3pi/8", pi(3, 8)),
+            ("0.5*pi", pi(1, 2)),
+            ("3/4*pi", pi(3, 4)),
+            ("π/3", pi(1, 3)),
+        ] {
+            assert_eq!(parse_point(text).unwrap(), want, "{text}");
+        }
+        for bad in ["pi/0", "pi*2", "pix", "2pi/3/4", "x*pi", "pi/"] {
+            assert!(parse_point(bad).is_err(), "{bad}");
+        }
+    }
 
     #[test]
     fn decimals_are_read_exactly() {

@@ -16,8 +16,8 @@ use trig_core::decimal::max_digits;
 use trig_core::families::seed000_nonuniform::NonUniform;
 use trig_core::knots::check_increasing;
 use trig_core::{
-    Atoms, Basis, CoreError, Domain, Family, Interval, Real, Ring, SEED000_NONUNIFORM, echo,
-    parse_exact, piecewise,
+    Affine, Atoms, Basis, CoreError, Domain, Family, Interval, Real, Ring, SEED000_NONUNIFORM,
+    echo, parse_exact, parse_point, piecewise,
 };
 use trig_spec::Spec;
 use trig_symbolic::Sym;
@@ -207,7 +207,8 @@ impl Basis for Subject {
 enum Problem {
     Basis {
         subject: Subject,
-        x: Rational,
+        /// The point: a rational or a rational multiple of π.
+        x: Affine,
         params: Vec<Rational>,
     },
     Piecewise {
@@ -233,7 +234,8 @@ impl Problem {
         match self {
             Problem::Basis { x, params, .. } => {
                 let mut v = named(params);
-                v.push((format!("the point {}", echo(at)), x));
+                v.push((format!("the point {}", echo(at)), &x.constant));
+                v.push((format!("the point {}", echo(at)), &x.pi));
                 v
             }
             Problem::Piecewise { params, .. } => named(params),
@@ -250,7 +252,7 @@ impl Problem {
     fn compute<T: Real>(&self, make: &dyn Fn(&Rational) -> T) -> Result<Vec<T>, CoreError> {
         match self {
             Problem::Basis { subject, x, params } => {
-                let x = make(x);
+                let x = x.eval(&make(&Rational::new()), &[]);
                 let p: Vec<T> = params.iter().map(make).collect();
                 Ok(subject.eval(&subject.domain().atoms(&x), &p))
             }
@@ -375,7 +377,7 @@ pub fn run(args: &EvalArgs) -> CmdResult {
         return points::run(args, path, mode);
     }
     let at_text = args.at.as_deref().unwrap_or_default();
-    let at = parse_exact(at_text)?;
+    let at = parse_point(at_text)?;
     let eval = evaluate(args, at_text, &at, mode)?;
     Ok(render(args, &eval))
 }
@@ -391,10 +393,10 @@ struct Setup {
     note: Option<String>,
 }
 
-fn setup(args: &EvalArgs, at_text: &str, at: &Rational) -> Result<Setup, CliError> {
+fn setup(args: &EvalArgs, at_text: &str, at: &Affine) -> Result<Setup, CliError> {
     let pairs = param_pairs(&args.params)?;
     if args.family.as_deref() == Some(SEED000_NONUNIFORM.id) && args.spec.is_none() {
-        return nonuniform(args, &pairs, at_text, at);
+        return nonuniform(args, &pairs, at_text, rational_point(at, at_text)?);
     }
     if !args.knots.is_empty() {
         return Err(CliError::Usage(format!(
@@ -418,7 +420,7 @@ fn setup(args: &EvalArgs, at_text: &str, at: &Rational) -> Result<Setup, CliErro
                 "--piecewise needs a family with uniform B-spline segment functions (seed000-uniform, bspline3); `{id}` is not one"
             )));
         }
-        let (piece, local) = locate_exact(&uniform_knots(), at, at_text)?;
+        let (piece, local) = locate_exact(&uniform_knots(), rational_point(at, at_text)?, at_text)?;
         return Ok(Setup {
             problem: Problem::Piecewise {
                 family,
@@ -451,10 +453,21 @@ fn setup(args: &EvalArgs, at_text: &str, at: &Rational) -> Result<Setup, CliErro
     })
 }
 
+/// The point as a rational, for the knot-based evaluations (their knots
+/// are rational; a multiple of π is an angle).
+fn rational_point<'a>(at: &'a Affine, at_text: &str) -> Result<&'a Rational, CliError> {
+    at.as_rational().ok_or_else(|| {
+        CliError::Usage(format!(
+            "`{}`: --piecewise and --knots take a rational point (a multiple of pi is an angle)",
+            echo(at_text)
+        ))
+    })
+}
+
 fn evaluate(
     args: &EvalArgs,
     at_text: &str,
-    at: &Rational,
+    at: &Affine,
     mode: Mode,
 ) -> Result<Evaluation, CliError> {
     let s = setup(args, at_text, at)?;

@@ -10,16 +10,15 @@ use std::fmt::Write;
 use std::io::Read;
 use std::path::Path;
 
-use rug::Rational;
 use serde_json::json;
-use trig_core::{SEED000_NONUNIFORM, parse_exact};
+use trig_core::{Affine, SEED000_NONUNIFORM, parse_point};
 
 use super::{CliError, CmdResult, EvalArgs, Evaluation, Mode, Shown, evaluate, param_pairs};
 use crate::format::{TextOrJson, json};
 
 /// The points of `path` (`-` for standard input): the text as written and
 /// its exact value.
-fn read_points(path: &Path) -> Result<Vec<(String, Rational)>, CliError> {
+fn read_points(path: &Path) -> Result<Vec<(String, Affine)>, CliError> {
     let stdin = path.as_os_str() == "-";
     let name = if stdin {
         "standard input".to_string()
@@ -36,13 +35,13 @@ fn read_points(path: &Path) -> Result<Vec<(String, Rational)>, CliError> {
         std::fs::read_to_string(path)
             .map_err(|e| CliError::Usage(format!("cannot read {name}: {e}")))?
     };
-    let points: Vec<(String, Rational)> = text
+    let points: Vec<(String, Affine)> = text
         .lines()
         .enumerate()
         .map(|(i, line)| (i + 1, line.trim()))
         .filter(|(_, line)| !line.is_empty() && !line.starts_with('#'))
         .map(|(n, line)| {
-            parse_exact(line)
+            parse_point(line)
                 .map(|q| (line.to_string(), q))
                 .map_err(|e| CliError::Usage(format!("{name} line {n}: {e}")))
         })
@@ -74,7 +73,7 @@ pub(super) fn run(args: &EvalArgs, path: &Path, mode: Mode) -> CmdResult {
     Ok(render(args, &points, &rows))
 }
 
-fn render(args: &EvalArgs, points: &[(String, Rational)], rows: &[Evaluation]) -> String {
+fn render(args: &EvalArgs, points: &[(String, Affine)], rows: &[Evaluation]) -> String {
     let first = &rows[0];
     let params = param_pairs(&args.params).unwrap_or_default();
     let column = |k: usize, f: &dyn Fn(&Shown) -> serde_json::Value| {
