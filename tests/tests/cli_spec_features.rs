@@ -218,3 +218,127 @@ fn a_triangular_region_of_two_parameters_is_described_exactly() {
     // the containment part holds
     assert!(e.contains("containment"), "{e}");
 }
+
+fn glyph(name: &str) -> String {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../data/glyphs")
+        .join(name)
+        .display()
+        .to_string()
+}
+
+/// The numeric columns of `fit --format csv` (total, max, min, average).
+fn fit_totals(args: &[&str]) -> Vec<f64> {
+    stdout_ok(args)
+        .lines()
+        .skip(1)
+        .flat_map(|l| {
+            let cells: Vec<String> = l.rsplitn(6, ',').map(str::to_string).collect();
+            cells[1..5]
+                .iter()
+                .map(|c| c.parse::<f64>().expect("a number"))
+                .collect::<Vec<_>>()
+        })
+        .collect()
+}
+
+/// `fit --spec`: the spec transcription of the thesis cubic fits exactly
+/// as the catalog family (the same least squares; values differ only by
+/// f64 rounding of the two evaluation paths), and a C-Bézier cubic on
+/// `[0, α]` approaches the Bernstein fit as `α` decreases (span{1, t, sin t,
+/// cos t} → cubic polynomials as `α → 0`); where its f64 values no longer
+/// interpolate (the formula's `α − sin α` cancels: at α = 1/50 the end
+/// values are off by 10⁻⁴) the fit is refused with the reason.
+#[test]
+fn fit_takes_a_spec_file() {
+    let ain = glyph("ain.csv");
+    let spec = example("thesis-cubic.toml");
+    let common = [
+        "--glyph",
+        ain.as_str(),
+        "--param",
+        "m=0.6",
+        "--refine",
+        "c1",
+    ];
+    let family = fit_totals(
+        &[
+            &["fit", "--family", "thesis-cubic"][..],
+            &common,
+            &["--format", "csv"],
+        ]
+        .concat(),
+    );
+    let from_spec = fit_totals(
+        &[
+            &["fit", "--spec", spec.as_str()][..],
+            &common,
+            &["--format", "csv"],
+        ]
+        .concat(),
+    );
+    assert_eq!(family.len(), from_spec.len());
+    for (a, b) in family.iter().zip(&from_spec) {
+        assert!((a - b).abs() <= 1e-9 * (1.0 + a.abs()), "{a} vs {b}");
+    }
+    let cb = example("c-bezier-cubic.toml");
+    let c_bezier = |alpha: &str| {
+        let v = fit_totals(&[
+            "fit", "--spec", &cb, "--glyph", &ain, "--param", alpha, "--format", "csv",
+        ]);
+        v.iter().step_by(4).sum::<f64>()
+    };
+    let bernstein: f64 = fit_totals(&[
+        "fit",
+        "--family",
+        "bernstein3",
+        "--glyph",
+        &ain,
+        "--format",
+        "csv",
+    ])
+    .iter()
+    .step_by(4)
+    .sum();
+    let (one, half) = (c_bezier("alpha=1"), c_bezier("alpha=1/2"));
+    assert!(
+        (half - bernstein).abs() < (one - bernstein).abs()
+            && (half - bernstein).abs() < 0.05 * bernstein,
+        "C-Bézier α = 1: {one}, α = 1/2: {half}, Bernstein: {bernstein}"
+    );
+    let optimised = stdout_ok(&[
+        "fit",
+        "--spec",
+        &cb,
+        "--glyph",
+        &ain,
+        "--param",
+        "alpha=1",
+        "--optimise",
+    ]);
+    assert!(optimised.contains("α optimised in"), "{optimised}");
+    assert_errors(&[
+        (
+            &["fit", "--spec", &cb, "--glyph", &ain],
+            "give --param alpha=VALUE",
+        ),
+        (
+            &[
+                "fit", "--spec", &cb, "--family", "han", "--glyph", &ain, "--param", "alpha=1",
+            ],
+            "exclude each other",
+        ),
+        (
+            &[
+                "fit",
+                "--spec",
+                &cb,
+                "--glyph",
+                &ain,
+                "--param",
+                "alpha=1/50",
+            ],
+            "does not interpolate its end control points in f64",
+        ),
+    ]);
+}

@@ -2,6 +2,8 @@
 //! C¹ refinement (issue 6 target: under 1 s in release), and with the shape
 //! parameter optimised per segment.
 
+use std::sync::Arc;
+
 use std::path::PathBuf;
 
 use criterion::{Criterion, criterion_group, criterion_main};
@@ -49,7 +51,7 @@ fn fit_all(outlines: &[Outline], optimise: bool) -> f64 {
                 refine: Some(Continuity::Local),
                 shape,
             };
-            let fit = fit_outline(o, f, &options).expect("fit");
+            let fit = fit_outline(o, Arc::new(f), &options).expect("fit");
             total += fit.after.expect("refined").total;
         }
     }

@@ -1,12 +1,19 @@
-//! A catalog family with numeric shape parameters, evaluated over the local
-//! segment parameter `t ∈ [0, 1]`.
+//! A basis with numeric shape parameters — a catalog family or any other
+//! [`Basis`] (a spec file's) — evaluated over the local segment parameter
+//! `t ∈ [0, 1]`.
 //!
-//! `t` is mapped to the family's native variable: `u = t` (thesis (3.7), Han
-//! (6.2), Usman (6.3)), `θ = πt/2` (Majeed & Qayyum (6.1), `t ∈ [0, π/2]`),
-//! or the polynomial variable itself (Bernstein). The functions are those of
-//! [`Family::eval`] — never re-typed here.
+//! `t` is mapped to the basis's own variable `x = a + (b − a)t` over its
+//! domain `[a, b]`: `u = t` (thesis (3.7), Han (6.2), Usman (6.3)),
+//! `θ = πt/2` (Majeed & Qayyum (6.1), `t ∈ [0, π/2]`), `x = αt` for a
+//! C-curve on `[0, α]`, or the polynomial variable itself (Bernstein). The
+//! functions are those of [`Basis::eval`] — never re-typed here; catalog
+//! families take the vectorised [`Batch`] path.
 
-use trig_core::{Batch, Family};
+use std::any::Any;
+use std::fmt;
+use std::sync::Arc;
+
+use trig_core::{Basis, Batch, Domain, Family};
 use trig_deriv::table::{End, Wrt, endpoint_derivatives};
 
 use crate::error::{FitError, Result};
@@ -16,38 +23,84 @@ use crate::error::{FitError, Result};
 /// f64 is 6·10⁻¹⁷, not 0).
 const INTERPOLATION_TOL: f64 = 1e-12;
 
-/// A four-function family with fixed numeric parameters, fit for
+/// What the fit needs of a basis, object-safe (implemented for every
+/// [`Basis`] that is `Debug + Send + Sync + 'static`).
+pub trait FitBasis: fmt::Debug + Send + Sync {
+    /// The basis as a catalog family, when it is one (the batch path).
+    fn as_family(&self) -> Option<Family>;
+    /// Stable id.
+    fn basis_id(&self) -> String;
+    /// Its domain.
+    fn basis_domain(&self) -> Domain;
+    /// Number of functions and of shape parameters.
+    fn counts(&self) -> (usize, usize);
+    /// The functions at the f64 point `x` of its variable.
+    fn values(&self, domain: &Domain, x: f64, params: &[f64]) -> Vec<f64>;
+    /// `dbᵢ/dt` at one end (`x = a + (b − a)t`).
+    fn slopes(&self, params: &[f64], end: End) -> Vec<f64>;
+}
+
+impl<B: Basis + fmt::Debug + Send + Sync + 'static> FitBasis for B {
+    fn as_family(&self) -> Option<Family> {
+        (self as &dyn Any).downcast_ref::<Family>().copied()
+    }
+
+    fn basis_id(&self) -> String {
+        Basis::id(self)
+    }
+
+    fn basis_domain(&self) -> Domain {
+        Basis::domain(self)
+    }
+
+    fn counts(&self) -> (usize, usize) {
+        (self.function_names().len(), self.param_names().len())
+    }
+
+    fn values(&self, domain: &Domain, x: f64, params: &[f64]) -> Vec<f64> {
+        self.eval(&domain.atoms(&x), params)
+    }
+
+    fn slopes(&self, params: &[f64], end: End) -> Vec<f64> {
+        endpoint_derivatives::<f64, 2>(self, params, end, Wrt::U, &1.0)
+            .iter()
+            .map(|d| d[1])
+            .collect()
+    }
+}
+
+/// A four-function basis with fixed numeric parameters, fit for
 /// end-point-interpolating least squares (thesis (6.6)).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone)]
 pub struct SegmentBasis {
-    family: Family,
+    basis: Arc<dyn FitBasis>,
+    domain: Domain,
     params: Vec<f64>,
-    /// `dθ_native/dt`: 1, or π/2 for a family in the angle.
-    end: f64,
+    /// The domain `[a, b]` at these parameters: `x = a + (b − a)t`.
+    start: f64,
+    length: f64,
 }
 
 impl SegmentBasis {
-    /// Checks that the family has four functions, the right number of finite
+    /// Checks that the basis has four functions, the right number of finite
     /// parameters, and interpolates its end control points.
-    pub fn new(family: Family, params: &[f64]) -> Result<SegmentBasis> {
-        let info = family.info();
+    pub fn new(basis: Arc<dyn FitBasis>, params: &[f64]) -> Result<SegmentBasis> {
         let unsuitable = |reason: String| FitError::Unsuitable {
-            family: info.id.to_string(),
+            family: basis.basis_id(),
             reason,
         };
-        if !family.has_formulas() {
+        if basis.as_family().is_some_and(|f| !f.has_formulas()) {
             return Err(unsuitable("its formulas are missing from our copy".into()));
         }
-        if info.functions.len() != 4 {
+        let (functions, count) = basis.counts();
+        if functions != 4 {
             return Err(unsuitable(format!(
-                "it has {} functions; the fit needs four (V0..V3)",
-                info.functions.len()
+                "it has {functions} functions; the fit needs four (V0..V3)"
             )));
         }
-        if params.len() != info.params.len() {
+        if params.len() != count {
             return Err(unsuitable(format!(
-                "it takes {} parameter(s), {} given",
-                info.params.len(),
+                "it takes {count} parameter(s), {} given",
                 params.len()
             )));
         }
@@ -56,28 +109,38 @@ impl SegmentBasis {
                 "shape parameter {p} is not finite"
             )));
         }
-        let basis = SegmentBasis {
-            family,
+        let domain = basis.basis_domain();
+        let start = domain.start_value(&0.0, params);
+        let length = domain.end_value(&0.0, params) - start;
+        if !(length.is_finite() && length > 0.0) {
+            return Err(unsuitable(format!(
+                "its domain {domain} has length {length} at these parameters"
+            )));
+        }
+        let segment = SegmentBasis {
+            basis: basis.clone(),
+            domain,
             params: params.to_vec(),
-            end: info.variable.end(&1.0_f64),
+            start,
+            length,
         };
         for (t, expected) in [(0.0, [1.0, 0.0, 0.0, 0.0]), (1.0, [0.0, 0.0, 0.0, 1.0])] {
-            let b = basis.values(t);
+            let b = segment.values(t);
             if b.iter()
                 .zip(expected)
                 .any(|(v, e)| (v - e).abs() > INTERPOLATION_TOL || !v.is_finite())
             {
                 return Err(unsuitable(format!(
-                    "at t = {t} its functions are {b:?}, not {expected:?}: it does not interpolate its end control points"
+                    "at t = {t} its functions are {b:?}, not {expected:?}: it does not interpolate its end control points in f64 (or its formula cancels at these parameters)"
                 )));
             }
         }
-        Ok(basis)
+        Ok(segment)
     }
 
-    /// The family.
-    pub fn family(&self) -> Family {
-        self.family
+    /// The basis.
+    pub fn basis(&self) -> &Arc<dyn FitBasis> {
+        &self.basis
     }
 
     /// The shape parameters.
@@ -90,11 +153,19 @@ impl SegmentBasis {
         self.values_at(&[t])[0]
     }
 
-    /// `b₀ … b₃` at every local parameter of `ts`, in one batch
-    /// ([`Batch`]: parameters converted once, vectorised `sin`/`cos`).
+    /// `b₀ … b₃` at every local parameter of `ts`: a catalog family in one
+    /// batch ([`Batch`]: parameters converted once, vectorised `sin`/`cos`),
+    /// any other basis point by point.
     pub fn values_at(&self, ts: &[f64]) -> Vec<[f64; 4]> {
-        let xs: Vec<f64> = ts.iter().map(|t| t * self.end).collect();
-        let mut batch = Batch::from_values(self.family, self.params.clone(), &0.0, true)
+        let xs: Vec<f64> = ts.iter().map(|t| self.start + t * self.length).collect();
+        let four = |v: &[f64]| [v[0], v[1], v[2], v[3]];
+        let Some(family) = self.basis.as_family() else {
+            return xs
+                .iter()
+                .map(|&x| four(&self.basis.values(&self.domain, x, &self.params)))
+                .collect();
+        };
+        let mut batch = Batch::from_values(family, self.params.clone(), &0.0, true)
             .expect("checked by SegmentBasis::new: formulas, parameter count");
         let mut out = vec![0.0; 4 * xs.len()];
         batch.values_into(&xs, &mut out);
@@ -105,11 +176,11 @@ impl SegmentBasis {
     }
 
     /// First derivatives `dbᵢ/dt` at `t = 0` and at `t = 1` (Taylor jets of
-    /// `trig-deriv` seeded with the exact end atoms; `t` is `u`, `θ = πt/2`).
+    /// `trig-deriv` seeded with the exact end atoms, `x = a + (b − a)t`).
     pub fn end_slopes(&self) -> ([f64; 4], [f64; 4]) {
         let at = |end| {
-            let d = endpoint_derivatives::<f64, 2>(self.family, &self.params, end, Wrt::U, &1.0);
-            [d[0][1], d[1][1], d[2][1], d[3][1]]
+            let d = self.basis.slopes(&self.params, end);
+            [d[0], d[1], d[2], d[3]]
         };
         (at(End::Start), at(End::End))
     }
@@ -123,7 +194,7 @@ mod tests {
     fn thesis_cubic_end_slopes_are_the_printed_ones() {
         // thesis Chapter 4: Q'(0) = (m+2)(P1 − P0) in θ, times π/2 in u
         let m = 0.6;
-        let b = SegmentBasis::new(Family::ThesisCubic, &[m]).unwrap();
+        let b = SegmentBasis::new(Arc::new(Family::ThesisCubic), &[m]).unwrap();
         let (start, end) = b.end_slopes();
         let k = (m + 2.0) * std::f64::consts::FRAC_PI_2;
         let want_start = [-k, k, 0.0, 0.0];
@@ -139,7 +210,7 @@ mod tests {
 
     #[test]
     fn bernstein_values_and_slopes() {
-        let b = SegmentBasis::new(Family::Bernstein3, &[]).unwrap();
+        let b = SegmentBasis::new(Arc::new(Family::Bernstein3), &[]).unwrap();
         assert_eq!(b.values(0.5), [0.125, 0.375, 0.375, 0.125]);
         assert_eq!(
             b.end_slopes(),
@@ -157,14 +228,14 @@ mod tests {
         ] {
             assert!(
                 matches!(
-                    SegmentBasis::new(family, &params),
+                    SegmentBasis::new(Arc::new(family), &params),
                     Err(FitError::Unsuitable { .. })
                 ),
                 "{family:?}"
             );
         }
         assert!(matches!(
-            SegmentBasis::new(Family::ThesisCubic, &[f64::NAN]),
+            SegmentBasis::new(Arc::new(Family::ThesisCubic), &[f64::NAN]),
             Err(FitError::Option(_))
         ));
     }

@@ -30,16 +30,22 @@ pub fn search_interval(range: &Range) -> Result<(f64, f64)> {
         b.value()
             .map(|v| (v.to_f64(), matches!(b, Bound::Open(..))))
     };
-    let (Some((lo, lo_open)), Some((hi, hi_open))) = (end(range.lo), end(range.hi)) else {
-        return Err(FitError::Option(format!(
+    match (end(range.lo), end(range.hi)) {
+        (Some(lo), Some(hi)) => Ok(search_between(lo, hi)),
+        _ => Err(FitError::Option(format!(
             "the range {range} is unbounded: give a closed search interval"
-        )));
-    };
+        ))),
+    }
+}
+
+/// The closed search interval between two ends `(value, open)`: open ends
+/// moved inward by [`OPEN_END_MARGIN`] of the width.
+pub fn search_between((lo, lo_open): (f64, bool), (hi, hi_open): (f64, bool)) -> (f64, f64) {
     let margin = OPEN_END_MARGIN * (hi - lo);
-    Ok((
+    (
         if lo_open { lo + margin } else { lo },
         if hi_open { hi - margin } else { hi },
-    ))
+    )
 }
 
 /// Minimises `f` over `[lo, hi]` by golden-section search; returns `(p, f(p))`.

@@ -3,10 +3,11 @@
 //! fixed or optimised shape parameter) → metrics → optional C¹ refinement →
 //! metrics again.
 
-use serde::Serialize;
-use trig_core::Family;
+use std::sync::Arc;
 
-use crate::basis::SegmentBasis;
+use serde::Serialize;
+
+use crate::basis::{FitBasis, SegmentBasis};
 use crate::chord::chord_parameters;
 use crate::corners::{Corners, Span, segment};
 use crate::data::{Outline, P2};
@@ -62,7 +63,7 @@ pub struct OutlineFit {
     pub glyph: String,
     pub family: String,
     #[serde(skip)]
-    pub family_enum: Family,
+    pub basis: Arc<dyn FitBasis>,
     pub optimised: bool,
     pub continuity: Option<Continuity>,
     pub threshold: f64,
@@ -86,8 +87,13 @@ fn squared_errors(basis: &SegmentBasis, control: &Control, points: &[P2], t: &[f
         .collect()
 }
 
-/// Fits `outline` with `family` (see the module docs).
-pub fn fit_outline(outline: &Outline, family: Family, options: &FitOptions) -> Result<OutlineFit> {
+/// Fits `outline` with `family` (a catalog family or any other basis of
+/// four functions; see the module docs).
+pub fn fit_outline(
+    outline: &Outline,
+    family: Arc<dyn FitBasis>,
+    options: &FitOptions,
+) -> Result<OutlineFit> {
     if !(options.threshold.is_finite() && options.threshold >= 0.0) {
         return Err(FitError::Option(format!(
             "threshold {} must be a finite number ≥ 0",
@@ -120,25 +126,25 @@ pub fn fit_outline(outline: &Outline, family: Family, options: &FitOptions) -> R
     for (k, (points, t, _)) in data.iter().enumerate() {
         let what = format!("segment {}", k + 1);
         let basis = match &options.shape {
-            Shape::Fixed(p) => SegmentBasis::new(family, p)?,
+            Shape::Fixed(p) => SegmentBasis::new(family.clone(), p)?,
             Shape::Optimise { lo, hi } => {
-                let n = family.info().params.len();
+                let (_, n) = family.counts();
                 if n != 1 {
                     return Err(FitError::Option(format!(
                         "`{}` has {n} shape parameters; optimisation needs exactly one",
-                        family.info().id
+                        family.basis_id()
                     )));
                 }
                 let (p, _) = golden_section(
                     |p| {
-                        let b = SegmentBasis::new(family, &[p])?;
+                        let b = SegmentBasis::new(family.clone(), &[p])?;
                         let c = fit_segment(&b, points, t, &what)?;
                         Ok(squared_errors(&b, &c, points, t).iter().sum())
                     },
                     *lo,
                     *hi,
                 )?;
-                SegmentBasis::new(family, &[p])?
+                SegmentBasis::new(family.clone(), &[p])?
             }
         };
         controls.push(fit_segment(&basis, points, t, &what)?);
@@ -190,8 +196,8 @@ pub fn fit_outline(outline: &Outline, family: Family, options: &FitOptions) -> R
         .collect();
     Ok(OutlineFit {
         glyph: outline.name.clone(),
-        family: family.info().id.to_string(),
-        family_enum: family,
+        family: family.basis_id(),
+        basis: family,
         optimised: matches!(options.shape, Shape::Optimise { .. }),
         continuity: options.refine,
         threshold: options.threshold,
@@ -221,7 +227,7 @@ impl OutlineFit {
         self.segments
             .iter()
             .map(|s| {
-                let basis = SegmentBasis::new(self.family_enum, &s.params)?;
+                let basis = SegmentBasis::new(self.basis.clone(), &s.params)?;
                 let c = match (&s.refined, refined) {
                     (Some((c, _)), true) => c,
                     _ => &s.control,

@@ -1,6 +1,8 @@
 //! A million-point outline: the C¹ refinement is a banded solve (before,
 //! a dense KKT matrix of 30 GB was allocated and the process aborted).
 
+use std::sync::Arc;
+
 use trig_core::Family;
 use trig_fit::{Continuity, CornerRule, Corners, FitOptions, Outline, P2, Shape, fit_outline};
 
@@ -26,7 +28,7 @@ fn a_million_point_outline_is_refined_without_a_dense_matrix() {
         refine: Some(Continuity::ArcLength),
         shape: Shape::Fixed(vec![0.6]),
     };
-    let fit = fit_outline(&outline, Family::ThesisCubic, &options).expect("fits");
+    let fit = fit_outline(&outline, Arc::new(Family::ThesisCubic), &options).expect("fits");
     assert!(fit.segments.len() > 20_000, "{}", fit.segments.len());
     let after = fit.after.expect("refined");
     // a smooth curve sampled this densely is fitted almost exactly, and the

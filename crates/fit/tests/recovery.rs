@@ -1,6 +1,8 @@
 //! Fitting recovers a segment of the same family, and the pipeline keeps its
 //! promises on the committed glyph data.
 
+use std::sync::Arc;
+
 use std::path::PathBuf;
 
 use proptest::prelude::*;
@@ -51,7 +53,7 @@ proptest! {
         let family = FAMILIES[k];
         let (lo, hi) = search_interval(&family.info().params.first().map_or(trig_core::Range::ALL, |s| s.range)).unwrap_or((0.0, 1.0));
         let value = lo + p * (hi - lo);
-        let basis = SegmentBasis::new(family, &params(family, value)).unwrap();
+        let basis = SegmentBasis::new(Arc::new(family), &params(family, value)).unwrap();
         let v: [P2; 4] = std::array::from_fn(|i| P2::new(coords[2 * i], coords[2 * i + 1]));
         let t: Vec<f64> = (0..40).map(|i| f64::from(i) / 39.0).collect();
         let points: Vec<P2> = t.iter().map(|&ti| curve_point(&basis.values(ti), &v)).collect();
@@ -82,13 +84,13 @@ fn chord_length_fit_reproduces_a_thesis_cubic_segment() {
         P2::new(3.0, 2.0),
         P2::new(4.0, 0.0),
     ];
-    let truth = SegmentBasis::new(Family::ThesisCubic, &[0.6]).unwrap();
+    let truth = SegmentBasis::new(Arc::new(Family::ThesisCubic), &[0.6]).unwrap();
     let points: Vec<P2> = (0..200)
         .map(|i| curve_point(&truth.values(f64::from(i) / 199.0), &v))
         .collect();
     let t = chord_parameters(&points).unwrap();
     let max_sq = |family: Family| {
-        let b = SegmentBasis::new(family, &params(family, 0.6)).unwrap();
+        let b = SegmentBasis::new(Arc::new(family), &params(family, 0.6)).unwrap();
         let c = fit_segment(&b, &points, &t, "test").unwrap();
         t.iter()
             .zip(&points)
@@ -120,7 +122,7 @@ fn refinement_costs_error_and_makes_joins_c1() {
             for continuity in [Continuity::Local, Continuity::ArcLength] {
                 let fit = fit_outline(
                     &outline,
-                    family,
+                    Arc::new(family),
                     &options(Shape::Fixed(params(family, 0.6)), Some(continuity)),
                 )
                 .unwrap();
@@ -147,7 +149,7 @@ fn refinement_costs_error_and_makes_joins_c1() {
                         })
                         .unwrap();
                     let slope = |seg: &trig_fit::SegmentFit, end: bool| {
-                        let b = SegmentBasis::new(family, &seg.params).unwrap();
+                        let b = SegmentBasis::new(Arc::new(family), &seg.params).unwrap();
                         let (d0, d1) = b.end_slopes();
                         let d = if end { d1 } else { d0 };
                         let c = seg.refined.unwrap().0;
@@ -185,11 +187,19 @@ fn optimised_parameters_beat_the_interval_ends() {
     let outline = glyph("epsilon");
     for family in [Family::ThesisCubic, Family::Han, Family::MajeedQayyum] {
         let (lo, hi) = search_interval(&family.info().params[0].range).unwrap();
-        let best =
-            fit_outline(&outline, family, &options(Shape::Optimise { lo, hi }, None)).unwrap();
+        let best = fit_outline(
+            &outline,
+            Arc::new(family),
+            &options(Shape::Optimise { lo, hi }, None),
+        )
+        .unwrap();
         for end in [lo, hi] {
-            let fixed =
-                fit_outline(&outline, family, &options(Shape::Fixed(vec![end]), None)).unwrap();
+            let fixed = fit_outline(
+                &outline,
+                Arc::new(family),
+                &options(Shape::Fixed(vec![end]), None),
+            )
+            .unwrap();
             for (a, b) in best.segments.iter().zip(&fixed.segments) {
                 assert!(
                     a.metrics.total <= b.metrics.total * (1.0 + 1e-12) + 1e-12,
@@ -209,13 +219,13 @@ fn bad_input_is_a_typed_error() {
     let mut o = options(fixed.clone(), None);
     o.corners = Corners::Explicit(vec![0, 10_000]);
     assert!(matches!(
-        fit_outline(&outline, Family::ThesisCubic, &o),
+        fit_outline(&outline, Arc::new(Family::ThesisCubic), &o),
         Err(FitError::CornerOutOfRange { index: 10_000, .. })
     ));
     o.corners = Corners::Explicit(vec![0, 2]);
     o.max_points = 0;
     assert!(matches!(
-        fit_outline(&outline, Family::ThesisCubic, &o),
+        fit_outline(&outline, Arc::new(Family::ThesisCubic), &o),
         Err(FitError::TooFewPoints {
             segment: 1,
             got: 3,
@@ -225,13 +235,17 @@ fn bad_input_is_a_typed_error() {
     // two points: the closed loop back to the first is a segment of 3 points
     let tiny = Outline::parse("contour,x,y\n0,0,0\n0,1,0\n", "tiny", "t").unwrap();
     assert!(matches!(
-        fit_outline(&tiny, Family::ThesisCubic, &options(fixed.clone(), None)),
+        fit_outline(
+            &tiny,
+            Arc::new(Family::ThesisCubic),
+            &options(fixed.clone(), None)
+        ),
         Err(FitError::TooFewPoints { .. })
     ));
     let mut o = options(fixed, None);
     o.threshold = f64::NAN;
     assert!(matches!(
-        fit_outline(&outline, Family::ThesisCubic, &o),
+        fit_outline(&outline, Arc::new(Family::ThesisCubic), &o),
         Err(FitError::Option(_))
     ));
 }
@@ -246,10 +260,14 @@ fn bad_input_is_a_typed_error() {
 fn equivalent_families_give_identical_fits() {
     let outline = glyph("ain");
     let total = |family: Family, p: f64| {
-        fit_outline(&outline, family, &options(Shape::Fixed(vec![p]), None))
-            .unwrap()
-            .before
-            .total
+        fit_outline(
+            &outline,
+            Arc::new(family),
+            &options(Shape::Fixed(vec![p]), None),
+        )
+        .unwrap()
+        .before
+        .total
     };
     let close = |a: f64, b: f64| (a - b).abs() <= 1e-9 * a.abs().max(1.0);
     for p in [-1.5, -0.4, 0.6, 1.0] {

@@ -1,6 +1,8 @@
 //! The pictures are well-formed SVG (XML) with the expected number of data
 //! series, axis labels and legends.
 
+use std::sync::Arc;
+
 use std::path::PathBuf;
 
 use rug::Rational;
@@ -78,7 +80,7 @@ fn fit_plot_has_data_and_every_segment_of_both_stages() {
         refine: Some(Continuity::Local),
         shape: Shape::Fixed(vec![0.6]),
     };
-    let fit = fit_outline(&outline, Family::ThesisCubic, &options).unwrap();
+    let fit = fit_outline(&outline, Arc::new(Family::ThesisCubic), &options).unwrap();
     let svg = fit_svg(&outline, &fit).unwrap();
     let (curves, markers, texts) = census(&svg);
     assert_eq!(curves, 2 * fit.segments.len());

@@ -6,16 +6,19 @@
 use std::fmt::Write;
 use std::path::PathBuf;
 
+use std::sync::Arc;
+
 use clap::{Args, ValueEnum};
-use trig_core::Family;
-use trig_fit::optimise::search_interval;
+use trig_core::{Basis, Bound, Family};
+use trig_fit::optimise::search_between;
 use trig_fit::{
-    Continuity, CornerRule, Corners, FitError, FitOptions, Metrics, Outline, OutlineFit, Shape,
-    Summary, THESIS_THRESHOLD, fit_outline,
+    Continuity, CornerRule, Corners, FitBasis, FitError, FitOptions, Metrics, Outline, OutlineFit,
+    Shape, Summary, THESIS_THRESHOLD, fit_outline,
 };
+use trig_spec::range::End as SpecEnd;
 use trig_verification::certify::range::EndPoint;
 
-use super::eval::param_pairs;
+use super::eval::{Subject, param_pairs};
 use super::{CliError, CmdResult};
 
 /// The families of `--family all`, in the thesis's order, then the
@@ -62,6 +65,10 @@ pub struct FitSetup {
     /// Outline data file (`contour,x,y`, see data/glyphs/).
     #[arg(long)]
     glyph: PathBuf,
+    /// Fit with the basis of this spec file (TOML, docs/spec.md; four
+    /// functions interpolating their end control points) instead of a family.
+    #[arg(long, value_name = "FILE")]
+    pub spec: Option<PathBuf>,
     /// Shape parameter as name=value (default: 0.6 for every family, as the thesis).
     #[arg(long = "param", value_name = "NAME=VALUE")]
     params: Vec<String>,
@@ -91,7 +98,7 @@ pub struct FitSetup {
 
 #[derive(Debug, Args)]
 pub struct FitArgs {
-    /// Family id, or `all` for the six compared families.
+    /// Family id, or `all` for the six compared families (not with --spec).
     #[arg(long, default_value = "all")]
     family: String,
     /// Also fit with the shape parameter optimised per segment (golden section).
@@ -111,47 +118,117 @@ fn fit_err(e: FitError) -> CliError {
     }
 }
 
-/// The families selected by `--family`.
-pub fn families(id: &str) -> Result<Vec<Family>, CliError> {
+/// The bases selected by `--family` or `--spec`.
+pub fn subjects(id: &str, setup: &FitSetup) -> Result<Vec<Subject>, CliError> {
+    if let Some(path) = &setup.spec {
+        if id != "all" {
+            return Err(CliError::Usage(
+                "--family and --spec exclude each other: give one basis".into(),
+            ));
+        }
+        return Ok(vec![Subject::from_args(None, Some(path))?]);
+    }
     if id == "all" {
-        Ok(COMPARED.to_vec())
+        Ok(COMPARED.iter().map(|f| Subject::Family(*f)).collect())
     } else {
-        Ok(vec![super::eval::family_by_id(id)?])
+        Ok(vec![Subject::Family(super::eval::family_by_id(id)?)])
     }
 }
 
-/// Fixed parameters of `family` from `--param` pairs (default 0.6),
+/// The parameters of `subject`: ASCII name, printed symbol, published range
+/// as the closed search interval's ends `(value, open)` when bounded.
+fn parameters(subject: &Subject) -> Vec<(String, String, Option<SearchEnds>)> {
+    match subject {
+        Subject::Family(f) => f
+            .info()
+            .params
+            .iter()
+            .map(|p| {
+                let end = |b: Bound| {
+                    b.value()
+                        .map(|v| (v.to_f64(), matches!(b, Bound::Open(..))))
+                };
+                let ends = end(p.range.lo).zip(end(p.range.hi));
+                (p.name.to_string(), p.symbol.to_string(), ends)
+            })
+            .collect(),
+        Subject::Spec(s) => s
+            .params
+            .iter()
+            .map(|p| {
+                let scale = if p.range.pi {
+                    std::f64::consts::PI
+                } else {
+                    1.0
+                };
+                let end = |e: &SpecEnd| {
+                    e.value()
+                        .map(|v| (v.to_f64() * scale, matches!(e, SpecEnd::Open(_))))
+                };
+                let ends = end(&p.range.lo).zip(end(&p.range.hi));
+                (p.name.clone(), p.symbol.clone(), ends)
+            })
+            .collect(),
+    }
+}
+
+/// A published range's ends for the search: `((lo, open), (hi, open))`.
+type SearchEnds = ((f64, bool), (f64, bool));
+
+/// Fixed parameters of `subject` from `--param` pairs (a catalog family's
+/// default 0.6, as the thesis; a spec file's parameters must be given),
 /// checked against the published range.
-fn fixed_params(family: Family, pairs: &[(String, String)]) -> Result<Vec<f64>, CliError> {
-    let info = family.info();
-    let mine: Vec<(String, String)> = info
-        .params
+fn fixed_params(subject: &Subject, pairs: &[(String, String)]) -> Result<Vec<f64>, CliError> {
+    let mut mine = Vec::new();
+    for (name, symbol, _) in parameters(subject) {
+        let given = pairs
+            .iter()
+            .rev()
+            .find(|(n, _)| *n == name || *n == symbol)
+            .map(|(_, v)| v.clone());
+        let value = match (given, subject) {
+            (Some(v), _) => v,
+            (None, Subject::Family(_)) => THESIS_PARAMETER.to_string(),
+            (None, Subject::Spec(_)) => {
+                return Err(CliError::Usage(format!(
+                    "`{}`: give --param {name}=VALUE (a spec file's parameters have no default)",
+                    subject.id()
+                )));
+            }
+        };
+        mine.push((name, value));
+    }
+    Ok(subject
+        .params_from_pairs(&mine, false)
+        .map_err(CliError::Core)?
         .iter()
-        .map(|spec| {
-            let given = pairs
-                .iter()
-                .rev()
-                .find(|(n, _)| n == spec.name || n == spec.symbol);
-            (
-                spec.name.to_string(),
-                given.map_or(THESIS_PARAMETER.to_string(), |(_, v)| v.clone()),
-            )
-        })
-        .collect();
-    Ok(family
-        .params_from_pairs(&mine, false)?
-        .iter()
-        .map(|q| q.to_f64())
+        // nearest (`Rational::to_f64` truncates: 1/20 would be 0.049999…)
+        .map(|q| rug::Float::with_val(53, q).to_f64())
         .collect())
 }
 
-/// The search interval of `--optimise` for a one-parameter family.
-fn interval(family: Family, range: SearchRange) -> Result<(f64, f64), CliError> {
-    let spec = family.info().params[0];
-    let (lo, hi) = search_interval(&spec.range).map_err(fit_err)?;
-    if range == SearchRange::Published {
-        return Ok((lo, hi));
-    }
+/// The search interval of `--optimise` for a one-parameter basis, and
+/// where it comes from.
+fn interval(subject: &Subject, range: SearchRange) -> Result<(f64, f64, &'static str), CliError> {
+    let (name, _, ends) = parameters(subject).swap_remove(0);
+    let Some((lo, hi)) = ends else {
+        return Err(CliError::Usage(format!(
+            "`{}`: the range of {name} is unbounded: no search interval",
+            subject.id()
+        )));
+    };
+    let (lo, hi) = search_between(lo, hi);
+    let family = match (subject, range) {
+        (_, SearchRange::Published) => return Ok((lo, hi, "published range")),
+        (Subject::Spec(_), SearchRange::Certified) => {
+            return Ok((
+                lo,
+                hi,
+                "published range: certified ranges are computed for catalog families",
+            ));
+        }
+        (Subject::Family(f), SearchRange::Certified) => *f,
+    };
     let (certified, _) = trig_verification::certify::evidence::maximal_versus_published(family);
     // the certified side of each end (an irrational end by the inner side
     // of its isolating interval)
@@ -171,17 +248,19 @@ fn interval(family: Family, range: SearchRange) -> Result<(f64, f64), CliError> 
         return Err(CliError::Usage(format!(
             "`{}`: the certified nonnegativity interval does not meet the published range {}",
             family.info().id,
-            spec.range
+            family.info().params[0].range
         )));
     }
-    Ok((clo, chi))
+    Ok((clo, chi, "certified range"))
 }
 
-/// One fitted method: family, how its parameter was chosen, the fit.
+/// One fitted method: basis, how its parameter was chosen, the fit.
 #[derive(Debug)]
 pub struct Method {
     pub label: String,
     pub setting: String,
+    /// The printed symbol of the one shape parameter, if any.
+    pub symbol: Option<String>,
     pub fit: OutlineFit,
 }
 
@@ -193,7 +272,7 @@ pub enum Runs {
     Both,
 }
 
-/// Reads the outline and fits it with every selected family.
+/// Reads the outline and fits it with every selected basis.
 pub fn prepare(
     setup: &FitSetup,
     family: &str,
@@ -201,16 +280,15 @@ pub fn prepare(
 ) -> Result<(Outline, Vec<Method>), CliError> {
     let outline = Outline::read(&setup.glyph).map_err(fit_err)?;
     let pairs = param_pairs(&setup.params)?;
-    let selected = families(family)?;
+    let selected = subjects(family, setup)?;
     for (name, _) in &pairs {
-        if !selected.iter().any(|f| {
-            f.info()
-                .params
+        if !selected.iter().any(|s| {
+            parameters(s)
                 .iter()
-                .any(|p| p.name == name || p.symbol == name)
+                .any(|(n, symbol, _)| n == name || symbol == name)
         }) {
             return Err(CliError::Usage(format!(
-                "--param {name}: no selected family has a parameter `{name}`"
+                "--param {name}: no selected basis has a parameter `{name}`"
             )));
         }
     }
@@ -238,35 +316,41 @@ pub fn prepare(
         shape,
     };
     let mut methods = Vec::new();
-    for family in selected {
-        let info = family.info();
-        let optimise = runs != Runs::Fixed && info.params.len() == 1;
+    for subject in selected {
+        let params = parameters(&subject);
+        let symbol = params.first().map(|(_, s, _)| s.clone());
+        let basis: Arc<dyn FitBasis> = Arc::new(subject.clone());
+        let optimise = runs != Runs::Fixed && params.len() == 1;
         if runs != Runs::Optimised || !optimise {
-            let fixed = fixed_params(family, &pairs)?;
-            let setting = info
-                .params
+            let fixed = fixed_params(&subject, &pairs)?;
+            let setting = params
                 .iter()
                 .zip(&fixed)
-                .map(|(s, v)| format!("{} = {v}", s.symbol))
+                .map(|((_, s, _), v)| format!("{s} = {v}"))
                 .collect::<Vec<_>>()
                 .join(", ");
             methods.push(Method {
-                label: info.id.to_string(),
+                label: subject.id(),
                 setting: if setting.is_empty() {
                     "—".into()
                 } else {
                     setting
                 },
-                fit: fit_outline(&outline, family, &options(Shape::Fixed(fixed)))
+                symbol: symbol.clone(),
+                fit: fit_outline(&outline, basis.clone(), &options(Shape::Fixed(fixed)))
                     .map_err(fit_err)?,
             });
         }
         if optimise {
-            let (lo, hi) = interval(family, setup.range)?;
+            let (lo, hi, from) = interval(&subject, setup.range)?;
             methods.push(Method {
-                label: info.id.to_string(),
-                setting: format!("{} optimised in [{lo}, {hi}]", info.params[0].symbol),
-                fit: fit_outline(&outline, family, &options(Shape::Optimise { lo, hi }))
+                label: subject.id(),
+                setting: format!(
+                    "{} optimised in [{lo}, {hi}] ({from})",
+                    symbol.clone().unwrap_or_default()
+                ),
+                symbol,
+                fit: fit_outline(&outline, basis, &options(Shape::Optimise { lo, hi }))
                     .map_err(fit_err)?,
             });
         }
@@ -339,7 +423,7 @@ fn markdown(args: &FitSetup, outline: &Outline, methods: &[Method]) -> String {
     for m in methods {
         let _ = writeln!(out, "## {} ({})\n", m.label, m.setting);
         let refined = m.fit.after.is_some();
-        let param = m.fit.family_enum.info().params.first().map(|p| p.symbol);
+        let param = m.symbol.as_deref();
         let mut head = vec!["Segment", "Points"];
         if let Some(p) = param {
             head.push(p);

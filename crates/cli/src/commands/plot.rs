@@ -52,9 +52,9 @@ enum PlotKind {
     },
     /// A fitted outline over its data, before and (with --refine) after C¹ refinement.
     Fit {
-        /// Family id.
-        #[arg(long)]
-        family: String,
+        /// Family id (or --spec FILE).
+        #[arg(long, required_unless_present = "spec")]
+        family: Option<String>,
         /// Optimise the shape parameter per segment.
         #[arg(long)]
         optimise: bool,
@@ -187,7 +187,8 @@ pub fn run(args: &PlotArgs) -> CmdResult {
             setup,
             output,
         } => {
-            if family == "all" {
+            let family = family.as_deref().unwrap_or("all");
+            if family == "all" && setup.spec.is_none() {
                 return Err(CliError::Usage(
                     "plot fit draws one family: give its id".into(),
                 ));
