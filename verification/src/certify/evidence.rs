@@ -7,6 +7,7 @@ use trig_core::Family;
 
 use super::nonneg::{BoxCertificate, Certificate, certify, certify_box};
 use super::range::{EndPoint, MaximalRange, Outside, certify_all, maximal_range};
+use crate::evidence::EvidenceList;
 use crate::exact::basis;
 use crate::verdict::{Status, Verdict};
 
@@ -74,7 +75,7 @@ pub fn nonnegative_named(
     bx: &ParamBox,
 ) -> Verdict {
     let mut status = Status::Holds;
-    let mut evidence = Vec::new();
+    let mut evidence = EvidenceList::default();
     for (f, name) in fs.iter().zip(names) {
         let (s, line) = describe(
             &format!("{} ≥ 0", name.as_ref()),
@@ -110,7 +111,7 @@ pub fn nonnegative_on_box_named(
 ) -> Verdict {
     let region: Vec<String> = params.iter().map(|(n, bx)| format!("{n} ∈ {bx}")).collect();
     let mut status = Status::Holds;
-    let mut evidence = vec![format!("parameter box {}", region.join(" × "))];
+    let mut evidence = EvidenceList::from(vec![format!("parameter box {}", region.join(" × "))]);
     for (f, name) in fs.iter().zip(names) {
         let name = name.as_ref();
         let (s, line) = match certify_box(f, trig, params) {
@@ -315,10 +316,10 @@ pub fn maximal_against(
     let start = published.start();
     let names: Vec<&str> = names.iter().map(AsRef::as_ref).collect();
     let r = maximal_range(fs, &names, trig, name, &start);
-    let mut evidence = vec![format!(
+    let mut evidence = EvidenceList::from(vec![format!(
         "published range of {}: {} ({})",
         published.symbol, published.range, published.source
-    )];
+    )]);
     if let Some(o) = &r.start_outside {
         evidence.push(format!(
             "the search starts inside the published range at {name} = {start}, which is not admissible: {}",
@@ -355,7 +356,7 @@ pub fn maximal_against(
         matches!(r.lo, EndPoint::Bracket { .. }) || matches!(r.hi, EndPoint::Bracket { .. });
     if cs == Status::Fails || (bracketed && cs != Status::Holds) {
         evidence.push(
-            "the certificate of the interval is missing or contradicts the ends: no verdict".into(),
+            "the certificate of the interval is missing or contradicts the ends: no verdict",
         );
         status = Status::NotCheckable;
     }

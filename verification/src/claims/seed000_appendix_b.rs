@@ -71,7 +71,7 @@ fn m11() -> Verdict {
     let mut v = Verdict::all(IDENTITY, parts);
     v.evidence.insert(
         0,
-        "b_i = b_{j+2,i} as symbols, S = s(ξ); y_k = coefficient of z^k in (1 + z²)³ Σ b_i l_i(t), sin t = 2z/(1+z²), cos t = (1−z²)/(1+z²); t ∈ [0, π/2] gives z ∈ [0, 1] (the print says t ∈ [0, 1])".into(),
+        "b_i = b_{j+2,i} as symbols, S = s(ξ); y_k = coefficient of z^k in (1 + z²)³ Σ b_i l_i(t), sin t = 2z/(1+z²), cos t = (1−z²)/(1+z²); t ∈ [0, π/2] gives z ∈ [0, 1] (the print says t ∈ [0, 1])",
     );
     v
 }

@@ -198,7 +198,7 @@ fn m5() -> Verdict {
     let mut v = Verdict::all(IDENTITY, parts);
     v.evidence.insert(
         0,
-        "pieces of (1) with the coefficients as symbols: a = a_j (piece a_j l3 on [n_j, n_{j+1})), c_k = c_{j+1,k}, b_k = b_{j+2,k}, d = d_{j+3}; S = s(ξ) = ξ² − ξ + 1; derivatives in the local variable u = (n − n_i)/q_i, t = πu/2 (the print's factors (π/2)^k)".into(),
+        "pieces of (1) with the coefficients as symbols: a = a_j (piece a_j l3 on [n_j, n_{j+1})), c_k = c_{j+1,k}, b_k = b_{j+2,k}, d = d_{j+3}; S = s(ξ) = ξ² − ξ + 1; derivatives in the local variable u = (n − n_i)/q_i, t = πu/2 (the print's factors (π/2)^k)",
     );
     v
 }
@@ -344,7 +344,7 @@ fn appendix_d(lines: impl Iterator<Item = DLine>, label: impl Fn(&DLine) -> Stri
         }
     }
     let mut v = Verdict::all(IDENTITY, parts);
-    v.evidence.insert(0, APPENDIX_D_SETUP.into());
+    v.evidence.insert(0, APPENDIX_D_SETUP);
     v.evidence.extend(Verdict::all(IDENTITY, garbled).evidence);
     v
 }
@@ -353,7 +353,7 @@ fn m9() -> Verdict {
     let mut v = appendix_d(APPENDIX_D.into_iter(), |l| l.label.to_string());
     v.evidence.insert(
         1,
-        "read as printed: the stray comma in \"S_1, + [...]S_2\" of T(n_j^+) is punctuation; the unmatched \"[\" opening both T^iv values is closed before \"}\" (it groups a sum: any closing gives the same value); \"(c_{j,0} − c_{j,2} + c_{j,2})\" in T^v(n_j^+) is kept as printed".into(),
+        "read as printed: the stray comma in \"S_1, + [...]S_2\" of T(n_j^+) is punctuation; the unmatched \"[\" opening both T^iv values is closed before \"}\" (it groups a sum: any closing gives the same value); \"(c_{j,0} − c_{j,2} + c_{j,2})\" in T^v(n_j^+) is kept as printed",
     );
     v
 }
@@ -523,7 +523,7 @@ fn m4b() -> Verdict {
                     Verdict::new(
                         if ok { Status::Holds } else { Status::Fails },
                         METHOD,
-                        cont.iter().map(|c| c.describe(Some("zeta"))).collect(),
+                        cont.iter().map(|c| c.describe(Some("zeta"))),
                     )
                 }
                 Err(ContinuityError::Construction(e)) => Verdict::not_checkable(format!(
@@ -594,9 +594,9 @@ mod tests {
         let line = |label: &str| {
             v.evidence
                 .iter()
+                .map(|e| e.line())
                 .find(|e| e.starts_with(&format!("{label} printed")))
                 .unwrap_or_else(|| panic!("{label}: {:?}", v.evidence))
-                .clone()
         };
         assert!(line("T(n_j^+)").contains(": holds"));
         // T'''(n_j^+) = (π/2)³ (2S − 5)[…] (Appendix C's factor), printed (5 + 2S)
@@ -614,9 +614,10 @@ mod tests {
     fn appendix_c_has_the_known_a3_misprint() {
         let v = m5();
         assert_eq!(v.status, Status::Fails);
-        let a3: Vec<&String> = v
+        let a3: Vec<String> = v
             .evidence
             .iter()
+            .map(|e| e.line())
             .filter(|e| e.contains("(6 + 6S)"))
             .collect();
         assert_eq!(a3.len(), 1);

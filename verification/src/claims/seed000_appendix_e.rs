@@ -629,7 +629,7 @@ fn m15() -> Verdict {
     let mut v = decide(&entries, &general::<THIRD>(), GENERAL);
     v.evidence.insert(
         1,
-        "garbled print: \"A^-\" in (A20) and \"B^-\" in (A27) are read as \"A −\", \"B −\"; the outer bracket of (A28) encloses all three terms as printed; m(ξ)² is defined but never used".into(),
+        "garbled print: \"A^-\" in (A20) and \"B^-\" in (A27) are read as \"A −\", \"B −\"; the outer bracket of (A28) encloses all three terms as printed; m(ξ)² is defined but never used",
     );
     v
 }
@@ -645,9 +645,9 @@ mod tests {
         let line = |eq: &str| {
             v.evidence
                 .iter()
+                .map(|l| l.line())
                 .find(|l| l.starts_with(eq))
                 .unwrap()
-                .clone()
         };
         assert!(line("(A36)").contains(": holds"));
         assert!(line("(A37)").contains(": holds"));

@@ -6,6 +6,7 @@ use trig_core::{Family, Ring};
 use trig_deriv::{End, Wrt, curve_endpoint_derivatives};
 use trig_symbolic::{Poly, Sym};
 
+use crate::evidence::EvidenceList;
 use crate::certify::evidence::nonnegative_on;
 use crate::certify::unimodal::exactly_one_maximum;
 use crate::claim::{Claim, Seed};
@@ -251,7 +252,7 @@ fn d10() -> Verdict {
             rational_curve(&p, &w) * &k,
         ),
     ]);
-    v.evidence.push("the printed equations are unreadable in our copy (\"R_2^π − t, P, …\"); this is the obvious reading".into());
+    v.evidence.push("the printed equations are unreadable in our copy (\"R_2^π − t, P, …\"); this is the obvious reading");
     v
 }
 
@@ -315,7 +316,7 @@ const DESIGN: &str = "the right-hand sides V1, α1(V2 − V0), α1(V0 − 2V1 + 
 
 fn d6() -> Verdict {
     let mut v = identities(d6_parts(false));
-    v.evidence.push(DESIGN.into());
+    v.evidence.push(DESIGN);
     if v.status == Status::Fails {
         v = v.with_correction("see D6b: 3w1² → 32w1², 3w4² → 32w4², 1/w0² → 1/w5² and w3w3 → w3w5 in R''(π/2), R''_2 → R(π/2)");
     }
@@ -324,7 +325,7 @@ fn d6() -> Verdict {
 
 fn d6b() -> Verdict {
     let mut v = identities(d6_parts(true));
-    v.evidence.push(DESIGN.into());
+    v.evidence.push(DESIGN);
     v
 }
 
@@ -369,16 +370,16 @@ fn d7() -> Verdict {
             ratio.square() * &l[2],
         ),
     ]);
-    let mut evidence = vec![
+    let mut evidence = EvidenceList::from(vec![
         "segments from (6): Q_i(t, α_i, α_{i+1}) on V_{i−1}…V_{i+2}; both sides of the knot u_{i+1} use α_{i+1}; their values and t-derivatives at the knot are the end conditions (3) (reading D6b), Q^(k)(u) = (π/(2Δu_i))^k Q_i^(k)(t) by (7)".to_string(),
-    ];
+    ]);
     evidence.extend(
         low.evidence
             .into_iter()
             .map(|e| format!("orders 0–2 of (8): {e}")),
     );
-    evidence.push("order 3 of (8) is not checkable: (3) fixes only orders 0–2 at each end; Q_i''' at the ends depends on the blending functions Tb_i(t, α1, α2) of (5), whose printed fraction is unreadable in our copy (see D12), i.e. on the weights w_i and control points the construction actually uses".into());
-    evidence.push("so F³ (a third-order connection relation) can be neither proved nor refuted; the readable part, (8) for k = 0, 1, 2, is G²/C²-type continuity in u and holds exactly".into());
+    evidence.push("order 3 of (8) is not checkable: (3) fixes only orders 0–2 at each end; Q_i''' at the ends depends on the blending functions Tb_i(t, α1, α2) of (5), whose printed fraction is unreadable in our copy (see D12), i.e. on the weights w_i and control points the construction actually uses");
+    evidence.push("so F³ (a third-order connection relation) can be neither proved nor refuted; the readable part, (8) for k = 0, 1, 2, is G²/C²-type continuity in u and holds exactly");
     Verdict::new(Status::NotCheckable, crate::exact::IDENTITY, evidence)
 }
 
@@ -467,7 +468,7 @@ fn d11() -> Verdict {
     let b = basis(Family::Seed002Quartic);
     let names = Family::Seed002Quartic.info().functions;
     let mut status = Status::Holds;
-    let mut evidence = Vec::new();
+    let mut evidence = EvidenceList::default();
     for (f, name) in b.iter().zip(names) {
         match fourier(f) {
             Ok(terms) => {
@@ -495,7 +496,7 @@ fn d11() -> Verdict {
             }
         }
     }
-    evidence.push("the printed span has 8 functions but omits sin 2t from the 9-dimensional space of trigonometric polynomials of degree ≤ 4; the rational blending functions w_i b_i / Σ w_j b_j equal b_i when all weights are equal (Σ b_j = 1, D1b), so the polynomial b_i decide the claim".into());
+    evidence.push("the printed span has 8 functions but omits sin 2t from the 9-dimensional space of trigonometric polynomials of degree ≤ 4; the rational blending functions w_i b_i / Σ w_j b_j equal b_i when all weights are equal (Σ b_j = 1, D1b), so the polynomial b_i decide the claim");
     Verdict::new(
         status,
         "exact: Fourier expansion of each b_i in Q[s, c]/(s² + c² − 1), triangular solve on the normal-form basis c^k, s·c^k",

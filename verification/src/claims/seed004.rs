@@ -6,6 +6,7 @@ use trig_core::{Family, Ring};
 use trig_deriv::{End, Wrt, curve_endpoint_derivatives, endpoint_derivatives};
 use trig_symbolic::Sym;
 
+use crate::evidence::EvidenceList;
 use crate::certify::evidence::{nonnegative_on, nonnegative_on_box};
 use crate::claim::{Claim, Seed};
 use crate::exact::{IDENTITY, basis, combination, identities, reflect, sum, symbols, symmetry};
@@ -272,7 +273,7 @@ fn e8() -> Verdict {
             .collect(),
     );
     v.evidence.push(
-        "the second sentence (λ = μ gives the single-parameter bases of its reference [20]) cites a basis not printed in the paper and is not checked".into(),
+        "the second sentence (λ = μ gives the single-parameter bases of its reference [20]) cites a basis not printed in the paper and is not checked",
     );
     v
 }
@@ -324,7 +325,7 @@ fn e9() -> Verdict {
     }
     let mut evidence = printed.evidence;
     evidence.extend(shifted.evidence.into_iter().filter(|e| e.contains("→")));
-    evidence.push("the segment has only P0…P3; the printed R'' formulas use P4".into());
+    evidence.push("the segment has only P0…P3; the printed R'' formulas use P4");
     Verdict::new(Status::HoldsAfterCorrection, IDENTITY, evidence).with_correction(
         "index shift in both R'' formulas: 2μ(P2 − P3) − 2(2P2 + P3) and 2μ(P2 − P3) + 2(P2 + 2P3)",
     )
@@ -421,7 +422,7 @@ fn e11() -> Verdict {
             eh_curve(&p, &l, &m, &t) * &k,
         ),
     ]);
-    v.evidence.push("translation invariance needs Σ b_i = 1, which fails (E6); linear invariance holds for any basis".into());
+    v.evidence.push("translation invariance needs Σ b_i = 1, which fails (E6); linear invariance holds for any basis");
     v
 }
 
@@ -673,7 +674,7 @@ fn e15b() -> Verdict {
     ];
     let mut v = join_verdict(&j, &c2_conditions(&j), &printed, &["Q0", "Q2", "Q3"]);
     v.evidence
-        .insert(0, "one λ = λ1 = λ2, μ = μ1 = μ2 for both curves".into());
+        .insert(0, "one λ = λ1 = λ2, μ = μ1 = μ2 for both curves");
     v
 }
 
@@ -743,14 +744,14 @@ fn e17() -> Verdict {
     ];
     let all_zero = printed_hold.iter().all(|(_, e)| at(e).is_zero());
     let gap = at(&(j.r2[0].clone() - &j.r1[0]));
-    let mut evidence = vec![
+    let mut evidence = EvidenceList::from(vec![
         j.terminal(),
         "the relation between |P1Q2| and |P2Q1| is unreadable (\"|P1Q2| □ |P2Q1|\"); the counterexample below has Q2 − P1 = Q1 − P2, so it satisfies every reflexive relation between the two segments (equal length, parallel, ≤, ≥)".into(),
         format!(
             "one coordinate, λ1 = μ1 = λ2 = μ2 = 0, ω = 1: P = (0, 1, 2, 3), Q = (3, 4, 3, 0); printed conditions satisfied exactly: {all_zero}"
         ),
         format!("R2(0) − R1(1) = {gap} (exact): the curves do not even meet (G⁰ fails)"),
-    ];
+    ]);
     let (sol, check) = derive(
         &[
             g1_conditions(&j, &omega),

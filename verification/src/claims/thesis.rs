@@ -169,7 +169,7 @@ fn t1() -> Verdict {
     let h = basis(Family::ThesisQuadratic);
     let mut v = identity("H0 + H1 + H2 − 1", &sum(&h), &Sym::one());
     v.evidence.push(
-        "H1 is defined in (3.1) as 1 − H0 − H2, so the identity holds by construction".into(),
+        "H1 is defined in (3.1) as 1 − H0 − H2, so the identity holds by construction",
     );
     v
 }
@@ -243,7 +243,7 @@ fn t5b() -> Verdict {
         ("F(1) = P2".into(), f1, p2),
     ]);
     v.evidence.push(
-        "the residuals are (P1 − P0)/(β+1) and (P1 − P2)/(β+1): nonzero for every finite β ≥ 0 unless P1 coincides with the end point; e.g. β = 1, P0 = (0,0), P1 = (1.5,1.5) (3.2.3) gives F(0) = (0.75, 0.75)".into(),
+        "the residuals are (P1 − P0)/(β+1) and (P1 − P2)/(β+1): nonzero for every finite β ≥ 0 unless P1 coincides with the end point; e.g. β = 1, P0 = (0,0), P1 = (1.5,1.5) (3.2.3) gives F(0) = (0.75, 0.75)",
     );
     v
 }
@@ -255,7 +255,7 @@ fn t6() -> Verdict {
 fn t9() -> Verdict {
     let mut v = reflection_counterexample(Family::ThesisCubic, (0, 1), 0, 2);
     v.evidence.push(
-        "as printed the index 2 − i is also out of range for i = 3 (b_{−1} does not exist)".into(),
+        "as printed the index 2 − i is also out of range for i = 3 (b_{−1} does not exist)",
     );
     v
 }
@@ -279,7 +279,7 @@ fn t25() -> Verdict {
     );
     if v.status == Status::Holds {
         v.evidence.push(
-            "hence [T][A][V][A]^T[U] = [b(u)] V [b(v)]^T = Σ_i Σ_j b_i(u) b_j(v) V_{ij}, the double sum (5.3) with P_{i,j} = V_{ij}".into(),
+            "hence [T][A][V][A]^T[U] = [b(u)] V [b(v)]^T = Σ_i Σ_j b_i(u) b_j(v) V_{ij}, the double sum (5.3) with P_{i,j} = V_{ij}",
         );
     }
     v
@@ -323,7 +323,7 @@ fn t28() -> Verdict {
     let mut v = identities(parts);
     debug_assert_eq!(Family::MajeedQayyum.info().variable, Variable::Angle);
     v.evidence.push(
-        "so (3.7), (6.2) and (6.1) are one family: m = λ = η − 1 (with t = πu/2 for (6.1)); the published ranges m ∈ [−2, 1], λ ∈ [−2, 1], η ∈ (1/2, 2] correspond to m ∈ [−2, 1], [−2, 1] and (−1/2, 1]".into(),
+        "so (3.7), (6.2) and (6.1) are one family: m = λ = η − 1 (with t = πu/2 for (6.1)); the published ranges m ∈ [−2, 1], λ ∈ [−2, 1], η ∈ (1/2, 2] correspond to m ∈ [−2, 1], [−2, 1] and (−1/2, 1]",
     );
     v
 }
@@ -389,7 +389,7 @@ fn t37() -> Verdict {
     };
     let mut evidence = v.evidence;
     evidence.push(
-        "with β = 0 the curve is F(u) = P1 for every u: a single point, not a straight line (3.2.3 says the same: \"H1(u) becomes identically equal to one\")".into(),
+        "with β = 0 the curve is F(u) = P1 for every u: a single point, not a straight line (3.2.3 says the same: \"H1(u) becomes identically equal to one\")",
     );
     Verdict::new(status, crate::exact::IDENTITY, evidence)
 }
@@ -447,7 +447,7 @@ fn t29() -> Verdict {
         };
         let mut m = maximal;
         m.status = Status::Holds;
-        m.evidence.push(note.into());
+        m.evidence.push(note);
         parts.push((format!("{id}: maximal range (evidence)"), m));
     }
     Verdict::all(crate::certify::evidence::CERTIFIED, parts)
@@ -556,7 +556,7 @@ fn t31() -> Verdict {
         evidence,
     );
     v.evidence.push(
-        "with (6.2) the basis is nonnegative and sums to 1 at λ = −1, −2, so every curve lies in the convex hull: the printed observation does not hold for (6.2); the listing's functions do not sum to 1 (T30), which is what Figure 6.3 shows".into(),
+        "with (6.2) the basis is nonnegative and sums to 1 at λ = −1, −2, so every curve lies in the convex hull: the printed observation does not hold for (6.2); the listing's functions do not sum to 1 (T30), which is what Figure 6.3 shows",
     );
     v
 }

@@ -17,6 +17,7 @@ use trig_interp::{
 use trig_symbolic::Sym;
 
 use super::thesis::claim;
+use crate::evidence::EvidenceList;
 use crate::claim::Claim;
 use crate::exact::{IDENTITY, identities};
 use crate::verdict::{Status, Verdict};
@@ -271,9 +272,10 @@ fn t21() -> Verdict {
         (Ok(p), Ok(c)) => (p, c),
         (Err(e), _) | (_, Err(e)) => return Verdict::not_checkable(e),
     };
-    let (ok, mut evidence) = jump_lines(&printed, 3);
+    let (ok, evidence) = jump_lines(&printed, 3);
+    let mut evidence = EvidenceList::from(evidence);
     let (fixed, lines) = jump_lines(&corrected, 3);
-    evidence.push("(4.25) uses the control points of (4.21) unchanged: D_i are computed, not imposed, so P'' jumps wherever the two pieces' D_i differ".into());
+    evidence.push("(4.25) uses the control points of (4.21) unchanged: D_i are computed, not imposed, so P'' jumps wherever the two pieces' D_i differ");
     evidence.extend(lines);
     let status = if ok { Status::Holds } else { Status::Fails };
     let v = Verdict::new(status, JUMPS, evidence);
@@ -286,7 +288,7 @@ fn t21() -> Verdict {
 
 fn t22b() -> Verdict {
     let mut all_ok = true;
-    let mut evidence = Vec::new();
+    let mut evidence = EvidenceList::default();
     for name in ["thesis-table-4.3", "thesis-table-4.6"] {
         match sym_spline(name, Scheme::G1, Variant::Printed) {
             Ok(s) => {
@@ -297,7 +299,7 @@ fn t22b() -> Verdict {
             Err(e) => return Verdict::not_checkable(e),
         }
     }
-    evidence.push("for the graph y = P(x), tangent continuity is continuity of P'; at x_{i+1} the left piece ends with slope d_{i+1} (4.26) and the right piece starts with n_{i+1} d_{i+1}, so the slope jumps by (n_{i+1} − 1) d_{i+1}".into());
+    evidence.push("for the graph y = P(x), tangent continuity is continuity of P'; at x_{i+1} the left piece ends with slope d_{i+1} (4.26) and the right piece starts with n_{i+1} d_{i+1}, so the slope jumps by (n_{i+1} − 1) d_{i+1}");
     let status = if all_ok { Status::Holds } else { Status::Fails };
     let v = Verdict::new(status, JUMPS, evidence);
     if all_ok {
@@ -329,7 +331,7 @@ fn t23() -> Verdict {
             ),
         ]
     };
-    let mut evidence = Vec::new();
+    let mut evidence = EvidenceList::default();
     for (wrt, h) in [
         (Wrt::U, Sym::one()),
         (Wrt::Angle, Sym::one()),
@@ -418,7 +420,7 @@ fn positivity(name: &str, scheme: Scheme, variant: Variant) -> Verdict {
             } else {
                 Status::NotCheckable
             };
-            let evidence = minima.iter().map(|m| describe(name, variant, m)).collect();
+            let evidence = minima.iter().map(|m| describe(name, variant, m));
             Verdict::new(status, CERTIFIED, evidence)
         }
     }

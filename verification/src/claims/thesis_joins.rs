@@ -454,7 +454,7 @@ fn t26() -> Verdict {
     } else {
         Status::Fails
     };
-    let evidence = verdicts
+    let evidence: Vec<String> = verdicts
         .iter()
         .map(|(id, v)| format!("{id}: {}", v.status))
         .collect();

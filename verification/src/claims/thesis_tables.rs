@@ -21,6 +21,7 @@ use std::fmt;
 use rug::ops::Pow;
 use rug::{Integer, Rational};
 
+use crate::evidence::EvidenceList;
 use crate::claim::{Claim, Seed};
 use crate::verdict::{Status, Verdict};
 
@@ -395,7 +396,7 @@ fn table_verdict(t: &Table, tables: &[Table]) -> Verdict {
     match checks {
         Ok(checks) => {
             let ok = checks.iter().all(|c| c.ok);
-            let mut evidence: Vec<String> =
+            let mut evidence: EvidenceList =
                 t.notes.iter().map(|n| format!("garbled: {n}")).collect();
             evidence.extend(checks.iter().filter(|c| !c.ok).map(|c| c.detail.clone()));
             let passed: Vec<&str> = checks
@@ -405,7 +406,7 @@ fn table_verdict(t: &Table, tables: &[Table]) -> Verdict {
                 .collect();
             if t.scheme == "summary" {
                 evidence.push(
-                    "row Bad points (>1.5): not in the per-letter tables, not compared".into(),
+                    "row Bad points (>1.5): not in the per-letter tables, not compared",
                 );
             }
             evidence.push(format!(

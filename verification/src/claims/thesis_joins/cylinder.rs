@@ -15,6 +15,7 @@ use trig_symbolic::Sym;
 
 use super::{lin, n, v};
 use crate::claim::shared;
+use crate::evidence::EvidenceList;
 use crate::exact::{sum, symbols};
 use crate::joins::{Printed, PrintedJoin, audit_surface};
 use crate::verdict::{Status, Verdict};
@@ -153,7 +154,7 @@ pub fn t26k() -> Verdict {
     static VERDICT: OnceLock<Verdict> = OnceLock::new();
     shared(&VERDICT, || {
         let rows = listing_nets();
-        let mut evidence = Vec::new();
+        let mut evidence = EvidenceList::default();
         let mut holds = true;
         for (name, p_to_q) in [
             ("seam P → Q (z1 | z4)", true),
@@ -168,7 +169,7 @@ pub fn t26k() -> Verdict {
             }
         }
         evidence.push(
-            "listing order: Q1, Q2 are computed from the original P1, P2, P3; P1 and P2 are then overwritten from Q1, Q2, Q3, so the P → Q seam no longer matches the final P net (a nonzero row jump is a nonzero surface jump: the u-basis functions are linearly independent)".into(),
+            "listing order: Q1, Q2 are computed from the original P1, P2, P3; P1 and P2 are then overwritten from Q1, Q2, Q3, so the P → Q seam no longer matches the final P net (a nonzero row jump is a nonzero surface jump: the u-basis functions are linearly independent)",
         );
         let status = if holds { Status::Holds } else { Status::Fails };
         let v = Verdict::new(

@@ -1,0 +1,319 @@
+//! The Markdown report: summary, index, then one section per document and
+//! one entry per claim; evidence nested by the parts of the claim.
+//! Expressions longer than [`LONG`] characters are summarised (degree,
+//! number of terms, a factored form when short) — the JSON report has them
+//! whole — and every failing check shows its witness.
+
+use std::fmt::Write;
+
+use super::{Entry, View, counts, plural, sections, short};
+use crate::evidence::{Evidence, Expr, Part, Witness};
+use crate::verdict::Status;
+
+/// Expressions with more characters are summarised.
+pub const LONG: usize = 240;
+
+/// SymPy forms up to this length are shown beside the Unicode ones.
+const SYMPY_SHOWN: usize = 120;
+
+/// Markdown text: the characters Markdown would read as markup escaped.
+pub fn md_text(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for ch in text.chars() {
+        if matches!(ch, '\\' | '*' | '_' | '`' | '<' | '>' | '[' | ']' | '|') {
+            out.push('\\');
+        }
+        out.push(ch);
+    }
+    out
+}
+
+/// A code span (formulas): backticks inside are replaced by quotes.
+fn code(text: &str) -> String {
+    format!("`{}`", text.replace('`', "'"))
+}
+
+/// How an expression is shown where people read.
+pub(crate) enum Shown<'a> {
+    /// In full (the factored form when it is informative and not longer).
+    Full {
+        unicode: &'a str,
+        latex: &'a str,
+        sympy: &'a str,
+    },
+    /// Too long: its size, and the factored form when that is short.
+    Summary {
+        degree: u64,
+        terms: usize,
+        factored: Option<(&'a str, &'a str)>,
+    },
+}
+
+/// The form of `e` to show, given the longest form allowed.
+pub(crate) fn shown(e: &Expr, long: usize) -> Shown<'_> {
+    if e.best_unicode().chars().count() <= long {
+        return Shown::Full {
+            unicode: e.best_unicode(),
+            latex: e.best_latex(),
+            sympy: e.best_sympy(),
+        };
+    }
+    Shown::Summary {
+        degree: e.degree,
+        terms: e.terms,
+        factored: e
+            .factored
+            .as_ref()
+            .filter(|f| f.unicode.chars().count() <= long)
+            .map(|f| (f.unicode.as_str(), f.latex.as_str())),
+    }
+}
+
+fn expr_md(e: &Expr) -> String {
+    match shown(e, LONG) {
+        Shown::Full { unicode, sympy, .. } => {
+            if sympy.chars().count() <= SYMPY_SHOWN && sympy != unicode {
+                format!("{} (SymPy {})", code(unicode), code(sympy))
+            } else {
+                code(unicode)
+            }
+        }
+        Shown::Summary {
+            degree,
+            terms,
+            factored,
+        } => {
+            let f = factored.map_or(String::new(), |u| format!(", factored {}", code(u.0)));
+            format!(
+                "a polynomial expression of degree {degree} with {} in its numerator{f} (in full in the JSON report)",
+                plural(terms, "term", "terms")
+            )
+        }
+    }
+}
+
+/// A witness on one line.
+pub(crate) fn witness_md(w: &Witness) -> String {
+    let point: Vec<String> = w
+        .point
+        .iter()
+        .map(|a| format!("{} = {}", a.name, a.value))
+        .collect();
+    let values: Vec<String> = w
+        .values
+        .iter()
+        .map(|v| format!("{} = {}", md_text(&v.label), expr_md(&v.value)))
+        .collect();
+    let note = w
+        .note
+        .as_ref()
+        .map_or(String::new(), |n| format!(" ({})", md_text(n)));
+    format!(
+        "at {}{note}: {} ({})",
+        code(&point.join(", ")),
+        values.join(", "),
+        if w.exact { "exact" } else { "numeric" }
+    )
+}
+
+/// One item: subject and status, prose, expressions, witness.
+fn item_md(e: &Evidence, part: Option<&Part>, show_witness: bool) -> String {
+    let mut out = String::new();
+    if let Some(s) = e.subject.as_deref().filter(|s| part.is_none_or(|p| p.name != *s)) {
+        out.push_str(&md_text(s));
+        if let Some(st) = e.status {
+            let _ = write!(out, " — **{st}**");
+        }
+        if !e.text.is_empty() || !e.exprs.is_empty() {
+            out.push_str(": ");
+        }
+    } else if let (Some(st), Some(p)) = (e.status, part)
+        && p.status != st
+    {
+        let _ = write!(out, "**{st}**: ");
+    }
+    out.push_str(&md_text(&e.text));
+    for (i, l) in e.exprs.iter().enumerate() {
+        if i > 0 || !e.text.is_empty() {
+            out.push_str("; ");
+        }
+        let _ = write!(out, "{} = {}", md_text(&l.label), expr_md(&l.expr));
+    }
+    if show_witness && let Some(w) = &e.witness {
+        let _ = write!(out, "; witness {}", witness_md(w));
+    }
+    out
+}
+
+/// The evidence as a nested list under `- **Evidence:**`; `skip` is the
+/// item whose witness the entry already shows.
+fn evidence_md(out: &mut String, items: &[Evidence], skip: Option<&Evidence>) {
+    let mut path: Vec<&Part> = Vec::new();
+    for e in items {
+        let common = path
+            .iter()
+            .zip(&e.parts)
+            .take_while(|(a, b)| **a == *b)
+            .count();
+        path.truncate(common);
+        for p in &e.parts[common..] {
+            let indent = "  ".repeat(path.len() + 1);
+            let _ = writeln!(out, "{indent}- **{}** — {}", md_text(&p.name), p.status);
+            path.push(p);
+        }
+        let indent = "  ".repeat(path.len() + 1);
+        let own = skip.is_none_or(|s| !std::ptr::eq(s, e));
+        let _ = writeln!(out, "{indent}- {}", item_md(e, path.last().copied(), own));
+    }
+}
+
+/// The Markdown report: a summary (by verdict and by document), an index
+/// (one line per claim), then one section per document and one entry per
+/// claim — or, with [`View::summary_only`], the summary and index alone.
+pub fn markdown_entries(entries: &[Entry], intro: &str, view: &View) -> String {
+    let shown_entries = view.select(entries);
+    let mut out = String::new();
+    let _ = writeln!(out, "# trig-audit report\n");
+    let _ = writeln!(out, "{intro}\n");
+    if let Some(n) = view.note() {
+        let _ = writeln!(out, "{n}\n");
+    }
+    let _ = writeln!(out, "## Summary\n");
+    let _ = writeln!(
+        out,
+        "| document | claims | {} |",
+        Status::ALL.map(|s| s.label()).join(" | ")
+    );
+    let _ = writeln!(out, "|---|---|{}", "---|".repeat(Status::ALL.len()));
+    let all: Vec<&Entry> = entries.iter().collect();
+    for (doc, of_doc) in sections(&all) {
+        let c: Vec<String> = counts(of_doc.iter().copied())
+            .iter()
+            .map(|(_, k)| k.to_string())
+            .collect();
+        let _ = writeln!(out, "| {} | {} | {} |", doc.id, of_doc.len(), c.join(" | "));
+    }
+    let c: Vec<String> = counts(entries.iter())
+        .iter()
+        .map(|(_, k)| k.to_string())
+        .collect();
+    let _ = writeln!(out, "| **all** | {} | {} |\n", entries.len(), c.join(" | "));
+    let _ = writeln!(out, "## Index\n");
+    let _ = writeln!(out, "| claim | verdict | document | source | printed |");
+    let _ = writeln!(out, "|---|---|---|---|---|");
+    for e in &shown_entries {
+        let link = if view.summary_only {
+            e.id.clone()
+        } else {
+            format!("[{}](#{})", e.id, anchor(&e.id))
+        };
+        let _ = writeln!(
+            out,
+            "| {link} | {} | {} | {} | {} |",
+            e.verdict.status,
+            e.document.id,
+            md_text(&e.source),
+            md_text(&short(&e.statement, 90))
+        );
+    }
+    out.push('\n');
+    if view.summary_only {
+        return out;
+    }
+    for (doc, of_doc) in sections(&shown_entries) {
+        let _ = writeln!(out, "## {} — {}\n", doc.heading, md_text(&doc.title));
+        let _ = writeln!(out, "Source: `{}`\n", doc.location);
+        for e in of_doc {
+            entry_md(&mut out, e);
+        }
+    }
+    out
+}
+
+/// The anchor of a claim's heading.
+fn anchor(id: &str) -> String {
+    format!("claim-{}", id.to_ascii_lowercase())
+}
+
+fn entry_md(out: &mut String, e: &Entry) {
+    let v = &e.verdict;
+    let _ = writeln!(
+        out,
+        "### <a id=\"{}\"></a>{} — {}\n",
+        anchor(&e.id),
+        e.id,
+        v.status
+    );
+    let _ = writeln!(out, "- **Source:** {}", md_text(&e.source));
+    let _ = writeln!(out, "- **Printed:** {}", md_text(&e.statement));
+    let _ = writeln!(out, "- **How:** {}", md_text(&v.method));
+    if let Some(corr) = &v.correction {
+        let _ = writeln!(out, "- **Correction:** {}", md_text(corr));
+    }
+    let witness = (v.status != Status::Holds).then(|| e.witness()).flatten();
+    if let Some((item, w)) = witness {
+        let subject = item
+            .parts
+            .iter()
+            .map(|p| p.name.as_str())
+            .chain(item.subject.as_deref())
+            .collect::<Vec<_>>()
+            .join(" › ");
+        let subject = if subject.is_empty() {
+            String::new()
+        } else {
+            format!("{} ", md_text(&subject))
+        };
+        let _ = writeln!(out, "- **Witness:** {subject}{}", witness_md(w));
+    }
+    if let Some(f) = e.figure {
+        let _ = writeln!(
+            out,
+            "- **Figure:** [{}]({}) (drawn by `trig-audit {}`; data: `{}`)",
+            md_text(f.caption),
+            f.path,
+            f.command,
+            f.data_path()
+        );
+    }
+    let _ = writeln!(out, "- **Evidence:**");
+    evidence_md(out, &v.evidence, witness.map(|(item, _)| item));
+    out.push('\n');
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::test_entries::{doc, entry};
+    use super::*;
+
+    #[test]
+    fn report_has_summary_index_and_nested_evidence() {
+        let entries = [
+            entry("A1", doc("b", 5), Status::Fails),
+            entry("A2", doc("a", 1), Status::Holds),
+        ];
+        let md = markdown_entries(&entries, "intro", &View::default());
+        assert!(md.contains("| **all** | 2 | 1 | 1 | 0 | 0 |"), "{md}");
+        assert!(md.contains("| [A1](#claim-a1) | fails | b |"), "{md}");
+        assert!(md.contains("  - **part** — fails\n    - Σ b\\_i − 1 — **fails**: residual = `m² − 4`"), "{md}");
+        assert!(md.contains("(SymPy `m**2 - 4`)"), "{md}");
+        let a = md.find("## Spec a").unwrap();
+        let b = md.find("## Spec b").unwrap();
+        assert!(a < b);
+        let short = markdown_entries(
+            &entries,
+            "intro",
+            &View {
+                summary_only: true,
+                verdicts: vec![],
+            },
+        );
+        assert!(!short.contains("## Spec"), "{short}");
+        assert!(short.contains("| A1 | fails |"));
+    }
+
+    #[test]
+    fn markup_characters_are_escaped() {
+        assert_eq!(md_text("b_i * [x] <y>"), r"b\_i \* \[x\] \<y\>");
+    }
+}
