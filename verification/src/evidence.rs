@@ -84,45 +84,52 @@ impl Expr {
         let Some(terms) = x.linear_in(vars) else {
             return Expr::new(x);
         };
-        let join = |form: &dyn Fn(&Sym) -> String, dot: &str, plus: &str| {
-            terms
+        let factored: Vec<_> = terms.iter().map(|(_, c)| c.factored()).collect();
+        let any_factored = factored.iter().any(|f| !f.trivial);
+        let form = |style: Style, use_factored: bool| {
+            let parts: Vec<(String, String)> = terms
                 .iter()
-                .map(|(v, c)| format!("({}){dot}{}", form(c), form(&Sym::var(v))))
-                .collect::<Vec<_>>()
-                .join(plus)
-        };
-        let best = |c: &Sym, pick: &dyn Fn(&trig_symbolic::FactoredQuotient) -> String| {
-            let f = c.factored();
-            if f.trivial { None } else { Some(pick(&f)) }
-        };
-        let factored = |form: &dyn Fn(&Sym) -> String,
-                        fac: &dyn Fn(&trig_symbolic::FactoredQuotient) -> String,
-                        dot: &str,
-                        plus: &str| {
-            terms
-                .iter()
-                .map(|(v, c)| {
-                    let coefficient = best(c, fac).unwrap_or_else(|| form(c));
-                    format!("({coefficient}){dot}{}", form(&Sym::var(v)))
+                .zip(&factored)
+                .map(|((v, c), f)| {
+                    let coefficient = if use_factored && !f.trivial {
+                        style.factored(f)
+                    } else {
+                        style.sym(c)
+                    };
+                    (coefficient, style.sym(&Sym::var(v)))
                 })
-                .collect::<Vec<_>>()
-                .join(plus)
+                .collect();
+            combine(&parts, style)
         };
-        let any_factored = terms.iter().any(|(_, c)| !c.factored().trivial);
         Expr {
-            unicode: join(&|s| s.to_unicode(), "·", " + "),
-            latex: join(&|s| s.to_latex(), " ", " + "),
-            sympy: join(&|s| s.to_sympy(), "*", " + "),
+            unicode: form(Style::Unicode, false),
+            latex: form(Style::Latex, false),
+            sympy: form(Style::Sympy, false),
             symbols: symbols_of(x),
-            plain: join(&|s| s.to_string(), "*", " + "),
+            plain: form(Style::Plain, false),
             terms: x.numerator().len(),
             degree: x.numerator().total_degree(),
             factored: any_factored.then(|| Forms {
-                unicode: factored(&|s| s.to_unicode(), &|f| f.to_unicode(), "·", " + "),
-                latex: factored(&|s| s.to_latex(), &|f| f.to_latex(), " ", " + "),
-                sympy: factored(&|s| s.to_sympy(), &|f| f.to_sympy(), "*", " + "),
-                plain: factored(&|s| s.to_string(), &|f| f.to_plain(), "*", " + "),
+                unicode: form(Style::Unicode, true),
+                latex: form(Style::Latex, true),
+                sympy: form(Style::Sympy, true),
+                plain: form(Style::Plain, true),
             }),
+        }
+    }
+
+    /// An exact number shown as the decimal `text` it equals (a printed
+    /// table entry), with SymPy syntax `n/d`.
+    pub fn decimal(q: &rug::Rational, text: &str) -> Expr {
+        Expr {
+            unicode: text.to_string(),
+            latex: text.to_string(),
+            sympy: q.to_string(),
+            symbols: Vec::new(),
+            plain: text.to_string(),
+            terms: 1,
+            degree: 0,
+            factored: None,
         }
     }
 
@@ -149,6 +156,96 @@ impl Expr {
             _ => &self.sympy,
         }
     }
+}
+
+/// The four text forms, for printing combinations.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Style {
+    Unicode,
+    Latex,
+    Sympy,
+    Plain,
+}
+
+impl Style {
+    fn sym(self, x: &Sym) -> String {
+        match self {
+            Style::Unicode => x.to_unicode(),
+            Style::Latex => x.to_latex(),
+            Style::Sympy => x.to_sympy(),
+            Style::Plain => x.to_string(),
+        }
+    }
+
+    fn factored(self, f: &trig_symbolic::FactoredQuotient) -> String {
+        match self {
+            Style::Unicode => f.to_unicode(),
+            Style::Latex => f.to_latex(),
+            Style::Sympy => f.to_sympy(),
+            Style::Plain => f.to_plain(),
+        }
+    }
+
+    fn minus(self) -> &'static str {
+        if self == Style::Unicode { "−" } else { "-" }
+    }
+
+    fn times(self) -> &'static str {
+        match self {
+            Style::Unicode => "·",
+            Style::Latex => " ",
+            Style::Sympy | Style::Plain => "*",
+        }
+    }
+}
+
+/// `c₁·v₁ + c₂·v₂ − …` from printed coefficients and variables: a
+/// coefficient `1` is left out, `−1` becomes a sign, a coefficient of one
+/// term (or a product) needs no parentheses, a sum does.
+fn combine(parts: &[(String, String)], style: Style) -> String {
+    let mut out = String::new();
+    for (i, (c, v)) in parts.iter().enumerate() {
+        let (negative, body) = match c.strip_prefix(style.minus()) {
+            Some(rest) if !has_top_level_sum(rest, style) => (true, rest.to_string()),
+            _ => (false, c.clone()),
+        };
+        let term = if body == "1" {
+            v.clone()
+        } else if has_top_level_sum(&body, style) {
+            format!("({body}){}{v}", style.times())
+        } else {
+            format!("{body}{}{v}", style.times())
+        };
+        match (i, negative) {
+            (0, true) => out.push_str(style.minus()),
+            (0, false) => {}
+            (_, true) => {
+                out.push(' ');
+                out.push_str(style.minus());
+                out.push(' ');
+            }
+            (_, false) => out.push_str(" + "),
+        }
+        out.push_str(&term);
+    }
+    out
+}
+
+/// True when `text` has a `+` or `−` outside parentheses and braces (after
+/// a leading sign).
+fn has_top_level_sum(text: &str, style: Style) -> bool {
+    let minus = style.minus().chars().next().unwrap_or('-');
+    let mut depth = 0i32;
+    for (i, ch) in text.chars().enumerate() {
+        match ch {
+            '(' | '{' => depth += 1,
+            ')' | '}' => depth -= 1,
+            '+' if depth == 0 && i > 0 => return true,
+            c if c == minus && depth == 0 && i > 0 => return true,
+            _ => {}
+        }
+    }
+    false
 }
 
 fn symbols_of(x: &Sym) -> Vec<String> {
@@ -266,6 +363,9 @@ pub struct Evidence {
     /// What the item checks (`Σ b_i − 1`, `b0 ≥ 0`), when it checks one thing.
     #[serde(skip_serializing_if = "Option::is_none", default)]
     pub subject: Option<String>,
+    /// The printed formula the item checks, as transcribed (plain text).
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub printed: Option<String>,
     /// The status of that check, when the item decides one.
     #[serde(skip_serializing_if = "Option::is_none", default)]
     pub status: Option<Status>,
@@ -291,6 +391,7 @@ impl Evidence {
             kind,
             parts: Vec::new(),
             subject: None,
+            printed: None,
             status: None,
             text: text.into(),
             exprs: Vec::new(),
@@ -350,6 +451,9 @@ impl Evidence {
         }
         if let Some(s) = &self.subject {
             out.push_str(s);
+            if let Some(p) = &self.printed {
+                out.push_str(&format!(" printed {p}"));
+            }
             if let Some(st) = self.status {
                 out.push_str(&format!(": {st}"));
             }
@@ -428,6 +532,12 @@ impl Deref for EvidenceList {
     }
 }
 
+impl std::ops::DerefMut for EvidenceList {
+    fn deref_mut(&mut self) -> &mut [Evidence] {
+        &mut self.0
+    }
+}
+
 impl<E: Into<Evidence>> From<Vec<E>> for EvidenceList {
     fn from(items: Vec<E>) -> Self {
         items.into_iter().collect()
@@ -468,8 +578,13 @@ mod tests {
         let e = Expr::combination(&(coefficient * &p2), &["P2".to_string()]);
         assert_eq!(
             e.factored.as_ref().map(|f| f.unicode.as_str()),
-            Some("((m₁ − m₂)·(m₂ + 2)/(m₁ + 2))·P₂")
+            Some("(m₁ − m₂)·(m₂ + 2)/(m₁ + 2)·P₂")
         );
+        let (p3, m) = (Sym::var("P3"), Sym::var("m"));
+        let x = p3.clone() - &(p2.clone() * &(m.clone() + &Sym::int(2))) + &(Sym::int(-3) * &Sym::var("P4"));
+        let names: Vec<String> = ["P2", "P3", "P4"].map(String::from).to_vec();
+        assert_eq!(Expr::combination(&x, &names).unicode, "(−m − 2)·P₂ + P₃ − 3·P₄");
+        assert_eq!(Expr::combination(&x, &names).sympy, "(-m - 2)*P2 + P3 - 3*P4");
         assert_eq!(e.symbols, ["P2", "m1", "m2"]);
     }
 

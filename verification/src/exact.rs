@@ -78,7 +78,7 @@ pub fn identity_item(label: &str, lhs: &Sym, rhs: &Sym) -> Evidence {
     Evidence::new(Kind::Identity, "")
         .about(label, Status::Fails)
         .with("residual (left − right)", Expr::new(&residual))
-        .witnessed(witness::find(lhs, rhs, ("left side", "right side")))
+        .witnessed(witness::find(lhs, rhs, ("left", "right")))
 }
 
 /// The verdict on `lhs = rhs` with the residual as its only evidence.

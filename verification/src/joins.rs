@@ -23,8 +23,10 @@ use trig_core::Family;
 use trig_deriv::{JoinKind, JoinSetup, Wrt, solve_join, vanishing};
 use trig_symbolic::Sym;
 
+use crate::evidence::{Evidence, Expr, Kind};
 use crate::exact::{basis, sum};
 use crate::verdict::{Status, Verdict};
+use crate::witness;
 
 /// How printed joins are decided, as the report states it.
 pub const METHOD: &str = "printed formula substituted into the join conditions, residual decided exactly in the symbolic ring; conventions θ (angle), u (θ = πu/2), x (θ = π(x − x_i)/(2h_i), h₁ ≠ h₂)";
@@ -127,34 +129,80 @@ impl PrintedJoin {
             .residuals(self.kind, &self.first, &self.second_points(wrt, printed))
     }
 
-    /// The derived formulas for the printed points, in `wrt`, as text, with
-    /// the parameter values where they are singular.
-    fn derived(&self, wrt: Wrt) -> String {
+    /// The derived formulas for the printed points, in `wrt`: `(point,
+    /// value, where singular)`, or why there is no solution.
+    fn derived_points(&self, wrt: Wrt) -> Result<Vec<(usize, Sym, Vec<String>)>, String> {
         let setup = self.setup(wrt);
         match solve_join(&setup, self.kind, &self.first, &self.second) {
-            Ok(join) => {
-                let names = self.names();
-                join.forced
-                    .iter()
-                    .filter(|f| self.printed.iter().any(|p| p.point == f.index))
-                    .map(|f| {
-                        let singular = vanishing(&f.pivot);
-                        let note = if singular.is_empty() {
-                            String::new()
-                        } else {
-                            format!(" (singular where {})", singular.join(", "))
-                        };
-                        format!(
-                            "{} = {}{note}",
-                            self.second[f.index].to_unicode(),
-                            f.value.to_combination(&names)
-                        )
-                    })
-                    .collect::<Vec<_>>()
-                    .join("; ")
-            }
-            Err(e) => format!("no solution: {e}"),
+            Ok(join) => Ok(join
+                .forced
+                .iter()
+                .filter(|f| self.printed.iter().any(|p| p.point == f.index))
+                .map(|f| (f.index, f.value.clone(), vanishing(&f.pivot)))
+                .collect()),
+            Err(e) => Err(format!("no solution: {e}")),
         }
+    }
+
+    /// The derived formulas for the printed points, in `wrt`, as text (each
+    /// coefficient factored), with the parameter values where they are
+    /// singular.
+    fn derived(&self, wrt: Wrt) -> String {
+        let names = self.names();
+        match self.derived_points(wrt) {
+            Ok(points) => points
+                .iter()
+                .map(|(i, value, singular)| {
+                    let note = if singular.is_empty() {
+                        String::new()
+                    } else {
+                        format!(" (singular where {})", singular.join(", "))
+                    };
+                    format!(
+                        "{} = {}{note}",
+                        self.second[*i].to_unicode(),
+                        Expr::combination(value, &names).best_unicode()
+                    )
+                })
+                .collect::<Vec<_>>()
+                .join("; "),
+            Err(e) => e,
+        }
+    }
+
+    /// The derived formulas as an evidence item, with a witness where a
+    /// printed point differs from the derived one: control points and
+    /// parameters at which both are evaluated exactly.
+    fn derived_item(&self, wrt: Wrt, printed: &[Printed]) -> Evidence {
+        let names = self.names();
+        let mut item = Evidence::new(Kind::Derived, "").about(
+            format!("derived ({})", convention(wrt)),
+            Status::Holds,
+        );
+        item.status = None;
+        let points = match self.derived_points(wrt) {
+            Ok(points) => points,
+            Err(e) => {
+                item.text = e;
+                return item;
+            }
+        };
+        let shown = self.second_points(wrt, printed);
+        for (i, value, singular) in &points {
+            let name = self.second[*i].to_unicode();
+            item = item.with(name.clone(), Expr::combination(value, &names));
+            if !singular.is_empty() {
+                item.text = format!("singular where {}", singular.join(", "));
+            }
+            if item.witness.is_none() && !(shown[*i].clone() - value).is_zero() {
+                item.witness = witness::find(
+                    &shown[*i],
+                    value,
+                    (&format!("printed {name}"), &format!("derived {name}")),
+                );
+            }
+        }
+        item
     }
 }
 
@@ -167,18 +215,26 @@ fn convention(wrt: Wrt) -> &'static str {
     }
 }
 
-fn describe(residuals: &[Sym], names: &[String]) -> String {
-    let nonzero: Vec<String> = residuals
+/// The residuals of one convention as an evidence item.
+fn describe(wrt: Wrt, residuals: &[Sym], names: &[String]) -> Evidence {
+    let nonzero: Vec<(usize, &Sym)> = residuals
         .iter()
         .enumerate()
         .filter(|(_, r)| !r.is_zero())
-        .map(|(k, r)| format!("order {k}: {}", r.to_combination(names)))
         .collect();
     if nonzero.is_empty() {
-        "every condition holds exactly".to_string()
-    } else {
-        format!("residual (left − right) {}", nonzero.join("; "))
+        return Evidence::new(Kind::Join, "every condition holds exactly")
+            .about(convention(wrt), Status::Holds);
     }
+    nonzero.into_iter().fold(
+        Evidence::new(Kind::Join, "").about(convention(wrt), Status::Fails),
+        |item, (k, r)| {
+            item.with(
+                format!("residual (left − right) of order {k}"),
+                Expr::combination(r, names),
+            )
+        },
+    )
 }
 
 /// Decides a printed curve join.
@@ -267,12 +323,12 @@ fn decide(
         if holds(&r) {
             holding.push(wrt);
         }
-        evidence.push(format!("{}: {}", convention(wrt), describe(&shown, &names)));
+        evidence.push(describe(wrt, &shown, &names));
     }
     if holding.contains(&Wrt::Angle) {
         return Verdict::new(Status::Holds, METHOD, evidence);
     }
-    evidence.push(format!("derived (angle θ): {}", join.derived(Wrt::Angle)));
+    evidence.push(join.derived_item(Wrt::Angle, &join.printed));
     if let Some(fix) = sign_fix(join, &residuals) {
         return Verdict::new(Status::HoldsAfterCorrection, METHOD, evidence).with_correction(fix);
     }
@@ -344,6 +400,9 @@ mod tests {
         let wrong = audit(&bernstein_c1(vec![Sym::int(3) * &p[3], -p[2].clone()]));
         assert_eq!(wrong.status, Status::Fails);
         assert!(wrong.evidence[0].contains("order 1"));
+        // printed P₅ = 3P₃ − P₂ against 2P₃ − P₂: differ where P₃ ≠ 0
+        let w = wrong.evidence[3].witness.as_ref().expect("a witness");
+        assert_eq!(w.values[0].label, "printed P₅");
     }
 
     #[test]
@@ -363,9 +422,11 @@ mod tests {
         let v = audit_surface(&wrong, &Sym::var("m"));
         assert_eq!(v.status, Status::Fails);
         assert!(
-            v.evidence[0].contains("order 1: (m + 2)·P₂"),
+            v.evidence[0].contains("order 1 = (m + 2)·P₂"),
             "{:?}",
             v.evidence
         );
+        let derived = v.evidence.iter().find(|e| e.kind == Kind::Derived).unwrap();
+        assert!(derived.witness.is_some(), "{derived:?}");
     }
 }

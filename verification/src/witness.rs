@@ -218,7 +218,7 @@ pub fn witness(point: &[(String, Rational)], names: &[String], values: Vec<(&str
     let pi = names.iter().any(|n| n == "pi");
     let mut notes = Vec::new();
     if trig {
-        notes.push("s = sin θ, c = cos θ at a point of the unit circle".to_string());
+        notes.push("s = sin θ, c = cos θ".to_string());
     }
     if pi {
         notes.push("π kept as a symbol".to_string());

@@ -8,7 +8,7 @@ use trig_core::{Family, Ring};
 use trig_symbolic::Sym;
 
 use super::seed000_appendix_c::{NONUNIFORM_J, nonuniform_knots};
-use super::seed000_appendix_print::{Formula, compare, zeta};
+use super::seed000_appendix_print::{Formula, printed_part, zeta};
 use crate::certify::evidence::{CERTIFIED, describe};
 use crate::certify::nonneg::certify;
 use crate::claim::{Claim, Seed};
@@ -60,12 +60,7 @@ fn m11() -> Verdict {
     let mut parts: Vec<(String, Verdict)> = PRINTED_Y
         .iter()
         .enumerate()
-        .map(|(k, text)| {
-            (
-                format!("y_{k} printed {text}"),
-                compare(&Formula::parse(text), &y[k]),
-            )
-        })
+        .map(|(k, text)| printed_part(format!("y_{k}"), text, &Formula::parse(text), &y[k]))
         .collect();
     parts.push(("conclusion \"> 0\"".into(), conclusion()));
     let mut v = Verdict::all(IDENTITY, parts);

@@ -9,7 +9,7 @@ use trig_core::Family;
 use trig_deriv::{End, Wrt, endpoint_derivatives};
 use trig_symbolic::Sym;
 
-use super::seed000_appendix_print::{Formula, compare, zeta};
+use super::seed000_appendix_print::{Formula, printed_part, zeta};
 use crate::claim::{Claim, Seed, shared};
 use crate::continuity::{
     self, ContinuityError, KnotContinuity, METHOD, achieved, curve_end, nonuniform_bspline,
@@ -189,9 +189,11 @@ fn m5() -> Verdict {
     for (at, coef, end, values) in table {
         let computed = piece_at(coef, end);
         for (r, text) in values.iter().enumerate() {
-            parts.push((
-                format!("F_j^({r})({at}) printed {text}"),
-                compare(&Formula::parse(text), &computed[r]),
+            parts.push(printed_part(
+                format!("F_j^({r})({at})"),
+                text,
+                &Formula::parse(text),
+                &computed[r],
             ));
         }
     }
@@ -333,14 +335,21 @@ fn appendix_d(lines: impl Iterator<Item = DLine>, label: impl Fn(&DLine) -> Stri
     let computed = [curve_at(End::Start), curve_at(End::End)];
     let (mut parts, mut garbled) = (Vec::new(), Vec::new());
     for line in lines {
-        let name = format!("{} printed {}", label(&line), line.text);
         match line.garbled {
             None => {
                 let at = usize::from(line.end == End::End);
                 let printed = Formula::parse(line.text);
-                parts.push((name, compare(&printed, &computed[at][line.order])));
+                parts.push(printed_part(
+                    label(&line),
+                    line.text,
+                    &printed,
+                    &computed[at][line.order],
+                ));
             }
-            Some(reason) => garbled.push((name, Verdict::not_checkable(reason))),
+            Some(reason) => garbled.push((
+                format!("{} printed {}", label(&line), line.text),
+                Verdict::not_checkable(reason),
+            )),
         }
     }
     let mut v = Verdict::all(IDENTITY, parts);
@@ -370,7 +379,7 @@ fn m9b() -> Verdict {
 
 /// One line per knot, and the verdict "at least C^r at every knot".
 fn at_least(label: &str, knots: &[KnotContinuity], r: usize, param: Option<&str>) -> Verdict {
-    let evidence: Vec<String> = knots.iter().map(|k| k.describe(param)).collect();
+    let evidence: Vec<crate::evidence::Evidence> = knots.iter().map(|k| k.describe(param)).collect();
     let ok = knots.iter().all(|k| k.smoothness.is_at_least(r));
     let mut evidence = evidence;
     evidence.insert(
@@ -378,7 +387,8 @@ fn at_least(label: &str, knots: &[KnotContinuity], r: usize, param: Option<&str>
         format!(
             "{label}: achieved for all parameter values: {}",
             achieved(knots).map_or("no knots".into(), |s| s.to_string())
-        ),
+        )
+        .into(),
     );
     Verdict::new(
         if ok { Status::Holds } else { Status::Fails },
@@ -564,6 +574,7 @@ fn m8() -> Verdict {
 mod tests {
     use super::*;
     use crate::continuity::Smoothness;
+    use crate::claims::seed000_appendix_print::compare;
 
     #[test]
     fn uniform_seed000_basis_is_c3_at_its_ends_and_smooth_inside() {

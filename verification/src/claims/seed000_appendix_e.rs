@@ -16,7 +16,7 @@ use trig_deriv::table::{end_atoms, rate};
 use trig_deriv::{End, Jet, Wrt};
 use trig_symbolic::Sym;
 
-use super::seed000_appendix_print::{Formula, compare, zeta};
+use super::seed000_appendix_print::{Formula, printed_part, zeta};
 use crate::claim::{Claim, Seed};
 use crate::continuity::quotient_derivatives;
 use crate::exact::{IDENTITY, symbols};
@@ -197,14 +197,12 @@ fn decide(entries: &[Entry], table: &[Vec<Vec<Sym>>], preamble: &str) -> Verdict
     let parts = entries
         .iter()
         .map(|(eq, i, end, order, text)| {
-            let label = format!(
-                "{eq} Q_{i}{}({}) H_{i} printed {text}",
-                "'".repeat(*order),
-                ends[*end]
-            );
-            (
+            let label = format!("{eq} Q_{i}{}({}) H_{i}", "'".repeat(*order), ends[*end]);
+            printed_part(
                 label,
-                compare(&shorthands(Formula::parse(text)), &table[*end][*i][*order]),
+                text,
+                &shorthands(Formula::parse(text)),
+                &table[*end][*i][*order],
             )
         })
         .collect();

@@ -282,6 +282,17 @@ pub fn compare(printed: &Formula, computed: &Sym) -> Verdict {
     }
 }
 
+/// The part of a claim that compares the printed `text` (read as
+/// `formula`) with `computed`: named `label`, the printed text kept with
+/// the evidence.
+pub fn printed_part(label: String, text: &str, formula: &Formula, computed: &Sym) -> (String, Verdict) {
+    let mut v = compare(formula, computed);
+    for e in v.evidence.iter_mut() {
+        e.printed = Some(text.to_string());
+    }
+    (label, v)
+}
+
 /// A small witness of `printed ≠ computed`: the test point of [`POINT`]
 /// simplified variable by variable ([`crate::witness::search`], with `π`
 /// given its rational stand-in while searching: sides that differ there

@@ -373,11 +373,7 @@ fn d7() -> Verdict {
     let mut evidence = EvidenceList::from(vec![
         "segments from (6): Q_i(t, α_i, α_{i+1}) on V_{i−1}…V_{i+2}; both sides of the knot u_{i+1} use α_{i+1}; their values and t-derivatives at the knot are the end conditions (3) (reading D6b), Q^(k)(u) = (π/(2Δu_i))^k Q_i^(k)(t) by (7)".to_string(),
     ]);
-    evidence.extend(
-        low.evidence
-            .into_iter()
-            .map(|e| format!("orders 0–2 of (8): {e}")),
-    );
+    evidence.extend(low.into_part("orders 0–2 of (8)"));
     evidence.push("order 3 of (8) is not checkable: (3) fixes only orders 0–2 at each end; Q_i''' at the ends depends on the blending functions Tb_i(t, α1, α2) of (5), whose printed fraction is unreadable in our copy (see D12), i.e. on the weights w_i and control points the construction actually uses");
     evidence.push("so F³ (a third-order connection relation) can be neither proved nor refuted; the readable part, (8) for k = 0, 1, 2, is G²/C²-type continuity in u and holds exactly");
     Verdict::new(Status::NotCheckable, crate::exact::IDENTITY, evidence)

@@ -493,12 +493,7 @@ fn e1cb() -> Verdict {
         return printed;
     }
     let mut evidence = printed.evidence;
-    evidence.extend(
-        corrected
-            .evidence
-            .into_iter()
-            .map(|e| format!("with h_i d_{{i+1}}: {e}")),
-    );
+    evidence.extend(corrected.into_part("with h_i d_{i+1}"));
     Verdict::new(Status::HoldsAfterCorrection, IDENTITY, evidence)
         .with_correction("β1(t) h_i d_{i+1} instead of β1(t) h_{i+1} d_{i+1} (t is measured in units of h_i on [x_i, x_{i+1}])")
 }

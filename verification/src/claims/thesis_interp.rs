@@ -202,12 +202,8 @@ fn reading_verdict(printed: Verdict, corrected: Verdict, correction: &str) -> Ve
         (_, Status::Holds) => Status::HoldsAfterCorrection,
         _ => Status::Fails,
     };
-    let mut evidence: Vec<String> = printed
-        .evidence
-        .iter()
-        .map(|e| format!("as printed: {e}"))
-        .collect();
-    evidence.extend(corrected.evidence.iter().map(|e| format!("corrected: {e}")));
+    let mut evidence = printed.into_part("as printed");
+    evidence.extend(corrected.into_part("corrected"));
     let v = Verdict::new(status, IDENTITY, evidence);
     if status == Status::Holds {
         v
@@ -338,21 +334,15 @@ fn t23() -> Verdict {
         (Wrt::X, v("h")),
     ] {
         let verdict = identities(residuals(&p1, &p2, wrt, &h));
-        evidence.extend(
-            verdict
-                .evidence
-                .iter()
-                .map(|e| format!("(4.34) as printed, derivatives in {wrt}: {e}")),
-        );
+        evidence.extend(verdict.into_part(&format!("(4.34) as printed, derivatives in {wrt}")));
     }
     // the named correction: 2(1+m)(α+1)V_3^1 → (1 + 2(1+m)α)V_3^1, i.e. subtract (2m+1)V_3^1
     let fixed = p2.clone() - &((Sym::int(2) * &m + &Sym::one()) * &v3);
     let corrected = identities(residuals(&p1, &fixed, Wrt::U, &Sym::one()));
     evidence.extend(
         corrected
-            .evidence
-            .iter()
-            .map(|e| format!("corrected V_2^2, derivatives in u (4.30): {e}")),
+            .clone()
+            .into_part("corrected V_2^2, derivatives in u (4.30)"),
     );
     let printed_u = identities(residuals(&p1, &p2, Wrt::U, &Sym::one()));
     let status = match (printed_u.status, corrected.status) {
@@ -472,7 +462,7 @@ fn t24() -> Verdict {
         .zip(["T24a", "T24b", "T24c", "T24d", "T24e", "T24f"])
         .map(|(f, id)| (id.to_string(), f()))
         .collect();
-    Verdict::all(CERTIFIED, parts)
+    Verdict::umbrella(parts)
 }
 
 #[cfg(test)]

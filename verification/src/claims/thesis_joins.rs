@@ -445,20 +445,12 @@ fn t26() -> Verdict {
         ("T26j", cylinder::t26j),
         ("T26k", cylinder::t26k),
     ];
-    let verdicts: Vec<(String, Verdict)> = parts
-        .iter()
-        .map(|(id, check)| (id.to_string(), check()))
-        .collect();
-    let status = if verdicts.iter().all(|(_, v)| v.status == Status::Holds) {
-        Status::Holds
-    } else {
-        Status::Fails
-    };
-    let evidence: Vec<String> = verdicts
-        .iter()
-        .map(|(id, v)| format!("{id}: {}", v.status))
-        .collect();
-    Verdict::new(status, "umbrella: holds only if every part holds", evidence)
+    Verdict::umbrella(
+        parts
+            .iter()
+            .map(|(id, check)| (id.to_string(), check()))
+            .collect(),
+    )
 }
 
 /// Printed endpoint derivatives against computed ones, in the angle θ.

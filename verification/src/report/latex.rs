@@ -9,7 +9,7 @@
 use std::fmt::Write;
 
 use super::markdown::{Shown, shown};
-use super::{Entry, View, counts, plural, sections, short};
+use super::{Entry, View, counts, method_short, methods, plural, sections, short};
 use crate::evidence::{Evidence, Expr, Part, Witness};
 use crate::verdict::Status;
 
@@ -50,7 +50,7 @@ fn expr_tex(e: &Expr) -> String {
         } => {
             let f = factored.map_or(String::new(), |(_, l)| format!(", factored ${l}$"));
             format!(
-                "a polynomial expression of degree {degree} with {} in its numerator{f} (in full in the JSON report)",
+                "[long: numerator of degree {degree} with {}{f}; in full in the JSON report]",
                 plural(terms, "term", "terms")
             )
         }
@@ -58,7 +58,20 @@ fn expr_tex(e: &Expr) -> String {
 }
 
 fn witness_tex(w: &Witness) -> String {
-    let point: Vec<String> = w.point.iter().map(|a| format!("${}$", a.latex)).collect();
+    let point: Vec<String> = super::markdown::point_text(
+        w,
+        |a| {
+            a.latex
+                .split(" = ")
+                .next()
+                .unwrap_or_default()
+                .to_string()
+        },
+        |a| a.latex.clone(),
+    )
+    .into_iter()
+    .map(|p| format!("${p}$"))
+    .collect();
     let values: Vec<String> = w
         .values
         .iter()
@@ -68,18 +81,31 @@ fn witness_tex(w: &Witness) -> String {
         .note
         .as_ref()
         .map_or(String::new(), |n| format!(" ({})", tex_inline(n)));
+    let at = if point.is_empty() {
+        String::new()
+    } else {
+        format!("at {}", point.join(", "))
+    };
     format!(
-        "at {}{note}: {} ({})",
-        point.join(", "),
+        "{at}{note}: {} ({})",
         values.join(", "),
         if w.exact { "exact" } else { "numeric" }
     )
 }
 
-fn item_tex(e: &Evidence, part: Option<&Part>, show_witness: bool) -> String {
+fn item_tex(group: &[Evidence], part: Option<&Part>, show_witness: bool) -> String {
+    let e = &group[0];
     let mut out = String::new();
-    if let Some(s) = e.subject.as_deref().filter(|s| part.is_none_or(|p| p.name != *s)) {
-        out.push_str(&tex_inline(s));
+    if e.subject.as_deref().is_some_and(|s| part.is_none_or(|p| p.name != *s)) {
+        let subjects: Vec<String> = group
+            .iter()
+            .filter_map(|g| g.subject.as_deref())
+            .map(tex_inline)
+            .collect();
+        out.push_str(&subjects.join("; "));
+        if let Some(p) = e.printed.as_deref().filter(|_| e.status != Some(Status::Holds)) {
+            let _ = write!(out, ", printed \\texttt{{{}}}", tex_escape(p));
+        }
         if let Some(st) = e.status {
             let _ = write!(out, " --- \\textbf{{{st}}}");
         }
@@ -109,7 +135,8 @@ fn item_tex(e: &Evidence, part: Option<&Part>, show_witness: bool) -> String {
 fn evidence_tex(out: &mut String, items: &[Evidence], skip: Option<&Evidence>) {
     let _ = writeln!(out, "\\begin{{itemize}}");
     let mut open: Option<&[Part]> = None;
-    for e in items {
+    for group in super::groups(items) {
+        let e = &group[0];
         let parts = e.parts.as_slice();
         if open != Some(parts) {
             if open.is_some_and(|p| !p.is_empty()) {
@@ -127,7 +154,7 @@ fn evidence_tex(out: &mut String, items: &[Evidence], skip: Option<&Evidence>) {
             open = Some(parts);
         }
         let own = skip.is_none_or(|s| !std::ptr::eq(s, e));
-        let _ = writeln!(out, "  \\item {}", item_tex(e, parts.last(), own));
+        let _ = writeln!(out, "  \\item {}", item_tex(group, parts.last(), own));
     }
     if open.is_some_and(|p| !p.is_empty()) {
         let _ = writeln!(out, "  \\end{{itemize}}");
@@ -202,6 +229,17 @@ pub fn tex_entries(entries: &[Entry], intro: &str, view: &View) -> String {
     }
     let _ = writeln!(out, "\\hline\n\\end{{longtable}}\n}}\n");
     if !view.summary_only {
+        let methods = methods(&shown_entries);
+        let _ = writeln!(out, "\\subsection*{{Methods}}\n\\begin{{enumerate}}");
+        for (k, m) in methods.iter().enumerate() {
+            let _ = writeln!(
+                out,
+                "\\item \\hypertarget{{method-{}}}{{}}{}",
+                k + 1,
+                tex_inline(m)
+            );
+        }
+        let _ = writeln!(out, "\\end{{enumerate}}\n");
         for (doc, of_doc) in sections(&shown_entries) {
             let _ = writeln!(
                 out,
@@ -211,7 +249,8 @@ pub fn tex_entries(entries: &[Entry], intro: &str, view: &View) -> String {
                 tex_escape(&doc.location)
             );
             for e in of_doc {
-                entry_tex(&mut out, e);
+                let k = methods.iter().position(|m| *m == e.verdict.method).unwrap_or(0) + 1;
+                entry_tex(&mut out, e, k);
             }
         }
     }
@@ -219,7 +258,7 @@ pub fn tex_entries(entries: &[Entry], intro: &str, view: &View) -> String {
     out
 }
 
-fn entry_tex(out: &mut String, e: &Entry) {
+fn entry_tex(out: &mut String, e: &Entry, method: usize) {
     let v = &e.verdict;
     let _ = writeln!(
         out,
@@ -230,7 +269,11 @@ fn entry_tex(out: &mut String, e: &Entry) {
     );
     let _ = writeln!(out, "\\textbf{{Source:}} {}\\par", tex_inline(&e.source));
     let _ = writeln!(out, "\\textbf{{Printed:}} {}\\par", tex_inline(&e.statement));
-    let _ = writeln!(out, "\\textbf{{How:}} {}\\par", tex_inline(&v.method));
+    let _ = writeln!(
+        out,
+        "\\textbf{{How:}} {} (\\hyperlink{{method-{method}}}{{method {method}}})\\par",
+        tex_inline(&method_short(&v.method))
+    );
     if let Some(corr) = &v.correction {
         let _ = writeln!(out, "\\textbf{{Correction:}} {}\\par", tex_inline(corr));
     }

@@ -6,15 +6,12 @@
 
 use std::fmt::Write;
 
-use super::{Entry, View, counts, plural, sections, short};
+use super::{Entry, View, counts, method_short, methods, plural, sections, short};
 use crate::evidence::{Evidence, Expr, Part, Witness};
 use crate::verdict::Status;
 
 /// Expressions with more characters are summarised.
-pub const LONG: usize = 240;
-
-/// SymPy forms up to this length are shown beside the Unicode ones.
-const SYMPY_SHOWN: usize = 120;
+pub const LONG: usize = 200;
 
 /// Markdown text: the characters Markdown would read as markup escaped.
 pub fn md_text(text: &str) -> String {
@@ -36,11 +33,7 @@ fn code(text: &str) -> String {
 /// How an expression is shown where people read.
 pub(crate) enum Shown<'a> {
     /// In full (the factored form when it is informative and not longer).
-    Full {
-        unicode: &'a str,
-        latex: &'a str,
-        sympy: &'a str,
-    },
+    Full { unicode: &'a str, latex: &'a str },
     /// Too long: its size, and the factored form when that is short.
     Summary {
         degree: u64,
@@ -55,7 +48,6 @@ pub(crate) fn shown(e: &Expr, long: usize) -> Shown<'_> {
         return Shown::Full {
             unicode: e.best_unicode(),
             latex: e.best_latex(),
-            sympy: e.best_sympy(),
         };
     }
     Shown::Summary {
@@ -71,13 +63,7 @@ pub(crate) fn shown(e: &Expr, long: usize) -> Shown<'_> {
 
 fn expr_md(e: &Expr) -> String {
     match shown(e, LONG) {
-        Shown::Full { unicode, sympy, .. } => {
-            if sympy.chars().count() <= SYMPY_SHOWN && sympy != unicode {
-                format!("{} (SymPy {})", code(unicode), code(sympy))
-            } else {
-                code(unicode)
-            }
-        }
+        Shown::Full { unicode, .. } => code(unicode),
         Shown::Summary {
             degree,
             terms,
@@ -85,20 +71,36 @@ fn expr_md(e: &Expr) -> String {
         } => {
             let f = factored.map_or(String::new(), |u| format!(", factored {}", code(u.0)));
             format!(
-                "a polynomial expression of degree {degree} with {} in its numerator{f} (in full in the JSON report)",
+                "[long: numerator of degree {degree} with {}{f}; in full in the JSON report]",
                 plural(terms, "term", "terms")
             )
         }
     }
 }
 
+/// The coordinates of a witness: the nonzero ones, then the zero ones as
+/// one chain `a = b = … = 0` (shorter, and as easy to check).
+pub(crate) fn point_text(
+    w: &Witness,
+    name: impl Fn(&crate::evidence::Assignment) -> String,
+    full: impl Fn(&crate::evidence::Assignment) -> String,
+) -> Vec<String> {
+    let (zero, other): (Vec<_>, Vec<_>) = w.point.iter().partition(|a| a.value == "0");
+    let mut out: Vec<String> = other.into_iter().map(&full).collect();
+    match zero.len() {
+        0 => {}
+        1 => out.push(full(zero[0])),
+        _ => out.push(format!(
+            "{} = 0",
+            zero.into_iter().map(name).collect::<Vec<_>>().join(" = ")
+        )),
+    }
+    out
+}
+
 /// A witness on one line.
 pub(crate) fn witness_md(w: &Witness) -> String {
-    let point: Vec<String> = w
-        .point
-        .iter()
-        .map(|a| format!("{} = {}", a.name, a.value))
-        .collect();
+    let point = point_text(w, |a| a.name.clone(), |a| format!("{} = {}", a.name, a.value));
     let values: Vec<String> = w
         .values
         .iter()
@@ -108,19 +110,33 @@ pub(crate) fn witness_md(w: &Witness) -> String {
         .note
         .as_ref()
         .map_or(String::new(), |n| format!(" ({})", md_text(n)));
+    let at = if point.is_empty() {
+        String::new()
+    } else {
+        format!("at {}", code(&point.join(", ")))
+    };
     format!(
-        "at {}{note}: {} ({})",
-        code(&point.join(", ")),
+        "{at}{note}: {} ({})",
         values.join(", "),
         if w.exact { "exact" } else { "numeric" }
     )
 }
 
-/// One item: subject and status, prose, expressions, witness.
-fn item_md(e: &Evidence, part: Option<&Part>, show_witness: bool) -> String {
+/// One group of items ([`super::groups`]): subjects and status, prose,
+/// expressions, witness.
+fn item_md(group: &[Evidence], part: Option<&Part>, show_witness: bool) -> String {
+    let e = &group[0];
     let mut out = String::new();
-    if let Some(s) = e.subject.as_deref().filter(|s| part.is_none_or(|p| p.name != *s)) {
-        out.push_str(&md_text(s));
+    if e.subject.as_deref().is_some_and(|s| part.is_none_or(|p| p.name != *s)) {
+        let subjects: Vec<String> = group
+            .iter()
+            .filter_map(|g| g.subject.as_deref())
+            .map(md_text)
+            .collect();
+        out.push_str(&subjects.join("; "));
+        if let Some(p) = e.printed.as_deref().filter(|_| e.status != Some(Status::Holds)) {
+            let _ = write!(out, ", printed {}", code(p));
+        }
         if let Some(st) = e.status {
             let _ = write!(out, " — **{st}**");
         }
@@ -149,7 +165,8 @@ fn item_md(e: &Evidence, part: Option<&Part>, show_witness: bool) -> String {
 /// item whose witness the entry already shows.
 fn evidence_md(out: &mut String, items: &[Evidence], skip: Option<&Evidence>) {
     let mut path: Vec<&Part> = Vec::new();
-    for e in items {
+    for group in super::groups(items) {
+        let e = &group[0];
         let common = path
             .iter()
             .zip(&e.parts)
@@ -163,7 +180,7 @@ fn evidence_md(out: &mut String, items: &[Evidence], skip: Option<&Evidence>) {
         }
         let indent = "  ".repeat(path.len() + 1);
         let own = skip.is_none_or(|s| !std::ptr::eq(s, e));
-        let _ = writeln!(out, "{indent}- {}", item_md(e, path.last().copied(), own));
+        let _ = writeln!(out, "{indent}- {}", item_md(group, path.last().copied(), own));
     }
 }
 
@@ -174,7 +191,10 @@ pub fn markdown_entries(entries: &[Entry], intro: &str, view: &View) -> String {
     let shown_entries = view.select(entries);
     let mut out = String::new();
     let _ = writeln!(out, "# trig-audit report\n");
-    let _ = writeln!(out, "{intro}\n");
+    let _ = writeln!(
+        out,
+        "{intro} Long expressions are summarised here; the JSON report (`--format json`, schema `docs/report.schema.json`) gives every expression in full, in Unicode, LaTeX, SymPy syntax and factored form.\n"
+    );
     if let Some(n) = view.note() {
         let _ = writeln!(out, "{n}\n");
     }
@@ -198,33 +218,54 @@ pub fn markdown_entries(entries: &[Entry], intro: &str, view: &View) -> String {
         .map(|(_, k)| k.to_string())
         .collect();
     let _ = writeln!(out, "| **all** | {} | {} |\n", entries.len(), c.join(" | "));
+    // the short form shows what each claim says; the full report links to it
     let _ = writeln!(out, "## Index\n");
-    let _ = writeln!(out, "| claim | verdict | document | source | printed |");
-    let _ = writeln!(out, "|---|---|---|---|---|");
+    if view.summary_only {
+        let _ = writeln!(out, "| claim | verdict | document | source | printed |");
+        let _ = writeln!(out, "|---|---|---|---|---|");
+    } else {
+        let _ = writeln!(out, "| claim | verdict | document | source |");
+        let _ = writeln!(out, "|---|---|---|---|");
+    }
     for e in &shown_entries {
-        let link = if view.summary_only {
-            e.id.clone()
+        if view.summary_only {
+            let _ = writeln!(
+                out,
+                "| {} | {} | {} | {} | {} |",
+                e.id,
+                e.verdict.status,
+                e.document.id,
+                md_text(&e.source),
+                md_text(&short(&e.statement, 90))
+            );
         } else {
-            format!("[{}](#{})", e.id, anchor(&e.id))
-        };
-        let _ = writeln!(
-            out,
-            "| {link} | {} | {} | {} | {} |",
-            e.verdict.status,
-            e.document.id,
-            md_text(&e.source),
-            md_text(&short(&e.statement, 90))
-        );
+            let _ = writeln!(
+                out,
+                "| [{}](#{}) | {} | {} | {} |",
+                e.id,
+                anchor(&e.id),
+                e.verdict.status,
+                e.document.id,
+                md_text(&e.source)
+            );
+        }
     }
     out.push('\n');
     if view.summary_only {
         return out;
     }
+    let methods = methods(&shown_entries);
+    let _ = writeln!(out, "## Methods\n");
+    for (k, m) in methods.iter().enumerate() {
+        let _ = writeln!(out, "{}. <a id=\"method-{}\"></a>{}", k + 1, k + 1, md_text(m));
+    }
+    out.push('\n');
     for (doc, of_doc) in sections(&shown_entries) {
         let _ = writeln!(out, "## {} — {}\n", doc.heading, md_text(&doc.title));
         let _ = writeln!(out, "Source: `{}`\n", doc.location);
         for e in of_doc {
-            entry_md(&mut out, e);
+            let k = methods.iter().position(|m| *m == e.verdict.method).unwrap_or(0) + 1;
+            entry_md(&mut out, e, k);
         }
     }
     out
@@ -235,7 +276,7 @@ fn anchor(id: &str) -> String {
     format!("claim-{}", id.to_ascii_lowercase())
 }
 
-fn entry_md(out: &mut String, e: &Entry) {
+fn entry_md(out: &mut String, e: &Entry, method: usize) {
     let v = &e.verdict;
     let _ = writeln!(
         out,
@@ -246,7 +287,11 @@ fn entry_md(out: &mut String, e: &Entry) {
     );
     let _ = writeln!(out, "- **Source:** {}", md_text(&e.source));
     let _ = writeln!(out, "- **Printed:** {}", md_text(&e.statement));
-    let _ = writeln!(out, "- **How:** {}", md_text(&v.method));
+    let _ = writeln!(
+        out,
+        "- **How:** [method {method}](#method-{method}), {}",
+        md_text(&method_short(&v.method))
+    );
     if let Some(corr) = &v.correction {
         let _ = writeln!(out, "- **Correction:** {}", md_text(corr));
     }
@@ -294,9 +339,8 @@ mod tests {
         ];
         let md = markdown_entries(&entries, "intro", &View::default());
         assert!(md.contains("| **all** | 2 | 1 | 1 | 0 | 0 |"), "{md}");
-        assert!(md.contains("| [A1](#claim-a1) | fails | b |"), "{md}");
+        assert!(md.contains("| [A1](#claim-a1) | fails | b | (1) |"), "{md}");
         assert!(md.contains("  - **part** — fails\n    - Σ b\\_i − 1 — **fails**: residual = `m² − 4`"), "{md}");
-        assert!(md.contains("(SymPy `m**2 - 4`)"), "{md}");
         let a = md.find("## Spec a").unwrap();
         let b = md.find("## Spec b").unwrap();
         assert!(a < b);

@@ -183,6 +183,54 @@ pub(crate) fn short(text: &str, max: usize) -> String {
     format!("{}…", cut.trim_end())
 }
 
+/// Items grouped for display: consecutive confirmations (same parts, same
+/// kind, status and prose, about different subjects, no expressions or
+/// witness — "residual is exactly 0" for each of ten identities) become one
+/// group, shown as one line listing their subjects; every other item is a
+/// group of its own.
+pub(crate) fn groups(items: &[Evidence]) -> Vec<&[Evidence]> {
+    let plain = |e: &Evidence| {
+        e.subject.is_some() && e.exprs.is_empty() && e.witness.is_none() && e.status.is_some()
+    };
+    let mut out: Vec<&[Evidence]> = Vec::new();
+    let mut start = 0;
+    for i in 1..=items.len() {
+        let joins = i < items.len() && {
+            let (a, b) = (&items[start], &items[i]);
+            plain(a)
+                && plain(b)
+                && a.parts == b.parts
+                && a.kind == b.kind
+                && a.status == b.status
+                && a.text == b.text
+        };
+        if !joins {
+            out.push(&items[start..i]);
+            start = i;
+        }
+    }
+    out
+}
+
+/// The distinct methods of `entries`, in order of first use (the report
+/// states each once and refers to it by number).
+pub(crate) fn methods<'a>(entries: &[&'a Entry]) -> Vec<&'a str> {
+    let mut out: Vec<&str> = Vec::new();
+    for e in entries {
+        if !out.contains(&e.verdict.method.as_str()) {
+            out.push(&e.verdict.method);
+        }
+    }
+    out
+}
+
+/// A method's short form: up to its first `;` or `,` (or the whole text
+/// when it has none), at most 60 characters.
+pub(crate) fn method_short(method: &str) -> String {
+    let first = method.split([';', ',']).next().unwrap_or(method);
+    short(first.trim(), 60)
+}
+
 /// The built-in Markdown report.
 pub fn markdown(outcomes: &[Outcome]) -> String {
     markdown_entries(&entries(outcomes), BUILTIN_INTRO, &View::default())
