@@ -146,6 +146,15 @@ impl KnotContinuity {
         first_jump(&self.jumps)
     }
 
+    /// A point where the first nonzero jump is visibly nonzero, with its
+    /// exact value there (right − left).
+    pub fn witness(&self) -> Option<crate::evidence::Witness> {
+        let (r, j) = self.first_jump()?;
+        let mut w = crate::witness::find(j, &Sym::zero(), (&format!("jump of order {r}"), "0"))?;
+        w.values.truncate(1);
+        Some(w)
+    }
+
     /// One line for the report.
     pub fn describe(&self, param: Option<&str>) -> Evidence {
         let mut text = self.smoothness.to_string();
@@ -163,7 +172,10 @@ impl KnotContinuity {
         }
         for e in &self.exceptions {
             if let Some((r, j)) = &e.jump {
-                item = item.with(format!("jump of order {r} at {p} = {}", e.value), Expr::new(j));
+                item = item.with(
+                    format!("jump of order {r} at {p} = {}", e.value),
+                    Expr::new(j),
+                );
             }
         }
         item

@@ -133,6 +133,35 @@ impl Expr {
         }
     }
 
+    /// An exact value given as text (a vector of integers, …) with its
+    /// SymPy form.
+    pub fn literal(text: &str, sympy: &str) -> Expr {
+        Expr {
+            unicode: text.replace('-', "−"),
+            latex: text.to_string(),
+            sympy: sympy.to_string(),
+            symbols: Vec::new(),
+            plain: text.to_string(),
+            terms: 1,
+            degree: 0,
+            factored: None,
+        }
+    }
+
+    /// A decimal value from a numeric evaluation (not exact).
+    pub fn numeric(text: &str) -> Expr {
+        Expr {
+            unicode: text.replace('-', "−"),
+            latex: text.to_string(),
+            sympy: format!("Float('{text}', 30)"),
+            symbols: Vec::new(),
+            plain: text.to_string(),
+            terms: 1,
+            degree: 0,
+            factored: None,
+        }
+    }
+
     /// The shortest Unicode form: factored when given and not longer.
     pub fn best_unicode(&self) -> &str {
         match &self.factored {
@@ -581,10 +610,17 @@ mod tests {
             Some("(m₁ − m₂)·(m₂ + 2)/(m₁ + 2)·P₂")
         );
         let (p3, m) = (Sym::var("P3"), Sym::var("m"));
-        let x = p3.clone() - &(p2.clone() * &(m.clone() + &Sym::int(2))) + &(Sym::int(-3) * &Sym::var("P4"));
+        let x = p3.clone() - &(p2.clone() * &(m.clone() + &Sym::int(2)))
+            + &(Sym::int(-3) * &Sym::var("P4"));
         let names: Vec<String> = ["P2", "P3", "P4"].map(String::from).to_vec();
-        assert_eq!(Expr::combination(&x, &names).unicode, "(−m − 2)·P₂ + P₃ − 3·P₄");
-        assert_eq!(Expr::combination(&x, &names).sympy, "(-m - 2)*P2 + P3 - 3*P4");
+        assert_eq!(
+            Expr::combination(&x, &names).unicode,
+            "(−m − 2)·P₂ + P₃ − 3·P₄"
+        );
+        assert_eq!(
+            Expr::combination(&x, &names).sympy,
+            "(-m - 2)*P2 + P3 - 3*P4"
+        );
         assert_eq!(e.symbols, ["P2", "m1", "m2"]);
     }
 
@@ -594,7 +630,10 @@ mod tests {
             .about("Σ b_i − 1", Status::Fails)
             .with("residual", Expr::new(&Sym::var("t")))
             .in_part("λ = μ = 0", Status::Fails);
-        assert_eq!(e.line(), "λ = μ = 0: fails — Σ b_i − 1: fails — residual = t");
+        assert_eq!(
+            e.line(),
+            "λ = μ = 0: fails — Σ b_i − 1: fails — residual = t"
+        );
         assert!(e.contains("residual = t"));
         let list: EvidenceList = ["a", "b"].into_iter().collect();
         assert_eq!(list.len(), 2);

@@ -175,10 +175,8 @@ impl PrintedJoin {
     /// parameters at which both are evaluated exactly.
     fn derived_item(&self, wrt: Wrt, printed: &[Printed]) -> Evidence {
         let names = self.names();
-        let mut item = Evidence::new(Kind::Derived, "").about(
-            format!("derived ({})", convention(wrt)),
-            Status::Holds,
-        );
+        let mut item = Evidence::new(Kind::Derived, "")
+            .about(format!("derived ({})", convention(wrt)), Status::Holds);
         item.status = None;
         let points = match self.derived_points(wrt) {
             Ok(points) => points,

@@ -22,8 +22,8 @@ use trig_certify::region::{CellKind, Region, region};
 use trig_certify::{Bound, ParamBox};
 use trig_symbolic::Sym;
 
-use crate::evidence::EvidenceList;
 use crate::certify::evidence::{MAXIMAL, Published, maximal_against, nonnegative_on_box_named};
+use crate::evidence::EvidenceList;
 use crate::verdict::{Status, Verdict};
 
 /// One parameter of the claim: name, printed symbol, printed set, source.

@@ -70,7 +70,8 @@ impl fmt::Display for Status {
 }
 
 /// How an umbrella claim is decided, as the report states it.
-pub const UMBRELLA: &str = "umbrella: holds only if every part holds (each part is reported as its own claim)";
+pub const UMBRELLA: &str =
+    "umbrella: holds only if every part holds (each part is reported as its own claim)";
 
 /// A computed verdict: status, how it was decided, the evidence (exact
 /// residuals, values, counterexamples), and the correction where one holds.
@@ -149,7 +150,11 @@ impl Verdict {
             line.status = Some(v.status);
             evidence.push(line);
             if v.status != Status::Holds
-                && let Some(w) = v.evidence.into_vec().into_iter().find(|e| e.witness.is_some())
+                && let Some(w) = v
+                    .evidence
+                    .into_vec()
+                    .into_iter()
+                    .find(|e| e.witness.is_some())
             {
                 evidence.push(w.in_part(name, v.status));
             }

@@ -23,7 +23,8 @@ use crate::evidence::{Assignment, Expr, Value, Witness};
 const ATTEMPTS: usize = 6;
 
 /// Rational points `(sin θ, cos θ)` of the unit circle, θ ∈ (0, π/2).
-const CIRCLE: [((i64, i64), (i64, i64)); 3] = [((3, 5), (4, 5)), ((5, 13), (12, 13)), ((8, 17), (15, 17))];
+const CIRCLE: [((i64, i64), (i64, i64)); 3] =
+    [((3, 5), (4, 5)), ((5, 13), (12, 13)), ((8, 17), (15, 17))];
 
 /// Values of `t` in `(0, 1)`.
 const T: [(i64, i64); 3] = [(1, 3), (2, 5), (3, 7)];
@@ -125,7 +126,11 @@ pub fn search_from(mut point: Point, differ: &dyn Fn(&Point) -> bool) -> Point {
     let has = |p: &Point, n: &str| p.iter().any(|(m, _)| m == n);
     if has(&point, "s") && has(&point, "c") {
         for (s, c) in [(0, 1), (1, 0)] {
-            let candidate = set(&set(&point, "s", &Rational::from(s)), "c", &Rational::from(c));
+            let candidate = set(
+                &set(&point, "s", &Rational::from(s)),
+                "c",
+                &Rational::from(c),
+            );
             if differ(&candidate) {
                 point = candidate;
                 break;
@@ -213,7 +218,11 @@ pub fn find(left: &Sym, right: &Sym, labels: (&str, &str)) -> Option<Witness> {
 }
 
 /// A witness from a point already chosen and values already computed.
-pub fn witness(point: &[(String, Rational)], names: &[String], values: Vec<(&str, Sym)>) -> Witness {
+pub fn witness(
+    point: &[(String, Rational)],
+    names: &[String],
+    values: Vec<(&str, Sym)>,
+) -> Witness {
     let trig = names.iter().any(|n| n == "s" || n == "c");
     let pi = names.iter().any(|n| n == "pi");
     let mut notes = Vec::new();
@@ -262,7 +271,12 @@ mod tests {
 
     #[test]
     fn a_false_identity_has_an_exact_witness() {
-        let (m1, m2, p2, p3) = (Sym::var("m1"), Sym::var("m2"), Sym::var("P2"), Sym::var("P3"));
+        let (m1, m2, p2, p3) = (
+            Sym::var("m1"),
+            Sym::var("m2"),
+            Sym::var("P2"),
+            Sym::var("P3"),
+        );
         // printed (m₂ + 2)P₃/(m₁ + 2) against P₃: differ unless m₁ = m₂
         let printed = (m2.clone() + &Sym::int(2)) * &p3 / &(m1.clone() + &Sym::int(2));
         let w = find(&printed, &p3, ("printed", "required")).expect("a witness");
@@ -283,6 +297,11 @@ mod tests {
         let w = find(&x, &Sym::one(), ("left", "right")).expect("a witness");
         // simplified to s = 1, c = 0: π against 1
         assert_eq!(w.values[0].value.unicode, "π");
-        assert!(w.note.as_deref().unwrap_or("").contains("π kept as a symbol"));
+        assert!(
+            w.note
+                .as_deref()
+                .unwrap_or("")
+                .contains("π kept as a symbol")
+        );
     }
 }

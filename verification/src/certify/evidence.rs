@@ -22,7 +22,12 @@ pub const MAXIMAL: &str = "certified: every end of the admissible set is a root 
 /// The witness of a counterexample: the parameters, `z = tan(θ/2)` with
 /// `s = sin θ`, `c = cos θ` (or `t`), and the exact value of the tested
 /// function there.
-pub fn counterexample(params: &[(&str, &Rational)], z: &Rational, value: &Rational, trig: bool) -> Witness {
+pub fn counterexample(
+    params: &[(&str, &Rational)],
+    z: &Rational,
+    value: &Rational,
+    trig: bool,
+) -> Witness {
     let mut point: Vec<(String, Rational)> = params
         .iter()
         .map(|(n, v)| (n.to_string(), (*v).clone()))
@@ -399,9 +404,8 @@ pub fn maximal_against(
     let bracketed =
         matches!(r.lo, EndPoint::Bracket { .. }) || matches!(r.hi, EndPoint::Bracket { .. });
     if cs == Status::Fails || (bracketed && cs != Status::Holds) {
-        evidence.push(
-            "the certificate of the interval is missing or contradicts the ends: no verdict",
-        );
+        evidence
+            .push("the certificate of the interval is missing or contradicts the ends: no verdict");
         status = Status::NotCheckable;
     }
     (r, Verdict::new(status, MAXIMAL, evidence))

@@ -243,8 +243,7 @@ fn m6() -> Verdict {
     parts.push(("Σ Q_j − 1 (symbolic weights)".into(), sum(&q), one));
     let mut v = identities(parts);
     v.evidence.push(
-        "uniform case (Appendix A basis F_j = l_j/(6ζ² − 6ζ + 10)), weights as symbols w0…w3"
-            ,
+        "uniform case (Appendix A basis F_j = l_j/(6ζ² − 6ζ + 10)), weights as symbols w0…w3",
     );
     v
 }

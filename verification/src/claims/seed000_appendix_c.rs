@@ -379,7 +379,17 @@ fn m9b() -> Verdict {
 
 /// One line per knot, and the verdict "at least C^r at every knot".
 fn at_least(label: &str, knots: &[KnotContinuity], r: usize, param: Option<&str>) -> Verdict {
-    let evidence: Vec<crate::evidence::Evidence> = knots.iter().map(|k| k.describe(param)).collect();
+    let evidence: Vec<crate::evidence::Evidence> = knots
+        .iter()
+        .map(|k| {
+            let item = k.describe(param);
+            if k.smoothness.is_at_least(r) {
+                item
+            } else {
+                item.witnessed(k.witness())
+            }
+        })
+        .collect();
     let ok = knots.iter().all(|k| k.smoothness.is_at_least(r));
     let mut evidence = evidence;
     evidence.insert(
@@ -401,7 +411,8 @@ fn at_least(label: &str, knots: &[KnotContinuity], r: usize, param: Option<&str>
 /// generic ξ (then every ξ outside the finitely many exceptions is a
 /// counterexample); the exceptional values where C⁵ holds are listed.
 fn c5_except_one(label: &str, knots: &[KnotContinuity]) -> Verdict {
-    let mut evidence = vec![format!("{label}: C^5 claimed for every ξ ≠ 1")];
+    let mut evidence =
+        crate::evidence::EvidenceList::from(vec![format!("{label}: C^5 claimed for every ξ ≠ 1")]);
     for k in knots.iter().filter(|k| !k.smoothness.is_at_least(5)) {
         let good: Vec<String> = k
             .exceptions
@@ -409,12 +420,15 @@ fn c5_except_one(label: &str, knots: &[KnotContinuity]) -> Verdict {
             .filter(|e| e.smoothness.is_at_least(5))
             .map(|e| e.value.to_string())
             .collect();
-        evidence.push(format!(
-            "knot {}: {} for every ξ except ξ ∈ {{{}}}, where it is C^5",
-            k.knot,
-            k.smoothness,
-            good.join(", ")
-        ));
+        evidence.push(
+            crate::evidence::Evidence::note(format!(
+                "knot {}: {} for every ξ except ξ ∈ {{{}}}, where it is C^5",
+                k.knot,
+                k.smoothness,
+                good.join(", ")
+            ))
+            .witnessed(k.witness()),
+        );
     }
     let ok = knots.iter().all(|k| k.smoothness.is_at_least(5));
     Verdict::new(
@@ -533,7 +547,14 @@ fn m4b() -> Verdict {
                     Verdict::new(
                         if ok { Status::Holds } else { Status::Fails },
                         METHOD,
-                        cont.iter().map(|c| c.describe(Some("zeta"))),
+                        cont.iter().map(|c| {
+                            let item = c.describe(Some("zeta"));
+                            if c.smoothness.rank() >= want {
+                                item
+                            } else {
+                                item.witnessed(c.witness())
+                            }
+                        }),
                     )
                 }
                 Err(ContinuityError::Construction(e)) => Verdict::not_checkable(format!(
@@ -573,8 +594,8 @@ fn m8() -> Verdict {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::continuity::Smoothness;
     use crate::claims::seed000_appendix_print::compare;
+    use crate::continuity::Smoothness;
 
     #[test]
     fn uniform_seed000_basis_is_c3_at_its_ends_and_smooth_inside() {

@@ -271,7 +271,10 @@ pub fn compare(printed: &Formula, computed: &Sym) -> Verdict {
         Verdict::new(
             Status::Holds,
             IDENTITY,
-            [Evidence::new(Kind::Comparison, "printed = computed exactly")],
+            [Evidence::new(
+                Kind::Comparison,
+                "printed = computed exactly",
+            )],
         )
     } else {
         let item = Evidence::new(Kind::Comparison, "")
@@ -285,7 +288,12 @@ pub fn compare(printed: &Formula, computed: &Sym) -> Verdict {
 /// The part of a claim that compares the printed `text` (read as
 /// `formula`) with `computed`: named `label`, the printed text kept with
 /// the evidence.
-pub fn printed_part(label: String, text: &str, formula: &Formula, computed: &Sym) -> (String, Verdict) {
+pub fn printed_part(
+    label: String,
+    text: &str,
+    formula: &Formula,
+    computed: &Sym,
+) -> (String, Verdict) {
     let mut v = compare(formula, computed);
     for e in v.evidence.iter_mut() {
         e.printed = Some(text.to_string());

@@ -6,10 +6,10 @@ use trig_core::{Family, Ring};
 use trig_deriv::{End, Wrt, curve_endpoint_derivatives};
 use trig_symbolic::{Poly, Sym};
 
-use crate::evidence::EvidenceList;
 use crate::certify::evidence::nonnegative_on;
 use crate::certify::unimodal::exactly_one_maximum;
 use crate::claim::{Claim, Seed};
+use crate::evidence::EvidenceList;
 use crate::exact::{basis, combination, identities, identity, reflect, sum, symbols, symmetry};
 use crate::verdict::{Status, Verdict};
 use trig_certify::ParamBox;

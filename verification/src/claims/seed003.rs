@@ -5,8 +5,8 @@ use trig_core::Family;
 use trig_deriv::{Wrt, knot_derivatives};
 use trig_symbolic::Sym;
 
-use crate::evidence::EvidenceList;
 use crate::claim::{Claim, Seed};
+use crate::evidence::EvidenceList;
 use crate::exact::IDENTITY;
 use crate::verdict::{Status, Verdict};
 

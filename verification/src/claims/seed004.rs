@@ -6,9 +6,9 @@ use trig_core::{Family, Ring};
 use trig_deriv::{End, Wrt, curve_endpoint_derivatives, endpoint_derivatives};
 use trig_symbolic::Sym;
 
-use crate::evidence::EvidenceList;
 use crate::certify::evidence::{nonnegative_on, nonnegative_on_box};
 use crate::claim::{Claim, Seed};
+use crate::evidence::{Assignment, Evidence, EvidenceList, Expr, Value, Witness};
 use crate::exact::{IDENTITY, basis, combination, identities, reflect, sum, symbols, symmetry};
 use crate::verdict::{Status, Verdict};
 use trig_certify::ParamBox;
@@ -740,12 +740,36 @@ fn e17() -> Verdict {
     let all_zero = printed_hold.iter().all(|(_, e)| at(e).is_zero());
     let gap = at(&(j.r2[0].clone() - &j.r1[0]));
     let mut evidence = EvidenceList::from(vec![
-        j.terminal(),
+        Evidence::note(j.terminal()),
         "the relation between |P1Q2| and |P2Q1| is unreadable (\"|P1Q2| □ |P2Q1|\"); the counterexample below has Q2 − P1 = Q1 − P2, so it satisfies every reflexive relation between the two segments (equal length, parallel, ≤, ≥)".into(),
-        format!(
+        Evidence::note(format!(
             "one coordinate, λ1 = μ1 = λ2 = μ2 = 0, ω = 1: P = (0, 1, 2, 3), Q = (3, 4, 3, 0); printed conditions satisfied exactly: {all_zero}"
-        ),
-        format!("R2(0) − R1(1) = {gap} (exact): the curves do not even meet (G⁰ fails)"),
+        )),
+        Evidence::note(format!(
+            "R2(0) − R1(1) = {gap} (exact): the curves do not even meet (G⁰ fails)"
+        ))
+        .witnessed(Some(Witness {
+            point: pts
+                .iter()
+                .map(|(name, v)| Assignment {
+                    name: Sym::var(name).to_unicode(),
+                    value: v.to_string(),
+                    latex: format!("{} = {}", Sym::var(name).to_latex(), v.to_latex()),
+                })
+                .collect(),
+            note: Some("one coordinate; the printed conditions hold exactly there".into()),
+            values: vec![
+                Value {
+                    label: "R1(1)".into(),
+                    value: Expr::new(&at(&j.r1[0])),
+                },
+                Value {
+                    label: "R2(0)".into(),
+                    value: Expr::new(&at(&j.r2[0])),
+                },
+            ],
+            exact: true,
+        })),
     ]);
     let (sol, check) = derive(
         &[

@@ -17,8 +17,8 @@ use trig_interp::{
 use trig_symbolic::Sym;
 
 use super::thesis::claim;
-use crate::evidence::EvidenceList;
 use crate::claim::Claim;
+use crate::evidence::{Evidence, EvidenceList};
 use crate::exact::{IDENTITY, identities};
 use crate::verdict::{Status, Verdict};
 
@@ -222,13 +222,38 @@ fn approx(x: &Sym) -> String {
     }
 }
 
-fn jump_lines(spline: &Spline<Sym>, orders: usize) -> (bool, Vec<String>) {
+fn jump_lines(spline: &Spline<Sym>, orders: usize) -> (bool, Vec<Evidence>) {
     let mut ok = true;
     let lines = knot_jumps(spline)
         .iter()
         .map(|k| {
             let order = k.continuity_order();
-            ok &= order.is_some_and(|o| o + 1 >= orders);
+            let enough = order.is_some_and(|o| o + 1 >= orders);
+            ok &= enough;
+            // a jump below the claimed order: the two one-sided values, exact
+            let witness = k
+                .jumps
+                .iter()
+                .take(orders)
+                .position(|j| !j.is_zero())
+                .filter(|_| !enough)
+                .map(|r| {
+                    let primes = "'".repeat(r);
+                    let x = k.x.to_string();
+                    let mut w = crate::witness::witness(
+                        &[("x".into(), k.x.clone())],
+                        &["x".into(), "pi".into()],
+                        vec![
+                            (&format!("P{primes}({x}⁻)"), k.left[r].clone()),
+                            (&format!("P{primes}({x}⁺)"), k.right[r].clone()),
+                        ],
+                    );
+                    w.note = Some(format!(
+                        "{} ({}), the pieces on either side of the knot; π kept as a symbol",
+                        spline.data.table.name, spline.variant
+                    ));
+                    w
+                });
             let jumps: Vec<String> = k
                 .jumps
                 .iter()
@@ -241,13 +266,14 @@ fn jump_lines(spline: &Spline<Sym>, orders: usize) -> (bool, Vec<String>) {
                 })
                 .collect();
             let achieved = order.map_or("discontinuous".to_string(), |o| format!("C{o}"));
-            format!(
+            Evidence::note(format!(
                 "{} ({}), knot x = {}: jumps of P, P', P'', P''' = [{}] → {achieved}",
                 spline.data.table.name,
                 spline.variant,
                 k.x,
                 jumps.join("; ")
-            )
+            ))
+            .witnessed(witness)
         })
         .collect();
     (ok, lines)
@@ -410,7 +436,25 @@ fn positivity(name: &str, scheme: Scheme, variant: Variant) -> Verdict {
             } else {
                 Status::NotCheckable
             };
-            let evidence = minima.iter().map(|m| describe(name, variant, m));
+            let evidence = minima.iter().map(|m| {
+                let item = Evidence::note(describe(name, variant, m));
+                if !m.negative() {
+                    return item;
+                }
+                // the point where P is certified negative: its exact upper bound
+                let mut w = crate::witness::witness(
+                    &[("z".into(), m.z.clone())],
+                    &["z".into()],
+                    vec![("P ≤", Sym::rational(m.upper.clone()))],
+                );
+                w.note = Some(format!(
+                    "{name} ({variant}), piece {}: z = tan(θ/2), x ≈ {:.6}; P evaluated exactly with π enclosed in [3.14159265358979323846264338327, …328], the bound rounded up",
+                    m.piece + 1,
+                    m.x
+                ));
+                w.values[0].value = crate::evidence::Expr::decimal(&m.upper, &decimal(&m.upper, true));
+                item.witnessed(Some(w))
+            });
             Verdict::new(status, CERTIFIED, evidence)
         }
     }

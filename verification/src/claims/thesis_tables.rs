@@ -21,9 +21,9 @@ use std::fmt;
 use rug::ops::Pow;
 use rug::{Integer, Rational};
 
-use crate::evidence::{Evidence, Expr, Kind, Value, Witness};
-use crate::evidence::EvidenceList;
 use crate::claim::{Claim, Seed};
+use crate::evidence::EvidenceList;
+use crate::evidence::{Evidence, Expr, Kind, Value, Witness};
 use crate::verdict::{Status, Verdict};
 
 pub const CLAIMS: &[Claim] = &[Claim {
@@ -431,9 +431,7 @@ fn table_verdict(t: &Table, tables: &[Table]) -> Verdict {
             evidence.extend(checks.iter().filter(|c| !c.ok).map(|c| c.detail.clone()));
             let passed = checks.iter().filter(|c| c.ok).count();
             if t.scheme == "summary" {
-                evidence.push(
-                    "row Bad points (>1.5): not in the per-letter tables, not compared",
-                );
+                evidence.push("row Bad points (>1.5): not in the per-letter tables, not compared");
             }
             // the relations are listed in the method; the failing ones above
             evidence.push(if ok {

@@ -170,7 +170,8 @@ pub fn schema() -> serde_json::Value {
     if let Some(obj) = s.as_object_mut() {
         obj.insert(
             "$id".into(),
-            format!("https://example.invalid/trig-audit/report-{SCHEMA_VERSION}.schema.json").into(),
+            format!("https://example.invalid/trig-audit/report-{SCHEMA_VERSION}.schema.json")
+                .into(),
         );
         obj.insert(
             "description".into(),

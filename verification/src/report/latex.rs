@@ -60,13 +60,7 @@ fn expr_tex(e: &Expr) -> String {
 fn witness_tex(w: &Witness) -> String {
     let point: Vec<String> = super::markdown::point_text(
         w,
-        |a| {
-            a.latex
-                .split(" = ")
-                .next()
-                .unwrap_or_default()
-                .to_string()
-        },
+        |a| a.latex.split(" = ").next().unwrap_or_default().to_string(),
         |a| a.latex.clone(),
     )
     .into_iter()
@@ -96,14 +90,21 @@ fn witness_tex(w: &Witness) -> String {
 fn item_tex(group: &[Evidence], part: Option<&Part>, show_witness: bool) -> String {
     let e = &group[0];
     let mut out = String::new();
-    if e.subject.as_deref().is_some_and(|s| part.is_none_or(|p| p.name != *s)) {
+    if e.subject
+        .as_deref()
+        .is_some_and(|s| part.is_none_or(|p| p.name != *s))
+    {
         let subjects: Vec<String> = group
             .iter()
             .filter_map(|g| g.subject.as_deref())
             .map(tex_inline)
             .collect();
         out.push_str(&subjects.join("; "));
-        if let Some(p) = e.printed.as_deref().filter(|_| e.status != Some(Status::Holds)) {
+        if let Some(p) = e
+            .printed
+            .as_deref()
+            .filter(|_| e.status != Some(Status::Holds))
+        {
             let _ = write!(out, ", printed \\texttt{{{}}}", tex_escape(p));
         }
         if let Some(st) = e.status {
@@ -249,7 +250,11 @@ pub fn tex_entries(entries: &[Entry], intro: &str, view: &View) -> String {
                 tex_escape(&doc.location)
             );
             for e in of_doc {
-                let k = methods.iter().position(|m| *m == e.verdict.method).unwrap_or(0) + 1;
+                let k = methods
+                    .iter()
+                    .position(|m| *m == e.verdict.method)
+                    .unwrap_or(0)
+                    + 1;
                 entry_tex(&mut out, e, k);
             }
         }
@@ -268,7 +273,11 @@ fn entry_tex(out: &mut String, e: &Entry, method: usize) {
         v.status
     );
     let _ = writeln!(out, "\\textbf{{Source:}} {}\\par", tex_inline(&e.source));
-    let _ = writeln!(out, "\\textbf{{Printed:}} {}\\par", tex_inline(&e.statement));
+    let _ = writeln!(
+        out,
+        "\\textbf{{Printed:}} {}\\par",
+        tex_inline(&e.statement)
+    );
     let _ = writeln!(
         out,
         "\\textbf{{How:}} {} (\\hyperlink{{method-{method}}}{{method {method}}})\\par",

@@ -100,7 +100,11 @@ pub(crate) fn point_text(
 
 /// A witness on one line.
 pub(crate) fn witness_md(w: &Witness) -> String {
-    let point = point_text(w, |a| a.name.clone(), |a| format!("{} = {}", a.name, a.value));
+    let point = point_text(
+        w,
+        |a| a.name.clone(),
+        |a| format!("{} = {}", a.name, a.value),
+    );
     let values: Vec<String> = w
         .values
         .iter()
@@ -127,14 +131,21 @@ pub(crate) fn witness_md(w: &Witness) -> String {
 fn item_md(group: &[Evidence], part: Option<&Part>, show_witness: bool) -> String {
     let e = &group[0];
     let mut out = String::new();
-    if e.subject.as_deref().is_some_and(|s| part.is_none_or(|p| p.name != *s)) {
+    if e.subject
+        .as_deref()
+        .is_some_and(|s| part.is_none_or(|p| p.name != *s))
+    {
         let subjects: Vec<String> = group
             .iter()
             .filter_map(|g| g.subject.as_deref())
             .map(md_text)
             .collect();
         out.push_str(&subjects.join("; "));
-        if let Some(p) = e.printed.as_deref().filter(|_| e.status != Some(Status::Holds)) {
+        if let Some(p) = e
+            .printed
+            .as_deref()
+            .filter(|_| e.status != Some(Status::Holds))
+        {
             let _ = write!(out, ", printed {}", code(p));
         }
         if let Some(st) = e.status {
@@ -180,7 +191,11 @@ fn evidence_md(out: &mut String, items: &[Evidence], skip: Option<&Evidence>) {
         }
         let indent = "  ".repeat(path.len() + 1);
         let own = skip.is_none_or(|s| !std::ptr::eq(s, e));
-        let _ = writeln!(out, "{indent}- {}", item_md(group, path.last().copied(), own));
+        let _ = writeln!(
+            out,
+            "{indent}- {}",
+            item_md(group, path.last().copied(), own)
+        );
     }
 }
 
@@ -257,14 +272,24 @@ pub fn markdown_entries(entries: &[Entry], intro: &str, view: &View) -> String {
     let methods = methods(&shown_entries);
     let _ = writeln!(out, "## Methods\n");
     for (k, m) in methods.iter().enumerate() {
-        let _ = writeln!(out, "{}. <a id=\"method-{}\"></a>{}", k + 1, k + 1, md_text(m));
+        let _ = writeln!(
+            out,
+            "{}. <a id=\"method-{}\"></a>{}",
+            k + 1,
+            k + 1,
+            md_text(m)
+        );
     }
     out.push('\n');
     for (doc, of_doc) in sections(&shown_entries) {
         let _ = writeln!(out, "## {} — {}\n", doc.heading, md_text(&doc.title));
         let _ = writeln!(out, "Source: `{}`\n", doc.location);
         for e in of_doc {
-            let k = methods.iter().position(|m| *m == e.verdict.method).unwrap_or(0) + 1;
+            let k = methods
+                .iter()
+                .position(|m| *m == e.verdict.method)
+                .unwrap_or(0)
+                + 1;
             entry_md(&mut out, e, k);
         }
     }
@@ -340,7 +365,10 @@ mod tests {
         let md = markdown_entries(&entries, "intro", &View::default());
         assert!(md.contains("| **all** | 2 | 1 | 1 | 0 | 0 |"), "{md}");
         assert!(md.contains("| [A1](#claim-a1) | fails | b | (1) |"), "{md}");
-        assert!(md.contains("  - **part** — fails\n    - Σ b\\_i − 1 — **fails**: residual = `m² − 4`"), "{md}");
+        assert!(
+            md.contains("  - **part** — fails\n    - Σ b\\_i − 1 — **fails**: residual = `m² − 4`"),
+            "{md}"
+        );
         let a = md.find("## Spec a").unwrap();
         let b = md.find("## Spec b").unwrap();
         assert!(a < b);

@@ -22,7 +22,7 @@ use crate::figures::{self, Figure};
 use crate::verdict::{Status, Verdict};
 
 pub use json::{Report, SCHEMA_VERSION, json_entries, schema};
-pub use latex::{tex_entries, tex_escape};
+pub use latex::{tex_entries, tex_escape, to_math};
 pub use markdown::markdown_entries;
 
 /// The opening sentence of the built-in report.
@@ -297,7 +297,11 @@ mod tests {
             summary_only: false,
             verdicts: vec![Status::Fails],
         };
-        let ids: Vec<&str> = view.select(&entries).iter().map(|e| e.id.as_str()).collect();
+        let ids: Vec<&str> = view
+            .select(&entries)
+            .iter()
+            .map(|e| e.id.as_str())
+            .collect();
         assert_eq!(ids, ["A1"]);
         assert!(view.note().unwrap().contains("fails"));
         assert_eq!(plural(1, "claim", "claims"), "1 claim");

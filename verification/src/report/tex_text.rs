@@ -305,7 +305,11 @@ fn classify(word: &str) -> Token {
         .trim_matches(|c: char| "()[],;:.".contains(c))
         .to_string();
     let number = core.trim_start_matches('-');
-    if !number.is_empty() && number.chars().all(|c| c.is_ascii_digit() || c == '/' || c == '.') {
+    if !number.is_empty()
+        && number
+            .chars()
+            .all(|c| c.is_ascii_digit() || c == '/' || c == '.')
+    {
         return Token::Var;
     }
     let mut cs = core.chars();
@@ -370,10 +374,16 @@ mod tests {
             tex_inline("H_i(u; β) = H_{2−i}(π/2 − u; β) (as printed)"),
             r"$H_{i}(u; \beta ) = H_{2-i}(\pi /2 - u; \beta )$ (as printed)"
         );
-        assert_eq!(tex_inline("x² + y²³ ≥ 0 for all x"), r"$x^{2} + y^{23} \geq  0$ for all x");
+        assert_eq!(
+            tex_inline("x² + y²³ ≥ 0 for all x"),
+            r"$x^{2} + y^{23} \geq  0$ for all x"
+        );
         assert_eq!(tex_inline("the set {1, 2}"), r"the set \{1, 2\}");
         assert_eq!(tex_inline("P_{i,j} x̄"), r"$P_{i,j} \bar{x}$");
-        assert_eq!(tex_inline("b_{j+2,i} of {a_b}"), r"$b_{j+2,i}$ of $\{a_{b}\}$");
+        assert_eq!(
+            tex_inline("b_{j+2,i} of {a_b}"),
+            r"$b_{j+2,i}$ of $\{a_{b}\}$"
+        );
     }
 
     #[test]

@@ -111,8 +111,9 @@ pub fn run(args: &AuditArgs) -> CmdResult {
     let text = match args.format {
         ReportFormat::Md => report::markdown_entries(&entries, &intro, &view),
         ReportFormat::Json => {
-            let mut s = serde_json::to_string_pretty(&report::json_entries(&entries, &intro, &view))
-                .map_err(|e| CliError::Usage(format!("cannot encode the report: {e}")))?;
+            let mut s =
+                serde_json::to_string_pretty(&report::json_entries(&entries, &intro, &view))
+                    .map_err(|e| CliError::Usage(format!("cannot encode the report: {e}")))?;
             s.push('\n');
             s
         }
