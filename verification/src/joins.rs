@@ -235,6 +235,15 @@ fn describe(wrt: Wrt, residuals: &[Sym], names: &[String]) -> Evidence {
     )
 }
 
+/// True when the printed formulas of a curve join hold in the angle
+/// convention (the column test of a surface join with the same `u`-basis
+/// on both patches).
+pub fn holds_in_angle(join: &PrintedJoin) -> bool {
+    join.residuals(Wrt::Angle, &join.printed)
+        .iter()
+        .all(Sym::is_zero)
+}
+
 /// Decides a printed curve join.
 pub fn audit(join: &PrintedJoin) -> Verdict {
     decide(join, |wrt, printed| {
@@ -343,30 +352,55 @@ fn decide(
     ))
 }
 
-/// The first single-term sign flip that makes the printed formulas hold in
-/// the angle convention, described.
+/// The fewest sign flips — one term in one printed formula, else one term in
+/// each of two formulas (a sign typo per formula, as when a formula reuses
+/// an earlier one that has its own) — that make the printed formulas hold
+/// in the angle convention, described. Pairs are screened on the shown
+/// residual (for a surface, one column's: it vanishes exactly when every
+/// column's does) and confirmed on the deciding one.
 fn sign_fix(
     join: &PrintedJoin,
     residuals: &impl Fn(Wrt, &[Printed]) -> (Vec<Sym>, Vec<Sym>),
 ) -> Option<String> {
     let names = join.names();
-    join.printed.iter().enumerate().find_map(|(i, p)| {
-        (0..p.terms.len()).find_map(|k| {
-            let mut printed = join.printed.clone();
-            printed[i] = p.flipped(k);
-            residuals(Wrt::Angle, &printed)
-                .0
-                .iter()
-                .all(Sym::is_zero)
-                .then(|| {
-                    format!(
-                        "flip the sign of the printed term {} in the formula for {}",
-                        p.terms[k].to_combination(&names),
-                        join.second[p.point].to_unicode()
-                    )
-                })
+    let flips: Vec<(usize, usize)> = join
+        .printed
+        .iter()
+        .enumerate()
+        .flat_map(|(i, p)| (0..p.terms.len()).map(move |k| (i, k)))
+        .collect();
+    let with = |chosen: &[(usize, usize)]| {
+        let mut printed = join.printed.clone();
+        for &(i, k) in chosen {
+            printed[i] = printed[i].flipped(k);
+        }
+        printed
+    };
+    let zero = |r: &[Sym]| r.iter().all(Sym::is_zero);
+    let singles = flips.iter().map(|f| vec![*f]);
+    let pairs = flips.iter().enumerate().flat_map(|(a, f)| {
+        flips[a + 1..]
+            .iter()
+            .filter(move |g| g.0 != f.0)
+            .map(move |g| vec![*f, *g])
+    });
+    let found = singles.chain(pairs).find(|chosen| {
+        let printed = with(chosen);
+        let (r, shown) = residuals(Wrt::Angle, &printed);
+        chosen.len() == 1 && zero(&r) || chosen.len() > 1 && zero(&shown) && zero(&r)
+    })?;
+    let terms: Vec<String> = found
+        .iter()
+        .map(|&(i, k)| {
+            let p = &join.printed[i];
+            format!(
+                "the printed term {} in the formula for {}",
+                p.terms[k].to_combination(&names),
+                join.second[p.point].to_unicode()
+            )
         })
-    })
+        .collect();
+    Some(format!("flip the sign of {}", terms.join(" and of ")))
 }
 
 #[cfg(test)]

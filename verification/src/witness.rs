@@ -99,7 +99,8 @@ fn simpler(name: &str) -> &'static [(i64, i64)] {
     let stem = name.trim_end_matches(|c: char| c.is_ascii_digit());
     match stem {
         "t" => &[(0, 1), (1, 1), (1, 2)],
-        "eta" | "alpha" | "omega" => &[(1, 1), (2, 1)],
+        // positive by definition: weights, interval lengths, knot spacings, G¹ factors
+        "eta" | "alpha" | "omega" | "w" | "h" | "q" => &[(1, 1), (2, 1)],
         _ => &[(0, 1), (1, 1), (-1, 1), (2, 1)],
     }
 }

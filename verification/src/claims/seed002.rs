@@ -10,7 +10,10 @@ use crate::certify::evidence::nonnegative_on;
 use crate::certify::unimodal::exactly_one_maximum;
 use crate::claim::{Claim, Seed};
 use crate::evidence::EvidenceList;
-use crate::exact::{basis, combination, identities, identity, reflect, sum, symbols, symmetry};
+use crate::exact::{
+    IDENTITY, basis, combination, identities, identity, linear_map_parts, reflect, sum, symbols,
+    symmetry,
+};
 use crate::verdict::{Status, Verdict};
 use trig_certify::ParamBox;
 
@@ -96,8 +99,15 @@ pub const CLAIMS: &[Claim] = &[
         id: "D10",
         seed: Seed::S002,
         source: "Theorem 2 (3), garbled print",
-        statement: "reading of the garbled print: R(t; P_i + q) = R(t; P_i) + q and R(t; P_i T) = R(t; P_i) T",
+        statement: "as printed: the first equation is unreadable (\"R_2^π − t, P, …\"); the second reads R(π/2 − t, P3, P4, P3, P2, P1, P3)·T = R(t, P0·T, P1·T, P2·T, P3·T, P4·T, P5·T)",
         check: d10,
+    },
+    Claim {
+        id: "D10b",
+        seed: Seed::S002,
+        source: "Theorem 2 (3), reading",
+        statement: "reading of the garbled print (geometric invariance as the text announces it): R(t; P_i + q) = R(t; P_i) + q and R(t; P_i T) = R(t; P_i) T",
+        check: d10b,
     },
     Claim {
         id: "D11",
@@ -234,26 +244,48 @@ fn d9b() -> Verdict {
     d9_with(true)
 }
 
+/// The print as it stands: the first equation cannot be read; the second,
+/// with the points as printed (`P3, P4, P3, P2, P1, P3` at `π/2 − t`), is an
+/// identity that can be decided (a matrix `T` acting on both sides; `T = k`
+/// times the identity is enough to refute it).
 fn d10() -> Verdict {
     let p: Vec<Sym> = symbols("P", 6);
     let w: Vec<Sym> = symbols("w", 6);
-    let (q, k) = (Sym::var("q"), Sym::var("k"));
-    let shifted: Vec<Sym> = p.iter().map(|x| x.clone() + &q).collect();
+    let k = Sym::var("k");
+    let printed: Vec<Sym> = [3, 4, 3, 2, 1, 3].iter().map(|&i| p[i].clone()).collect();
     let scaled: Vec<Sym> = p.iter().map(|x| x.clone() * &k).collect();
-    let mut v = identities(vec![
-        (
-            "R(P_i + q) − (R(P_i) + q)".into(),
-            rational_curve(&shifted, &w),
-            rational_curve(&p, &w) + &q,
-        ),
-        (
-            "R(k P_i) − k R(P_i) (a linear map acts coordinatewise)".into(),
-            rational_curve(&scaled, &w),
-            rational_curve(&p, &w) * &k,
-        ),
-    ]);
-    v.evidence.push("the printed equations are unreadable in our copy (\"R_2^π − t, P, …\"); this is the obvious reading");
-    v
+    let second = identity(
+        "R(π/2 − t, P3, P4, P3, P2, P1, P3)·k − R(t, P0·k, …, P5·k) (T = k·I)",
+        &(reflect(&rational_curve(&printed, &w), true) * &k),
+        &rational_curve(&scaled, &w),
+    );
+    Verdict::all(
+        IDENTITY,
+        vec![
+            (
+                "first equation".into(),
+                Verdict::not_checkable(
+                    "unreadable in our copy (\"R_2^π − t, P, …\"); its obvious reading is D10b",
+                ),
+            ),
+            ("second equation, as printed".into(), second),
+        ],
+    )
+}
+
+/// The reading: invariance under translation and under linear maps.
+fn d10b() -> Verdict {
+    let p: Vec<Sym> = symbols("P", 6);
+    let w: Vec<Sym> = symbols("w", 6);
+    let q = Sym::var("q");
+    let shifted: Vec<Sym> = p.iter().map(|x| x.clone() + &q).collect();
+    let mut parts = vec![(
+        "R(P_i + q) − (R(P_i) + q)".to_string(),
+        rational_curve(&shifted, &w),
+        rational_curve(&p, &w) + &q,
+    )];
+    parts.extend(linear_map_parts("R", 6, |pts| rational_curve(pts, &w)));
+    identities(parts)
 }
 
 /// Each `b_i` has exactly one maximum on `[0, π/2]`: certified count of the

@@ -9,7 +9,10 @@ use trig_symbolic::Sym;
 use crate::certify::evidence::{nonnegative_on, nonnegative_on_box};
 use crate::claim::{Claim, Seed};
 use crate::evidence::{Assignment, Evidence, EvidenceList, Expr, Value, Witness};
-use crate::exact::{IDENTITY, basis, combination, identities, reflect, sum, symbols, symmetry};
+use crate::exact::{
+    IDENTITY, basis, combination, identities, identity, linear_map_parts, reflect, sum, symbols,
+    symmetry,
+};
 use crate::verdict::{Status, Verdict};
 use trig_certify::ParamBox;
 
@@ -41,6 +44,13 @@ pub const CLAIMS: &[Claim] = &[
         source: "III(i) (a)",
         statement: "b0 + b1 = 1; b2(t) + b3(1 − t) = 1",
         check: e3,
+    },
+    Claim {
+        id: "E3b",
+        seed: Seed::S004,
+        source: "III(i) (a), reading",
+        statement: "reading of E3's second identity as the Hermite property it copies (E1b): b2(t) + b3(1 − t) = 0",
+        check: e3b,
     },
     Claim {
         id: "E4",
@@ -97,6 +107,13 @@ pub const CLAIMS: &[Claim] = &[
         source: "III(ii) (c)",
         statement: "T(λ, μ; t; P_i + q) = T(λ, μ; t; P_i) + q and T(λ, μ; t; P_i M) = T(λ, μ; t; P_i) M",
         check: e11,
+    },
+    Claim {
+        id: "E11b",
+        seed: Seed::S004,
+        source: "III(ii) (c), second equation",
+        statement: "invariance under linear maps alone: T(λ, μ; t; P_i M) = T(λ, μ; t; P_i) M for every d × d matrix M",
+        check: e11b,
     },
     Claim {
         id: "E12",
@@ -243,6 +260,15 @@ fn e3() -> Verdict {
             Sym::one(),
         ),
     ])
+}
+
+fn e3b() -> Verdict {
+    let b = basis(Family::Eh);
+    identity(
+        "b2(t) + b3(1 − t)",
+        &(b[2].clone() + &reflect(&b[3], false)),
+        &Sym::zero(),
+    )
 }
 
 fn e5() -> Verdict {
@@ -408,22 +434,27 @@ fn e11() -> Verdict {
     let q = Sym::var("q");
     let shifted: Vec<Sym> = p.iter().map(|pi| pi.clone() + &q).collect();
     let (l, m, t) = (Sym::var("lambda"), Sym::var("mu"), Sym::var("t"));
-    let k = Sym::var("k");
-    let scaled: Vec<Sym> = p.iter().map(|pi| pi.clone() * &k).collect();
-    let mut v = identities(vec![
-        (
-            "T(P_i + q) − (T(P_i) + q)".into(),
-            eh_curve(&shifted, &l, &m, &t),
-            eh_curve(&p, &l, &m, &t) + &q,
-        ),
-        (
-            "T(k P_i) − k T(P_i) (a linear map acts coordinatewise)".into(),
-            eh_curve(&scaled, &l, &m, &t),
-            eh_curve(&p, &l, &m, &t) * &k,
-        ),
-    ]);
-    v.evidence.push("translation invariance needs Σ b_i = 1, which fails (E6); linear invariance holds for any basis");
+    let mut parts = vec![(
+        "T(P_i + q) − (T(P_i) + q)".to_string(),
+        eh_curve(&shifted, &l, &m, &t),
+        eh_curve(&p, &l, &m, &t) + &q,
+    )];
+    parts.extend(eh_linear_map());
+    let mut v = identities(parts);
+    v.evidence.push("translation invariance needs Σ b_i = 1, which fails (E6); linear invariance holds for any basis (E11b)");
     v
+}
+
+/// `T(P_i M) = T(P_i) M` for plane control points and a 2 × 2 matrix (a
+/// d × d matrix acts on each output coordinate through the same row
+/// combination, so d = 2 shows every case).
+fn eh_linear_map() -> Vec<(String, Sym, Sym)> {
+    let (l, m, t) = (Sym::var("lambda"), Sym::var("mu"), Sym::var("t"));
+    linear_map_parts("T", 4, |p| eh_curve(p, &l, &m, &t))
+}
+
+fn e11b() -> Verdict {
+    identities(eh_linear_map())
 }
 
 fn e12() -> Verdict {

@@ -75,16 +75,18 @@ fn witness_tex(w: &Witness) -> String {
         .note
         .as_ref()
         .map_or(String::new(), |n| format!(" ({})", tex_inline(n)));
-    let at = if point.is_empty() {
-        String::new()
-    } else {
-        format!("at {}", point.join(", "))
-    };
-    format!(
-        "{at}{note}: {} ({})",
+    let values = format!(
+        "{} ({})",
         values.join(", "),
         if w.exact { "exact" } else { "numeric" }
-    )
+    );
+    if point.is_empty() && note.is_empty() {
+        values
+    } else if point.is_empty() {
+        format!("{}: {values}", note.trim_start())
+    } else {
+        format!("at {}{note}: {values}", point.join(", "))
+    }
 }
 
 fn item_tex(group: &[Evidence], part: Option<&Part>, show_witness: bool) -> String {

@@ -114,16 +114,18 @@ pub(crate) fn witness_md(w: &Witness) -> String {
         .note
         .as_ref()
         .map_or(String::new(), |n| format!(" ({})", md_text(n)));
-    let at = if point.is_empty() {
-        String::new()
-    } else {
-        format!("at {}", code(&point.join(", ")))
-    };
-    format!(
-        "{at}{note}: {} ({})",
+    let values = format!(
+        "{} ({})",
         values.join(", "),
         if w.exact { "exact" } else { "numeric" }
-    )
+    );
+    if point.is_empty() && note.is_empty() {
+        values
+    } else if point.is_empty() {
+        format!("{}: {values}", note.trim_start())
+    } else {
+        format!("at {}{note}: {values}", code(&point.join(", ")))
+    }
 }
 
 /// One group of items ([`super::groups`]): subjects and status, prose,
