@@ -191,8 +191,8 @@ mod tests {
         assert_eq!(v.status, Status::Fails);
         assert!(v.evidence[0].contains("-c^2"), "{:?}", v.evidence);
         let w = v.evidence[0].witness.as_ref().expect("a witness");
-        // s = 3/5: s² = 9/25 against 1
-        assert_eq!(w.values[0].value.unicode, "9/25");
+        // simplified to θ = 0 (s = 0, c = 1): s² = 0 against 1
+        assert_eq!(w.values[0].value.unicode, "0");
     }
 
     #[test]

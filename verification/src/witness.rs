@@ -125,7 +125,9 @@ pub fn search_from(mut point: Point, differ: &dyn Fn(&Point) -> bool) -> Point {
             .collect()
     };
     let has = |p: &Point, n: &str| p.iter().any(|(m, _)| m == n);
-    if has(&point, "s") && has(&point, "c") {
+    // θ = 0 or π/2, for whichever of s, c occur (the normal form may have
+    // eliminated s)
+    if has(&point, "s") || has(&point, "c") {
         for (s, c) in [(0, 1), (1, 0)] {
             let candidate = set(
                 &set(&point, "s", &Rational::from(s)),

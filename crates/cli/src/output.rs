@@ -11,7 +11,14 @@ use super::commands::CliError;
 
 /// Writes `bytes` to `path` atomically.
 pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
-    let fail = |e: std::io::Error| CliError::Usage(format!("cannot write {}: {e}", path.display()));
+    // the kind only: tempfile's errors name the temporary file, not the target
+    let fail = |e: std::io::Error| {
+        CliError::Usage(format!(
+            "cannot write {}: {}",
+            path.display(),
+            std::io::Error::from(e.kind())
+        ))
+    };
     let dir = path
         .parent()
         .filter(|d| !d.as_os_str().is_empty())

@@ -531,6 +531,6 @@ mod tests {
         );
         let v = compare(&Formula::parse("2"), &Sym::one());
         assert_eq!(v.status, Status::Fails);
-        assert!(v.evidence[0].contains("computed 1"), "{:?}", v.evidence);
+        assert!(v.evidence[0].contains("computed = 1"), "{:?}", v.evidence);
     }
 }

@@ -29,19 +29,39 @@ pub fn preamble() -> &'static str {
   \IfFileExists{lmodern.sty}{\usepackage{lmodern}}{}
 \fi
 \usepackage{amsmath,amssymb}
-\usepackage{array,longtable}
+\usepackage{array,longtable,graphicx}
 \usepackage[margin=2cm]{geometry}
 \IfFileExists{hyperref.sty}{\usepackage[hidelinks]{hyperref}}{%
   \providecommand{\hypertarget}[2]{#2}\providecommand{\hyperlink}[2]{#2}}
 \setlength{\parindent}{0pt}
 \setlength{\parskip}{3pt}
 \setlength{\emergencystretch}{3em}
+\sloppy
 \newcolumntype{L}[1]{>{\raggedright\arraybackslash}p{#1}}
+% a long formula on its own line, scaled down only if wider than the line
+\newcommand{\fitmath}[1]{\par\noindent\resizebox{\ifdim\width>\linewidth\linewidth\else\width\fi}{!}{$\displaystyle #1$}\par}
 "
+}
+
+/// Characters after which a long `\texttt` text (a path, a printed
+/// formula) may break.
+pub fn tex_breakable(text: &str) -> String {
+    let mut out = String::new();
+    for ch in text.chars() {
+        out.push_str(&tex_escape(&ch.to_string()));
+        if matches!(ch, '/' | ')' | ']' | '-' | '+' | ',') {
+            out.push_str(r"\allowbreak{}");
+        }
+    }
+    out
 }
 
 fn expr_tex(e: &Expr) -> String {
     match shown(e, LONG) {
+        // a fraction cannot break across lines: a long one gets its own
+        Shown::Full { latex, unicode } if latex.contains(r"\frac") && unicode.chars().count() > 60 => {
+            format!(r"\fitmath{{{latex}}}")
+        }
         Shown::Full { latex, .. } => format!("${latex}$"),
         Shown::Summary {
             degree,
@@ -107,7 +127,7 @@ fn item_tex(group: &[Evidence], part: Option<&Part>, show_witness: bool) -> Stri
             .as_deref()
             .filter(|_| e.status != Some(Status::Holds))
         {
-            let _ = write!(out, ", printed \\texttt{{{}}}", tex_escape(p));
+            let _ = write!(out, ", printed \\texttt{{{}}}", tex_breakable(p));
         }
         if let Some(st) = e.status {
             let _ = write!(out, " --- \\textbf{{{st}}}");
@@ -213,7 +233,7 @@ pub fn tex_entries(entries: &[Entry], intro: &str, view: &View) -> String {
     let _ = writeln!(out, "\\subsection*{{Index}}\n");
     let _ = writeln!(
         out,
-        "{{\\small\n\\begin{{longtable}}{{L{{1.2cm}}L{{2.3cm}}L{{0.9cm}}L{{3.3cm}}L{{7.6cm}}}}\n\\caption*{{One line per claim}}\\\\\n\\hline\nclaim & verdict & doc. & source & printed \\\\\n\\hline\n\\endhead"
+        "{{\\small\n\\begin{{longtable}}{{L{{1.1cm}}L{{2.2cm}}L{{0.8cm}}L{{3.2cm}}L{{7.4cm}}}}\n\\caption*{{One line per claim}}\\\\\n\\hline\nclaim & verdict & doc. & source & printed \\\\\n\\hline\n\\endhead"
     );
     for e in &shown_entries {
         let id = if view.summary_only {
@@ -309,13 +329,77 @@ fn entry_tex(out: &mut String, e: &Entry, method: usize) {
             out,
             "\\textbf{{Figure:}} {} (\\texttt{{{}}}; data \\texttt{{{}}})\\par",
             tex_inline(f.caption),
-            tex_escape(f.path),
-            tex_escape(&f.data_path())
+            tex_breakable(f.path),
+            tex_breakable(&f.data_path())
         );
     }
     let _ = writeln!(out, "\\textbf{{Evidence:}}");
     evidence_tex(out, &v.evidence, witness.map(|(item, _)| item));
     out.push('\n');
+}
+
+/// What `pdflatex` said about a document.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct CompileLog {
+    /// The error lines (`! …`) of the log.
+    pub errors: Vec<String>,
+    /// Number of overfull boxes.
+    pub overfull: usize,
+    /// Their log lines (the first few).
+    pub overfull_lines: Vec<String>,
+    /// Pages written.
+    pub pages: usize,
+}
+
+/// Compiles `tex` with `pdflatex` (twice, for the links) in a temporary
+/// directory and reads the log; `None` when `pdflatex` is not installed
+/// (`./run.sh texlive` installs it). The tests of the reports and tables
+/// use this; nothing else runs TeX.
+pub fn compile(tex: &str, name: &str) -> Option<CompileLog> {
+    let probe = std::process::Command::new("pdflatex")
+        .arg("--version")
+        .output()
+        .ok()?;
+    if !probe.status.success() {
+        return None;
+    }
+    let dir = std::env::temp_dir().join(format!("trig-audit-tex-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&dir).ok()?;
+    std::fs::write(dir.join(format!("{name}.tex")), tex).ok()?;
+    for _ in 0..2 {
+        let _ = std::process::Command::new("pdflatex")
+            .args(["-interaction=nonstopmode", "-halt-on-error"])
+            .arg(format!("{name}.tex"))
+            .current_dir(&dir)
+            .output()
+            .ok()?;
+    }
+    let log = std::fs::read(dir.join(format!("{name}.log"))).ok()?;
+    let log = String::from_utf8_lossy(&log);
+    let overfull_lines: Vec<String> = log
+        .lines()
+        .filter(|l| l.starts_with("Overfull"))
+        .map(str::to_string)
+        .collect();
+    let pages = log
+        .lines()
+        .find_map(|l| l.split("Output written on ").nth(1))
+        .and_then(|rest| rest.split('(').nth(1))
+        .and_then(|n| n.split_whitespace().next())
+        .and_then(|n| n.parse().ok())
+        .unwrap_or(0);
+    let out = CompileLog {
+        errors: log
+            .lines()
+            .filter(|l| l.starts_with("! "))
+            .map(str::to_string)
+            .collect(),
+        overfull: overfull_lines.len(),
+        overfull_lines: overfull_lines.into_iter().take(10).collect(),
+        pages,
+    };
+    let _ = std::fs::remove_dir_all(&dir);
+    Some(out)
 }
 
 #[cfg(test)]

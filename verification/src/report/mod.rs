@@ -224,11 +224,22 @@ pub(crate) fn methods<'a>(entries: &[&'a Entry]) -> Vec<&'a str> {
     out
 }
 
-/// A method's short form: up to its first `;` or `,` (or the whole text
-/// when it has none), at most 60 characters.
+/// A method's short form: up to its first `;` or `,` outside brackets (or
+/// the whole text when it has none), at most 60 characters.
 pub(crate) fn method_short(method: &str) -> String {
-    let first = method.split([';', ',']).next().unwrap_or(method);
-    short(first.trim(), 60)
+    let mut depth = 0i32;
+    let end = method
+        .char_indices()
+        .find(|&(_, ch)| {
+            match ch {
+                '(' | '[' | '{' => depth += 1,
+                ')' | ']' | '}' => depth -= 1,
+                _ => {}
+            }
+            depth == 0 && (ch == ';' || ch == ',')
+        })
+        .map_or(method.len(), |(i, _)| i);
+    short(method[..end].trim(), 60)
 }
 
 /// The built-in Markdown report.

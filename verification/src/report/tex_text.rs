@@ -276,7 +276,9 @@ fn atom(ch: char) -> String {
         '\\' => r"\backslash ".into(),
         '$' | '&' | '#' | '%' => format!(r"\{ch}"),
         '~' => r"\sim ".into(),
-        '"' => "''".into(),
+        // an apostrophe after a superscript would be a second one
+        '\'' => r"\text{'}".into(),
+        '"' => r"\text{''}".into(),
         ' ' => " ".into(),
         _ if ch.is_ascii() => ch.to_string(),
         _ => match lookup(TEXT, ch) {
@@ -328,6 +330,20 @@ fn classify(word: &str) -> Token {
 /// (subscripts, superscripts, Unicode symbols, with the operators and short
 /// variable names between them) set as one formula each, the rest escaped.
 pub fn tex_inline(text: &str) -> String {
+    // `code spans` (commands, file names) in typewriter, the rest as prose
+    if text.contains('`') {
+        return text
+            .split('`')
+            .enumerate()
+            .map(|(i, part)| {
+                if i % 2 == 1 {
+                    format!(r"\texttt{{{}}}", tex_escape(part))
+                } else {
+                    tex_inline(part)
+                }
+            })
+            .collect();
+    }
     let words: Vec<&str> = text.split(' ').collect();
     let kinds: Vec<Token> = words.iter().map(|w| classify(w)).collect();
     let mut out: Vec<String> = Vec::new();
@@ -383,6 +399,10 @@ mod tests {
         assert_eq!(
             tex_inline("b_{j+2,i} of {a_b}"),
             r"$b_{j+2,i}$ of $\{a_{b}\}$"
+        );
+        assert_eq!(
+            tex_inline("run `trig-audit audit` now"),
+            r"run \texttt{trig-audit audit} now"
         );
     }
 
