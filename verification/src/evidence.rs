@@ -548,6 +548,12 @@ impl EvidenceList {
         self.0.extend(items.into_iter().map(Into::into));
     }
 
+    /// Inserts items before the first.
+    pub fn prepend<E: Into<Evidence>>(&mut self, items: impl IntoIterator<Item = E>) {
+        let head: Vec<Evidence> = items.into_iter().map(Into::into).collect();
+        self.0.splice(0..0, head);
+    }
+
     /// The items, owned.
     pub fn into_vec(self) -> Vec<Evidence> {
         self.0

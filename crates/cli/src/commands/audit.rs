@@ -1,8 +1,8 @@
 //! `trig-audit audit`: decide the published claims and print (or write) the
 //! report. Exit status 0 whenever the audit ran, whatever the verdicts.
 
-use std::io::Write;
-use std::path::{Path, PathBuf};
+
+use std::path::PathBuf;
 use std::time::Duration;
 
 use clap::{Args, ValueEnum};
