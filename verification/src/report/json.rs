@@ -170,13 +170,16 @@ pub fn schema() -> serde_json::Value {
     if let Some(obj) = s.as_object_mut() {
         obj.insert(
             "$id".into(),
-            format!("https://example.invalid/trig-audit/report-{SCHEMA_VERSION}.schema.json")
-                .into(),
+            format!("urn:trig-audit:report-schema:{SCHEMA_VERSION}").into(),
         );
         obj.insert(
             "description".into(),
             format!("The JSON report of `trig-audit audit --format json`, format {SCHEMA_NAME} version {SCHEMA_VERSION}.").into(),
         );
+        // a report of another format or version does not validate
+        let props = &mut obj["properties"];
+        props["schema"]["const"] = SCHEMA_NAME.into();
+        props["schema_version"]["const"] = SCHEMA_VERSION.into();
     }
     s
 }
@@ -198,5 +201,6 @@ mod tests {
         let s = schema();
         assert_eq!(s["title"], "trig-audit report");
         assert!(s["$defs"]["Evidence"].is_object(), "{s}");
+        assert_eq!(s["properties"]["schema_version"]["const"], SCHEMA_VERSION);
     }
 }

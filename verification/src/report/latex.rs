@@ -9,7 +9,10 @@
 use std::fmt::Write;
 
 use super::markdown::{Shown, shown};
-use super::{Entry, View, counts, method_short, methods, plural, sections, short};
+use super::{
+    Entry, PRINTED_LONG, View, counts, method_short, methods, printed_shown, sections, short,
+    size_text,
+};
 use crate::evidence::{Evidence, Expr, Part, Witness};
 use crate::verdict::Status;
 
@@ -59,7 +62,9 @@ pub fn tex_breakable(text: &str) -> String {
 fn expr_tex(e: &Expr) -> String {
     match shown(e, LONG) {
         // a fraction cannot break across lines: a long one gets its own
-        Shown::Full { latex, unicode } if latex.contains(r"\frac") && unicode.chars().count() > 60 => {
+        Shown::Full { latex, unicode }
+            if latex.contains(r"\frac") && unicode.chars().count() > 60 =>
+        {
             format!(r"\fitmath{{{latex}}}")
         }
         Shown::Full { latex, .. } => format!("${latex}$"),
@@ -69,10 +74,7 @@ fn expr_tex(e: &Expr) -> String {
             factored,
         } => {
             let f = factored.map_or(String::new(), |(_, l)| format!(", factored ${l}$"));
-            format!(
-                "[long: numerator of degree {degree} with {}{f}; in full in the JSON report]",
-                plural(terms, "term", "terms")
-            )
+            format!("[{}{f}; in full in JSON]", size_text(degree, terms))
         }
     }
 }
@@ -95,10 +97,11 @@ fn witness_tex(w: &Witness) -> String {
         .note
         .as_ref()
         .map_or(String::new(), |n| format!(" ({})", tex_inline(n)));
+    // exact unless marked (the report's opening says so)
     let values = format!(
-        "{} ({})",
+        "{}{}",
         values.join(", "),
-        if w.exact { "exact" } else { "numeric" }
+        if w.exact { "" } else { " (numeric)" }
     );
     if point.is_empty() && note.is_empty() {
         values
@@ -127,7 +130,10 @@ fn item_tex(group: &[Evidence], part: Option<&Part>, show_witness: bool) -> Stri
             .as_deref()
             .filter(|_| e.status != Some(Status::Holds))
         {
-            let _ = write!(out, ", printed \\texttt{{{}}}", tex_breakable(p));
+            let _ = match printed_shown(p, LONG) {
+                Some(p) => write!(out, ", printed \\texttt{{{}}}", tex_breakable(p)),
+                None => write!(out, ", {PRINTED_LONG}"),
+            };
         }
         if let Some(st) = e.status {
             let _ = write!(out, " --- \\textbf{{{st}}}");
@@ -195,7 +201,11 @@ pub fn tex_entries(entries: &[Entry], intro: &str, view: &View) -> String {
     let shown_entries = view.select(entries);
     let mut out = String::from(preamble());
     out.push_str("\\begin{document}\n\\section*{trig-audit report}\n\n");
-    let _ = writeln!(out, "{}\n", tex_inline(intro));
+    let _ = writeln!(
+        out,
+        "{} Witness values are exact unless marked numeric. Long expressions are summarised here; the JSON report gives every expression in full.\n",
+        tex_inline(intro)
+    );
     if let Some(n) = view.note() {
         let _ = writeln!(out, "{}\n", tex_escape(&n));
     }

@@ -6,12 +6,15 @@
 
 use std::fmt::Write;
 
-use super::{Entry, View, counts, method_short, methods, plural, sections, short};
+use super::{
+    Entry, PRINTED_LONG, View, counts, method_short, methods, printed_shown, sections, short,
+    size_text,
+};
 use crate::evidence::{Evidence, Expr, Part, Witness};
 use crate::verdict::Status;
 
 /// Expressions with more characters are summarised.
-pub const LONG: usize = 200;
+pub const LONG: usize = 120;
 
 /// Markdown text: the characters Markdown would read as markup escaped.
 pub fn md_text(text: &str) -> String {
@@ -70,10 +73,7 @@ fn expr_md(e: &Expr) -> String {
             factored,
         } => {
             let f = factored.map_or(String::new(), |u| format!(", factored {}", code(u.0)));
-            format!(
-                "[long: numerator of degree {degree} with {}{f}; in full in the JSON report]",
-                plural(terms, "term", "terms")
-            )
+            format!("[{}{f}; in full in JSON]", size_text(degree, terms))
         }
     }
 }
@@ -114,10 +114,11 @@ pub(crate) fn witness_md(w: &Witness) -> String {
         .note
         .as_ref()
         .map_or(String::new(), |n| format!(" ({})", md_text(n)));
+    // exact unless marked (the report's opening says so)
     let values = format!(
-        "{} ({})",
+        "{}{}",
         values.join(", "),
-        if w.exact { "exact" } else { "numeric" }
+        if w.exact { "" } else { " (numeric)" }
     );
     if point.is_empty() && note.is_empty() {
         values
@@ -148,7 +149,10 @@ fn item_md(group: &[Evidence], part: Option<&Part>, show_witness: bool) -> Strin
             .as_deref()
             .filter(|_| e.status != Some(Status::Holds))
         {
-            let _ = write!(out, ", printed {}", code(p));
+            let _ = match printed_shown(p, LONG) {
+                Some(p) => write!(out, ", printed {}", code(p)),
+                None => write!(out, ", {PRINTED_LONG}"),
+            };
         }
         if let Some(st) = e.status {
             let _ = write!(out, " — **{st}**");
@@ -210,7 +214,7 @@ pub fn markdown_entries(entries: &[Entry], intro: &str, view: &View) -> String {
     let _ = writeln!(out, "# trig-audit report\n");
     let _ = writeln!(
         out,
-        "{intro} Long expressions are summarised here; the JSON report (`--format json`, schema `docs/report.schema.json`) gives every expression in full, in Unicode, LaTeX, SymPy syntax and factored form.\n"
+        "{intro} Witness values are exact unless marked numeric. Long expressions are summarised here; the JSON report (`--format json`, schema `docs/report.schema.json`) gives every expression in full, in Unicode, LaTeX, SymPy syntax and factored form.\n"
     );
     if let Some(n) = view.note() {
         let _ = writeln!(out, "{n}\n");
@@ -316,7 +320,7 @@ fn entry_md(out: &mut String, e: &Entry, method: usize) {
     let _ = writeln!(out, "- **Printed:** {}", md_text(&e.statement));
     let _ = writeln!(
         out,
-        "- **How:** [method {method}](#method-{method}), {}",
+        "- **How:** [{}](#method-{method})",
         md_text(&method_short(&v.method))
     );
     if let Some(corr) = &v.correction {

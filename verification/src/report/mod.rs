@@ -174,6 +174,23 @@ pub fn plural(n: usize, singular: &str, plural: &str) -> String {
     format!("{n} {}", if n == 1 { singular } else { plural })
 }
 
+/// The size of a summarised expression: `degree 15, 315 terms`.
+pub(crate) fn size_text(degree: u64, terms: usize) -> String {
+    format!(
+        "numerator of degree {degree}, {}",
+        plural(terms, "term", "terms")
+    )
+}
+
+/// What stands for a printed formula too long to repeat (the seed has it,
+/// the JSON report too).
+pub(crate) const PRINTED_LONG: &str = "printed formula as in the seed";
+
+/// A printed formula, if it is short enough to repeat beside its check.
+pub(crate) fn printed_shown(printed: &str, long: usize) -> Option<&str> {
+    (printed.chars().count() <= long).then_some(printed)
+}
+
 /// A statement shortened to at most `max` characters for the index.
 pub(crate) fn short(text: &str, max: usize) -> String {
     if text.chars().count() <= max {
@@ -225,7 +242,8 @@ pub(crate) fn methods<'a>(entries: &[&'a Entry]) -> Vec<&'a str> {
 }
 
 /// A method's short form: up to its first `;` or `,` outside brackets (or
-/// the whole text when it has none), at most 60 characters.
+/// the whole text when it has none), cut after a word to at most 40
+/// characters (the full method is stated once, in the methods list).
 pub(crate) fn method_short(method: &str) -> String {
     let mut depth = 0i32;
     let end = method
@@ -239,7 +257,13 @@ pub(crate) fn method_short(method: &str) -> String {
             depth == 0 && (ch == ';' || ch == ',')
         })
         .map_or(method.len(), |(i, _)| i);
-    short(method[..end].trim(), 60)
+    let text = method[..end].trim();
+    if text.chars().count() <= 40 {
+        return text.to_string();
+    }
+    let cut: String = text.chars().take(40).collect();
+    let words = cut.rfind(' ').map_or(cut.as_str(), |i| &cut[..i]);
+    format!("{}…", words.trim_end_matches([',', ':', ';']))
 }
 
 /// The built-in Markdown report.

@@ -107,9 +107,8 @@ fn several(spec: &Spec, maximal: bool) -> Verdict {
             let mut v = region_audit::contained(&fs, &names, trig, &axes);
             if maximal && v.status == Status::Holds {
                 v.status = Status::NotCheckable;
-                v.evidence.push(
-                    "maximality is decided for two parameters at most: containment only",
-                );
+                v.evidence
+                    .push("maximality is decided for two parameters at most: containment only");
             }
             v
         }

@@ -1,7 +1,6 @@
 //! `trig-audit audit`: decide the published claims and print (or write) the
 //! report. Exit status 0 whenever the audit ran, whatever the verdicts.
 
-
 use std::path::PathBuf;
 use std::time::Duration;
 

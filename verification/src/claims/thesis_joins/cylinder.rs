@@ -175,7 +175,10 @@ pub fn t26k() -> Verdict {
                     note: Some(format!("{name}, the listing's nets (m = 1)")),
                     values: vec![Value {
                         label: f.split(" = ").next().unwrap_or_default().to_string(),
-                        value: Expr::literal(&format!("({vector})"), &format!("Matrix([{vector}])")),
+                        value: Expr::literal(
+                            &format!("({vector})"),
+                            &format!("Matrix([{vector}])"),
+                        ),
                     }],
                     exact: true,
                 });
