@@ -188,10 +188,10 @@ impl Band {
         let mut x = vec![[0.0; C]; n];
         for k in (0..n).rev() {
             let mut r = b[k];
-            for j in k + 1..=self.last(k) {
+            for (j, xj) in x.iter().enumerate().take(self.last(k) + 1).skip(k + 1) {
                 let a = self.get(k, j);
-                for (c, v) in r.iter_mut().enumerate() {
-                    *v -= a * x[j][c];
+                for (v, xc) in r.iter_mut().zip(xj) {
+                    *v -= a * xc;
                 }
             }
             let pivot = self.get(k, k);

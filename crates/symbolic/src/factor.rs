@@ -83,8 +83,10 @@ pub struct FactoredQuotient {
 impl Poly {
     /// The display factorisation (see the [module documentation](self)).
     pub fn factor(&self) -> Factored {
-        let mut acc = Accumulator::default();
-        acc.unit = Rational::from(1);
+        let mut acc = Accumulator {
+            unit: Rational::from(1),
+            ..Accumulator::default()
+        };
         if self.is_zero() {
             acc.unit = Rational::new();
             return acc.finish();

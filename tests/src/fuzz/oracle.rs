@@ -169,7 +169,7 @@ fn reference(bits: u32, f: &dyn Fn(u32) -> Option<Vec<Float>>) -> Option<Vec<Ref
         .zip(&b)
         .map(|(a, b)| {
             let (ra, rb) = (a.to_rational()?, b.to_rational()?);
-            let last = Rational::from(rb.clone().abs()) >> (2 * bits - 8);
+            let last = rb.clone().abs() >> (2 * bits - 8);
             let err = Rational::from(&ra - &rb).abs() * 4u32 + last;
             Some(Reference { x: rb, err })
         })
@@ -453,7 +453,7 @@ fn table(
             && exact(value).is_some_and(|v| {
                 let tol = heading_bound
                     .clone()
-                    .unwrap_or_else(|| Rational::from(&scale * Rational::from((1, 100_000_000))));
+                    .unwrap_or_else(|| &scale * Rational::from((1, 100_000_000)));
                 holds(&Claim::Near { value: v, tol }, &refs[i])
             });
         if !(digits_ok || f64_ok) {
