@@ -231,6 +231,12 @@ pub fn to_math(text: &str) -> String {
                         braces.push(true);
                         i += 2;
                     }
+                    // `^(−3)`, `F^(4)`: the bracketed group is the script
+                    Some('(') if let Some(end) = closing(&chars, i + 1) => {
+                        let group: String = chars[i + 1..=end].iter().collect();
+                        out.push_str(&format!("{{{}}}", to_math(&group)));
+                        i = end + 1;
+                    }
                     Some(&next) => {
                         out.push_str(&format!("{{{}}}", atom(next)));
                         i += 2;
@@ -260,6 +266,24 @@ pub fn to_math(text: &str) -> String {
         }
     }
     out
+}
+
+/// The index of the `)` closing the `(` at `open`, if any.
+fn closing(chars: &[char], open: usize) -> Option<usize> {
+    let mut depth = 0usize;
+    for (k, c) in chars.iter().enumerate().skip(open) {
+        match c {
+            '(' => depth += 1,
+            ')' => {
+                depth -= 1;
+                if depth == 0 {
+                    return Some(k);
+                }
+            }
+            _ => {}
+        }
+    }
+    None
 }
 
 /// One character in math mode.
@@ -396,6 +420,10 @@ mod tests {
         );
         assert_eq!(tex_inline("the set {1, 2}"), r"the set \{1, 2\}");
         assert_eq!(tex_inline("P_{i,j} x̄"), r"$P_{i,j} \bar{x}$");
+        assert_eq!(
+            to_math("(1 + z²)^(−3) F^(4)"),
+            r"(1 + z^{2})^{(-3)} F^{(4)}"
+        );
         assert_eq!(
             tex_inline("b_{j+2,i} of {a_b}"),
             r"$b_{j+2,i}$ of $\{a_{b}\}$"
