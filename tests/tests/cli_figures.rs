@@ -31,7 +31,7 @@ fn every_linked_figure_is_drawn_by_its_command_and_committed() {
             .split_whitespace()
             .map(|a| if a == f.path { target.as_str() } else { a })
             .collect();
-        let out = trig_e2e::stdout_ok(&args);
+        let out = trig_e2e::written(&args);
         assert!(out.contains("wrote"), "{}: {out}", f.claim);
         let svg = std::fs::read_to_string(&target).expect("figure written");
         assert!(

@@ -16,6 +16,7 @@ use trig_verification::region_audit::{Axis, classify_window};
 
 use super::fit::{FitSetup, Runs, prepare};
 use super::{CliError, CmdResult, range_hint};
+use crate::output::{write_atomically, wrote};
 
 #[derive(Debug, Args)]
 pub struct PlotArgs {
@@ -127,14 +128,12 @@ fn values(family: Family, given: &[String]) -> Result<Vec<Rational>, CliError> {
         .collect())
 }
 
+/// Writes the picture atomically (the note on standard error; standard
+/// output stays empty).
 fn write(output: &Path, svg: &str) -> CmdResult {
-    std::fs::write(output, svg)
-        .map_err(|e| CliError::Usage(format!("cannot write {}: {e}", output.display())))?;
-    Ok(format!(
-        "wrote {} ({} bytes)\n",
-        output.display(),
-        svg.len()
-    ))
+    write_atomically(output, svg.as_bytes())?;
+    wrote(output, &format!("{} bytes", svg.len()));
+    Ok(String::new())
 }
 
 fn plot_err(e: trig_plot::PlotError) -> CliError {
