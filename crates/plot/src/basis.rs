@@ -9,6 +9,9 @@ use crate::error::{Result, draw};
 use crate::picture::{Picture, Series};
 use crate::style::{SIZE, chart, colour, legend, padded, settings};
 
+/// The curves of one setting, one per function.
+type Curves = Vec<Vec<(f64, f64)>>;
+
 /// Points per function.
 const SAMPLES: usize = 201;
 
@@ -35,11 +38,11 @@ pub fn basis_svg(family: Family, values: &[Rational], allow_outside: bool) -> Re
         .collect();
     // settings whose functions coincide are drawn once, labelled with
     // every value (`λ = 0, 1`)
-    let mut series: Vec<(Vec<Vec<Rational>>, Vec<Vec<(f64, f64)>>)> = Vec::new();
+    let mut series: Vec<(Vec<Vec<Rational>>, Curves)> = Vec::new();
     for s in &settings {
         // function-major: one slice of SAMPLES values per function
         let values = Batch::new(family, s, &0.0, true)?.eval(&xs)?;
-        let curves: Vec<Vec<(f64, f64)>> = values
+        let curves: Curves = values
             .chunks(SAMPLES)
             .map(|column| xs.iter().copied().zip(column.iter().copied()).collect())
             .collect();
