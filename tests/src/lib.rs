@@ -105,6 +105,17 @@ pub fn stdout_ok(args: &[&str]) -> String {
     String::from_utf8(out.stdout).expect("utf-8 output")
 }
 
+/// Runs a `trig-audit` command that writes a file (`--output`): asserts
+/// success and an empty standard output, returns standard error (the
+/// `wrote …` note).
+pub fn written(args: &[&str]) -> String {
+    let out = run(args);
+    let err = String::from_utf8(out.stderr).expect("utf-8 errors");
+    assert!(out.status.success(), "trig-audit {args:?} failed: {err}");
+    assert!(out.stdout.is_empty(), "trig-audit {args:?} printed results");
+    err
+}
+
 /// Runs `trig-audit`, asserts failure with a one-line `error: …` message,
 /// returns that line.
 pub fn error_line(args: &[&str]) -> String {

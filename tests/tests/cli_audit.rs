@@ -28,22 +28,35 @@ fn output_file_is_written_whole() {
     let dir = std::env::temp_dir().join(format!("trig-audit-e2e-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("temp dir");
     let path = dir.join("report.md");
-    let msg = stdout_ok(&[
+    let msg = trig_e2e::written(&[
         "audit",
         "--seed",
         "004",
         "--output",
         path.to_str().expect("utf-8 path"),
     ]);
-    assert!(msg.starts_with("wrote "));
+    assert!(msg.starts_with("wrote "), "{msg}");
     let written = std::fs::read_to_string(&path).expect("report written");
     assert_eq!(written, stdout_ok(&["audit", "--seed", "004"]));
     let leftovers: Vec<_> = std::fs::read_dir(&dir)
         .expect("list")
         .filter_map(Result::ok)
-        .filter(|e| e.file_name().to_string_lossy().contains(".tmp-"))
+        .filter(|e| e.file_name() != "report.md")
         .collect();
     assert!(leftovers.is_empty(), "no temporary file left behind");
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        let mode = std::fs::metadata(&path)
+            .expect("written")
+            .permissions()
+            .mode();
+        assert_eq!(
+            mode & 0o777,
+            0o644,
+            "an ordinary file, not the private temporary one"
+        );
+    }
     std::fs::remove_dir_all(&dir).ok();
 }
 

@@ -31,7 +31,7 @@ fn every_linked_figure_is_drawn_by_its_command_and_committed() {
             .split_whitespace()
             .map(|a| if a == f.path { target.as_str() } else { a })
             .collect();
-        let out = trig_e2e::stdout_ok(&args);
+        let out = trig_e2e::written(&args);
         assert!(out.contains("wrote"), "{}: {out}", f.claim);
         let svg = std::fs::read_to_string(&target).expect("figure written");
         assert!(
@@ -39,7 +39,15 @@ fn every_linked_figure_is_drawn_by_its_command_and_committed() {
             "{}",
             f.claim
         );
+        let data = std::fs::read_to_string(Path::new(&target).with_extension("csv"))
+            .expect("the data written beside the figure");
+        assert!(data.starts_with("series,point,x,y\n"), "{}", f.claim);
         assert!(root().join(f.path).exists(), "{} is not committed", f.path);
+        assert!(
+            root().join(f.data_path()).exists(),
+            "{} is not committed",
+            f.data_path()
+        );
     }
     let _ = std::fs::remove_dir_all(&scratch);
 }

@@ -227,7 +227,7 @@ fn plots_are_written_as_svg() {
         let mut all: Vec<&str> = vec!["plot"];
         all.extend(args.iter().map(String::as_str));
         all.extend(["--output", file.as_str()]);
-        let msg = stdout_ok(&all);
+        let msg = trig_e2e::written(&all);
         assert!(msg.starts_with("wrote "), "{msg}");
         let svg = std::fs::read_to_string(&file).unwrap();
         assert!(

@@ -48,7 +48,7 @@ fn plot_curve_with_control_points_at_1e308_is_an_error_not_a_panic() {
     assert!(err.contains("cannot be drawn"), "{err}");
     // large but drawable
     let large = "--control=-1e299,0,1e299,0,1e299,1e299,-1e299,1e299";
-    let ok = stdout_ok(&plot(
+    let ok = trig_e2e::written(&plot(
         "curve",
         "thesis-cubic",
         &["--values=0.5", large],

@@ -73,7 +73,10 @@ fn every_format_renders() {
     assert!(md.contains("| k | b0 | b1 | b2 | b3 |"));
     let tex = stdout_ok(&[&base[..], &["--format", "tex"]].concat());
     assert!(
-        tex.contains("\\begin{tabular}") && tex.contains("$-m - 2$"),
+        tex.contains("\\begin{longtable}")
+            && tex.contains("\\caption{start of the domain}")
+            && tex.contains("$b_{0}$")
+            && tex.contains("$-m - 2$"),
         "{tex}"
     );
     let csv = stdout_ok(&[&base[..], &["--format", "csv"]].concat());
@@ -166,4 +169,36 @@ fn bad_table_requests_are_one_line_errors() {
         ),
     ];
     assert_errors(cases);
+}
+
+/// The LaTeX tables are complete documents that compile with pdflatex and
+/// fit the page — the rational curve table too (set one entry per line, its
+/// fractions inline so that they break) — when `pdflatex` is on the machine.
+#[test]
+fn latex_tables_compile() {
+    for (name, args) in [
+        ("basis", &["table", "thesis-cubic", "--order", "6"][..]),
+        (
+            "rational",
+            &[
+                "table",
+                "thesis-cubic",
+                "--order",
+                "6",
+                "--curve",
+                "--rational",
+            ][..],
+        ),
+    ] {
+        let tex = stdout_ok(&[args, &["--format", "tex"]].concat());
+        assert!(tex.starts_with("\\documentclass") && tex.ends_with("\\end{document}\n"));
+        match trig_verification::report::latex::compile(&tex, &format!("table-{name}")) {
+            Some(log) => {
+                assert!(log.errors.is_empty(), "{name}: {:#?}", log.errors);
+                assert_eq!(log.overfull, 0, "{name}: {:#?}", log.overfull_lines);
+                assert!(log.pages >= 1);
+            }
+            None => eprintln!("pdflatex not found: the {name} table was not compiled"),
+        }
+    }
 }

@@ -65,7 +65,7 @@ mod tests {
         assert_eq!(slow.status, Status::NotCheckable);
         assert!(slow.evidence[0].contains("time limit"), "{slow:?}");
         let fast = within(Duration::from_secs(5), || {
-            Verdict::new(Status::Holds, "m", vec![])
+            Verdict::new(Status::Holds, "m", Vec::<String>::new())
         });
         assert_eq!(fast.status, Status::Holds);
     }

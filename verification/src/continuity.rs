@@ -25,6 +25,8 @@ use trig_core::{CoreError, Family};
 use trig_deriv::{End, Jet, Wrt, angle_atoms, curve_endpoint_derivatives, knot_derivatives};
 use trig_symbolic::{Monomial, Poly, Sym};
 
+use crate::evidence::{Evidence, Expr, Kind};
+
 /// How continuity is decided, as the report states it.
 pub const METHOD: &str = "exact one-sided derivatives of orders 0–6 (Taylor jets in the symbolic ring) at every knot; a jump is decided by the exact zero test; exceptional parameter values are the rational roots of the first nonzero jump's numerator";
 
@@ -144,23 +146,39 @@ impl KnotContinuity {
         first_jump(&self.jumps)
     }
 
+    /// A point where the first nonzero jump is visibly nonzero, with its
+    /// exact value there (right − left).
+    pub fn witness(&self) -> Option<crate::evidence::Witness> {
+        let (r, j) = self.first_jump()?;
+        let mut w = crate::witness::find(j, &Sym::zero(), (&format!("jump of order {r}"), "0"))?;
+        w.values.truncate(1);
+        Some(w)
+    }
+
     /// One line for the report.
-    pub fn describe(&self, param: Option<&str>) -> String {
-        let mut line = format!("knot {}: {}", self.knot, self.smoothness);
-        if let Some((r, j)) = self.first_jump() {
-            line.push_str(&format!("; jump of order {r} = {j}"));
-        }
+    pub fn describe(&self, param: Option<&str>) -> Evidence {
+        let mut text = self.smoothness.to_string();
         let p = param.unwrap_or("parameter");
         for e in &self.exceptions {
-            line.push_str(&format!("; at {p} = {}: {}", e.value, e.smoothness));
-            if let Some((r, j)) = &e.jump {
-                line.push_str(&format!(" (order-{r} jump {j})"));
-            }
+            text.push_str(&format!("; at {p} = {}: {}", e.value, e.smoothness));
         }
         if self.roots_incomplete {
-            line.push_str("; (rational-root search incomplete: coefficients too large)");
+            text.push_str("; (rational-root search incomplete: coefficients too large)");
         }
-        line
+        let mut item = Evidence::new(Kind::Identity, text);
+        item.subject = Some(format!("knot {}", self.knot));
+        if let Some((r, j)) = self.first_jump() {
+            item = item.with(format!("jump of order {r}"), Expr::new(j));
+        }
+        for e in &self.exceptions {
+            if let Some((r, j)) = &e.jump {
+                item = item.with(
+                    format!("jump of order {r} at {p} = {}", e.value),
+                    Expr::new(j),
+                );
+            }
+        }
+        item
     }
 }
 

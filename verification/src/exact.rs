@@ -8,7 +8,9 @@ use trig_core::{Atoms, Family};
 use trig_deriv::End;
 use trig_symbolic::{Sym, symbolic_atoms};
 
+use crate::evidence::{Evidence, Expr, Kind};
 use crate::verdict::{Status, Verdict};
+use crate::witness;
 
 /// How identities are decided, as the report states it.
 pub const IDENTITY: &str =
@@ -62,38 +64,39 @@ pub fn at_end(e: &Sym, end: End) -> Sym {
 
 /// Decides `lhs = rhs` exactly: holds, or fails with the residual.
 pub fn identity(label: &str, lhs: &Sym, rhs: &Sym) -> Verdict {
-    Verdict::all(
-        IDENTITY,
-        vec![(label.to_string(), residual_verdict(lhs, rhs))],
-    )
+    identities(vec![(label.to_string(), lhs.clone(), rhs.clone())])
+}
+
+/// The evidence item of `lhs = rhs` about `label`: the residual exactly 0,
+/// or the residual `lhs − rhs` with a witness (a rational point where the
+/// two sides differ, both values exact).
+pub fn identity_item(label: &str, lhs: &Sym, rhs: &Sym) -> Evidence {
+    let residual = lhs.clone() - rhs;
+    if residual.is_zero() {
+        return Evidence::new(Kind::Identity, "residual is exactly 0").about(label, Status::Holds);
+    }
+    Evidence::new(Kind::Identity, "")
+        .about(label, Status::Fails)
+        .with("residual (left − right)", Expr::new(&residual))
+        .witnessed(witness::find(lhs, rhs, ("left", "right")))
 }
 
 /// The verdict on `lhs = rhs` with the residual as its only evidence.
 pub fn residual_verdict(lhs: &Sym, rhs: &Sym) -> Verdict {
-    let residual = lhs.clone() - rhs;
-    let (status, evidence) = if residual.is_zero() {
-        (Status::Holds, "residual is exactly 0".to_string())
-    } else {
-        (
-            Status::Fails,
-            format!("residual (left − right) = {residual}"),
-        )
-    };
-    Verdict::new(status, IDENTITY, vec![evidence])
+    let mut item = identity_item("", lhs, rhs);
+    item.subject = None;
+    let status = item.status.unwrap_or(Status::NotCheckable);
+    Verdict::new(status, IDENTITY, [item])
 }
 
 /// Decides several identities that together make one claim.
 pub fn identities(parts: Vec<(String, Sym, Sym)>) -> Verdict {
-    Verdict::all(
-        IDENTITY,
-        parts
-            .into_iter()
-            .map(|(label, l, r)| {
-                let v = residual_verdict(&l, &r);
-                (label, v)
-            })
-            .collect(),
-    )
+    let items: Vec<Evidence> = parts
+        .iter()
+        .map(|(label, l, r)| identity_item(label, l, r))
+        .collect();
+    let status = Status::conjunction(items.iter().filter_map(|e| e.status));
+    Verdict::new(status, IDENTITY, items)
 }
 
 /// The sum of a list of expressions.
@@ -113,6 +116,36 @@ pub fn combination(coeffs: &[Sym], points: &[Sym]) -> Sym {
         .zip(points)
         .map(|(c, p)| c.clone() * p)
         .collect::<Vec<_>>())
+}
+
+/// Invariance under a linear map of plane curves, `C(P_i·M) = C(P_i)·M`
+/// for points `P_i = (x_i, y_i)` as row vectors and a symbolic matrix
+/// `M = [[M11, M12], [M21, M22]]`: the two coordinates as identities, for a
+/// curve given as a function of its control points (one coordinate at a
+/// time; weights or parameters stay inside `curve`).
+pub fn linear_map_parts(
+    name: &str,
+    n: usize,
+    curve: impl Fn(&[Sym]) -> Sym,
+) -> Vec<(String, Sym, Sym)> {
+    let (x, y) = (symbols("x", n), symbols("y", n));
+    let m = |i: usize, j: usize| Sym::var(&format!("M{i}{j}"));
+    let column = |j: usize| -> Vec<Sym> {
+        x.iter()
+            .zip(&y)
+            .map(|(xi, yi)| xi.clone() * &m(1, j) + &(yi.clone() * &m(2, j)))
+            .collect()
+    };
+    let (cx, cy) = (curve(&x), curve(&y));
+    (1..=2)
+        .map(|j| {
+            (
+                format!("coordinate {j} of {name}(P_i·M) − {name}(P_i)·M"),
+                curve(&column(j)),
+                cx.clone() * &m(1, j) + &(cy.clone() * &m(2, j)),
+            )
+        })
+        .collect()
 }
 
 /// The symmetry `f_i(x) = f_{n−1−i}(x̄)` for the listed `i`, with `x̄` the
@@ -157,6 +190,9 @@ mod tests {
         let v = identity("wrong", &(s.clone() * &s), &one);
         assert_eq!(v.status, Status::Fails);
         assert!(v.evidence[0].contains("-c^2"), "{:?}", v.evidence);
+        let w = v.evidence[0].witness.as_ref().expect("a witness");
+        // simplified to θ = 0 (s = 0, c = 1): s² = 0 against 1
+        assert_eq!(w.values[0].value.unicode, "0");
     }
 
     #[test]

@@ -42,6 +42,16 @@ pub const FIGURES: &[Figure] = &[
     },
 ];
 
+impl Figure {
+    /// The data of the figure: a CSV file beside it (same name).
+    pub fn data_path(&self) -> String {
+        match self.path.rsplit_once('.') {
+            Some((stem, _)) => format!("{stem}.csv"),
+            None => format!("{}.csv", self.path),
+        }
+    }
+}
+
 /// The figure of a claim, if any.
 pub fn for_claim(id: &str) -> Option<&'static Figure> {
     FIGURES.iter().find(|f| f.claim == id)

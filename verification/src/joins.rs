@@ -23,8 +23,10 @@ use trig_core::Family;
 use trig_deriv::{JoinKind, JoinSetup, Wrt, solve_join, vanishing};
 use trig_symbolic::Sym;
 
+use crate::evidence::{Evidence, Expr, Kind};
 use crate::exact::{basis, sum};
 use crate::verdict::{Status, Verdict};
+use crate::witness;
 
 /// How printed joins are decided, as the report states it.
 pub const METHOD: &str = "printed formula substituted into the join conditions, residual decided exactly in the symbolic ring; conventions θ (angle), u (θ = πu/2), x (θ = π(x − x_i)/(2h_i), h₁ ≠ h₂)";
@@ -127,34 +129,78 @@ impl PrintedJoin {
             .residuals(self.kind, &self.first, &self.second_points(wrt, printed))
     }
 
-    /// The derived formulas for the printed points, in `wrt`, as text, with
-    /// the parameter values where they are singular.
-    fn derived(&self, wrt: Wrt) -> String {
+    /// The derived formulas for the printed points, in `wrt`: `(point,
+    /// value, where singular)`, or why there is no solution.
+    fn derived_points(&self, wrt: Wrt) -> Result<Vec<(usize, Sym, Vec<String>)>, String> {
         let setup = self.setup(wrt);
         match solve_join(&setup, self.kind, &self.first, &self.second) {
-            Ok(join) => {
-                let names = self.names();
-                join.forced
-                    .iter()
-                    .filter(|f| self.printed.iter().any(|p| p.point == f.index))
-                    .map(|f| {
-                        let singular = vanishing(&f.pivot);
-                        let note = if singular.is_empty() {
-                            String::new()
-                        } else {
-                            format!(" (singular where {})", singular.join(", "))
-                        };
-                        format!(
-                            "{} = {}{note}",
-                            self.second[f.index].to_unicode(),
-                            f.value.to_combination(&names)
-                        )
-                    })
-                    .collect::<Vec<_>>()
-                    .join("; ")
-            }
-            Err(e) => format!("no solution: {e}"),
+            Ok(join) => Ok(join
+                .forced
+                .iter()
+                .filter(|f| self.printed.iter().any(|p| p.point == f.index))
+                .map(|f| (f.index, f.value.clone(), vanishing(&f.pivot)))
+                .collect()),
+            Err(e) => Err(format!("no solution: {e}")),
         }
+    }
+
+    /// The derived formulas for the printed points, in `wrt`, as text (each
+    /// coefficient factored), with the parameter values where they are
+    /// singular.
+    fn derived(&self, wrt: Wrt) -> String {
+        let names = self.names();
+        match self.derived_points(wrt) {
+            Ok(points) => points
+                .iter()
+                .map(|(i, value, singular)| {
+                    let note = if singular.is_empty() {
+                        String::new()
+                    } else {
+                        format!(" (singular where {})", singular.join(", "))
+                    };
+                    format!(
+                        "{} = {}{note}",
+                        self.second[*i].to_unicode(),
+                        Expr::combination(value, &names).best_unicode()
+                    )
+                })
+                .collect::<Vec<_>>()
+                .join("; "),
+            Err(e) => e,
+        }
+    }
+
+    /// The derived formulas as an evidence item, with a witness where a
+    /// printed point differs from the derived one: control points and
+    /// parameters at which both are evaluated exactly.
+    fn derived_item(&self, wrt: Wrt, printed: &[Printed]) -> Evidence {
+        let names = self.names();
+        let mut item = Evidence::new(Kind::Derived, "")
+            .about(format!("derived ({})", convention(wrt)), Status::Holds);
+        item.status = None;
+        let points = match self.derived_points(wrt) {
+            Ok(points) => points,
+            Err(e) => {
+                item.text = e;
+                return item;
+            }
+        };
+        let shown = self.second_points(wrt, printed);
+        for (i, value, singular) in &points {
+            let name = self.second[*i].to_unicode();
+            item = item.with(name.clone(), Expr::combination(value, &names));
+            if !singular.is_empty() {
+                item.text = format!("singular where {}", singular.join(", "));
+            }
+            if item.witness.is_none() && !(shown[*i].clone() - value).is_zero() {
+                item.witness = witness::find(
+                    &shown[*i],
+                    value,
+                    (&format!("printed {name}"), &format!("derived {name}")),
+                );
+            }
+        }
+        item
     }
 }
 
@@ -167,18 +213,35 @@ fn convention(wrt: Wrt) -> &'static str {
     }
 }
 
-fn describe(residuals: &[Sym], names: &[String]) -> String {
-    let nonzero: Vec<String> = residuals
+/// The residuals of one convention as an evidence item.
+fn describe(wrt: Wrt, residuals: &[Sym], names: &[String]) -> Evidence {
+    let nonzero: Vec<(usize, &Sym)> = residuals
         .iter()
         .enumerate()
         .filter(|(_, r)| !r.is_zero())
-        .map(|(k, r)| format!("order {k}: {}", r.to_combination(names)))
         .collect();
     if nonzero.is_empty() {
-        "every condition holds exactly".to_string()
-    } else {
-        format!("residual (left − right) {}", nonzero.join("; "))
+        return Evidence::new(Kind::Join, "every condition holds exactly")
+            .about(convention(wrt), Status::Holds);
     }
+    nonzero.into_iter().fold(
+        Evidence::new(Kind::Join, "").about(convention(wrt), Status::Fails),
+        |item, (k, r)| {
+            item.with(
+                format!("residual (left − right) of order {k}"),
+                Expr::combination(r, names),
+            )
+        },
+    )
+}
+
+/// True when the printed formulas of a curve join hold in the angle
+/// convention (the column test of a surface join with the same `u`-basis
+/// on both patches).
+pub fn holds_in_angle(join: &PrintedJoin) -> bool {
+    join.residuals(Wrt::Angle, &join.printed)
+        .iter()
+        .all(Sym::is_zero)
 }
 
 /// Decides a printed curve join.
@@ -267,12 +330,12 @@ fn decide(
         if holds(&r) {
             holding.push(wrt);
         }
-        evidence.push(format!("{}: {}", convention(wrt), describe(&shown, &names)));
+        evidence.push(describe(wrt, &shown, &names));
     }
     if holding.contains(&Wrt::Angle) {
         return Verdict::new(Status::Holds, METHOD, evidence);
     }
-    evidence.push(format!("derived (angle θ): {}", join.derived(Wrt::Angle)));
+    evidence.push(join.derived_item(Wrt::Angle, &join.printed));
     if let Some(fix) = sign_fix(join, &residuals) {
         return Verdict::new(Status::HoldsAfterCorrection, METHOD, evidence).with_correction(fix);
     }
@@ -289,30 +352,55 @@ fn decide(
     ))
 }
 
-/// The first single-term sign flip that makes the printed formulas hold in
-/// the angle convention, described.
+/// The fewest sign flips — one term in one printed formula, else one term in
+/// each of two formulas (a sign typo per formula, as when a formula reuses
+/// an earlier one that has its own) — that make the printed formulas hold
+/// in the angle convention, described. Pairs are screened on the shown
+/// residual (for a surface, one column's: it vanishes exactly when every
+/// column's does) and confirmed on the deciding one.
 fn sign_fix(
     join: &PrintedJoin,
     residuals: &impl Fn(Wrt, &[Printed]) -> (Vec<Sym>, Vec<Sym>),
 ) -> Option<String> {
     let names = join.names();
-    join.printed.iter().enumerate().find_map(|(i, p)| {
-        (0..p.terms.len()).find_map(|k| {
-            let mut printed = join.printed.clone();
-            printed[i] = p.flipped(k);
-            residuals(Wrt::Angle, &printed)
-                .0
-                .iter()
-                .all(Sym::is_zero)
-                .then(|| {
-                    format!(
-                        "flip the sign of the printed term {} in the formula for {}",
-                        p.terms[k].to_combination(&names),
-                        join.second[p.point].to_unicode()
-                    )
-                })
+    let flips: Vec<(usize, usize)> = join
+        .printed
+        .iter()
+        .enumerate()
+        .flat_map(|(i, p)| (0..p.terms.len()).map(move |k| (i, k)))
+        .collect();
+    let with = |chosen: &[(usize, usize)]| {
+        let mut printed = join.printed.clone();
+        for &(i, k) in chosen {
+            printed[i] = printed[i].flipped(k);
+        }
+        printed
+    };
+    let zero = |r: &[Sym]| r.iter().all(Sym::is_zero);
+    let singles = flips.iter().map(|f| vec![*f]);
+    let pairs = flips.iter().enumerate().flat_map(|(a, f)| {
+        flips[a + 1..]
+            .iter()
+            .filter(move |g| g.0 != f.0)
+            .map(move |g| vec![*f, *g])
+    });
+    let found = singles.chain(pairs).find(|chosen| {
+        let printed = with(chosen);
+        let (r, shown) = residuals(Wrt::Angle, &printed);
+        chosen.len() == 1 && zero(&r) || chosen.len() > 1 && zero(&shown) && zero(&r)
+    })?;
+    let terms: Vec<String> = found
+        .iter()
+        .map(|&(i, k)| {
+            let p = &join.printed[i];
+            format!(
+                "the printed term {} in the formula for {}",
+                p.terms[k].to_combination(&names),
+                join.second[p.point].to_unicode()
+            )
         })
-    })
+        .collect();
+    Some(format!("flip the sign of {}", terms.join(" and of ")))
 }
 
 #[cfg(test)]
@@ -344,6 +432,9 @@ mod tests {
         let wrong = audit(&bernstein_c1(vec![Sym::int(3) * &p[3], -p[2].clone()]));
         assert_eq!(wrong.status, Status::Fails);
         assert!(wrong.evidence[0].contains("order 1"));
+        // printed P₅ = 3P₃ − P₂ against 2P₃ − P₂: differ where P₃ ≠ 0
+        let w = wrong.evidence[3].witness.as_ref().expect("a witness");
+        assert_eq!(w.values[0].label, "printed P₅");
     }
 
     #[test]
@@ -363,9 +454,11 @@ mod tests {
         let v = audit_surface(&wrong, &Sym::var("m"));
         assert_eq!(v.status, Status::Fails);
         assert!(
-            v.evidence[0].contains("order 1: (m + 2)·P₂"),
+            v.evidence[0].contains("order 1 = (m + 2)·P₂"),
             "{:?}",
             v.evidence
         );
+        let derived = v.evidence.iter().find(|e| e.kind == Kind::Derived).unwrap();
+        assert!(derived.witness.is_some(), "{derived:?}");
     }
 }

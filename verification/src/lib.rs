@@ -11,6 +11,7 @@ pub mod certify;
 pub mod claim;
 mod claims;
 pub mod continuity;
+pub mod evidence;
 pub mod exact;
 pub mod figures;
 pub mod joins;
@@ -21,8 +22,10 @@ pub mod region_audit;
 pub mod report;
 pub mod spec_audit;
 pub mod verdict;
+pub mod witness;
 
 pub use claim::{Claim, Seed};
+pub use evidence::{Evidence, EvidenceList, Expr, Witness};
 pub use verdict::{Status, Verdict};
 
 /// Every claim the audit decides, in report order.

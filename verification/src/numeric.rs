@@ -5,6 +5,8 @@
 use rug::Rational;
 use trig_core::{Family, Mpfr, Real, Ring};
 
+use crate::evidence::{Assignment, Evidence, Expr, Kind, Value, Witness};
+
 /// Working precision of every counterexample.
 pub const PREC: u32 = 256;
 
@@ -29,6 +31,42 @@ pub fn half_pi_minus(x: &Mpfr) -> Mpfr {
 /// Prints a value with 30 significant digits.
 pub fn show(x: &Mpfr) -> String {
     x.0.to_string_radix(10, Some(30))
+}
+
+/// A numeric counterexample as evidence: `text` says what was evaluated;
+/// the witness gives the point (`name = value`, exact) and the two values
+/// at 30 significant digits (not exact: `exact` is false).
+pub fn counterexample_item(
+    text: String,
+    point: &[(String, String)],
+    values: [(String, &Mpfr); 2],
+) -> Evidence {
+    let witness = Witness {
+        point: point
+            .iter()
+            .map(|(n, v)| Assignment {
+                name: n.clone(),
+                value: v.clone(),
+                latex: format!(
+                    "{} = {}",
+                    crate::report::to_math(n),
+                    crate::report::to_math(v)
+                ),
+            })
+            .collect(),
+        note: Some(format!(
+            "values in {PREC}-bit MPFR, shown to 30 significant digits"
+        )),
+        values: values
+            .into_iter()
+            .map(|(label, x)| Value {
+                label,
+                value: Expr::numeric(&show(x)),
+            })
+            .collect(),
+        exact: false,
+    };
+    Evidence::new(Kind::Numeric, text).witnessed(Some(witness))
 }
 
 /// True when `|a − b|` exceeds `2⁻²⁰⁰`, far above the 256-bit rounding of

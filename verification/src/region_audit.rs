@@ -23,6 +23,7 @@ use trig_certify::{Bound, ParamBox};
 use trig_symbolic::Sym;
 
 use crate::certify::evidence::{MAXIMAL, Published, maximal_against, nonnegative_on_box_named};
+use crate::evidence::EvidenceList;
 use crate::verdict::{Status, Verdict};
 
 /// One parameter of the claim: name, printed symbol, printed set, source.
@@ -50,14 +51,14 @@ pub fn contained(fs: &[Sym], names: &[&str], trig: bool, axes: &[Axis<'_>]) -> V
 /// `region = box` for two parameters.
 pub fn maximal(fs: &[Sym], names: &[&str], trig: bool, axes: [Axis<'_>; 2]) -> Verdict {
     let inside = contained(fs, names, trig, &axes);
-    let mut evidence = vec![format!(
+    let mut evidence = EvidenceList::from(vec![format!(
         "printed box {} ∈ {} × {} ∈ {} ({}; {})",
         axes[0].symbol, axes[0].set, axes[1].symbol, axes[1].set, axes[0].source, axes[1].source
-    )];
+    )]);
     evidence.extend(inside.evidence.iter().map(|e| format!("containment: {e}")));
     if inside.status != Status::Holds {
         if inside.status == Status::Fails {
-            evidence.push("the box is not inside the region, so it is not the region".into());
+            evidence.push("the box is not inside the region, so it is not the region");
         }
         return Verdict::new(inside.status, REGION, evidence);
     }
@@ -175,10 +176,10 @@ fn coupled(
     names: &[&str],
     trig: bool,
     axes: &[Axis<'_>; 2],
-    mut evidence: Vec<String>,
+    mut evidence: EvidenceList,
 ) -> Verdict {
     if let Some(lines) = box_from_end_conditions(fs, names, trig, axes) {
-        evidence.push("every parameter where all functions are ≥ 0 satisfies these necessary conditions (the sign of a function next to an end of the domain), whose half-planes cut out exactly the box: so the region is inside the box, and with the containment it is the box".into());
+        evidence.push("every parameter where all functions are ≥ 0 satisfies these necessary conditions (the sign of a function next to an end of the domain), whose half-planes cut out exactly the box: so the region is inside the box, and with the containment it is the box");
         evidence.extend(lines.into_iter().map(|l| format!("necessary: {l}")));
         return Verdict::new(Status::Holds, REGION, evidence);
     }
@@ -224,7 +225,7 @@ fn coupled(
         ));
         return Verdict::new(Status::Fails, REGION, evidence);
     }
-    evidence.push("every finite face of the box lies on the zero set of a boundary polynomial, as the edge of the region must; that the region does not extend beyond the faces between the decided cells is not proved: equality is not decided".into());
+    evidence.push("every finite face of the box lies on the zero set of a boundary polynomial, as the edge of the region must; that the region does not extend beyond the faces between the decided cells is not proved: equality is not decided");
     Verdict::new(Status::NotCheckable, REGION, evidence)
 }
 

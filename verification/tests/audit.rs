@@ -1,16 +1,25 @@
 //! `cargo test` as the audit: every checker runs, one test per document, and
 //! the whole report is snapshotted (a changed verdict is a snapshot diff that
-//! must be explained in the commit message).
+//! must be explained in the commit message). The report's promises are
+//! tested here too: a witness for every claim that fails, a Markdown report
+//! short enough to read, JSON that validates against the published schema,
+//! LaTeX that maps every character (and compiles, when `pdflatex` is on the
+//! machine).
 
+use std::path::PathBuf;
 use std::sync::OnceLock;
 
-use trig_verification::{Outcome, Seed, Status, report, run};
+use trig_verification::report::{self, Entry, View};
+use trig_verification::{Outcome, Seed, Status, run};
 
-/// The whole audit, run once for every test of this file (the claims are
-/// decided in parallel, in report order).
+/// The whole audit, run once for the tests of this file.
 fn outcomes() -> &'static [Outcome] {
-    static OUTCOMES: OnceLock<Vec<Outcome>> = OnceLock::new();
-    OUTCOMES.get_or_init(|| run(None, None))
+    static ALL: OnceLock<Vec<Outcome>> = OnceLock::new();
+    ALL.get_or_init(|| run(None, None))
+}
+
+fn entries() -> Vec<Entry> {
+    report::entries(outcomes())
 }
 
 fn check_seed(seed: Seed) {
@@ -22,7 +31,7 @@ fn check_seed(seed: Seed) {
         let filtered = run(Some(seed), None);
         assert_eq!(ids(&filtered.iter().collect::<Vec<_>>()), ids(&outcomes));
     }
-    for o in &outcomes {
+    for o in outcomes {
         assert_eq!(o.claim.seed, seed);
         assert!(
             !o.verdict.evidence.is_empty(),
@@ -78,11 +87,155 @@ fn claim_ids_are_unique() {
 }
 
 #[test]
+fn every_claim_that_does_not_hold_shows_a_witness() {
+    let md = report::markdown(outcomes());
+    for e in entries() {
+        if matches!(
+            e.verdict.status,
+            Status::Fails | Status::HoldsAfterCorrection
+        ) {
+            let (_, w) = e
+                .witness()
+                .unwrap_or_else(|| panic!("{} has no witness", e.id));
+            assert!(!w.values.is_empty(), "{}: a witness shows values", e.id);
+            let section = md
+                .split("### ")
+                .find(|s| s.contains(&format!("</a>{} — ", e.id)))
+                .unwrap_or_else(|| panic!("{} has a section", e.id));
+            assert!(section.contains("- **Witness:**"), "{}", e.id);
+        }
+    }
+}
+
+#[test]
+fn the_markdown_report_is_short_and_its_lines_readable() {
+    let md = report::markdown(outcomes());
+    assert!(
+        md.len() < 150_000,
+        "the Markdown report has {} bytes",
+        md.len()
+    );
+    let longest = md.lines().map(|l| l.chars().count()).max().unwrap_or(0);
+    assert!(longest < 2_000, "a line of {longest} characters");
+}
+
+#[test]
+fn summary_and_verdict_filter() {
+    let entries = entries();
+    let view = View {
+        summary_only: true,
+        verdicts: vec![Status::Fails],
+    };
+    let md = report::markdown_entries(&entries, report::BUILTIN_INTRO, &view);
+    let fails = entries
+        .iter()
+        .filter(|e| e.verdict.status == Status::Fails)
+        .count();
+    // the index rows (the summary table above it has a `fails` column)
+    let index = md.split("## Index").nth(1).expect("an index");
+    let rows = index
+        .lines()
+        .filter(|l| l.starts_with("| ") && l.contains(" | fails | "))
+        .count();
+    assert_eq!(rows, fails, "one index line per failing claim");
+    assert!(!md.contains("**Evidence:**"));
+}
+
+/// Long strings replaced by their length and a hash: the snapshot stays
+/// small and still changes when any of them does.
+fn redacted(v: serde_json::Value) -> serde_json::Value {
+    use serde_json::Value;
+    match v {
+        Value::String(s) if s.len() > 1_000 => {
+            let hash = s.bytes().fold(0xcbf2_9ce4_8422_2325u64, |h, b| {
+                (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
+            });
+            Value::String(format!("<{} bytes, fnv {hash:016x}>", s.len()))
+        }
+        Value::Array(a) => Value::Array(a.into_iter().map(redacted).collect()),
+        Value::Object(o) => Value::Object(o.into_iter().map(|(k, v)| (k, redacted(v))).collect()),
+        other => other,
+    }
+}
+
+#[test]
 fn report_markdown_snapshot() {
     insta::assert_snapshot!("report_md", report::markdown(outcomes()));
 }
 
 #[test]
 fn report_json_snapshot() {
-    insta::assert_json_snapshot!("report_json", report::json(outcomes()));
+    let value = serde_json::to_value(report::json(outcomes())).expect("JSON");
+    insta::assert_json_snapshot!("report_json", redacted(value));
+}
+
+fn published_schema() -> serde_json::Value {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../docs/report.schema.json");
+    let text = std::fs::read_to_string(&path).expect("docs/report.schema.json");
+    serde_json::from_str(&text).expect("the schema is JSON")
+}
+
+#[test]
+fn the_published_schema_is_the_generated_one() {
+    let generated = report::schema();
+    if std::env::var_os("TRIG_AUDIT_WRITE_SCHEMA").is_some() {
+        let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../docs/report.schema.json");
+        let mut text = serde_json::to_string_pretty(&generated).expect("JSON");
+        text.push('\n');
+        std::fs::write(path, text).expect("write the schema");
+    }
+    assert_eq!(
+        published_schema(),
+        generated,
+        "docs/report.schema.json is stale: regenerate it with TRIG_AUDIT_WRITE_SCHEMA=1 cargo test -p trig-verification --test audit the_published_schema"
+    );
+}
+
+#[test]
+fn the_json_report_validates_against_the_published_schema() {
+    let validator = jsonschema::validator_for(&published_schema()).expect("a valid schema");
+    let report = serde_json::to_value(report::json(outcomes())).expect("JSON");
+    let errors: Vec<String> = validator
+        .iter_errors(&report)
+        .take(5)
+        .map(|e| format!("{e} at {}", e.instance_path()))
+        .collect();
+    assert!(errors.is_empty(), "{errors:#?}");
+    // a report of another version does not validate
+    let mut other = report.clone();
+    other["schema_version"] = "0.9.0".into();
+    assert!(!validator.is_valid(&other), "the schema pins its version");
+    // and a filtered summary, which leaves the evidence out
+    let view = View {
+        summary_only: true,
+        verdicts: vec![Status::HoldsAfterCorrection],
+    };
+    let short = serde_json::to_value(report::json_entries(
+        &entries(),
+        report::BUILTIN_INTRO,
+        &view,
+    ))
+    .expect("JSON");
+    assert!(validator.is_valid(&short));
+}
+
+#[test]
+fn the_latex_report_maps_every_character_and_compiles() {
+    let tex = report::tex(outcomes());
+    assert!(report::latex::unmapped(&tex).is_empty());
+    assert!(tex.is_ascii(), "every character mapped to ASCII LaTeX");
+    assert!(!tex.contains("[U+"), "no unmapped character");
+    match trig_verification::report::latex::compile(&tex, "report") {
+        Some(log) => {
+            assert!(log.errors.is_empty(), "pdflatex errors: {:#?}", log.errors);
+            assert!(
+                log.overfull < 10,
+                "{} overfull boxes: {:#?}",
+                log.overfull,
+                log.overfull_lines
+            );
+            assert!(log.pages > 10, "{} pages", log.pages);
+        }
+        None => eprintln!("pdflatex not found: the LaTeX report was not compiled"),
+    }
 }

@@ -146,11 +146,10 @@ fn t32_table_arithmetic() {
     ));
     assert!(has(&t32, "difference 0.8023"));
     assert!(has(&t32, "Table 6.3 (Epsilon, Majeed (II)): holds"));
-    assert!(has(&t32, "computed 16.9426, difference -2.3255"));
-    assert!(has(
-        &t32,
-        "printed 10355.28, computed 10355.25, difference 0.03"
-    ));
+    assert!(has(&t32, "difference -2.3255"));
+    assert!(has(&t32, "printed = 14.6171, computed = 16.9426"));
+    assert!(has(&t32, "difference 0.03"));
+    assert!(has(&t32, "printed = 10355.28, computed = 10355.25"));
 }
 
 proptest! {

@@ -8,6 +8,7 @@
 mod cell;
 mod commands;
 mod format;
+mod output;
 
 use std::ffi::OsString;
 

@@ -6,7 +6,11 @@ use rug::Rational;
 use trig_core::{Batch, Family};
 
 use crate::error::{Result, draw};
+use crate::picture::{Picture, Series};
 use crate::style::{SIZE, chart, colour, legend, padded, settings};
+
+/// The curves of one setting, one per function.
+type Curves = Vec<Vec<(f64, f64)>>;
 
 /// Points per function.
 const SAMPLES: usize = 201;
@@ -16,7 +20,7 @@ const SAMPLES: usize = 201;
 /// range unless `allow_outside`). Families without parameters take one
 /// empty value list: pass `&[]` and get one series per function.
 /// Series: (functions) × max(1, values) curves plus the axis `y = 0`.
-pub fn basis_svg(family: Family, values: &[Rational], allow_outside: bool) -> Result<String> {
+pub fn basis_svg(family: Family, values: &[Rational], allow_outside: bool) -> Result<Picture> {
     let info = family.info();
     let settings = settings(&info, values, "basis")?;
     for s in &settings {
@@ -32,15 +36,20 @@ pub fn basis_svg(family: Family, values: &[Rational], allow_outside: bool) -> Re
     let xs: Vec<f64> = (0..SAMPLES)
         .map(|i| end * i as f64 / (SAMPLES - 1) as f64)
         .collect();
-    let mut series = Vec::new();
+    // settings whose functions coincide are drawn once, labelled with
+    // every value (`λ = 0, 1`)
+    let mut series: Vec<(Vec<Vec<Rational>>, Curves)> = Vec::new();
     for s in &settings {
         // function-major: one slice of SAMPLES values per function
         let values = Batch::new(family, s, &0.0, true)?.eval(&xs)?;
-        let curves: Vec<Vec<(f64, f64)>> = values
+        let curves: Curves = values
             .chunks(SAMPLES)
             .map(|column| xs.iter().copied().zip(column.iter().copied()).collect())
             .collect();
-        series.push((s.clone(), curves));
+        match series.iter_mut().find(|(_, c)| *c == curves) {
+            Some((same, _)) => same.push(s.clone()),
+            None => series.push((vec![s.clone()], curves)),
+        }
     }
     let (ylo, yhi) = padded(
         series
@@ -55,6 +64,7 @@ pub fn basis_svg(family: Family, values: &[Rational], allow_outside: bool) -> Re
         trig_core::Variable::Polynomial => "t",
     };
     let mut svg = String::new();
+    let mut data = Vec::new();
     {
         let root = SVGBackend::with_string(&mut svg, SIZE).into_drawing_area();
         root.fill(&WHITE).map_err(draw)?;
@@ -78,14 +88,21 @@ pub fn basis_svg(family: Family, values: &[Rational], allow_outside: bool) -> Re
                 BLACK.stroke_width(1),
             ))
             .map_err(draw)?;
-        for (k, (s, curves)) in series.iter().enumerate() {
+        for (k, (same, curves)) in series.iter().enumerate() {
             let c = colour(k);
-            let label = if s.is_empty() {
-                info.functions.join(", ")
-            } else {
-                format!("{} = {}", info.params[0].symbol, s[0])
+            let label = match info.params.first() {
+                Some(p) if !same[0].is_empty() => {
+                    let vals: Vec<String> = same.iter().map(|s| s[0].to_string()).collect();
+                    format!("{} = {}", p.symbol, vals.join(", "))
+                }
+                _ => info.functions.join(", "),
             };
             for (j, curve) in curves.iter().enumerate() {
+                let name = info.functions.get(j).copied().unwrap_or("b");
+                data.push(Series::new(
+                    format!("{name}, {label}"),
+                    curve.iter().copied(),
+                ));
                 let drawn = chart
                     .draw_series(LineSeries::new(curve.iter().copied(), c.stroke_width(2)))
                     .map_err(draw)?;
@@ -99,5 +116,5 @@ pub fn basis_svg(family: Family, values: &[Rational], allow_outside: bool) -> Re
         legend(&mut chart)?;
         root.present().map_err(draw)?;
     }
-    Ok(svg)
+    Ok(Picture { svg, series: data })
 }

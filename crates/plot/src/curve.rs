@@ -7,6 +7,7 @@ use rug::Rational;
 use trig_core::{Batch, Family};
 
 use crate::error::{PlotError, Result, draw};
+use crate::picture::{Picture, Series};
 use crate::style::{SIZE, chart, colour, equal_aspect, legend, padded, settings};
 
 /// Points per curve.
@@ -21,7 +22,7 @@ pub fn curve_svg(
     control: &[(f64, f64)],
     values: &[Rational],
     allow_outside: bool,
-) -> Result<String> {
+) -> Result<Picture> {
     let info = family.info();
     if control.len() != info.functions.len() {
         return Err(PlotError::Input(format!(
@@ -78,6 +79,7 @@ pub fn curve_svg(
         padded(all().map(|p| p.1), 0.08),
         (700.0, 480.0),
     );
+    let mut data = vec![Series::new("control polygon", control.iter().copied())];
     let mut svg = String::new();
     {
         let root = SVGBackend::with_string(&mut svg, SIZE).into_drawing_area();
@@ -105,6 +107,7 @@ pub fn curve_svg(
                 Some(v) => format!("{} = {}", info.params[0].symbol, v),
                 None => info.id.to_string(),
             };
+            data.push(Series::new(label.clone(), pts.iter().copied()));
             chart
                 .draw_series(LineSeries::new(pts.iter().copied(), c.stroke_width(2)))
                 .map_err(draw)?
@@ -114,5 +117,5 @@ pub fn curve_svg(
         legend(&mut chart)?;
         root.present().map_err(draw)?;
     }
-    Ok(svg)
+    Ok(Picture { svg, series: data })
 }

@@ -5,6 +5,7 @@ use plotters::prelude::*;
 use trig_fit::{Outline, OutlineFit};
 
 use crate::error::{Result, draw};
+use crate::picture::{Picture, Series};
 use crate::style::{SIZE, chart, colour, equal_aspect, legend, padded};
 
 /// Points drawn per fitted segment.
@@ -13,7 +14,7 @@ const SAMPLES: usize = 60;
 /// SVG of `fit` over the data of `outline`: the data points, the C⁰ fit,
 /// the refined fit if there is one, and the breakpoints.
 /// Series: data points, one curve per segment per stage, breakpoints.
-pub fn fit_svg(outline: &Outline, fit: &OutlineFit) -> Result<String> {
+pub fn fit_svg(outline: &Outline, fit: &OutlineFit) -> Result<Picture> {
     let stages: Vec<(bool, String)> =
         std::iter::once((false, "C0 fit (least squares per segment)".to_string()))
             .chain(fit.after.map(|_| {
@@ -46,6 +47,16 @@ pub fn fit_svg(outline: &Outline, fit: &OutlineFit) -> Result<String> {
             (x, y)
         })
         .collect();
+    let mut series_data = vec![Series::new("data", data.iter().copied())];
+    for (label, segments) in &drawn {
+        for (j, seg) in segments.iter().enumerate() {
+            series_data.push(Series::new(
+                format!("{label}, segment {}", j + 1),
+                seg.iter().map(|p| (p.x, p.y)),
+            ));
+        }
+    }
+    series_data.push(Series::new("breakpoints", breaks.iter().copied()));
     let mut svg = String::new();
     {
         let root = SVGBackend::with_string(&mut svg, SIZE).into_drawing_area();
@@ -107,5 +118,8 @@ pub fn fit_svg(outline: &Outline, fit: &OutlineFit) -> Result<String> {
         legend(&mut chart)?;
         root.present().map_err(draw)?;
     }
-    Ok(svg)
+    Ok(Picture {
+        svg,
+        series: series_data,
+    })
 }

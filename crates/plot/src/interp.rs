@@ -6,6 +6,7 @@
 use plotters::prelude::*;
 
 use crate::error::{PlotError, Result, draw};
+use crate::picture::{Picture, Series};
 use crate::style::{SIZE, chart, colour, legend, padded};
 
 /// One interpolant: its legend label and its pieces, each a sampled polyline.
@@ -22,7 +23,7 @@ pub fn interp_svg(
     title: &str,
     data: &[(f64, f64)],
     interpolants: &[Interpolant],
-) -> Result<String> {
+) -> Result<Picture> {
     let all = || {
         data.iter()
             .chain(interpolants.iter().flat_map(|i| i.pieces.iter().flatten()))
@@ -34,6 +35,15 @@ pub fn interp_svg(
     }
     let xr = padded(all().map(|p| p.0), 0.03);
     let yr = padded(all().map(|p| p.1).chain([0.0]), 0.08);
+    let mut data_series = vec![Series::new("data points", data.iter().copied())];
+    for i in interpolants {
+        for (j, piece) in i.pieces.iter().enumerate() {
+            data_series.push(Series::new(
+                format!("{}, piece {}", i.label, j + 1),
+                piece.iter().copied(),
+            ));
+        }
+    }
     let mut svg = String::new();
     {
         let root = SVGBackend::with_string(&mut svg, SIZE).into_drawing_area();
@@ -66,5 +76,8 @@ pub fn interp_svg(
         legend(&mut chart)?;
         root.present().map_err(draw)?;
     }
-    Ok(svg)
+    Ok(Picture {
+        svg,
+        series: data_series,
+    })
 }

@@ -7,13 +7,16 @@
 //! interpolants with their data points (thesis 4.3). Every picture has
 //! axes, axis labels, a caption and a legend.
 //!
-//! Each function returns the SVG text; the caller writes it.
+//! Each function returns a [`Picture`]: the SVG text and the drawn data
+//! (series of points), which the caller writes as the figure and a CSV
+//! file beside it.
 
 pub mod basis;
 pub mod curve;
 pub mod error;
 pub mod fit;
 pub mod interp;
+pub mod picture;
 pub mod region;
 mod style;
 
@@ -22,4 +25,5 @@ pub use curve::curve_svg;
 pub use error::PlotError;
 pub use fit::fit_svg;
 pub use interp::{Interpolant, interp_svg};
+pub use picture::{Picture, Series};
 pub use region::{RegionCell, RegionKind, region_svg};

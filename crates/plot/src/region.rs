@@ -5,6 +5,7 @@
 use plotters::prelude::*;
 
 use crate::error::{Result, draw};
+use crate::picture::{Picture, Series};
 use crate::style::{SIZE, chart, colour, legend};
 
 /// How a cell was classified.
@@ -33,7 +34,7 @@ pub fn region_svg(
     axes: (&str, &str),
     cells: &[RegionCell],
     printed: Option<((f64, f64), (f64, f64))>,
-) -> Result<String> {
+) -> Result<Picture> {
     let x = cells
         .iter()
         .fold((f64::INFINITY, f64::NEG_INFINITY), |a, c| {
@@ -49,6 +50,20 @@ pub fn region_svg(
     }
     // room on the right for the legend
     let xr = (x.0, x.1 + 0.75 * (x.1 - x.0));
+    // each cell as two points: its lower-left and upper-right corners
+    let mut data: Vec<Series> = cells
+        .iter()
+        .enumerate()
+        .map(|(k, c)| {
+            Series::new(
+                format!("{:?} cell {}", c.kind, k + 1).to_lowercase(),
+                [(c.x.0, c.y.0), (c.x.1, c.y.1)],
+            )
+        })
+        .collect();
+    if let Some(((a, b), (c, d))) = printed {
+        data.push(Series::new("printed box", [(a, c), (b, d)]));
+    }
     let mut svg = String::new();
     {
         let root = SVGBackend::with_string(&mut svg, SIZE).into_drawing_area();
@@ -109,5 +124,5 @@ pub fn region_svg(
         legend(&mut chart)?;
         root.present().map_err(draw)?;
     }
-    Ok(svg)
+    Ok(Picture { svg, series: data })
 }

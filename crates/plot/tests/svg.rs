@@ -43,13 +43,18 @@ fn r(s: &str) -> Rational {
 #[test]
 fn basis_plot_has_one_curve_per_function_and_value() {
     let values = [r("-2"), r("-1"), r("0"), r("1")];
-    let svg = basis_svg(Family::ThesisCubic, &values, false).unwrap();
+    let picture = basis_svg(Family::ThesisCubic, &values, false).unwrap();
+    // the data beside the figure: one series per drawn curve
+    assert_eq!(picture.series.len(), 4 * 4);
+    assert!(picture.series.iter().any(|s| s.label == "b2, m = -1"));
+    assert_eq!(picture.rows().len(), 4 * 4 * 201);
+    let svg = picture.svg;
     let (curves, _, texts) = census(&svg);
     assert_eq!(curves, 4 * 4);
     for label in ["m = -2", "m = -1", "m = 0", "m = 1", "basis function value"] {
         assert!(texts.iter().any(|t| t == label), "{label}: {texts:?}");
     }
-    let svg = basis_svg(Family::Bernstein3, &[], false).unwrap();
+    let svg = basis_svg(Family::Bernstein3, &[], false).unwrap().svg;
     assert_eq!(census(&svg).0, 4);
     // outside the published range without permission: refused
     assert!(basis_svg(Family::ThesisCubic, &[r("2")], false).is_err());
@@ -58,7 +63,9 @@ fn basis_plot_has_one_curve_per_function_and_value() {
 #[test]
 fn curve_plot_has_polygon_and_one_curve_per_value() {
     let control = [(0.0, 0.0), (1.0, 2.0), (3.0, 2.0), (4.0, 0.0)];
-    let svg = curve_svg(Family::Han, &control, &[r("-1"), r("0"), r("1")], false).unwrap();
+    let svg = curve_svg(Family::Han, &control, &[r("-1"), r("0"), r("1")], false)
+        .unwrap()
+        .svg;
     let (curves, markers, texts) = census(&svg);
     assert_eq!(curves, 3 + 1, "three curves and the control polygon");
     assert_eq!(markers, 4, "the control points");
@@ -81,7 +88,7 @@ fn fit_plot_has_data_and_every_segment_of_both_stages() {
         shape: Shape::Fixed(vec![0.6]),
     };
     let fit = fit_outline(&outline, Arc::new(Family::ThesisCubic), &options).unwrap();
-    let svg = fit_svg(&outline, &fit).unwrap();
+    let svg = fit_svg(&outline, &fit).unwrap().svg;
     let (curves, markers, texts) = census(&svg);
     assert_eq!(curves, 2 * fit.segments.len());
     assert_eq!(
@@ -106,7 +113,8 @@ fn interp_plot_has_pieces_and_data() {
             pieces,
         }],
     )
-    .unwrap();
+    .unwrap()
+    .svg;
     let (curves, markers, _) = census(&svg);
     assert_eq!((curves, markers), (2, 3 + 1));
     assert!(interp_svg("x", &[], &[]).is_err());

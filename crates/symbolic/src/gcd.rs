@@ -57,14 +57,14 @@ pub fn common_factor(num: &Poly, f: &Poly) -> Option<Poly> {
     Some(g)
 }
 
-fn is_trig(p: &Poly) -> bool {
+pub(crate) fn is_trig(p: &Poly) -> bool {
     p.terms()
         .any(|(m, _)| m.factors().any(|(v, _)| v.is_trig()))
 }
 
 /// The coefficients of `p` as a polynomial in the variables outside
 /// `keep`, keyed by their monomials; each coefficient involves only `keep`.
-fn coefficients_over(p: &Poly, keep: &BTreeSet<String>) -> BTreeMap<Monomial, Poly> {
+pub(crate) fn coefficients_over(p: &Poly, keep: &BTreeSet<String>) -> BTreeMap<Monomial, Poly> {
     let mut out: BTreeMap<Monomial, Poly> = BTreeMap::new();
     for (m, q) in p.terms() {
         let (inside, outside) = m.partition(|v| keep.contains(v.name()));
@@ -74,7 +74,7 @@ fn coefficients_over(p: &Poly, keep: &BTreeSet<String>) -> BTreeMap<Monomial, Po
 }
 
 /// The gcd in `ℚ[x₁, …, x_k]`, normalised by [`Poly::canonical`].
-fn gcd_free(a: &Poly, b: &Poly) -> Poly {
+pub(crate) fn gcd_free(a: &Poly, b: &Poly) -> Poly {
     if a.is_zero() {
         return b.canonical().1;
     }
@@ -105,7 +105,7 @@ fn gcd_free(a: &Poly, b: &Poly) -> Poly {
 }
 
 /// The gcd of all monomials of `p`.
-fn monomial_content(p: &Poly) -> Monomial {
+pub(crate) fn monomial_content(p: &Poly) -> Monomial {
     p.terms()
         .map(|(m, _)| m.clone())
         .reduce(|a, b| a.gcd(&b))
@@ -114,7 +114,7 @@ fn monomial_content(p: &Poly) -> Monomial {
 
 /// `(cont_x p, pp_x p)`: the gcd of the coefficients of `p` in `x`, and
 /// `p` divided by it.
-fn split_content(p: &Poly, x: &str) -> (Poly, Poly) {
+pub(crate) fn split_content(p: &Poly, x: &str) -> (Poly, Poly) {
     let content =
         p.coefficients_in(x)
             .iter()

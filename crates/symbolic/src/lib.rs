@@ -43,6 +43,7 @@
 mod calculus;
 mod error;
 mod eval;
+pub mod factor;
 pub mod gcd;
 mod linear;
 mod modular;
@@ -54,8 +55,10 @@ pub mod sym;
 pub mod var;
 
 pub use error::SymError;
+pub use factor::{Factored, FactoredQuotient};
 pub use monomial::Monomial;
 pub use poly::Poly;
+pub use print::sympy_symbols;
 pub use ring::symbolic_atoms;
 pub use sym::Sym;
 pub use var::Var;

@@ -1,6 +1,11 @@
-//! Canonical printing of [`Poly`] and [`Sym`] in three forms: plain ASCII
-//! (`Display`), Unicode ([`Sym::to_unicode`], for Markdown tables) and
-//! LaTeX ([`Sym::to_latex`]).
+//! Canonical printing of [`Poly`] and [`Sym`] in four forms: plain ASCII
+//! (`Display`), Unicode ([`Sym::to_unicode`], for Markdown tables), LaTeX
+//! ([`Sym::to_latex`]) and SymPy syntax ([`Sym::to_sympy`]: `**` for powers,
+//! `sin(theta)`, `cos(theta)` for the atoms `s`, `c`, and `lamda` for
+//! `lambda`, a Python keyword — SymPy's own spelling; read it with
+//! `sympy.parse_expr(text, local_dict={name: Symbol(name) …})` so that
+//! names such as `beta` or `zeta` stay symbols, see [`sympy_symbols`]).
+//! Factored forms ([`crate::FactoredQuotient`]) print in the same four.
 //!
 //! The output is deterministic. Terms are printed greatest first in the
 //! graded lexicographic order of [`crate::monomial`]: by total degree
@@ -24,6 +29,7 @@ use std::fmt;
 
 use rug::{Integer, Rational};
 
+use crate::factor::FactoredQuotient;
 use crate::monomial::Monomial;
 use crate::poly::Poly;
 use crate::sym::Sym;
@@ -34,6 +40,7 @@ enum Style {
     Plain,
     Unicode,
     Latex,
+    Sympy,
 }
 
 /// Greek names: (name, Unicode, LaTeX).
@@ -60,11 +67,45 @@ impl Style {
 
     fn times(self) -> &'static str {
         match self {
-            Style::Plain => "*",
+            Style::Plain | Style::Sympy => "*",
             Style::Unicode => "·",
             Style::Latex => " ",
         }
     }
+}
+
+/// The SymPy name of a variable: `s`, `c` are `sin(theta)`, `cos(theta)`,
+/// `lambda` (a Python keyword) is `lamda`, as SymPy spells it.
+fn sympy_name(n: &str) -> String {
+    match n {
+        crate::var::SIN => "sin(theta)".to_string(),
+        crate::var::COS => "cos(theta)".to_string(),
+        _ => {
+            let (prefix, digits) = split_digits(n);
+            if prefix == "lambda" {
+                format!("lamda{digits}")
+            } else {
+                n.to_string()
+            }
+        }
+    }
+}
+
+/// The SymPy symbol names an expression with the variables `names` uses
+/// (`theta` for `s`, `c`; `lamda` for `lambda`), sorted, without `pi`
+/// (SymPy's own constant).
+pub fn sympy_symbols<'a>(names: impl IntoIterator<Item = &'a str>) -> Vec<String> {
+    let mut out: Vec<String> = names
+        .into_iter()
+        .filter(|n| *n != crate::var::PI)
+        .map(|n| match n {
+            crate::var::SIN | crate::var::COS => "theta".to_string(),
+            _ => sympy_name(n),
+        })
+        .collect();
+    out.sort();
+    out.dedup();
+    out
 }
 
 fn digits_in(table: &[char; 10], digits: &str) -> String {
@@ -75,6 +116,9 @@ fn digits_in(table: &[char; 10], digits: &str) -> String {
 }
 
 fn name(n: &str, style: Style) -> String {
+    if style == Style::Sympy {
+        return sympy_name(n);
+    }
     let (prefix, digits) = split_digits(n);
     if style == Style::Plain || prefix.is_empty() {
         return n.to_string();
@@ -104,6 +148,7 @@ fn power(base: String, e: u32, style: Style) -> String {
     match (e, style) {
         (1, _) => base,
         (_, Style::Plain) => format!("{base}^{e}"),
+        (_, Style::Sympy) => format!("{base}**{e}"),
         (_, Style::Unicode) => format!("{base}{}", digits_in(&SUPERSCRIPTS, &e.to_string())),
         (_, Style::Latex) => format!("{base}^{{{e}}}"),
     }
@@ -220,6 +265,11 @@ impl Poly {
     pub fn to_latex(&self) -> String {
         poly(self, Style::Latex)
     }
+
+    /// SymPy syntax (see the [module documentation](self)).
+    pub fn to_sympy(&self) -> String {
+        poly(self, Style::Sympy)
+    }
 }
 
 impl fmt::Display for Poly {
@@ -237,6 +287,70 @@ impl Sym {
     /// LaTeX form.
     pub fn to_latex(&self) -> String {
         sym(self, Style::Latex)
+    }
+
+    /// SymPy syntax (see the [module documentation](self)).
+    pub fn to_sympy(&self) -> String {
+        sym(self, Style::Sympy)
+    }
+}
+
+/// `unit · Π numᵉ / Π denᵉ` in `style`.
+fn factored(f: &FactoredQuotient, style: Style) -> String {
+    let negative = f.unit < 0;
+    let a = Rational::from(f.unit.abs_ref());
+    let item = |p: &Poly, e: u32| {
+        let text = poly(p, style);
+        let base = if p.len() > 1 {
+            format!("({text})")
+        } else {
+            text
+        };
+        power(base, e, style)
+    };
+    let mut num: Vec<String> = Vec::new();
+    if *a.numer() != 1 || f.num.is_empty() {
+        num.push(a.numer().to_string());
+    }
+    num.extend(f.num.iter().map(|(p, e)| item(p, *e)));
+    let mut den: Vec<String> = Vec::new();
+    if *a.denom() != 1 {
+        den.push(a.denom().to_string());
+    }
+    den.extend(f.den.iter().map(|(p, e)| item(p, *e)));
+    let sign = if negative { style.minus() } else { "" };
+    let num = num.join(style.times());
+    if den.is_empty() {
+        return format!("{sign}{num}");
+    }
+    let several = den.len() > 1;
+    let den = den.join(style.times());
+    match style {
+        Style::Latex => format!(r"{sign}\frac{{{num}}}{{{den}}}"),
+        _ if several => format!("{sign}{num}/({den})"),
+        _ => format!("{sign}{num}/{den}"),
+    }
+}
+
+impl FactoredQuotient {
+    /// Plain ASCII.
+    pub fn to_plain(&self) -> String {
+        factored(self, Style::Plain)
+    }
+
+    /// Unicode.
+    pub fn to_unicode(&self) -> String {
+        factored(self, Style::Unicode)
+    }
+
+    /// LaTeX.
+    pub fn to_latex(&self) -> String {
+        factored(self, Style::Latex)
+    }
+
+    /// SymPy syntax.
+    pub fn to_sympy(&self) -> String {
+        factored(self, Style::Sympy)
     }
 }
 
@@ -335,5 +449,30 @@ mod tests {
         assert_eq!(v("foo").to_latex(), r"\mathrm{foo}");
         // s² is printed in its reduced form
         assert_eq!((v("s") * &v("s")).to_string(), "-c^2 + 1");
+    }
+
+    #[test]
+    fn sympy_syntax_and_factored_forms() {
+        let x = (v("lambda") * &v("s") * &v("s") - &(Sym::int(3) * &v("beta") * &v("c")))
+            / &(Sym::int(2) * &(v("m") + &Sym::int(2)));
+        assert_eq!(
+            x.to_sympy(),
+            "(-lamda*cos(theta)**2 - 3*beta*cos(theta) + lamda)/(2*(m + 2))"
+        );
+        assert_eq!(
+            sympy_symbols(x.variables().iter().map(String::as_str)),
+            ["beta", "lamda", "m", "theta"]
+        );
+        let (m1, m2) = (v("m1"), v("m2"));
+        let y = Sym::int(-3) * &(m1.clone() - &m2) * &(m2.clone() + &Sym::int(2))
+            / &(Sym::int(4) * &(m1 + &Sym::int(2)));
+        let f = y.factored();
+        assert_eq!(f.to_plain(), "-3*(m1 - m2)*(m2 + 2)/(4*(m1 + 2))");
+        assert_eq!(f.to_unicode(), "−3·(m₁ − m₂)·(m₂ + 2)/(4·(m₁ + 2))");
+        assert_eq!(
+            f.to_latex(),
+            r"-\frac{3 (m_{1} - m_{2}) (m_{2} + 2)}{4 (m_{1} + 2)}"
+        );
+        assert_eq!(f.to_sympy(), "-3*(m1 - m2)*(m2 + 2)/(4*(m1 + 2))");
     }
 }

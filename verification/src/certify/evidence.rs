@@ -7,8 +7,11 @@ use trig_core::Family;
 
 use super::nonneg::{BoxCertificate, Certificate, certify, certify_box};
 use super::range::{EndPoint, MaximalRange, Outside, certify_all, maximal_range};
+use crate::evidence::EvidenceList;
+use crate::evidence::{Evidence, Kind, Witness};
 use crate::exact::basis;
 use crate::verdict::{Status, Verdict};
+use crate::witness::witness;
 
 /// How nonnegativity is decided, as the report states it.
 pub const CERTIFIED: &str = "certified: Weierstrass z = tan(θ/2), exact Bernstein subdivision over (z, parameter) boxes in rational arithmetic (denominators proved of one sign first); counterexamples exact and re-evaluated";
@@ -16,34 +19,81 @@ pub const CERTIFIED: &str = "certified: Weierstrass z = tan(θ/2), exact Bernste
 /// How a maximal range is decided, as the report states it.
 pub const MAXIMAL: &str = "certified: every end of the admissible set is a root of a boundary polynomial (discriminant in z = tan(θ/2) or t, values at the domain ends); its roots are isolated exactly (Sturm) and one certified point test per gap decides where the set ends; ends are exact real algebraic numbers; the interval is then certified by exact Bernstein subdivision";
 
-/// One line for a certificate about `what`.
+/// The witness of a counterexample: the parameters, `z = tan(θ/2)` with
+/// `s = sin θ`, `c = cos θ` (or `t`), and the exact value of the tested
+/// function there.
+pub fn counterexample(
+    params: &[(&str, &Rational)],
+    z: &Rational,
+    value: &Rational,
+    trig: bool,
+) -> Witness {
+    let mut point: Vec<(String, Rational)> = params
+        .iter()
+        .map(|(n, v)| (n.to_string(), (*v).clone()))
+        .collect();
+    if trig {
+        let d = Rational::from(1) + z.clone() * z;
+        point.push(("z".into(), z.clone()));
+        point.push(("s".into(), Rational::from(2) * z / d.clone()));
+        point.push(("c".into(), (Rational::from(1) - z.clone() * z) / d));
+    } else {
+        point.push(("t".into(), z.clone()));
+    }
+    let names: Vec<String> = point.iter().map(|(n, _)| n.clone()).collect();
+    let mut w = witness(
+        &point,
+        &names,
+        vec![("value", trig_symbolic::Sym::rational(value.clone()))],
+    );
+    if trig {
+        w.note = Some(format!(
+            "z = tan(θ/2), s = sin θ, c = cos θ; θ ≈ {:.6}",
+            2.0 * z.to_f64().atan()
+        ));
+    }
+    w
+}
+
+/// The evidence item of a certificate about `what`, with its status.
 pub fn describe(
     what: &str,
     cert: &Certificate,
     trig: bool,
     param: Option<&str>,
-) -> (Status, String) {
-    match cert {
+) -> (Status, Evidence) {
+    let (status, text, w) = match cert {
         Certificate::NonNegative { boxes } => (
             Status::Holds,
             format!(
-                "{what}: certified on the whole domain ({boxes} Bernstein boxes with all coefficients ≥ 0)"
+                "certified on the whole domain ({} with all coefficients ≥ 0)",
+                crate::report::plural(*boxes, "Bernstein box", "Bernstein boxes")
             ),
+            None,
         ),
         Certificate::Counterexample { p, z, value } => (
             Status::Fails,
-            format!(
-                "{what}: violated at {}{}, where the tested quantity equals {value} (exact)",
-                param.map_or(String::new(), |n| format!("{n} = {p}, ")),
-                describe_z(z, trig)
-            ),
+            "violated: negative at the witness point".to_string(),
+            Some(counterexample(
+                &param.map(|n| (n, p)).into_iter().collect::<Vec<_>>(),
+                z,
+                value,
+                trig,
+            )),
         ),
         Certificate::Pole(why) => (
             Status::Fails,
-            format!("{what}: not defined on the whole domain: {why}"),
+            format!("not defined on the whole domain: {why}"),
+            None,
         ),
-        Certificate::Undecided(why) => (Status::NotCheckable, format!("{what}: undecided ({why})")),
-    }
+        Certificate::Undecided(why) => (Status::NotCheckable, format!("undecided ({why})"), None),
+    };
+    (
+        status,
+        Evidence::new(Kind::Certificate, text)
+            .about(what, status)
+            .witnessed(w),
+    )
 }
 
 /// Nonnegativity of every function of a family on a parameter box (or at
@@ -74,7 +124,7 @@ pub fn nonnegative_named(
     bx: &ParamBox,
 ) -> Verdict {
     let mut status = Status::Holds;
-    let mut evidence = Vec::new();
+    let mut evidence = EvidenceList::default();
     for (f, name) in fs.iter().zip(names) {
         let (s, line) = describe(
             &format!("{} ≥ 0", name.as_ref()),
@@ -110,46 +160,46 @@ pub fn nonnegative_on_box_named(
 ) -> Verdict {
     let region: Vec<String> = params.iter().map(|(n, bx)| format!("{n} ∈ {bx}")).collect();
     let mut status = Status::Holds;
-    let mut evidence = vec![format!("parameter box {}", region.join(" × "))];
+    let mut evidence = EvidenceList::from(vec![format!("parameter box {}", region.join(" × "))]);
     for (f, name) in fs.iter().zip(names) {
         let name = name.as_ref();
-        let (s, line) = match certify_box(f, trig, params) {
+        let (s, text, w) = match certify_box(f, trig, params) {
             BoxCertificate::NonNegative { boxes } => (
                 Status::Holds,
                 format!(
-                    "{name} ≥ 0: certified on the whole domain and box ({boxes} Bernstein boxes with all coefficients ≥ 0)"
+                    "certified on the whole domain and box ({} with all coefficients ≥ 0)",
+                    crate::report::plural(boxes, "Bernstein box", "Bernstein boxes")
                 ),
+                None,
             ),
             BoxCertificate::Counterexample {
                 params: at,
                 z,
                 value,
             } => {
-                let ps: Vec<String> = params
-                    .iter()
-                    .zip(&at)
-                    .map(|((n, _), v)| format!("{n} = {v}"))
-                    .collect();
+                let named: Vec<(&str, &Rational)> =
+                    params.iter().zip(&at).map(|((n, _), v)| (*n, v)).collect();
                 (
                     Status::Fails,
-                    format!(
-                        "{name} ≥ 0: violated at {}, {}, where it equals {value} (exact)",
-                        ps.join(", "),
-                        describe_z(&z, trig)
-                    ),
+                    "violated: negative at the witness point".to_string(),
+                    Some(counterexample(&named, &z, &value, trig)),
                 )
             }
             BoxCertificate::Pole(why) => (
                 Status::Fails,
-                format!("{name} ≥ 0: not defined on the whole domain and box: {why}"),
+                format!("not defined on the whole domain and box: {why}"),
+                None,
             ),
-            BoxCertificate::Undecided(why) => (
-                Status::NotCheckable,
-                format!("{name} ≥ 0: undecided ({why})"),
-            ),
+            BoxCertificate::Undecided(why) => {
+                (Status::NotCheckable, format!("undecided ({why})"), None)
+            }
         };
         status = Status::conjunction([status, s]);
-        evidence.push(line);
+        evidence.push(
+            Evidence::new(Kind::Certificate, text)
+                .about(format!("{name} ≥ 0"), s)
+                .witnessed(w),
+        );
     }
     Verdict::new(status, CERTIFIED, evidence)
 }
@@ -181,7 +231,7 @@ pub fn show_end(e: &EndPoint, param: &str, trig: bool) -> String {
                 "irrational"
             };
             format!(
-                "exact end {} ({kind}, {}), proved: a root of the boundary polynomial {}; admissibility is constant between consecutive boundary roots: the gaps from the start to it are admissible (the last at {param} = {inside}, certified), the gap beyond it is not: {}",
+                "exact end {} ({kind}, {}), proved: a root of the boundary polynomial {}; the gaps between boundary roots up to it are admissible (the last certified at {param} = {inside}), the gap beyond it is not: {}",
                 value.describe(param, 12),
                 if *closed { "included" } else { "excluded" },
                 value.poly_text(param),
@@ -315,10 +365,10 @@ pub fn maximal_against(
     let start = published.start();
     let names: Vec<&str> = names.iter().map(AsRef::as_ref).collect();
     let r = maximal_range(fs, &names, trig, name, &start);
-    let mut evidence = vec![format!(
+    let mut evidence = EvidenceList::from(vec![format!(
         "published range of {}: {} ({})",
         published.symbol, published.range, published.source
-    )];
+    )]);
     if let Some(o) = &r.start_outside {
         evidence.push(format!(
             "the search starts inside the published range at {name} = {start}, which is not admissible: {}",
@@ -354,9 +404,8 @@ pub fn maximal_against(
     let bracketed =
         matches!(r.lo, EndPoint::Bracket { .. }) || matches!(r.hi, EndPoint::Bracket { .. });
     if cs == Status::Fails || (bracketed && cs != Status::Holds) {
-        evidence.push(
-            "the certificate of the interval is missing or contradicts the ends: no verdict".into(),
-        );
+        evidence
+            .push("the certificate of the interval is missing or contradicts the ends: no verdict");
         status = Status::NotCheckable;
     }
     (r, Verdict::new(status, MAXIMAL, evidence))

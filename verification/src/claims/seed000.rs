@@ -117,7 +117,7 @@ fn m1() -> Verdict {
         corrected
             .evidence
             .into_iter()
-            .filter(|e| e.starts_with("corrected")),
+            .filter(|e| e.line().starts_with("corrected")),
     );
     Verdict::new(Status::HoldsAfterCorrection, IDENTITY, evidence).with_correction(
         "the theorem holds; in the proof's step \"4ζ² − 4ζ + 4 + 4 + 2ζ² − ζ + 2\" the term −ζ must be −2ζ (2(2 + ζ² − ζ + 1) = 2ζ² − 2ζ + 6)",
@@ -222,7 +222,7 @@ fn m3b() -> Verdict {
     let mut v = Verdict::all(IDENTITY, parts);
     v.evidence.insert(
         0,
-        "uniform knots n_i = i (unit spacing; q_j = q_{j−1} = q_{j−2} as the paper states), span j = 10; Appendix A uses F0 = l0/D, F1 = l1/D, F2 = l2/D, F3 = l3/D with D = 6ζ² − 6ζ + 10".into(),
+        "uniform knots n_i = i (unit spacing; q_j = q_{j−1} = q_{j−2} as the paper states), span j = 10; Appendix A uses F0 = l0/D, F1 = l1/D, F2 = l2/D, F3 = l3/D with D = 6ζ² − 6ζ + 10",
     );
     v
 }
@@ -243,8 +243,7 @@ fn m6() -> Verdict {
     parts.push(("Σ Q_j − 1 (symbolic weights)".into(), sum(&q), one));
     let mut v = identities(parts);
     v.evidence.push(
-        "uniform case (Appendix A basis F_j = l_j/(6ζ² − 6ζ + 10)), weights as symbols w0…w3"
-            .into(),
+        "uniform case (Appendix A basis F_j = l_j/(6ζ² − 6ζ + 10)), weights as symbols w0…w3",
     );
     v
 }

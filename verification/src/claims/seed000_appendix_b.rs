@@ -8,7 +8,7 @@ use trig_core::{Family, Ring};
 use trig_symbolic::Sym;
 
 use super::seed000_appendix_c::{NONUNIFORM_J, nonuniform_knots};
-use super::seed000_appendix_print::{Formula, compare, zeta};
+use super::seed000_appendix_print::{Formula, printed_part, zeta};
 use crate::certify::evidence::{CERTIFIED, describe};
 use crate::certify::nonneg::certify;
 use crate::claim::{Claim, Seed};
@@ -60,18 +60,13 @@ fn m11() -> Verdict {
     let mut parts: Vec<(String, Verdict)> = PRINTED_Y
         .iter()
         .enumerate()
-        .map(|(k, text)| {
-            (
-                format!("y_{k} printed {text}"),
-                compare(&Formula::parse(text), &y[k]),
-            )
-        })
+        .map(|(k, text)| printed_part(format!("y_{k}"), text, &Formula::parse(text), &y[k]))
         .collect();
     parts.push(("conclusion \"> 0\"".into(), conclusion()));
     let mut v = Verdict::all(IDENTITY, parts);
     v.evidence.insert(
         0,
-        "b_i = b_{j+2,i} as symbols, S = s(ξ); y_k = coefficient of z^k in (1 + z²)³ Σ b_i l_i(t), sin t = 2z/(1+z²), cos t = (1−z²)/(1+z²); t ∈ [0, π/2] gives z ∈ [0, 1] (the print says t ∈ [0, 1])".into(),
+        "b_i = b_{j+2,i} as symbols, S = s(ξ); y_k = coefficient of z^k in (1 + z²)³ Σ b_i l_i(t), sin t = 2z/(1+z²), cos t = (1−z²)/(1+z²); t ∈ [0, π/2] gives z ∈ [0, 1] (the print says t ∈ [0, 1])",
     );
     v
 }

@@ -9,7 +9,7 @@ use trig_core::Family;
 use trig_deriv::{End, Wrt, endpoint_derivatives};
 use trig_symbolic::Sym;
 
-use super::seed000_appendix_print::{Formula, compare, zeta};
+use super::seed000_appendix_print::{Formula, printed_part, zeta};
 use crate::claim::{Claim, Seed, shared};
 use crate::continuity::{
     self, ContinuityError, KnotContinuity, METHOD, achieved, curve_end, nonuniform_bspline,
@@ -189,16 +189,18 @@ fn m5() -> Verdict {
     for (at, coef, end, values) in table {
         let computed = piece_at(coef, end);
         for (r, text) in values.iter().enumerate() {
-            parts.push((
-                format!("F_j^({r})({at}) printed {text}"),
-                compare(&Formula::parse(text), &computed[r]),
+            parts.push(printed_part(
+                format!("F_j^({r})({at})"),
+                text,
+                &Formula::parse(text),
+                &computed[r],
             ));
         }
     }
     let mut v = Verdict::all(IDENTITY, parts);
     v.evidence.insert(
         0,
-        "pieces of (1) with the coefficients as symbols: a = a_j (piece a_j l3 on [n_j, n_{j+1})), c_k = c_{j+1,k}, b_k = b_{j+2,k}, d = d_{j+3}; S = s(ξ) = ξ² − ξ + 1; derivatives in the local variable u = (n − n_i)/q_i, t = πu/2 (the print's factors (π/2)^k)".into(),
+        "pieces of (1) with the coefficients as symbols: a = a_j (piece a_j l3 on [n_j, n_{j+1})), c_k = c_{j+1,k}, b_k = b_{j+2,k}, d = d_{j+3}; S = s(ξ) = ξ² − ξ + 1; derivatives in the local variable u = (n − n_i)/q_i, t = πu/2 (the print's factors (π/2)^k)",
     );
     v
 }
@@ -333,18 +335,25 @@ fn appendix_d(lines: impl Iterator<Item = DLine>, label: impl Fn(&DLine) -> Stri
     let computed = [curve_at(End::Start), curve_at(End::End)];
     let (mut parts, mut garbled) = (Vec::new(), Vec::new());
     for line in lines {
-        let name = format!("{} printed {}", label(&line), line.text);
         match line.garbled {
             None => {
                 let at = usize::from(line.end == End::End);
                 let printed = Formula::parse(line.text);
-                parts.push((name, compare(&printed, &computed[at][line.order])));
+                parts.push(printed_part(
+                    label(&line),
+                    line.text,
+                    &printed,
+                    &computed[at][line.order],
+                ));
             }
-            Some(reason) => garbled.push((name, Verdict::not_checkable(reason))),
+            Some(reason) => garbled.push((
+                format!("{} printed {}", label(&line), line.text),
+                Verdict::not_checkable(reason),
+            )),
         }
     }
     let mut v = Verdict::all(IDENTITY, parts);
-    v.evidence.insert(0, APPENDIX_D_SETUP.into());
+    v.evidence.insert(0, APPENDIX_D_SETUP);
     v.evidence.extend(Verdict::all(IDENTITY, garbled).evidence);
     v
 }
@@ -353,7 +362,7 @@ fn m9() -> Verdict {
     let mut v = appendix_d(APPENDIX_D.into_iter(), |l| l.label.to_string());
     v.evidence.insert(
         1,
-        "read as printed: the stray comma in \"S_1, + [...]S_2\" of T(n_j^+) is punctuation; the unmatched \"[\" opening both T^iv values is closed before \"}\" (it groups a sum: any closing gives the same value); \"(c_{j,0} − c_{j,2} + c_{j,2})\" in T^v(n_j^+) is kept as printed".into(),
+        "read as printed: the stray comma in \"S_1, + [...]S_2\" of T(n_j^+) is punctuation; the unmatched \"[\" opening both T^iv values is closed before \"}\" (it groups a sum: any closing gives the same value); \"(c_{j,0} − c_{j,2} + c_{j,2})\" in T^v(n_j^+) is kept as printed",
     );
     v
 }
@@ -370,7 +379,17 @@ fn m9b() -> Verdict {
 
 /// One line per knot, and the verdict "at least C^r at every knot".
 fn at_least(label: &str, knots: &[KnotContinuity], r: usize, param: Option<&str>) -> Verdict {
-    let evidence: Vec<String> = knots.iter().map(|k| k.describe(param)).collect();
+    let evidence: Vec<crate::evidence::Evidence> = knots
+        .iter()
+        .map(|k| {
+            let item = k.describe(param);
+            if k.smoothness.is_at_least(r) {
+                item
+            } else {
+                item.witnessed(k.witness())
+            }
+        })
+        .collect();
     let ok = knots.iter().all(|k| k.smoothness.is_at_least(r));
     let mut evidence = evidence;
     evidence.insert(
@@ -378,7 +397,8 @@ fn at_least(label: &str, knots: &[KnotContinuity], r: usize, param: Option<&str>
         format!(
             "{label}: achieved for all parameter values: {}",
             achieved(knots).map_or("no knots".into(), |s| s.to_string())
-        ),
+        )
+        .into(),
     );
     Verdict::new(
         if ok { Status::Holds } else { Status::Fails },
@@ -391,7 +411,8 @@ fn at_least(label: &str, knots: &[KnotContinuity], r: usize, param: Option<&str>
 /// generic ξ (then every ξ outside the finitely many exceptions is a
 /// counterexample); the exceptional values where C⁵ holds are listed.
 fn c5_except_one(label: &str, knots: &[KnotContinuity]) -> Verdict {
-    let mut evidence = vec![format!("{label}: C^5 claimed for every ξ ≠ 1")];
+    let mut evidence =
+        crate::evidence::EvidenceList::from(vec![format!("{label}: C^5 claimed for every ξ ≠ 1")]);
     for k in knots.iter().filter(|k| !k.smoothness.is_at_least(5)) {
         let good: Vec<String> = k
             .exceptions
@@ -399,12 +420,15 @@ fn c5_except_one(label: &str, knots: &[KnotContinuity]) -> Verdict {
             .filter(|e| e.smoothness.is_at_least(5))
             .map(|e| e.value.to_string())
             .collect();
-        evidence.push(format!(
-            "knot {}: {} for every ξ except ξ ∈ {{{}}}, where it is C^5",
-            k.knot,
-            k.smoothness,
-            good.join(", ")
-        ));
+        evidence.push(
+            crate::evidence::Evidence::note(format!(
+                "knot {}: {} for every ξ except ξ ∈ {{{}}}, where it is C^5",
+                k.knot,
+                k.smoothness,
+                good.join(", ")
+            ))
+            .witnessed(k.witness()),
+        );
     }
     let ok = knots.iter().all(|k| k.smoothness.is_at_least(5));
     Verdict::new(
@@ -523,7 +547,14 @@ fn m4b() -> Verdict {
                     Verdict::new(
                         if ok { Status::Holds } else { Status::Fails },
                         METHOD,
-                        cont.iter().map(|c| c.describe(Some("zeta"))).collect(),
+                        cont.iter().map(|c| {
+                            let item = c.describe(Some("zeta"));
+                            if c.smoothness.rank() >= want {
+                                item
+                            } else {
+                                item.witnessed(c.witness())
+                            }
+                        }),
                     )
                 }
                 Err(ContinuityError::Construction(e)) => Verdict::not_checkable(format!(
@@ -563,6 +594,7 @@ fn m8() -> Verdict {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::claims::seed000_appendix_print::compare;
     use crate::continuity::Smoothness;
 
     #[test]
@@ -594,9 +626,9 @@ mod tests {
         let line = |label: &str| {
             v.evidence
                 .iter()
+                .map(|e| e.line())
                 .find(|e| e.starts_with(&format!("{label} printed")))
                 .unwrap_or_else(|| panic!("{label}: {:?}", v.evidence))
-                .clone()
         };
         assert!(line("T(n_j^+)").contains(": holds"));
         // T'''(n_j^+) = (π/2)³ (2S − 5)[…] (Appendix C's factor), printed (5 + 2S)
@@ -614,9 +646,10 @@ mod tests {
     fn appendix_c_has_the_known_a3_misprint() {
         let v = m5();
         assert_eq!(v.status, Status::Fails);
-        let a3: Vec<&String> = v
+        let a3: Vec<String> = v
             .evidence
             .iter()
+            .map(|e| e.line())
             .filter(|e| e.contains("(6 + 6S)"))
             .collect();
         assert_eq!(a3.len(), 1);

@@ -16,7 +16,7 @@ use trig_deriv::table::{end_atoms, rate};
 use trig_deriv::{End, Jet, Wrt};
 use trig_symbolic::Sym;
 
-use super::seed000_appendix_print::{Formula, compare, zeta};
+use super::seed000_appendix_print::{Formula, printed_part, zeta};
 use crate::claim::{Claim, Seed};
 use crate::continuity::quotient_derivatives;
 use crate::exact::{IDENTITY, symbols};
@@ -197,14 +197,12 @@ fn decide(entries: &[Entry], table: &[Vec<Vec<Sym>>], preamble: &str) -> Verdict
     let parts = entries
         .iter()
         .map(|(eq, i, end, order, text)| {
-            let label = format!(
-                "{eq} Q_{i}{}({}) H_{i} printed {text}",
-                "'".repeat(*order),
-                ends[*end]
-            );
-            (
+            let label = format!("{eq} Q_{i}{}({}) H_{i}", "'".repeat(*order), ends[*end]);
+            printed_part(
                 label,
-                compare(&shorthands(Formula::parse(text)), &table[*end][*i][*order]),
+                text,
+                &shorthands(Formula::parse(text)),
+                &table[*end][*i][*order],
             )
         })
         .collect();
@@ -629,7 +627,7 @@ fn m15() -> Verdict {
     let mut v = decide(&entries, &general::<THIRD>(), GENERAL);
     v.evidence.insert(
         1,
-        "garbled print: \"A^-\" in (A20) and \"B^-\" in (A27) are read as \"A −\", \"B −\"; the outer bracket of (A28) encloses all three terms as printed; m(ξ)² is defined but never used".into(),
+        "garbled print: \"A^-\" in (A20) and \"B^-\" in (A27) are read as \"A −\", \"B −\"; the outer bracket of (A28) encloses all three terms as printed; m(ξ)² is defined but never used",
     );
     v
 }
@@ -645,9 +643,9 @@ mod tests {
         let line = |eq: &str| {
             v.evidence
                 .iter()
+                .map(|l| l.line())
                 .find(|l| l.starts_with(eq))
                 .unwrap()
-                .clone()
         };
         assert!(line("(A36)").contains(": holds"));
         assert!(line("(A37)").contains(": holds"));

@@ -9,7 +9,11 @@ use trig_symbolic::{Poly, Sym};
 use crate::certify::evidence::nonnegative_on;
 use crate::certify::unimodal::exactly_one_maximum;
 use crate::claim::{Claim, Seed};
-use crate::exact::{basis, combination, identities, identity, reflect, sum, symbols, symmetry};
+use crate::evidence::EvidenceList;
+use crate::exact::{
+    IDENTITY, basis, combination, identities, identity, linear_map_parts, reflect, sum, symbols,
+    symmetry,
+};
 use crate::verdict::{Status, Verdict};
 use trig_certify::ParamBox;
 
@@ -95,8 +99,15 @@ pub const CLAIMS: &[Claim] = &[
         id: "D10",
         seed: Seed::S002,
         source: "Theorem 2 (3), garbled print",
-        statement: "reading of the garbled print: R(t; P_i + q) = R(t; P_i) + q and R(t; P_i T) = R(t; P_i) T",
+        statement: "as printed: the first equation is unreadable (\"R_2^π − t, P, …\"); the second reads R(π/2 − t, P3, P4, P3, P2, P1, P3)·T = R(t, P0·T, P1·T, P2·T, P3·T, P4·T, P5·T)",
         check: d10,
+    },
+    Claim {
+        id: "D10b",
+        seed: Seed::S002,
+        source: "Theorem 2 (3), reading",
+        statement: "reading of the garbled print (geometric invariance as the text announces it): R(t; P_i + q) = R(t; P_i) + q and R(t; P_i T) = R(t; P_i) T",
+        check: d10b,
     },
     Claim {
         id: "D11",
@@ -233,26 +244,48 @@ fn d9b() -> Verdict {
     d9_with(true)
 }
 
+/// The print as it stands: the first equation cannot be read; the second,
+/// with the points as printed (`P3, P4, P3, P2, P1, P3` at `π/2 − t`), is an
+/// identity that can be decided (a matrix `T` acting on both sides; `T = k`
+/// times the identity is enough to refute it).
 fn d10() -> Verdict {
     let p: Vec<Sym> = symbols("P", 6);
     let w: Vec<Sym> = symbols("w", 6);
-    let (q, k) = (Sym::var("q"), Sym::var("k"));
-    let shifted: Vec<Sym> = p.iter().map(|x| x.clone() + &q).collect();
+    let k = Sym::var("k");
+    let printed: Vec<Sym> = [3, 4, 3, 2, 1, 3].iter().map(|&i| p[i].clone()).collect();
     let scaled: Vec<Sym> = p.iter().map(|x| x.clone() * &k).collect();
-    let mut v = identities(vec![
-        (
-            "R(P_i + q) − (R(P_i) + q)".into(),
-            rational_curve(&shifted, &w),
-            rational_curve(&p, &w) + &q,
-        ),
-        (
-            "R(k P_i) − k R(P_i) (a linear map acts coordinatewise)".into(),
-            rational_curve(&scaled, &w),
-            rational_curve(&p, &w) * &k,
-        ),
-    ]);
-    v.evidence.push("the printed equations are unreadable in our copy (\"R_2^π − t, P, …\"); this is the obvious reading".into());
-    v
+    let second = identity(
+        "R(π/2 − t, P3, P4, P3, P2, P1, P3)·k − R(t, P0·k, …, P5·k) (T = k·I)",
+        &(reflect(&rational_curve(&printed, &w), true) * &k),
+        &rational_curve(&scaled, &w),
+    );
+    Verdict::all(
+        IDENTITY,
+        vec![
+            (
+                "first equation".into(),
+                Verdict::not_checkable(
+                    "unreadable in our copy (\"R_2^π − t, P, …\"); its obvious reading is D10b",
+                ),
+            ),
+            ("second equation, as printed".into(), second),
+        ],
+    )
+}
+
+/// The reading: invariance under translation and under linear maps.
+fn d10b() -> Verdict {
+    let p: Vec<Sym> = symbols("P", 6);
+    let w: Vec<Sym> = symbols("w", 6);
+    let q = Sym::var("q");
+    let shifted: Vec<Sym> = p.iter().map(|x| x.clone() + &q).collect();
+    let mut parts = vec![(
+        "R(P_i + q) − (R(P_i) + q)".to_string(),
+        rational_curve(&shifted, &w),
+        rational_curve(&p, &w) + &q,
+    )];
+    parts.extend(linear_map_parts("R", 6, |pts| rational_curve(pts, &w)));
+    identities(parts)
 }
 
 /// Each `b_i` has exactly one maximum on `[0, π/2]`: certified count of the
@@ -315,7 +348,7 @@ const DESIGN: &str = "the right-hand sides V1, α1(V2 − V0), α1(V0 − 2V1 + 
 
 fn d6() -> Verdict {
     let mut v = identities(d6_parts(false));
-    v.evidence.push(DESIGN.into());
+    v.evidence.push(DESIGN);
     if v.status == Status::Fails {
         v = v.with_correction("see D6b: 3w1² → 32w1², 3w4² → 32w4², 1/w0² → 1/w5² and w3w3 → w3w5 in R''(π/2), R''_2 → R(π/2)");
     }
@@ -324,7 +357,7 @@ fn d6() -> Verdict {
 
 fn d6b() -> Verdict {
     let mut v = identities(d6_parts(true));
-    v.evidence.push(DESIGN.into());
+    v.evidence.push(DESIGN);
     v
 }
 
@@ -369,16 +402,12 @@ fn d7() -> Verdict {
             ratio.square() * &l[2],
         ),
     ]);
-    let mut evidence = vec![
+    let mut evidence = EvidenceList::from(vec![
         "segments from (6): Q_i(t, α_i, α_{i+1}) on V_{i−1}…V_{i+2}; both sides of the knot u_{i+1} use α_{i+1}; their values and t-derivatives at the knot are the end conditions (3) (reading D6b), Q^(k)(u) = (π/(2Δu_i))^k Q_i^(k)(t) by (7)".to_string(),
-    ];
-    evidence.extend(
-        low.evidence
-            .into_iter()
-            .map(|e| format!("orders 0–2 of (8): {e}")),
-    );
-    evidence.push("order 3 of (8) is not checkable: (3) fixes only orders 0–2 at each end; Q_i''' at the ends depends on the blending functions Tb_i(t, α1, α2) of (5), whose printed fraction is unreadable in our copy (see D12), i.e. on the weights w_i and control points the construction actually uses".into());
-    evidence.push("so F³ (a third-order connection relation) can be neither proved nor refuted; the readable part, (8) for k = 0, 1, 2, is G²/C²-type continuity in u and holds exactly".into());
+    ]);
+    evidence.extend(low.into_part("orders 0–2 of (8)"));
+    evidence.push("order 3 of (8) is not checkable: (3) fixes only orders 0–2 at each end; Q_i''' at the ends depends on the blending functions Tb_i(t, α1, α2) of (5), whose printed fraction is unreadable in our copy (see D12), i.e. on the weights w_i and control points the construction actually uses");
+    evidence.push("so F³ (a third-order connection relation) can be neither proved nor refuted; the readable part, (8) for k = 0, 1, 2, is G²/C²-type continuity in u and holds exactly");
     Verdict::new(Status::NotCheckable, crate::exact::IDENTITY, evidence)
 }
 
@@ -467,7 +496,7 @@ fn d11() -> Verdict {
     let b = basis(Family::Seed002Quartic);
     let names = Family::Seed002Quartic.info().functions;
     let mut status = Status::Holds;
-    let mut evidence = Vec::new();
+    let mut evidence = EvidenceList::default();
     for (f, name) in b.iter().zip(names) {
         match fourier(f) {
             Ok(terms) => {
@@ -495,7 +524,7 @@ fn d11() -> Verdict {
             }
         }
     }
-    evidence.push("the printed span has 8 functions but omits sin 2t from the 9-dimensional space of trigonometric polynomials of degree ≤ 4; the rational blending functions w_i b_i / Σ w_j b_j equal b_i when all weights are equal (Σ b_j = 1, D1b), so the polynomial b_i decide the claim".into());
+    evidence.push("the printed span has 8 functions but omits sin 2t from the 9-dimensional space of trigonometric polynomials of degree ≤ 4; the rational blending functions w_i b_i / Σ w_j b_j equal b_i when all weights are equal (Σ b_j = 1, D1b), so the polynomial b_i decide the claim");
     Verdict::new(
         status,
         "exact: Fourier expansion of each b_i in Q[s, c]/(s² + c² − 1), triangular solve on the normal-form basis c^k, s·c^k",

@@ -6,6 +6,7 @@ use trig_deriv::{Wrt, knot_derivatives};
 use trig_symbolic::Sym;
 
 use crate::claim::{Claim, Seed};
+use crate::evidence::EvidenceList;
 use crate::exact::IDENTITY;
 use crate::verdict::{Status, Verdict};
 
@@ -34,7 +35,7 @@ fn s1() -> Verdict {
 
 fn s2() -> Verdict {
     let knots = knot_derivatives::<Sym, 5>(Family::BSpline3, &[], Wrt::U, &Sym::one());
-    let mut evidence = Vec::new();
+    let mut evidence = EvidenceList::default();
     let mut c2 = true;
     let mut c3 = true;
     for k in &knots[1..4] {
@@ -60,6 +61,6 @@ fn s2() -> Verdict {
     } else {
         Status::Fails
     };
-    evidence.insert(0, "uniform cubic B-spline basis function (catalog `bspline3`), exact one-sided derivatives at its interior knots".into());
+    evidence.insert(0, "uniform cubic B-spline basis function (catalog `bspline3`), exact one-sided derivatives at its interior knots");
     Verdict::new(status, IDENTITY, evidence)
 }

@@ -8,7 +8,11 @@ use trig_symbolic::Sym;
 
 use crate::certify::evidence::{nonnegative_on, nonnegative_on_box};
 use crate::claim::{Claim, Seed};
-use crate::exact::{IDENTITY, basis, combination, identities, reflect, sum, symbols, symmetry};
+use crate::evidence::{Assignment, Evidence, EvidenceList, Expr, Value, Witness};
+use crate::exact::{
+    IDENTITY, basis, combination, identities, identity, linear_map_parts, reflect, sum, symbols,
+    symmetry,
+};
 use crate::verdict::{Status, Verdict};
 use trig_certify::ParamBox;
 
@@ -40,6 +44,13 @@ pub const CLAIMS: &[Claim] = &[
         source: "III(i) (a)",
         statement: "b0 + b1 = 1; b2(t) + b3(1 − t) = 1",
         check: e3,
+    },
+    Claim {
+        id: "E3b",
+        seed: Seed::S004,
+        source: "III(i) (a), reading",
+        statement: "reading of E3's second identity as the Hermite property it copies (E1b): b2(t) + b3(1 − t) = 0",
+        check: e3b,
     },
     Claim {
         id: "E4",
@@ -96,6 +107,13 @@ pub const CLAIMS: &[Claim] = &[
         source: "III(ii) (c)",
         statement: "T(λ, μ; t; P_i + q) = T(λ, μ; t; P_i) + q and T(λ, μ; t; P_i M) = T(λ, μ; t; P_i) M",
         check: e11,
+    },
+    Claim {
+        id: "E11b",
+        seed: Seed::S004,
+        source: "III(ii) (c), second equation",
+        statement: "invariance under linear maps alone: T(λ, μ; t; P_i M) = T(λ, μ; t; P_i) M for every d × d matrix M",
+        check: e11b,
     },
     Claim {
         id: "E12",
@@ -244,6 +262,15 @@ fn e3() -> Verdict {
     ])
 }
 
+fn e3b() -> Verdict {
+    let b = basis(Family::Eh);
+    identity(
+        "b2(t) + b3(1 − t)",
+        &(b[2].clone() + &reflect(&b[3], false)),
+        &Sym::zero(),
+    )
+}
+
 fn e5() -> Verdict {
     symmetry(Family::Eh, 0..4)
 }
@@ -272,7 +299,7 @@ fn e8() -> Verdict {
             .collect(),
     );
     v.evidence.push(
-        "the second sentence (λ = μ gives the single-parameter bases of its reference [20]) cites a basis not printed in the paper and is not checked".into(),
+        "the second sentence (λ = μ gives the single-parameter bases of its reference [20]) cites a basis not printed in the paper and is not checked",
     );
     v
 }
@@ -324,7 +351,7 @@ fn e9() -> Verdict {
     }
     let mut evidence = printed.evidence;
     evidence.extend(shifted.evidence.into_iter().filter(|e| e.contains("→")));
-    evidence.push("the segment has only P0…P3; the printed R'' formulas use P4".into());
+    evidence.push("the segment has only P0…P3; the printed R'' formulas use P4");
     Verdict::new(Status::HoldsAfterCorrection, IDENTITY, evidence).with_correction(
         "index shift in both R'' formulas: 2μ(P2 − P3) − 2(2P2 + P3) and 2μ(P2 − P3) + 2(P2 + 2P3)",
     )
@@ -407,22 +434,27 @@ fn e11() -> Verdict {
     let q = Sym::var("q");
     let shifted: Vec<Sym> = p.iter().map(|pi| pi.clone() + &q).collect();
     let (l, m, t) = (Sym::var("lambda"), Sym::var("mu"), Sym::var("t"));
-    let k = Sym::var("k");
-    let scaled: Vec<Sym> = p.iter().map(|pi| pi.clone() * &k).collect();
-    let mut v = identities(vec![
-        (
-            "T(P_i + q) − (T(P_i) + q)".into(),
-            eh_curve(&shifted, &l, &m, &t),
-            eh_curve(&p, &l, &m, &t) + &q,
-        ),
-        (
-            "T(k P_i) − k T(P_i) (a linear map acts coordinatewise)".into(),
-            eh_curve(&scaled, &l, &m, &t),
-            eh_curve(&p, &l, &m, &t) * &k,
-        ),
-    ]);
-    v.evidence.push("translation invariance needs Σ b_i = 1, which fails (E6); linear invariance holds for any basis".into());
+    let mut parts = vec![(
+        "T(P_i + q) − (T(P_i) + q)".to_string(),
+        eh_curve(&shifted, &l, &m, &t),
+        eh_curve(&p, &l, &m, &t) + &q,
+    )];
+    parts.extend(eh_linear_map());
+    let mut v = identities(parts);
+    v.evidence.push("translation invariance needs Σ b_i = 1, which fails (E6); linear invariance holds for any basis (E11b)");
     v
+}
+
+/// `T(P_i M) = T(P_i) M` for plane control points and a 2 × 2 matrix (a
+/// d × d matrix acts on each output coordinate through the same row
+/// combination, so d = 2 shows every case).
+fn eh_linear_map() -> Vec<(String, Sym, Sym)> {
+    let (l, m, t) = (Sym::var("lambda"), Sym::var("mu"), Sym::var("t"));
+    linear_map_parts("T", 4, |p| eh_curve(p, &l, &m, &t))
+}
+
+fn e11b() -> Verdict {
+    identities(eh_linear_map())
 }
 
 fn e12() -> Verdict {
@@ -492,12 +524,7 @@ fn e1cb() -> Verdict {
         return printed;
     }
     let mut evidence = printed.evidence;
-    evidence.extend(
-        corrected
-            .evidence
-            .into_iter()
-            .map(|e| format!("with h_i d_{{i+1}}: {e}")),
-    );
+    evidence.extend(corrected.into_part("with h_i d_{i+1}"));
     Verdict::new(Status::HoldsAfterCorrection, IDENTITY, evidence)
         .with_correction("β1(t) h_i d_{i+1} instead of β1(t) h_{i+1} d_{i+1} (t is measured in units of h_i on [x_i, x_{i+1}])")
 }
@@ -673,7 +700,7 @@ fn e15b() -> Verdict {
     ];
     let mut v = join_verdict(&j, &c2_conditions(&j), &printed, &["Q0", "Q2", "Q3"]);
     v.evidence
-        .insert(0, "one λ = λ1 = λ2, μ = μ1 = μ2 for both curves".into());
+        .insert(0, "one λ = λ1 = λ2, μ = μ1 = μ2 for both curves");
     v
 }
 
@@ -743,14 +770,38 @@ fn e17() -> Verdict {
     ];
     let all_zero = printed_hold.iter().all(|(_, e)| at(e).is_zero());
     let gap = at(&(j.r2[0].clone() - &j.r1[0]));
-    let mut evidence = vec![
-        j.terminal(),
+    let mut evidence = EvidenceList::from(vec![
+        Evidence::note(j.terminal()),
         "the relation between |P1Q2| and |P2Q1| is unreadable (\"|P1Q2| □ |P2Q1|\"); the counterexample below has Q2 − P1 = Q1 − P2, so it satisfies every reflexive relation between the two segments (equal length, parallel, ≤, ≥)".into(),
-        format!(
+        Evidence::note(format!(
             "one coordinate, λ1 = μ1 = λ2 = μ2 = 0, ω = 1: P = (0, 1, 2, 3), Q = (3, 4, 3, 0); printed conditions satisfied exactly: {all_zero}"
-        ),
-        format!("R2(0) − R1(1) = {gap} (exact): the curves do not even meet (G⁰ fails)"),
-    ];
+        )),
+        Evidence::note(format!(
+            "R2(0) − R1(1) = {gap} (exact): the curves do not even meet (G⁰ fails)"
+        ))
+        .witnessed(Some(Witness {
+            point: pts
+                .iter()
+                .map(|(name, v)| Assignment {
+                    name: Sym::var(name).to_unicode(),
+                    value: v.to_string(),
+                    latex: format!("{} = {}", Sym::var(name).to_latex(), v.to_latex()),
+                })
+                .collect(),
+            note: Some("one coordinate; the printed conditions hold exactly there".into()),
+            values: vec![
+                Value {
+                    label: "R1(1)".into(),
+                    value: Expr::new(&at(&j.r1[0])),
+                },
+                Value {
+                    label: "R2(0)".into(),
+                    value: Expr::new(&at(&j.r2[0])),
+                },
+            ],
+            exact: true,
+        })),
+    ]);
     let (sol, check) = derive(
         &[
             g1_conditions(&j, &omega),

@@ -12,10 +12,11 @@ use crate::certify::evidence::{
     maximal_versus_published, monotone, nonnegative_on, on_published_range,
 };
 use crate::claim::{Claim, Seed};
+use crate::evidence::Evidence;
 use crate::exact::{
     at_end, basis, combination, identities, identity, residual_verdict, sum, symbols, symmetry,
 };
-use crate::numeric::{differ, half_pi_minus, point, show, value};
+use crate::numeric::{counterexample_item, differ, half_pi_minus, point, show, value};
 use crate::verdict::{Status, Verdict};
 use trig_certify::ParamBox;
 
@@ -168,9 +169,8 @@ fn curve(b: &[Sym]) -> Sym {
 fn t1() -> Verdict {
     let h = basis(Family::ThesisQuadratic);
     let mut v = identity("H0 + H1 + H2 − 1", &sum(&h), &Sym::one());
-    v.evidence.push(
-        "H1 is defined in (3.1) as 1 − H0 − H2, so the identity holds by construction".into(),
-    );
+    v.evidence
+        .push("H1 is defined in (3.1) as 1 − H0 − H2, so the identity holds by construction");
     v
 }
 
@@ -187,18 +187,29 @@ fn reflection_counterexample(family: Family, param: (i64, i64), i: usize, j: usi
     } else {
         Status::Holds
     };
+    let item = counterexample_item(
+        format!(
+            "{name} = {}, u = 1/2: {}(1/2) = {}, but {}(π/2 − 1/2) = {} (π/2 − 1/2 ≈ 1.0708 lies outside u ∈ [0, 1])",
+            p[0],
+            f[i],
+            show(&a),
+            f[j],
+            show(&b)
+        ),
+        &[
+            (name.to_string(), p[0].to_string()),
+            ("u".into(), "1/2".into()),
+        ],
+        [
+            (format!("{}(1/2)", f[i]), &a),
+            (format!("{}(π/2 − 1/2)", f[j]), &b),
+        ],
+    );
     Verdict::new(
         status,
         "counterexample evaluated in 256-bit MPFR (difference far above rounding)",
-        vec![
-            format!(
-                "{name} = {}, u = 1/2: {}(1/2) = {}, but {}(π/2 − 1/2) = {} (π/2 − 1/2 ≈ 1.0708 lies outside u ∈ [0, 1])",
-                p[0],
-                f[i],
-                show(&a),
-                f[j],
-                show(&b)
-            ),
+        [
+            item,
             "the statement holds in the angle θ = πu/2 (θ ↦ π/2 − θ), i.e. for u ↦ 1 − u; see the reading".into(),
         ],
     )
@@ -243,7 +254,7 @@ fn t5b() -> Verdict {
         ("F(1) = P2".into(), f1, p2),
     ]);
     v.evidence.push(
-        "the residuals are (P1 − P0)/(β+1) and (P1 − P2)/(β+1): nonzero for every finite β ≥ 0 unless P1 coincides with the end point; e.g. β = 1, P0 = (0,0), P1 = (1.5,1.5) (3.2.3) gives F(0) = (0.75, 0.75)".into(),
+        "the residuals are (P1 − P0)/(β+1) and (P1 − P2)/(β+1): nonzero for every finite β ≥ 0 unless P1 coincides with the end point; e.g. β = 1, P0 = (0,0), P1 = (1.5,1.5) (3.2.3) gives F(0) = (0.75, 0.75)",
     );
     v
 }
@@ -254,9 +265,8 @@ fn t6() -> Verdict {
 
 fn t9() -> Verdict {
     let mut v = reflection_counterexample(Family::ThesisCubic, (0, 1), 0, 2);
-    v.evidence.push(
-        "as printed the index 2 − i is also out of range for i = 3 (b_{−1} does not exist)".into(),
-    );
+    v.evidence
+        .push("as printed the index 2 − i is also out of range for i = 3 (b_{−1} does not exist)");
     v
 }
 
@@ -279,7 +289,7 @@ fn t25() -> Verdict {
     );
     if v.status == Status::Holds {
         v.evidence.push(
-            "hence [T][A][V][A]^T[U] = [b(u)] V [b(v)]^T = Σ_i Σ_j b_i(u) b_j(v) V_{ij}, the double sum (5.3) with P_{i,j} = V_{ij}".into(),
+            "hence [T][A][V][A]^T[U] = [b(u)] V [b(v)]^T = Σ_i Σ_j b_i(u) b_j(v) V_{ij}, the double sum (5.3) with P_{i,j} = V_{ij}",
         );
     }
     v
@@ -295,10 +305,27 @@ fn t27() -> Verdict {
     } else {
         (Status::Holds, "not identically zero in m")
     };
+    // at a parameter outside the range, the sum is 1 at every point
+    let two = Rational::from(2);
+    let at = |x: &Sym| x.subs("m", &Sym::rational(two.clone()));
+    let point = [
+        ("m".to_string(), two.clone()),
+        ("s".to_string(), Rational::from((3, 5))),
+        ("c".to_string(), Rational::from((4, 5))),
+    ];
+    let value = crate::witness::at(&at(&sum(&basis(Family::ThesisCubic))), &point);
+    let witness = value.map(|v| {
+        crate::witness::witness(
+            &point,
+            &["m".into(), "s".into(), "c".into()],
+            vec![("Σ b_i (claimed ≠ 1)", v)],
+        )
+    });
     Verdict::new(
         status,
         crate::exact::IDENTITY,
-        vec![format!("Σ b_i − 1 = {residual}, {reading}")],
+        [Evidence::note(format!("Σ b_i − 1 = {residual}, {reading}"))
+            .witnessed(witness.filter(|_| status == Status::Fails))],
     )
 }
 
@@ -323,7 +350,7 @@ fn t28() -> Verdict {
     let mut v = identities(parts);
     debug_assert_eq!(Family::MajeedQayyum.info().variable, Variable::Angle);
     v.evidence.push(
-        "so (3.7), (6.2) and (6.1) are one family: m = λ = η − 1 (with t = πu/2 for (6.1)); the published ranges m ∈ [−2, 1], λ ∈ [−2, 1], η ∈ (1/2, 2] correspond to m ∈ [−2, 1], [−2, 1] and (−1/2, 1]".into(),
+        "so (3.7), (6.2) and (6.1) are one family: m = λ = η − 1 (with t = πu/2 for (6.1)); the published ranges m ∈ [−2, 1], λ ∈ [−2, 1], η ∈ (1/2, 2] correspond to m ∈ [−2, 1], [−2, 1] and (−1/2, 1]",
     );
     v
 }
@@ -388,8 +415,25 @@ fn t37() -> Verdict {
         Status::Holds
     };
     let mut evidence = v.evidence;
+    let point = [
+        ("beta".to_string(), Rational::new()),
+        ("s".to_string(), Rational::from((3, 5))),
+        ("c".to_string(), Rational::from((4, 5))),
+    ];
+    let curve = crate::exact::combination(&h, &points(3));
+    let f = point
+        .iter()
+        .fold(curve, |acc, (n, q)| acc.subs(n, &Sym::rational(q.clone())));
+    let witness = Some(crate::witness::witness(
+        &point,
+        &["beta".into(), "s".into(), "c".into()],
+        vec![("F (the same point P1 for every θ)", f)],
+    ));
     evidence.push(
-        "with β = 0 the curve is F(u) = P1 for every u: a single point, not a straight line (3.2.3 says the same: \"H1(u) becomes identically equal to one\")".into(),
+        Evidence::note(
+            "with β = 0 the curve is F(u) = P1 for every u: a single point, not a straight line (3.2.3 says the same: \"H1(u) becomes identically equal to one\")",
+        )
+        .witnessed(witness.filter(|_| status == Status::Fails)),
     );
     Verdict::new(status, crate::exact::IDENTITY, evidence)
 }
@@ -447,7 +491,7 @@ fn t29() -> Verdict {
         };
         let mut m = maximal;
         m.status = Status::Holds;
-        m.evidence.push(note.into());
+        m.evidence.push(note);
         parts.push((format!("{id}: maximal range (evidence)"), m));
     }
     Verdict::all(crate::certify::evidence::CERTIFIED, parts)
@@ -556,7 +600,7 @@ fn t31() -> Verdict {
         evidence,
     );
     v.evidence.push(
-        "with (6.2) the basis is nonnegative and sums to 1 at λ = −1, −2, so every curve lies in the convex hull: the printed observation does not hold for (6.2); the listing's functions do not sum to 1 (T30), which is what Figure 6.3 shows".into(),
+        "with (6.2) the basis is nonnegative and sums to 1 at λ = −1, −2, so every curve lies in the convex hull: the printed observation does not hold for (6.2); the listing's functions do not sum to 1 (T30), which is what Figure 6.3 shows",
     );
     v
 }

@@ -18,6 +18,7 @@ use trig_symbolic::Sym;
 
 use super::thesis::claim;
 use crate::claim::Claim;
+use crate::evidence::{Evidence, EvidenceList};
 use crate::exact::{IDENTITY, identities};
 use crate::verdict::{Status, Verdict};
 
@@ -201,12 +202,8 @@ fn reading_verdict(printed: Verdict, corrected: Verdict, correction: &str) -> Ve
         (_, Status::Holds) => Status::HoldsAfterCorrection,
         _ => Status::Fails,
     };
-    let mut evidence: Vec<String> = printed
-        .evidence
-        .iter()
-        .map(|e| format!("as printed: {e}"))
-        .collect();
-    evidence.extend(corrected.evidence.iter().map(|e| format!("corrected: {e}")));
+    let mut evidence = printed.into_part("as printed");
+    evidence.extend(corrected.into_part("corrected"));
     let v = Verdict::new(status, IDENTITY, evidence);
     if status == Status::Holds {
         v
@@ -225,13 +222,38 @@ fn approx(x: &Sym) -> String {
     }
 }
 
-fn jump_lines(spline: &Spline<Sym>, orders: usize) -> (bool, Vec<String>) {
+fn jump_lines(spline: &Spline<Sym>, orders: usize) -> (bool, Vec<Evidence>) {
     let mut ok = true;
     let lines = knot_jumps(spline)
         .iter()
         .map(|k| {
             let order = k.continuity_order();
-            ok &= order.is_some_and(|o| o + 1 >= orders);
+            let enough = order.is_some_and(|o| o + 1 >= orders);
+            ok &= enough;
+            // a jump below the claimed order: the two one-sided values, exact
+            let witness = k
+                .jumps
+                .iter()
+                .take(orders)
+                .position(|j| !j.is_zero())
+                .filter(|_| !enough)
+                .map(|r| {
+                    let primes = "'".repeat(r);
+                    let x = k.x.to_string();
+                    let mut w = crate::witness::witness(
+                        &[("x".into(), k.x.clone())],
+                        &["x".into(), "pi".into()],
+                        vec![
+                            (&format!("P{primes}({x}⁻)"), k.left[r].clone()),
+                            (&format!("P{primes}({x}⁺)"), k.right[r].clone()),
+                        ],
+                    );
+                    w.note = Some(format!(
+                        "{} ({}), the pieces on either side of the knot; π kept as a symbol",
+                        spline.data.table.name, spline.variant
+                    ));
+                    w
+                });
             let jumps: Vec<String> = k
                 .jumps
                 .iter()
@@ -244,13 +266,14 @@ fn jump_lines(spline: &Spline<Sym>, orders: usize) -> (bool, Vec<String>) {
                 })
                 .collect();
             let achieved = order.map_or("discontinuous".to_string(), |o| format!("C{o}"));
-            format!(
+            Evidence::note(format!(
                 "{} ({}), knot x = {}: jumps of P, P', P'', P''' = [{}] → {achieved}",
                 spline.data.table.name,
                 spline.variant,
                 k.x,
                 jumps.join("; ")
-            )
+            ))
+            .witnessed(witness)
         })
         .collect();
     (ok, lines)
@@ -271,9 +294,10 @@ fn t21() -> Verdict {
         (Ok(p), Ok(c)) => (p, c),
         (Err(e), _) | (_, Err(e)) => return Verdict::not_checkable(e),
     };
-    let (ok, mut evidence) = jump_lines(&printed, 3);
+    let (ok, evidence) = jump_lines(&printed, 3);
+    let mut evidence = EvidenceList::from(evidence);
     let (fixed, lines) = jump_lines(&corrected, 3);
-    evidence.push("(4.25) uses the control points of (4.21) unchanged: D_i are computed, not imposed, so P'' jumps wherever the two pieces' D_i differ".into());
+    evidence.push("(4.25) uses the control points of (4.21) unchanged: D_i are computed, not imposed, so P'' jumps wherever the two pieces' D_i differ");
     evidence.extend(lines);
     let status = if ok { Status::Holds } else { Status::Fails };
     let v = Verdict::new(status, JUMPS, evidence);
@@ -286,7 +310,7 @@ fn t21() -> Verdict {
 
 fn t22b() -> Verdict {
     let mut all_ok = true;
-    let mut evidence = Vec::new();
+    let mut evidence = EvidenceList::default();
     for name in ["thesis-table-4.3", "thesis-table-4.6"] {
         match sym_spline(name, Scheme::G1, Variant::Printed) {
             Ok(s) => {
@@ -297,7 +321,7 @@ fn t22b() -> Verdict {
             Err(e) => return Verdict::not_checkable(e),
         }
     }
-    evidence.push("for the graph y = P(x), tangent continuity is continuity of P'; at x_{i+1} the left piece ends with slope d_{i+1} (4.26) and the right piece starts with n_{i+1} d_{i+1}, so the slope jumps by (n_{i+1} − 1) d_{i+1}".into());
+    evidence.push("for the graph y = P(x), tangent continuity is continuity of P'; at x_{i+1} the left piece ends with slope d_{i+1} (4.26) and the right piece starts with n_{i+1} d_{i+1}, so the slope jumps by (n_{i+1} − 1) d_{i+1}");
     let status = if all_ok { Status::Holds } else { Status::Fails };
     let v = Verdict::new(status, JUMPS, evidence);
     if all_ok {
@@ -329,28 +353,22 @@ fn t23() -> Verdict {
             ),
         ]
     };
-    let mut evidence = Vec::new();
+    let mut evidence = EvidenceList::default();
     for (wrt, h) in [
         (Wrt::U, Sym::one()),
         (Wrt::Angle, Sym::one()),
         (Wrt::X, v("h")),
     ] {
         let verdict = identities(residuals(&p1, &p2, wrt, &h));
-        evidence.extend(
-            verdict
-                .evidence
-                .iter()
-                .map(|e| format!("(4.34) as printed, derivatives in {wrt}: {e}")),
-        );
+        evidence.extend(verdict.into_part(&format!("(4.34) as printed, derivatives in {wrt}")));
     }
     // the named correction: 2(1+m)(α+1)V_3^1 → (1 + 2(1+m)α)V_3^1, i.e. subtract (2m+1)V_3^1
     let fixed = p2.clone() - &((Sym::int(2) * &m + &Sym::one()) * &v3);
     let corrected = identities(residuals(&p1, &fixed, Wrt::U, &Sym::one()));
     evidence.extend(
         corrected
-            .evidence
-            .iter()
-            .map(|e| format!("corrected V_2^2, derivatives in u (4.30): {e}")),
+            .clone()
+            .into_part("corrected V_2^2, derivatives in u (4.30)"),
     );
     let printed_u = identities(residuals(&p1, &p2, Wrt::U, &Sym::one()));
     let status = match (printed_u.status, corrected.status) {
@@ -418,7 +436,25 @@ fn positivity(name: &str, scheme: Scheme, variant: Variant) -> Verdict {
             } else {
                 Status::NotCheckable
             };
-            let evidence = minima.iter().map(|m| describe(name, variant, m)).collect();
+            let evidence = minima.iter().map(|m| {
+                let item = Evidence::note(describe(name, variant, m));
+                if !m.negative() {
+                    return item;
+                }
+                // the point where P is certified negative: its exact upper bound
+                let mut w = crate::witness::witness(
+                    &[("z".into(), m.z.clone())],
+                    &["z".into()],
+                    vec![("P ≤", Sym::rational(m.upper.clone()))],
+                );
+                w.note = Some(format!(
+                    "{name} ({variant}), piece {}: z = tan(θ/2), x ≈ {:.6}; P evaluated exactly with π enclosed in [3.14159265358979323846264338327, …328], the bound rounded up",
+                    m.piece + 1,
+                    m.x
+                ));
+                w.values[0].value = crate::evidence::Expr::decimal(&m.upper, &decimal(&m.upper, true));
+                item.witnessed(Some(w))
+            });
             Verdict::new(status, CERTIFIED, evidence)
         }
     }
@@ -470,7 +506,7 @@ fn t24() -> Verdict {
         .zip(["T24a", "T24b", "T24c", "T24d", "T24e", "T24f"])
         .map(|(f, id)| (id.to_string(), f()))
         .collect();
-    Verdict::all(CERTIFIED, parts)
+    Verdict::umbrella(parts)
 }
 
 #[cfg(test)]

@@ -6,8 +6,10 @@
 //! Conventions, as the text states them: the first curve `Q₁` has control
 //! points `P₀…P₃`, the second `Q₂` has `P₄…P₇`; with different parameters the
 //! text gives `m₁` to `Q₂` and `m₂` to `Q₁`. Surfaces `S₁(u, v; m₁, m₂)`,
-//! `S₂(u, v; m₁*, m₂*)` join across `v` with, per the theorems, `m₁ = m₁*`
-//! (and `m₂ = m₂*`); the printed point formulas apply to every column.
+//! `S₂(u, v; m₁*, m₂*)` join across `v` with, per the theorems, `m₁ = m₁*`;
+//! with different parameters the proofs' equations (5.20)–(5.22) give the
+//! cross-boundary parameter `m₁*` to `S₂` and `m₂` to `S₁`, as for curves
+//! (see [`surface`]); the printed point formulas apply to every column.
 
 use std::sync::OnceLock;
 
@@ -344,20 +346,33 @@ fn t19() -> Verdict {
     ))
 }
 
-/// A surface join across `v`: `m1 = m1*` is the `u`-parameter, the `v`-parameter
-/// is `m` (Condition 1, all equal) or `m2 = m2*` (Condition 2) on both patches.
+/// A surface join across `v` (the "u-direction" joins of 5.3.1). Condition
+/// 1: every parameter `m`. Condition 2 follows the proofs' own equations
+/// (5.20)–(5.22), (5.30)–(5.32), (5.38)–(5.39), (5.45): the cross-boundary
+/// factor is `(m₁* + 2)` for `S₂` and `(m₂ + 2)` for `S₁` — `m₁` (= `m₁*`)
+/// for the second patch and `m₂` for the first, as in the curve case (4.7),
+/// (4.10) — and the `u`-direction basis has `m₁ = m₁*` on both patches. Read
+/// literally, (5.11) would give both patches the `v`-parameter `m₂ = m₂*`;
+/// the printed formulas, which contain `m₁` and `m₂`, are also decided under
+/// that reading, in the angle convention, and the result stated.
 fn surface(kind: JoinKind, same: bool, printed: Vec<Printed>) -> Verdict {
-    let (u_param, v_param) = if same {
-        (v("m"), v("m"))
-    } else {
-        (v("m1"), v("m2"))
+    if same {
+        let join = thesis_join(kind, true, printed);
+        return audit_surface(&join, &v("m"));
+    }
+    let join = thesis_join(kind, false, printed);
+    let mut verdict = audit_surface(&join, &v("m1"));
+    let literal = PrintedJoin {
+        first_params: vec![v("m2")],
+        second_params: vec![v("m2")],
+        ..join.clone()
     };
-    let join = PrintedJoin {
-        first_params: vec![v_param.clone()],
-        second_params: vec![v_param],
-        ..thesis_join(kind, same, printed)
-    };
-    audit_surface(&join, &u_param)
+    let holds = crate::joins::holds_in_angle(&literal);
+    verdict.evidence.push(format!(
+        "decided with the proofs' convention (5.20)–(5.22): cross-boundary parameter m₁ (= m₁*) for S₂ and m₂ for S₁; read literally, (5.11) gives both patches the cross-boundary parameter m₂ = m₂*, and under that reading the printed formula {} in the angle convention",
+        if holds { "holds" } else { "fails" }
+    ));
+    verdict
 }
 
 fn t26a() -> Verdict {
@@ -445,20 +460,12 @@ fn t26() -> Verdict {
         ("T26j", cylinder::t26j),
         ("T26k", cylinder::t26k),
     ];
-    let verdicts: Vec<(String, Verdict)> = parts
-        .iter()
-        .map(|(id, check)| (id.to_string(), check()))
-        .collect();
-    let status = if verdicts.iter().all(|(_, v)| v.status == Status::Holds) {
-        Status::Holds
-    } else {
-        Status::Fails
-    };
-    let evidence = verdicts
-        .iter()
-        .map(|(id, v)| format!("{id}: {}", v.status))
-        .collect();
-    Verdict::new(status, "umbrella: holds only if every part holds", evidence)
+    Verdict::umbrella(
+        parts
+            .iter()
+            .map(|(id, check)| (id.to_string(), check()))
+            .collect(),
+    )
 }
 
 /// Printed endpoint derivatives against computed ones, in the angle θ.

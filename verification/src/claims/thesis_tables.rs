@@ -22,6 +22,8 @@ use rug::ops::Pow;
 use rug::{Integer, Rational};
 
 use crate::claim::{Claim, Seed};
+use crate::evidence::EvidenceList;
+use crate::evidence::{Evidence, Expr, Kind, Value, Witness};
 use crate::verdict::{Status, Verdict};
 
 pub const CLAIMS: &[Claim] = &[Claim {
@@ -35,7 +37,7 @@ pub const CLAIMS: &[Claim] = &[Claim {
 const DATA: &str = include_str!("thesis_tables.txt");
 
 /// How the tables are checked, as the report states it.
-const METHOD: &str = "exact rational arithmetic on the printed decimals; a relation holds when the exact difference is within the printed rounding (½ unit in the last printed place of every value involved)";
+const METHOD: &str = "exact rational arithmetic on the printed decimals; a relation holds when the exact difference is within the printed rounding (½ unit in the last printed place of every value involved); relations of a segment table: TOTAL before and after total = Σ of the segments, TOTAL max and min = max and min over the segments, TOTAL average = mean of the segment averages, and each figure the text quotes = the TOTAL row; of a summary table: each entry = the TOTAL row of its per-letter table; of Table 6.17: each best scheme = the smallest average error, and its figures = the summaries";
 
 /// A malformed line of the embedded table data.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -182,29 +184,48 @@ fn decimal(q: &Rational) -> String {
 fn relation(what: &str, printed: &Num, computed: &Rational, allowance: Rational) -> Check {
     let diff = printed.value.clone() - computed;
     let ok = diff.clone().abs() <= allowance;
-    Check {
-        ok,
-        label: what.to_string(),
-        detail: format!(
-            "{what}: printed {}, computed {}, difference {} ({}; allowance ±{})",
+    let text = if ok {
+        format!(
+            "printed {}, computed {}, difference {} (within the printed rounding; allowance ±{})",
             printed.text,
             decimal(computed),
             decimal(&diff),
-            if ok {
-                "within the printed rounding"
-            } else {
-                "inconsistent"
-            },
             decimal(&allowance)
-        ),
+        )
+    } else {
+        format!(
+            "difference {} exceeds the rounding allowance ±{} (inconsistent)",
+            decimal(&diff),
+            decimal(&allowance)
+        )
+    };
+    let witness = (!ok).then(|| Witness {
+        point: Vec::new(),
+        note: None,
+        values: vec![
+            Value {
+                label: "printed".into(),
+                value: Expr::decimal(&printed.value, &printed.text),
+            },
+            Value {
+                label: "computed".into(),
+                value: Expr::decimal(computed, &decimal(computed)),
+            },
+        ],
+        exact: true,
+    });
+    Check {
+        ok,
+        detail: Evidence::new(Kind::Comparison, text)
+            .about(what, if ok { Status::Holds } else { Status::Fails })
+            .witnessed(witness),
     }
 }
 
-/// One checked relation: whether it holds, a short label, the full line.
+/// One checked relation: whether it holds, and its evidence.
 struct Check {
     ok: bool,
-    label: String,
-    detail: String,
+    detail: Evidence,
 }
 
 /// Segment-table columns: before total, after total, max, min, average.
@@ -355,10 +376,20 @@ fn best_checks(t: &Table, tables: &[Table]) -> Result<Vec<Check>, String> {
             .expect("four columns");
         out.push(Check {
             ok: lowest == j,
-            label: format!("{letter}: best = smallest average error"),
-            detail: format!(
-                "{letter}: printed best \"{scheme}\"; smallest average error in Table {} is {} ({})",
-                summary.number, SCHEMES[lowest], aves[lowest].text
+            detail: Evidence::new(
+                Kind::Comparison,
+                format!(
+                    "printed best \"{scheme}\"; smallest average error in Table {} is {} ({})",
+                    summary.number, SCHEMES[lowest], aves[lowest].text
+                ),
+            )
+            .about(
+                format!("{letter}: best"),
+                if lowest == j {
+                    Status::Holds
+                } else {
+                    Status::Fails
+                },
             ),
         });
         out.push(relation(
@@ -395,24 +426,22 @@ fn table_verdict(t: &Table, tables: &[Table]) -> Verdict {
     match checks {
         Ok(checks) => {
             let ok = checks.iter().all(|c| c.ok);
-            let mut evidence: Vec<String> =
+            let mut evidence: EvidenceList =
                 t.notes.iter().map(|n| format!("garbled: {n}")).collect();
             evidence.extend(checks.iter().filter(|c| !c.ok).map(|c| c.detail.clone()));
-            let passed: Vec<&str> = checks
-                .iter()
-                .filter(|c| c.ok)
-                .map(|c| c.label.as_str())
-                .collect();
+            let passed = checks.iter().filter(|c| c.ok).count();
             if t.scheme == "summary" {
-                evidence.push(
-                    "row Bad points (>1.5): not in the per-letter tables, not compared".into(),
-                );
+                evidence.push("row Bad points (>1.5): not in the per-letter tables, not compared");
             }
-            evidence.push(format!(
-                "{} relation(s) consistent (exact difference within the printed rounding): {}",
-                passed.len(),
-                passed.join("; ")
-            ));
+            // the relations are listed in the method; the failing ones above
+            evidence.push(if ok {
+                format!("all {passed} relations consistent")
+            } else {
+                format!(
+                    "{} consistent",
+                    crate::report::plural(passed, "other relation", "other relations")
+                )
+            });
             Verdict::new(
                 if ok { Status::Holds } else { Status::Fails },
                 METHOD,

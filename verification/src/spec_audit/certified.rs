@@ -84,7 +84,7 @@ fn several(spec: &Spec, maximal: bool) -> Verdict {
             let mut v = by_intervals(spec, None, &why);
             if maximal && v.status == Status::Holds {
                 v.status = Status::NotCheckable;
-                v.evidence.push("the box is contained in the region; its maximality needs the polynomial method (boundary polynomials), which does not apply".into());
+                v.evidence.push("the box is contained in the region; its maximality needs the polynomial method (boundary polynomials), which does not apply");
             }
             return v;
         }
@@ -107,9 +107,8 @@ fn several(spec: &Spec, maximal: bool) -> Verdict {
             let mut v = region_audit::contained(&fs, &names, trig, &axes);
             if maximal && v.status == Status::Holds {
                 v.status = Status::NotCheckable;
-                v.evidence.push(
-                    "maximality is decided for two parameters at most: containment only".into(),
-                );
+                v.evidence
+                    .push("maximality is decided for two parameters at most: containment only");
             }
             v
         }
@@ -148,7 +147,7 @@ pub fn convex_hull(spec: &Spec, range: Option<&SpecRange>) -> Verdict {
     );
     v.evidence.insert(
         0,
-        "a curve Σ b_i P_i lies in the convex hull of its control points when the b_i sum to 1 and are ≥ 0 (both decided below)".into(),
+        "a curve Σ b_i P_i lies in the convex hull of its control points when the b_i sum to 1 and are ≥ 0 (both decided below)",
     );
     v
 }

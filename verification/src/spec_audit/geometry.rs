@@ -9,6 +9,7 @@ use trig_spec::{Printed, Spec};
 use trig_symbolic::Sym;
 
 use super::{K, TABLE_ORDERS, params};
+use crate::evidence::EvidenceList;
 use crate::exact::{IDENTITY, identities};
 use crate::numeric::{PREC, differ, show};
 use crate::verdict::{Status, Verdict};
@@ -293,18 +294,32 @@ fn printed_reflection(spec: &Spec, s: &PrintedSymmetry<'_>) -> Verdict {
         .zip(s.at)
         .map(|(p, q)| format!("{} = {q}, ", p.symbol))
         .collect::<String>();
-    let mut evidence = vec![format!(
-        "{shown_params}{v} = {mid}: {}({mid}) = {}, but {}({image_text}) = {}{outside}",
-        spec.functions[i].name,
-        show(&a),
-        spec.functions[j].name,
-        show(&b)
-    )];
+    let mut point: Vec<(String, String)> = spec
+        .params
+        .iter()
+        .zip(s.at)
+        .map(|(p, q)| (p.symbol.clone(), q.to_string()))
+        .collect();
+    point.push((v.to_string(), mid.to_string()));
+    let mut evidence = EvidenceList::from(vec![crate::numeric::counterexample_item(
+        format!(
+            "{shown_params}{v} = {mid}: {}({mid}) = {}, but {}({image_text}) = {}{outside}",
+            spec.functions[i].name,
+            show(&a),
+            spec.functions[j].name,
+            show(&b)
+        ),
+        &point,
+        [
+            (format!("{}({mid})", spec.functions[i].name), &a),
+            (format!("{}({image_text})", spec.functions[j].name), &b),
+        ],
+    )]);
     let a_refl = d.reflection();
     let reading = exact_symmetry(spec, &a_refl, n - 1, "", &params(spec));
     if status == Status::Fails && reading.status == Status::Holds {
         evidence.push(if spec.legacy == Some(Variable::UnitAngle) {
-            "the statement holds in the angle θ = πu/2 (θ ↦ π/2 − θ), i.e. for u ↦ 1 − u; see the reading".into()
+            "the statement holds in the angle θ = πu/2 (θ ↦ π/2 − θ), i.e. for u ↦ 1 − u; see the reading".to_string()
         } else {
             format!("the statement holds for the reflection {v} ↦ {} − {v}", pretty(&a_refl, spec))
         });

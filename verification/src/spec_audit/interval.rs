@@ -310,7 +310,7 @@ pub fn maximal(spec: &Spec, range: &SpecRange) -> Verdict {
                     "the end {shown} is bracketed, not exact: at {} = {} a function is certified negative ({}), so the maximal range ends in [{}, {}]",
                     p.symbol,
                     value_text(&w, range.pi),
-                    beyond.evidence.iter().find(|l| l.contains("violated")).cloned().unwrap_or_default(),
+                    beyond.evidence.iter().find(|l| l.contains("violated")).map(ToString::to_string).unwrap_or_default(),
                     value_text(if outward < 0 { &w } else { v }, range.pi),
                     value_text(if outward < 0 { v } else { &w }, range.pi)
                 ));

@@ -140,7 +140,7 @@ pub fn printed_join(
         ));
     }
     head.push(describe_wrt(spec, wrt));
-    v.evidence.splice(0..0, head);
+    v.evidence.prepend(head);
     let singular: Vec<String> = conditions
         .iter()
         .flat_map(|c| c.singular.iter().cloned())

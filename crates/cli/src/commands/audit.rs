@@ -1,24 +1,43 @@
 //! `trig-audit audit`: decide the published claims and print (or write) the
 //! report. Exit status 0 whenever the audit ran, whatever the verdicts.
 
-use std::io::Write;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::time::Duration;
 
 use clap::{Args, ValueEnum};
 use trig_spec::Spec;
 use trig_verification::budget::CLAIM_BUDGET;
-use trig_verification::report::Entry;
-use trig_verification::{Seed, report, run as run_audit, spec_audit};
+use trig_verification::report::{self, Entry, View};
+use trig_verification::{Seed, Status, run as run_audit, spec_audit};
 
 use super::{CliError, CmdResult};
-use crate::format::json;
+use crate::output::{write_atomically, wrote};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum ReportFormat {
     Md,
     Json,
     Tex,
+}
+
+/// A verdict to show (`--verdict`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum VerdictArg {
+    Holds,
+    Fails,
+    HoldsAfterCorrection,
+    NotCheckable,
+}
+
+impl From<VerdictArg> for Status {
+    fn from(v: VerdictArg) -> Status {
+        match v {
+            VerdictArg::Holds => Status::Holds,
+            VerdictArg::Fails => Status::Fails,
+            VerdictArg::HoldsAfterCorrection => Status::HoldsAfterCorrection,
+            VerdictArg::NotCheckable => Status::NotCheckable,
+        }
+    }
 }
 
 #[derive(Debug, Args)]
@@ -32,6 +51,12 @@ pub struct AuditArgs {
     /// Audit the basis and claims of a spec file (TOML, docs/spec.md) instead of the built-in claims.
     #[arg(long, value_name = "FILE", conflicts_with = "seed")]
     spec: Option<PathBuf>,
+    /// The short form: the summary and the index (one line per claim), no evidence.
+    #[arg(long)]
+    summary: bool,
+    /// Only claims with these verdicts (comma separated), e.g. --verdict fails,holds-after-correction.
+    #[arg(long, value_enum, value_delimiter = ',')]
+    verdict: Vec<VerdictArg>,
     /// Report format.
     #[arg(long, value_enum, default_value = "md")]
     format: ReportFormat,
@@ -78,21 +103,28 @@ pub fn run(args: &AuditArgs) -> CmdResult {
             args.claim.as_deref().unwrap_or("")
         )));
     }
+    let view = View {
+        summary_only: args.summary,
+        verdicts: args.verdict.iter().map(|v| Status::from(*v)).collect(),
+    };
     let text = match args.format {
-        ReportFormat::Md => report::markdown_entries(&entries, &intro),
-        ReportFormat::Json => json(&report::json_entries(&entries)),
-        ReportFormat::Tex => report::tex_entries(&entries, &intro),
+        ReportFormat::Md => report::markdown_entries(&entries, &intro, &view),
+        ReportFormat::Json => {
+            let mut s =
+                serde_json::to_string_pretty(&report::json_entries(&entries, &intro, &view))
+                    .map_err(|e| CliError::Usage(format!("cannot encode the report: {e}")))?;
+            s.push('\n');
+            s
+        }
+        ReportFormat::Tex => report::tex_entries(&entries, &intro, &view),
     };
     match &args.output {
         None => Ok(text),
         Some(path) => {
-            write_atomically(path, &text)
-                .map_err(|e| CliError::Usage(format!("cannot write {}: {e}", path.display())))?;
-            Ok(format!(
-                "wrote {} ({} claims)\n",
-                path.display(),
-                entries.len()
-            ))
+            write_atomically(path, text.as_bytes())?;
+            let shown = view.select(&entries).len();
+            wrote(path, &report::plural(shown, "claim", "claims"));
+            Ok(String::new())
         }
     }
 }
@@ -111,27 +143,4 @@ fn builtin(args: &AuditArgs) -> Result<Vec<Entry>, CliError> {
         ),
     };
     Ok(report::entries(&run_audit(seed, args.claim.as_deref())))
-}
-
-/// Writes to a temporary file beside `path`, then renames it over `path`:
-/// an interrupted run never leaves a half-written report.
-fn write_atomically(path: &Path, text: &str) -> std::io::Result<()> {
-    let dir = path
-        .parent()
-        .filter(|d| !d.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    let name = path
-        .file_name()
-        .ok_or_else(|| std::io::Error::other("not a file name"))?;
-    let tmp = dir.join(format!(
-        ".{}.tmp-{}",
-        name.to_string_lossy(),
-        std::process::id()
-    ));
-    let mut file = std::fs::File::create(&tmp)?;
-    file.write_all(text.as_bytes())?;
-    file.sync_all()?;
-    std::fs::rename(&tmp, path).inspect_err(|_| {
-        let _ = std::fs::remove_file(&tmp);
-    })
 }

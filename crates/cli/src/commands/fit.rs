@@ -365,11 +365,11 @@ pub fn run(args: &FitArgs) -> CmdResult {
         Runs::Fixed
     };
     let (outline, methods) = prepare(&args.setup, &args.family, runs)?;
-    Ok(match args.format {
-        FitFormat::Md => markdown(&args.setup, &outline, &methods),
+    match args.format {
+        FitFormat::Md => Ok(markdown(&args.setup, &outline, &methods)),
         FitFormat::Csv => csv(&methods),
-        FitFormat::Json => json(&args.setup, &outline, &methods),
-    })
+        FitFormat::Json => Ok(json(&args.setup, &outline, &methods)),
+    }
 }
 
 fn g(x: f64) -> String {
@@ -514,42 +514,64 @@ fn summary_cells(s: &Summary, with_min: bool) -> Vec<String> {
     v
 }
 
-fn csv(methods: &[Method]) -> String {
-    let mut out =
-        String::from("method,setting,stage,segment,points,parameter,total,max,min,average,bad\n");
+fn csv(methods: &[Method]) -> CmdResult {
+    let mut rows: Vec<Vec<String>> = Vec::new();
     for m in methods {
         for (k, s) in m.fit.segments.iter().enumerate() {
             let p = s.params.first().map_or(String::new(), |p| p.to_string());
-            let mut rows = vec![("C0", s.metrics)];
+            let mut stages = vec![("C0", s.metrics)];
             if let Some((_, a)) = s.refined {
-                rows.push(("C1", a));
+                stages.push(("C1", a));
             }
-            for (stage, r) in rows {
-                let _ = writeln!(
-                    out,
-                    "{},\"{}\",{stage},{},{},{p},{},{},{},{},{}",
-                    m.label,
-                    m.setting,
-                    k + 1,
-                    r.points,
-                    r.total,
-                    r.max,
-                    r.min,
-                    r.average,
-                    r.bad
-                );
+            for (stage, r) in stages {
+                rows.push(vec![
+                    m.label.to_string(),
+                    m.setting.to_string(),
+                    stage.into(),
+                    (k + 1).to_string(),
+                    r.points.to_string(),
+                    p.clone(),
+                    r.total.to_string(),
+                    r.max.to_string(),
+                    r.min.to_string(),
+                    r.average.to_string(),
+                    r.bad.to_string(),
+                ]);
             }
         }
         for (stage, s) in stages(&m.fit) {
             let stage = if stage == "C⁰" { "C0" } else { "C1" };
-            let _ = writeln!(
-                out,
-                "{},\"{}\",{stage},total,{},,{},{},{},{},{}",
-                m.label, m.setting, s.points, s.total, s.max, s.min, s.mean_segment_average, s.bad
-            );
+            rows.push(vec![
+                m.label.to_string(),
+                m.setting.to_string(),
+                stage.into(),
+                "total".into(),
+                s.points.to_string(),
+                String::new(),
+                s.total.to_string(),
+                s.max.to_string(),
+                s.min.to_string(),
+                s.mean_segment_average.to_string(),
+                s.bad.to_string(),
+            ]);
         }
     }
-    out
+    crate::format::csv_text(
+        &[
+            "method",
+            "setting",
+            "stage",
+            "segment",
+            "points",
+            "parameter",
+            "total",
+            "max",
+            "min",
+            "average",
+            "bad",
+        ],
+        rows.iter().map(|r| r.iter().map(String::as_str)),
+    )
 }
 
 fn json(args: &FitSetup, outline: &Outline, methods: &[Method]) -> String {

@@ -9,13 +9,16 @@ use trig_certify::region::CellKind;
 use trig_core::{Bound, Family, parse_exact};
 use trig_interp::{DataSet, Scheme, Variant, f64_segments};
 use trig_plot::{
-    Interpolant, RegionCell, RegionKind, basis_svg, curve_svg, fit_svg, interp_svg, region_svg,
+    Interpolant, Picture, RegionCell, RegionKind, basis_svg, curve_svg, fit_svg, interp_svg,
+    region_svg,
 };
 use trig_spec::Spec;
 use trig_verification::region_audit::{Axis, classify_window};
 
 use super::fit::{FitSetup, Runs, prepare};
 use super::{CliError, CmdResult, range_hint};
+use crate::format::csv_text;
+use crate::output::{write_atomically, wrote};
 
 #[derive(Debug, Args)]
 pub struct PlotArgs {
@@ -127,14 +130,27 @@ fn values(family: Family, given: &[String]) -> Result<Vec<Rational>, CliError> {
         .collect())
 }
 
-fn write(output: &Path, svg: &str) -> CmdResult {
-    std::fs::write(output, svg)
-        .map_err(|e| CliError::Usage(format!("cannot write {}: {e}", output.display())))?;
-    Ok(format!(
-        "wrote {} ({} bytes)\n",
-        output.display(),
-        svg.len()
-    ))
+/// Writes the picture and, beside it, its data (`NAME.csv`: series, point,
+/// x, y), both atomically; the note on standard error (standard output
+/// stays empty).
+fn write(output: &Path, picture: &Picture) -> CmdResult {
+    let data = output.with_extension("csv");
+    if data == output {
+        return Err(CliError::Usage(format!(
+            "{}: the picture needs another extension than .csv (its data goes to NAME.csv)",
+            output.display()
+        )));
+    }
+    let rows = picture.rows();
+    let csv = csv_text(
+        &Picture::HEADER,
+        rows.iter().map(|r| r.iter().map(String::as_str)),
+    )?;
+    write_atomically(output, picture.svg.as_bytes())?;
+    write_atomically(&data, csv.as_bytes())?;
+    wrote(output, &format!("{} bytes", picture.svg.len()));
+    wrote(&data, &format!("{} points", rows.len()));
+    Ok(String::new())
 }
 
 fn plot_err(e: trig_plot::PlotError) -> CliError {
@@ -242,7 +258,7 @@ pub fn run(args: &PlotArgs) -> CmdResult {
 }
 
 /// The classified window around the printed box of a two-parameter spec.
-fn region(path: &Path) -> Result<String, CliError> {
+fn region(path: &Path) -> Result<Picture, CliError> {
     let spec =
         Spec::from_file(path).map_err(|e| CliError::Usage(e.to_string().replace('\n', " ")))?;
     let [p, q] = spec.params.as_slice() else {

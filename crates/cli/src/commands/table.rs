@@ -131,7 +131,7 @@ pub fn run(args: &TableArgs) -> CmdResult {
         family.citation(),
         Wrt::from(args.wrt).describe(family.domain().is_trigonometric())
     );
-    Ok(render_blocks(&heading, &blocks, args.format))
+    render_blocks(&heading, &blocks, args.format)
 }
 
 /// The exact table: parameters (and `h`) as symbols, π symbolic; curve

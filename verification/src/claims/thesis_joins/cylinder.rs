@@ -15,6 +15,7 @@ use trig_symbolic::Sym;
 
 use super::{lin, n, v};
 use crate::claim::shared;
+use crate::evidence::{Evidence, EvidenceList, Expr, Value, Witness};
 use crate::exact::{sum, symbols};
 use crate::joins::{Printed, PrintedJoin, audit_surface};
 use crate::verdict::{Status, Verdict};
@@ -110,7 +111,7 @@ fn listing_nets() -> Vec<([Point; 4], [Point; 4])> {
 
 /// Residuals of C² across one seam, each row and coordinate, as text; empty
 /// when every residual vanishes.
-fn seam_failures(rows: &[([Point; 4], [Point; 4])], p_to_q: bool) -> Vec<String> {
+fn seam_failures(rows: &[([Point; 4], [Point; 4])], p_to_q: bool) -> Vec<(String, String)> {
     let m = [n(1)];
     let setup = JoinSetup {
         basis: Family::ThesisCubic,
@@ -136,11 +137,14 @@ fn seam_failures(rows: &[([Point; 4], [Point; 4])], p_to_q: bool) -> Vec<String>
                 .map(|r| r[order].to_string())
                 .collect();
             if per_coordinate.iter().any(|r| !r[order].is_zero()) {
-                failures.push(format!(
-                    "row {r} (points {}…{}): order-{order} jump (second − first) = ({})",
-                    4 * r,
-                    4 * r + 3,
-                    vector.join(", ")
+                failures.push((
+                    format!(
+                        "row {r} (points {}…{}): order-{order} jump (second − first) = ({})",
+                        4 * r,
+                        4 * r + 3,
+                        vector.join(", ")
+                    ),
+                    vector.join(", "),
                 ));
             }
         }
@@ -153,7 +157,7 @@ pub fn t26k() -> Verdict {
     static VERDICT: OnceLock<Verdict> = OnceLock::new();
     shared(&VERDICT, || {
         let rows = listing_nets();
-        let mut evidence = Vec::new();
+        let mut evidence = EvidenceList::default();
         let mut holds = true;
         for (name, p_to_q) in [
             ("seam P → Q (z1 | z4)", true),
@@ -163,12 +167,26 @@ pub fn t26k() -> Verdict {
             holds &= failures.is_empty();
             if failures.is_empty() {
                 evidence.push(format!("{name}: C² holds exactly in every row"));
-            } else {
-                evidence.extend(failures.into_iter().map(|f| format!("{name}: {f}")));
+            }
+            for (k, (f, vector)) in failures.into_iter().enumerate() {
+                // the first jump, exactly: the nets are integers
+                let witness = (k == 0).then(|| Witness {
+                    point: Vec::new(),
+                    note: Some(format!("{name}, the listing's nets (m = 1)")),
+                    values: vec![Value {
+                        label: f.split(" = ").next().unwrap_or_default().to_string(),
+                        value: Expr::literal(
+                            &format!("({vector})"),
+                            &format!("Matrix([{vector}])"),
+                        ),
+                    }],
+                    exact: true,
+                });
+                evidence.push(Evidence::note(format!("{name}: {f}")).witnessed(witness));
             }
         }
         evidence.push(
-            "listing order: Q1, Q2 are computed from the original P1, P2, P3; P1 and P2 are then overwritten from Q1, Q2, Q3, so the P → Q seam no longer matches the final P net (a nonzero row jump is a nonzero surface jump: the u-basis functions are linearly independent)".into(),
+            "listing order: Q1, Q2 are computed from the original P1, P2, P3; P1 and P2 are then overwritten from Q1, Q2, Q3, so the P → Q seam no longer matches the final P net (a nonzero row jump is a nonzero surface jump: the u-basis functions are linearly independent)",
         );
         let status = if holds { Status::Holds } else { Status::Fails };
         let v = Verdict::new(

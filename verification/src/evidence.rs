@@ -1,0 +1,648 @@
+//! Evidence as data: what a verdict rests on, in a form the report renders
+//! to Markdown, LaTeX and JSON from one source ([`crate::report`]).
+//!
+//! An [`Evidence`] item says one thing: a prose note, an exact identity with
+//! its residual, a printed value against the computed one, a certificate, …
+//! ([`Kind`]). Exact expressions are kept in every form a reader or a
+//! program needs ([`Expr`]: Unicode, LaTeX, SymPy syntax, plain ASCII, a
+//! factored form, and their size, so that long ones can be summarised where
+//! people read and given whole where programs read). A failing check carries
+//! a [`Witness`]: a rational point and the exact values that differ there,
+//! which a reader can re-check by hand.
+//!
+//! Items belong to the parts of a claim ([`Part`]: nested names with their
+//! own statuses, outermost first), so a check that holds inside a part that
+//! fails is shown under that part, with its own status.
+
+use std::fmt;
+use std::ops::Deref;
+
+use schemars::JsonSchema;
+use serde::{Deserialize, Serialize};
+use trig_symbolic::{Sym, sympy_symbols};
+
+use crate::verdict::Status;
+
+/// An exact expression in every form.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Expr {
+    /// Unicode (Greek letters, `·`, superscripts); `s = sin θ`, `c = cos θ`.
+    pub unicode: String,
+    /// LaTeX math (without `$`).
+    pub latex: String,
+    /// SymPy syntax: `**`, `sin(theta)`, `cos(theta)`, `lamda` for `λ`;
+    /// parse with `sympy.parse_expr(sympy, local_dict={n: Symbol(n) for n in symbols})`.
+    pub sympy: String,
+    /// The SymPy symbols `sympy` uses (`pi` is SymPy's own constant).
+    pub symbols: Vec<String>,
+    /// Plain ASCII (`*`, `^`).
+    pub plain: String,
+    /// Terms of the expanded numerator.
+    pub terms: usize,
+    /// Total degree of the numerator (every variable, `π` included).
+    pub degree: u64,
+    /// A factored form, when it shows more than the expanded one.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub factored: Option<Forms>,
+}
+
+/// One expression in the four text forms.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Forms {
+    pub unicode: String,
+    pub latex: String,
+    pub sympy: String,
+    pub plain: String,
+}
+
+impl Expr {
+    /// The forms of `x`, factored where that shows more.
+    pub fn new(x: &Sym) -> Expr {
+        let f = x.factored();
+        Expr {
+            unicode: x.to_unicode(),
+            latex: x.to_latex(),
+            sympy: x.to_sympy(),
+            symbols: symbols_of(x),
+            plain: x.to_string(),
+            terms: x.numerator().len(),
+            degree: x.numerator().total_degree(),
+            factored: (!f.trivial).then(|| Forms {
+                unicode: f.to_unicode(),
+                latex: f.to_latex(),
+                sympy: f.to_sympy(),
+                plain: f.to_plain(),
+            }),
+        }
+    }
+
+    /// `x` as a combination `Σ cᵢ·vᵢ` of the named variables (control
+    /// points) when it is one, each coefficient factored; else [`Expr::new`].
+    pub fn combination(x: &Sym, vars: &[String]) -> Expr {
+        let Some(terms) = x.linear_in(vars) else {
+            return Expr::new(x);
+        };
+        let factored: Vec<_> = terms.iter().map(|(_, c)| c.factored()).collect();
+        let any_factored = factored.iter().any(|f| !f.trivial);
+        let form = |style: Style, use_factored: bool| {
+            let parts: Vec<(String, String)> = terms
+                .iter()
+                .zip(&factored)
+                .map(|((v, c), f)| {
+                    let coefficient = if use_factored && !f.trivial {
+                        style.factored(f)
+                    } else {
+                        style.sym(c)
+                    };
+                    (coefficient, style.sym(&Sym::var(v)))
+                })
+                .collect();
+            combine(&parts, style)
+        };
+        Expr {
+            unicode: form(Style::Unicode, false),
+            latex: form(Style::Latex, false),
+            sympy: form(Style::Sympy, false),
+            symbols: symbols_of(x),
+            plain: form(Style::Plain, false),
+            terms: x.numerator().len(),
+            degree: x.numerator().total_degree(),
+            factored: any_factored.then(|| Forms {
+                unicode: form(Style::Unicode, true),
+                latex: form(Style::Latex, true),
+                sympy: form(Style::Sympy, true),
+                plain: form(Style::Plain, true),
+            }),
+        }
+    }
+
+    /// An exact number shown as the decimal `text` it equals (a printed
+    /// table entry), with SymPy syntax `n/d`.
+    pub fn decimal(q: &rug::Rational, text: &str) -> Expr {
+        Expr {
+            unicode: text.to_string(),
+            latex: text.to_string(),
+            sympy: q.to_string(),
+            symbols: Vec::new(),
+            plain: text.to_string(),
+            terms: 1,
+            degree: 0,
+            factored: None,
+        }
+    }
+
+    /// An exact value given as text (a vector of integers, …) with its
+    /// SymPy form.
+    pub fn literal(text: &str, sympy: &str) -> Expr {
+        Expr {
+            unicode: text.replace('-', "−"),
+            latex: text.to_string(),
+            sympy: sympy.to_string(),
+            symbols: Vec::new(),
+            plain: text.to_string(),
+            terms: 1,
+            degree: 0,
+            factored: None,
+        }
+    }
+
+    /// A decimal value from a numeric evaluation (not exact).
+    pub fn numeric(text: &str) -> Expr {
+        Expr {
+            unicode: text.replace('-', "−"),
+            latex: text.to_string(),
+            sympy: format!("Float('{text}', 30)"),
+            symbols: Vec::new(),
+            plain: text.to_string(),
+            terms: 1,
+            degree: 0,
+            factored: None,
+        }
+    }
+
+    /// The shortest Unicode form: factored when given and not longer.
+    pub fn best_unicode(&self) -> &str {
+        match &self.factored {
+            Some(f) if f.unicode.chars().count() <= self.unicode.chars().count() => &f.unicode,
+            _ => &self.unicode,
+        }
+    }
+
+    /// The LaTeX form matching [`Expr::best_unicode`].
+    pub fn best_latex(&self) -> &str {
+        match &self.factored {
+            Some(f) if f.unicode.chars().count() <= self.unicode.chars().count() => &f.latex,
+            _ => &self.latex,
+        }
+    }
+
+    /// The SymPy form matching [`Expr::best_unicode`].
+    pub fn best_sympy(&self) -> &str {
+        match &self.factored {
+            Some(f) if f.unicode.chars().count() <= self.unicode.chars().count() => &f.sympy,
+            _ => &self.sympy,
+        }
+    }
+}
+
+/// The four text forms, for printing combinations.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Style {
+    Unicode,
+    Latex,
+    Sympy,
+    Plain,
+}
+
+impl Style {
+    fn sym(self, x: &Sym) -> String {
+        match self {
+            Style::Unicode => x.to_unicode(),
+            Style::Latex => x.to_latex(),
+            Style::Sympy => x.to_sympy(),
+            Style::Plain => x.to_string(),
+        }
+    }
+
+    fn factored(self, f: &trig_symbolic::FactoredQuotient) -> String {
+        match self {
+            Style::Unicode => f.to_unicode(),
+            Style::Latex => f.to_latex(),
+            Style::Sympy => f.to_sympy(),
+            Style::Plain => f.to_plain(),
+        }
+    }
+
+    fn minus(self) -> &'static str {
+        if self == Style::Unicode { "−" } else { "-" }
+    }
+
+    fn times(self) -> &'static str {
+        match self {
+            Style::Unicode => "·",
+            Style::Latex => " ",
+            Style::Sympy | Style::Plain => "*",
+        }
+    }
+}
+
+/// `c₁·v₁ + c₂·v₂ − …` from printed coefficients and variables: a
+/// coefficient `1` is left out, `−1` becomes a sign, a coefficient of one
+/// term (or a product) needs no parentheses, a sum does.
+fn combine(parts: &[(String, String)], style: Style) -> String {
+    let mut out = String::new();
+    for (i, (c, v)) in parts.iter().enumerate() {
+        let (negative, body) = match c.strip_prefix(style.minus()) {
+            Some(rest) if !has_top_level_sum(rest, style) => (true, rest.to_string()),
+            _ => (false, c.clone()),
+        };
+        let term = if body == "1" {
+            v.clone()
+        } else if has_top_level_sum(&body, style) {
+            format!("({body}){}{v}", style.times())
+        } else {
+            format!("{body}{}{v}", style.times())
+        };
+        match (i, negative) {
+            (0, true) => out.push_str(style.minus()),
+            (0, false) => {}
+            (_, true) => {
+                out.push(' ');
+                out.push_str(style.minus());
+                out.push(' ');
+            }
+            (_, false) => out.push_str(" + "),
+        }
+        out.push_str(&term);
+    }
+    out
+}
+
+/// True when `text` has a `+` or `−` outside parentheses and braces (after
+/// a leading sign).
+fn has_top_level_sum(text: &str, style: Style) -> bool {
+    let minus = style.minus().chars().next().unwrap_or('-');
+    let mut depth = 0i32;
+    for (i, ch) in text.chars().enumerate() {
+        match ch {
+            '(' | '{' => depth += 1,
+            ')' | '}' => depth -= 1,
+            '+' if depth == 0 && i > 0 => return true,
+            c if c == minus && depth == 0 && i > 0 => return true,
+            _ => {}
+        }
+    }
+    false
+}
+
+fn symbols_of(x: &Sym) -> Vec<String> {
+    let vars = x.variables();
+    sympy_symbols(vars.iter().map(String::as_str))
+}
+
+/// One coordinate of a witness point: `name = value`, exactly.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Assignment {
+    /// The variable as the report prints it (Unicode; `s`, `c` for sin θ, cos θ).
+    pub name: String,
+    /// Its exact value (a rational, or an exact description).
+    pub value: String,
+    /// `name = value` in LaTeX math.
+    pub latex: String,
+}
+
+/// A labelled value of a witness.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Value {
+    /// What the value is (`printed`, `computed`, `left side`, …).
+    pub label: String,
+    pub value: Expr,
+}
+
+/// A point where a claim can be seen to fail by hand: every variable set to
+/// an exact value, and the values that differ there.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Witness {
+    pub point: Vec<Assignment>,
+    /// What the point means or keeps symbolic (e.g. `π` stays a symbol).
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub note: Option<String>,
+    pub values: Vec<Value>,
+    /// True when the values are exact; false for a numeric witness
+    /// (decimal values of a high-precision evaluation, differing far above
+    /// their rounding).
+    pub exact: bool,
+}
+
+impl Witness {
+    /// One line: `at m = 1/2, P₂ = 3: printed = 5/2, computed = 3`.
+    pub fn line(&self) -> String {
+        let point: Vec<String> = self
+            .point
+            .iter()
+            .map(|a| format!("{} = {}", a.name, a.value))
+            .collect();
+        let values: Vec<String> = self
+            .values
+            .iter()
+            .map(|v| format!("{} = {}", v.label, v.value.best_unicode()))
+            .collect();
+        let note = self
+            .note
+            .as_ref()
+            .map_or(String::new(), |n| format!(" ({n})"));
+        let exact = if self.exact { "exact" } else { "numeric" };
+        format!(
+            "at {}{note}: {} ({exact})",
+            point.join(", "),
+            values.join(", ")
+        )
+    }
+}
+
+/// A named part of a claim with its own status.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Part {
+    pub name: String,
+    pub status: Status,
+}
+
+/// What an evidence item is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[serde(rename_all = "kebab-case")]
+pub enum Kind {
+    /// Prose: a definition, a convention, a reading, a conclusion.
+    Note,
+    /// An identity decided exactly: its residual (left − right).
+    Identity,
+    /// A printed value against the computed one.
+    Comparison,
+    /// A certified sign (nonnegativity, monotonicity) or its counterexample.
+    Certificate,
+    /// A printed join formula in one convention: the residuals by order.
+    Join,
+    /// A formula derived exactly (the correct one).
+    Derived,
+    /// A value evaluated numerically (high-precision MPFR).
+    Numeric,
+}
+
+/// A labelled exact expression of an item (`residual`, `computed`, `order 1`).
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Labelled {
+    pub label: String,
+    pub expr: Expr,
+}
+
+/// One item of evidence.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Evidence {
+    pub kind: Kind,
+    /// The parts of the claim the item belongs to, outermost first.
+    #[serde(skip_serializing_if = "Vec::is_empty", default)]
+    pub parts: Vec<Part>,
+    /// What the item checks (`Σ b_i − 1`, `b0 ≥ 0`), when it checks one thing.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub subject: Option<String>,
+    /// The printed formula the item checks, as transcribed (plain text).
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub printed: Option<String>,
+    /// The status of that check, when the item decides one.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub status: Option<Status>,
+    /// The prose of the item (Unicode), without its expressions.
+    pub text: String,
+    /// The exact expressions of the item.
+    #[serde(skip_serializing_if = "Vec::is_empty", default)]
+    pub exprs: Vec<Labelled>,
+    /// A point where the check visibly fails, with exact values.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub witness: Option<Witness>,
+}
+
+impl Evidence {
+    /// A prose note.
+    pub fn note(text: impl Into<String>) -> Evidence {
+        Evidence::new(Kind::Note, text)
+    }
+
+    /// An item of `kind` with its prose.
+    pub fn new(kind: Kind, text: impl Into<String>) -> Evidence {
+        Evidence {
+            kind,
+            parts: Vec::new(),
+            subject: None,
+            printed: None,
+            status: None,
+            text: text.into(),
+            exprs: Vec::new(),
+            witness: None,
+        }
+    }
+
+    /// The same item checking `subject` with `status`.
+    pub fn about(mut self, subject: impl Into<String>, status: Status) -> Evidence {
+        self.subject = Some(subject.into());
+        self.status = Some(status);
+        self
+    }
+
+    /// The same item with an expression.
+    pub fn with(mut self, label: impl Into<String>, expr: Expr) -> Evidence {
+        self.exprs.push(Labelled {
+            label: label.into(),
+            expr,
+        });
+        self
+    }
+
+    /// The same item with a witness.
+    pub fn witnessed(mut self, witness: Option<Witness>) -> Evidence {
+        self.witness = witness;
+        self
+    }
+
+    /// The same item inside the part `name` (outermost so far).
+    pub fn in_part(mut self, name: impl Into<String>, status: Status) -> Evidence {
+        self.parts.insert(
+            0,
+            Part {
+                name: name.into(),
+                status,
+            },
+        );
+        self
+    }
+
+    /// The whole item as one Unicode line (every expression in full), as
+    /// the plain-text views and the tests read it.
+    pub fn line(&self) -> String {
+        self.render(|e| e.unicode.clone())
+    }
+
+    /// The same with expressions in plain ASCII.
+    pub fn plain_line(&self) -> String {
+        self.render(|e| e.plain.clone())
+    }
+
+    fn render(&self, form: impl Fn(&Expr) -> String) -> String {
+        let mut out = String::new();
+        for p in &self.parts {
+            out.push_str(&format!("{}: {} — ", p.name, p.status));
+        }
+        if let Some(s) = &self.subject {
+            out.push_str(s);
+            if let Some(p) = &self.printed {
+                out.push_str(&format!(" printed {p}"));
+            }
+            if let Some(st) = self.status {
+                out.push_str(&format!(": {st}"));
+            }
+            if !self.text.is_empty() || !self.exprs.is_empty() {
+                out.push_str(" — ");
+            }
+        }
+        out.push_str(&self.text);
+        for (i, l) in self.exprs.iter().enumerate() {
+            if i > 0 || !self.text.is_empty() {
+                out.push_str("; ");
+            }
+            out.push_str(&format!("{} = {}", l.label, form(&l.expr)));
+        }
+        if let Some(w) = &self.witness {
+            out.push_str(&format!("; witness: {}", w.line()));
+        }
+        out
+    }
+
+    /// True when the item's Unicode or plain line contains `needle`.
+    pub fn contains(&self, needle: &str) -> bool {
+        self.line().contains(needle) || self.plain_line().contains(needle)
+    }
+}
+
+impl fmt::Display for Evidence {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.line())
+    }
+}
+
+impl From<String> for Evidence {
+    fn from(text: String) -> Evidence {
+        Evidence::note(text)
+    }
+}
+
+impl From<&str> for Evidence {
+    fn from(text: &str) -> Evidence {
+        Evidence::note(text)
+    }
+}
+
+/// The evidence of a verdict, in order. Accepts notes as strings where the
+/// checkers push prose.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct EvidenceList(Vec<Evidence>);
+
+impl EvidenceList {
+    /// Appends an item.
+    pub fn push(&mut self, e: impl Into<Evidence>) {
+        self.0.push(e.into());
+    }
+
+    /// Inserts an item at `index`.
+    pub fn insert(&mut self, index: usize, e: impl Into<Evidence>) {
+        self.0.insert(index, e.into());
+    }
+
+    /// Appends items.
+    pub fn extend<E: Into<Evidence>>(&mut self, items: impl IntoIterator<Item = E>) {
+        self.0.extend(items.into_iter().map(Into::into));
+    }
+
+    /// Inserts items before the first.
+    pub fn prepend<E: Into<Evidence>>(&mut self, items: impl IntoIterator<Item = E>) {
+        let head: Vec<Evidence> = items.into_iter().map(Into::into).collect();
+        self.0.splice(0..0, head);
+    }
+
+    /// The items, owned.
+    pub fn into_vec(self) -> Vec<Evidence> {
+        self.0
+    }
+}
+
+impl Deref for EvidenceList {
+    type Target = [Evidence];
+    fn deref(&self) -> &[Evidence] {
+        &self.0
+    }
+}
+
+impl std::ops::DerefMut for EvidenceList {
+    fn deref_mut(&mut self) -> &mut [Evidence] {
+        &mut self.0
+    }
+}
+
+impl<E: Into<Evidence>> From<Vec<E>> for EvidenceList {
+    fn from(items: Vec<E>) -> Self {
+        items.into_iter().collect()
+    }
+}
+
+impl<E: Into<Evidence>> FromIterator<E> for EvidenceList {
+    fn from_iter<I: IntoIterator<Item = E>>(iter: I) -> Self {
+        EvidenceList(iter.into_iter().map(Into::into).collect())
+    }
+}
+
+impl IntoIterator for EvidenceList {
+    type Item = Evidence;
+    type IntoIter = std::vec::IntoIter<Evidence>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.0.into_iter()
+    }
+}
+
+impl<'a> IntoIterator for &'a EvidenceList {
+    type Item = &'a Evidence;
+    type IntoIter = std::slice::Iter<'a, Evidence>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.0.iter()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_combination_factors_its_coefficients() {
+        let (m1, m2) = (Sym::var("m1"), Sym::var("m2"));
+        let p2 = Sym::var("P2");
+        let coefficient = (m1.clone() - &m2) * &(m2.clone() + &Sym::int(2)) / &(m1 + &Sym::int(2));
+        let e = Expr::combination(&(coefficient * &p2), &["P2".to_string()]);
+        assert_eq!(
+            e.factored.as_ref().map(|f| f.unicode.as_str()),
+            Some("(m₁ − m₂)·(m₂ + 2)/(m₁ + 2)·P₂")
+        );
+        let (p3, m) = (Sym::var("P3"), Sym::var("m"));
+        let x = p3.clone() - &(p2.clone() * &(m.clone() + &Sym::int(2)))
+            + &(Sym::int(-3) * &Sym::var("P4"));
+        let names: Vec<String> = ["P2", "P3", "P4"].map(String::from).to_vec();
+        assert_eq!(
+            Expr::combination(&x, &names).unicode,
+            "(−m − 2)·P₂ + P₃ − 3·P₄"
+        );
+        assert_eq!(
+            Expr::combination(&x, &names).sympy,
+            "(-m - 2)*P2 + P3 - 3*P4"
+        );
+        assert_eq!(e.symbols, ["P2", "m1", "m2"]);
+    }
+
+    #[test]
+    fn lines_show_parts_subject_status_expressions_and_witness() {
+        let e = Evidence::new(Kind::Identity, "")
+            .about("Σ b_i − 1", Status::Fails)
+            .with("residual", Expr::new(&Sym::var("t")))
+            .in_part("λ = μ = 0", Status::Fails);
+        assert_eq!(
+            e.line(),
+            "λ = μ = 0: fails — Σ b_i − 1: fails — residual = t"
+        );
+        assert!(e.contains("residual = t"));
+        let list: EvidenceList = ["a", "b"].into_iter().collect();
+        assert_eq!(list.len(), 2);
+        assert!(list[1].contains("b"));
+    }
+}

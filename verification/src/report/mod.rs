@@ -1,0 +1,349 @@
+//! The audit report: Markdown for people ([`markdown`]), LaTeX for papers
+//! ([`latex`]), JSON for machines ([`json`], with a versioned schema) — all
+//! rendered from the same entries and the same structured evidence
+//! ([`crate::evidence`]). Entries ([`Entry`]) are owned, so claims built at
+//! run time (from a spec file, see [`crate::spec_audit`]) report exactly
+//! like the built-in ones ([`Outcome`]).
+//!
+//! Every format has the same parts: a summary (counts by verdict and by
+//! document), an index (one line per claim), then one section per document
+//! and one entry per claim. [`View`] selects the short form (summary and
+//! index only) and filters by verdict.
+
+pub mod json;
+pub mod latex;
+pub mod markdown;
+mod tex_text;
+
+use crate::Outcome;
+use crate::claim::Seed;
+use crate::evidence::{Evidence, Witness};
+use crate::figures::{self, Figure};
+use crate::verdict::{Status, Verdict};
+
+pub use json::{Report, SCHEMA_VERSION, json_entries, schema};
+pub use latex::{tex_entries, tex_escape, to_math};
+pub use markdown::markdown_entries;
+
+/// The opening sentence of the built-in report.
+pub const BUILTIN_INTRO: &str = "Every verdict below is computed by `trig-audit audit` from the formulas as printed in `shared/seeds/`; identities are decided exactly in the symbolic ring, counterexamples in 256-bit MPFR.";
+
+/// A document of the report: a seed of `shared/seeds/` or a spec file.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Document {
+    /// Section heading before the title (`Seed 001`, `Spec thesis-cubic`).
+    pub heading: String,
+    /// Short id (summary table, JSON `seed`).
+    pub id: String,
+    pub title: String,
+    /// File name (JSON `seed_file`).
+    pub file: String,
+    /// Where the document is, as the Markdown section states it.
+    pub location: String,
+    /// Sort key of the sections (seeds in [`Seed::ALL`] order first).
+    pub order: usize,
+}
+
+impl Document {
+    /// The document of a seed.
+    pub fn seed(seed: Seed) -> Document {
+        Document {
+            heading: format!("Seed {}", seed.id()),
+            id: seed.id().to_string(),
+            title: seed.title().to_string(),
+            file: seed.file().to_string(),
+            location: format!("shared/seeds/{}", seed.file()),
+            order: Seed::ALL.iter().position(|s| *s == seed).unwrap_or(0),
+        }
+    }
+}
+
+/// One claim of the report with its computed verdict.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Entry {
+    pub id: String,
+    pub document: Document,
+    /// Equation or section.
+    pub source: String,
+    /// The statement as printed.
+    pub statement: String,
+    pub verdict: Verdict,
+    /// A figure supporting the verdict ([`crate::figures`]).
+    pub figure: Option<&'static Figure>,
+}
+
+impl Entry {
+    /// The first witness of the evidence (the one the report shows beside
+    /// the verdict of a failing claim).
+    pub fn witness(&self) -> Option<(&Evidence, &Witness)> {
+        self.verdict
+            .evidence
+            .iter()
+            .find_map(|e| e.witness.as_ref().map(|w| (e, w)))
+    }
+}
+
+impl From<&Outcome> for Entry {
+    fn from(o: &Outcome) -> Entry {
+        Entry {
+            id: o.claim.id.to_string(),
+            document: Document::seed(o.claim.seed),
+            source: o.claim.source.to_string(),
+            statement: o.claim.statement.to_string(),
+            verdict: o.verdict.clone(),
+            figure: figures::for_claim(o.claim.id),
+        }
+    }
+}
+
+/// The entries of built-in outcomes.
+pub fn entries(outcomes: &[Outcome]) -> Vec<Entry> {
+    outcomes.iter().map(Entry::from).collect()
+}
+
+/// What a report shows: everything, or the short form (summary and index,
+/// no claim sections), optionally only some verdicts.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct View {
+    /// Summary and index only.
+    pub summary_only: bool,
+    /// Only claims with one of these verdicts (all when empty).
+    pub verdicts: Vec<Status>,
+}
+
+impl View {
+    /// The entries this view shows.
+    pub fn select<'a>(&self, entries: &'a [Entry]) -> Vec<&'a Entry> {
+        entries
+            .iter()
+            .filter(|e| self.verdicts.is_empty() || self.verdicts.contains(&e.verdict.status))
+            .collect()
+    }
+
+    /// A sentence saying what the view leaves out, if anything.
+    pub fn note(&self) -> Option<String> {
+        if self.verdicts.is_empty() {
+            return None;
+        }
+        let labels: Vec<&str> = self.verdicts.iter().map(Status::label).collect();
+        Some(format!(
+            "Only the claims whose verdict is {} are shown.",
+            labels.join(" or ")
+        ))
+    }
+}
+
+/// Counts of each status among `entries`, in [`Status::ALL`] order.
+pub(crate) fn counts<'a>(entries: impl Iterator<Item = &'a Entry> + Clone) -> Vec<(Status, usize)> {
+    Status::ALL
+        .iter()
+        .map(|s| {
+            (
+                *s,
+                entries.clone().filter(|e| e.verdict.status == *s).count(),
+            )
+        })
+        .collect()
+}
+
+/// The distinct documents, in section order, with their entries.
+pub(crate) fn sections<'a>(entries: &[&'a Entry]) -> Vec<(&'a Document, Vec<&'a Entry>)> {
+    let mut docs: Vec<&Document> = Vec::new();
+    for e in entries {
+        if !docs.contains(&&e.document) {
+            docs.push(&e.document);
+        }
+    }
+    docs.sort_by_key(|d| d.order);
+    docs.into_iter()
+        .map(|d| {
+            (
+                d,
+                entries
+                    .iter()
+                    .copied()
+                    .filter(|e| &e.document == d)
+                    .collect(),
+            )
+        })
+        .collect()
+}
+
+/// `n` with the noun in the singular or plural (`1 claim`, `2 claims`).
+pub fn plural(n: usize, singular: &str, plural: &str) -> String {
+    format!("{n} {}", if n == 1 { singular } else { plural })
+}
+
+/// The size of a summarised expression: `degree 15, 315 terms`.
+pub(crate) fn size_text(degree: u64, terms: usize) -> String {
+    format!(
+        "numerator of degree {degree}, {}",
+        plural(terms, "term", "terms")
+    )
+}
+
+/// What stands for a printed formula too long to repeat (the seed has it,
+/// the JSON report too).
+pub(crate) const PRINTED_LONG: &str = "printed formula as in the seed";
+
+/// A printed formula, if it is short enough to repeat beside its check.
+pub(crate) fn printed_shown(printed: &str, long: usize) -> Option<&str> {
+    (printed.chars().count() <= long).then_some(printed)
+}
+
+/// A statement shortened to at most `max` characters for the index.
+pub(crate) fn short(text: &str, max: usize) -> String {
+    if text.chars().count() <= max {
+        return text.to_string();
+    }
+    let cut: String = text.chars().take(max - 1).collect();
+    format!("{}…", cut.trim_end())
+}
+
+/// Items grouped for display: consecutive confirmations (same parts, same
+/// kind, status and prose, about different subjects, no expressions or
+/// witness — "residual is exactly 0" for each of ten identities) become one
+/// group, shown as one line listing their subjects; every other item is a
+/// group of its own.
+pub(crate) fn groups(items: &[Evidence]) -> Vec<&[Evidence]> {
+    let plain = |e: &Evidence| {
+        e.subject.is_some() && e.exprs.is_empty() && e.witness.is_none() && e.status.is_some()
+    };
+    let mut out: Vec<&[Evidence]> = Vec::new();
+    let mut start = 0;
+    for i in 1..=items.len() {
+        let joins = i < items.len() && {
+            let (a, b) = (&items[start], &items[i]);
+            plain(a)
+                && plain(b)
+                && a.parts == b.parts
+                && a.kind == b.kind
+                && a.status == b.status
+                && a.text == b.text
+        };
+        if !joins {
+            out.push(&items[start..i]);
+            start = i;
+        }
+    }
+    out
+}
+
+/// The distinct methods of `entries`, in order of first use (the report
+/// states each once and refers to it by number).
+pub(crate) fn methods<'a>(entries: &[&'a Entry]) -> Vec<&'a str> {
+    let mut out: Vec<&str> = Vec::new();
+    for e in entries {
+        if !out.contains(&e.verdict.method.as_str()) {
+            out.push(&e.verdict.method);
+        }
+    }
+    out
+}
+
+/// A method's short form: up to its first `;` or `,` outside brackets (or
+/// the whole text when it has none), cut after a word to at most 40
+/// characters (the full method is stated once, in the methods list).
+pub(crate) fn method_short(method: &str) -> String {
+    let mut depth = 0i32;
+    let end = method
+        .char_indices()
+        .find(|&(_, ch)| {
+            match ch {
+                '(' | '[' | '{' => depth += 1,
+                ')' | ']' | '}' => depth -= 1,
+                _ => {}
+            }
+            depth == 0 && (ch == ';' || ch == ',')
+        })
+        .map_or(method.len(), |(i, _)| i);
+    let text = method[..end].trim();
+    if text.chars().count() <= 40 {
+        return text.to_string();
+    }
+    let cut: String = text.chars().take(40).collect();
+    let words = cut.rfind(' ').map_or(cut.as_str(), |i| &cut[..i]);
+    format!("{}…", words.trim_end_matches([',', ':', ';']))
+}
+
+/// The built-in Markdown report.
+pub fn markdown(outcomes: &[Outcome]) -> String {
+    markdown_entries(&entries(outcomes), BUILTIN_INTRO, &View::default())
+}
+
+/// The built-in report as JSON.
+pub fn json(outcomes: &[Outcome]) -> Report {
+    json_entries(&entries(outcomes), BUILTIN_INTRO, &View::default())
+}
+
+/// The built-in report as a LaTeX document.
+pub fn tex(outcomes: &[Outcome]) -> String {
+    tex_entries(&entries(outcomes), BUILTIN_INTRO, &View::default())
+}
+
+#[cfg(test)]
+pub(crate) mod test_entries {
+    //! Small entries for the renderers' unit tests.
+
+    use super::*;
+    use crate::evidence::{Expr, Kind};
+    use trig_symbolic::Sym;
+
+    pub fn doc(id: &str, order: usize) -> Document {
+        Document {
+            heading: format!("Spec {id}"),
+            id: id.into(),
+            title: "t_1".into(),
+            file: "f".into(),
+            location: "f".into(),
+            order,
+        }
+    }
+
+    pub fn entry(id: &str, d: Document, status: Status) -> Entry {
+        let residual = Sym::var("m") * &Sym::var("m") - &Sym::int(4);
+        let item = Evidence::new(Kind::Identity, "")
+            .about("Σ b_i − 1", status)
+            .with("residual", Expr::new(&residual))
+            .in_part("part", status);
+        Entry {
+            id: id.into(),
+            document: d,
+            source: "(1)".into(),
+            statement: "Σ b_i = 1".into(),
+            verdict: Verdict::new(status, "exact", [item]),
+            figure: None,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::test_entries::{doc, entry};
+    use super::*;
+
+    #[test]
+    fn views_filter_by_verdict_and_plurals_agree() {
+        let entries = [
+            entry("A1", doc("b", 5), Status::Fails),
+            entry("A2", doc("a", 1), Status::Holds),
+        ];
+        let view = View {
+            summary_only: false,
+            verdicts: vec![Status::Fails],
+        };
+        let ids: Vec<&str> = view
+            .select(&entries)
+            .iter()
+            .map(|e| e.id.as_str())
+            .collect();
+        assert_eq!(ids, ["A1"]);
+        assert!(view.note().unwrap().contains("fails"));
+        assert_eq!(plural(1, "claim", "claims"), "1 claim");
+        assert_eq!(plural(2, "claim", "claims"), "2 claims");
+        assert_eq!(short("abcdef", 4), "abc…");
+        let all: Vec<&Entry> = entries.iter().collect();
+        let s = sections(&all);
+        assert_eq!(s[0].0.id, "a", "sections follow the document order");
+    }
+}
