@@ -5,7 +5,7 @@
 
 use std::path::PathBuf;
 
-use trig_e2e::{assert_errors, example, stdout_ok};
+use trig_e2e::{assert_errors, example, stdout_ok, written};
 
 /// A spec file written for one test.
 fn spec_file(name: &str, text: &str) -> String {
@@ -339,6 +339,130 @@ fn fit_takes_a_spec_file() {
                 "alpha=1/50",
             ],
             "does not interpolate its end control points in f64",
+        ),
+    ]);
+}
+
+/// The (x, y) columns of a figure's data file.
+fn figure_points(path: &std::path::Path) -> Vec<(f64, f64)> {
+    std::fs::read_to_string(path.with_extension("csv"))
+        .expect("the figure's data")
+        .lines()
+        .skip(1)
+        .map(|l| {
+            let cells: Vec<&str> = l.rsplitn(3, ',').collect();
+            (cells[1].parse().expect("x"), cells[0].parse().expect("y"))
+        })
+        .collect()
+}
+
+/// `plot basis|curve --spec`: the spec transcription of the thesis cubic
+/// draws the catalog family's functions (same points, values to f64
+/// rounding of the two evaluation paths); a C-Bézier curve on `[0, α]`
+/// starts at V0 and ends at V3 for every α (end-point interpolation) and
+/// its basis is drawn over `[0, α]`.
+#[test]
+fn plot_takes_a_spec_file() {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cli_spec_features");
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let (family, spec) = (dir.join("family.svg"), dir.join("spec.svg"));
+    let tc = example("thesis-cubic.toml");
+    written(&[
+        "plot",
+        "basis",
+        "--family",
+        "thesis-cubic",
+        "--values",
+        "0.6",
+        "--output",
+        &family.display().to_string(),
+    ]);
+    written(&[
+        "plot",
+        "basis",
+        "--spec",
+        &tc,
+        "--values",
+        "0.6",
+        "--output",
+        &spec.display().to_string(),
+    ]);
+    let (a, b) = (figure_points(&family), figure_points(&spec));
+    assert_eq!(a.len(), b.len());
+    for (p, q) in a.iter().zip(&b) {
+        assert!(
+            (p.0 - q.0).abs() < 1e-15 && (p.1 - q.1).abs() < 1e-12,
+            "{p:?} vs {q:?}"
+        );
+    }
+    let cb = example("c-bezier-cubic.toml");
+    let curve = dir.join("c-bezier-curve.svg");
+    written(&[
+        "plot",
+        "curve",
+        "--spec",
+        &cb,
+        "--values",
+        "1,2,3",
+        "--output",
+        &curve.display().to_string(),
+    ]);
+    let text = std::fs::read_to_string(curve.with_extension("csv")).expect("data");
+    for alpha in ["1", "2", "3"] {
+        let pts: Vec<(f64, f64)> = text
+            .lines()
+            .filter(|l| l.starts_with(&format!("α = {alpha},")))
+            .map(|l| {
+                let cells: Vec<&str> = l.rsplitn(3, ',').collect();
+                (cells[1].parse().expect("x"), cells[0].parse().expect("y"))
+            })
+            .collect();
+        let (first, last) = (pts[0], pts[pts.len() - 1]);
+        // thesis Figure 6.3's polygon: V0 = (0, 0), V3 = (4, 0)
+        assert!(
+            first.0.abs() < 1e-12 && first.1.abs() < 1e-12,
+            "α = {alpha}: {first:?}"
+        );
+        assert!(
+            (last.0 - 4.0).abs() < 1e-12 && last.1.abs() < 1e-12,
+            "α = {alpha}: {last:?}"
+        );
+    }
+    let basis = dir.join("c-bezier-basis.svg");
+    written(&[
+        "plot",
+        "basis",
+        "--spec",
+        &cb,
+        "--values",
+        "2",
+        "--output",
+        &basis.display().to_string(),
+    ]);
+    let xs: Vec<f64> = figure_points(&basis).iter().map(|p| p.0).collect();
+    assert_eq!(xs.iter().copied().fold(f64::NAN, f64::max), 2.0);
+    let out = dir.join("refused.svg").display().to_string();
+    assert_errors(&[
+        (
+            &["plot", "basis", "--spec", &cb, "--output", &out],
+            "give --values",
+        ),
+        (
+            &[
+                "plot", "basis", "--spec", &cb, "--values", "4", "--output", &out,
+            ],
+            "outside the published range",
+        ),
+        (
+            &[
+                "plot",
+                "basis",
+                "--spec",
+                &example("bashir-quadratic.toml"),
+                "--output",
+                &out,
+            ],
+            "plots vary one",
         ),
     ]);
 }

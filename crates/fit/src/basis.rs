@@ -25,7 +25,7 @@ const INTERPOLATION_TOL: f64 = 1e-12;
 
 /// What the fit needs of a basis, object-safe (implemented for every
 /// [`Basis`] that is `Debug + Send + Sync + 'static`).
-pub trait FitBasis: fmt::Debug + Send + Sync {
+pub trait NumericBasis: fmt::Debug + Send + Sync {
     /// The basis as a catalog family, when it is one (the batch path).
     fn as_family(&self) -> Option<Family>;
     /// Stable id.
@@ -40,7 +40,7 @@ pub trait FitBasis: fmt::Debug + Send + Sync {
     fn slopes(&self, params: &[f64], end: End) -> Vec<f64>;
 }
 
-impl<B: Basis + fmt::Debug + Send + Sync + 'static> FitBasis for B {
+impl<B: Basis + fmt::Debug + Send + Sync + 'static> NumericBasis for B {
     fn as_family(&self) -> Option<Family> {
         (self as &dyn Any).downcast_ref::<Family>().copied()
     }
@@ -73,7 +73,7 @@ impl<B: Basis + fmt::Debug + Send + Sync + 'static> FitBasis for B {
 /// end-point-interpolating least squares (thesis (6.6)).
 #[derive(Debug, Clone)]
 pub struct SegmentBasis {
-    basis: Arc<dyn FitBasis>,
+    basis: Arc<dyn NumericBasis>,
     domain: Domain,
     params: Vec<f64>,
     /// The domain `[a, b]` at these parameters: `x = a + (b − a)t`.
@@ -84,7 +84,7 @@ pub struct SegmentBasis {
 impl SegmentBasis {
     /// Checks that the basis has four functions, the right number of finite
     /// parameters, and interpolates its end control points.
-    pub fn new(basis: Arc<dyn FitBasis>, params: &[f64]) -> Result<SegmentBasis> {
+    pub fn new(basis: Arc<dyn NumericBasis>, params: &[f64]) -> Result<SegmentBasis> {
         let unsuitable = |reason: String| FitError::Unsuitable {
             family: basis.basis_id(),
             reason,
@@ -139,7 +139,7 @@ impl SegmentBasis {
     }
 
     /// The basis.
-    pub fn basis(&self) -> &Arc<dyn FitBasis> {
+    pub fn basis(&self) -> &Arc<dyn NumericBasis> {
         &self.basis
     }
 

@@ -26,7 +26,7 @@ pub mod optimise;
 pub mod pipeline;
 pub mod refine;
 
-pub use basis::{FitBasis, SegmentBasis};
+pub use basis::{NumericBasis, SegmentBasis};
 pub use corners::{CornerRule, Corners, Span};
 pub use data::{Outline, P2};
 pub use error::{FitError, Result};

@@ -7,7 +7,7 @@ use std::sync::Arc;
 
 use serde::Serialize;
 
-use crate::basis::{FitBasis, SegmentBasis};
+use crate::basis::{NumericBasis, SegmentBasis};
 use crate::chord::chord_parameters;
 use crate::corners::{Corners, Span, segment};
 use crate::data::{Outline, P2};
@@ -63,7 +63,7 @@ pub struct OutlineFit {
     pub glyph: String,
     pub family: String,
     #[serde(skip)]
-    pub basis: Arc<dyn FitBasis>,
+    pub basis: Arc<dyn NumericBasis>,
     pub optimised: bool,
     pub continuity: Option<Continuity>,
     pub threshold: f64,
@@ -91,7 +91,7 @@ fn squared_errors(basis: &SegmentBasis, control: &Control, points: &[P2], t: &[f
 /// four functions; see the module docs).
 pub fn fit_outline(
     outline: &Outline,
-    family: Arc<dyn FitBasis>,
+    family: Arc<dyn NumericBasis>,
     options: &FitOptions,
 ) -> Result<OutlineFit> {
     if !(options.threshold.is_finite() && options.threshold >= 0.0) {

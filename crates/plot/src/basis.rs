@@ -1,13 +1,13 @@
-//! The functions of a family for several values of its shape parameter
+//! The functions of a basis (a catalog family or a spec file's) for several values of its shape parameter
 //! (thesis Figures 3.1, 3.6, 6.2).
 
 use plotters::prelude::*;
 use rug::Rational;
-use trig_core::{Batch, Family};
 
 use crate::error::{Result, draw};
 use crate::picture::{Picture, Series};
-use crate::style::{SIZE, chart, colour, legend, padded, settings};
+use crate::plotted::Plotted;
+use crate::style::{SIZE, chart, colour, legend, padded};
 
 /// The curves of one setting, one per function.
 type Curves = Vec<Vec<(f64, f64)>>;
@@ -15,33 +15,17 @@ type Curves = Vec<Vec<(f64, f64)>>;
 /// Points per function.
 const SAMPLES: usize = 201;
 
-/// SVG of every function of `family` over its domain, one colour per
-/// parameter value in `values` (exact values, checked against the published
-/// range unless `allow_outside`). Families without parameters take one
-/// empty value list: pass `&[]` and get one series per function.
-/// Series: (functions) × max(1, values) curves plus the axis `y = 0`.
-pub fn basis_svg(family: Family, values: &[Rational], allow_outside: bool) -> Result<Picture> {
-    let info = family.info();
-    let settings = settings(&info, values, "basis")?;
-    for s in &settings {
-        let pairs: Vec<(String, String)> = info
-            .params
-            .iter()
-            .zip(s)
-            .map(|(p, v)| (p.name.to_string(), v.to_string()))
-            .collect();
-        family.params_from_pairs(&pairs, allow_outside)?;
-    }
-    let end = info.variable.end(&1.0_f64);
-    let xs: Vec<f64> = (0..SAMPLES)
-        .map(|i| end * i as f64 / (SAMPLES - 1) as f64)
-        .collect();
+/// SVG of every function of a basis over its domain, one colour per
+/// parameter setting of `plot` (one setting, no parameters, for a basis
+/// without them). Series: (functions) × settings curves plus the axis
+/// `y = 0`.
+pub fn basis_svg(plot: &Plotted) -> Result<Picture> {
     // settings whose functions coincide are drawn once, labelled with
     // every value (`λ = 0, 1`)
     let mut series: Vec<(Vec<Vec<Rational>>, Curves)> = Vec::new();
-    for s in &settings {
+    for s in &plot.settings {
         // function-major: one slice of SAMPLES values per function
-        let values = Batch::new(family, s, &0.0, true)?.eval(&xs)?;
+        let (xs, values) = plot.sample(s, SAMPLES)?;
         let curves: Curves = values
             .chunks(SAMPLES)
             .map(|column| xs.iter().copied().zip(column.iter().copied()).collect())
@@ -51,6 +35,15 @@ pub fn basis_svg(family: Family, values: &[Rational], allow_outside: bool) -> Re
             None => series.push((vec![s.clone()], curves)),
         }
     }
+    let xs = || {
+        series
+            .iter()
+            .flat_map(|(_, cs)| cs.iter().flatten().map(|p| p.0))
+    };
+    let (start, end) = (
+        xs().fold(f64::INFINITY, f64::min),
+        xs().fold(f64::NEG_INFINITY, f64::max),
+    );
     let (ylo, yhi) = padded(
         series
             .iter()
@@ -58,11 +51,6 @@ pub fn basis_svg(family: Family, values: &[Rational], allow_outside: bool) -> Re
             .chain([0.0, 1.0]),
         0.05,
     );
-    let variable = match info.variable {
-        trig_core::Variable::UnitAngle => "u (angle θ = πu/2)",
-        trig_core::Variable::Angle => "t (angle, radians)",
-        trig_core::Variable::Polynomial => "t",
-    };
     let mut svg = String::new();
     let mut data = Vec::new();
     {
@@ -70,35 +58,29 @@ pub fn basis_svg(family: Family, values: &[Rational], allow_outside: bool) -> Re
         root.fill(&WHITE).map_err(draw)?;
         let caption = format!(
             "{}: {} — {}",
-            info.id,
-            info.functions.join(", "),
-            info.citation
+            plot.id,
+            plot.functions.join(", "),
+            plot.citation
         );
         let mut chart = chart(
             &root,
             caption,
-            (0.0, end),
+            (start, end),
             (ylo, yhi),
-            variable,
+            &plot.variable,
             "basis function value",
         )?;
         chart
             .draw_series(LineSeries::new(
-                [(0.0, 0.0), (end, 0.0)],
+                [(start, 0.0), (end, 0.0)],
                 BLACK.stroke_width(1),
             ))
             .map_err(draw)?;
         for (k, (same, curves)) in series.iter().enumerate() {
             let c = colour(k);
-            let label = match info.params.first() {
-                Some(p) if !same[0].is_empty() => {
-                    let vals: Vec<String> = same.iter().map(|s| s[0].to_string()).collect();
-                    format!("{} = {}", p.symbol, vals.join(", "))
-                }
-                _ => info.functions.join(", "),
-            };
+            let label = plot.label(same);
             for (j, curve) in curves.iter().enumerate() {
-                let name = info.functions.get(j).copied().unwrap_or("b");
+                let name = plot.functions.get(j).map_or("b", String::as_str);
                 data.push(Series::new(
                     format!("{name}, {label}"),
                     curve.iter().copied(),

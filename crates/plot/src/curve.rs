@@ -3,32 +3,24 @@
 //! `V₂ = (3,2)`, `V₃ = (4,0)`).
 
 use plotters::prelude::*;
-use rug::Rational;
-use trig_core::{Batch, Family};
 
 use crate::error::{PlotError, Result, draw};
 use crate::picture::{Picture, Series};
-use crate::style::{SIZE, chart, colour, equal_aspect, legend, padded, settings};
+use crate::plotted::Plotted;
+use crate::style::{SIZE, chart, colour, equal_aspect, legend, padded};
 
 /// Points per curve.
 const SAMPLES: usize = 201;
 
-/// SVG of the curve of `family` with control points `control` (one per
-/// function) for each parameter value (one empty setting for families
-/// without parameters), over its control polygon.
-/// Series: the polygon, its vertices, one curve per value.
-pub fn curve_svg(
-    family: Family,
-    control: &[(f64, f64)],
-    values: &[Rational],
-    allow_outside: bool,
-) -> Result<Picture> {
-    let info = family.info();
-    if control.len() != info.functions.len() {
+/// SVG of the curve of a basis with control points `control` (one per
+/// function) for each parameter setting of `plot`, over its control
+/// polygon. Series: the polygon, its vertices, one curve per setting.
+pub fn curve_svg(plot: &Plotted, control: &[(f64, f64)]) -> Result<Picture> {
+    if control.len() != plot.functions.len() {
         return Err(PlotError::Input(format!(
             "`{}` has {} functions; {} control points given",
-            info.id,
-            info.functions.len(),
+            plot.id,
+            plot.functions.len(),
             control.len()
         )));
     }
@@ -38,22 +30,10 @@ pub fn curve_svg(
     {
         return Err(PlotError::Input("control points must be finite".into()));
     }
-    let settings = settings(&info, values, "curve")?;
-    let end = info.variable.end(&1.0_f64);
     let mut curves = Vec::new();
-    for s in &settings {
-        let pairs: Vec<(String, String)> = info
-            .params
-            .iter()
-            .zip(s)
-            .map(|(p, v)| (p.name.to_string(), v.to_string()))
-            .collect();
-        family.params_from_pairs(&pairs, allow_outside)?;
-        let xs: Vec<f64> = (0..SAMPLES)
-            .map(|i| end * i as f64 / (SAMPLES - 1) as f64)
-            .collect();
+    for s in &plot.settings {
         // function-major: b_k at every sample is values[k·SAMPLES..]
-        let values = Batch::new(family, s, &0.0, true)?.eval(&xs)?;
+        let (_, values) = plot.sample(s, SAMPLES)?;
         let pts: Vec<(f64, f64)> = (0..SAMPLES)
             .map(|i| {
                 values
@@ -86,7 +66,7 @@ pub fn curve_svg(
         root.fill(&WHITE).map_err(draw)?;
         let caption = format!(
             "{} curve with its control polygon — {}",
-            info.id, info.citation
+            plot.id, plot.citation
         );
         let mut chart = chart(&root, caption, (xr.0, xr.1), (yr.0, yr.1), "x", "y")?;
         let grey = RGBColor(90, 90, 90);
@@ -103,9 +83,10 @@ pub fn curve_svg(
             .map_err(draw)?;
         for (k, (s, pts)) in curves.iter().enumerate() {
             let c = colour(k);
-            let label = match s.first() {
-                Some(v) => format!("{} = {}", info.params[0].symbol, v),
-                None => info.id.to_string(),
+            let label = if s.is_empty() {
+                plot.id.clone()
+            } else {
+                plot.label(std::slice::from_ref(s))
             };
             data.push(Series::new(label.clone(), pts.iter().copied()));
             chart

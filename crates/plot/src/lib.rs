@@ -17,6 +17,7 @@ pub mod error;
 pub mod fit;
 pub mod interp;
 pub mod picture;
+pub mod plotted;
 pub mod region;
 mod style;
 
@@ -26,4 +27,5 @@ pub use error::PlotError;
 pub use fit::fit_svg;
 pub use interp::{Interpolant, interp_svg};
 pub use picture::{Picture, Series};
+pub use plotted::Plotted;
 pub use region::{RegionCell, RegionKind, region_svg};

@@ -12,8 +12,8 @@ use clap::{Args, ValueEnum};
 use trig_core::{Basis, Bound, Family};
 use trig_fit::optimise::search_between;
 use trig_fit::{
-    Continuity, CornerRule, Corners, FitBasis, FitError, FitOptions, Metrics, Outline, OutlineFit,
-    Shape, Summary, THESIS_THRESHOLD, fit_outline,
+    Continuity, CornerRule, Corners, FitError, FitOptions, Metrics, NumericBasis, Outline,
+    OutlineFit, Shape, Summary, THESIS_THRESHOLD, fit_outline,
 };
 use trig_spec::range::End as SpecEnd;
 use trig_verification::certify::range::EndPoint;
@@ -319,7 +319,7 @@ pub fn prepare(
     for subject in selected {
         let params = parameters(&subject);
         let symbol = params.first().map(|(_, s, _)| s.clone());
-        let basis: Arc<dyn FitBasis> = Arc::new(subject.clone());
+        let basis: Arc<dyn NumericBasis> = Arc::new(subject.clone());
         let optimise = runs != Runs::Fixed && params.len() == 1;
         if runs != Runs::Optimised || !optimise {
             let fixed = fixed_params(&subject, &pairs)?;

@@ -6,15 +6,17 @@ use std::path::{Path, PathBuf};
 use clap::{Args, Subcommand};
 use rug::Rational;
 use trig_certify::region::CellKind;
-use trig_core::{Bound, Family, parse_exact};
+use trig_core::{Basis, Bound, parse_exact};
 use trig_interp::{DataSet, Scheme, Variant, f64_segments};
 use trig_plot::{
-    Interpolant, Picture, RegionCell, RegionKind, basis_svg, curve_svg, fit_svg, interp_svg,
-    region_svg,
+    Interpolant, Picture, Plotted, RegionCell, RegionKind, basis_svg, curve_svg, fit_svg,
+    interp_svg, region_svg,
 };
 use trig_spec::Spec;
+use trig_spec::range::End as SpecEnd;
 use trig_verification::region_audit::{Axis, classify_window};
 
+use super::eval::Subject;
 use super::fit::{FitSetup, Runs, prepare};
 use super::{CliError, CmdResult, range_hint};
 use crate::format::csv_text;
@@ -30,9 +32,9 @@ pub struct PlotArgs {
 enum PlotKind {
     /// The functions of a family for several parameter values (thesis Figures 3.1, 3.6).
     Basis {
-        /// Family id.
-        #[arg(long)]
-        family: String,
+        /// Family id (or --spec FILE).
+        #[arg(long, required_unless_present = "spec")]
+        family: Option<String>,
         #[command(flatten)]
         values: Values,
         /// SVG file to write.
@@ -41,9 +43,9 @@ enum PlotKind {
     },
     /// A curve with its control polygon for several parameter values (thesis Figure 6.3).
     Curve {
-        /// Family id.
-        #[arg(long)]
-        family: String,
+        /// Family id (or --spec FILE).
+        #[arg(long, required_unless_present = "spec")]
+        family: Option<String>,
         #[command(flatten)]
         values: Values,
         /// Control points x0,y0,x1,y1,… (default: thesis Figure 6.3, (0,0), (1,2), (3,2), (4,0)).
@@ -94,6 +96,9 @@ enum PlotKind {
 
 #[derive(Debug, Args)]
 struct Values {
+    /// Draw the basis of this spec file (TOML, docs/spec.md) instead of a family.
+    #[arg(long, value_name = "FILE")]
+    spec: Option<PathBuf>,
     /// Parameter values, comma separated (read exactly); default: five
     /// values evenly spread over the published range (open ends left out).
     #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
@@ -103,31 +108,91 @@ struct Values {
     allow_outside_range: bool,
 }
 
-/// The values to draw: given, or `lo + k·w/4`, `k = 0..4`, without open ends.
-fn values(family: Family, given: &[String]) -> Result<Vec<Rational>, CliError> {
+/// The values to draw: given, or `lo + k·w/4`, `k = 0..4`, without open
+/// ends, for a range `[lo, hi]` given by its ends `(value, open)` (`None`:
+/// unbounded, or not rational).
+fn values(
+    given: &[String],
+    name: &str,
+    lo: Option<(Rational, bool)>,
+    hi: Option<(Rational, bool)>,
+) -> Result<Vec<Rational>, CliError> {
     if !given.is_empty() {
         return Ok(given
             .iter()
             .map(|v| parse_exact(v))
             .collect::<Result<_, _>>()?);
     }
-    let Some(spec) = family.info().params.first() else {
-        return Ok(vec![]);
-    };
-    let (Some(lo), Some(hi)) = (spec.range.lo.value(), spec.range.hi.value()) else {
+    let (Some((lo, lo_open)), Some((hi, hi_open))) = (lo, hi) else {
         return Err(CliError::Usage(format!(
-            "the range of {} is unbounded: give --values",
-            spec.name
+            "the range of {name} is unbounded (or in multiples of pi): give --values"
         )));
     };
     let w = (hi - &lo) / 4u32;
     Ok((0..=4u32)
-        .filter(|&k| {
-            !(k == 0 && matches!(spec.range.lo, Bound::Open(..))
-                || k == 4 && matches!(spec.range.hi, Bound::Open(..)))
-        })
+        .filter(|&k| !(k == 0 && lo_open || k == 4 && hi_open))
         .map(|k| lo.clone() + w.clone() * k)
         .collect())
+}
+
+/// What `plot basis` and `plot curve` draw: the family or spec file's
+/// basis, for the values of its one parameter (checked against the
+/// published range unless `--allow-outside-range`).
+fn plotted(family: Option<&str>, v: &Values, what: &str) -> Result<Plotted, CliError> {
+    match Subject::from_args(family, v.spec.as_deref())? {
+        Subject::Family(family) => {
+            let vals = match family.info().params.first() {
+                None => Vec::new(),
+                Some(p) => {
+                    let end = |b: Bound| b.value().map(|q| (q, matches!(b, Bound::Open(..))));
+                    values(&v.values, p.name, end(p.range.lo), end(p.range.hi))?
+                }
+            };
+            Plotted::family(family, &vals, v.allow_outside_range, what).map_err(plot_err_hinted)
+        }
+        Subject::Spec(spec) => {
+            let settings: Vec<Vec<Rational>> = match spec.params.as_slice() {
+                [] => vec![Vec::new()],
+                [p] => {
+                    let end = |e: &SpecEnd| {
+                        e.value()
+                            .filter(|_| !p.range.pi)
+                            .map(|q| (q.clone(), matches!(e, SpecEnd::Open(_))))
+                    };
+                    let vals = values(&v.values, &p.name, end(&p.range.lo), end(&p.range.hi))?;
+                    let mut settings = Vec::new();
+                    for q in vals {
+                        let pair = [(p.name.clone(), q.to_string())];
+                        settings.push(
+                            spec.params_from_pairs(&pair, v.allow_outside_range)
+                                .map_err(range_hint)?,
+                        );
+                    }
+                    settings
+                }
+                ps => {
+                    return Err(CliError::Usage(format!(
+                        "`{}` has {} parameters; {what} plots vary one",
+                        spec.id,
+                        ps.len()
+                    )));
+                }
+            };
+            Ok(Plotted {
+                id: spec.id.clone(),
+                citation: spec.citation.clone(),
+                functions: spec.function_names(),
+                symbol: spec.params.first().map(|p| p.symbol.clone()),
+                variable: spec
+                    .domain
+                    .to_string()
+                    .replace(" in ", " ∈ ")
+                    .replace("pi", "π"),
+                settings,
+                basis: std::sync::Arc::new(*spec),
+            })
+        }
+    }
 }
 
 /// Writes the picture and, beside it, its data (`NAME.csv`: series, point,
@@ -175,12 +240,8 @@ pub fn run(args: &PlotArgs) -> CmdResult {
             values: v,
             output,
         } => {
-            let family = super::eval::family_by_id(family)?;
-            let vals = values(family, &v.values)?;
-            write(
-                output,
-                &basis_svg(family, &vals, v.allow_outside_range).map_err(plot_err_hinted)?,
-            )
+            let plot = plotted(family.as_deref(), v, "basis")?;
+            write(output, &basis_svg(&plot).map_err(plot_err_hinted)?)
         }
         PlotKind::Curve {
             family,
@@ -188,13 +249,11 @@ pub fn run(args: &PlotArgs) -> CmdResult {
             control,
             output,
         } => {
-            let family = super::eval::family_by_id(family)?;
-            let vals = values(family, &v.values)?;
+            let plot = plotted(family.as_deref(), v, "curve")?;
             let control = control_points(control)?;
             write(
                 output,
-                &curve_svg(family, &control, &vals, v.allow_outside_range)
-                    .map_err(plot_err_hinted)?,
+                &curve_svg(&plot, &control).map_err(plot_err_hinted)?,
             )
         }
         PlotKind::Fit {
