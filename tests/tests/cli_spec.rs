@@ -30,7 +30,7 @@ fn audit_of_the_shipped_examples() {
         let md = stdout_ok(&["audit", "--spec", &example(file)]);
         assert!(md.starts_with("# trig-audit report"), "{file}");
         for id in ids {
-            assert!(md.contains(&format!("### {id} — ")), "{file}: {id}");
+            assert!(md.contains(&format!("</a>{id} — ")), "{file}: {id}");
         }
     }
     let json: serde_json::Value = serde_json::from_str(&stdout_ok(&[
