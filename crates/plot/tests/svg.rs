@@ -8,7 +8,7 @@ use std::path::PathBuf;
 use rug::Rational;
 use trig_core::Family;
 use trig_fit::{Continuity, CornerRule, Corners, FitOptions, Outline, Shape, fit_outline};
-use trig_plot::{Interpolant, basis_svg, curve_svg, fit_svg, interp_svg};
+use trig_plot::{Interpolant, Plotted, basis_svg, curve_svg, fit_svg, interp_svg};
 
 /// Parses `svg` and returns (curves, markers, texts): polylines of at least
 /// three points (ticks and legend swatches have two), circles, and the text
@@ -43,7 +43,8 @@ fn r(s: &str) -> Rational {
 #[test]
 fn basis_plot_has_one_curve_per_function_and_value() {
     let values = [r("-2"), r("-1"), r("0"), r("1")];
-    let picture = basis_svg(Family::ThesisCubic, &values, false).unwrap();
+    let picture =
+        basis_svg(&Plotted::family(Family::ThesisCubic, &values, false, "basis").unwrap()).unwrap();
     // the data beside the figure: one series per drawn curve
     assert_eq!(picture.series.len(), 4 * 4);
     assert!(picture.series.iter().any(|s| s.label == "b2, m = -1"));
@@ -54,18 +55,23 @@ fn basis_plot_has_one_curve_per_function_and_value() {
     for label in ["m = -2", "m = -1", "m = 0", "m = 1", "basis function value"] {
         assert!(texts.iter().any(|t| t == label), "{label}: {texts:?}");
     }
-    let svg = basis_svg(Family::Bernstein3, &[], false).unwrap().svg;
+    let svg = basis_svg(&Plotted::family(Family::Bernstein3, &[], false, "basis").unwrap())
+        .unwrap()
+        .svg;
     assert_eq!(census(&svg).0, 4);
     // outside the published range without permission: refused
-    assert!(basis_svg(Family::ThesisCubic, &[r("2")], false).is_err());
+    assert!(Plotted::family(Family::ThesisCubic, &[r("2")], false, "basis").is_err());
 }
 
 #[test]
 fn curve_plot_has_polygon_and_one_curve_per_value() {
     let control = [(0.0, 0.0), (1.0, 2.0), (3.0, 2.0), (4.0, 0.0)];
-    let svg = curve_svg(Family::Han, &control, &[r("-1"), r("0"), r("1")], false)
-        .unwrap()
-        .svg;
+    let svg = curve_svg(
+        &Plotted::family(Family::Han, &[r("-1"), r("0"), r("1")], false, "curve").unwrap(),
+        &control,
+    )
+    .unwrap()
+    .svg;
     let (curves, markers, texts) = census(&svg);
     assert_eq!(curves, 3 + 1, "three curves and the control polygon");
     assert_eq!(markers, 4, "the control points");
@@ -73,7 +79,8 @@ fn curve_plot_has_polygon_and_one_curve_per_value() {
         texts.iter().any(|t| t == "control polygon V0…V3"),
         "{texts:?}"
     );
-    assert!(curve_svg(Family::Han, &control[..3], &[r("0")], false).is_err());
+    let han = Plotted::family(Family::Han, &[r("0")], false, "curve").unwrap();
+    assert!(curve_svg(&han, &control[..3]).is_err());
 }
 
 #[test]
