@@ -234,6 +234,31 @@ fn exact_end(
     dir: i32,
 ) -> EndPoint {
     let roots = roots_beyond(basis, start, dir);
+    // The start may itself be a boundary root (a function identically zero
+    // there, as (1 + λ)(…) at λ = −1): admissibility may change at the
+    // start, so the gap just beyond it is tested first.
+    if let Some((p, _)) = basis.iter().find(|(p, _)| p.sign_at(start) == 0) {
+        let at_start = Algebraic::new(p, start.clone(), start.clone());
+        let q = gap_point(&at_start, roots.first().map(|r| &r.0), dir);
+        match point(fs, trig, param, &q) {
+            Ok(()) => {}
+            Err(Outside::Undecided(at)) => {
+                return EndPoint::Undecided {
+                    at,
+                    why: "the point test next to the start (a boundary root) was not decided"
+                        .into(),
+                };
+            }
+            Err(outside) => {
+                return EndPoint::Exact {
+                    value: at_start,
+                    closed: true,
+                    inside: start.clone(),
+                    outside,
+                };
+            }
+        }
+    }
     let mut inside = start.clone();
     for (k, (root, pole)) in roots.iter().enumerate() {
         // the gap before this root was admissible; test the one after it
@@ -479,6 +504,33 @@ mod tests {
             "{:?}",
             r.certificate
         );
+    }
+
+    /// Han's quadratic basis (CAGD 19 (2002)): b0 = (1 − s)(1 − λs),
+    /// b1 = (1 + λ)(s + c − 1), b2 = (1 − c)(1 − λc); admissible exactly for
+    /// λ ∈ [−1, 1] (b1 < 0 inside for λ < −1; b0 < 0 near s = 1 for λ > 1).
+    /// Started at λ = −1, where b1 ≡ 0, the search must not step past it.
+    #[test]
+    fn a_start_where_a_function_vanishes_identically_is_an_end() {
+        let (s, c, l) = (Sym::var("s"), Sym::var("c"), Sym::var("lambda"));
+        let one = Sym::one();
+        let fs = vec![
+            (one.clone() - &s) * &(one.clone() - &(l.clone() * &s)),
+            (one.clone() + &l) * &(s.clone() + &c - &one),
+            (one.clone() - &c) * &(one.clone() - &(l.clone() * &c)),
+        ];
+        let r = maximal_range(&fs, &["b0", "b1", "b2"], true, "lambda", &q(-1, 1));
+        for (end, v) in [(&r.lo, -1), (&r.hi, 1)] {
+            match end {
+                EndPoint::Exact {
+                    value,
+                    closed: true,
+                    outside: Outside::Counterexample(..),
+                    ..
+                } => assert_eq!(value.rational, Some(Rational::from(v))),
+                other => panic!("{other:?}"),
+            }
+        }
     }
 
     #[test]
