@@ -15,7 +15,7 @@
 
 use std::fmt;
 
-use trig_core::{Atoms, Basis, Domain, Ring};
+use trig_core::{Atoms, Basis, Domain, Ring, Variable};
 
 use crate::jet::{Jet, angle_atoms, factorial};
 
@@ -53,6 +53,54 @@ pub enum Wrt {
 }
 
 impl Wrt {
+    /// How the convention is stated for a basis on `domain`: the catalog's
+    /// conventions as [`Wrt::describe`] states them; for any other domain
+    /// `x ∈ [a, b]` the unit parameter is `x = a + (b − a)u` with its factor
+    /// `(b − a)^k`, and the angle is named only when it is not the variable.
+    pub fn describe_on(&self, domain: &Domain) -> String {
+        let names: Vec<&str> = domain.param_names.iter().map(String::as_str).collect();
+        let legacy = [Variable::UnitAngle, Variable::Angle, Variable::Polynomial]
+            .into_iter()
+            .find(|v| Domain::from_variable(*v, &names) == *domain);
+        if let Some(v) = legacy {
+            return self.describe(v.is_trigonometric()).to_string();
+        }
+        let x = &domain.name;
+        let (a, b) = (
+            domain.start.text(&domain.param_names),
+            domain.end.text(&domain.param_names),
+        );
+        let length = if domain.start.as_rational().is_some_and(|q| *q == 0) {
+            b.clone()
+        } else {
+            format!("({b}) − ({a})")
+        };
+        let unit_angle = domain
+            .angle
+            .as_ref()
+            .and_then(|w| w.as_rational())
+            .is_some_and(|w| *w == 1);
+        match self {
+            Wrt::Variable => format!("with respect to {x}"),
+            Wrt::Angle if domain.angle.is_none() || unit_angle => format!("with respect to {x}"),
+            Wrt::Angle => format!(
+                "with respect to the angle θ = ({}){x}",
+                domain.angle.as_ref().map_or(String::new(), |w| w.text(&[]))
+            ),
+            Wrt::U => format!(
+                "with respect to u, {x} = {} (factor ({length})^k)",
+                if length == b {
+                    format!("({b})·u")
+                } else {
+                    format!("{a} + ({length})·u")
+                }
+            ),
+            Wrt::X => format!(
+                "with respect to a data abscissa over an interval of length h, {x} = {a} + ({length})(x − x_i)/h"
+            ),
+        }
+    }
+
     /// How the convention is stated in table headers.
     pub fn describe(&self, trigonometric: bool) -> &'static str {
         match (self, trigonometric) {
@@ -299,6 +347,21 @@ pub fn knot_derivatives<T: Ring, const K: usize>(
 mod tests {
     use super::*;
     use trig_core::Family;
+
+    #[test]
+    fn conventions_are_stated_for_the_domain() {
+        // the catalog's: as printed in its tables
+        let thesis = Basis::domain(&Family::ThesisCubic);
+        assert_eq!(Wrt::U.describe_on(&thesis), Wrt::U.describe(true));
+        // a C-curve on [0, α]: t = αu, factor α^k; its angle is t itself
+        let mut c_curve = Domain::from_variable(Variable::Angle, &["alpha"]);
+        c_curve.end = trig_core::Affine::param(0);
+        assert_eq!(
+            Wrt::U.describe_on(&c_curve),
+            "with respect to u, t = (alpha)·u (factor (alpha)^k)"
+        );
+        assert_eq!(Wrt::Angle.describe_on(&c_curve), "with respect to t");
+    }
 
     fn close(a: f64, b: f64) -> bool {
         (a - b).abs() <= 1e-12 * (1.0 + b.abs())

@@ -396,12 +396,7 @@ pub fn endpoint_values(spec: &Spec, end: End, values: &[Printed]) -> Verdict {
 
 /// How derivatives are described for this spec's `wrt`.
 pub fn describe_wrt(spec: &Spec, wrt: Wrt) -> String {
-    match (spec.legacy, wrt) {
-        (Some(v), _) => wrt.describe(v.is_trigonometric()).to_string(),
-        (None, Wrt::Variable) => format!("with respect to {}", spec.var_name),
-        (None, Wrt::U) => format!("with respect to u, {} = a + (b − a)u", spec.var_name),
-        (None, w) => w.describe(spec.domain.is_trigonometric()).to_string(),
-    }
+    wrt.describe_on(&spec.domain)
 }
 
 /// Exact endpoint derivatives (jets over the symbolic ring) against the

@@ -151,11 +151,10 @@ fn conditions(kind: JoinKind) -> &'static str {
 }
 
 fn header(s: &Solved) -> Vec<String> {
-    let trig = s.family.domain().is_trigonometric();
     vec![
         format!("family: {} ({})", s.family.id(), s.family.citation()),
         format!("join: {} — {}", s.kind, conditions(s.kind)),
-        format!("derivatives: {}", s.wrt.describe(trig)),
+        format!("derivatives: {}", s.wrt.describe_on(&s.family.domain())),
         format!(
             "first segment P(·) = Σ b_i P_i, parameters: {}",
             params_text(&s.first_params)

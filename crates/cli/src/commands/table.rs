@@ -129,7 +129,7 @@ pub fn run(args: &TableArgs) -> CmdResult {
     let heading = format!(
         "{id} ({}): derivatives {}, {mode}",
         family.citation(),
-        Wrt::from(args.wrt).describe(family.domain().is_trigonometric())
+        Wrt::from(args.wrt).describe_on(&family.domain())
     );
     render_blocks(&heading, &blocks, args.format)
 }
