@@ -100,7 +100,8 @@ struct Values {
     #[arg(long, value_name = "FILE")]
     spec: Option<PathBuf>,
     /// Parameter values, comma separated (read exactly); default: five
-    /// values evenly spread over the published range (open ends left out).
+    /// values evenly spread over the published range (open ends left out)
+    /// when it is bounded with rational ends; otherwise give them.
     #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
     values: Vec<String>,
     /// Allow values outside the published range.
@@ -249,8 +250,17 @@ pub fn run(args: &PlotArgs) -> CmdResult {
             control,
             output,
         } => {
+            let control_default = control.is_empty();
             let plot = plotted(family.as_deref(), v, "curve")?;
             let control = control_points(control)?;
+            if control.len() != plot.functions.len() && control_default {
+                return Err(CliError::Usage(format!(
+                    "`{}` has {} functions; the default polygon (thesis Figure 6.3) has 4 points: give --control with {} x,y pairs",
+                    plot.id,
+                    plot.functions.len(),
+                    plot.functions.len()
+                )));
+            }
             write(
                 output,
                 &curve_svg(&plot, &control).map_err(plot_err_hinted)?,
