@@ -106,4 +106,17 @@ fn closed_and_full_standard_output_end_without_a_panic() {
             "{err}"
         );
     }
+    // a full device as the output file: the device's error, and the device
+    // is still a device (an atomic rename would have replaced it)
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileTypeExt;
+        let is_device =
+            || std::fs::metadata("/dev/full").is_ok_and(|m| m.file_type().is_char_device());
+        if is_device() {
+            let err = trig_e2e::error_line(&["audit", "--seed", "003", "--output", "/dev/full"]);
+            assert!(err.contains("cannot write /dev/full"), "{err}");
+            assert!(is_device(), "/dev/full was replaced");
+        }
+    }
 }

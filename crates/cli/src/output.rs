@@ -9,7 +9,8 @@ use std::path::Path;
 
 use super::commands::CliError;
 
-/// Writes `bytes` to `path` atomically.
+/// Writes `bytes` to `path` atomically (a regular file; a device or pipe
+/// is written in place).
 pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
     // the kind only: tempfile's errors name the temporary file, not the target
     let fail = |e: std::io::Error| {
@@ -19,6 +20,16 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
             std::io::Error::from(e.kind())
         ))
     };
+    // a device, pipe or socket is written in place: renaming over it would
+    // replace it (`--output /dev/full` must fail as the device fails, not
+    // turn /dev/full into a regular file)
+    if std::fs::metadata(path).is_ok_and(|m| !m.is_file() && !m.is_dir()) {
+        return std::fs::OpenOptions::new()
+            .write(true)
+            .open(path)
+            .and_then(|mut f| f.write_all(bytes).and_then(|()| f.flush()))
+            .map_err(fail);
+    }
     let dir = path
         .parent()
         .filter(|d| !d.as_os_str().is_empty())
