@@ -202,8 +202,9 @@ fn plots_are_written_as_svg() {
                 "--values".into(),
                 "-2,-1,0,1".into(),
             ],
+            // the four curves (the control polygon has four points)
             out("curve.svg"),
-            4 + 1,
+            4,
         ),
         (
             vec![
