@@ -166,7 +166,7 @@ fn bad_fit_input_is_a_one_line_error() {
         ),
         (
             &["fit", "--glyph", &eps, "--param", "zeta=1"],
-            "no selected family has a parameter `zeta`",
+            "no selected basis has a parameter `zeta`",
         ),
         (
             &["fit", "--glyph", &eps, "--threshold", "-1"],
