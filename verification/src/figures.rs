@@ -26,7 +26,7 @@ pub const FIGURES: &[Figure] = &[
     Figure {
         claim: "T30",
         path: "docs/figures/audit-T30-han-versus-listing.svg",
-        caption: "the Appendix 2 listing's functions (solid; b20 with sin) over Han's (6.2) as printed (dashed) at λ = −1, 0, 1: b0, b1, b3 coincide, b2 does not",
+        caption: "the Appendix 2 listing's functions (solid; b20 with sin) over Han's (6.2) as printed (dashed) at λ = −1, 0, 1: b0, b1, b3 coincide, b2 differs except at λ = 0",
         command: "plot basis --family han-listing --versus han --values=-1,0,1 --output docs/figures/audit-T30-han-versus-listing.svg",
     },
     Figure {
