@@ -1,9 +1,12 @@
 //! The figures the audit report links (`trig_verification::figures`): each is
 //! drawn by the `trig-audit` command it states, into a scratch directory here
 //! (or over the committed file with `TRIG_AUDIT_REDRAW_FIGURES=1`, which is
-//! what `./run.sh figures` does), and the committed file exists.
+//! what `./run.sh figures` does), and the committed file exists, with its
+//! data (`.csv`) and its pgfplots code (`.tex`) beside it; the pgfplots code
+//! is ASCII and, when `pdflatex` is on the machine, compiles.
 
 use std::path::{Path, PathBuf};
+use std::process::Command;
 
 use trig_verification::figures::FIGURES;
 
@@ -42,12 +45,60 @@ fn every_linked_figure_is_drawn_by_its_command_and_committed() {
         let data = std::fs::read_to_string(Path::new(&target).with_extension("csv"))
             .expect("the data written beside the figure");
         assert!(data.starts_with("series,point,x,y\n"), "{}", f.claim);
-        assert!(root().join(f.path).exists(), "{} is not committed", f.path);
+        let pgf = Path::new(&target).with_extension("tex");
+        let tex = std::fs::read_to_string(&pgf).expect("the pgfplots code beside the figure");
+        assert!(tex.is_ascii(), "{}: non-ASCII pgfplots code", f.claim);
         assert!(
-            root().join(f.data_path()).exists(),
-            "{} is not committed",
-            f.data_path()
+            tex.contains("\\begin{axis}") && tex.contains("\\addlegendentry{"),
+            "{}",
+            f.claim
         );
+        compiles(&pgf, &scratch, f.claim);
+        for path in [f.path.to_string(), f.data_path(), f.pgf_path()] {
+            assert!(root().join(&path).exists(), "{path} is not committed");
+        }
     }
     let _ = std::fs::remove_dir_all(&scratch);
+}
+
+/// Compiles the pgfplots code `pgf` in a minimal document with pdflatex in
+/// the directory `dir`, when pdflatex (with pgfplots) is on the machine;
+/// says so when not.
+fn compiles(pgf: &Path, dir: &Path, claim: &str) {
+    let available = Command::new("kpsewhich")
+        .arg("pgfplots.sty")
+        .output()
+        .is_ok_and(|o| o.status.success());
+    if !available {
+        eprintln!("skipped: pdflatex with pgfplots is not on this machine ({claim})");
+        return;
+    }
+    let name = pgf.file_name().and_then(|n| n.to_str()).expect("file name");
+    if pgf.parent() != Some(dir) {
+        std::fs::copy(pgf, dir.join(name)).expect("pgfplots code copied");
+    }
+    let doc = dir.join(format!("doc-{name}"));
+    std::fs::write(
+        &doc,
+        format!(
+            "\\documentclass{{article}}\n\\usepackage[margin=2cm]{{geometry}}\n\\usepackage{{pgfplots}}\n\\pgfplotsset{{compat=1.16}}\n\\begin{{document}}\n\\input{{{name}}}\n\\end{{document}}\n"
+        ),
+    )
+    .expect("document written");
+    let out = Command::new("pdflatex")
+        .args(["-interaction=nonstopmode", "-halt-on-error"])
+        .arg(doc.file_name().expect("name"))
+        .current_dir(dir)
+        .output()
+        .expect("pdflatex runs");
+    let log = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{claim}: pdflatex failed:\n{log}");
+    assert!(
+        !log.contains("Missing character"),
+        "{claim}: a character is missing:\n{log}"
+    );
+    assert!(
+        doc.with_extension("pdf").exists(),
+        "{claim}: no PDF written"
+    );
 }

@@ -1,7 +1,7 @@
 //! `trig-audit fit` and `trig-audit plot` end to end, on the committed glyph
 //! data (`data/glyphs/`).
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use trig_e2e::{assert_errors, stdout_ok};
 
@@ -187,7 +187,8 @@ fn plots_are_written_as_svg() {
     let out = |name: &str| dir.join(name).display().to_string();
     let eps = glyph("ain");
     let cases: Vec<(Vec<String>, String, usize)> = vec![
-        // (args, file, polylines of ≥ 3 points = curve series)
+        // (args, file, polylines of ≥ 20 points = solid curve series; a
+        // dashed curve is drawn as short pieces)
         (
             vec!["basis".into(), "--family".into(), "majeed-qayyum".into()],
             out("basis.svg"),
@@ -201,8 +202,9 @@ fn plots_are_written_as_svg() {
                 "--values".into(),
                 "-2,-1,0,1".into(),
             ],
+            // the four curves (the control polygon has four points)
             out("curve.svg"),
-            4 + 1,
+            4,
         ),
         (
             vec![
@@ -220,7 +222,7 @@ fn plots_are_written_as_svg() {
         (
             vec!["interp".into(), "--data".into(), "thesis-table-4.1".into()],
             out("interp.svg"),
-            2 * 4,
+            4,
         ),
     ];
     for (args, file, curves) in cases {
@@ -243,10 +245,14 @@ fn plots_are_written_as_svg() {
                     .nth(1)
                     .and_then(|q| q.split('"').next())
                     .unwrap_or("");
-                pts.split_whitespace().count() >= 3
+                pts.split_whitespace().count() >= 20
             })
             .count();
         assert_eq!(long, curves, "{args:?}");
+        let tex = std::fs::read_to_string(Path::new(&file).with_extension("tex")).unwrap();
+        assert!(tex.contains("\\begin{axis}"), "{file}");
+        let csv = std::fs::read_to_string(Path::new(&file).with_extension("csv")).unwrap();
+        assert!(csv.starts_with("series,point,x,y\n"), "{file}");
     }
     assert_errors(&[
         (

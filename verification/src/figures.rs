@@ -3,7 +3,8 @@
 //! command stated here (`./run.sh figures` redraws them all); the test
 //! `tests/figures.rs` checks that every file exists.
 
-/// A figure supporting the verdict of one claim.
+/// A figure supporting the verdict of one claim: the SVG, with its
+/// pgfplots code (`.tex`) and its data (`.csv`) beside it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Figure {
     pub claim: &'static str,
@@ -25,8 +26,8 @@ pub const FIGURES: &[Figure] = &[
     Figure {
         claim: "T30",
         path: "docs/figures/audit-T30-han-versus-listing.svg",
-        caption: "the Appendix 2 listing's functions (b20 with sin) at λ = −1, 0, 1",
-        command: "plot basis --family han-listing --values=-1,0,1 --output docs/figures/audit-T30-han-versus-listing.svg",
+        caption: "the Appendix 2 listing's functions (solid; b20 with sin) over Han's (6.2) as printed (dashed) at λ = −1, 0, 1: b0, b1, b3 coincide, b2 differs except at λ = 0",
+        command: "plot basis --family han-listing --versus han --values=-1,0,1 --output docs/figures/audit-T30-han-versus-listing.svg",
     },
     Figure {
         claim: "T24f",
@@ -43,12 +44,22 @@ pub const FIGURES: &[Figure] = &[
 ];
 
 impl Figure {
+    /// The file beside the figure with extension `ext`.
+    fn beside(&self, ext: &str) -> String {
+        match self.path.rsplit_once('.') {
+            Some((stem, _)) => format!("{stem}.{ext}"),
+            None => format!("{}.{ext}", self.path),
+        }
+    }
+
     /// The data of the figure: a CSV file beside it (same name).
     pub fn data_path(&self) -> String {
-        match self.path.rsplit_once('.') {
-            Some((stem, _)) => format!("{stem}.csv"),
-            None => format!("{}.csv", self.path),
-        }
+        self.beside("csv")
+    }
+
+    /// The pgfplots code of the figure: a `.tex` file beside it.
+    pub fn pgf_path(&self) -> String {
+        self.beside("tex")
     }
 }
 

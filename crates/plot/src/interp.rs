@@ -3,11 +3,9 @@
 //! sampled pieces (crate `trig-interp` builds them), so this picture knows
 //! nothing of the schemes.
 
-use plotters::prelude::*;
-
-use crate::error::{PlotError, Result, draw};
-use crate::picture::{Picture, Series};
-use crate::style::{SIZE, chart, colour, legend, padded};
+use crate::error::{PlotError, Result};
+use crate::picture::{Frame, Look, Mark, Picture, Series};
+use crate::style::{BLACK, CURVE, colour, padded};
 
 /// One interpolant: its legend label and its pieces, each a sampled polyline.
 #[derive(Debug, Clone, PartialEq)]
@@ -16,9 +14,11 @@ pub struct Interpolant {
     pub pieces: Vec<Vec<(f64, f64)>>,
 }
 
-/// SVG of `interpolants` over `data`, with the line `y = 0` (positivity is
-/// the point of thesis 4.3). Series: the axis, one curve per piece per
-/// interpolant, the data points.
+/// `interpolants` over `data`, with the line `y = 0` (positivity is
+/// the point of thesis 4.3). Series: one curve per piece per interpolant,
+/// the data points; interpolants with the same pieces are drawn once,
+/// labelled `A = B`; the first solid, the others dashed (so that one
+/// over another stays visible).
 pub fn interp_svg(
     title: &str,
     data: &[(f64, f64)],
@@ -33,51 +33,50 @@ pub fn interp_svg(
             "interpolant plots need finite data and curves".into(),
         ));
     }
-    let xr = padded(all().map(|p| p.0), 0.03);
-    let yr = padded(all().map(|p| p.1).chain([0.0]), 0.08);
-    let mut data_series = vec![Series::new("data points", data.iter().copied())];
+    let x = padded(all().map(|p| p.0), 0.03);
+    let y = padded(all().map(|p| p.1).chain([0.0]), 0.08);
+    // interpolants with the same pieces are drawn once, with every label
+    let mut drawn: Vec<(Vec<&str>, &Interpolant)> = Vec::new();
     for i in interpolants {
+        match drawn.iter_mut().find(|(_, d)| d.pieces == i.pieces) {
+            Some((labels, _)) => labels.push(&i.label),
+            None => drawn.push((vec![&i.label], i)),
+        }
+    }
+    let mut series = Vec::new();
+    for (k, (labels, i)) in drawn.into_iter().enumerate() {
+        let label = labels.join(" = ");
         for (j, piece) in i.pieces.iter().enumerate() {
-            data_series.push(Series::new(
-                format!("{}, piece {}", i.label, j + 1),
+            let s = Series::new(
+                format!("{label}, piece {}", j + 1),
                 piece.iter().copied(),
-            ));
+                Look {
+                    mark: Mark::Line {
+                        width: CURVE,
+                        dashed: k > 0,
+                        vertices: false,
+                    },
+                    ..Look::line(colour(k), CURVE)
+                },
+            );
+            series.push(if j == 0 { s.legend(label.clone()) } else { s });
         }
     }
-    let mut svg = String::new();
-    {
-        let root = SVGBackend::with_string(&mut svg, SIZE).into_drawing_area();
-        root.fill(&WHITE).map_err(draw)?;
-        let mut chart = chart(&root, title, (xr.0, xr.1), (yr.0, yr.1), "x", "y = P(x)")?;
-        chart
-            .draw_series(LineSeries::new(
-                [(xr.0, 0.0), (xr.1, 0.0)],
-                BLACK.stroke_width(1),
-            ))
-            .map_err(draw)?;
-        for (k, interp) in interpolants.iter().enumerate() {
-            let c = colour(k);
-            for (j, piece) in interp.pieces.iter().enumerate() {
-                let line = chart
-                    .draw_series(LineSeries::new(piece.iter().copied(), c.stroke_width(2)))
-                    .map_err(draw)?;
-                if j == 0 {
-                    line.label(interp.label.clone()).legend(move |(x, y)| {
-                        PathElement::new([(x, y), (x + 20, y)], c.stroke_width(2))
-                    });
-                }
-            }
-        }
-        chart
-            .draw_series(data.iter().map(|&p| Circle::new(p, 4, BLACK.filled())))
-            .map_err(draw)?
-            .label("data points")
-            .legend(|(x, y)| Circle::new((x + 10, y), 4, BLACK.filled()));
-        legend(&mut chart)?;
-        root.present().map_err(draw)?;
-    }
-    Ok(Picture {
-        svg,
-        series: data_series,
-    })
+    series.push(
+        Series::new(
+            "data points",
+            data.iter().copied(),
+            Look::marks(BLACK, Mark::Dots { radius: 3.0 }),
+        )
+        .legend("data points"),
+    );
+    let frame = Frame {
+        title: title.into(),
+        x_label: "x".into(),
+        y_label: "y = P(x)".into(),
+        x,
+        y,
+        zero_line: true,
+    };
+    Picture::new(frame, series)
 }

@@ -2,11 +2,9 @@
 //! classified cells of a window of the parameter plane (certified inside,
 //! certified outside, undecided along the edge) with the printed box.
 
-use plotters::prelude::*;
-
-use crate::error::{Result, draw};
-use crate::picture::{Picture, Series};
-use crate::style::{SIZE, chart, colour, legend};
+use crate::error::Result;
+use crate::picture::{Frame, Look, Mark, Picture, Series};
+use crate::style::{BLACK, CURVE, colour};
 
 /// How a cell was classified.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -27,7 +25,7 @@ pub struct RegionCell {
     pub kind: RegionKind,
 }
 
-/// SVG of the classified window; `printed` is the printed box (its
+/// The classified window; `printed` is the printed box (its
 /// infinite sides clipped to the window).
 pub fn region_svg(
     title: &str,
@@ -48,81 +46,67 @@ pub fn region_svg(
     if !(x.0.is_finite() && x.1 > x.0 && y.0.is_finite() && y.1 > y.0) {
         return Err(crate::PlotError::Input("no cells to draw".into()));
     }
-    // room on the right for the legend
-    let xr = (x.0, x.1 + 0.75 * (x.1 - x.0));
+    let styles = [
+        (
+            RegionKind::Inside,
+            colour(2),
+            0.55,
+            "certified inside (every function ≥ 0)",
+        ),
+        (
+            RegionKind::Outside,
+            colour(1),
+            0.35,
+            "certified outside (a function < 0)",
+        ),
+        (
+            RegionKind::Edge,
+            (200, 200, 200),
+            0.9,
+            "undecided (the edge, or where the negative function changes)",
+        ),
+    ];
     // each cell as two points: its lower-left and upper-right corners
-    let mut data: Vec<Series> = cells
-        .iter()
-        .enumerate()
-        .map(|(k, c)| {
-            Series::new(
-                format!("{:?} cell {}", c.kind, k + 1).to_lowercase(),
+    let mut series = Vec::new();
+    for (kind, rgb, opacity, label) in styles {
+        let look = Look {
+            opacity,
+            ..Look::marks(rgb, Mark::Cell)
+        };
+        let count = cells.iter().filter(|c| c.kind == kind).count();
+        for (k, c) in cells.iter().filter(|c| c.kind == kind).enumerate() {
+            let s = Series::new(
+                format!("{kind:?} cell {}", k + 1).to_lowercase(),
                 [(c.x.0, c.y.0), (c.x.1, c.y.1)],
-            )
-        })
-        .collect();
+                look,
+            );
+            series.push(if k == 0 {
+                s.legend(format!("{label}: {count}"))
+            } else {
+                s
+            });
+        }
+    }
     if let Some(((a, b), (c, d))) = printed {
-        data.push(Series::new("printed box", [(a, c), (b, d)]));
+        // the box clipped to the window, as a closed path
+        let (a, b) = (a.clamp(x.0, x.1), b.clamp(x.0, x.1));
+        let (c, d) = (c.clamp(y.0, y.1), d.clamp(y.0, y.1));
+        series.push(
+            Series::new(
+                "printed box (clipped to the window)",
+                [(a, c), (b, c), (b, d), (a, d), (a, c)],
+                Look::line(BLACK, CURVE),
+            )
+            .legend("printed box"),
+        );
     }
-    let mut svg = String::new();
-    {
-        let root = SVGBackend::with_string(&mut svg, SIZE).into_drawing_area();
-        root.fill(&WHITE).map_err(draw)?;
-        let mut chart = chart(&root, title, xr, y, axes.0, axes.1)?;
-        let styles = [
-            (
-                RegionKind::Inside,
-                colour(2).mix(0.55),
-                "certified inside (every function ≥ 0)",
-            ),
-            (
-                RegionKind::Outside,
-                colour(1).mix(0.35),
-                "certified outside (a function < 0)",
-            ),
-            (
-                RegionKind::Edge,
-                RGBColor(200, 200, 200).mix(0.9),
-                "undecided (the edge, or where the negative function changes)",
-            ),
-        ];
-        for (kind, style, label) in styles {
-            let rects: Vec<_> = cells
-                .iter()
-                .filter(|c| c.kind == kind)
-                .map(|c| Rectangle::new([(c.x.0, c.y.0), (c.x.1, c.y.1)], style.filled()))
-                .collect();
-            let count = rects.len();
-            chart
-                .draw_series(rects)
-                .map_err(draw)?
-                .label(format!("{label}: {count}"))
-                .legend(move |(px, py)| {
-                    Rectangle::new([(px, py - 5), (px + 14, py + 5)], style.filled())
-                });
-        }
-        if let Some(((a, b), (c, d))) = printed {
-            let clip = |v: f64, lo: f64, hi: f64| v.clamp(lo, hi);
-            let corners = [
-                (clip(a, x.0, x.1), clip(c, y.0, y.1)),
-                (clip(b, x.0, x.1), clip(c, y.0, y.1)),
-                (clip(b, x.0, x.1), clip(d, y.0, y.1)),
-                (clip(a, x.0, x.1), clip(d, y.0, y.1)),
-                (clip(a, x.0, x.1), clip(c, y.0, y.1)),
-            ];
-            chart
-                .draw_series(std::iter::once(PathElement::new(
-                    corners.to_vec(),
-                    BLACK.stroke_width(2),
-                )))
-                .map_err(draw)?
-                .label("printed box")
-                .legend(|(px, py)| {
-                    PathElement::new([(px, py), (px + 20, py)], BLACK.stroke_width(2))
-                });
-        }
-        legend(&mut chart)?;
-        root.present().map_err(draw)?;
-    }
-    Ok(Picture { svg, series: data })
+    let frame = Frame {
+        title: title.into(),
+        x_label: axes.0.into(),
+        y_label: axes.1.into(),
+        x,
+        y,
+        zero_line: false,
+    };
+    Picture::new(frame, series)
 }

@@ -1,30 +1,81 @@
-//! Shared look: size, colours, fonts, the chart frame and legend, the
-//! bounding box with a margin, and the parameter values a plot varies.
+//! Shared look: the layout (a 160 mm wide figure in units of 0.2 mm),
+//! colours, the bounding box with a margin, equal scales, and the
+//! parameter values a plot varies.
 
-use plotters::coord::Shift;
-use plotters::coord::types::RangedCoordf64;
-use plotters::prelude::*;
 use rug::Rational;
 use trig_core::FamilyInfo;
 
-use crate::error::{PlotError, Result, draw};
+use crate::error::{PlotError, Result};
 
-/// Picture size in pixels.
-pub const SIZE: (u32, u32) = (800, 600);
+/// Millimetres per layout unit: the figure is [`WIDTH`] units = 160 mm wide.
+pub const UNIT_MM: f64 = 0.2;
+
+/// Width of a figure, in units.
+pub const WIDTH: u32 = 800;
+
+/// Height of the part above the legend (title, plot area, axis labels).
+pub const CHART_HEIGHT: u32 = 560;
+
+/// Height of the title line.
+pub const TITLE_HEIGHT: u32 = 36;
+
+/// Space left of the plot area (tick labels, y label).
+pub const Y_LABEL_AREA: u32 = 72;
+
+/// Space below the plot area (tick labels, x label).
+pub const X_LABEL_AREA: u32 = 54;
+
+/// Margin around the chart.
+pub const MARGIN: u32 = 16;
+
+/// The plot area (inside the axes), in units: what equal scales refer to
+/// and what the pgfplots axis is sized to.
+pub const PLOT_AREA: (f64, f64) = (
+    (WIDTH - Y_LABEL_AREA - 2 * MARGIN) as f64,
+    (CHART_HEIGHT - TITLE_HEIGHT - X_LABEL_AREA - 2 * MARGIN) as f64,
+);
+
+/// Font sizes (units): title, axis labels, tick labels, legend.
+pub const FONT_TITLE: f64 = 17.0;
+pub const FONT_LABEL: f64 = 15.0;
+pub const FONT_TICK: f64 = 13.0;
+pub const FONT_LEGEND: f64 = 14.0;
+
+/// Line widths (units): a curve, a thin line (axes of reference, polygons).
+pub const CURVE: f64 = 1.6;
+pub const THIN: f64 = 0.8;
+
+/// Legend lines up to this many characters go in two columns.
+const LEGEND_TWO_COLUMNS: usize = 42;
+
+/// The number of legend columns for the legend `entries` (the same in the
+/// SVG and the pgfplots code).
+pub fn legend_columns<'a>(mut entries: impl Iterator<Item = &'a str>) -> usize {
+    if entries.all(|t| t.chars().count() <= LEGEND_TWO_COLUMNS) {
+        2
+    } else {
+        1
+    }
+}
+
+/// Black and greys.
+pub const BLACK: (u8, u8, u8) = (0, 0, 0);
+pub const GREY: (u8, u8, u8) = (110, 110, 110);
+pub const LIGHT_GREY: (u8, u8, u8) = (160, 160, 160);
 
 /// A colour-blind-safe palette (Okabe–Ito), cycled.
-const PALETTE: [RGBColor; 7] = [
-    RGBColor(0, 114, 178),
-    RGBColor(213, 94, 0),
-    RGBColor(0, 158, 115),
-    RGBColor(204, 121, 167),
-    RGBColor(230, 159, 0),
-    RGBColor(86, 180, 233),
-    RGBColor(120, 120, 120),
+const PALETTE: [(u8, u8, u8); 7] = [
+    (0, 114, 178),
+    (213, 94, 0),
+    (0, 158, 115),
+    (204, 121, 167),
+    (230, 159, 0),
+    (86, 180, 233),
+    (120, 120, 120),
 ];
 
 /// The `k`-th colour of the palette.
-pub fn colour(k: usize) -> RGBColor {
+pub fn colour(k: usize) -> (u8, u8, u8) {
     PALETTE[k % PALETTE.len()]
 }
 
@@ -51,71 +102,14 @@ pub fn padded(values: impl Iterator<Item = f64>, margin: f64) -> (f64, f64) {
 }
 
 /// Equal x and y scales: widens the smaller of the two ranges so one data
-/// unit has the same length on both axes of a `SIZE` picture's plot area.
-pub fn equal_aspect(x: (f64, f64), y: (f64, f64), area: (f64, f64)) -> ((f64, f64), (f64, f64)) {
+/// unit has the same length on both axes of the [`PLOT_AREA`].
+pub fn equal_aspect(x: (f64, f64), y: (f64, f64)) -> ((f64, f64), (f64, f64)) {
+    let area = PLOT_AREA;
     let (hx, hy) = (x.1 / 2.0 - x.0 / 2.0, y.1 / 2.0 - y.0 / 2.0);
     let per_px = (hx / area.0).max(hy / area.1);
     let (cx, cy) = (x.0 / 2.0 + x.1 / 2.0, y.0 / 2.0 + y.1 / 2.0);
     let (hx, hy) = (per_px * area.0, per_px * area.1);
     ((cx - hx, cx + hx), (cy - hy, cy + hy))
-}
-
-/// Refuses axis ranges that cannot be drawn: non-finite, beyond
-/// ±[`MAX_COORDINATE`], or empty.
-fn check_range(axis: &str, r: (f64, f64)) -> Result<()> {
-    let inside = |v: f64| v.is_finite() && v.abs() <= MAX_COORDINATE;
-    if !(inside(r.0) && inside(r.1)) {
-        return Err(PlotError::Input(format!(
-            "the {axis} values reach beyond ±{MAX_COORDINATE:e} (or are not finite); such a picture cannot be drawn"
-        )));
-    }
-    if r.1 <= r.0 {
-        return Err(PlotError::Input(format!("the {axis} range is empty")));
-    }
-    Ok(())
-}
-
-/// The chart every plot draws on: caption, margins, and a mesh with the axis
-/// descriptions, over `x × y`.
-pub type Chart<'a, 'b> =
-    ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
-
-/// Builds the [`Chart`] on `root`.
-pub fn chart<'a, 'b>(
-    root: &'a DrawingArea<SVGBackend<'b>, Shift>,
-    caption: impl AsRef<str>,
-    x: (f64, f64),
-    y: (f64, f64),
-    x_desc: &str,
-    y_desc: &str,
-) -> Result<Chart<'a, 'b>> {
-    check_range(x_desc, x)?;
-    check_range(y_desc, y)?;
-    let mut chart = ChartBuilder::on(root)
-        .caption(caption.as_ref(), ("sans-serif", 18))
-        .margin(12)
-        .x_label_area_size(45)
-        .y_label_area_size(55)
-        .build_cartesian_2d(x.0..x.1, y.0..y.1)
-        .map_err(draw)?;
-    chart
-        .configure_mesh()
-        .x_desc(x_desc)
-        .y_desc(y_desc)
-        .draw()
-        .map_err(draw)?;
-    Ok(chart)
-}
-
-/// The legend of the labelled series, upper right on a translucent box.
-pub fn legend<'a, 'b: 'a>(chart: &mut Chart<'a, 'b>) -> Result<()> {
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .position(SeriesLabelPosition::UpperRight)
-        .draw()
-        .map_err(draw)
 }
 
 /// The parameter settings a plot of `info` draws, one per value in `values`

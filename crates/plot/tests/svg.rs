@@ -1,5 +1,6 @@
 //! The pictures are well-formed SVG (XML) with the expected number of data
-//! series, axis labels and legends.
+//! series, axis labels and legends; 160 mm wide, drawn on a grid finer than
+//! the paper's pixels, with the legend below the data.
 
 use std::sync::Arc;
 
@@ -8,7 +9,9 @@ use std::path::PathBuf;
 use rug::Rational;
 use trig_core::Family;
 use trig_fit::{Continuity, CornerRule, Corners, FitOptions, Outline, Shape, fit_outline};
-use trig_plot::{Interpolant, Plotted, basis_svg, curve_svg, fit_svg, interp_svg};
+use trig_plot::{
+    Interpolant, Plotted, basis_svg, basis_versus_svg, curve_svg, fit_svg, interp_svg,
+};
 
 /// Parses `svg` and returns (curves, markers, texts): polylines of at least
 /// three points (ticks and legend swatches have two), circles, and the text
@@ -74,7 +77,7 @@ fn curve_plot_has_polygon_and_one_curve_per_value() {
     .svg;
     let (curves, markers, texts) = census(&svg);
     assert_eq!(curves, 3 + 1, "three curves and the control polygon");
-    assert_eq!(markers, 4, "the control points");
+    assert_eq!(markers, 4 + 1, "the control points and the legend swatch");
     assert!(
         texts.iter().any(|t| t == "control polygon V0…V3"),
         "{texts:?}"
@@ -125,4 +128,110 @@ fn interp_plot_has_pieces_and_data() {
     let (curves, markers, _) = census(&svg);
     assert_eq!((curves, markers), (2, 3 + 1));
     assert!(interp_svg("x", &[], &[]).is_err());
+}
+
+/// The root's width and height and its `viewBox` size.
+fn root_size(svg: &str) -> ((String, String), (f64, f64)) {
+    let doc = roxmltree::Document::parse(svg).expect("well-formed XML");
+    let root = doc.root_element();
+    let attr = |a: &str| root.attribute(a).expect(a).to_string();
+    let view: Vec<f64> = attr("viewBox")
+        .split_whitespace()
+        .map(|v| v.parse().unwrap())
+        .collect();
+    ((attr("width"), attr("height")), (view[2], view[3]))
+}
+
+#[test]
+fn figures_are_paper_sized_and_drawn_finer_than_a_pixel() {
+    let plot = Plotted::family(Family::Han, &[r("0")], false, "basis").unwrap();
+    let svg = basis_svg(&plot).unwrap().svg;
+    let ((w, h), (vw, vh)) = root_size(&svg);
+    assert_eq!(w, "160mm");
+    let h: f64 = h.strip_suffix("mm").expect("height in mm").parse().unwrap();
+    // at least 40 drawing units per millimetre (whole units are 0.025 mm)
+    assert!(vw / 160.0 >= 40.0, "{vw}");
+    assert!((vh / h - vw / 160.0).abs() < 1e-9, "{vh} / {h}");
+    // the text is set for the paper: 2.5 mm to 4 mm
+    let doc = roxmltree::Document::parse(&svg).unwrap();
+    for t in doc.descendants().filter(|n| n.has_tag_name("text")) {
+        let size: f64 = t.attribute("font-size").unwrap().parse().unwrap();
+        let mm = size * 160.0 / vw;
+        assert!((2.5..=4.0).contains(&mm), "{:?}: {mm} mm", t.text());
+    }
+}
+
+#[test]
+fn the_legend_is_below_every_curve() {
+    let values = [r("-2"), r("0"), r("1")];
+    let plot = Plotted::family(Family::ThesisCubic, &values, false, "basis").unwrap();
+    let svg = basis_svg(&plot).unwrap().svg;
+    let doc = roxmltree::Document::parse(&svg).unwrap();
+    let lowest_curve = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("polyline"))
+        .filter_map(|n| n.attribute("points"))
+        .filter(|p| p.split_whitespace().count() >= 3)
+        .flat_map(|p| p.split_whitespace().map(|xy| xy.split(',').nth(1).unwrap()))
+        .map(|y| y.parse::<f64>().unwrap())
+        .fold(f64::NEG_INFINITY, f64::max);
+    for label in ["m = -2", "m = 0", "m = 1"] {
+        let text = doc
+            .descendants()
+            .find(|n| n.has_tag_name("text") && n.text().map(str::trim) == Some(label))
+            .unwrap_or_else(|| panic!("{label}"));
+        let y: f64 = text.attribute("y").unwrap().parse().unwrap();
+        assert!(
+            y > lowest_curve,
+            "{label} at {y}, a curve at {lowest_curve}"
+        );
+    }
+}
+
+#[test]
+fn a_listing_is_drawn_over_the_printed_basis() {
+    let values = [r("-1"), r("0"), r("1")];
+    let listing = Plotted::family(Family::HanListing, &values, false, "basis").unwrap();
+    let han = Plotted::family(Family::Han, &values, false, "basis").unwrap();
+    let picture = basis_versus_svg(&listing, &han).unwrap();
+    assert_eq!(picture.series.len(), 2 * 4 * 3);
+    let legend: Vec<&str> = picture.legend().map(|(t, _)| t).collect();
+    assert_eq!(
+        legend,
+        [
+            "han-listing: λ = -1",
+            "han-listing: λ = 0",
+            "han-listing: λ = 1",
+            "han: λ = -1",
+            "han: λ = 0",
+            "han: λ = 1"
+        ]
+    );
+    // the listing solid (whole polylines of every sample), the printed
+    // basis dashed (many short pieces)
+    let doc = roxmltree::Document::parse(&picture.svg).unwrap();
+    let lengths: Vec<usize> = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("polyline"))
+        .filter_map(|n| n.attribute("points"))
+        .map(|p| p.split_whitespace().count())
+        .collect();
+    assert_eq!(lengths.iter().filter(|&&n| n == 201).count(), 4 * 3);
+    assert!(lengths.iter().filter(|&&n| (2..201).contains(&n)).count() > 100);
+    let (_, _, texts) = census(&picture.svg);
+    assert!(texts.iter().any(|t| t == "han: λ = 0"), "{texts:?}");
+    // b2 differs (the listing's sin), b0 agrees
+    let at = |label: &str| {
+        &picture
+            .series
+            .iter()
+            .find(|s| s.label == label)
+            .unwrap()
+            .points
+    };
+    assert_eq!(at("b0, han-listing: λ = 1"), at("b0, han: λ = 1"));
+    assert_ne!(at("b2, han-listing: λ = 1"), at("b2, han: λ = 1"));
+    // different values: refused
+    let other = Plotted::family(Family::Han, &values[..2], false, "basis").unwrap();
+    assert!(basis_versus_svg(&listing, &other).is_err());
 }

@@ -1,5 +1,6 @@
-//! `trig-audit plot`: SVG pictures of basis functions, curves with their
-//! control polygons, fitted outlines and positivity interpolants.
+//! `trig-audit plot`: figures of basis functions, curves with their
+//! control polygons, fitted outlines, positivity interpolants and regions;
+//! each written as SVG, with its pgfplots code and its data beside it.
 
 use std::path::{Path, PathBuf};
 
@@ -9,12 +10,13 @@ use trig_certify::region::CellKind;
 use trig_core::{Basis, Bound, parse_exact};
 use trig_interp::{DataSet, Scheme, Variant, f64_segments};
 use trig_plot::{
-    Interpolant, Picture, Plotted, RegionCell, RegionKind, basis_svg, curve_svg, fit_svg,
-    interp_svg, region_svg,
+    Interpolant, Picture, Plotted, RegionCell, RegionKind, basis_svg, basis_versus_svg, curve_svg,
+    fit_svg, interp_svg, region_svg,
 };
 use trig_spec::Spec;
 use trig_spec::range::End as SpecEnd;
 use trig_verification::region_audit::{Axis, classify_window};
+use trig_verification::report::tex_escape;
 
 use super::eval::Subject;
 use super::fit::{FitSetup, Runs, prepare};
@@ -37,7 +39,11 @@ enum PlotKind {
         family: Option<String>,
         #[command(flatten)]
         values: Values,
-        /// SVG file to write.
+        /// Draw this family's functions too, dashed, at the same values
+        /// (e.g. the printed formulas beside what a listing computes).
+        #[arg(long, value_name = "FAMILY")]
+        versus: Option<String>,
+        /// SVG file to write (its pgfplots code NAME.tex and data NAME.csv beside it).
         #[arg(long)]
         output: PathBuf,
     },
@@ -51,7 +57,7 @@ enum PlotKind {
         /// Control points x0,y0,x1,y1,… (default: thesis Figure 6.3, (0,0), (1,2), (3,2), (4,0)).
         #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
         control: Vec<String>,
-        /// SVG file to write.
+        /// SVG file to write (its pgfplots code NAME.tex and data NAME.csv beside it).
         #[arg(long)]
         output: PathBuf,
     },
@@ -65,7 +71,7 @@ enum PlotKind {
         optimise: bool,
         #[command(flatten)]
         setup: FitSetup,
-        /// SVG file to write.
+        /// SVG file to write (its pgfplots code NAME.tex and data NAME.csv beside it).
         #[arg(long)]
         output: PathBuf,
     },
@@ -76,7 +82,7 @@ enum PlotKind {
         /// Spec file (TOML, docs/spec.md) of a basis with two parameters.
         #[arg(long, value_name = "FILE")]
         spec: PathBuf,
-        /// SVG file to write.
+        /// SVG file to write (its pgfplots code NAME.tex and data NAME.csv beside it).
         #[arg(long)]
         output: PathBuf,
     },
@@ -88,7 +94,7 @@ enum PlotKind {
         /// Scheme (c1, c2, g1, g2); default: the one the table is printed for.
         #[arg(long)]
         scheme: Option<String>,
-        /// SVG file to write.
+        /// SVG file to write (its pgfplots code NAME.tex and data NAME.csv beside it).
         #[arg(long)]
         output: PathBuf,
     },
@@ -196,14 +202,15 @@ fn plotted(family: Option<&str>, v: &Values, what: &str) -> Result<Plotted, CliE
     }
 }
 
-/// Writes the picture and, beside it, its data (`NAME.csv`: series, point,
-/// x, y), both atomically; the note on standard error (standard output
-/// stays empty).
+/// Writes the picture (SVG) and, beside it, its pgfplots code
+/// (`NAME.tex`, text mapped to LaTeX as in the report) and its data
+/// (`NAME.csv`: series, point, x, y), each atomically; the notes on
+/// standard error (standard output stays empty).
 fn write(output: &Path, picture: &Picture) -> CmdResult {
-    let data = output.with_extension("csv");
-    if data == output {
+    let (tex, data) = (output.with_extension("tex"), output.with_extension("csv"));
+    if tex == output || data == output {
         return Err(CliError::Usage(format!(
-            "{}: the picture needs another extension than .csv (its data goes to NAME.csv)",
+            "{}: the picture needs another extension than .tex or .csv (its pgfplots code goes to NAME.tex, its data to NAME.csv)",
             output.display()
         )));
     }
@@ -212,9 +219,12 @@ fn write(output: &Path, picture: &Picture) -> CmdResult {
         &Picture::HEADER,
         rows.iter().map(|r| r.iter().map(String::as_str)),
     )?;
+    let pgf = picture.pgf(tex_escape);
     write_atomically(output, picture.svg.as_bytes())?;
+    write_atomically(&tex, pgf.as_bytes())?;
     write_atomically(&data, csv.as_bytes())?;
     wrote(output, &format!("{} bytes", picture.svg.len()));
+    wrote(&tex, "pgfplots");
     wrote(&data, &format!("{} points", rows.len()));
     Ok(String::new())
 }
@@ -239,10 +249,24 @@ pub fn run(args: &PlotArgs) -> CmdResult {
         PlotKind::Basis {
             family,
             values: v,
+            versus,
             output,
         } => {
             let plot = plotted(family.as_deref(), v, "basis")?;
-            write(output, &basis_svg(&plot).map_err(plot_err_hinted)?)
+            let picture = match versus {
+                None => basis_svg(&plot),
+                Some(other) => {
+                    // the same values, without the spec file of the first basis
+                    let same = Values {
+                        spec: None,
+                        values: v.values.clone(),
+                        allow_outside_range: v.allow_outside_range,
+                    };
+                    let other = plotted(Some(other), &same, "basis")?;
+                    basis_versus_svg(&plot, &other)
+                }
+            };
+            write(output, &picture.map_err(plot_err_hinted)?)
         }
         PlotKind::Curve {
             family,
