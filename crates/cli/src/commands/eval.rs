@@ -378,7 +378,7 @@ pub fn run(args: &EvalArgs) -> CmdResult {
     }
     let at_text = args.at.as_deref().unwrap_or_default();
     let at = parse_point(at_text)?;
-    let eval = evaluate(args, at_text, &at, mode)?;
+    let eval = evaluate(args, at_text, &at, mode, subject_of(args)?.as_ref())?;
     Ok(render(args, &eval))
 }
 
@@ -393,18 +393,32 @@ struct Setup {
     note: Option<String>,
 }
 
-fn setup(args: &EvalArgs, at_text: &str, at: &Affine) -> Result<Setup, CliError> {
-    let pairs = param_pairs(&args.params)?;
+/// The basis `eval` works on, read once (also for many points); `None` for
+/// seed 000's non-uniform construction, which is built per knot vector.
+fn subject_of(args: &EvalArgs) -> Result<Option<Subject>, CliError> {
     if args.family.as_deref() == Some(SEED000_NONUNIFORM.id) && args.spec.is_none() {
-        return nonuniform(args, &pairs, at_text, rational_point(at, at_text)?);
+        return Ok(None);
     }
+    Subject::from_args(args.family.as_deref(), args.spec.as_deref()).map(Some)
+}
+
+fn setup(
+    args: &EvalArgs,
+    at_text: &str,
+    at: &Affine,
+    subject: Option<&Subject>,
+) -> Result<Setup, CliError> {
+    let pairs = param_pairs(&args.params)?;
+    let Some(subject) = subject else {
+        return nonuniform(args, &pairs, at_text, rational_point(at, at_text)?);
+    };
     if !args.knots.is_empty() {
         return Err(CliError::Usage(format!(
             "--knots applies to {} only",
             SEED000_NONUNIFORM.id
         )));
     }
-    let subject = Subject::from_args(args.family.as_deref(), args.spec.as_deref())?;
+    let subject = subject.clone();
     let params = subject
         .params_from_pairs(&pairs, args.allow_outside_range)
         .map_err(range_hint)?;
@@ -469,8 +483,9 @@ fn evaluate(
     at_text: &str,
     at: &Affine,
     mode: Mode,
+    subject: Option<&Subject>,
 ) -> Result<Evaluation, CliError> {
-    let s = setup(args, at_text, at)?;
+    let s = setup(args, at_text, at, subject)?;
     let what = format!("`{}` at this point", s.id);
     let enclose = |bits: u32| {
         s.problem

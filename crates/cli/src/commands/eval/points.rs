@@ -13,7 +13,9 @@ use std::path::Path;
 use serde_json::json;
 use trig_core::{Affine, SEED000_NONUNIFORM, parse_point};
 
-use super::{CliError, CmdResult, EvalArgs, Evaluation, Mode, Shown, evaluate, param_pairs};
+use super::{
+    CliError, CmdResult, EvalArgs, Evaluation, Mode, Shown, evaluate, param_pairs, subject_of,
+};
 use crate::format::{TextOrJson, json};
 
 /// The points of `path` (`-` for standard input): the text as written and
@@ -66,9 +68,10 @@ pub(super) fn run(args: &EvalArgs, path: &Path, mode: Mode) -> CmdResult {
         ));
     }
     let points = read_points(path)?;
+    let subject = subject_of(args)?;
     let rows = points
         .iter()
-        .map(|(text, q)| evaluate(args, text, q, mode))
+        .map(|(text, q)| evaluate(args, text, q, mode, subject.as_ref()))
         .collect::<Result<Vec<_>, _>>()?;
     Ok(render(args, &points, &rows))
 }
