@@ -14,7 +14,7 @@ use crate::evidence::{Evidence, Witness};
 use crate::verdict::Status;
 
 /// The version of the report format (and of `docs/report.schema.json`).
-pub const SCHEMA_VERSION: &str = "1.0.0";
+pub const SCHEMA_VERSION: &str = "1.1.0";
 
 /// The name of the format.
 pub const SCHEMA_NAME: &str = "trig-audit-report";
@@ -83,6 +83,8 @@ pub struct ClaimReport {
     pub figure: Option<String>,
     /// The data of that figure (CSV beside it).
     pub figure_data: Option<String>,
+    /// The pgfplots code of that figure (`.tex` beside it).
+    pub figure_pgf: Option<String>,
     /// The first witness of a claim that does not hold, as shown beside its
     /// verdict (it is also in `evidence`).
     pub witness: Option<Witness>,
@@ -150,6 +152,7 @@ pub fn json_entries(entries: &[Entry], intro: &str, view: &View) -> Report {
                 correction: e.verdict.correction.clone(),
                 figure: e.figure.map(|f| f.path.to_string()),
                 figure_data: e.figure.map(|f| f.data_path()),
+                figure_pgf: e.figure.map(|f| f.pgf_path()),
                 witness: (e.verdict.status != Status::Holds)
                     .then(|| e.witness().map(|(_, w)| w.clone()))
                     .flatten(),

@@ -337,10 +337,11 @@ fn entry_tex(out: &mut String, e: &Entry, method: usize) {
     if let Some(f) = e.figure {
         let _ = writeln!(
             out,
-            "\\textbf{{Figure:}} {} (\\texttt{{{}}}; data \\texttt{{{}}})\\par",
+            "\\textbf{{Figure:}} {} (\\texttt{{{}}}; data \\texttt{{{}}}; pgfplots \\texttt{{{}}})\\par",
             tex_inline(f.caption),
             tex_breakable(f.path),
-            tex_breakable(&f.data_path())
+            tex_breakable(&f.data_path()),
+            tex_breakable(&f.pgf_path())
         );
     }
     let _ = writeln!(out, "\\textbf{{Evidence:}}");

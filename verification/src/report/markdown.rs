@@ -345,11 +345,12 @@ fn entry_md(out: &mut String, e: &Entry, method: usize) {
     if let Some(f) = e.figure {
         let _ = writeln!(
             out,
-            "- **Figure:** [{}]({}) (drawn by `trig-audit {}`; data: `{}`)",
+            "- **Figure:** [{}]({}) (drawn by `trig-audit {}`; data: `{}`; pgfplots: `{}`)",
             md_text(f.caption),
             f.path,
             f.command,
-            f.data_path()
+            f.data_path(),
+            f.pgf_path()
         );
     }
     let _ = writeln!(out, "- **Evidence:**");
