@@ -343,12 +343,14 @@ fn fit_takes_a_spec_file() {
     ]);
 }
 
-/// The (x, y) columns of a figure's data file.
-fn figure_points(path: &std::path::Path) -> Vec<(f64, f64)> {
+/// The (x, y) columns of a figure's data file, of the series whose label
+/// starts with `series` (every series for "").
+fn figure_points(path: &std::path::Path, series: &str) -> Vec<(f64, f64)> {
     std::fs::read_to_string(path.with_extension("csv"))
         .expect("the figure's data")
         .lines()
         .skip(1)
+        .filter(|l| l.starts_with(series))
         .map(|l| {
             let cells: Vec<&str> = l.rsplitn(3, ',').collect();
             (cells[1].parse().expect("x"), cells[0].parse().expect("y"))
@@ -387,7 +389,7 @@ fn plot_takes_a_spec_file() {
         "--output",
         &spec.display().to_string(),
     ]);
-    let (a, b) = (figure_points(&family), figure_points(&spec));
+    let (a, b) = (figure_points(&family, ""), figure_points(&spec, ""));
     assert_eq!(a.len(), b.len());
     for (p, q) in a.iter().zip(&b) {
         assert!(
@@ -407,16 +409,8 @@ fn plot_takes_a_spec_file() {
         "--output",
         &curve.display().to_string(),
     ]);
-    let text = std::fs::read_to_string(curve.with_extension("csv")).expect("data");
     for alpha in ["1", "2", "3"] {
-        let pts: Vec<(f64, f64)> = text
-            .lines()
-            .filter(|l| l.starts_with(&format!("α = {alpha},")))
-            .map(|l| {
-                let cells: Vec<&str> = l.rsplitn(3, ',').collect();
-                (cells[1].parse().expect("x"), cells[0].parse().expect("y"))
-            })
-            .collect();
+        let pts = figure_points(&curve, &format!("α = {alpha},"));
         let (first, last) = (pts[0], pts[pts.len() - 1]);
         // thesis Figure 6.3's polygon: V0 = (0, 0), V3 = (4, 0)
         assert!(
@@ -439,7 +433,7 @@ fn plot_takes_a_spec_file() {
         "--output",
         &basis.display().to_string(),
     ]);
-    let xs: Vec<f64> = figure_points(&basis).iter().map(|p| p.0).collect();
+    let xs: Vec<f64> = figure_points(&basis, "").iter().map(|p| p.0).collect();
     assert_eq!(xs.iter().copied().fold(f64::NAN, f64::max), 2.0);
     let out = dir.join("refused.svg").display().to_string();
     assert_errors(&[
