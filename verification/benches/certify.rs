@@ -8,7 +8,7 @@ use std::path::PathBuf;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use trig_certify::range::maximal_range;
-use trig_spec::Spec;
+use trig_specfile::Spec;
 use trig_symbolic::Sym;
 use trig_verification::region_audit::{Axis, classify_window, maximal};
 

@@ -4,7 +4,7 @@
 
 use std::path::PathBuf;
 
-use trig_spec::Spec;
+use trig_specfile::Spec;
 use trig_verification::report::Entry;
 use trig_verification::{Status, run, spec_audit};
 

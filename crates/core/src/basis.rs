@@ -1,6 +1,6 @@
 //! The [`Basis`] abstraction: anything that evaluates a list of basis
 //! functions generically over a [`Ring`] — the catalog's [`Family`] or a
-//! basis read from a spec file (crate `trig-spec`). Derivative tables, jets
+//! basis read from a spec file (crate `trig-specfile`). Derivative tables, jets
 //! and the audit's checkers take `impl Basis`, so a user-supplied basis runs
 //! through the same machinery as the catalog: one evaluator.
 

@@ -10,7 +10,7 @@ use proptest::prelude::*;
 use proptest::strategy::BoxedStrategy;
 use rug::Rational;
 use trig_core::{Basis as _, Domain, Family};
-use trig_spec::Spec;
+use trig_specfile::Spec;
 
 /// What the oracle can check beyond "no panic, no hang, one-line errors".
 #[derive(Debug, Clone)]

@@ -16,7 +16,7 @@ use rug::{Float, Rational};
 use trig_audit::{MAX_ERROR, Outcome};
 use trig_core::{Family, Mpfr, parse_exact, piecewise};
 use trig_deriv::{End, Wrt, endpoint_derivatives};
-use trig_spec::Spec;
+use trig_specfile::Spec;
 
 use super::grammar::{Case, Check, Subject};
 

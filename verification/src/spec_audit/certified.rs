@@ -4,7 +4,7 @@
 //! ([`trig_certify::standardize`]).
 
 use trig_certify::standardize;
-use trig_spec::{Monotone, Spec, SpecRange};
+use trig_specfile::{Monotone, Spec, SpecRange};
 use trig_symbolic::Sym;
 
 use super::interval;

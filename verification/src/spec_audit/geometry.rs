@@ -5,7 +5,7 @@
 use rug::Rational;
 use trig_core::{Affine, Mpfr, Real, Ring, Variable};
 use trig_deriv::{End, Wrt, endpoint_derivatives};
-use trig_spec::{Printed, Spec};
+use trig_specfile::{Printed, Spec};
 use trig_symbolic::Sym;
 
 use super::{K, TABLE_ORDERS, params};

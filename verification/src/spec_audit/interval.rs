@@ -8,7 +8,7 @@
 
 use rug::Rational;
 use trig_certify::branch::{self, Axis, Outcome};
-use trig_spec::{Spec, SpecRange};
+use trig_specfile::{Spec, SpecRange};
 use trig_symbolic::{Poly, Sym};
 
 use crate::verdict::{Status, Verdict};
@@ -33,14 +33,14 @@ pub fn axes(spec: &Spec, range: Option<&SpecRange>) -> (Vec<Axis>, Vec<String>) 
                     (Some(a), None) => (
                         a.clone(),
                         a.clone() + TRUNCATE,
-                        matches!(r.lo, trig_spec::range::End::Open(_)),
+                        matches!(r.lo, trig_specfile::range::End::Open(_)),
                         false,
                     ),
                     (None, Some(b)) => (
                         b.clone() - TRUNCATE,
                         b.clone(),
                         false,
-                        matches!(r.hi, trig_spec::range::End::Open(_)),
+                        matches!(r.hi, trig_specfile::range::End::Open(_)),
                     ),
                     _ => (
                         Rational::from(-TRUNCATE),

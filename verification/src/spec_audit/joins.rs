@@ -8,7 +8,7 @@ use trig_deriv::{
     End, JoinKind, JoinSetup, Wrt, curve_endpoint_derivatives, knot_derivatives, solve_join,
     vanishing,
 };
-use trig_spec::{Condition, Spec};
+use trig_specfile::{Condition, Spec};
 use trig_symbolic::Sym;
 
 use super::geometry::{describe_wrt, end_text};

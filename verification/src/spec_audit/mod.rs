@@ -1,4 +1,4 @@
-//! The audit of a spec file (crate `trig-spec`): a standard battery —
+//! The audit of a spec file (crate `trig-specfile`): a standard battery —
 //! partition of unity, the maximal certified nonnegativity range against
 //! the declared one, symmetry (with the parameters exchanged when that is
 //! what holds), endpoint interpolation, the exact derivative tables, the
@@ -23,7 +23,7 @@ use std::time::Duration;
 
 use rug::Rational;
 use trig_certify::ParamBox;
-use trig_spec::{Check, Spec, SpecClaim};
+use trig_specfile::{Check, Spec, SpecClaim};
 use trig_symbolic::Sym;
 
 use crate::budget::{bounded, within};

@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use std::time::Duration;
 
 use clap::{Args, ValueEnum};
-use trig_spec::Spec;
+use trig_specfile::Spec;
 use trig_verification::budget::CLAIM_BUDGET;
 use trig_verification::report::{self, Entry, View};
 use trig_verification::{Seed, Status, run as run_audit, spec_audit};

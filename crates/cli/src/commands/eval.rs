@@ -19,7 +19,7 @@ use trig_core::{
     Affine, Atoms, Basis, CoreError, Domain, Family, Interval, Real, Ring, SEED000_NONUNIFORM,
     echo, parse_exact, parse_point, piecewise,
 };
-use trig_spec::Spec;
+use trig_specfile::Spec;
 use trig_symbolic::Sym;
 
 use super::{CliError, CmdResult, range_hint};

@@ -15,7 +15,7 @@ use trig_fit::{
     Continuity, CornerRule, Corners, FitError, FitOptions, Metrics, NumericBasis, Outline,
     OutlineFit, Shape, Summary, THESIS_THRESHOLD, fit_outline,
 };
-use trig_spec::range::End as SpecEnd;
+use trig_specfile::range::End as SpecEnd;
 use trig_verification::certify::range::EndPoint;
 
 use super::eval::{Subject, param_pairs};

@@ -13,8 +13,8 @@ use trig_plot::{
     Interpolant, Picture, Plotted, RegionCell, RegionKind, basis_svg, basis_versus_svg, curve_svg,
     fit_svg, interp_svg, region_svg,
 };
-use trig_spec::Spec;
-use trig_spec::range::End as SpecEnd;
+use trig_specfile::Spec;
+use trig_specfile::range::End as SpecEnd;
 use trig_verification::region_audit::{Axis, classify_window};
 use trig_verification::report::tex_escape;
 
@@ -361,7 +361,7 @@ fn region(path: &Path) -> Result<Picture, CliError> {
             spec.params.len()
         )));
     };
-    fn axis(p: &trig_spec::SpecParam) -> Axis<'_> {
+    fn axis(p: &trig_specfile::SpecParam) -> Axis<'_> {
         Axis {
             name: &p.name,
             symbol: &p.symbol,

@@ -1,4 +1,4 @@
-//! # trig-spec
+//! # trig-specfile
 //!
 //! Bring your own basis: a spec file (TOML) states a published basis — its
 //! id and citation, the variable (`u ∈ [0, 1]` with angle `θ = πu/2`, the
@@ -11,7 +11,7 @@
 //! `docs/spec.md`.
 //!
 //! ```
-//! use trig_spec::Spec;
+//! use trig_specfile::Spec;
 //! let spec = Spec::from_str_named(r#"
 //! id = "bernstein2"
 //! citation = "textbook"

@@ -10,8 +10,8 @@
 use proptest::prelude::*;
 use rug::Rational;
 use trig_core::{Basis, Domain, Variable};
-use trig_spec::Spec;
-use trig_spec::formula::{Scope, parse};
+use trig_specfile::Spec;
+use trig_specfile::formula::{Scope, parse};
 use trig_symbolic::Sym;
 
 /// A formula as text together with its value built directly in the ring.
