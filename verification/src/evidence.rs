@@ -21,7 +21,7 @@ use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 use trig_symbolic::{Sym, sympy_symbols};
 
-use crate::verdict::Status;
+use crate::status::Status;
 
 /// An exact expression in every form.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]

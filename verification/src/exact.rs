@@ -9,7 +9,8 @@ use trig_deriv::End;
 use trig_symbolic::{Sym, symbolic_atoms};
 
 use crate::evidence::{Evidence, Expr, Kind};
-use crate::verdict::{Status, Verdict};
+use crate::status::Status;
+use crate::verdict::Verdict;
 use crate::witness;
 
 /// How identities are decided, as the report states it.

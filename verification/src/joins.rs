@@ -25,7 +25,8 @@ use trig_symbolic::Sym;
 
 use crate::evidence::{Evidence, Expr, Kind};
 use crate::exact::{basis, sum};
-use crate::verdict::{Status, Verdict};
+use crate::status::Status;
+use crate::verdict::Verdict;
 use crate::witness;
 
 /// How printed joins are decided, as the report states it.

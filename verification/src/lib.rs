@@ -21,12 +21,14 @@ pub mod parallel;
 pub mod region_audit;
 pub mod report;
 pub mod spec_audit;
+pub mod status;
 pub mod verdict;
 pub mod witness;
 
 pub use claim::{Claim, Seed};
 pub use evidence::{Evidence, EvidenceList, Expr, Witness};
-pub use verdict::{Status, Verdict};
+pub use status::Status;
+pub use verdict::Verdict;
 
 /// Every claim the audit decides, in report order.
 pub fn all_claims() -> Vec<Claim> {

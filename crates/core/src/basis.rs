@@ -5,7 +5,6 @@
 //! through the same machinery as the catalog: one evaluator.
 
 use crate::domain::Domain;
-use crate::family::Family;
 use crate::scalar::Ring;
 use crate::variable::Atoms;
 
@@ -33,38 +32,6 @@ pub trait Basis {
     fn eval<T: Ring>(&self, x: &Atoms<T>, p: &[T]) -> Vec<T>;
 }
 
-impl Basis for Family {
-    fn id(&self) -> String {
-        self.info().id.to_string()
-    }
-
-    fn domain(&self) -> Domain {
-        let info = self.info();
-        let names: Vec<&str> = info.params.iter().map(|p| p.name).collect();
-        Domain::from_variable(info.variable, &names)
-    }
-
-    fn param_names(&self) -> Vec<String> {
-        self.info()
-            .params
-            .iter()
-            .map(|p| p.name.to_string())
-            .collect()
-    }
-
-    fn function_names(&self) -> Vec<String> {
-        self.info()
-            .functions
-            .iter()
-            .map(|f| f.to_string())
-            .collect()
-    }
-
-    fn eval<T: Ring>(&self, x: &Atoms<T>, p: &[T]) -> Vec<T> {
-        Family::eval(self, x, p)
-    }
-}
-
 impl<B: Basis + ?Sized> Basis for &B {
     fn id(&self) -> String {
         (**self).id()
@@ -90,6 +57,7 @@ impl<B: Basis + ?Sized> Basis for &B {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::family::Family;
     use crate::variable::Variable;
 
     fn first_value<B: Basis>(basis: B) -> f64 {

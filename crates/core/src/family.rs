@@ -3,6 +3,8 @@
 
 use rug::Rational;
 
+use crate::basis::Basis;
+use crate::domain::Domain;
 use crate::error::{CoreError, Result};
 use crate::families::{reference, seed000, seed002, seed004, thesis};
 use crate::param::{Bound, ParamSpec, Range, parse_exact};
@@ -461,6 +463,38 @@ impl Family {
             return Err(crate::certified::nonfinite_error(self, x, p, quantity));
         }
         Ok(values)
+    }
+}
+
+impl Basis for Family {
+    fn id(&self) -> String {
+        self.info().id.to_string()
+    }
+
+    fn domain(&self) -> Domain {
+        let info = self.info();
+        let names: Vec<&str> = info.params.iter().map(|p| p.name).collect();
+        Domain::from_variable(info.variable, &names)
+    }
+
+    fn param_names(&self) -> Vec<String> {
+        self.info()
+            .params
+            .iter()
+            .map(|p| p.name.to_string())
+            .collect()
+    }
+
+    fn function_names(&self) -> Vec<String> {
+        self.info()
+            .functions
+            .iter()
+            .map(|f| f.to_string())
+            .collect()
+    }
+
+    fn eval<T: Ring>(&self, x: &Atoms<T>, p: &[T]) -> Vec<T> {
+        Family::eval(self, x, p)
     }
 }
 

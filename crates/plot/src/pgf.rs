@@ -5,7 +5,8 @@
 
 use std::fmt::Write;
 
-use crate::picture::{Look, Mark, Picture};
+use crate::chart::{Look, Mark};
+use crate::picture::Picture;
 use crate::style::{PLOT_AREA, UNIT_MM, X_LABEL_AREA, legend_columns};
 
 /// A number as pgfplots reads it: plain decimals in a moderate range,
@@ -158,7 +159,7 @@ impl Picture {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::picture::{Frame, Series};
+    use crate::chart::{Frame, Series};
 
     #[test]
     fn numbers_are_plain_or_scientific() {

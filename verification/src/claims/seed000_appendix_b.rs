@@ -13,7 +13,8 @@ use crate::certify::evidence::{CERTIFIED, describe};
 use crate::certify::nonneg::certify;
 use crate::claim::{Claim, Seed};
 use crate::exact::{IDENTITY, basis, symbols};
-use crate::verdict::{Status, Verdict};
+use crate::status::Status;
+use crate::verdict::Verdict;
 use trig_certify::{ParamBox, in_z};
 
 pub const CLAIMS: &[Claim] = &[Claim {

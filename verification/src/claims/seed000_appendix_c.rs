@@ -16,7 +16,8 @@ use crate::continuity::{
     uniform_bspline,
 };
 use crate::exact::{IDENTITY, symbols};
-use crate::verdict::{Status, Verdict};
+use crate::status::Status;
+use crate::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[
     Claim {

@@ -635,7 +635,7 @@ fn m15() -> Verdict {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::verdict::Status;
+    use crate::status::Status;
 
     #[test]
     fn printed_values_that_are_right_hold_and_wrong_ones_fail() {

@@ -18,7 +18,8 @@ use trig_symbolic::Sym;
 
 use crate::evidence::{self, Evidence, Kind};
 use crate::exact::IDENTITY;
-use crate::verdict::{Status, Verdict};
+use crate::status::Status;
+use crate::verdict::Verdict;
 use crate::witness::witness;
 
 /// `ζ` as the catalog names it.

@@ -22,7 +22,8 @@ use super::thesis::claim;
 use crate::claim::{Claim, shared};
 use crate::exact::{identities, symbols};
 use crate::joins::{Printed, PrintedJoin, audit, audit_surface};
-use crate::verdict::{Status, Verdict};
+use crate::status::Status;
+use crate::verdict::Verdict;
 
 mod cylinder;
 

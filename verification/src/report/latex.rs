@@ -14,7 +14,7 @@ use super::{
     size_text,
 };
 use crate::evidence::{Evidence, Expr, Part, Witness};
-use crate::verdict::Status;
+use crate::status::Status;
 
 pub use super::tex_text::{tex_escape, tex_inline, to_math, unmapped};
 

@@ -11,7 +11,7 @@ use super::{
     size_text,
 };
 use crate::evidence::{Evidence, Expr, Part, Witness};
-use crate::verdict::Status;
+use crate::status::Status;
 
 /// Expressions with more characters are summarised.
 pub const LONG: usize = 120;

@@ -19,7 +19,8 @@ use crate::Outcome;
 use crate::claim::Seed;
 use crate::evidence::{Evidence, Witness};
 use crate::figures::{self, Figure};
-use crate::verdict::{Status, Verdict};
+use crate::status::Status;
+use crate::verdict::Verdict;
 
 pub use json::{Report, SCHEMA_VERSION, json_entries, schema};
 pub use latex::{tex_entries, tex_escape, to_math};

@@ -13,7 +13,8 @@ use crate::certify::evidence::{
     CERTIFIED, Published, maximal_against, monotone_named, nonnegative_named,
 };
 use crate::region_audit::{self, Axis};
-use crate::verdict::{Status, Verdict};
+use crate::status::Status;
+use crate::verdict::Verdict;
 
 /// The functions on the standard domain: `(trigonometric, functions,
 /// names)`, every function split into its pieces (named `b0 on θ ∈ …` when

@@ -12,7 +12,8 @@ use super::{K, TABLE_ORDERS, params};
 use crate::evidence::EvidenceList;
 use crate::exact::{IDENTITY, identities};
 use crate::numeric::{PREC, differ, show};
-use crate::verdict::{Status, Verdict};
+use crate::status::Status;
+use crate::verdict::Verdict;
 
 /// A printed symmetry `bᵢ(x; p) = b_{offset−i}(A − x; σ(p))`.
 pub struct PrintedSymmetry<'a> {

@@ -11,7 +11,8 @@ use trig_certify::branch::{self, Axis, Outcome};
 use trig_specfile::{Spec, SpecRange};
 use trig_symbolic::{Poly, Sym};
 
-use crate::verdict::{Status, Verdict};
+use crate::status::Status;
+use crate::verdict::Verdict;
 
 /// How the interval method decides, as the report states it.
 pub const INTERVAL: &str = "certified: interval branch and bound in 128-bit MPFR with outward rounding over (variable, parameters); next to the domain's ends and the range ends by exact derivatives (≥ 0 on the face and a derivative ≥ 0 into the box); denominators proved of one strict sign first; counterexamples are boxes where the value is certified negative";

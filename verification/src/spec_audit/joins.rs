@@ -14,7 +14,8 @@ use trig_symbolic::Sym;
 use super::geometry::{describe_wrt, end_text};
 use super::{K, params};
 use crate::exact::{IDENTITY, identities, symbols};
-use crate::verdict::{Status, Verdict};
+use crate::status::Status;
+use crate::verdict::Verdict;
 
 /// The join of two segments of the spec basis in the convention `wrt`.
 fn setup<'a>(

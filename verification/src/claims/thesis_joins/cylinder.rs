@@ -18,7 +18,8 @@ use crate::claim::shared;
 use crate::evidence::{Evidence, EvidenceList, Expr, Value, Witness};
 use crate::exact::{sum, symbols};
 use crate::joins::{Printed, PrintedJoin, audit_surface};
-use crate::verdict::{Status, Verdict};
+use crate::status::Status;
+use crate::verdict::Verdict;
 
 /// A seam from the end of `from` (points `from0…from3`) to the start of `to`.
 fn seam(from: &str, to: &str) -> PrintedJoin {
