@@ -7,7 +7,7 @@ use std::collections::BTreeMap;
 
 use rug::Rational;
 use toml::Spanned;
-use trig_core::{Affine, Domain, Variable};
+use trig_core::{Affine, Domain, Parameter, Variable};
 use trig_symbolic::Sym;
 
 use crate::ast::{self, Expr};
@@ -16,22 +16,9 @@ use crate::error::{FormulaError, Result, SpecError};
 use crate::formula::{Scope, linear, lower};
 use crate::frequencies::{Usage, domain};
 use crate::nonvanishing;
-use crate::range::SpecRange;
 use crate::raw::{RawFunction, RawSpec};
 use crate::source::Source;
-
-/// A shape parameter.
-#[derive(Debug, Clone, PartialEq)]
-pub struct SpecParam {
-    /// ASCII name (symbol name in the exact ring, `--param NAME=…`).
-    pub name: String,
-    /// The symbol the source prints.
-    pub symbol: String,
-    /// The published range.
-    pub range: SpecRange,
-    /// Where the range is stated.
-    pub source: String,
-}
+use trig_core::ParamRange;
 
 /// One basis function or definition.
 #[derive(Debug, Clone, PartialEq)]
@@ -61,7 +48,7 @@ pub struct Spec {
     /// For the legacy trigonometric variables, `k` with the declared angle
     /// `= k·ω`: the shorthands `s`, `c` are its sine and cosine.
     pub shorthand: Option<i64>,
-    pub params: Vec<SpecParam>,
+    pub params: Vec<Parameter>,
     /// Helper definitions (not basis functions).
     pub definitions: Vec<SpecFunction>,
     pub functions: Vec<SpecFunction>,
@@ -144,7 +131,7 @@ impl Spec {
         &self,
         text: &str,
         extra: &[String],
-        extra_ranges: &[(String, SpecRange)],
+        extra_ranges: &[(String, ParamRange)],
     ) -> std::result::Result<(Sym, Vec<String>), FormulaError> {
         let mut ranges = self.ranges();
         ranges.extend(extra_ranges.iter().cloned());
@@ -203,7 +190,7 @@ impl Spec {
     }
 
     /// The declared parameter ranges by name.
-    pub fn ranges(&self) -> Vec<(String, SpecRange)> {
+    pub fn ranges(&self) -> Vec<(String, ParamRange)> {
         self.params
             .iter()
             .map(|p| (p.name.clone(), p.range.clone()))
@@ -236,7 +223,7 @@ fn domain_ends(
     src: &Source<'_>,
     field: &Spanned<String>,
     params: &[(String, String)],
-    ranges: &[SpecRange],
+    ranges: &[ParamRange],
 ) -> Result<(Affine, Affine)> {
     let text = field.get_ref().trim();
     let expected = "expected `[a, b]` with ends in numbers, pi and the parameters (e.g. [0, alpha], [-pi/2, pi/2])";
@@ -273,7 +260,7 @@ fn domain_ends(
 /// corners of the box, with `π ∈ (3.14159, 3.14160)`; a corner at an open
 /// end may give `0`, which is not attained; an unbounded parameter must
 /// not occur).
-fn positive_on(l: &Affine, ranges: &[SpecRange]) -> bool {
+fn positive_on(l: &Affine, ranges: &[ParamRange]) -> bool {
     let (pi_lo, pi_hi) = (
         Rational::from((314_159, 100_000)),
         Rational::from((314_160, 100_000)),
@@ -292,7 +279,7 @@ fn positive_on(l: &Affine, ranges: &[SpecRange]) -> bool {
             contribution *= if contribution >= 0 { &pi_lo } else { &pi_hi };
         }
         least += contribution;
-        open |= matches!(worst, crate::range::End::Open(_));
+        open |= matches!(worst, trig_core::End::Open(_));
     }
     least > 0 || (least == 0 && open)
 }
@@ -331,7 +318,7 @@ fn build(src: &Source<'_>, raw: RawSpec) -> Result<Spec> {
         .iter()
         .map(|p| (p.name.clone(), p.symbol.clone()))
         .collect();
-    let ranges: Vec<SpecRange> = params.iter().map(|p| p.range.clone()).collect();
+    let ranges: Vec<ParamRange> = params.iter().map(|p| p.range.clone()).collect();
     let (ends, declared) = match (legacy, &raw.domain) {
         (Some(v), None) => {
             let d = Domain::from_variable(v, &[]);
@@ -434,8 +421,8 @@ fn build(src: &Source<'_>, raw: RawSpec) -> Result<Spec> {
     Ok(spec)
 }
 
-fn read_params(src: &Source<'_>, raw: &RawSpec, var_name: &str) -> Result<Vec<SpecParam>> {
-    let mut params: Vec<SpecParam> = Vec::new();
+fn read_params(src: &Source<'_>, raw: &RawSpec, var_name: &str) -> Result<Vec<Parameter>> {
+    let mut params: Vec<Parameter> = Vec::new();
     if raw.parameters.len() > MAX_PARAMS {
         return src.invalid(
             raw.parameters[MAX_PARAMS].name.span(),
@@ -456,9 +443,9 @@ fn read_params(src: &Source<'_>, raw: &RawSpec, var_name: &str) -> Result<Vec<Sp
                 ),
             );
         }
-        let range = SpecRange::parse(p.range.get_ref())
+        let range = ParamRange::parse(p.range.get_ref())
             .or_else(|m| src.invalid(p.range.span(), "parameters.range", m))?;
-        params.push(SpecParam {
+        params.push(Parameter {
             symbol: p.symbol.clone().unwrap_or_else(|| name.clone()),
             name,
             range,
@@ -558,7 +545,7 @@ struct Lowerer<'a> {
     index: BTreeMap<&'a str, usize>,
     states: RefCell<Vec<State>>,
     params: Vec<(String, String)>,
-    ranges: Vec<(String, SpecRange)>,
+    ranges: Vec<(String, ParamRange)>,
 }
 
 impl Lowerer<'_> {

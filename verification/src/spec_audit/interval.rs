@@ -8,7 +8,8 @@
 
 use rug::Rational;
 use trig_certify::branch::{self, Axis, Outcome};
-use trig_specfile::{Spec, SpecRange};
+use trig_core::ParamRange;
+use trig_specfile::Spec;
 use trig_symbolic::{Poly, Sym};
 
 use crate::status::Status;
@@ -22,26 +23,26 @@ const TRUNCATE: i64 = 64;
 
 /// The axes of the parameters for a claim: the declared ranges, `range`
 /// replacing the only parameter's; unbounded ranges truncated (noted).
-pub fn axes(spec: &Spec, range: Option<&SpecRange>) -> (Vec<Axis>, Vec<String>) {
+pub fn axes(spec: &Spec, range: Option<&ParamRange>) -> (Vec<Axis>, Vec<String>) {
     let mut notes = Vec::new();
     let axes = spec
         .params
         .iter()
         .map(|p| {
             let r = range.filter(|_| spec.params.len() == 1).unwrap_or(&p.range);
-            r.to_axis().unwrap_or_else(|| {
+            Axis::from_range(r).unwrap_or_else(|| {
                 let (lo, hi, lo_open, hi_open) = match (r.lo.value(), r.hi.value()) {
                     (Some(a), None) => (
                         a.clone(),
                         a.clone() + TRUNCATE,
-                        matches!(r.lo, trig_specfile::range::End::Open(_)),
+                        matches!(r.lo, trig_core::End::Open(_)),
                         false,
                     ),
                     (None, Some(b)) => (
                         b.clone() - TRUNCATE,
                         b.clone(),
                         false,
-                        matches!(r.hi, trig_specfile::range::End::Open(_)),
+                        matches!(r.hi, trig_core::End::Open(_)),
                     ),
                     _ => (
                         Rational::from(-TRUNCATE),
@@ -263,7 +264,7 @@ fn functions(spec: &Spec) -> Vec<(String, Sym)> {
 /// is undefined (a denominator vanishes identically there); otherwise a
 /// point just beyond it decides: admissible refutes maximality, a
 /// certified counterexample brackets the end.
-pub fn maximal(spec: &Spec, range: &SpecRange) -> Verdict {
+pub fn maximal(spec: &Spec, range: &ParamRange) -> Verdict {
     let (ax, notes) = axes(spec, Some(range));
     let fs = functions(spec);
     let inside = all_nonnegative(spec, &fs, &ax, &notes);
@@ -361,7 +362,7 @@ pub fn monotone(
     name: &str,
     f: &Sym,
     increasing: bool,
-    range: Option<&SpecRange>,
+    range: Option<&ParamRange>,
 ) -> Verdict {
     let d = trig_certify::atoms::d_variable(f, &spec.domain);
     let g = if increasing { d } else { -d };
