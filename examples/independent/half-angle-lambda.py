@@ -48,6 +48,9 @@ for l0, sgn in [(R(-131, 100), -1), (R(-1307, 1000), -1), (R(-1306, 1000), 1)]:
     val = b1c.subs({lam: l0, t: sp.pi / 4})
     s_ = iv_sign(val, {})
     check(s_ == sgn, f"λ = {l0}, t = π/4: b1 = {iv_digits(val, {})} ({'< 0: outside' if sgn < 0 else '> 0: inside; min of √2 + λ(x+y) is there'})")
+wv = b1c.subs({lam: R(-3, 2), t: sp.pi / 4})
+check(sp.simplify(wv - (r2 - R(3, 2) / sp.cos(sp.pi / 8)) / (2 + r2)) == 0 and iv_sign(wv, {}) < 0,
+      f"λ = −3/2, t = π/4: b1 = (√2 − (3/2)sec(π/8))/(2 + √2) = {iv_digits(wv, {})} < 0 (xy = 1/(2 + √2), x + y = sec(π/8))")
 # witnesses at the right end λ = 1: t near π/2 (y → 1)
 for l0, t0 in [(R(101, 100), R(157, 100)), (2, sp.pi / 3)]:
     val = b0.subs({lam: l0, t: t0})

@@ -64,4 +64,16 @@ for kk in range(4):
 d1 = [sp.expand(sp.diff(f, t).subs(t, 0)) for f in b]
 print("  (b2 = (1 − cos t)²(…)² has a zero of order 4 at t = 0, so its column is 0 up to order 3.)")
 check(d1 == [sp.expand(-2 * (1 + lam)), sp.expand(2 * (1 + lam)), 0], "b'(0) = (−2(1 + λ), 2(1 + λ), 0): r'(0) = 2(1 + λ)(P1 − P0), 0 at the end λ = −1")
+# joins (the spec audit's standard battery): b2 has a zero of order 4 at t = 0, so Q2 never enters Q''(0)
+P = sp.symbols("P0:3")
+Q = sp.symbols("Q0:3")
+rP = sum(f * p for f, p in zip(b, P))
+rQ = sum(f * q for f, q in zip(b, Q))
+c1 = {Q[0]: P[2], Q[1]: 2 * P[2] - P[1]}
+check(sp.expand(sp.diff(rQ, t).subs(t, 0).subs(c1) - sp.diff(rP, t).subs(t, sp.pi / 2)) == 0,
+      "C¹ join: Q0 = P2, Q1 = 2P2 − P1 (for λ ≠ −1; at λ = −1 both end tangents vanish)")
+jump2 = sp.factor(sp.expand(sp.diff(rQ, t, 2).subs(t, 0).subs(c1) - sp.diff(rP, t, 2).subs(t, sp.pi / 2)))
+check(sp.expand(jump2 - 4 * (lam**2 + 4 * lam + 1) * (P[1] - P[2])) == 0,
+      "C² join: Q''(0) − P''(π/2) = 4(λ² + 4λ + 1)(P1 − P2), free of Q2: C² only if λ = −2 ± √3 or P1 = P2"
+      " (λ = −2 + √3 ≈ −0.268 lies inside [−1, 1]: there every C¹ join is C²)")
 print("done")
