@@ -11,6 +11,9 @@ exact object or raises AssertionError; nothing is decided by floating point.
   iv_eval(e, env)           rigorous enclosure (mpmath.iv, outward rounding) of e at exact/interval values
   iv_sign(e, env)           certified sign (+1/−1) of e, from iv_eval; AssertionError if the enclosure contains 0
   root_enclosure(F, x, lo, hi)   certified sign change of F between two rationals (a root inside)
+  bernstein_matrix(N, x, d) coefficient matrix of polynomials N_i(x) in the Bernstein basis of degree d on [0, 1]
+  minors(M)                 all nonzero minors of M (every order)
+  tp_certificate_set(N, x, lam, d)  exact set of λ where every minor of the degree-d Bernstein matrix is ≥ 0
 """
 
 import sympy as sp
@@ -431,3 +434,76 @@ def root_enclosure(F, x, lo, hi, env=None, dps=60):
     shi = iv_sign(F, {**env, x: hi}, dps)
     assert slo * shi < 0, f"no sign change of {F} on [{lo}, {hi}]"
     return slo, shi
+
+
+# --------------------------------------------------------------------------- total positivity
+def bernstein_matrix(N, x, d):
+    """Rows: the coefficients of N_i(x) in the Bernstein basis C(d, j) x^j (1 − x)^{d−j} of degree d on [0, 1].
+
+    A degree below d is elevated exactly (the power-to-Bernstein formula of degree d)."""
+    rows = []
+    for f in N:
+        P = sp.Poly(sp.expand(f), x)
+        assert P.degree() <= d, f"degree {P.degree()} > {d}"
+        a = [P.coeff_monomial(x**k) for k in range(d + 1)]
+        rows.append([sp.factor(sum(sp.binomial(j, k) / sp.binomial(d, k) * a[k] for k in range(j + 1))) for j in range(d + 1)])
+    return sp.Matrix(rows)
+
+
+def minors(M):
+    """All nonzero minors of M, every order (factored)."""
+    import itertools
+
+    r, c = M.shape
+    out = []
+    for k in range(1, min(r, c) + 1):
+        for I in itertools.combinations(range(r), k):
+            for J in itertools.combinations(range(c), k):
+                v = sp.factor(M.extract(list(I), list(J)).det())
+                if v != 0:
+                    out.append(v)
+    return out
+
+
+def tp_certificate_set(N, x, lam, d):
+    """Exact set of λ (closed intervals, exact algebraic ends) where every minor of the degree-d Bernstein
+    matrix of N is ≥ 0. On that set the basis N (hence b = N/(positive common factor), composed with an
+    increasing change of variable) is totally positive: its collocation matrices are the Bernstein ones
+    (TP) times M (Cauchy–Binet). Decided cell by cell between consecutive real roots of the minors."""
+    M = bernstein_matrix(N, x, d)
+    ms = minors(M)
+    crit = set()
+    for y in ms:
+        if y.has(lam):
+            crit |= set(sp.Poly(y, lam).real_roots())
+    crit = sorted(crit, key=lambda r: sp.N(r, 50))
+    if not crit:
+        ok = all(sp.sign(y) >= 0 for y in ms)
+        return ([(-sp.oo, sp.oo)] if ok else []), M
+    cells = [simplest_between(crit[0] - 1, crit[0])]
+    cells += [simplest_between(crit[i], crit[i + 1]) for i in range(len(crit) - 1)]
+    cells += [simplest_between(crit[-1], crit[-1] + 1)]
+
+    def good(v):
+        return all(_alg_sign(sp.nsimplify(y.subs(lam, v))) >= 0 if not v.is_Rational else sp.sign(y.subs(lam, v)) >= 0
+                   for y in ms)
+
+    cell_ok = [good(p) for p in cells]
+    crit_ok = [cell_ok[i] or cell_ok[i + 1] or good(r) for i, r in enumerate(crit)]
+    bounds = [-sp.oo] + crit + [sp.oo]
+    out, cur = [], None
+    for i, ok in enumerate(cell_ok):
+        if ok:
+            cur = [bounds[i], bounds[i + 1]] if cur is None else [cur[0], bounds[i + 1]]
+        elif cur is not None:
+            out.append(tuple(cur))
+            cur = None
+        if i < len(crit):
+            if crit_ok[i] and cur is None:
+                cur = [crit[i], crit[i]]
+            elif not crit_ok[i] and cur is not None:
+                out.append(tuple(cur))
+                cur = None
+    if cur is not None:
+        out.append(tuple(cur))
+    return out, M
