@@ -42,16 +42,16 @@ k = (lam**2 - 4 * lam) / 4
 u = x * (1 - x)
 ie = [(1 - x) ** 2 * (1 - k * x**2), 2 * u * (1 + k * u), x**2 * (1 - k * (1 - x) ** 2)]
 iv4, M4 = tp_certificate_set(ie, x, lam, 4)
-iv6, _ = tp_certificate_set(ie, x, lam, 6)
+iv6, _ = tp_certificate_set(ie, x, lam, 5)
 print("irrational-end: certificate at degree 4:", show(iv4))
-print("                certificate at degree 6:", show(iv6))
+print("                certificate at degree 5:", show(iv6))
 check(len(iv4) == 2 and sp.simplify(iv4[0][1] - (2 - sp.sqrt(2))) == 0 and sp.simplify(iv4[1][0] - (2 + sp.sqrt(2))) == 0,
       "degree 4 certifies only [2 − 2√2, 2 − √2] ∪ [2 + √2, 2 + 2√2]")
 mnr = sp.factor(M4.extract([0, 1, 2], [1, 2, 3]).det())
 check(sp.expand(mnr - (lam**2 - 4 * lam + 2) / 24) == 0,
       "  the failing minor: rows 0–2, columns 1–3 of the degree-4 matrix = (λ² − 4λ + 2)/24 < 0 on (2 − √2, 2 + √2)")
 check(len(iv6) == 1 and sp.simplify(iv6[0][0] - (2 - 2 * sp.sqrt(2))) == 0 and sp.simplify(iv6[0][1] - (2 + 2 * sp.sqrt(2))) == 0,
-      "after elevation to degree 6: [2 − 2√2, 2 + 2√2] = the nonnegativity range ⇒ TP exactly there")
+      "after one degree elevation (degree 5): [2 − 2√2, 2 + 2√2] = the nonnegativity range ⇒ TP exactly there")
 print("  degree-4 matrix:", M4.tolist())
 
 # ---------------- squared Han basis (C7): nonnegative on [−1, 2 + 2√2], TP only on [−1, 1]
