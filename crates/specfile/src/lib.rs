@@ -83,10 +83,9 @@ impl Described for Spec {
         self.functions.iter().map(|f| f.name.clone()).collect()
     }
 
-    /// Four functions can be the segments of a uniform cubic B-spline
-    /// basis function (piece `k` is function `3 − k`).
+    /// As the file declares (`piecewise = true`).
     fn piecewise(&self) -> bool {
-        self.functions.len() == 4
+        self.piecewise
     }
 }
 

@@ -48,6 +48,9 @@ pub struct Spec {
     /// For the legacy trigonometric variables, `k` with the declared angle
     /// `= k·ω`: the shorthands `s`, `c` are its sine and cosine.
     pub shorthand: Option<i64>,
+    /// The functions are the segments of a uniform B-spline basis function
+    /// (piece `k` is function `n − 1 − k`), as the file declares.
+    pub piecewise: bool,
     pub params: Vec<Parameter>,
     /// Helper definitions (not basis functions).
     pub definitions: Vec<SpecFunction>,
@@ -388,6 +391,7 @@ fn build(src: &Source<'_>, raw: RawSpec) -> Result<Spec> {
         legacy,
         var_name,
         shorthand,
+        piecewise: raw.piecewise,
         params,
         definitions: Vec::new(),
         functions: Vec::new(),
