@@ -14,7 +14,7 @@ pub mod continuity;
 pub mod evidence;
 pub mod exact;
 pub mod figures;
-pub mod joins;
+pub mod judge;
 pub mod minimum;
 pub mod numeric;
 pub mod parallel;

@@ -7,9 +7,9 @@
 use rug::Rational;
 
 use crate::domain::Domain;
-use crate::error::Result;
+use crate::error::{CoreError, Result};
 use crate::param::{Parameter, read_params};
-use crate::scalar::Ring;
+use crate::scalar::{Real, Ring};
 use crate::variable::{Atoms, Variable};
 
 /// What a report or a command states about a basis — id, citation,
@@ -135,6 +135,36 @@ impl<B: Basis + ?Sized> Basis for &B {
     fn eval<T: Ring>(&self, x: &Atoms<T>, p: &[T]) -> Vec<T> {
         (**self).eval(x, p)
     }
+}
+
+/// Every function of `basis` at the point `x` of its variable with the
+/// exact parameters `p`, with typed errors: a wrong number of parameters, a
+/// point outside the domain (unless `allow_outside`), a non-finite value
+/// (a divisor that vanishes there).
+pub fn eval_at<B: Basis + ?Sized, T: Real>(
+    basis: &B,
+    x: &T,
+    p: &[Rational],
+    allow_outside: bool,
+) -> Result<Vec<T>> {
+    let expected = basis.param_names().len();
+    if p.len() != expected {
+        return Err(CoreError::Count {
+            what: format!("parameters of `{}`", basis.id()),
+            expected,
+            got: p.len(),
+        });
+    }
+    let params: Vec<T> = p.iter().map(|q| x.rational(q)).collect();
+    let domain = basis.domain();
+    domain.check_point(x, &params, allow_outside)?;
+    let values = basis.eval(&domain.atoms(x), &params);
+    if values.iter().any(|v| !v.is_finite()) {
+        return Err(CoreError::DivisionByZero {
+            quantity: format!("`{}` at this point", basis.id()),
+        });
+    }
+    Ok(values)
 }
 
 #[cfg(test)]

@@ -34,6 +34,10 @@ pub struct Condition {
     pub point: usize,
     pub text: String,
     pub value: Sym,
+    /// The printed additive terms of the formula (signs included) over its
+    /// printed denominator: `value = Σ terms / denominator`.
+    pub terms: Vec<Sym>,
+    pub denominator: Sym,
     /// Divisions of the printed formula not proved nonzero over the ranges
     /// (why, with the witness): the formula is singular there.
     pub singular: Vec<String>,
@@ -123,12 +127,7 @@ impl Spec {
     /// The names of the `G¹`/`G²` factors: `alpha`, `beta`, unless a shape
     /// parameter has that name (then `gamma`, `delta`).
     pub fn join_factors(&self) -> [String; 2] {
-        let taken = |n: &str| self.params.iter().any(|p| p.name == n);
-        if taken("alpha") || taken("beta") {
-            ["gamma".into(), "delta".into()]
-        } else {
-            ["alpha".into(), "beta".into()]
-        }
+        trig_deriv::factor_names(&trig_core::Described::param_names(self))
     }
 
     /// The parameters of the two segments of a join with different
@@ -467,7 +466,10 @@ fn join(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check> {
                     return src.invalid(item.span(), "claims.conditions", format!("`{text}`: with different parameters write {0}1 (first segment) or {0}2 (second), not {0}", p.name));
                 }
             }
-            Ok(Condition { point, text: text.trim().to_string(), value, singular })
+            let (terms, denominator) = spec
+                .printed_terms(rhs, &extra)
+                .map_err(|e| src.formula_error(item, e))?;
+            Ok(Condition { point, text: text.trim().to_string(), value, terms, denominator, singular })
         })
         .collect::<Result<Vec<_>>>()?;
     Ok(Check::Join {

@@ -128,22 +128,7 @@ impl Spec {
         p: &[Rational],
         allow_outside: bool,
     ) -> Result<Vec<T>, CoreError> {
-        if p.len() != self.params.len() {
-            return Err(CoreError::Count {
-                what: format!("parameters of `{}`", self.id),
-                expected: self.params.len(),
-                got: p.len(),
-            });
-        }
-        let params: Vec<T> = p.iter().map(|q| x.rational(q)).collect();
-        self.domain.check_point(x, &params, allow_outside)?;
-        let values = Basis::eval(self, &self.domain.atoms(x), &params);
-        if values.iter().any(|v| !v.is_finite()) {
-            return Err(CoreError::DivisionByZero {
-                quantity: format!("`{}` at this point", self.id),
-            });
-        }
-        Ok(values)
+        trig_core::basis::eval_at(self, x, p, allow_outside)
     }
 
     /// The functions as exact values with the parameters as symbols.

@@ -58,6 +58,23 @@ pub struct Spec {
     pub claims: Vec<SpecClaim>,
 }
 
+/// The additive terms of `e` with their signs: `a − (b + c)` is `+a`,
+/// `−b`, `−c`.
+fn additive_terms<'e>(e: &'e Expr, negated: bool, out: &mut Vec<(bool, &'e Expr)>) {
+    match &e.node {
+        ast::Node::Add(a, b) => {
+            additive_terms(a, negated, out);
+            additive_terms(b, negated, out);
+        }
+        ast::Node::Sub(a, b) => {
+            additive_terms(a, negated, out);
+            additive_terms(b, !negated, out);
+        }
+        ast::Node::Neg(a) => additive_terms(a, !negated, out),
+        _ => out.push((negated, e)),
+    }
+}
+
 /// Names a parameter, function or definition may not take.
 const RESERVED: &[&str] = &[
     "s", "c", "t", "u", "x", "z", "i", "E", "e", "pi", "sin", "cos", "sinh", "cosh", "exp", "sqrt",
@@ -148,9 +165,48 @@ impl Spec {
         Ok((value, singular.into_inner()))
     }
 
+    /// A printed claim formula `(t₁ ± t₂ ± …)/d` as printed: its additive
+    /// terms (signs included) and its denominator (`1` when there is none),
+    /// each exact — so that a sign typo in one printed term can be named.
+    pub fn printed_terms(
+        &self,
+        text: &str,
+        extra: &[String],
+    ) -> std::result::Result<(Vec<Sym>, Sym), FormulaError> {
+        let e = ast::parse(text)?;
+        let (num, den) = match &e.node {
+            ast::Node::Div(a, b) => (a.as_ref(), Some(b.as_ref())),
+            _ => (&e, None),
+        };
+        let mut terms = Vec::new();
+        additive_terms(num, false, &mut terms);
+        let accept = |_: &Sym| Ok(());
+        let lowered = terms
+            .into_iter()
+            .map(|(negated, t)| {
+                let v = self.lower_with(t, extra, &accept)?;
+                Ok(if negated { -v } else { v })
+            })
+            .collect::<std::result::Result<Vec<Sym>, FormulaError>>()?;
+        let den = match den {
+            Some(d) => self.lower_with(d, extra, &accept)?,
+            None => Sym::one(),
+        };
+        Ok((lowered, den))
+    }
+
     fn parse_with(
         &self,
         text: &str,
+        extra: &[String],
+        divisor: &dyn Fn(&Sym) -> std::result::Result<(), String>,
+    ) -> std::result::Result<Sym, FormulaError> {
+        self.lower_with(&ast::parse(text)?, extra, divisor)
+    }
+
+    fn lower_with(
+        &self,
+        e: &Expr,
         extra: &[String],
         divisor: &dyn Fn(&Sym) -> std::result::Result<(), String>,
     ) -> std::result::Result<Sym, FormulaError> {
@@ -162,9 +218,8 @@ impl Spec {
                 .find(|(m, _)| m == n)
                 .map(|(_, v)| Ok(v.clone()))
         };
-        let e = ast::parse(text)?;
         lower(
-            &e,
+            e,
             &Scope {
                 domain: &self.domain,
                 var_name: &self.var_name,

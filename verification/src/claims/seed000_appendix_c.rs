@@ -12,10 +12,10 @@ use trig_symbolic::Sym;
 use super::seed000_appendix_print::{Formula, printed_part, zeta};
 use crate::claim::{Claim, Seed, shared};
 use crate::continuity::{
-    self, ContinuityError, KnotContinuity, METHOD, achieved, curve_end, nonuniform_bspline,
-    uniform_bspline,
+    self, KnotContinuity, METHOD, curve_end, nonuniform_bspline, uniform_bspline,
 };
 use crate::exact::{IDENTITY, symbols};
+use crate::judge::continuity::at_least;
 use crate::status::Status;
 use crate::verdict::Verdict;
 
@@ -378,36 +378,6 @@ fn m9b() -> Verdict {
     )
 }
 
-/// One line per knot, and the verdict "at least C^r at every knot".
-fn at_least(label: &str, knots: &[KnotContinuity], r: usize, param: Option<&str>) -> Verdict {
-    let evidence: Vec<crate::evidence::Evidence> = knots
-        .iter()
-        .map(|k| {
-            let item = k.describe(param);
-            if k.smoothness.is_at_least(r) {
-                item
-            } else {
-                item.witnessed(k.witness())
-            }
-        })
-        .collect();
-    let ok = knots.iter().all(|k| k.smoothness.is_at_least(r));
-    let mut evidence = evidence;
-    evidence.insert(
-        0,
-        format!(
-            "{label}: achieved for all parameter values: {}",
-            achieved(knots).map_or("no knots".into(), |s| s.to_string())
-        )
-        .into(),
-    );
-    Verdict::new(
-        if ok { Status::Holds } else { Status::Fails },
-        METHOD,
-        evidence,
-    )
-}
-
 /// The claim "C⁵ for ξ ≠ 1": it fails when some knot is below C⁵ for
 /// generic ξ (then every ξ outside the finitely many exceptions is a
 /// counterexample); the exceptional values where C⁵ holds are listed.
@@ -440,8 +410,7 @@ fn c5_except_one(label: &str, knots: &[KnotContinuity]) -> Verdict {
 }
 
 fn uniform_basis() -> Vec<KnotContinuity> {
-    let pieces =
-        uniform_bspline(Family::Seed000Uniform, &[zeta()]).expect("seed000-uniform is piecewise");
+    let pieces = uniform_bspline(&Family::Seed000Uniform, &[zeta()]);
     continuity::continuity(&pieces, true, Some("zeta"))
 }
 
@@ -507,7 +476,7 @@ fn m4() -> Verdict {
                 3,
                 Some("zeta"),
             ),
-            Err(e) => Verdict::not_checkable(e.to_string()),
+            Err(e) => Verdict::not_checkable(format!("the construction is undefined: {e}")),
         },
     ));
     Verdict::all(METHOD, parts)
@@ -558,10 +527,9 @@ fn m4b() -> Verdict {
                         }),
                     )
                 }
-                Err(ContinuityError::Construction(e)) => Verdict::not_checkable(format!(
+                Err(e) => Verdict::not_checkable(format!(
                     "the printed construction (2)–(3) is undefined at coincident knots: {e}"
                 )),
-                Err(e) => Verdict::not_checkable(e.to_string()),
             };
             parts.push((label, v));
         }

@@ -218,7 +218,7 @@ fn memo(spec: &Spec, name: &str, f: &Sym, axes: &[Axis]) -> (Status, String) {
 fn mirrors(spec: &Spec, f: &Sym, g: &Sym) -> bool {
     let a = spec.domain.reflection();
     let params: Vec<Sym> = spec.params.iter().map(|p| Sym::var(&p.name)).collect();
-    super::geometry::reflect(spec, g, &a, &params).is_ok_and(|r| (r - f).is_zero())
+    crate::judge::symmetry::reflect(spec, g, &a, &params).is_ok_and(|r| (r - f).is_zero())
 }
 
 /// The axes with every open end moved inward by an eighth of the width
