@@ -1,11 +1,13 @@
 //! The cost bound of one formula lowered into the exact ring [`Sym`]: every
-//! intermediate value has at most [`MAX_TERMS`] terms and total degree
-//! [`MAX_DEGREE`], and the multiplications of one formula (powers
-//! included) at most [`MAX_WORK`] term products — checked before each
-//! product is formed, so a hostile formula is refused, not expanded.
+//! intermediate value has at most [`MAX_TERMS`] terms, total degree
+//! [`MAX_DEGREE`] and coefficients of at most [`MAX_BITS`] bits, and the
+//! multiplications of one formula (powers included) at most [`MAX_WORK`]
+//! term products — checked before each product is formed, so a hostile
+//! formula (`((2^64)^64)^64`, `((1 + s)^64)^64`) is refused, not expanded.
 
 use std::cell::Cell;
 
+use rug::Rational;
 use trig_symbolic::Sym;
 
 use crate::error::FormulaError;
@@ -16,6 +18,9 @@ pub const MAX_TERMS: usize = 4_000;
 pub const MAX_DEGREE: u64 = 128;
 /// Most term products (`|a|·|b|` per multiplication) of one formula.
 pub const MAX_WORK: u64 = 20_000_000;
+/// Most significant bits of a number (numerator or denominator of a
+/// coefficient) in any intermediate value.
+pub const MAX_BITS: u32 = 65_536;
 
 /// The work spent so far on one formula.
 #[derive(Debug, Default)]
@@ -34,9 +39,33 @@ fn size(x: &Sym) -> (usize, u64) {
         })
 }
 
+/// The most significant bits of a number in `q`'s numerator or denominator.
+pub(crate) fn bits(q: &Rational) -> u32 {
+    q.numer()
+        .significant_bits()
+        .max(q.denom().significant_bits())
+}
+
+/// The most bits of any coefficient of an exact value.
+fn coefficient_bits(x: &Sym) -> u32 {
+    std::iter::once(x.numerator())
+        .chain(x.denominator().keys())
+        .flat_map(|p| p.terms().map(|(_, q)| bits(q)))
+        .max()
+        .unwrap_or(0)
+}
+
+/// The error of a number larger than [`MAX_BITS`] formed at `pos`.
+pub(crate) fn too_large(pos: usize) -> FormulaError {
+    FormulaError::new(pos, format!("a number here would exceed {MAX_BITS} bits"))
+}
+
 impl Budget {
     /// Checks the bounds of an intermediate value (formed at `pos`).
     pub(crate) fn bounded(&self, x: Sym, pos: usize) -> Result<Sym, FormulaError> {
+        if coefficient_bits(&x) > MAX_BITS {
+            return Err(too_large(pos));
+        }
         let (terms, degree) = size(&x);
         if terms > MAX_TERMS || degree > MAX_DEGREE {
             return Err(FormulaError::new(
@@ -59,6 +88,10 @@ impl Budget {
                     "the formula's degree would exceed {MAX_DEGREE} here (degrees {da} and {db})"
                 ),
             ));
+        }
+        // a coefficient of a·b has about the bits of the two factors' largest
+        if u64::from(coefficient_bits(a)) + u64::from(coefficient_bits(b)) > u64::from(MAX_BITS) {
+            return Err(too_large(pos));
         }
         let spent = self.work.get() + (ta as u64).max(1) * (tb as u64).max(1);
         if spent > MAX_WORK {

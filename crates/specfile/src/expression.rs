@@ -31,12 +31,8 @@ use rug::ops::Pow;
 use trig_symbolic::Sym;
 
 use crate::ast::{self, Expr, Func, Grammar, Node};
-use crate::budget::Budget;
+use crate::budget::{Budget, MAX_BITS, bits, too_large};
 use crate::error::FormulaError;
-
-/// Most significant bits of a numerator or denominator while evaluating at
-/// a rational point (a tower of powers is refused, not computed).
-const MAX_BITS: u32 = 1 << 20;
 
 /// A formula read over declared symbols: its syntax tree, positions kept.
 #[derive(Debug, Clone, PartialEq)]
@@ -214,7 +210,8 @@ fn evaluate<A: Arithmetic>(
     }
 }
 
-/// Exact rationals, each numerator and denominator below [`MAX_BITS`].
+/// Exact rationals, each numerator and denominator of at most
+/// [`MAX_BITS`] bits (a tower of powers is refused, not computed).
 struct Rationals;
 
 impl Rationals {
@@ -224,19 +221,6 @@ impl Rationals {
         }
         Ok(q)
     }
-}
-
-fn bits(q: &Rational) -> u32 {
-    q.numer()
-        .significant_bits()
-        .max(q.denom().significant_bits())
-}
-
-fn too_large(pos: usize) -> FormulaError {
-    FormulaError::new(
-        pos,
-        format!("the value is too large here (more than {MAX_BITS} bits)"),
-    )
 }
 
 impl Arithmetic for Rationals {
@@ -402,8 +386,10 @@ mod tests {
         assert!(parse("1/(x - x)").unwrap().to_sym().is_err());
         // towers are refused, not formed
         let tower = parse("((((x^64)^64)^64)^64)^64").unwrap();
-        assert!(tower.at(&three).unwrap_err().message.contains("too large"));
+        assert!(tower.at(&three).unwrap_err().message.contains("bits"));
         assert!(tower.to_sym().unwrap_err().message.contains("degree"));
+        let tower = parse("((((3^64)^64)^64)^64)^64").unwrap();
+        assert!(tower.to_sym().unwrap_err().message.contains("bits"));
         let wide = parse("(1 + x + x^2 + x^3)^40 (2 + x)^64").unwrap();
         assert!(wide.to_sym().is_err());
     }

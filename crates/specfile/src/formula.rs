@@ -18,9 +18,10 @@
 //! * `sqrt` of a rational whose square-free part is a product of 2, 3, 5, 7.
 //!
 //! The cost of a formula is bounded as a whole: every intermediate value
-//! has at most [`MAX_TERMS`] terms and degree [`MAX_DEGREE`], and the
-//! multiplications of one formula (powers included) at most [`MAX_WORK`]
-//! term products — checked before each product is formed.
+//! has at most [`MAX_TERMS`] terms, degree [`MAX_DEGREE`] and coefficients
+//! of [`MAX_BITS`] bits, and the multiplications of one formula (powers
+//! included) at most [`MAX_WORK`] term products — checked before each
+//! product is formed.
 
 use rug::Rational;
 use trig_core::angles::{angle_sum, multiple_angle};
@@ -31,7 +32,7 @@ use crate::ast::{self, Expr, Func, Node};
 use crate::budget::Budget;
 use crate::error::FormulaError;
 
-pub use crate::budget::{MAX_DEGREE, MAX_TERMS, MAX_WORK};
+pub use crate::budget::{MAX_BITS, MAX_DEGREE, MAX_TERMS, MAX_WORK};
 
 /// The ring names of the atoms: `t` is the variable (whatever its printed
 /// name), `E = exp(κx)`.
@@ -569,6 +570,7 @@ mod tests {
         assert!(err("1/(s - s)").message.contains("division by zero"));
         // a formula's cost is bounded as a whole, not per power
         assert!(err("((1 + s + c)^64)^8").message.contains("degree"));
+        assert!(err("(((7^64)^64)^64)^64").message.contains("bits"));
         assert!(err("cos(24*pi*u/2)^64").message.contains("degree"));
         // defined names and the variable outside sin
         assert_eq!(
