@@ -32,8 +32,10 @@
 
 mod any;
 mod ast;
+mod budget;
 pub mod claims;
 pub mod error;
+mod expression;
 pub mod formula;
 pub mod frequencies;
 pub mod nonvanishing;
@@ -42,8 +44,10 @@ mod source;
 pub mod spec;
 
 pub use any::{AnyBasis, OpenError};
+pub use ast::Grammar;
 pub use claims::{Check, Condition, Monotone, Printed, SpecClaim};
 pub use error::{FormulaError, Location, SpecError};
+pub use expression::Expression;
 pub use spec::{Spec, SpecFunction};
 
 use rug::Rational;
