@@ -13,7 +13,6 @@
 pub mod json;
 pub mod latex;
 pub mod markdown;
-mod tex_text;
 
 use crate::Outcome;
 use crate::claim::Seed;
@@ -23,7 +22,7 @@ use crate::status::Status;
 use crate::verdict::Verdict;
 
 pub use json::{Report, SCHEMA_VERSION, json_entries, schema};
-pub use latex::{tex_entries, tex_escape, to_math};
+pub use latex::tex_entries;
 pub use markdown::markdown_entries;
 
 /// The opening sentence of the built-in report.
