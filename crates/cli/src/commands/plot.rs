@@ -219,7 +219,7 @@ fn write(output: &Path, picture: &Picture) -> CmdResult {
         &Picture::HEADER,
         rows.iter().map(|r| r.iter().map(String::as_str)),
     )?;
-    let pgf = picture.pgf(trig_tex::text);
+    let pgf = picture.pgf();
     write_atomically(output, picture.svg.as_bytes())?;
     write_atomically(&tex, pgf.as_bytes())?;
     write_atomically(&data, csv.as_bytes())?;
