@@ -23,7 +23,9 @@
 //! Names: plain text prints them as given. Unicode and LaTeX render the
 //! Greek names (`alpha, beta, eta, lambda, mu, omega, pi, theta, xi, zeta`)
 //! as letters and trailing digits as subscripts (`w0` → `w₀`, `w_{0}`);
-//! LaTeX sets other multi-letter names in `\mathrm{…}`.
+//! LaTeX sets other multi-letter names in `\mathrm{…}`. The names and the
+//! LaTeX pieces are the one LaTeX writer's ([`trig_tex::symbols::greek`],
+//! [`trig_tex::expr`]).
 
 use std::fmt;
 
