@@ -182,28 +182,19 @@ fn text(s: &Solved) -> String {
 }
 
 fn tex(s: &Solved) -> String {
-    let mut out: String = header(s).iter().map(|l| format!("% {l}\n")).collect();
-    out.push_str("\\begin{align*}\n");
-    let lines: Vec<String> = s
+    let mut out: String = header(s).iter().map(|l| trig_tex::comment(l)).collect();
+    let equations: Vec<(String, String)> = s
         .forced
         .iter()
-        .map(|(point, value, _)| {
-            format!(
-                "{} &= {}",
-                point.to_latex(),
-                value.combination(&s.names).latex
-            )
-        })
+        .map(|(point, value, _)| (point.to_latex(), value.combination(&s.names).latex))
         .collect();
-    out.push_str(&lines.join(" \\\\\n"));
-    out.push_str("\n\\end{align*}\n");
+    out.push_str(&trig_tex::align(&equations));
     for (point, _, singular) in &s.forced {
         if !singular.is_empty() {
-            out.push_str(&format!(
-                "% {}: singular where {}\n",
-                point,
+            out.push_str(&trig_tex::comment(&format!(
+                "{point}: singular where {}",
                 singular.join(", ")
-            ));
+            )));
         }
     }
     out

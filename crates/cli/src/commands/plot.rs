@@ -17,7 +17,6 @@ use trig_plot::{
 };
 use trig_specfile::Spec;
 use trig_verification::region_audit::{Axis, classify_window};
-use trig_verification::report::tex_escape;
 
 use super::fit::{FitSetup, Runs, prepare};
 use super::{CliError, CmdResult, range_hint};
@@ -220,7 +219,7 @@ fn write(output: &Path, picture: &Picture) -> CmdResult {
         &Picture::HEADER,
         rows.iter().map(|r| r.iter().map(String::as_str)),
     )?;
-    let pgf = picture.pgf(tex_escape);
+    let pgf = picture.pgf();
     write_atomically(output, picture.svg.as_bytes())?;
     write_atomically(&tex, pgf.as_bytes())?;
     write_atomically(&data, csv.as_bytes())?;
