@@ -18,7 +18,6 @@ pub mod judge;
 pub mod minimum;
 pub mod numeric;
 pub mod parallel;
-pub mod region_audit;
 pub mod report;
 pub mod spec_audit;
 pub mod status;
