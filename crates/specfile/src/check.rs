@@ -103,6 +103,9 @@ pub enum Check {
     /// Unity and nonnegativity on the range: the convex-hull property of
     /// every curve `Σ bᵢPᵢ` (the standard sufficient condition).
     ConvexHull { range: Option<ParamRange> },
+    /// The functions are linearly independent for every parameter value of
+    /// the range (the declared ranges without one).
+    Independent { range: Option<ParamRange> },
     /// The uniform B-spline assembled from the `n` functions (piece `k` is
     /// function `n − 1 − k`) is `Cᵏ` at its knots.
     Continuity { order: usize },

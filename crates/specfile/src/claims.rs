@@ -182,6 +182,9 @@ fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
         "convex-hull" => Check::ConvexHull {
             range: one_param_range(src, spec, &c.range)?,
         },
+        "independent" => Check::Independent {
+            range: one_param_range(src, spec, &c.range)?,
+        },
         "monotone" => monotone(src, spec, c)?,
         "symmetry" => symmetry(src, spec, c)?,
         "endpoint-values" => Check::EndpointValues {
@@ -218,7 +221,7 @@ fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
             return src.invalid(
                 c.check.span(),
                 "claims.check",
-                format!("`{other}`: expected unity, nonnegative, convex-hull, monotone, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join or continuity"),
+                format!("`{other}`: expected unity, nonnegative, convex-hull, independent, monotone, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join or continuity"),
             );
         }
     };

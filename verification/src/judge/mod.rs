@@ -10,6 +10,7 @@ pub mod continuity;
 pub mod curve;
 pub mod domain;
 pub mod endpoint;
+pub mod independence;
 pub mod join;
 pub mod nonnegative;
 pub mod region;

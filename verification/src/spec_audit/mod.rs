@@ -138,6 +138,7 @@ pub fn decide(spec: &Spec, claim: &SpecClaim) -> Verdict {
             judge::nonnegative::nonnegative_claim(spec, range.as_ref(), *maximal)
         }
         Check::ConvexHull { range } => judge::nonnegative::convex_hull(spec, range.as_ref()),
+        Check::Independent { range } => judge::independence::independent(spec, range.as_ref()),
         Check::Monotone { items, range } => {
             judge::nonnegative::monotone_claim(spec, items, range.as_ref())
         }
