@@ -23,7 +23,7 @@ use crate::status::Status;
 use crate::verdict::Verdict;
 
 /// How independence is decided, as the report states it.
-pub const METHOD: &str = "exact Wronskian in the symbolic ring; its coefficients in the independent monomials tᵃcᵇsᵉ (e ≤ 1) of the normal form; a coefficient certified nonzero on the range (interval branch and bound) proves independence, a rational parameter value where all vanish (exact) refutes it";
+pub const METHOD: &str = "exact Wronskian in the symbolic ring; its coefficients in the independent monomials t^a·c^b·s^e (e ≤ 1) of the normal form; a coefficient certified nonzero on the range (interval branch and bound) proves independence, a rational parameter value where all vanish (exact) refutes it";
 
 /// Most functions whose Wronskian is expanded (`n!` terms).
 const MAX_FUNCTIONS: usize = 6;
@@ -179,7 +179,7 @@ pub fn independent<B: ExactBasis>(basis: &B, range: Option<&ParamRange>) -> Verd
                     Status::Holds,
                     METHOD,
                     vec![format!(
-                        "{header}: the {} coefficients of its numerator have no common factor (gcd 1, exact), so W ≢ 0 for every parameter value: independent",
+                        "{header}: the {} coefficients of its numerator have no common factor (gcd 1, exact), so W is not identically 0 for every parameter value: independent",
                         coeffs.len()
                     )],
                 );
@@ -190,7 +190,7 @@ pub fn independent<B: ExactBasis>(basis: &B, range: Option<&ParamRange>) -> Verd
                     Status::Holds,
                     METHOD,
                     vec![format!(
-                        "{header}: the gcd {g} of the coefficients of its numerator has one strict sign for {} (certified), so W ≢ 0 there: independent",
+                        "{header}: the gcd {g} of the coefficients of its numerator has one strict sign for {} (certified), so W is not identically 0 there: independent",
                         shown_range.clone().unwrap_or_default()
                     )],
                 );
@@ -205,7 +205,7 @@ pub fn independent<B: ExactBasis>(basis: &B, range: Option<&ParamRange>) -> Verd
                 Status::Holds,
                 METHOD,
                 vec![format!(
-                    "{header}: its numerator has the constant coefficient {c}, so W ≢ 0 for every parameter value: independent"
+                    "{header}: its numerator has the constant coefficient {c}, so W is not identically 0 for every parameter value: independent"
                 )],
             );
         }
@@ -214,7 +214,7 @@ pub fn independent<B: ExactBasis>(basis: &B, range: Option<&ParamRange>) -> Verd
                 Status::Holds,
                 METHOD,
                 vec![format!(
-                    "{header}: the coefficient {q} of its numerator has one strict sign for {} (certified), so W ≢ 0 there: independent",
+                    "{header}: the coefficient {q} of its numerator has one strict sign for {} (certified), so W is not identically 0 there: independent",
                     shown_range.clone().unwrap_or_default()
                 )],
             );
