@@ -1,16 +1,32 @@
 //! Claims of the second list of `shared/claims.md` ("More claims:
 //! properties, shapes, conics, and the arithmetic of the text") that the
 //! judges decide so far: linear independence, the convex hull, affine
-//! invariance. Each states what is printed and calls a judge.
+//! invariance, conic arcs. Each states what is printed and calls a judge.
 
 use trig_core::Family;
+use trig_symbolic::Sym;
 
 use crate::claim::{Claim, Seed};
-use crate::judge::{independence, nonnegative, unity};
+use crate::judge::{independence, nonnegative, span, unity};
+use crate::status::Status;
 use crate::verdict::Verdict;
 
 /// In report order (after each document's first-list claims).
 pub const CLAIMS: &[Claim] = &[
+    Claim {
+        id: "T40",
+        seed: Seed::S001,
+        source: "1.2 and 2.3.1 (quoting Bashir et al.)",
+        statement: "\"polynomial splines are incapable of generating circular arcs and conical shapes\": no polynomial spline segment traces an arc of a conic",
+        check: t40,
+    },
+    Claim {
+        id: "T41",
+        seed: Seed::S001,
+        source: "1.2, 1.3, 1.5, 2.3.2 (implicit for (3.7))",
+        statement: "the proposed trigonometric spline (3.7) represents conic shapes (circular arcs) that polynomials cannot",
+        check: t41,
+    },
     Claim {
         id: "T50",
         seed: Seed::S001,
@@ -31,6 +47,13 @@ pub const CLAIMS: &[Claim] = &[
         source: "3.1.2",
         statement: "affine invariance L(Σ S_j F_j(n)) = Σ L(S_j) F_j(n) (sum written 0 … n)",
         check: m17,
+    },
+    Claim {
+        id: "S3",
+        seed: Seed::S003,
+        source: "Remark 1 (b)",
+        statement: "\"the standard cubic uniform B-spline curves cannot exactly represent arcs of ellipse and arcs of parabola\"",
+        check: s3,
     },
     Claim {
         id: "D18",
@@ -67,4 +90,49 @@ fn m17() -> Verdict {
 
 fn d18() -> Verdict {
     independence::independent(&Family::Seed002Quartic, None)
+}
+
+/// A claim that a basis cannot trace a curve, decided by the span judge:
+/// refuted by the control points that trace it.
+fn cannot_trace(family: Family, curve: &str, targets: &[(&str, Sym)], why: &str) -> Verdict {
+    let mut v = span::reproduces(&family, curve, targets);
+    v.status = match v.status {
+        Status::Holds => Status::Fails,
+        Status::Fails => Status::Holds,
+        other => other,
+    };
+    v.evidence.insert(0, why.to_string());
+    v
+}
+
+/// The parabola `(t, t²)`, a conic, is a polynomial curve: the cubic
+/// Bernstein basis traces it.
+fn t40() -> Verdict {
+    let t = Sym::var("t");
+    cannot_trace(
+        Family::Bernstein3,
+        "parabola arc (t, t²), t ∈ [0, 1]",
+        &[("x", t.clone()), ("y", t.clone() * &t)],
+        "a parabola, a conic, is a polynomial curve: traced by the cubic Bézier basis",
+    )
+}
+
+/// The unit circle `(cos θ, sin θ)` in the span of (3.7): for which `m`.
+fn t41() -> Verdict {
+    span::reproduces(
+        &Family::ThesisCubic,
+        "unit circle arc (cos θ, sin θ), θ ∈ [0, π/2]",
+        &[("x", Sym::var("c")), ("y", Sym::var("s"))],
+    )
+}
+
+/// The parabola `(t, t²)` is traced by the uniform cubic B-spline segment.
+fn s3() -> Verdict {
+    let t = Sym::var("t");
+    cannot_trace(
+        Family::BSpline3,
+        "parabola arc (t, t²), t ∈ [0, 1]",
+        &[("x", t.clone()), ("y", t.clone() * &t)],
+        "a parabola is a polynomial curve (refutes the parabola part; no ellipse arc is polynomial)",
+    )
 }

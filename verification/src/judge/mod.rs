@@ -14,5 +14,6 @@ pub mod independence;
 pub mod join;
 pub mod nonnegative;
 pub mod region;
+pub mod span;
 pub mod symmetry;
 pub mod unity;
