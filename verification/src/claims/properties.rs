@@ -28,6 +28,13 @@ pub const CLAIMS: &[Claim] = &[
         check: t41,
     },
     Claim {
+        id: "T46",
+        seed: Seed::S001,
+        source: "3.2.4 Figure 3.3(a) text, 3.4",
+        statement: "the quadratic curve lies in the convex hull of P0, P1, P2 (\"inside the control polygon\") and has geometric invariance, for β ≥ 0",
+        check: t46,
+    },
+    Claim {
         id: "T50",
         seed: Seed::S001,
         source: "Definition 3.2 (implicit: \"four basis functions\")",
@@ -49,11 +56,32 @@ pub const CLAIMS: &[Claim] = &[
         check: m17,
     },
     Claim {
+        id: "M18",
+        seed: Seed::S000,
+        source: "5.1.1",
+        statement: "rational and NURBS curves lie in the convex hull of the control polygon (Definition 3 allows \"non-negative weights\")",
+        check: m18,
+    },
+    Claim {
+        id: "M19",
+        seed: Seed::S000,
+        source: "5.1.2",
+        statement: "affine invariance of the rational/NURBS curve",
+        check: m19,
+    },
+    Claim {
         id: "S3",
         seed: Seed::S003,
         source: "Remark 1 (b)",
         statement: "\"the standard cubic uniform B-spline curves cannot exactly represent arcs of ellipse and arcs of parabola\"",
         check: s3,
+    },
+    Claim {
+        id: "D13",
+        seed: Seed::S002,
+        source: "Theorem 2 (4)",
+        statement: "the curve (2) lies \"inside its control polygon spanned by P0 … P5\" (convex hull), w_i > 0",
+        check: d13,
     },
     Claim {
         id: "D18",
@@ -135,4 +163,61 @@ fn s3() -> Verdict {
         &[("x", t.clone()), ("y", t.clone() * &t)],
         "a parabola is a polynomial curve (refutes the parabola part; no ellipse arc is polynomial)",
     )
+}
+
+/// The rational functions `Rⱼ = wⱼbⱼ / Σ wₖbₖ` of a basis with symbolic
+/// weights `w0, w1, …`.
+fn rational(family: Family) -> Vec<Sym> {
+    let b = crate::exact::basis(family);
+    let weighted: Vec<Sym> = b
+        .iter()
+        .enumerate()
+        .map(|(j, f)| Sym::var(&format!("w{j}")) * f)
+        .collect();
+    let total = crate::exact::sum(&weighted);
+    weighted.iter().map(|f| f.clone() / &total).collect()
+}
+
+/// Convex hull (unity and nonnegativity for `β ∈ [0, ∞)`, the printed
+/// range) and geometric (affine) invariance, which is the unity part.
+fn t46() -> Verdict {
+    let range = trig_core::ParamRange::parse("[0, inf)").expect("a valid range");
+    let mut v = nonnegative::convex_hull(&Family::ThesisQuadratic, Some(&range));
+    v.evidence.insert(
+        0,
+        "geometric (affine) invariance is the partition of unity (an affine map commutes with Σ H_i P_i exactly when Σ H_i = 1), decided below with the convex hull",
+    );
+    v
+}
+
+/// With weights `w ≥ 0` the rational functions have the signs of the
+/// `F_j` (all weights 1 gives the `F_j` themselves): the convex hull needs
+/// the segment functions nonnegative on the published range.
+fn m18() -> Verdict {
+    let mut v = nonnegative::convex_hull(&Family::Seed000Uniform, None);
+    v.evidence.insert(
+        0,
+        "R_j = w_j F_j / Σ w_k F_k with w ≥ 0 sum to 1; with all weights 1 they are the F_j, so a negative F_j refutes the convex hull for rational curves too",
+    );
+    v
+}
+
+/// `Σ Rⱼ = 1` identically for symbolic weights: affine invariance.
+fn m19() -> Verdict {
+    crate::exact::identity(
+        "Σ w_j F_j / Σ w_k F_k − 1 (weights symbolic)",
+        &crate::exact::sum(&rational(Family::Seed000Uniform)),
+        &Sym::one(),
+    )
+}
+
+/// For `wᵢ > 0` the rational functions are nonnegative and sum to 1 when
+/// the quartic functions are: the convex hull of the rational curve.
+fn d13() -> Verdict {
+    let mut v = nonnegative::convex_hull(&Family::Seed002Quartic, None);
+    v.evidence.insert(
+        0,
+        "R_i = w_i b_i / Σ w_j b_j with every w_i > 0 is ≥ 0 where the b_i are, and Σ R_i = 1: decided on the b_i",
+    );
+    v
 }
