@@ -28,6 +28,13 @@ pub const CLAIMS: &[Claim] = &[
         check: t41,
     },
     Claim {
+        id: "T43",
+        seed: Seed::S001,
+        source: "3.2.3, text after Figure 3.2",
+        statement: "β = 0 ⇒ H0 ≡ H2 ≡ 0, H1 ≡ 1 (the curve is the single point P1)",
+        check: t43,
+    },
+    Claim {
         id: "T46",
         seed: Seed::S001,
         source: "3.2.4 Figure 3.3(a) text, 3.4",
@@ -40,6 +47,13 @@ pub const CLAIMS: &[Claim] = &[
         source: "Definition 3.2 (implicit: \"four basis functions\")",
         statement: "b0 … b3 of (3.7) are linearly independent for every m",
         check: t50,
+    },
+    Claim {
+        id: "T62",
+        seed: Seed::S001,
+        source: "6.6",
+        statement: "the common value 0.6 lies in the admissible interval of all four methods (m ∈ (−2,1], η ∈ (1/2,2], λ ∈ [−2,1], α ∈ (0,2))",
+        check: t62,
     },
     Claim {
         id: "M16",
@@ -220,4 +234,57 @@ fn d13() -> Verdict {
         "R_i = w_i b_i / Σ w_j b_j with every w_i > 0 is ≥ 0 where the b_i are, and Σ R_i = 1: decided on the b_i",
     );
     v
+}
+
+/// The quadratic basis (3.1) at `β = 0`, exactly.
+fn t43() -> Verdict {
+    let at_zero: Vec<Sym> = crate::exact::basis(Family::ThesisQuadratic)
+        .iter()
+        .map(|h| h.subs("beta", &Sym::zero()))
+        .collect();
+    crate::exact::identities(
+        [("H0", 0), ("H1", 1), ("H2", 0)]
+            .iter()
+            .zip(at_zero)
+            .map(|((name, want), h)| (format!("{name} at β = 0 ≡ {want}"), h, Sym::int(*want)))
+            .collect(),
+    )
+}
+
+/// 0.6 in each printed interval, and every function of each basis
+/// certified ≥ 0 at the parameter 0.6 (admissible: the basis is
+/// nonnegative there, whatever the printed interval says).
+fn t62() -> Verdict {
+    let value = rug::Rational::from((3, 5));
+    let methods = [
+        (Family::ThesisCubic, "m", "(-2, 1]"),
+        (Family::MajeedQayyum, "eta", "(1/2, 2]"),
+        (Family::Han, "lambda", "[-2, 1]"),
+        (Family::Usman, "alpha", "(0, 2)"),
+    ];
+    let parts = methods
+        .iter()
+        .map(|(family, name, printed)| {
+            let range = trig_core::ParamRange::parse(printed).expect("a valid range");
+            let inside = range.contains(&value);
+            let mut v = crate::judge::certificate::nonnegative_on(
+                family,
+                &crate::exact::basis(*family),
+                Some(name),
+                &trig_certify::ParamBox::closed(value.clone(), value.clone()),
+            );
+            v.evidence.insert(
+                0,
+                format!(
+                    "{name} = 3/5 {} the printed interval {range}",
+                    if inside { "lies in" } else { "lies outside" }
+                ),
+            );
+            if !inside {
+                v.status = Status::Fails;
+            }
+            (format!("{} at {name} = 3/5", family.info().id), v)
+        })
+        .collect();
+    Verdict::all(crate::judge::certificate::CERTIFIED, parts)
 }
