@@ -224,3 +224,33 @@ fn linear_independence_is_decided_both_ways() {
     let v = spec_audit::decide(&spec, &spec.claims[spec.claims.len() - 1]);
     assert_eq!(v.status, Status::Holds, "{v:?}");
 }
+
+/// `check = "conic"` both ways (examples/independent/README.md, Part D(c)):
+/// the quadratic C-Bézier basis with P0 = (1, 0), P1 = (1, tan(α/2)) (written
+/// (1 − cos α)/sin α), P2 = (cos α, sin α) traces the unit circle exactly;
+/// Han's quadratic with the quarter-circle polygon (1, 0), (1, 1), (0, 1)
+/// does not for λ ≠ 0 — at λ = 1 and (sin t, cos t) = (4/5, 3/5) the
+/// residual X² + Y² − 1 is 4λ(13λ + 85)/625 = 392/625.
+#[test]
+fn conic_arcs_are_decided_both_ways() {
+    let claim = |points: &str| {
+        format!(
+            "[[claims]]\nid = \"CIRCLE\"\nsource = \"test\"\nstatement = \"circle\"\ncheck = \"conic\"\nvalues = [{points}]\nvalue = \"X^2 + Y^2 - 1\"\n"
+        )
+    };
+    let spec = example_with(
+        "c-bezier-quadratic",
+        &claim(
+            "\"P0 = (1, 0)\", \"P1 = (1, (1 - cos(alpha))/sin(alpha))\", \"P2 = (cos(alpha), sin(alpha))\"",
+        ),
+    );
+    let v = spec_audit::decide(&spec, &spec.claims[spec.claims.len() - 1]);
+    assert_eq!(v.status, Status::Holds, "{v:?}");
+    let spec = example_with(
+        "han-quadratic",
+        &claim("\"P0 = (1, 0)\", \"P1 = (1, 1)\", \"P2 = (0, 1)\""),
+    );
+    let v = spec_audit::decide(&spec, &spec.claims[spec.claims.len() - 1]);
+    assert_eq!(v.status, Status::Fails, "{v:?}");
+    assert!(format!("{v:?}").contains("392/625"), "{v:?}");
+}

@@ -103,6 +103,20 @@ pub enum Check {
     /// Unity and nonnegativity on the range: the convex-hull property of
     /// every curve `Σ bᵢPᵢ` (the standard sufficient condition).
     ConvexHull { range: Option<ParamRange> },
+    /// The curve `Σ bᵢPᵢ` with the printed control points (coordinates may
+    /// depend on the parameters) satisfies the printed implicit equation
+    /// in `X`, `Y` identically (a circle `X² + Y² − 1`, an ellipse, a
+    /// parabola).
+    Conic {
+        /// `(X, Y)` of each control point, in function order.
+        points: Vec<(Sym, Sym)>,
+        /// The points as printed.
+        points_text: Vec<String>,
+        equation: Sym,
+        equation_text: String,
+        /// Divisions of the printed points that vanish inside the ranges.
+        singular: Vec<String>,
+    },
     /// The functions are linearly independent for every parameter value of
     /// the range (the declared ranges without one).
     Independent { range: Option<ParamRange> },

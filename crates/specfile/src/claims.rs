@@ -182,6 +182,7 @@ fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
         "convex-hull" => Check::ConvexHull {
             range: one_param_range(src, spec, &c.range)?,
         },
+        "conic" => conic(src, spec, c)?,
         "independent" => Check::Independent {
             range: one_param_range(src, spec, &c.range)?,
         },
@@ -221,7 +222,7 @@ fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
             return src.invalid(
                 c.check.span(),
                 "claims.check",
-                format!("`{other}`: expected unity, nonnegative, convex-hull, independent, monotone, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join or continuity"),
+                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, monotone, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join or continuity"),
             );
         }
     };
@@ -230,6 +231,84 @@ fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
         source: c.source.clone(),
         statement: c.statement.clone(),
         check,
+    })
+}
+
+/// `values = ["P0 = (x, y)", …]` (one point per function, in order) and
+/// `value = "equation in X, Y"`.
+fn conic(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check> {
+    if spec.params.iter().any(|p| p.name == "X" || p.name == "Y") {
+        return src.invalid(
+            c.check.span(),
+            "claims.check",
+            "`conic` writes its equation in X and Y, which are parameter names here".into(),
+        );
+    }
+    let items = need(src, c, &c.values, "values")?;
+    if items.len() != spec.functions.len() {
+        return src.invalid(
+            c.check.span(),
+            "claims.values",
+            format!(
+                "expected one control point per function ({}), found {}",
+                spec.functions.len(),
+                items.len()
+            ),
+        );
+    }
+    let (mut points, mut points_text, mut singular) = (Vec::new(), Vec::new(), Vec::new());
+    for item in items {
+        let text = item.get_ref();
+        let malformed = || {
+            src.invalid(
+                item.span(),
+                "claims.values",
+                format!("`{text}`: expected `NAME = (X, Y)`"),
+            )
+        };
+        let Some((_, pair)) = text.split_once('=') else {
+            return malformed();
+        };
+        let inner = pair.trim();
+        let Some(inner) = inner.strip_prefix('(').and_then(|r| r.strip_suffix(')')) else {
+            return malformed();
+        };
+        let mut depth = 0i32;
+        let split = inner.char_indices().find(|&(_, ch)| {
+            depth += match ch {
+                '(' => 1,
+                ')' => -1,
+                _ => 0,
+            };
+            ch == ',' && depth == 0
+        });
+        let Some((at, _)) = split else {
+            return malformed();
+        };
+        // errors point into the item: the offset of each coordinate in it
+        let start = text.len() - pair.trim_start().len() + 1;
+        let mut coordinate = |part: &str, offset: usize| -> Result<Sym> {
+            let (value, why) = spec.parse_claim_formula(part, &[], &[]).map_err(|mut e| {
+                e.position += text[..offset].chars().count();
+                src.formula_error(item, e)
+            })?;
+            singular.extend(why);
+            Ok(value)
+        };
+        let x = coordinate(&inner[..at], start)?;
+        let y = coordinate(&inner[at + 1..], start + at + 1)?;
+        points.push((x, y));
+        points_text.push(text.trim().to_string());
+    }
+    let item = need(src, c, &c.value, "value")?;
+    let extra = ["X".to_string(), "Y".to_string()];
+    let equation = formula_in(src, spec, item, "", item.get_ref(), &extra)?;
+    Ok(Check::Conic {
+        points,
+        points_text,
+        equation,
+        equation_text: item.get_ref().trim().to_string(),
+        singular,
     })
 }
 

@@ -252,3 +252,26 @@ fn curve_witness(
         values,
     ))
 }
+
+/// The curve `Σ bᵢPᵢ` with the printed points satisfies the printed
+/// implicit equation in `X`, `Y` identically (exact); a failure shows the
+/// residual and a point where it is nonzero.
+pub fn conic<B: ExactBasis>(
+    basis: &B,
+    points: &[(Sym, Sym)],
+    equation: &Sym,
+    equation_text: &str,
+) -> Verdict {
+    let b = basis_of(basis);
+    let along = |pick: fn(&(Sym, Sym)) -> &Sym| {
+        b.iter()
+            .zip(points)
+            .fold(Sym::zero(), |acc, (f, p)| acc + &(f.clone() * pick(p)))
+    };
+    let (x, y) = (along(|p| &p.0), along(|p| &p.1));
+    let residual = equation.subs("X", &x).subs("Y", &y);
+    let label = format!("{equation_text} at (X, Y) = Σ bᵢPᵢ");
+    let mut v = crate::exact::identity(&label, &residual, &Sym::zero());
+    v.method = "exact: the printed equation with X, Y replaced by the coordinates of Σ bᵢPᵢ, decided in the symbolic ring".into();
+    v
+}

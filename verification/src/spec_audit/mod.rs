@@ -138,6 +138,25 @@ pub fn decide(spec: &Spec, claim: &SpecClaim) -> Verdict {
             judge::nonnegative::nonnegative_claim(spec, range.as_ref(), *maximal)
         }
         Check::ConvexHull { range } => judge::nonnegative::convex_hull(spec, range.as_ref()),
+        Check::Conic {
+            points,
+            points_text,
+            equation,
+            equation_text,
+            singular,
+        } => {
+            let mut v = judge::span::conic(spec, points, equation, equation_text);
+            v.evidence.insert(
+                0,
+                format!("control points as printed: {}", points_text.join("; ")),
+            );
+            for why in singular {
+                v.evidence.push(format!(
+                    "the printed points are singular inside the ranges: {why}"
+                ));
+            }
+            v
+        }
         Check::Independent { range } => judge::independence::independent(spec, range.as_ref()),
         Check::Monotone { items, range } => {
             judge::nonnegative::monotone_claim(spec, items, range.as_ref())
