@@ -59,3 +59,44 @@ fn item3_the_square_root_of_zero_is_a_value_not_a_hang() {
     assert!(text.contains("b0 = 7.5e-1"), "{text}");
     assert!(text.contains("b1 = 2.5e-1"), "{text}");
 }
+
+/// Item 4: a rational curve table where every function vanishes at an end
+/// (`Σ wᵢbᵢ = 0` there) is a typed error naming the end, not a panic of
+/// the exact ring ("division of 0 by exact zero", exit 101).
+#[test]
+fn item4_a_vanishing_weighted_sum_is_an_error_naming_the_end() {
+    let path = scratch(
+        "vanishing.toml",
+        "id = \"vanishing\"\ncitation = \"issue 22\"\nvariable = \"polynomial\"\n\
+         [[functions]]\nname = \"b0\"\nformula = \"t*(1 - t)\"\n\
+         [[functions]]\nname = \"b1\"\nformula = \"t^2\"\n",
+    );
+    for order in ["0", "2"] {
+        let err = error_line(&[
+            "table",
+            "--spec",
+            &path,
+            "--order",
+            order,
+            "--curve",
+            "--rational",
+        ]);
+        assert!(
+            err.contains("not defined at the start of the domain (t = 0)"),
+            "{err}"
+        );
+    }
+    // the end where the sum is 1 is fine alone
+    let out = stdout_ok(&[
+        "table",
+        "--spec",
+        &path,
+        "--order",
+        "1",
+        "--curve",
+        "--rational",
+        "--at",
+        "end",
+    ]);
+    assert!(out.contains("| 0 | (1)·P₁ |"), "{out}");
+}

@@ -14,5 +14,6 @@ pub use join::{
 pub mod table;
 
 pub use table::{
-    End, KnotDerivatives, Wrt, curve_endpoint_derivatives, endpoint_derivatives, knot_derivatives,
+    End, KnotDerivatives, VanishingDenominator, Wrt, curve_endpoint_derivatives,
+    endpoint_derivatives, knot_derivatives, rational_curve_endpoint_derivatives,
 };

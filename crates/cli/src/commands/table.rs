@@ -6,7 +6,10 @@ use rug::Rational;
 use trig_core::certified::{self, CheckedF64, F64_CHECK_DIGITS, at_bits, check_f64, to_digits};
 use trig_core::decimal::{bound_text, max_digits};
 use trig_core::{Basis, CoreError, Interval, Ring, parse_exact};
-use trig_deriv::{End, Wrt, curve_endpoint_derivatives, endpoint_derivatives, knot_derivatives};
+use trig_deriv::{
+    End, VanishingDenominator, Wrt, curve_endpoint_derivatives, endpoint_derivatives,
+    knot_derivatives, rational_curve_endpoint_derivatives,
+};
 use trig_symbolic::Sym;
 
 use super::eval::{Mode, Subject, param_pairs, precision_mode, shortfall};
@@ -124,7 +127,7 @@ pub fn run(args: &TableArgs) -> CmdResult {
     let (blocks, mode) = if args.numeric {
         numeric(args, &family)?
     } else {
-        (exact(args, &family), "exact".to_string())
+        (exact(args, &family)?, "exact".to_string())
     };
     let heading = format!(
         "{id} ({}): derivatives {}, {mode}",
@@ -136,7 +139,7 @@ pub fn run(args: &TableArgs) -> CmdResult {
 
 /// The exact table: parameters (and `h`) as symbols, π symbolic; curve
 /// tables as combinations of the control points `P0, P1, …`.
-fn exact(args: &TableArgs, family: &Subject) -> Vec<Block> {
+fn exact(args: &TableArgs, family: &Subject) -> Result<Vec<Block>, CliError> {
     let params: Vec<Sym> = family.param_names().iter().map(|p| Sym::var(p)).collect();
     let h = if Wrt::from(args.wrt) == Wrt::X {
         Sym::var("h")
@@ -147,7 +150,8 @@ fn exact(args: &TableArgs, family: &Subject) -> Vec<Block> {
     let names: Vec<String> = (0..n).map(|i| format!("P{i}")).collect();
     let points: Vec<Sym> = names.iter().map(|p| Sym::var(p)).collect();
     let weights: Vec<Sym> = (0..n).map(|i| Sym::var(&format!("w{i}"))).collect();
-    build(args, family, &params, &h, Some((&points, &weights)))
+    Ok(build(args, family, &params, &h, Some((&points, &weights)))
+        .map_err(|e| CliError::Usage(e.to_string()))?
         .into_iter()
         .map(|b| {
             b.map(|v| {
@@ -158,7 +162,7 @@ fn exact(args: &TableArgs, family: &Subject) -> Vec<Block> {
                 }
             })
         })
-        .collect()
+        .collect())
 }
 
 /// The numeric table at exact parameter values: f64 with a certified
@@ -186,7 +190,11 @@ fn numeric(args: &TableArgs, family: &Subject) -> Result<(Vec<Block>, String), C
             &p.iter().map(mk).collect::<Vec<_>>(),
             &mk(&h),
             None,
-        );
+        )
+        // numeric tables have no curve: nothing divides by a weighted sum
+        .map_err(|e| CoreError::DivisionByZero {
+            quantity: e.to_string(),
+        })?;
         let cells = blocks.iter().flat_map(Block::cells).cloned().collect();
         last = blocks;
         Ok(cells)
@@ -206,7 +214,8 @@ fn numeric(args: &TableArgs, family: &Subject) -> Result<(Vec<Block>, String), C
                 &p.iter().map(Rational::to_f64).collect::<Vec<_>>(),
                 &h.to_f64(),
                 None,
-            );
+            )
+            .map_err(|e| CliError::Usage(e.to_string()))?;
             let values: Vec<f64> = floats.iter().flat_map(Block::cells).copied().collect();
             let mut checked = check_f64(&values, &e.values).into_iter();
             let (mut worst, mut replaced) = (Rational::new(), 0);
@@ -283,7 +292,7 @@ fn build<T: Ring>(
     params: &[T],
     h: &T,
     curve: CurveData<'_, T>,
-) -> Vec<Block<T>> {
+) -> Result<Vec<Block<T>>, VanishingDenominator> {
     macro_rules! with_order {
         ($($n:literal),*) => {
             match args.order {
@@ -301,7 +310,7 @@ fn blocks<T: Ring, const K: usize>(
     params: &[T],
     h: &T,
     curve: CurveData<'_, T>,
-) -> Vec<Block<T>> {
+) -> Result<Vec<Block<T>>, VanishingDenominator> {
     let wrt = Wrt::from(args.wrt);
     let orders = || (0..K).map(|k| k.to_string());
     if args.at == At::Knots {
@@ -320,12 +329,12 @@ fn blocks<T: Ring, const K: usize>(
             .enumerate()
             .map(|(k, label)| (label, cols.iter().map(|c| c[k].clone()).collect()))
             .collect();
-        return vec![Block {
+        return Ok(vec![Block {
             title: "one-sided derivatives of the B-spline basis function at knots n = 0..4".into(),
             corner: "k".into(),
             columns,
             rows,
-        }];
+        }]);
     }
     let ends: &[End] = match args.at {
         At::Start => &[End::Start],
@@ -336,16 +345,14 @@ fn blocks<T: Ring, const K: usize>(
         .map(|&end| {
             let title = format!("{end} of the domain");
             if let (true, Some((points, weights))) = (args.curve, curve) {
-                let values = curve_endpoint_derivatives::<T, K>(
-                    family,
-                    params,
-                    points,
-                    args.rational.then_some(weights),
-                    end,
-                    wrt,
-                    h,
-                );
-                Block {
+                let values = if args.rational {
+                    rational_curve_endpoint_derivatives::<T, K>(
+                        family, params, points, weights, end, wrt, h,
+                    )?
+                } else {
+                    curve_endpoint_derivatives::<T, K>(family, params, points, None, end, wrt, h)
+                };
+                Ok(Block {
                     title: format!(
                         "{title}: {}",
                         if args.rational {
@@ -360,10 +367,10 @@ fn blocks<T: Ring, const K: usize>(
                         .zip(values.iter())
                         .map(|(l, v)| (l, vec![v.clone()]))
                         .collect(),
-                }
+                })
             } else {
                 let table = endpoint_derivatives::<T, K>(family, params, end, wrt, h);
-                Block {
+                Ok(Block {
                     title,
                     corner: "k".into(),
                     columns: family.function_names(),
@@ -371,7 +378,7 @@ fn blocks<T: Ring, const K: usize>(
                         .enumerate()
                         .map(|(k, label)| (label, table.iter().map(|f| f[k].clone()).collect()))
                         .collect(),
-                }
+                })
             }
         })
         .collect()
