@@ -100,3 +100,53 @@ fn item4_a_vanishing_weighted_sum_is_an_error_naming_the_end() {
     ]);
     assert!(out.contains("| 0 | (1)·P₁ |"), "{out}");
 }
+
+/// A one-parameter spec (`p` printed as `symbol`) with the formula `f` and
+/// its complement.
+fn symbol_spec(file: &str, variable: &str, symbol: &str, f: &str) -> String {
+    scratch(
+        file,
+        &format!(
+            "id = \"shadow\"\ncitation = \"issue 22\"\nvariable = \"{variable}\"\n\
+             [[parameters]]\nname = \"p\"\nsymbol = \"{symbol}\"\nrange = \"[0, 1]\"\n\
+             [[parameters]]\nname = \"q\"\nrange = \"[0, 1]\"\n\
+             [[functions]]\nname = \"f\"\nformula = \"{f}\"\n\
+             [[functions]]\nname = \"g\"\nformula = \"1 - ({f})\"\n"
+        ),
+    )
+}
+
+/// Item 2: a parameter's printed `symbol` may not shadow `s`, `c`, the
+/// variable or another parameter (as a parameter *name* it was already
+/// refused): with `symbol = "s"` on an angle basis, `(1 − s)²` was read
+/// with `s` the parameter, not `sin t`.
+#[test]
+fn item2_a_symbol_never_shadows_s_c_the_variable_or_a_parameter() {
+    for (variable, symbol, why) in [
+        ("angle", "s", "shorthand sin/cos"),
+        ("angle", "c", "shorthand sin/cos"),
+        ("unit-angle", "u", "`u`"),
+        ("angle", "π", "the number π"),
+        ("angle", "q", "the parameter `q`"),
+    ] {
+        let path = symbol_spec(
+            &format!("shadow-{variable}-{symbol}.toml"),
+            variable,
+            symbol,
+            "(1 - s)^2",
+        );
+        let err = error_line(&[
+            "eval", "--spec", &path, "--param", "p=1/2", "--param", "q=0", "--at", "0",
+        ]);
+        assert!(
+            err.contains("parameters.symbol") && err.contains(why),
+            "{symbol}: {err}"
+        );
+    }
+    // an honest symbol still names the parameter, on the command line too
+    let path = symbol_spec("shadow-ok.toml", "angle", "ϱ", "(1 - s)^2 + 0*ϱ");
+    let out = stdout_ok(&[
+        "eval", "--spec", &path, "--param", "ϱ=1/2", "--param", "q=0", "--at", "0", "--digits", "3",
+    ]);
+    assert!(out.contains("f = 1"), "{out}");
+}

@@ -35,6 +35,7 @@ pub mod claims;
 pub mod error;
 pub mod formula;
 pub mod frequencies;
+mod names;
 pub mod nonvanishing;
 pub mod range;
 mod raw;

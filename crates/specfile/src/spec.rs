@@ -15,6 +15,7 @@ use crate::claims::{SpecClaim, claim};
 use crate::error::{FormulaError, Result, SpecError};
 use crate::formula::{Scope, linear, lower};
 use crate::frequencies::{Usage, domain};
+use crate::names::symbol_refusal;
 use crate::nonvanishing;
 use crate::range::SpecRange;
 use crate::raw::{RawFunction, RawSpec};
@@ -458,8 +459,25 @@ fn read_params(src: &Source<'_>, raw: &RawSpec, var_name: &str) -> Result<Vec<Sp
         }
         let range = SpecRange::parse(p.range.get_ref())
             .or_else(|m| src.invalid(p.range.span(), "parameters.range", m))?;
+        let symbol = p
+            .symbol
+            .as_ref()
+            .map_or_else(|| name.clone(), |s| s.get_ref().trim().to_string());
+        let others: Vec<(&str, &str)> = raw
+            .parameters
+            .iter()
+            .filter(|q| !std::ptr::eq(*q, p))
+            .map(|q| {
+                let n = q.name.get_ref().trim();
+                (n, q.symbol.as_ref().map_or(n, |s| s.get_ref().trim()))
+            })
+            .collect();
+        if let Some(why) = symbol_refusal(&symbol, &name, var_name, RESERVED, &others) {
+            let span = p.symbol.as_ref().map_or(p.name.span(), |s| s.span());
+            return src.invalid(span, "parameters.symbol", why);
+        }
         params.push(SpecParam {
-            symbol: p.symbol.clone().unwrap_or_else(|| name.clone()),
+            symbol,
             name,
             range,
             source: p.source.clone().unwrap_or_else(|| "spec file".into()),
