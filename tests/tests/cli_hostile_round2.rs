@@ -8,6 +8,7 @@ use std::process::{Command, Output, Stdio};
 use std::time::{Duration, Instant};
 
 use trig_e2e::{binary, error_line, stdout_ok};
+use trig_symbolic::Sym;
 
 /// A scratch file for this test process.
 fn scratch(name: &str, text: &str) -> String {
@@ -149,4 +150,120 @@ fn item2_a_symbol_never_shadows_s_c_the_variable_or_a_parameter() {
         "eval", "--spec", &path, "--param", "ϱ=1/2", "--param", "q=0", "--at", "0", "--digits", "3",
     ]);
     assert!(out.contains("f = 1"), "{out}");
+}
+
+/// A cubic with one shape parameter named `param` (and an unused second
+/// parameter `other`): `b₂ = 3t²(1 − t) − p·t²(1 − t)`, `b₃ = t³ + p·t²(1 − t)`,
+/// so that at `t = 1` the curve's tangent is `(3 − p)(P₃ − P₂)` and a `G¹`
+/// join forces `Q₁ = P₃ + g(3 − p)/3·(P₃ − P₂)` with its own factor `g`;
+/// `claims` are appended.
+fn shaped_cubic(file: &str, param: &str, other: &str, claims: &str) -> String {
+    scratch(
+        file,
+        &format!(
+            "id = \"shaped\"\ncitation = \"issue 22\"\nvariable = \"polynomial\"\n\
+             [[parameters]]\nname = \"{other}\"\nrange = \"[0, 1]\"\n\
+             [[parameters]]\nname = \"{param}\"\nrange = \"[0, 1]\"\n\
+             [[functions]]\nname = \"b0\"\nformula = \"(1 - t)^3\"\n\
+             [[functions]]\nname = \"b1\"\nformula = \"3*t*(1 - t)^2\"\n\
+             [[functions]]\nname = \"b2\"\nformula = \"3*t^2*(1 - t) - {param}*t^2*(1 - t)\"\n\
+             [[functions]]\nname = \"b3\"\nformula = \"t^3 + {param}*t^2*(1 - t)\"\n{claims}"
+        ),
+    )
+}
+
+fn v(name: &str) -> Sym {
+    Sym::var(name)
+}
+
+fn json(args: &[&str]) -> serde_json::Value {
+    serde_json::from_str(&stdout_ok(args)).expect("JSON output")
+}
+
+/// Item 1: the symbols the tool introduces never merge with a user name.
+/// A spec with parameters `alpha` and `gamma` moved the `G¹` factor to
+/// `gamma` — the parameter — and printed `Q₁ = (−γ² − γ)·P₂ + …`; the factor
+/// must be a symbol of its own and the formula the true one.
+#[test]
+fn item1_a_g1_factor_never_merges_with_a_parameter() {
+    let path = shaped_cubic("alpha-gamma.toml", "gamma", "alpha", "");
+    let out = json(&["join", "--spec", &path, "--kind", "g1", "--format", "json"]);
+    let factor = out["factors"][0].as_str().expect("factor").to_string();
+    assert!(!["alpha", "gamma"].contains(&factor.as_str()), "{out}");
+    let (p2, p3, g) = (v("P2"), v("P3"), v("gamma"));
+    let truth = p3.clone() + &(v(&factor) * &(Sym::int(3) - &g) / &Sym::int(3) * &(p3 - &p2));
+    assert_eq!(out["forced"][1]["point"], "Q1");
+    assert_eq!(out["forced"][1]["formula"], truth.to_string(), "{out}");
+    // the text output names the factor it uses in its conditions
+    let text = stdout_ok(&["join", "--spec", &path, "--kind", "g1"]);
+    let shown = Sym::var(&factor).to_unicode();
+    assert!(text.contains(&format!("Q'(0) = {shown} P'(1)")), "{text}");
+}
+
+/// Item 1: interval lengths `h₁`, `h₂` of `join --wrt x` beside a parameter
+/// `h1`: `Q₁ = P₃ + (L₂/L₁)(3 − h1)/3·(P₃ − P₂)` with lengths of their own.
+#[test]
+fn item1_interval_lengths_never_merge_with_a_parameter() {
+    let path = shaped_cubic("h1.toml", "h1", "q", "");
+    let out = json(&[
+        "join", "--spec", &path, "--kind", "c1", "--wrt", "x", "--format", "json",
+    ]);
+    let lengths: Vec<String> = out["lengths"]
+        .as_array()
+        .expect("lengths")
+        .iter()
+        .map(|l| l.as_str().expect("name").to_string())
+        .collect();
+    assert!(!lengths.contains(&"h1".to_string()), "{out}");
+    let (p2, p3, h) = (v("P2"), v("P3"), v("h1"));
+    let ratio = v(&lengths[1]) / &v(&lengths[0]);
+    let truth = p3.clone() + &(ratio * &(Sym::int(3) - &h) / &Sym::int(3) * &(p3 - &p2));
+    assert_eq!(out["forced"][1]["formula"], truth.to_string(), "{out}");
+}
+
+/// Item 1: the weights of a rational curve table beside parameters `w1`,
+/// `w2` (the rational cubic Bernstein basis): `R'(0) = 3v₁w₁/v₀·(P₁ − P₀)`
+/// with weights `v` of their own, not `3w₁²/w₀`.
+#[test]
+fn item1_weights_never_merge_with_parameters() {
+    let text = stdout_ok(&[
+        "table",
+        "--spec",
+        &trig_e2e::example("rational-cubic.toml"),
+        "--curve",
+        "--rational",
+        "--order",
+        "1",
+        "--at",
+        "start",
+    ]);
+    let row = text
+        .lines()
+        .find_map(|l| l.strip_prefix("| 1 | "))
+        .expect("order 1");
+    let (v0, v1) = (v("v0"), v("v1"));
+    let truth = Sym::int(3) * &v1 * &v("w1") / &v0 * &(v("P1") - &v("P0"));
+    let names: Vec<String> = (0..4).map(|i| format!("P{i}")).collect();
+    assert_eq!(
+        row.trim_end_matches(" |"),
+        truth.to_combination(&names),
+        "{text}"
+    );
+}
+
+/// Item 1: a printed `G¹` claim of a spec with parameters `alpha`, `gamma`
+/// uses the factor the tool names (`kappa`, see docs/spec.md), and the
+/// correction the audit prints is the true join.
+#[test]
+fn item1_an_audit_join_correction_uses_a_factor_of_its_own() {
+    let claim = "[[claims]]\nid = \"G\"\nsource = \"test\"\nstatement = \"G1 join\"\n\
+                 check = \"join\"\njoin = \"G1\"\nwrt = \"t\"\n\
+                 conditions = [\"Q0 = P3\", \"Q1 = P3 + kappa*(P3 - P2)\"]\n";
+    let path = shaped_cubic("alpha-gamma-claim.toml", "gamma", "alpha", claim);
+    let report = json(&["audit", "--spec", &path, "--claim", "G", "--format", "json"]);
+    let text = report.to_string();
+    assert!(text.contains("\"fails\""), "{text}");
+    let (p2, p3, g) = (v("P2"), v("P3"), v("gamma"));
+    let truth = p3.clone() + &(v("kappa") * &(Sym::int(3) - &g) / &Sym::int(3) * &(p3 - &p2));
+    assert!(text.contains(&format!("Q1 = {truth}")), "{text}");
 }

@@ -8,6 +8,7 @@
 mod cell;
 mod commands;
 mod format;
+mod names;
 mod output;
 
 use std::ffi::OsString;

@@ -6,7 +6,9 @@
 //! parameter. A parameter's printed symbol is therefore held to the rules
 //! of its name: one name token of the formula language, none of the
 //! reserved words (`s`, `c`, the variable, `pi`/`π`, `theta`/`θ`, the
-//! functions), and no other parameter's name or symbol.
+//! functions), and no other parameter's name or symbol. Nor may a
+//! parameter's name or symbol read as a control point `Pᵢ`, `Qᵢ`: the join
+//! and curve claims (and the standard battery's joins) write those.
 
 /// Why `symbol`, the printed symbol of parameter `name`, may not be used
 /// (`None`: it may). `reserved` are the words no parameter may take,
@@ -46,12 +48,28 @@ pub(crate) fn symbol_refusal(
             "`{symbol}`: the symbol would shadow the reserved name `{word}`{meaning} in formulas"
         ));
     }
+    if let Some(why) = control_point_refusal(symbol) {
+        return Some(why);
+    }
     others
         .iter()
         .find(|(n, s)| *n == symbol || *s == symbol)
         .map(|(n, _)| {
             format!("`{symbol}`: the symbol already names the parameter `{n}`; each name must read as one parameter")
         })
+}
+
+/// Why a parameter name or symbol that reads as a control point (`P1`,
+/// `Q₀`) may not be used (`None`: it may).
+pub(crate) fn control_point_refusal(name: &str) -> Option<String> {
+    let reading = trig_symbolic::names::reading(name);
+    let mut chars = reading.chars();
+    let point = matches!(chars.next(), Some('P' | 'Q'))
+        && !chars.as_str().is_empty()
+        && chars.all(|c| ('₀'..='₉').contains(&c));
+    point.then(|| {
+        format!("`{name}` reads as a control point ({reading}) of the joins and curve claims: choose another name")
+    })
 }
 
 #[cfg(test)]
@@ -83,5 +101,8 @@ mod tests {
         assert_eq!(refused("μ"), None);
         assert_eq!(refused("w₁"), None);
         assert_eq!(refused("m"), None);
+        assert!(refused("P₁").unwrap().contains("control point"));
+        assert!(control_point_refusal("Q10").is_some());
+        assert!(control_point_refusal("P").is_none() && control_point_refusal("Pa1").is_none());
     }
 }

@@ -15,7 +15,7 @@ use crate::claims::{SpecClaim, claim};
 use crate::error::{FormulaError, Result, SpecError};
 use crate::formula::{Scope, linear, lower};
 use crate::frequencies::{Usage, domain};
-use crate::names::symbol_refusal;
+use crate::names::{control_point_refusal, symbol_refusal};
 use crate::nonvanishing;
 use crate::range::SpecRange;
 use crate::raw::{RawFunction, RawSpec};
@@ -447,6 +447,9 @@ fn read_params(src: &Source<'_>, raw: &RawSpec, var_name: &str) -> Result<Vec<Sp
     for p in &raw.parameters {
         let name = p.name.get_ref().trim().to_string();
         let taken = params.iter().any(|q| q.name == name || q.symbol == name);
+        if let Some(why) = control_point_refusal(&name) {
+            return src.invalid(p.name.span(), "parameters.name", why);
+        }
         if !identifier(&name) || RESERVED.contains(&name.as_str()) || name == var_name || taken {
             return src.invalid(
                 p.name.span(),

@@ -21,7 +21,7 @@
 //! order), then by number of terms, then greatest leading monomial first.
 //!
 //! Names: plain text prints them as given. Unicode and LaTeX render the
-//! Greek names (`alpha, beta, eta, lambda, mu, omega, pi, theta, xi, zeta`)
+//! Greek names (`alpha`, `beta`, `gamma`, `delta`, …, `omega`: 21 letters)
 //! as letters and trailing digits as subscripts (`w0` → `w₀`, `w_{0}`);
 //! LaTeX sets other multi-letter names in `\mathrm{…}`.
 
@@ -44,14 +44,25 @@ enum Style {
 }
 
 /// Greek names: (name, Unicode, LaTeX).
-const GREEK: [(&str, &str, &str); 10] = [
+const GREEK: [(&str, &str, &str); 21] = [
     ("alpha", "α", r"\alpha"),
     ("beta", "β", r"\beta"),
+    ("chi", "χ", r"\chi"),
+    ("delta", "δ", r"\delta"),
+    ("epsilon", "ε", r"\epsilon"),
     ("eta", "η", r"\eta"),
+    ("gamma", "γ", r"\gamma"),
+    ("kappa", "κ", r"\kappa"),
     ("lambda", "λ", r"\lambda"),
     ("mu", "μ", r"\mu"),
+    ("nu", "ν", r"\nu"),
     ("omega", "ω", r"\omega"),
+    ("phi", "φ", r"\phi"),
     ("pi", "π", r"\pi"),
+    ("psi", "ψ", r"\psi"),
+    ("rho", "ρ", r"\rho"),
+    ("sigma", "σ", r"\sigma"),
+    ("tau", "τ", r"\tau"),
     ("theta", "θ", r"\theta"),
     ("xi", "ξ", r"\xi"),
     ("zeta", "ζ", r"\zeta"),
@@ -113,6 +124,11 @@ fn digits_in(table: &[char; 10], digits: &str) -> String {
         .bytes()
         .map(|b| table[usize::from(b - b'0')])
         .collect()
+}
+
+/// The Unicode form of a variable name (`lambda1` → `λ₁`): how it reads.
+pub(crate) fn unicode_name(n: &str) -> String {
+    name(n, Style::Unicode)
 }
 
 fn name(n: &str, style: Style) -> String {

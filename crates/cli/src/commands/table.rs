@@ -16,6 +16,7 @@ use super::eval::{Mode, Subject, param_pairs, precision_mode, shortfall};
 use super::{CliError, CmdResult, range_hint};
 use crate::cell::{Block, Cell, Rendered};
 use crate::format::{TableFormat, render_blocks};
+use crate::names::names_of;
 
 /// Highest order a table can have (the cost model).
 pub const MAX_ORDER: usize = 12;
@@ -141,15 +142,17 @@ pub fn run(args: &TableArgs) -> CmdResult {
 /// tables as combinations of the control points `P0, P1, …`.
 fn exact(args: &TableArgs, family: &Subject) -> Result<Vec<Block>, CliError> {
     let params: Vec<Sym> = family.param_names().iter().map(|p| Sym::var(p)).collect();
+    // the length, points and weights read like none of the basis's names
+    let mut namespace = names_of(family);
     let h = if Wrt::from(args.wrt) == Wrt::X {
-        Sym::var("h")
+        namespace.length()
     } else {
         Sym::one()
     };
     let n = family.function_names().len();
-    let names: Vec<String> = (0..n).map(|i| format!("P{i}")).collect();
-    let points: Vec<Sym> = names.iter().map(|p| Sym::var(p)).collect();
-    let weights: Vec<Sym> = (0..n).map(|i| Sym::var(&format!("w{i}"))).collect();
+    let [points, _] = namespace.points(n);
+    let names: Vec<String> = points.iter().map(ToString::to_string).collect();
+    let weights = namespace.weights(n);
     Ok(build(args, family, &params, &h, Some((&points, &weights)))
         .map_err(|e| CliError::Usage(e.to_string()))?
         .into_iter()
