@@ -30,6 +30,7 @@ pub mod error;
 pub mod families;
 pub mod family;
 mod float;
+pub mod input;
 pub mod interval;
 pub mod knots;
 pub mod mpfr;
