@@ -11,7 +11,6 @@
 //! (fewer digits, or an error naming the limit), never guessed.
 
 use std::cmp::Ordering;
-use std::time::{Duration, Instant};
 
 use rug::Rational;
 
@@ -22,6 +21,7 @@ use crate::error::{CoreError, Result};
 use crate::interval::{Fault, Interval};
 use crate::param::parse_exact;
 use crate::scalar::{Real, Ring};
+use crate::work;
 
 /// The highest working precision, in bits (about 19,700 decimal digits).
 pub const MAX_BITS: u32 = 1 << 16;
@@ -41,19 +41,21 @@ pub const F64_CHECK_DIGITS: usize = 20;
 /// certified value replaces it.
 const F64_TOLERANCE: f64 = 1e-8;
 
-/// Time budget of one certified evaluation. The cost of each precision
-/// step is predicted from the step before (doubling the precision at most
-/// quadruples the work of MPFR's arithmetic and functions at these sizes):
-/// a step that would end past the budget is not started.
-pub const TIME_BUDGET: Duration = Duration::from_secs(10);
+/// Work budget of one certified evaluation, in [`work`] units (about 10 s
+/// of MPFR arithmetic on the reference machine of BENCHMARKS.md). The cost
+/// of each precision step is predicted from the step before (the same
+/// operations at the new precision, [`work::scale`]): a step whose
+/// predicted cost would take the total past the budget is not started.
+/// Counted, never timed: the same input proves the same digits anywhere.
+pub const WORK_BUDGET: u64 = 500_000_000;
 
 /// Why an evaluation stopped short of its target.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Stop {
     /// The precision reached [`MAX_BITS`].
     MaxBits,
-    /// The next step would have run past [`TIME_BUDGET`].
-    Time,
+    /// The next step would have taken the work past [`WORK_BUDGET`].
+    Budget,
 }
 
 /// Enclosures proved at some working precision.
@@ -103,7 +105,7 @@ pub fn check(values: &[Interval], what: &str, bits: u32) -> Result<()> {
 /// Evaluates `f` at doubling precisions from [`MIN_BITS`]: up to `target`
 /// bits, then on while `more` says the result is not good enough, up to
 /// [`MAX_BITS`]; each step only if its predicted cost fits the
-/// [`TIME_BUDGET`]. A divisor not proved nonzero is retried at the next
+/// [`WORK_BUDGET`]. A divisor not proved nonzero is retried at the next
 /// precision; other errors end the climb.
 fn climb(
     target: u32,
@@ -111,13 +113,18 @@ fn climb(
     f: &mut impl FnMut(u32) -> Result<Vec<Interval>>,
     more: impl Fn(&[Interval]) -> bool,
 ) -> Result<Enclosures> {
-    let start = Instant::now();
+    let mut spent = 0u64;
     let mut bits = MIN_BITS.min(target);
     let mut last: Option<Enclosures> = None;
+    let over_budget = || CoreError::Limit {
+        what: what.to_string(),
+        limit: format!("{WORK_BUDGET} units of certified arithmetic"),
+    };
     loop {
-        let step = Instant::now();
-        let result = f(bits).and_then(|values| check(&values, what, bits).map(|()| values));
-        let took = step.elapsed();
+        let (result, cost) = work::measure(|| {
+            f(bits).and_then(|values| check(&values, what, bits).map(|()| values))
+        });
+        spent = spent.saturating_add(cost);
         let failure = match result {
             Ok(values) => {
                 let done = bits >= target && !more(&values);
@@ -134,12 +141,13 @@ fn climb(
             Err(e @ CoreError::NotCertifiedNonzero { .. }) => Some(e),
             Err(e) => return Err(e),
         };
+        let next = bits.saturating_mul(2).min(MAX_BITS);
         let stop = if bits >= MAX_BITS {
             Stop::MaxBits
-        } else if start.elapsed() + took * 4 > TIME_BUDGET {
-            Stop::Time
+        } else if spent.saturating_add(work::scale(cost, bits, next)) > WORK_BUDGET {
+            Stop::Budget
         } else {
-            bits = bits.saturating_mul(2).min(MAX_BITS);
+            bits = next;
             continue;
         };
         return match (failure, last) {
@@ -148,21 +156,15 @@ fn climb(
                 e.stopped = Some(stop);
                 Ok(e)
             }
-            (None, None) => Err(CoreError::Limit {
-                what: what.to_string(),
-                limit: format!("{} s of computation", TIME_BUDGET.as_secs()),
-            }),
+            (None, None) => Err(over_budget()),
         };
     }
-    last.ok_or_else(|| CoreError::Limit {
-        what: what.to_string(),
-        limit: format!("{} s of computation", TIME_BUDGET.as_secs()),
-    })
+    last.ok_or_else(over_budget)
 }
 
 /// Evaluates `f` at `bits` (after cheaper steps that predict its cost) and
 /// checks the result; an error naming the budget when `bits` cannot be
-/// reached within [`TIME_BUDGET`].
+/// reached within [`WORK_BUDGET`].
 pub fn at_bits(
     bits: u32,
     what: &str,
@@ -172,7 +174,7 @@ pub fn at_bits(
     if e.bits < bits {
         return Err(CoreError::Limit {
             what: format!("{what} at {bits} bits (predicted from {} bits)", e.bits),
-            limit: format!("{} s of computation", TIME_BUDGET.as_secs()),
+            limit: format!("{WORK_BUDGET} units of certified arithmetic"),
         });
     }
     Ok(e)
@@ -195,7 +197,7 @@ fn resolved(values: &[Interval], digits: usize) -> bool {
 }
 
 /// Evaluates `f` at increasing precision until every value is
-/// [`resolved`] to `digits`, or [`MAX_BITS`] or the [`TIME_BUDGET`] is
+/// [`resolved`] to `digits`, or [`MAX_BITS`] or the [`WORK_BUDGET`] is
 /// reached. Returns the last enclosures: possibly with fewer digits than
 /// asked ([`Enclosures::digits`] says how many are proved,
 /// [`Enclosures::stopped`] why).

@@ -40,6 +40,7 @@ pub mod scalar;
 pub mod sincos;
 pub mod surface;
 pub mod variable;
+pub mod work;
 
 pub use basis::Basis;
 pub use batch::Batch;

@@ -9,7 +9,7 @@ use clap::Args;
 use rug::Rational;
 use serde_json::json;
 use trig_core::certified::{
-    self, CheckedF64, F64_CHECK_DIGITS, MAX_BITS, MAX_DIGITS, Stop, TIME_BUDGET, at_bits,
+    self, CheckedF64, F64_CHECK_DIGITS, MAX_BITS, MAX_DIGITS, Stop, WORK_BUDGET, at_bits,
     check_domain, check_f64, to_digits,
 };
 use trig_core::decimal::max_digits;
@@ -324,10 +324,9 @@ impl Mode {
 /// Why fewer digits than requested are proved.
 pub fn shortfall(bits: u32, stopped: Option<Stop>) -> String {
     match stopped {
-        Some(Stop::Time) => format!(
-            " within the time limit of {} s (at {bits} bits)",
-            TIME_BUDGET.as_secs()
-        ),
+        Some(Stop::Budget) => {
+            format!(" within the work budget of {WORK_BUDGET} units (at {bits} bits)")
+        }
         _ => format!(" at the {bits}-bit limit"),
     }
 }
