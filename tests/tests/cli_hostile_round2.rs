@@ -267,3 +267,73 @@ fn item1_an_audit_join_correction_uses_a_factor_of_its_own() {
     let truth = p3.clone() + &(v("kappa") * &(Sym::int(3) - &g) / &Sym::int(3) * &(p3 - &p2));
     assert!(text.contains(&format!("Q1 = {truth}")), "{text}");
 }
+
+/// Item 8: verdicts do not depend on the machine. A claim the time limit
+/// cuts off gets no verdict (it is listed as not decided); every verdict
+/// printed comes from counted budgets, so runs with different limits print
+/// the same verdict for every claim both decide, and none cites the clock.
+/// (`audit --spec` near `--time-limit` gave different holds/not-checkable
+/// counts from run to run.)
+#[test]
+fn item8_a_time_limit_cuts_claims_off_but_never_changes_a_verdict() {
+    let path = scratch(
+        "slow-claim.toml",
+        "id = \"slow-claim\"\ncitation = \"issue 22\"\nvariable = \"angle\"\n\
+         [[functions]]\nname = \"f\"\nformula = \"cos(8*t)^16\"\n\
+         [[functions]]\nname = \"g\"\nformula = \"1 - cos(8*t)^16\"\n",
+    );
+    let verdicts = |limit: &str| {
+        let report = json(&[
+            "audit",
+            "--spec",
+            &path,
+            "--time-limit",
+            limit,
+            "--format",
+            "json",
+        ]);
+        let text = report.to_string();
+        let clock = report["claims"]
+            .as_array()
+            .expect("claims")
+            .iter()
+            .find(|c| c.to_string().contains("time limit of"));
+        assert!(
+            clock.is_none(),
+            "a verdict cites the clock: {:?}",
+            clock.map(|c| &c["id"])
+        );
+        let claims: Vec<(String, String)> = report["claims"]
+            .as_array()
+            .expect("claims")
+            .iter()
+            .map(|c| {
+                (
+                    c["id"].as_str().unwrap_or_default().to_string(),
+                    c["verdict"].as_str().unwrap_or_default().to_string(),
+                )
+            })
+            .collect();
+        (claims, text)
+    };
+    let (short, text) = verdicts("0.2");
+    assert!(
+        text.contains("Not decided, cut off by the time limit of 0.2 s per claim")
+            && text.contains("them): nonnegativity."),
+        "{text}"
+    );
+    assert!(
+        short.iter().all(|(id, _)| id != "nonnegativity"),
+        "{short:?}"
+    );
+    let (longer, _) = verdicts("2");
+    for (id, verdict) in &short {
+        if let Some((_, other)) = longer.iter().find(|(i, _)| i == id) {
+            assert_eq!(verdict, other, "{id}");
+        }
+    }
+    assert!(
+        short.iter().any(|(id, v)| id == "unity" && v == "holds"),
+        "{short:?}"
+    );
+}
