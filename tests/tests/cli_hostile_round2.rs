@@ -337,3 +337,59 @@ fn item8_a_time_limit_cuts_claims_off_but_never_changes_a_verdict() {
         "{short:?}"
     );
 }
+
+/// Item 7: every promised digit is delivered. `eval han --param lambda=0
+/// --at 1e-10 --digits 5` printed `b2 = 0 ± 2.2e-19`, `b3 = 0 ± 1.2e-38`
+/// under a header saying all digits were proved; the values are tiny, not
+/// zero (2.4674e-20, 1.5220e-40; 256-bit MPFR and the unit test in
+/// trig_core::certified agree), so the precision is raised until their
+/// digits are proved. Where that cannot
+/// be done (values that are exactly zero at π/2 but computed with π), the
+/// header says how many values are proved and each other value says why.
+#[test]
+fn item7_the_header_never_claims_digits_that_were_not_delivered() {
+    let out = stdout_ok(&[
+        "eval", "han", "--param", "lambda=0", "--at", "1e-10", "--digits", "5",
+    ]);
+    assert!(
+        out.lines()
+            .next()
+            .unwrap_or_default()
+            .contains("5 significant digits, all proved"),
+        "{out}"
+    );
+    assert!(out.contains("b2 = 2.4674e-20\n"), "{out}");
+    assert!(out.contains("b3 = 1.5220e-40\n"), "{out}");
+    let end = stdout_ok(&[
+        "eval",
+        "thesis-cubic",
+        "--param",
+        "m=0.5",
+        "--at",
+        "1",
+        "--digits",
+        "5",
+    ]);
+    let header = end.lines().next().unwrap_or_default();
+    assert!(!header.contains("all proved"), "{end}");
+    assert!(header.contains("proved for 1 of 4 values"), "{end}");
+    assert!(
+        end.contains("b0 = 0 ± ") && end.contains("no significant digit proved"),
+        "{end}"
+    );
+    // an exact zero is a value, and says it has no significant digits
+    let start = stdout_ok(&[
+        "eval",
+        "thesis-cubic",
+        "--param",
+        "m=0.5",
+        "--at",
+        "0",
+        "--digits",
+        "5",
+    ]);
+    assert!(
+        start.contains("b1 = 0 (exactly 0: zero has no significant digits)"),
+        "{start}"
+    );
+}

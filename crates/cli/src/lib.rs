@@ -7,6 +7,7 @@
 
 mod cell;
 mod commands;
+mod digits;
 mod format;
 mod names;
 mod output;

@@ -70,14 +70,14 @@ pub struct Enclosures {
 }
 
 impl Enclosures {
-    /// The fewest proved significant digits over the values that are not
-    /// enclosures of zero (`usize::MAX` when all are exact).
+    /// The fewest proved significant digits over the values (`usize::MAX`
+    /// when all are exact). An enclosure of zero proves none: a tiny value
+    /// has significant digits, and zero has none, so `0 ± b` delivers no
+    /// digit of either.
     pub fn digits(&self, max: usize) -> usize {
         self.values
             .iter()
-            .map(|v| v.decimal(max))
-            .filter(|d| !matches!(d, Decimal::Small { .. }))
-            .map(|d| d.digits())
+            .map(|v| v.decimal(max).digits())
             .min()
             .unwrap_or(usize::MAX)
     }
@@ -196,20 +196,41 @@ fn resolved(values: &[Interval], digits: usize) -> bool {
     })
 }
 
+/// Evaluates `f` at increasing precision until every value has `digits`
+/// proved significant digits — relative precision: a tiny nonzero value is
+/// climbed until its own digits are proved, and only an exact value (a
+/// single point, such as an exact zero) needs no more — or [`MAX_BITS`] or
+/// the [`WORK_BUDGET`] is reached. Returns the last enclosures: possibly
+/// with fewer digits than asked ([`Enclosures::digits`] says how many are
+/// proved, [`Enclosures::stopped`] why). This is what a request for
+/// `digits` significant digits promises.
+pub fn to_significant_digits(
+    digits: usize,
+    what: &str,
+    mut f: impl FnMut(u32) -> Result<Vec<Interval>>,
+) -> Result<Enclosures> {
+    climb(bits_for(digits), what, &mut f, |v| {
+        v.iter().any(|x| x.decimal(digits).digits() < digits)
+    })
+}
+
+/// The working precision `digits` decimal digits need, with guard bits.
+fn bits_for(digits: usize) -> u32 {
+    let need = (digits as f64 * std::f64::consts::LOG2_10).ceil() as u32 + 32;
+    need.clamp(MIN_BITS, MAX_BITS)
+}
+
 /// Evaluates `f` at increasing precision until every value is
-/// [`resolved`] to `digits`, or [`MAX_BITS`] or the [`WORK_BUDGET`] is
-/// reached. Returns the last enclosures: possibly with fewer digits than
-/// asked ([`Enclosures::digits`] says how many are proved,
-/// [`Enclosures::stopped`] why).
+/// [`resolved`] to `digits` (an enclosure of zero far below the largest
+/// value counts: for certified error bounds of f64 results, not for
+/// printed digits — see [`to_significant_digits`]), or [`MAX_BITS`] or the
+/// [`WORK_BUDGET`] is reached.
 pub fn to_digits(
     digits: usize,
     what: &str,
     mut f: impl FnMut(u32) -> Result<Vec<Interval>>,
 ) -> Result<Enclosures> {
-    let need = (digits as f64 * std::f64::consts::LOG2_10).ceil() as u32 + 32;
-    climb(need.clamp(MIN_BITS, MAX_BITS), what, &mut f, |v| {
-        !resolved(v, digits)
-    })
+    climb(bits_for(digits), what, &mut f, |v| !resolved(v, digits))
 }
 
 /// The functions of `basis` at the exact point `x` with exact parameters,
@@ -424,6 +445,38 @@ mod tests {
         // b3(1/4; 3/5): digits from `bc -l` at scale 60
         let b3 = e.values[3].decimal(50).to_string();
         assert_eq!(b3, "2.5823702910142048907010730505698383907471382003678e-3");
+    }
+
+    /// Han (6.2) at λ = 0, u = 10⁻¹⁰: b₂ ≈ 2.47·10⁻²⁰ and b₃ ≈ 1.52·10⁻⁴⁰ are
+    /// tiny, not zero: five significant digits of each are proved (the
+    /// precision is raised for them), not `0 ± 2.2e-19`.
+    #[test]
+    fn tiny_values_get_their_own_significant_digits() {
+        let at = crate::param::parse_exact("1e-10").unwrap();
+        let e = to_significant_digits(5, "han", |bits| {
+            Ok(enclose_basis(&Family::Han, &at, &[q(0, 1)], bits))
+        })
+        .unwrap();
+        assert!(e.digits(5) >= 5, "{:?}", e.values);
+        assert!(e.values[2].decimal(5).to_string().starts_with("2.4674e-20"));
+        assert!(e.values[3].decimal(5).to_string().ends_with("e-40"));
+        // an exact zero is a value with no significant digits: nothing to climb
+        let z = to_significant_digits(5, "b", |bits| {
+            Ok(vec![Interval::from_rational(bits, &q(0, 1))])
+        })
+        .unwrap();
+        assert_eq!((z.bits, z.digits(5)), (64, usize::MAX));
+        // an enclosure of zero proves no digit
+        let small = Enclosures {
+            values: vec![Interval::from_ends(
+                64,
+                &rug::Float::with_val(64, -1e-30),
+                &rug::Float::with_val(64, 1e-30),
+            )],
+            bits: 64,
+            stopped: None,
+        };
+        assert_eq!(small.digits(5), 0);
     }
 
     #[test]

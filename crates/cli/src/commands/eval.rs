@@ -10,7 +10,7 @@ use rug::Rational;
 use serde_json::json;
 use trig_core::certified::{
     self, CheckedF64, F64_CHECK_DIGITS, MAX_BITS, MAX_DIGITS, Stop, WORK_BUDGET, at_bits,
-    check_domain, check_f64, to_digits,
+    check_domain, check_f64, to_digits, to_significant_digits,
 };
 use trig_core::decimal::max_digits;
 use trig_core::families::seed000_nonuniform::NonUniform;
@@ -23,6 +23,7 @@ use trig_specfile::Spec;
 use trig_symbolic::Sym;
 
 use super::{CliError, CmdResult, range_hint};
+use crate::digits;
 use crate::format::{TextOrJson, json};
 
 mod points;
@@ -301,20 +302,18 @@ impl Mode {
         precision_mode(args.prec, args.digits)
     }
 
-    fn describe(&self, bits: u32, proved: usize, stopped: Option<Stop>) -> String {
+    /// The arithmetic as the header states it; `short` values (of `total`)
+    /// have fewer digits than `--digits` asked.
+    fn describe(&self, bits: u32, (short, total): (usize, usize), stopped: Option<Stop>) -> String {
         match *self {
             Mode::F64 => format!("f64; ± certified error bounds, enclosures at {bits} bits"),
             Mode::Bits(b) => format!("mpfr-{b}, certified: only proved digits are printed"),
-            Mode::Digits(n) if proved >= n => {
+            Mode::Digits(n) if short == 0 => {
                 format!("{n} significant digits, all proved; mpfr-{bits}")
             }
             Mode::Digits(n) => format!(
-                "{n} digits requested, {} proved{}",
-                if proved == 0 {
-                    "none".to_string()
-                } else {
-                    format!("{proved}")
-                },
+                "{n} significant digits requested, proved for {} of {total} values{}; the others are marked",
+                total - short,
                 shortfall(bits, stopped)
             ),
         }
@@ -490,7 +489,7 @@ fn evaluate(
         s.problem
             .compute(&|q: &Rational| Interval::from_rational(bits, q))
     };
-    let (values, bits, proved, stopped) = match mode {
+    let (values, bits, short, stopped) = match mode {
         Mode::F64 => {
             for (name, q) in s.problem.inputs(&s.param_names, at_text) {
                 certified::to_f64(q, &name).map_err(|e| {
@@ -526,17 +525,23 @@ fn evaluate(
                     },
                 })
                 .collect();
-            (shown, exact.bits, 0, None)
+            (shown, exact.bits, (0, 0), None)
         }
         Mode::Bits(bits) => {
             let mut f = enclose;
             let e = at_bits(bits, &what, &mut f)?;
             let max = max_digits(bits);
-            (decimals(&e.values, max), bits, e.digits(max), None)
+            (decimals(&e.values, max), bits, (0, 0), None)
         }
         Mode::Digits(n) => {
-            let e = to_digits(n, &what, enclose)?;
-            (decimals(&e.values, n), e.bits, e.digits(n), e.stopped)
+            let e = to_significant_digits(n, &what, enclose)?;
+            let mut shown = decimals(&e.values, n);
+            let proved: Vec<_> = e.values.iter().map(|x| x.decimal(n)).collect();
+            for (v, d) in shown.iter_mut().zip(&proved) {
+                v.note = digits::note(d, n);
+            }
+            let short = (digits::short(&proved, n), proved.len());
+            (shown, e.bits, short, e.stopped)
         }
     };
     Ok(Evaluation {
@@ -544,7 +549,7 @@ fn evaluate(
         citation: s.citation,
         names: s.names,
         values,
-        precision: mode.describe(bits, proved, stopped),
+        precision: mode.describe(bits, short, stopped),
         note: s.note,
     })
 }

@@ -3,7 +3,9 @@
 
 use clap::{Args, ValueEnum};
 use rug::Rational;
-use trig_core::certified::{self, CheckedF64, F64_CHECK_DIGITS, at_bits, check_f64, to_digits};
+use trig_core::certified::{
+    self, CheckedF64, F64_CHECK_DIGITS, at_bits, check_f64, to_digits, to_significant_digits,
+};
 use trig_core::decimal::{bound_text, max_digits};
 use trig_core::{Basis, CoreError, Interval, Ring, parse_exact};
 use trig_deriv::{
@@ -15,6 +17,7 @@ use trig_symbolic::Sym;
 use super::eval::{Mode, Subject, param_pairs, precision_mode, shortfall};
 use super::{CliError, CmdResult, range_hint};
 use crate::cell::{Block, Cell, Rendered};
+use crate::digits;
 use crate::format::{TableFormat, render_blocks};
 use crate::names::names_of;
 
@@ -257,13 +260,16 @@ fn numeric(args: &TableArgs, family: &Subject) -> Result<(Vec<Block>, String), C
             (render_decimals(last, max_digits(bits)), note)
         }
         Mode::Digits(n) => {
-            let e = to_digits(n, &what, &mut enclose)?;
-            let proved = e.digits(n);
-            let note = if proved >= n {
+            let e = to_significant_digits(n, &what, &mut enclose)?;
+            let decimals: Vec<_> = e.values.iter().map(|v| v.decimal(n)).collect();
+            let short = digits::short(&decimals, n);
+            let note = if short == 0 {
                 format!("{n} significant digits, all proved (MPFR {} bits)", e.bits)
             } else {
                 format!(
-                    "{n} digits requested, {proved} proved{}",
+                    "{n} digits requested, {} of {} entries with fewer proved{} (an entry 0 ± b proves no digit: |value| ≤ b)",
+                    short,
+                    decimals.len(),
                     shortfall(e.bits, e.stopped)
                 )
             };
