@@ -367,17 +367,28 @@ struct Evaluation {
     values: Vec<Shown>,
     precision: String,
     note: Option<String>,
+    /// The working precision of the last step, in bits.
+    bits: u32,
 }
 
 pub fn run(args: &EvalArgs) -> CmdResult {
     let mode = Mode::of(args)?;
-    if let Some(path) = &args.at_file {
-        return points::run(args, path, mode);
-    }
     let at_text = args.at.as_deref().unwrap_or_default();
     let at = parse_point(at_text)?;
     let eval = evaluate(args, at_text, &at, mode, subject_of(args)?.as_ref())?;
     Ok(render(args, &eval))
+}
+
+/// `eval --at-file`: the rows written to `out` as they are computed.
+pub fn stream(args: &EvalArgs, out: &mut dyn std::io::Write) -> Result<(), CliError> {
+    let mode = Mode::of(args)?;
+    let path = args.at_file.as_deref().unwrap_or(std::path::Path::new("-"));
+    points::stream(args, path, mode, out)
+}
+
+/// True when the command streams its output (`--at-file`).
+pub fn streams(args: &EvalArgs) -> bool {
+    args.at_file.is_some()
 }
 
 /// The problem `eval` was asked, located on the exact input, with its
@@ -551,6 +562,7 @@ fn evaluate(
         values,
         precision: mode.describe(bits, short, stopped),
         note: s.note,
+        bits,
     })
 }
 

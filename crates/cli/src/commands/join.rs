@@ -105,6 +105,7 @@ fn solve(family: Subject, kind: JoinKind, params: ParamsArg, wrt: Wrt) -> Result
             segment_copies(&mut namespace, &family, 2)?,
         ),
     };
+    crate::cost::check_join(&family, kind, &first_params, &second_params)?;
     let n = family.function_names().len();
     let [first, second] = namespace.points(n);
     let factors = namespace.factors();

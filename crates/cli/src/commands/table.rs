@@ -12,11 +12,12 @@ use trig_deriv::{
     End, VanishingDenominator, Wrt, curve_endpoint_derivatives, endpoint_derivatives,
     knot_derivatives, rational_curve_endpoint_derivatives,
 };
-use trig_symbolic::Sym;
+use trig_symbolic::{Sym, symbolic_atoms};
 
 use super::eval::{Mode, Subject, param_pairs, precision_mode, shortfall};
 use super::{CliError, CmdResult, range_hint};
 use crate::cell::{Block, Cell, Rendered};
+use crate::cost;
 use crate::digits;
 use crate::format::{TableFormat, render_blocks};
 use crate::names::names_of;
@@ -127,6 +128,20 @@ pub fn run(args: &TableArgs) -> CmdResult {
         return Err(CliError::Usage(
             "--curve tables are exact combinations of the control points; drop --numeric".into(),
         ));
+    }
+    if !args.numeric {
+        let params: Vec<Sym> = family.param_names().iter().map(|p| Sym::var(p)).collect();
+        let functions = family.eval(&symbolic_atoms(), &params);
+        let what = format!(
+            "table{} --order {}",
+            if args.rational {
+                " --curve --rational"
+            } else {
+                ""
+            },
+            args.order
+        );
+        cost::check_table(&what, &functions, args.order, args.rational)?;
     }
     let (blocks, mode) = if args.numeric {
         numeric(args, &family)?
