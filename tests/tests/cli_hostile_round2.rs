@@ -553,3 +553,184 @@ fn item5_sizes_beyond_the_cost_model_are_refused_before_the_work() {
     let out = stdout_ok(&["table", "--spec", &quotient, "--order", "2"]);
     assert!(out.contains("| 2 |"), "{out}");
 }
+
+/// A fresh scratch directory for one test.
+fn scratch_dir(name: &str) -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
+        .join("hostile-round2")
+        .join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("scratch dir");
+    dir
+}
+
+/// The names in `dir` that start with `.trig-audit-`.
+fn temporaries(dir: &std::path::Path) -> Vec<String> {
+    std::fs::read_dir(dir)
+        .expect("read dir")
+        .flatten()
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .filter(|n| n.starts_with(".trig-audit-"))
+        .collect()
+}
+
+/// Item 9: a temporary file left by a killed run (SIGKILL leaves no time to
+/// remove it) is removed by the next write into the directory, so they do
+/// not accumulate. The temporary names carry the writer's process id; no
+/// process has id 999999999 (above Linux's largest pid, 2²²).
+#[test]
+fn item9_temporaries_of_killed_runs_do_not_accumulate() {
+    let dir = scratch_dir("temporaries");
+    let stale = dir.join(".trig-audit-999999999-AbC123");
+    std::fs::write(&stale, "partial report").expect("stale file");
+    let report = dir.join("report.md");
+    let out = run_within(
+        &[
+            "audit",
+            "--claim",
+            "T9",
+            "--output",
+            report.to_str().unwrap(),
+        ],
+        Duration::from_secs(60),
+    )
+    .expect("audit ends");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(report.exists());
+    assert_eq!(temporaries(&dir), Vec::<String>::new());
+}
+
+/// Item 9: a picture's side files (NAME.tex, NAME.csv) are written only
+/// beside a regular file: `plot … --output /dev/null` created
+/// `/dev/null.tex` and `/dev/null.csv` (here a named pipe stands for the
+/// device: the old code wrote the picture into it and hung without a
+/// reader).
+#[test]
+fn item9_side_files_only_beside_a_regular_file() {
+    let dir = scratch_dir("side-files");
+    let fifo = dir.join("picture.svg");
+    let made = Command::new("mkfifo").arg(&fifo).status().expect("mkfifo");
+    assert!(made.success());
+    let out = run_within(
+        &[
+            "plot",
+            "basis",
+            "--family",
+            "thesis-cubic",
+            "--output",
+            fifo.to_str().unwrap(),
+        ],
+        Duration::from_secs(20),
+    )
+    .expect("refused at once");
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(!out.status.success(), "{err}");
+    assert!(err.contains("not a regular file"), "{err}");
+    assert!(!dir.join("picture.tex").exists() && !dir.join("picture.csv").exists());
+}
+
+/// Item 9: `--output -` is standard output for the report, and refused for
+/// a picture (it created files named `-`).
+#[test]
+fn item9_output_dash_is_standard_output_or_refused() {
+    let dir = scratch_dir("dash");
+    let run_in = |args: &[&str]| {
+        Command::new(binary())
+            .args(args)
+            .current_dir(&dir)
+            .stdin(Stdio::null())
+            .output()
+            .expect("run trig-audit")
+    };
+    let out = run_in(&["audit", "--claim", "T9", "--output", "-"]);
+    assert!(out.status.success());
+    assert!(String::from_utf8_lossy(&out.stdout).starts_with("# trig-audit report"));
+    let out = run_in(&["plot", "basis", "--family", "thesis-cubic", "--output", "-"]);
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("--output -"), "{err}");
+    assert!(!dir.join("-").exists() && !dir.join("-.tex").exists());
+}
+
+/// Item 9: `--output` through a symbolic link writes the link's target;
+/// the link stays a link (it was replaced by a regular file).
+#[cfg(unix)]
+#[test]
+fn item9_a_symbolic_link_is_written_through() {
+    let dir = scratch_dir("symlink");
+    let target = dir.join("real.md");
+    std::fs::write(&target, "old").expect("target");
+    let link = dir.join("link.md");
+    std::os::unix::fs::symlink(&target, &link).expect("symlink");
+    let out = run_within(
+        &["audit", "--claim", "T9", "--output", link.to_str().unwrap()],
+        Duration::from_secs(60),
+    )
+    .expect("audit ends");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let meta = std::fs::symlink_metadata(&link).expect("link");
+    assert!(meta.file_type().is_symlink(), "the link was replaced");
+    let text = std::fs::read_to_string(&target).expect("target");
+    assert!(text.starts_with("# trig-audit report"), "{text}");
+}
+
+/// Item 9: the internal name of "no variable" never reaches an error
+/// (`domain = "[0, t]"` said "only __none, the parameters, pi and
+/// numbers").
+#[test]
+fn item9_no_internal_name_in_a_domain_error() {
+    let path = scratch(
+        "domain-var.toml",
+        "id = \"d\"\ncitation = \"issue 22\"\nvariable = \"t\"\ndomain = \"[0, t]\"\n\
+         [[functions]]\nname = \"b0\"\nformula = \"1\"\n",
+    );
+    let err = error_line(&["eval", "--spec", &path, "--at", "0"]);
+    assert!(!err.contains("__"), "{err}");
+    assert!(err.contains("only the parameters, pi and numbers"), "{err}");
+}
+
+/// Item 9: a formula error echoes at most 60 characters of the formula
+/// (the README's promise), around the error; a 9 KB formula was echoed
+/// whole.
+#[test]
+fn item9_formula_errors_echo_at_most_60_characters() {
+    let long: String = std::iter::repeat_n("t + ", 2300).collect::<String>() + "?";
+    let path = scratch(
+        "long-formula.toml",
+        &format!(
+            "id = \"long\"\ncitation = \"issue 22\"\nvariable = \"polynomial\"\n\
+             [[functions]]\nname = \"b0\"\nformula = \"{long}\"\n"
+        ),
+    );
+    let err = error_line(&["eval", "--spec", &path, "--at", "0"]);
+    let echoed = err
+        .split('`')
+        .nth(1)
+        .expect("the formula between backquotes");
+    assert!(echoed.chars().count() <= 62, "{echoed}");
+    assert!(echoed.starts_with('…') && echoed.ends_with('?'), "{echoed}");
+    assert!(err.len() < 400, "{err}");
+}
+
+/// Item 9: numbers in formulas and domains take an exponent:
+/// `domain = "[0, 1e300]"` was refused with "expected `*`".
+#[test]
+fn item9_a_number_with_an_exponent_is_a_number() {
+    let path = scratch(
+        "wide-domain.toml",
+        "id = \"wide\"\ncitation = \"issue 22\"\nvariable = \"t\"\ndomain = \"[0, 1e300]\"\n\
+         [[functions]]\nname = \"b0\"\nformula = \"1 - t/1e300\"\n\
+         [[functions]]\nname = \"b1\"\nformula = \"t*1E-300\"\n",
+    );
+    let out = stdout_ok(&["eval", "--spec", &path, "--at", "1e299", "--digits", "5"]);
+    assert!(out.contains("b0 = 9.0000e-1"), "{out}");
+    assert!(out.contains("b1 = 1.0000e-1"), "{out}");
+}

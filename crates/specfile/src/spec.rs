@@ -200,7 +200,7 @@ impl Spec {
     ) -> std::result::Result<crate::formula::Linear, FormulaError> {
         linear(
             &ast::parse(text)?,
-            &self.var_name,
+            Some(&self.var_name),
             &self.param_pairs(),
             what,
         )
@@ -253,7 +253,7 @@ fn domain_ends(
     };
     let end = |s: &str| -> Result<Affine> {
         let l = ast::parse(s)
-            .and_then(|e| linear(&e, "__none", params, "a domain end"))
+            .and_then(|e| linear(&e, None, params, "a domain end"))
             .map_err(|e| SpecError::Invalid {
                 at: src.at(field.span().start),
                 field: "domain".into(),

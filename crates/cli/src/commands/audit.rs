@@ -60,7 +60,7 @@ pub struct AuditArgs {
     /// Report format.
     #[arg(long, value_enum, default_value = "md")]
     format: ReportFormat,
-    /// Write the report to this file (atomically) instead of standard output.
+    /// Write the report to this file (atomically) instead of standard output (`-`: standard output).
     #[arg(long)]
     output: Option<PathBuf>,
     /// With --spec: seconds each claim's decision may take (0.1 to 3600);
@@ -139,7 +139,9 @@ pub fn run(args: &AuditArgs) -> CmdResult {
         ReportFormat::Tex => report::tex_entries(&entries, &intro, &view),
     };
     match &args.output {
+        // `--output -` is standard output
         None => Ok(text),
+        Some(path) if path.as_os_str() == "-" => Ok(text),
         Some(path) => {
             write_atomically(path, text.as_bytes())?;
             let shown = view.select(&entries).len();
