@@ -17,6 +17,7 @@ use trig_audit::{MAX_ERROR, Outcome};
 use trig_core::{Family, Mpfr, parse_exact, piecewise};
 use trig_deriv::{End, Wrt, endpoint_derivatives};
 use trig_specfile::Spec;
+use trig_symbolic::names::reading;
 
 use super::grammar::{Case, Check, Subject};
 
@@ -40,6 +41,7 @@ pub fn check(case: &Case, outcome: &Outcome) -> Result<usize, String> {
             }
             match &case.check {
                 Check::Plain => Ok(0),
+                Check::Namespace { params } => namespace(params, text),
                 Check::Eval {
                     basis,
                     params,
@@ -56,6 +58,23 @@ pub fn check(case: &Case, outcome: &Outcome) -> Result<usize, String> {
             }
         }
     }
+}
+
+/// The G factors and interval lengths of a join read unlike every
+/// parameter (`γ` reads as `gamma`, `w₁` as `w1`).
+fn namespace(params: &[String], text: &str) -> Result<usize, String> {
+    let value: serde_json::Value =
+        serde_json::from_str(text).map_err(|e| format!("join JSON does not parse: {e}"))?;
+    let taken: Vec<String> = params.iter().map(|p| reading(p)).collect();
+    for key in ["factors", "lengths"] {
+        for symbol in value[key].as_array().into_iter().flatten() {
+            let symbol = symbol.as_str().unwrap_or_default();
+            if taken.contains(&reading(symbol)) {
+                return Err(format!("the {key} symbol `{symbol}` reads as a parameter"));
+            }
+        }
+    }
+    Ok(0)
 }
 
 fn non_finite_free(text: &str) -> Result<(), String> {
