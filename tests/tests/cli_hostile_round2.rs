@@ -265,7 +265,22 @@ fn item1_an_audit_join_correction_uses_a_factor_of_its_own() {
     assert!(text.contains("\"fails\""), "{text}");
     let (p2, p3, g) = (v("P2"), v("P3"), v("gamma"));
     let truth = p3.clone() + &(v("kappa") * &(Sym::int(3) - &g) / &Sym::int(3) * &(p3 - &p2));
-    assert!(text.contains(&format!("Q1 = {truth}")), "{text}");
+    // the derived Q₁ as printed (plain form) is the truth, its own factor κ
+    let k = v("kappa");
+    let third = Sym::rational(rug::Rational::from((1, 3)));
+    let printed = (third.clone() * &g * &k - &k) * &p2.clone()
+        + &((Sym::int(1) + &k - &(third * &g * &k)) * &v("P3"));
+    assert!(printed.equals(&truth), "{printed} ≠ {truth}");
+    assert!(
+        text.contains(
+            "\"plain\":\"(1/3*gamma*kappa - kappa)*P2 + (-1/3*gamma*kappa + kappa + 1)*P3\""
+        ),
+        "{text}"
+    );
+    assert!(
+        text.contains("use the derived formula: Q₀ = P₃; Q₁ = κ·"),
+        "{text}"
+    );
 }
 
 /// Item 8: verdicts do not depend on the machine. A claim the time limit

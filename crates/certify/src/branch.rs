@@ -28,7 +28,7 @@ use std::rc::Rc;
 
 use rug::float::Round;
 use rug::{Float, Rational};
-use trig_core::{Affine, Atoms, Domain, Interval, Ring};
+use trig_core::{Affine, Atoms, Domain, End, Interval, ParamRange, Ring};
 use trig_symbolic::Sym;
 
 use crate::atoms::{ParamAtom, d_param, d_variable, param_atoms, value};
@@ -64,6 +64,19 @@ pub struct Axis {
     pub lo_open: bool,
     pub hi_open: bool,
     pub pi: bool,
+}
+
+impl Axis {
+    /// A published range as an axis, when it is bounded.
+    pub fn from_range(r: &ParamRange) -> Option<Axis> {
+        Some(Axis {
+            lo: r.lo.value()?.clone(),
+            hi: r.hi.value()?.clone(),
+            lo_open: matches!(r.lo, End::Open(_)),
+            hi_open: matches!(r.hi, End::Open(_)),
+            pi: r.pi,
+        })
+    }
 }
 
 /// The decision about one sign question.

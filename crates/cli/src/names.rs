@@ -3,18 +3,18 @@
 //! (control points, weights, interval lengths, `G` factors, segment copies
 //! of parameters) is drawn so that none reads like another.
 
-use trig_core::Basis;
+use trig_core::Described;
+use trig_specfile::AnyBasis;
 use trig_symbolic::{Names, Sym};
 
 use crate::commands::CliError;
-use crate::commands::eval::Subject;
 
 /// The user names of `subject`: parameters (with their printed symbols)
 /// and, for a spec file, its functions and definitions.
-pub fn names_of(subject: &Subject) -> Names {
+pub fn names_of(subject: &AnyBasis) -> Names {
     match subject {
-        Subject::Spec(spec) => spec.names(),
-        Subject::Family(f) => {
+        AnyBasis::Spec(spec) => spec.names(),
+        AnyBasis::Family(f) => {
             let params = f.param_names();
             Names::of_parameters(params.iter().map(|p| (p.as_str(), p.as_str())))
         }
@@ -26,7 +26,7 @@ pub fn names_of(subject: &Subject) -> Names {
 /// read as another name (a parameter `m1` beside `m`).
 pub fn segment_copies(
     names: &mut Names,
-    subject: &Subject,
+    subject: &AnyBasis,
     segment: usize,
 ) -> Result<Vec<Sym>, CliError> {
     subject

@@ -22,7 +22,7 @@ use trig_certify::{ParamBox, standardize};
 use trig_core::Domain;
 use trig_symbolic::Sym;
 
-use crate::range::SpecRange;
+use trig_core::ParamRange;
 
 /// The name `π` takes while it is bounded as a parameter.
 const PI_VAR: &str = "__pi";
@@ -38,12 +38,12 @@ fn interval_sign(
     d: &Sym,
     n: &Sym,
     domain: &Domain,
-    params: &[(String, SpecRange)],
+    params: &[(String, ParamRange)],
 ) -> Result<(), String> {
     let axes = params
         .iter()
         .map(|(name, r)| {
-            r.to_axis().ok_or_else(|| {
+            trig_certify::branch::Axis::from_range(r).ok_or_else(|| {
                 format!("division by `{d}`: the range of {name} is unbounded; the interval method needs bounded ranges")
             })
         })
@@ -81,7 +81,7 @@ fn at(domain: &Domain, x: f64, params: &[Rational]) -> String {
 }
 
 /// `Ok` when `d` cannot vanish; otherwise why (with a witness).
-pub fn check(d: &Sym, domain: &Domain, params: &[(String, SpecRange)]) -> Result<(), String> {
+pub fn check(d: &Sym, domain: &Domain, params: &[(String, ParamRange)]) -> Result<(), String> {
     let n = Sym::from_poly(d.numerator().clone());
     if let Some(q) = n.as_rational() {
         return if q == 0 {
@@ -119,7 +119,7 @@ pub fn check(d: &Sym, domain: &Domain, params: &[(String, SpecRange)]) -> Result
         let mut boxes: Vec<(&str, ParamBox)> = params
             .iter()
             .filter(|(name, _)| piece.variables().contains(name))
-            .map(|(name, r)| (name.as_str(), r.to_box()))
+            .map(|(name, r)| (name.as_str(), trig_certify::ParamBox::from_range(r)))
             .collect();
         if piece.variables().contains(PI_VAR) {
             boxes.push((
@@ -159,8 +159,8 @@ mod tests {
         Domain::from_variable(x, &[])
     }
 
-    fn range(text: &str) -> SpecRange {
-        SpecRange::parse(text).unwrap()
+    fn range(text: &str) -> ParamRange {
+        ParamRange::parse(text).unwrap()
     }
 
     #[test]

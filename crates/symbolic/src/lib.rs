@@ -60,7 +60,7 @@ pub use factor::{Factored, FactoredQuotient};
 pub use monomial::Monomial;
 pub use names::{NameClash, Names};
 pub use poly::Poly;
-pub use print::sympy_symbols;
+pub use print::{Style, sympy_symbols};
 pub use ring::symbolic_atoms;
 pub use sym::Sym;
 pub use var::Var;

@@ -3,16 +3,16 @@
 
 use clap::{Args, ValueEnum};
 use serde_json::json;
-use trig_core::Basis;
+use trig_core::Described;
 use trig_deriv::{JoinKind, JoinSetup, Wrt, solve_join, vanishing};
 use trig_symbolic::Sym;
 
-use super::eval::Subject;
 use super::table::WrtArg;
 use super::{CliError, CmdResult};
 use crate::cell::Cell;
 use crate::format;
 use crate::names::{names_of, segment_copies};
+use trig_specfile::AnyBasis;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum ParamsArg {
@@ -53,7 +53,7 @@ pub struct JoinArgs {
 
 /// The solved join, ready to print.
 struct Solved {
-    family: Subject,
+    family: AnyBasis,
     kind: JoinKind,
     wrt: Wrt,
     first_params: Vec<Sym>,
@@ -79,7 +79,7 @@ fn letter(points: &[Sym]) -> String {
 }
 
 pub fn run(args: &JoinArgs) -> CmdResult {
-    let family = Subject::from_args(args.family.as_deref(), args.spec.as_deref())?;
+    let family = AnyBasis::open(args.family.as_deref(), args.spec.as_deref())?;
     let kind: JoinKind = args
         .kind
         .parse()
@@ -92,7 +92,12 @@ pub fn run(args: &JoinArgs) -> CmdResult {
     })
 }
 
-fn solve(family: Subject, kind: JoinKind, params: ParamsArg, wrt: Wrt) -> Result<Solved, CliError> {
+fn solve(
+    family: AnyBasis,
+    kind: JoinKind,
+    params: ParamsArg,
+    wrt: Wrt,
+) -> Result<Solved, CliError> {
     // every symbol below reads differently from the basis's own names
     let mut namespace = names_of(&family);
     let (first_params, second_params) = match params {
@@ -211,28 +216,19 @@ fn text(s: &Solved) -> String {
 }
 
 fn tex(s: &Solved) -> String {
-    let mut out: String = header(s).iter().map(|l| format!("% {l}\n")).collect();
-    out.push_str("\\begin{align*}\n");
-    let lines: Vec<String> = s
+    let mut out: String = header(s).iter().map(|l| trig_tex::comment(l)).collect();
+    let equations: Vec<(String, String)> = s
         .forced
         .iter()
-        .map(|(point, value, _)| {
-            format!(
-                "{} &= {}",
-                point.to_latex(),
-                value.combination(&s.names).latex
-            )
-        })
+        .map(|(point, value, _)| (point.to_latex(), value.combination(&s.names).latex))
         .collect();
-    out.push_str(&lines.join(" \\\\\n"));
-    out.push_str("\n\\end{align*}\n");
+    out.push_str(&trig_tex::align(&equations));
     for (point, _, singular) in &s.forced {
         if !singular.is_empty() {
-            out.push_str(&format!(
-                "% {}: singular where {}\n",
-                point,
+            out.push_str(&trig_tex::comment(&format!(
+                "{point}: singular where {}",
                 singular.join(", ")
-            ));
+            )));
         }
     }
     out

@@ -25,11 +25,12 @@ use std::path::Path;
 use rug::Rational;
 use serde_json::json;
 use trig_core::input::{Lines, Source};
-use trig_core::{Affine, Basis as _, SEED000_NONUNIFORM, parse_point, work};
+use trig_core::{Affine, Described, SEED000_NONUNIFORM, parse_point, work};
 
-use super::{CliError, EvalArgs, Evaluation, Mode, Subject, evaluate, param_pairs, subject_of};
+use super::{CliError, EvalArgs, Evaluation, Mode, evaluate, param_pairs, subject_of};
 use crate::cost;
 use crate::format::{TextOrJson, json};
+use trig_specfile::AnyBasis;
 
 /// The points of `source`, one at a time: the text as written, its exact
 /// value (blank lines and `#` lines skipped).
@@ -142,7 +143,7 @@ fn json_limit(values: u64) -> trig_core::CoreError {
 struct Rows<'a> {
     args: &'a EvalArgs,
     mode: Mode,
-    subject: Option<&'a Subject>,
+    subject: Option<&'a AnyBasis>,
     /// The number of points, when known before (a file).
     total: Option<u64>,
     spent: u64,
@@ -154,7 +155,7 @@ struct Rows<'a> {
 /// The work of one evaluation at the domain's midpoint: what a point costs
 /// when nothing is exactly zero (a point such as `0` can be much cheaper,
 /// so it would predict a file badly).
-fn probe(args: &EvalArgs, mode: Mode, subject: Option<&Subject>) -> Option<u64> {
+fn probe(args: &EvalArgs, mode: Mode, subject: Option<&AnyBasis>) -> Option<u64> {
     let s = subject?;
     let pairs = param_pairs(&args.params).ok()?;
     let p = s.params_from_pairs(&pairs, args.allow_outside_range).ok()?;
