@@ -181,9 +181,19 @@ struct Reference {
 
 /// Two evaluations at `bits` and `2·bits`: the second, with four times
 /// their difference (plus its last place) as its error bound.
+///
+/// A value that is exactly 0 at both precisions may be a cancellation
+/// beyond them (`1 − cos θ` for `θ ≈ 10⁻³⁰⁸` is 0 at 2000 bits, `θ²/2`
+/// truly): the precision is raised (to 32000 bits at most) until no value is 0.
 fn reference(bits: u32, f: &dyn Fn(u32) -> Option<Vec<Float>>) -> Option<Vec<Reference>> {
-    let a = f(bits)?;
-    let b = f(2 * bits)?;
+    let mut bits = bits;
+    let (a, b) = loop {
+        let (a, b) = (f(bits)?, f(2 * bits)?);
+        if bits * 8 > 1 << 16 || !b.iter().any(Float::is_zero) {
+            break (a, b);
+        }
+        bits *= 4;
+    };
     a.iter()
         .zip(&b)
         .map(|(a, b)| {
