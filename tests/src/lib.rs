@@ -25,10 +25,15 @@ pub const FAMILIES: &[&str] = &[
 ];
 
 /// Path of the `trig-audit` binary in this workspace's target directory,
-/// built once (in the test profile, `debug` directory) if missing.
+/// built once (in the test profile, `debug` directory) if missing; the
+/// environment variable `TRIG_AUDIT_BIN` names another binary instead (to
+/// run a new test against an older build and see it fail).
 pub fn binary() -> PathBuf {
     static BIN: OnceLock<PathBuf> = OnceLock::new();
     BIN.get_or_init(|| {
+        if let Some(other) = std::env::var_os("TRIG_AUDIT_BIN") {
+            return PathBuf::from(other);
+        }
         let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
             .parent()
             .expect("workspace root")

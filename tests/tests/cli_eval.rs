@@ -1,6 +1,6 @@
 //! End-to-end tests of `trig-audit list` and `trig-audit eval`.
 
-use trig_e2e::{FAMILIES, assert_errors, error_line, example, run_with_input, stdout_ok};
+use trig_e2e::{FAMILIES, assert_errors, error_line, example, run, run_with_input, stdout_ok};
 
 #[test]
 fn list_shows_every_catalog_entry_with_citations() {
@@ -200,7 +200,8 @@ fn uniform_knots_make_the_printed_c_j2_divide_by_zero() {
 
 /// `--at-file` (and `-` for standard input) gives, for every point, the
 /// same digits as `--at` at that point (each value certified the same way),
-/// under a header stating the largest f64 error bound.
+/// the rows streamed between a header and a last line stating the largest
+/// f64 error bound.
 #[test]
 fn eval_at_file_matches_eval_at_each_point() {
     let points = ["0", "0.25", "1/3", "0.9", "1"];
@@ -218,12 +219,13 @@ fn eval_at_file_matches_eval_at_each_point() {
                 .expect("title")
                 .starts_with("# han at 5 points [lambda=-1/2]")
         );
+        assert_eq!(lines.next(), Some("# at\tb0\tb1\tb2\tb3"));
         if prec.is_none() {
-            let bound = lines.next().expect("bound line");
+            // the rows stream; the largest bound comes last
+            let bound = out.lines().last().expect("bound line");
             assert!(bound.starts_with("# every f64 value is within "), "{bound}");
         }
-        assert_eq!(lines.next(), Some("# at\tb0\tb1\tb2\tb3"));
-        for (line, at) in lines.zip(points) {
+        for (line, at) in lines.filter(|l| !l.starts_with('#')).zip(points) {
             let mut one = vec!["eval", "han", "--param", "lambda=-1/2", "--at", at];
             one.extend(prec.iter().flat_map(|p| ["--prec", *p]));
             let single = stdout_ok(&one);
@@ -269,11 +271,16 @@ fn eval_at_file_matches_eval_at_each_point() {
     ]);
     assert_eq!(spec.lines().count(), 3 + points.len());
     std::fs::write(&path, "0.5\n2\n").expect("write points");
+    // the rows stream: an error at a later point ends the output there,
+    // after the rows before it, with the one-line error and exit status 2
+    let late = run(&["eval", "han", "--param", "lambda=0", "--at-file", &file]);
+    assert!(!late.status.success());
+    let err = String::from_utf8_lossy(&late.stderr);
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.contains("point 2 is outside the domain"), "{err}");
+    let rows = String::from_utf8_lossy(&late.stdout);
+    assert!(rows.lines().any(|l| l.starts_with("0.5\t")), "{rows}");
     assert_errors(&[
-        (
-            &["eval", "han", "--param", "lambda=0", "--at-file", &file],
-            "point 2 is outside the domain",
-        ),
         (
             &[
                 "eval",

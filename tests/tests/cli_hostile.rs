@@ -192,14 +192,15 @@ fn requests_beyond_the_cost_model_are_refused_before_work_starts() {
 }
 
 /// `cos(8t)¹⁶` is within every documented formula limit, yet its
-/// nonnegativity certificate takes minutes (as `cos(24t)⁶⁴` did before the
-/// degree limit): with a time limit per claim the audit ends, the claim
-/// `not-checkable`.
+/// nonnegativity certificate takes many seconds (as `cos(24t)⁶⁴` did before
+/// the degree limit): with a time limit per claim the audit ends, the claim
+/// cut off — without a verdict, since a verdict must not depend on the
+/// machine (issue 22; `cli_hostile_round2.rs` checks the verdicts).
 #[test]
-fn slow_certificates_end_as_not_checkable() {
+fn slow_certificates_are_cut_off_by_the_time_limit() {
     let path = spec("slow", "angle", "cos(8*t)^16");
     let start = Instant::now();
-    let out = stdout_ok(&[
+    let err = error_line(&[
         "audit",
         "--spec",
         &path,
@@ -215,12 +216,9 @@ fn slow_certificates_end_as_not_checkable() {
         "{:?}",
         start.elapsed()
     );
-    let json: serde_json::Value = serde_json::from_str(&out).expect("json");
-    let text = json.to_string();
     assert!(
-        text.contains("not-checkable") && text.contains("time limit"),
-        "{}",
-        &text[..text.len().min(2000)]
+        err.contains("no claim was decided: nonnegativity cut off by the time limit"),
+        "{err}"
     );
 }
 

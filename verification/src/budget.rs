@@ -1,35 +1,37 @@
 //! Time-bounded decisions: a decision that does not finish within its
-//! budget is `not-checkable` (with the reason), never a hang.
+//! time limit is *cut off* — it gets no verdict, and the report says so —
+//! never a hang, and never a verdict that depends on the machine.
 //!
-//! The certification searches (Bernstein subdivision, resultants, Sturm
-//! sequences) are finite but can be long for formulas inside every
-//! documented limit. [`within`] runs one decision on its own thread and
-//! waits at most the budget; a decision that runs over is abandoned (its
-//! thread ends with the process) and reported as not checkable.
+//! Every decision is bounded in work by counted budgets (Bernstein
+//! subdivision, the interval search, the precision climb), so its verdict
+//! is the same on every machine; `not-checkable` comes from those budgets
+//! only. The time limit is a guard on top: [`bounded`] runs one decision on
+//! its own thread and waits at most the limit; a decision that runs over is
+//! abandoned (its thread ends with the process) and reported as cut off.
 
 use std::sync::mpsc;
 use std::time::Duration;
 
-use crate::verdict::Verdict;
-
-/// Default budget of one claim of a spec audit.
+/// Default time limit of one claim of a spec audit.
 pub const CLAIM_BUDGET: Duration = Duration::from_secs(10);
 
 /// Stack of a decision's thread: as deep as the main thread's and more.
 const STACK: usize = 64 << 20;
 
-/// `decide()`, or `not-checkable` if it takes longer than `budget` (or
-/// its thread cannot start or panics).
-pub fn within(budget: Duration, decide: impl FnOnce() -> Verdict + Send + 'static) -> Verdict {
-    bounded(budget, decide).unwrap_or_else(Verdict::not_checkable)
+/// Why a decision gave no result.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Stopped {
+    /// It ran past the time limit (no verdict: cut off).
+    CutOff,
+    /// It could not run or stopped without a result (the reason).
+    Failed(String),
 }
 
-/// `work()` on its own thread, waiting at most `budget`; the reason when
-/// it did not finish (time limit, thread not started, panic).
+/// `work()` on its own thread, waiting at most `budget`.
 pub fn bounded<T: Send + 'static>(
     budget: Duration,
     work: impl FnOnce() -> T + Send + 'static,
-) -> Result<T, String> {
+) -> Result<T, Stopped> {
     let (tx, rx) = mpsc::channel();
     std::thread::Builder::new()
         .name("claim".into())
@@ -38,35 +40,27 @@ pub fn bounded<T: Send + 'static>(
             // the receiver may be gone (budget spent): nothing to report to
             let _ = tx.send(work());
         })
-        .map_err(|e| format!("the decision could not be started: {e}"))?;
+        .map_err(|e| Stopped::Failed(format!("the decision could not be started: {e}")))?;
     match rx.recv_timeout(budget) {
         Ok(v) => Ok(v),
-        Err(mpsc::RecvTimeoutError::Timeout) => Err(format!(
-            "the decision did not finish within the time limit of {} s (the certification search was stopped; a longer --time-limit may decide it)",
-            budget.as_secs_f64()
+        Err(mpsc::RecvTimeoutError::Timeout) => Err(Stopped::CutOff),
+        Err(mpsc::RecvTimeoutError::Disconnected) => Err(Stopped::Failed(
+            "the decision stopped without a result".into(),
         )),
-        Err(mpsc::RecvTimeoutError::Disconnected) => {
-            Err("the decision stopped without a result".into())
-        }
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::Status;
 
     #[test]
-    fn a_slow_decision_is_not_checkable_and_a_fast_one_is_kept() {
-        let slow = within(Duration::from_millis(50), || {
+    fn a_slow_decision_is_cut_off_and_a_fast_one_is_kept() {
+        let slow = bounded(Duration::from_millis(50), || {
             std::thread::sleep(Duration::from_secs(5));
-            Verdict::not_checkable("never seen")
+            1
         });
-        assert_eq!(slow.status, Status::NotCheckable);
-        assert!(slow.evidence[0].contains("time limit"), "{slow:?}");
-        let fast = within(Duration::from_secs(5), || {
-            Verdict::new(Status::Holds, "m", Vec::<String>::new())
-        });
-        assert_eq!(fast.status, Status::Holds);
+        assert_eq!(slow, Err(Stopped::CutOff));
+        assert_eq!(bounded(Duration::from_secs(5), || 2), Ok(2));
     }
 }

@@ -14,7 +14,7 @@
 use rug::Rational;
 use trig_symbolic::{Poly, Sym};
 
-use crate::bernstein::{SignNd, Tensor, sign_on_unit_cube};
+use crate::bernstein::{MAX_COEFFICIENT_WORK, SignNd, Tensor, sign_on_unit_cube};
 use crate::domain::{ParamBox, in_z, unit_var};
 
 /// Halvings allowed per test before giving up on a box: deep for a single
@@ -194,6 +194,12 @@ fn factor_sign(d: &Poly, trig: bool, params: &[(&str, ParamBox)]) -> FactorSign 
                 "cannot fix the sign of {d} (subdivision depth limit)"
             ));
         }
+        Ok(SignNd::OutOfBudget { boxes }) => {
+            return FactorSign::Undecided(format!(
+                "cannot fix the sign of {d} ({})",
+                budget_spent(boxes)
+            ));
+        }
         Err(e) => return FactorSign::Undecided(e),
     };
     let Some((z1, v1, d1)) = value(&first) else {
@@ -218,8 +224,19 @@ fn factor_sign(d: &Poly, trig: bool, params: &[(&str, ParamBox)]) -> FactorSign 
         Ok(SignNd::Undecided { .. }) => FactorSign::Undecided(format!(
             "cannot fix the sign of {d} (subdivision depth limit)"
         )),
+        Ok(SignNd::OutOfBudget { boxes }) => FactorSign::Undecided(format!(
+            "cannot fix the sign of {d} ({})",
+            budget_spent(boxes)
+        )),
         Err(e) => FactorSign::Undecided(e),
     }
+}
+
+/// Why a subdivision stopped at its budget.
+fn budget_spent(boxes: usize) -> String {
+    format!(
+        "the subdivision stopped at its budget of {MAX_COEFFICIENT_WORK} coefficient operations, {boxes} boxes proved"
+    )
 }
 
 /// Decides `f(θ; p) ≥ 0` for every `θ ∈ [0, π/2]` (every `t ∈ [0, 1]`) and
@@ -322,6 +339,7 @@ pub fn certify_box_to_depth(
                 )),
             }
         }
+        SignNd::OutOfBudget { boxes } => BoxCertificate::Undecided(budget_spent(boxes)),
         SignNd::Undecided { cell } => BoxCertificate::Undecided(format!(
             "depth limit on the box {}",
             cell.iter()

@@ -7,7 +7,10 @@
 
 mod cell;
 mod commands;
+mod cost;
+mod digits;
 mod format;
+mod names;
 mod output;
 
 use std::ffi::OsString;
@@ -65,8 +68,27 @@ pub enum Outcome {
 /// an exact computation derived.)
 pub const MAX_ERROR: usize = 10_000;
 
-/// Runs one command line (`args[0]` is the program name).
+/// Runs one command line (`args[0]` is the program name) and returns its
+/// whole output (for tests and the fuzz suite; the binary streams with
+/// [`run_into`]).
 pub fn run<I, T>(args: I) -> Outcome
+where
+    I: IntoIterator<Item = T>,
+    T: Into<OsString> + Clone,
+{
+    let mut out = Vec::new();
+    match run_into(args, &mut out) {
+        Outcome::Output(_) => Outcome::Output(String::from_utf8_lossy(&out).into_owned()),
+        other => other,
+    }
+}
+
+/// Runs one command line, writing its output to `out` as it is produced
+/// (`eval --at-file` writes row by row, in bounded memory); the outcome of
+/// a command that ran carries no text then. A closed `out` (a broken pipe)
+/// ends the command quietly, as Unix tools do; any other write error is
+/// the outcome's error.
+pub fn run_into<I, T>(args: I, out: &mut dyn std::io::Write) -> Outcome
 where
     I: IntoIterator<Item = T>,
     T: Into<OsString> + Clone,
@@ -90,6 +112,9 @@ where
         }
     };
     let result = match cli.command {
+        Command::Eval(args) if commands::eval::streams(&args) => {
+            commands::eval::stream(&args, out).map(|()| String::new())
+        }
         Command::Audit(args) => commands::audit::run(&args),
         Command::List(args) => commands::list::run(&args),
         Command::Eval(args) => commands::eval::run(&args),
@@ -99,8 +124,16 @@ where
         Command::Plot(args) => commands::plot::run(&args),
         Command::Interp(args) => commands::interp::run(&args),
     };
-    match result {
-        Ok(text) => Outcome::Output(text),
+    let written = result.and_then(|text| {
+        out.write_all(text.as_bytes())
+            .and_then(|()| out.flush())
+            .map_err(commands::CliError::Write)
+    });
+    match written {
+        Ok(()) => Outcome::Output(String::new()),
+        Err(commands::CliError::Write(e)) if e.kind() == std::io::ErrorKind::BrokenPipe => {
+            Outcome::Output(String::new())
+        }
         Err(e) => Outcome::Error(one_line(&e.to_string())),
     }
 }

@@ -3,15 +3,27 @@
 //! leaves the old file or none, and the temporary file is removed when
 //! dropped), with the `wrote …` note on standard error so that standard
 //! output carries only results.
+//!
+//! A temporary file is named `.trig-audit-PID-XXXXXX` after the process
+//! that writes it; one left by a killed process (`SIGKILL` leaves no time
+//! to remove it) is removed by the next write into the same directory, so
+//! they never accumulate. A symbolic link is written through (its target
+//! is replaced, never the link); a device, pipe or socket is written in
+//! place; `-` is not a file name here (the commands that can print to
+//! standard output do so without `--output`).
 
 use std::io::Write;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use super::commands::CliError;
 
+/// The prefix of this program's temporary files.
+const PREFIX: &str = ".trig-audit-";
+
 /// Writes `bytes` to `path` atomically (a regular file; a device or pipe
-/// is written in place).
+/// is written in place, a symbolic link written through).
 pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
+    let path = &resolve(path)?;
     // the kind only: tempfile's errors name the temporary file, not the target
     let fail = |e: std::io::Error| {
         CliError::Usage(format!(
@@ -34,8 +46,9 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
         .parent()
         .filter(|d| !d.as_os_str().is_empty())
         .unwrap_or(Path::new("."));
+    remove_stale_temporaries(dir);
     let mut file = tempfile::Builder::new()
-        .prefix(".trig-audit-")
+        .prefix(&format!("{PREFIX}{}-", std::process::id()))
         .tempfile_in(dir)
         .map_err(fail)?;
     file.write_all(bytes).map_err(fail)?;
@@ -52,6 +65,54 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
     file.as_file().sync_all().map_err(fail)?;
     file.persist(path).map_err(|e| fail(e.error))?;
     Ok(())
+}
+
+/// The file `path` names: `-` refused, a symbolic link followed to its
+/// target (which must exist: a dangling link or a loop is refused).
+pub fn resolve(path: &Path) -> Result<PathBuf, CliError> {
+    if path.as_os_str() == "-" {
+        return Err(CliError::Usage(
+            "--output -: standard output is not a file here (this command writes files only)"
+                .into(),
+        ));
+    }
+    match std::fs::symlink_metadata(path) {
+        Ok(m) if m.file_type().is_symlink() => std::fs::canonicalize(path).map_err(|e| {
+            CliError::Usage(format!(
+                "cannot write {}: a symbolic link whose target cannot be reached ({}); it is never replaced",
+                path.display(),
+                std::io::Error::from(e.kind())
+            ))
+        }),
+        _ => Ok(path.to_path_buf()),
+    }
+}
+
+/// Removes the temporary files of processes that no longer run
+/// (`.trig-audit-PID-…` with no `/proc/PID`) from `dir`; nothing where
+/// `/proc` is not there to tell.
+fn remove_stale_temporaries(dir: &Path) {
+    if !Path::new("/proc/self").exists() {
+        return;
+    }
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return;
+    };
+    for entry in entries.flatten() {
+        let name = entry.file_name();
+        let Some(pid) = name
+            .to_str()
+            .and_then(|n| n.strip_prefix(PREFIX))
+            .and_then(|rest| rest.split_once('-'))
+            .and_then(|(pid, _)| pid.parse::<u32>().ok())
+        else {
+            continue;
+        };
+        let gone = !Path::new(&format!("/proc/{pid}")).exists();
+        if gone && entry.file_type().is_ok_and(|t| t.is_file()) {
+            let _ = std::fs::remove_file(entry.path());
+        }
+    }
 }
 
 /// Notes a written file on standard error: `wrote PATH (WHAT)`.

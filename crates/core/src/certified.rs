@@ -11,7 +11,6 @@
 //! (fewer digits, or an error naming the limit), never guessed.
 
 use std::cmp::Ordering;
-use std::time::{Duration, Instant};
 
 use rug::Rational;
 
@@ -22,6 +21,7 @@ use crate::error::{CoreError, Result};
 use crate::interval::{Fault, Interval};
 use crate::number::parse_exact;
 use crate::scalar::{Real, Ring};
+use crate::work;
 
 /// The highest working precision, in bits (about 19,700 decimal digits).
 pub const MAX_BITS: u32 = 1 << 16;
@@ -41,19 +41,21 @@ pub const F64_CHECK_DIGITS: usize = 20;
 /// certified value replaces it.
 const F64_TOLERANCE: f64 = 1e-8;
 
-/// Time budget of one certified evaluation. The cost of each precision
-/// step is predicted from the step before (doubling the precision at most
-/// quadruples the work of MPFR's arithmetic and functions at these sizes):
-/// a step that would end past the budget is not started.
-pub const TIME_BUDGET: Duration = Duration::from_secs(10);
+/// Work budget of one certified evaluation, in [`work`] units (about 10 s
+/// of MPFR arithmetic on the reference machine of BENCHMARKS.md). The cost
+/// of each precision step is predicted from the step before (the same
+/// operations at the new precision, [`work::scale`]): a step whose
+/// predicted cost would take the total past the budget is not started.
+/// Counted, never timed: the same input proves the same digits anywhere.
+pub const WORK_BUDGET: u64 = 500_000_000;
 
 /// Why an evaluation stopped short of its target.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Stop {
     /// The precision reached [`MAX_BITS`].
     MaxBits,
-    /// The next step would have run past [`TIME_BUDGET`].
-    Time,
+    /// The next step would have taken the work past [`WORK_BUDGET`].
+    Budget,
 }
 
 /// Enclosures proved at some working precision.
@@ -68,14 +70,14 @@ pub struct Enclosures {
 }
 
 impl Enclosures {
-    /// The fewest proved significant digits over the values that are not
-    /// enclosures of zero (`usize::MAX` when all are exact).
+    /// The fewest proved significant digits over the values (`usize::MAX`
+    /// when all are exact). An enclosure of zero proves none: a tiny value
+    /// has significant digits, and zero has none, so `0 ± b` delivers no
+    /// digit of either.
     pub fn digits(&self, max: usize) -> usize {
         self.values
             .iter()
-            .map(|v| v.decimal(max))
-            .filter(|d| !matches!(d, Decimal::Small { .. }))
-            .map(|d| d.digits())
+            .map(|v| v.decimal(max).digits())
             .min()
             .unwrap_or(usize::MAX)
     }
@@ -103,7 +105,7 @@ pub fn check(values: &[Interval], what: &str, bits: u32) -> Result<()> {
 /// Evaluates `f` at doubling precisions from [`MIN_BITS`]: up to `target`
 /// bits, then on while `more` says the result is not good enough, up to
 /// [`MAX_BITS`]; each step only if its predicted cost fits the
-/// [`TIME_BUDGET`]. A divisor not proved nonzero is retried at the next
+/// [`WORK_BUDGET`]. A divisor not proved nonzero is retried at the next
 /// precision; other errors end the climb.
 fn climb(
     target: u32,
@@ -111,13 +113,18 @@ fn climb(
     f: &mut impl FnMut(u32) -> Result<Vec<Interval>>,
     more: impl Fn(&[Interval]) -> bool,
 ) -> Result<Enclosures> {
-    let start = Instant::now();
+    let mut spent = 0u64;
     let mut bits = MIN_BITS.min(target);
     let mut last: Option<Enclosures> = None;
+    let over_budget = || CoreError::Limit {
+        what: what.to_string(),
+        limit: format!("{WORK_BUDGET} units of certified arithmetic"),
+    };
     loop {
-        let step = Instant::now();
-        let result = f(bits).and_then(|values| check(&values, what, bits).map(|()| values));
-        let took = step.elapsed();
+        let (result, cost) = work::measure(|| {
+            f(bits).and_then(|values| check(&values, what, bits).map(|()| values))
+        });
+        spent = spent.saturating_add(cost);
         let failure = match result {
             Ok(values) => {
                 let done = bits >= target && !more(&values);
@@ -134,12 +141,13 @@ fn climb(
             Err(e @ CoreError::NotCertifiedNonzero { .. }) => Some(e),
             Err(e) => return Err(e),
         };
+        let next = bits.saturating_mul(2).min(MAX_BITS);
         let stop = if bits >= MAX_BITS {
             Stop::MaxBits
-        } else if start.elapsed() + took * 4 > TIME_BUDGET {
-            Stop::Time
+        } else if spent.saturating_add(work::scale(cost, bits, next)) > WORK_BUDGET {
+            Stop::Budget
         } else {
-            bits = bits.saturating_mul(2).min(MAX_BITS);
+            bits = next;
             continue;
         };
         return match (failure, last) {
@@ -148,21 +156,15 @@ fn climb(
                 e.stopped = Some(stop);
                 Ok(e)
             }
-            (None, None) => Err(CoreError::Limit {
-                what: what.to_string(),
-                limit: format!("{} s of computation", TIME_BUDGET.as_secs()),
-            }),
+            (None, None) => Err(over_budget()),
         };
     }
-    last.ok_or_else(|| CoreError::Limit {
-        what: what.to_string(),
-        limit: format!("{} s of computation", TIME_BUDGET.as_secs()),
-    })
+    last.ok_or_else(over_budget)
 }
 
 /// Evaluates `f` at `bits` (after cheaper steps that predict its cost) and
 /// checks the result; an error naming the budget when `bits` cannot be
-/// reached within [`TIME_BUDGET`].
+/// reached within [`WORK_BUDGET`].
 pub fn at_bits(
     bits: u32,
     what: &str,
@@ -172,7 +174,7 @@ pub fn at_bits(
     if e.bits < bits {
         return Err(CoreError::Limit {
             what: format!("{what} at {bits} bits (predicted from {} bits)", e.bits),
-            limit: format!("{} s of computation", TIME_BUDGET.as_secs()),
+            limit: format!("{WORK_BUDGET} units of certified arithmetic"),
         });
     }
     Ok(e)
@@ -194,20 +196,41 @@ fn resolved(values: &[Interval], digits: usize) -> bool {
     })
 }
 
+/// Evaluates `f` at increasing precision until every value has `digits`
+/// proved significant digits — relative precision: a tiny nonzero value is
+/// climbed until its own digits are proved, and only an exact value (a
+/// single point, such as an exact zero) needs no more — or [`MAX_BITS`] or
+/// the [`WORK_BUDGET`] is reached. Returns the last enclosures: possibly
+/// with fewer digits than asked ([`Enclosures::digits`] says how many are
+/// proved, [`Enclosures::stopped`] why). This is what a request for
+/// `digits` significant digits promises.
+pub fn to_significant_digits(
+    digits: usize,
+    what: &str,
+    mut f: impl FnMut(u32) -> Result<Vec<Interval>>,
+) -> Result<Enclosures> {
+    climb(bits_for(digits), what, &mut f, |v| {
+        v.iter().any(|x| x.decimal(digits).digits() < digits)
+    })
+}
+
+/// The working precision `digits` decimal digits need, with guard bits.
+fn bits_for(digits: usize) -> u32 {
+    let need = (digits as f64 * std::f64::consts::LOG2_10).ceil() as u32 + 32;
+    need.clamp(MIN_BITS, MAX_BITS)
+}
+
 /// Evaluates `f` at increasing precision until every value is
-/// [`resolved`] to `digits`, or [`MAX_BITS`] or the [`TIME_BUDGET`] is
-/// reached. Returns the last enclosures: possibly with fewer digits than
-/// asked ([`Enclosures::digits`] says how many are proved,
-/// [`Enclosures::stopped`] why).
+/// [`resolved`] to `digits` (an enclosure of zero far below the largest
+/// value counts: for certified error bounds of f64 results, not for
+/// printed digits — see [`to_significant_digits`]), or [`MAX_BITS`] or the
+/// [`WORK_BUDGET`] is reached.
 pub fn to_digits(
     digits: usize,
     what: &str,
     mut f: impl FnMut(u32) -> Result<Vec<Interval>>,
 ) -> Result<Enclosures> {
-    let need = (digits as f64 * std::f64::consts::LOG2_10).ceil() as u32 + 32;
-    climb(need.clamp(MIN_BITS, MAX_BITS), what, &mut f, |v| {
-        !resolved(v, digits)
-    })
+    climb(bits_for(digits), what, &mut f, |v| !resolved(v, digits))
 }
 
 /// The functions of `basis` at the exact point `x` with exact parameters,
@@ -422,6 +445,38 @@ mod tests {
         // b3(1/4; 3/5): digits from `bc -l` at scale 60
         let b3 = e.values[3].decimal(50).to_string();
         assert_eq!(b3, "2.5823702910142048907010730505698383907471382003678e-3");
+    }
+
+    /// Han (6.2) at λ = 0, u = 10⁻¹⁰: b₂ ≈ 2.47·10⁻²⁰ and b₃ ≈ 1.52·10⁻⁴⁰ are
+    /// tiny, not zero: five significant digits of each are proved (the
+    /// precision is raised for them), not `0 ± 2.2e-19`.
+    #[test]
+    fn tiny_values_get_their_own_significant_digits() {
+        let at = crate::number::parse_exact("1e-10").unwrap();
+        let e = to_significant_digits(5, "han", |bits| {
+            Ok(enclose_basis(&Family::Han, &at, &[q(0, 1)], bits))
+        })
+        .unwrap();
+        assert!(e.digits(5) >= 5, "{:?}", e.values);
+        assert!(e.values[2].decimal(5).to_string().starts_with("2.4674e-20"));
+        assert!(e.values[3].decimal(5).to_string().ends_with("e-40"));
+        // an exact zero is a value with no significant digits: nothing to climb
+        let z = to_significant_digits(5, "b", |bits| {
+            Ok(vec![Interval::from_rational(bits, &q(0, 1))])
+        })
+        .unwrap();
+        assert_eq!((z.bits, z.digits(5)), (64, usize::MAX));
+        // an enclosure of zero proves no digit
+        let small = Enclosures {
+            values: vec![Interval::from_ends(
+                64,
+                &rug::Float::with_val(64, -1e-30),
+                &rug::Float::with_val(64, 1e-30),
+            )],
+            bits: 64,
+            stopped: None,
+        };
+        assert_eq!(small.digits(5), 0);
     }
 
     #[test]

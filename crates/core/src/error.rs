@@ -74,6 +74,9 @@ pub enum CoreError {
         "{what}: at most {limit} (a limit of trig-audit, to keep every request bounded in time)"
     )]
     Limit { what: String, limit: String },
+    /// Input that could not be read (too large, not text, missing).
+    #[error(transparent)]
+    Input(#[from] crate::input::InputError),
     /// A weight that is not positive.
     #[error("weight w{index} = {value} is not positive")]
     NonPositiveWeight { index: usize, value: String },

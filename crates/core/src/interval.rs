@@ -37,6 +37,7 @@ use rug::float::{Constant, Round};
 use rug::{Float, Rational};
 
 use crate::scalar::{Real, Ring};
+use crate::work;
 
 /// Why an interval has no enclosure.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -60,6 +61,7 @@ pub struct Interval {
 /// `0·∞`, `∞/∞` on overflowed ends) becomes the conservative infinity of
 /// that direction.
 fn directed(prec: u32, round: Round, op: impl FnOnce(Round) -> Float) -> Float {
+    work::charge(work::op_units(prec));
     let mut x = op(round);
     if x.is_nan() {
         x = match round {
@@ -451,6 +453,8 @@ impl Real for Interval {
                 fault: None,
             }
         };
+        // sine and cosine, each rounded both ways
+        work::charge(4 * work::TRANSCENDENTAL * work::op_units(prec));
         let s = widen(
             Float::with_val_round(prec, m.sin_ref(), Round::Down).0,
             Float::with_val_round(prec, m.sin_ref(), Round::Up).0,
@@ -469,6 +473,7 @@ impl Real for Interval {
             return self.clone();
         }
         let prec = self.prec();
+        work::charge(2 * work::TRANSCENDENTAL * work::op_units(prec));
         Interval {
             lo: directed(prec, Round::Down, |r| {
                 Float::with_val_round(prec, self.lo.exp_ref(), r).0

@@ -30,6 +30,7 @@ pub mod error;
 pub mod families;
 pub mod family;
 mod float;
+pub mod input;
 pub mod interval;
 pub mod knots;
 pub mod mpfr;
@@ -41,6 +42,7 @@ pub mod scalar;
 pub mod sincos;
 pub mod surface;
 pub mod variable;
+pub mod work;
 
 pub use basis::{Basis, Described};
 pub use batch::Batch;

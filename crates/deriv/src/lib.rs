@@ -15,6 +15,6 @@ pub use join::{
 pub mod table;
 
 pub use table::{
-    End, KnotDerivatives, Wrt, curve_endpoint_derivatives, endpoint_derivatives, knot_derivatives,
-    rate,
+    End, KnotDerivatives, VanishingDenominator, Wrt, curve_endpoint_derivatives,
+    endpoint_derivatives, knot_derivatives, rate, rational_curve_endpoint_derivatives,
 };

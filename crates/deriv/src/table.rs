@@ -263,7 +263,9 @@ fn scale<T: Ring, const K: usize>(jets: Vec<Jet<T, K>>, rate: &T) -> Vec<Vec<T>>
 /// the exact form as a combination of control points.
 ///
 /// # Panics
-/// If `points` (or `weights`) do not have one entry per function.
+/// If `points` (or `weights`) do not have one entry per function, or when
+/// the weighted sum vanishes exactly at `end` (use
+/// [`rational_curve_endpoint_derivatives`], which says so).
 pub fn curve_endpoint_derivatives<T: Ring, const K: usize>(
     basis: impl Basis,
     params: &[T],
@@ -273,33 +275,98 @@ pub fn curve_endpoint_derivatives<T: Ring, const K: usize>(
     wrt: Wrt,
     h: &T,
 ) -> Vec<T> {
-    let atoms = end_atoms::<T, K>(&basis, end, h, params);
-    let jparams: Vec<Jet<T, K>> = params.iter().cloned().map(Jet::constant).collect();
-    let functions = basis.eval(&atoms, &jparams);
-    assert_eq!(
-        functions.len(),
-        points.len(),
-        "one control point per function"
-    );
-    let weighted: Vec<Jet<T, K>> = match weights {
+    match weights {
+        None => polynomial_curve::<T, K>(&basis, params, points, end, wrt, h),
         Some(w) => {
-            assert_eq!(w.len(), functions.len(), "one weight per function");
-            functions
-                .iter()
-                .zip(w)
-                .map(|(b, wi)| b.clone() * &Jet::constant(wi.clone()))
-                .collect()
+            rational_curve_endpoint_derivatives::<T, K>(basis, params, points, w, end, wrt, h)
+                .unwrap_or_else(|e| panic!("{e}"))
         }
-        None => functions,
-    };
+    }
+}
+
+/// The rational curve `Σ wᵢ bᵢ Pᵢ / Σ wᵢ bᵢ` has no derivatives at an end
+/// where its denominator is exactly zero (`0/0` there).
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error(
+    "the rational curve Σ w_i b_i P_i / Σ w_i b_i is not defined at the {end} of the domain ({point}): its denominator Σ w_i b_i is exactly 0 there (every function vanishes at that end), so it has no derivatives there"
+)]
+pub struct VanishingDenominator {
+    pub end: End,
+    /// The end as a point of the variable (`t = 0`).
+    pub point: String,
+}
+
+/// Derivatives of orders `0..K` of the rational curve
+/// `Σ wᵢ bᵢ Pᵢ / Σ wᵢ bᵢ` at `end` (see [`curve_endpoint_derivatives`]); an
+/// error naming the end when the weighted sum is exactly zero there.
+///
+/// # Panics
+/// If `points` or `weights` do not have one entry per function.
+pub fn rational_curve_endpoint_derivatives<T: Ring, const K: usize>(
+    basis: impl Basis,
+    params: &[T],
+    points: &[T],
+    weights: &[T],
+    end: End,
+    wrt: Wrt,
+    h: &T,
+) -> Result<Vec<T>, VanishingDenominator> {
+    let functions = curve_functions::<T, K>(&basis, params, points.len(), end, h);
+    assert_eq!(weights.len(), functions.len(), "one weight per function");
+    let weighted: Vec<Jet<T, K>> = functions
+        .iter()
+        .zip(weights)
+        .map(|(b, wi)| b.clone() * &Jet::constant(wi.clone()))
+        .collect();
+    let denominator = sum(weighted.iter().cloned());
+    if denominator.coeffs()[0].is_zero() {
+        let domain = basis.domain();
+        let at = match end {
+            End::Start => &domain.start,
+            End::End => &domain.end,
+        };
+        return Err(VanishingDenominator {
+            end,
+            point: format!("{} = {}", domain.name, at.text(&domain.param_names)),
+        });
+    }
     let numerator = sum(weighted
         .iter()
         .zip(points)
         .map(|(b, p)| b.clone() * &Jet::constant(p.clone())));
-    let curve = match weights {
-        Some(_) => numerator / &sum(weighted.into_iter()),
-        None => numerator,
-    };
+    let curve = numerator / &denominator;
+    Ok(scale(vec![curve], &rate(&basis, wrt, h, params)).remove(0))
+}
+
+/// The basis functions' jets at `end`, one per control point.
+fn curve_functions<T: Ring, const K: usize>(
+    basis: impl Basis,
+    params: &[T],
+    points: usize,
+    end: End,
+    h: &T,
+) -> Vec<Jet<T, K>> {
+    let atoms = end_atoms::<T, K>(&basis, end, h, params);
+    let jparams: Vec<Jet<T, K>> = params.iter().cloned().map(Jet::constant).collect();
+    let functions = basis.eval(&atoms, &jparams);
+    assert_eq!(functions.len(), points, "one control point per function");
+    functions
+}
+
+/// `Σ bᵢ Pᵢ` at `end`.
+fn polynomial_curve<T: Ring, const K: usize>(
+    basis: impl Basis,
+    params: &[T],
+    points: &[T],
+    end: End,
+    wrt: Wrt,
+    h: &T,
+) -> Vec<T> {
+    let functions = curve_functions::<T, K>(&basis, params, points.len(), end, h);
+    let curve = sum(functions
+        .iter()
+        .zip(points)
+        .map(|(b, p)| b.clone() * &Jet::constant(p.clone())));
     scale(vec![curve], &rate(&basis, wrt, h, params)).remove(0)
 }
 

@@ -10,6 +10,7 @@ use std::path::Path;
 
 use nalgebra::Point2;
 use trig_core::echo;
+use trig_core::input::{MAX_TEXT_BYTES, Source, read_text};
 
 use crate::error::{FitError, Result};
 
@@ -34,9 +35,12 @@ pub struct Outline {
 impl Outline {
     /// Reads a data file.
     pub fn read(path: &Path) -> Result<Outline> {
-        let text = std::fs::read_to_string(path).map_err(|e| FitError::Read {
-            path: path.display().to_string(),
-            reason: e.to_string(),
+        // bounded, a byte-order mark dropped: the same reader as every input
+        let text = read_text(&Source::File(path.to_path_buf()), MAX_TEXT_BYTES).map_err(|e| {
+            FitError::Read {
+                path: path.display().to_string(),
+                reason: e.reason(),
+            }
         })?;
         let name = path.file_stem().map_or_else(
             || "outline".to_string(),
@@ -47,6 +51,7 @@ impl Outline {
 
     /// Parses the text of a data file; `origin` names it in errors.
     pub fn parse(text: &str, name: &str, origin: &str) -> Result<Outline> {
+        let text = text.strip_prefix(trig_core::input::BOM).unwrap_or(text);
         let bad = |line: usize, reason: String| FitError::Malformed {
             origin: origin.to_string(),
             line,

@@ -256,6 +256,16 @@ fn lex(chars: &[char], grammar: Grammar) -> Result<Vec<Token>, FormulaError> {
                 while i < chars.len() && (chars[i].is_ascii_digit() || chars[i] == '.') {
                     i += 1;
                 }
+                // an exponent: `1e300`, `2.5E-3` (`e` and `E` are no names)
+                if matches!(chars.get(i), Some('e' | 'E')) {
+                    let sign = usize::from(matches!(chars.get(i + 1), Some('+' | '-')));
+                    if chars.get(i + 1 + sign).is_some_and(char::is_ascii_digit) {
+                        i += 1 + sign;
+                        while i < chars.len() && chars[i].is_ascii_digit() {
+                            i += 1;
+                        }
+                    }
+                }
                 out.push(Token {
                     kind: Kind::Number(chars[start..i].iter().collect()),
                     pos: start,

@@ -5,7 +5,7 @@ use rug::Rational;
 use toml::Spanned;
 use trig_core::{Affine, parse_exact};
 use trig_deriv::{End, JoinKind, Wrt};
-use trig_symbolic::Sym;
+use trig_symbolic::{Names, Sym};
 
 use crate::check::{Check, Condition, Monotone, Printed, SpecClaim};
 use crate::error::{Result, SpecError};
@@ -15,10 +15,26 @@ use crate::spec::{MAX_ORDER, Spec};
 use trig_core::ParamRange;
 
 impl Spec {
-    /// The names of the `G¹`/`G²` factors: `alpha`, `beta`, unless a shape
-    /// parameter has that name (then `gamma`, `delta`).
+    /// The names a reader sees in this spec's formulas: the parameters
+    /// (names and printed symbols), the functions and definitions; tool
+    /// symbols drawn from it read like none of them.
+    pub fn names(&self) -> Names {
+        let mut names = Names::of_parameters(
+            self.params
+                .iter()
+                .map(|p| (p.name.as_str(), p.symbol.as_str())),
+        );
+        for f in self.functions.iter().chain(&self.definitions) {
+            names.user(&f.name, "a function or definition");
+        }
+        names
+    }
+
+    /// The names of the `G¹`/`G²` factors: `alpha`, `beta`, or the first
+    /// pair of (`gamma`, `delta`), (`kappa`, `nu`), … whose names and
+    /// letters no parameter, symbol or function takes.
     pub fn join_factors(&self) -> [String; 2] {
-        trig_deriv::factor_names(&trig_core::Described::param_names(self))
+        self.names().factors().map(|f| f.to_string())
     }
 
     /// The parameters of the two segments of a join with different
@@ -200,7 +216,19 @@ fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
         },
         "curve-derivative" => {
             let item = need(src, c, &c.value, "value")?;
-            let points: Vec<String> = (0..spec.functions.len()).map(|i| format!("P{i}")).collect();
+            let mut names = spec.names();
+            let mut points = Vec::new();
+            for i in 0..spec.functions.len() {
+                let point = format!("P{i}");
+                names
+                    .fixed(&point, "a control point")
+                    .map_err(|e| SpecError::Invalid {
+                        at: src.at(item.span().start),
+                        field: "claims.value".into(),
+                        message: e.to_string(),
+                    })?;
+                points.push(point);
+            }
             Check::CurveDerivative {
                 end: end_field(src, need(src, c, &c.end, "end")?)?,
                 order: order_field(src, c, need(src, c, &c.order, "order")?)?,
@@ -422,15 +450,29 @@ fn join(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check> {
         })?;
     let different = c.different.unwrap_or(false);
     let n = spec.functions.len();
-    let factors = spec.join_factors();
-    let mut extra = spec.control_points();
+    // the names a printed condition may use, each reading as one thing
+    let mut names = spec.names();
+    let clash = |e: trig_symbolic::NameClash| SpecError::Invalid {
+        at: src.at(c.check.span().start),
+        field: "claims".into(),
+        message: format!("claim `{}`: {e}", c.id.get_ref().trim()),
+    };
+    let mut extra = Vec::new();
+    for point in spec.control_points() {
+        names.fixed(&point, "a control point").map_err(clash)?;
+        extra.push(point);
+    }
+    let factors = names.factors().map(|f| f.to_string());
     extra.extend(factors.iter().cloned());
     let mut segment_ranges = Vec::new();
     if different {
         for k in [1, 2] {
             for (p, s) in spec.params.iter().zip(spec.segment_params(k)) {
-                extra.push(s.to_string());
-                segment_ranges.push((s.to_string(), p.range.clone()));
+                let copy = s.to_string();
+                let what = format!("`{}` on segment {k}", p.name);
+                names.fixed(&copy, &what).map_err(clash)?;
+                extra.push(copy.clone());
+                segment_ranges.push((copy, p.range.clone()));
             }
         }
     }

@@ -127,20 +127,26 @@ impl Linear {
     }
 }
 
-/// Reads an argument that must be linear in the variable `var_name` and
-/// the parameters (`what` names it in errors: "the argument of sin").
+/// Reads an argument that must be linear in the variable `var_name` (none:
+/// only the parameters) and the parameters (`what` names it in errors:
+/// "the argument of sin").
 pub fn linear(
     e: &Expr,
-    var_name: &str,
+    var_name: Option<&str>,
     params: &[(String, String)],
     what: &str,
 ) -> Result<Linear, FormulaError> {
     let refuse = |pos: usize| {
         FormulaError::new(
             pos,
-            format!(
-                "{what} must be linear in {var_name} and the parameters, with rational or π coefficients (e.g. {var_name}/2, pi*{var_name}/2, alpha - {var_name})"
-            ),
+            match var_name {
+                Some(v) => format!(
+                    "{what} must be linear in {v} and the parameters, with rational or π coefficients (e.g. {v}/2, pi*{v}/2, alpha - {v})"
+                ),
+                None => format!(
+                    "{what} must be linear in the parameters, with rational or π coefficients (e.g. alpha, pi/2, 2*alpha + 1)"
+                ),
+            },
         )
     };
     let rec = |x: &Expr| linear(x, var_name, params, what);
@@ -149,7 +155,7 @@ pub fn linear(
             rest: Affine::rational(q.clone()),
             ..Linear::default()
         },
-        Node::Name(n) if n == var_name => Linear {
+        Node::Name(n) if Some(n.as_str()) == var_name => Linear {
             x: Affine::rational(Rational::from(1)),
             ..Linear::default()
         },
@@ -166,7 +172,8 @@ pub fn linear(
                 return Err(FormulaError::new(
                     e.pos,
                     format!(
-                        "`{n}` may not appear in {what}: only {var_name}, the parameters, pi and numbers"
+                        "`{n}` may not appear in {what}: only {}the parameters, pi and numbers",
+                        var_name.map(|v| format!("{v}, ")).unwrap_or_default()
                     ),
                 ));
             }
@@ -365,7 +372,7 @@ impl Lowering<'_, '_> {
                 });
         }
         let what = format!("the argument of {}", f.name());
-        let l = linear(arg, scope.var_name, scope.params, &what)?;
+        let l = linear(arg, Some(scope.var_name), scope.params, &what)?;
         let params = self.params();
         let domain = scope.domain;
         let multiple = |coef: &Affine,
@@ -619,10 +626,16 @@ mod tests {
     #[test]
     fn linear_arguments() {
         let p = params();
-        let l = linear(&ast::parse("pi*u/2 - lambda/3 + 1").unwrap(), "u", &p, "x").unwrap();
+        let l = linear(
+            &ast::parse("pi*u/2 - lambda/3 + 1").unwrap(),
+            Some("u"),
+            &p,
+            "x",
+        )
+        .unwrap();
         assert_eq!(l.x, Affine::pi_times(q(1, 2)));
         assert_eq!(l.rest.text(&["m".into(), "lambda".into()]), "-lambda/3 + 1");
-        assert!(linear(&ast::parse("u*u").unwrap(), "u", &p, "x").is_err());
-        assert!(linear(&ast::parse("sin(u)").unwrap(), "u", &p, "x").is_err());
+        assert!(linear(&ast::parse("u*u").unwrap(), Some("u"), &p, "x").is_err());
+        assert!(linear(&ast::parse("sin(u)").unwrap(), Some("u"), &p, "x").is_err());
     }
 }

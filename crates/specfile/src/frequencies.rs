@@ -46,7 +46,7 @@ impl Usage {
             }
             Node::Call(f, arg) if f.is_trigonometric() || f.is_exponential() => {
                 let what = format!("the argument of {}", f.name());
-                let l = linear(arg, var_name, params, &what)?;
+                let l = linear(arg, Some(var_name), params, &what)?;
                 self.record(&l, f.is_trigonometric(), arg.pos)?;
             }
             Node::Call(_, arg) => self.scan(arg, var_name, params)?,

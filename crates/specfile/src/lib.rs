@@ -40,6 +40,7 @@ mod expression;
 pub mod formula;
 pub mod frequencies;
 mod load;
+mod names;
 pub mod nonvanishing;
 mod raw;
 mod source;

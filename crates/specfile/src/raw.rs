@@ -32,7 +32,7 @@ pub struct RawSpec {
 #[serde(deny_unknown_fields)]
 pub struct RawParam {
     pub name: Spanned<String>,
-    pub symbol: Option<String>,
+    pub symbol: Option<Spanned<String>>,
     pub range: Spanned<String>,
     pub source: Option<String>,
 }

@@ -45,8 +45,26 @@ impl Source<'_> {
         at.column += 1 + error.position;
         SpecError::Formula {
             at,
-            formula: text.get_ref().clone(),
+            formula: excerpt(text.get_ref(), error.position),
             error,
         }
     }
+}
+
+/// At most [`trig_core::echo::MAX_ECHO`] characters of `formula` around
+/// `position` (control characters escaped), with `…` where it is cut.
+fn excerpt(formula: &str, position: usize) -> String {
+    let max = trig_core::echo::MAX_ECHO;
+    let count = formula.chars().count();
+    if count <= max {
+        return trig_core::echo(formula);
+    }
+    let start = position.saturating_sub(max / 2).min(count - max);
+    let window: String = formula.chars().skip(start).take(max).collect();
+    let before = if start > 0 { "…" } else { "" };
+    let after = if start + max < count { "…" } else { "" };
+    format!(
+        "{before}{}{after}",
+        trig_core::echo::escape_controls(&window)
+    )
 }

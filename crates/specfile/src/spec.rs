@@ -15,6 +15,7 @@ use crate::check::SpecClaim;
 use crate::error::{FormulaError, Result, SpecError};
 use crate::formula::{Scope, linear, lower};
 use crate::frequencies::{Usage, domain};
+use crate::names::{control_point_refusal, symbol_refusal};
 use crate::nonvanishing;
 use crate::raw::{RawFunction, RawSpec};
 use crate::source::Source;
@@ -221,7 +222,7 @@ impl Spec {
     ) -> std::result::Result<crate::formula::Linear, FormulaError> {
         linear(
             &ast::parse(text)?,
-            &self.var_name,
+            Some(&self.var_name),
             &self.param_pairs(),
             what,
         )
@@ -274,7 +275,7 @@ fn domain_ends(
     };
     let end = |s: &str| -> Result<Affine> {
         let l = ast::parse(s)
-            .and_then(|e| linear(&e, "__none", params, "a domain end"))
+            .and_then(|e| linear(&e, None, params, "a domain end"))
             .map_err(|e| SpecError::Invalid {
                 at: src.at(field.span().start),
                 field: "domain".into(),
@@ -463,6 +464,9 @@ fn read_params(src: &Source<'_>, raw: &RawSpec, var_name: &str) -> Result<Vec<Pa
     for p in &raw.parameters {
         let name = p.name.get_ref().trim().to_string();
         let taken = params.iter().any(|q| q.name == name || q.symbol == name);
+        if let Some(why) = control_point_refusal(&name) {
+            return src.invalid(p.name.span(), "parameters.name", why);
+        }
         if !identifier(&name) || RESERVED.contains(&name.as_str()) || name == var_name || taken {
             return src.invalid(
                 p.name.span(),
@@ -475,8 +479,25 @@ fn read_params(src: &Source<'_>, raw: &RawSpec, var_name: &str) -> Result<Vec<Pa
         }
         let range = ParamRange::parse(p.range.get_ref())
             .or_else(|m| src.invalid(p.range.span(), "parameters.range", m))?;
+        let symbol = p
+            .symbol
+            .as_ref()
+            .map_or_else(|| name.clone(), |s| s.get_ref().trim().to_string());
+        let others: Vec<(&str, &str)> = raw
+            .parameters
+            .iter()
+            .filter(|q| !std::ptr::eq(*q, p))
+            .map(|q| {
+                let n = q.name.get_ref().trim();
+                (n, q.symbol.as_ref().map_or(n, |s| s.get_ref().trim()))
+            })
+            .collect();
+        if let Some(why) = symbol_refusal(&symbol, &name, var_name, RESERVED, &others) {
+            let span = p.symbol.as_ref().map_or(p.name.span(), |s| s.span());
+            return src.invalid(span, "parameters.symbol", why);
+        }
         params.push(Parameter {
-            symbol: p.symbol.clone().unwrap_or_else(|| name.clone()),
+            symbol,
             name,
             range,
             source: p.source.clone().unwrap_or_else(|| "spec file".into()),

@@ -21,7 +21,7 @@
 //! order), then by number of terms, then greatest leading monomial first.
 //!
 //! Names: plain text prints them as given. Unicode and LaTeX render the
-//! Greek names (`alpha, beta, eta, lambda, mu, omega, pi, theta, xi, zeta`)
+//! Greek names (`alpha`, `beta`, `gamma`, `delta`, …, `omega`: 21 letters)
 //! as letters and trailing digits as subscripts (`w0` → `w₀`, `w_{0}`);
 //! LaTeX sets other multi-letter names in `\mathrm{…}`. The names and the
 //! LaTeX pieces are the one LaTeX writer's ([`trig_tex::symbols::greek`],
@@ -121,6 +121,11 @@ fn digits_in(table: &[char; 10], digits: &str) -> String {
         .bytes()
         .map(|b| table[usize::from(b - b'0')])
         .collect()
+}
+
+/// The Unicode form of a variable name (`lambda1` → `λ₁`): how it reads.
+pub(crate) fn unicode_name(n: &str) -> String {
+    name(n, Style::Unicode)
 }
 
 fn name(n: &str, style: Style) -> String {

@@ -90,17 +90,24 @@ fn twelfth_turn(x: &Sym) -> Option<(Sym, Sym)> {
 }
 
 /// `√q` exactly when the square-free part of the rational `q ≥ 0` is a
-/// product of 2, 3, 5, 7: `q = (a/b)²·Π pᵢ` gives `(a/b)·Π sqrt(pᵢ)`.
+/// product of 2, 3, 5, 7: `q = (a/b)²·Π pᵢ` gives `(a/b)·Π sqrt(pᵢ)`;
+/// `√0 = 0`.
 fn exact_sqrt(q: &Rational) -> Option<Sym> {
-    if *q < 0 {
-        return None;
+    match q.cmp0() {
+        std::cmp::Ordering::Less => return None,
+        // zero is divisible by every prime: it has no square-free part
+        std::cmp::Ordering::Equal => return Some(Sym::zero()),
+        std::cmp::Ordering::Greater => {}
     }
     // √(n/d) = √(n·d)/d
     let mut n = Integer::from(q.numer() * q.denom());
     let mut root = Sym::rational(Rational::from((1, q.denom().clone())));
+    // n ≥ 1 has at most log₂ n prime factors: each division below shrinks
+    // it, and the count bounds the loop whatever n is
+    let most = n.significant_bits();
     for p in [2u32, 3, 5, 7] {
         let mut e = 0;
-        while n.is_divisible_u(p) {
+        while e < most && n.is_divisible_u(p) {
             n /= p;
             e += 1;
         }
@@ -298,5 +305,19 @@ mod tests {
         assert_eq!(r.to_string(), "2/3*sqrt(2)*sqrt(3)");
         assert!(Sym::int(11).try_sqrt().is_none() && Sym::int(-4).try_sqrt().is_none());
         assert_eq!(Sym::int(49).try_sqrt(), Some(Sym::int(7)));
+    }
+
+    /// √0 is the value 0 (it used to loop: 0 is divisible by every prime).
+    #[test]
+    fn the_square_root_of_zero_is_zero() {
+        let (tx, rx) = std::sync::mpsc::channel();
+        std::thread::spawn(move || {
+            let _ = tx.send((Sym::zero().try_sqrt(), Sym::int(3).try_sqrt()));
+        });
+        let (zero, three) = rx
+            .recv_timeout(std::time::Duration::from_secs(10))
+            .expect("sqrt(0) returns");
+        assert_eq!(zero, Some(Sym::zero()));
+        assert_eq!(three.map(|r| r.to_string()), Some("sqrt(3)".into()));
     }
 }

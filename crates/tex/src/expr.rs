@@ -100,7 +100,8 @@ mod tests {
         assert_eq!(name("beta", ""), r"\beta");
         assert_eq!(name("h", "12"), "h_{12}");
         assert_eq!(name("foo", ""), r"\mathrm{foo}");
-        assert_eq!(name("gamma", "1"), r"\mathrm{gamma}_{1}");
+        assert_eq!(name("gamma", "1"), r"\gamma_{1}");
+        assert_eq!(name("foo", "1"), r"\mathrm{foo}_{1}");
         assert_eq!(power("(m + 1)", 2), "(m + 1)^{2}");
         assert_eq!(frac("1", "2"), r"\frac{1}{2}");
         assert_eq!(number("1.5e-3"), r"1.5 \times 10^{-3}");

@@ -15,13 +15,17 @@ pub(crate) const MATH: &[(char, &str)] = &[
     ('ζ', r"\zeta"),
     ('η', r"\eta"),
     ('θ', r"\theta"),
+    ('κ', r"\kappa"),
     ('λ', r"\lambda"),
     ('μ', r"\mu"),
+    ('ν', r"\nu"),
     ('ξ', r"\xi"),
     ('π', r"\pi"),
     ('ρ', r"\rho"),
     ('σ', r"\sigma"),
+    ('τ', r"\tau"),
     ('φ', r"\varphi"),
+    ('χ', r"\chi"),
     ('ψ', r"\psi"),
     ('ω', r"\omega"),
     ('Σ', r"\Sigma"),
@@ -143,14 +147,25 @@ pub fn unmapped(text: &str) -> Vec<char> {
 
 /// The Greek letters variables are named by (`beta`, `lambda1`), as
 /// expressions print them.
-const GREEK: [(&str, char); 10] = [
+const GREEK: [(&str, char); 21] = [
     ("alpha", 'α'),
     ("beta", 'β'),
+    ("chi", 'χ'),
+    ("delta", 'δ'),
+    ("epsilon", 'ε'),
     ("eta", 'η'),
+    ("gamma", 'γ'),
+    ("kappa", 'κ'),
     ("lambda", 'λ'),
     ("mu", 'μ'),
+    ("nu", 'ν'),
     ("omega", 'ω'),
+    ("phi", 'φ'),
     ("pi", 'π'),
+    ("psi", 'ψ'),
+    ("rho", 'ρ'),
+    ("sigma", 'σ'),
+    ("tau", 'τ'),
     ("theta", 'θ'),
     ("xi", 'ξ'),
     ("zeta", 'ζ'),
@@ -174,7 +189,8 @@ mod tests {
     fn unknown_characters_are_reported_and_greek_names_map() {
         assert_eq!(unmapped("αβ ع x ☃"), vec!['☃']);
         assert_eq!(greek("lambda"), Some('λ'));
-        assert_eq!(greek("gamma"), None);
+        assert_eq!(greek("gamma"), Some('γ'));
+        assert_eq!(greek("gammas"), None);
         assert_eq!(math_symbol('λ'), Some(r"\lambda"));
     }
 }

@@ -25,6 +25,9 @@ pub enum Check {
         at: String,
         piecewise: bool,
     },
+    /// `join --format json`: the symbols the tool introduces (G factors,
+    /// interval lengths) read unlike every parameter name and symbol.
+    Namespace { params: Vec<String> },
     /// `table --numeric` at the ends: every printed digit against a
     /// reference.
     Table {
@@ -144,6 +147,19 @@ fn bases(scratch: &std::path::Path) -> Vec<Basis> {
             subject: Some(Subject::Spec(path)),
             params,
             span,
+        });
+    }
+    // a spec refused for a shadowing symbol, and devices as spec files
+    for odd in [
+        scratch.join("shadow.toml").display().to_string(),
+        "/dev/zero".into(),
+        "/dev/null".into(),
+    ] {
+        out.push(Basis {
+            arg: vec!["--spec".into(), odd],
+            subject: None,
+            params: Vec::new(),
+            span: (0.0, 1.0),
         });
     }
     for odd in [
@@ -663,10 +679,218 @@ pub fn case(heavy: bool, scratch: PathBuf) -> BoxedStrategy<Case> {
     prop_oneof![
         10 => eval(&bases, heavy),
         6 => table(&bases, heavy),
+        3 => round2(&bases, heavy, scratch.clone()),
         4 => others(&bases, scratch),
         1 => garbage(),
     ]
     .boxed()
+}
+
+/// Issue 22's classes on the command lines `eval`/`table` do not reach
+/// (they draw the new spec files through [`bases`] too): joins of specs
+/// whose parameters are named like the tool's symbols (their factors and
+/// lengths checked by the oracle), rational curve tables up to the cost
+/// model's bound and past it (`heavy`: orders to 5), `--at-file` from devices, with a byte-order
+/// mark or an over-long line, and outputs that are devices, `-` or a
+/// symbolic link.
+fn round2(bases: &[Basis], heavy: bool, scratch: PathBuf) -> BoxedStrategy<Case> {
+    let spec = |name: &str| scratch.join(format!("{name}.toml")).display().to_string();
+    let clash_names: Vec<String> = ["alpha", "gamma", "γ", "w1", "h1", "l1"]
+        .map(String::from)
+        .to_vec();
+    let quotient_names: Vec<String> = (1..=8).map(|k| format!("a{k}")).collect();
+    let specs = vec![
+        (spec("clash"), clash_names),
+        (spec("quotient"), quotient_names),
+        (spec("radical"), Vec::new()),
+        (spec("wide"), Vec::new()),
+    ];
+    let join = (
+        proptest::sample::select(specs.clone()),
+        proptest::sample::select(vec!["c0", "c1", "c2", "c3", "g1", "g2"]),
+        prop_oneof![Just("same"), Just("different")],
+        prop_oneof![Just("u"), Just("x"), Just("t")],
+    )
+        .prop_map(|((path, params), kind, p, wrt)| Case {
+            args: [
+                "join", "--spec", &path, "--kind", kind, "--params", p, "--wrt", wrt, "--format",
+                "json",
+            ]
+            .map(String::from)
+            .to_vec(),
+            check: Check::Namespace { params },
+        });
+    // up to the cost model's bound (seconds per case: the long run only)
+    let orders = if heavy { 0usize..=5 } else { 0usize..=2 };
+    let curve = (proptest::sample::select(specs), orders, any::<bool>()).prop_map(
+        |((path, _), order, rational)| {
+            let mut args: Vec<String> = ["table", "--spec", &path, "--curve"]
+                .map(String::from)
+                .to_vec();
+            if rational {
+                args.push("--rational".into());
+            }
+            args.extend(["--order".into(), order.to_string()]);
+            Case {
+                args,
+                check: Check::Plain,
+            }
+        },
+    );
+    let files = vec![
+        scratch.join("points.txt").display().to_string(),
+        scratch.join("long-line.txt").display().to_string(),
+        "/dev/zero".into(),
+        "/dev/null".into(),
+        "/nonexistent/points.txt".into(),
+    ];
+    let at_file = proptest::sample::select(bases.to_vec())
+        .prop_flat_map(move |b| {
+            (
+                Just(b.clone()),
+                params(&b.params),
+                proptest::sample::select(files.clone()),
+                prop_oneof![2 => Just(None), 1 => (1usize..40).prop_map(Some)],
+                prop_oneof![3 => Just("text"), 1 => Just("json")],
+            )
+        })
+        .prop_map(|(b, ps, file, digits, format)| {
+            let mut args = vec!["eval".to_string()];
+            args.extend(b.arg.iter().cloned());
+            push_params(&mut args, &ps);
+            args.extend(["--at-file".into(), file]);
+            if let Some(d) = digits {
+                args.extend(["--digits".into(), d.to_string()]);
+            }
+            args.extend(["--format".into(), format.into()]);
+            Case {
+                args,
+                check: Check::Plain,
+            }
+        });
+    let outputs = vec![
+        "/dev/null".to_string(),
+        "-".into(),
+        scratch.join("link.svg").display().to_string(),
+    ];
+    let output = (proptest::sample::select(outputs), any::<bool>()).prop_map(|(out, plot)| Case {
+        args: if plot {
+            [
+                "plot",
+                "basis",
+                "--family",
+                "thesis-cubic",
+                "--output",
+                &out,
+            ]
+            .map(String::from)
+            .to_vec()
+        } else {
+            ["audit", "--claim", "T9", "--output", &out]
+                .map(String::from)
+                .to_vec()
+        },
+        check: Check::Plain,
+    });
+    prop_oneof![3 => join, 3 => curve, 3 => at_file, 1 => output].boxed()
+}
+
+/// Parameters named like the symbols the tool introduces: the G factors
+/// (`alpha`, `gamma`), a weight (`w1`), interval lengths (`h1`, `l1`).
+const CLASH_SPEC: &str = r#"
+id = "clash"
+citation = "fuzz suite"
+variable = "polynomial"
+[[parameters]]
+name = "alpha"
+range = "[0, 1]"
+[[parameters]]
+name = "gamma"
+symbol = "γ"
+range = "[0, 1]"
+[[parameters]]
+name = "w1"
+range = "[1, 2]"
+[[parameters]]
+name = "h1"
+range = "[1, 2]"
+[[parameters]]
+name = "l1"
+range = "[1, 2]"
+[[functions]]
+name = "b0"
+formula = "(1 - t)^2*(1 + alpha*t)"
+[[functions]]
+name = "b1"
+formula = "2*t*(1 - t)*w1*l1"
+[[functions]]
+name = "b2"
+formula = "t^2*(gamma + h1)"
+"#;
+
+/// Degenerate radicals: `sqrt(0)`, `sqrt(1-1)`, `t*sqrt(0)`.
+const RADICAL_SPEC: &str = r#"
+id = "radical"
+citation = "fuzz suite"
+variable = "polynomial"
+[[functions]]
+name = "b0"
+formula = "1 - t + t*sqrt(0)"
+[[functions]]
+name = "b1"
+formula = "t + sqrt(1-1)*t^2"
+"#;
+
+/// A printed symbol that would shadow `s` (refused when loading).
+const SHADOW_SPEC: &str = r#"
+id = "shadow"
+citation = "fuzz suite"
+variable = "angle"
+[[parameters]]
+name = "lambda"
+symbol = "s"
+range = "[0, 1]"
+[[functions]]
+name = "b0"
+formula = "(1 - s)^2"
+"#;
+
+/// `n` functions `1 + (i+1)t + (i+2)t² + t³`: rational curve tables grow
+/// with `n` and the order (the cost model's bound is reached at order 3–4
+/// for twelve functions).
+fn wide_spec(n: usize) -> String {
+    let mut text =
+        String::from("id = \"wide\"\ncitation = \"fuzz suite\"\nvariable = \"polynomial\"\n");
+    for i in 0..n {
+        text.push_str(&format!(
+            "[[functions]]\nname = \"b{i}\"\nformula = \"1 + {}*t + {}*t^2 + t^3\"\n",
+            i + 1,
+            i + 2
+        ));
+    }
+    text
+}
+
+/// Four functions over `1 + a₁t + … + a₈t⁸`: exact tables and joins grow
+/// with the eight parameters.
+fn quotient_spec() -> String {
+    let mut text =
+        String::from("id = \"quotient\"\ncitation = \"fuzz suite\"\nvariable = \"polynomial\"\n");
+    for k in 1..=8 {
+        text.push_str(&format!(
+            "[[parameters]]\nname = \"a{k}\"\nrange = \"[0, 1]\"\n"
+        ));
+    }
+    let d: String = (1..=8).map(|k| format!(" + a{k}*t^{k}")).collect();
+    for (i, n) in ["(1 - t)^3", "3*t*(1 - t)^2", "3*t^2*(1 - t)", "t^3"]
+        .iter()
+        .enumerate()
+    {
+        text.push_str(&format!(
+            "[[functions]]\nname = \"b{i}\"\nformula = \"{n}/(1{d})\"\n"
+        ));
+    }
+    text
 }
 
 /// A spec whose expanded form cancels (`((1 + s + c)⁸)⁴`), with a pole
@@ -695,6 +919,20 @@ formula = "(p*s - 1)^2*(1 - c)^3 - p^2"
 pub fn write_scratch(scratch: &std::path::Path) -> std::io::Result<()> {
     std::fs::create_dir_all(scratch)?;
     std::fs::write(scratch.join("hostile.toml"), HOSTILE_SPEC)?;
+    std::fs::write(scratch.join("clash.toml"), CLASH_SPEC)?;
+    std::fs::write(scratch.join("radical.toml"), RADICAL_SPEC)?;
+    std::fs::write(scratch.join("shadow.toml"), SHADOW_SPEC)?;
+    std::fs::write(scratch.join("wide.toml"), wide_spec(12))?;
+    std::fs::write(scratch.join("quotient.toml"), quotient_spec())?;
+    // a byte-order mark, a comment and a blank line; an over-long line
+    std::fs::write(scratch.join("points.txt"), "\u{feff}0.25\n# note\n\n1/3\n")?;
+    std::fs::write(scratch.join("long-line.txt"), "1".repeat(30_000))?;
+    std::fs::write(scratch.join("target.svg"), "")?;
+    let link = scratch.join("link.svg");
+    if std::fs::symlink_metadata(&link).is_err() {
+        #[cfg(unix)]
+        std::os::unix::fs::symlink(scratch.join("target.svg"), &link)?;
+    }
     let mut text = String::from("# hostile outline\ncontour,x,y\n");
     for i in 0..60 {
         let (x, y) = match i % 6 {

@@ -17,6 +17,7 @@ use trig_audit::{MAX_ERROR, Outcome};
 use trig_core::{Family, Mpfr, parse_exact, piecewise};
 use trig_deriv::{End, Wrt, endpoint_derivatives};
 use trig_specfile::Spec;
+use trig_symbolic::names::reading;
 
 use super::grammar::{Case, Check, Subject};
 
@@ -40,6 +41,7 @@ pub fn check(case: &Case, outcome: &Outcome) -> Result<usize, String> {
             }
             match &case.check {
                 Check::Plain => Ok(0),
+                Check::Namespace { params } => namespace(params, text),
                 Check::Eval {
                     basis,
                     params,
@@ -56,6 +58,23 @@ pub fn check(case: &Case, outcome: &Outcome) -> Result<usize, String> {
             }
         }
     }
+}
+
+/// The G factors and interval lengths of a join read unlike every
+/// parameter (`γ` reads as `gamma`, `w₁` as `w1`).
+fn namespace(params: &[String], text: &str) -> Result<usize, String> {
+    let value: serde_json::Value =
+        serde_json::from_str(text).map_err(|e| format!("join JSON does not parse: {e}"))?;
+    let taken: Vec<String> = params.iter().map(|p| reading(p)).collect();
+    for key in ["factors", "lengths"] {
+        for symbol in value[key].as_array().into_iter().flatten() {
+            let symbol = symbol.as_str().unwrap_or_default();
+            if taken.contains(&reading(symbol)) {
+                return Err(format!("the {key} symbol `{symbol}` reads as a parameter"));
+            }
+        }
+    }
+    Ok(0)
 }
 
 fn non_finite_free(text: &str) -> Result<(), String> {
@@ -162,9 +181,19 @@ struct Reference {
 
 /// Two evaluations at `bits` and `2·bits`: the second, with four times
 /// their difference (plus its last place) as its error bound.
+///
+/// A value that is exactly 0 at both precisions may be a cancellation
+/// beyond them (`1 − cos θ` for `θ ≈ 10⁻³⁰⁸` is 0 at 2000 bits, `θ²/2`
+/// truly): the precision is raised (to 32000 bits at most) until no value is 0.
 fn reference(bits: u32, f: &dyn Fn(u32) -> Option<Vec<Float>>) -> Option<Vec<Reference>> {
-    let a = f(bits)?;
-    let b = f(2 * bits)?;
+    let mut bits = bits;
+    let (a, b) = loop {
+        let (a, b) = (f(bits)?, f(2 * bits)?);
+        if bits * 8 > 1 << 16 || !b.iter().any(Float::is_zero) {
+            break (a, b);
+        }
+        bits *= 4;
+    };
     a.iter()
         .zip(&b)
         .map(|(a, b)| {

@@ -19,7 +19,7 @@ use std::time::Duration;
 use trig_deriv::Wrt;
 use trig_specfile::{Check, Spec, SpecClaim};
 
-use crate::budget::{bounded, within};
+use crate::budget::{Stopped, bounded};
 use crate::judge;
 use crate::judge::endpoint::TABLE_ORDERS;
 use crate::report::{Document, Entry};
@@ -51,63 +51,109 @@ pub fn intro(spec: &Spec) -> String {
 
 /// The standard battery, then the file's claims.
 pub fn audit(spec: &Spec) -> Vec<Entry> {
-    audit_within(spec, None)
+    audit_within(spec, None).entries
 }
 
 /// A decision of the audit, run on the spec.
 type Decision<T> = Box<dyn FnOnce(&Spec) -> T + Send>;
 
-/// [`audit`], each decision bounded by `budget` (a decision that runs
-/// over is `not-checkable`, see [`crate::budget`]).
-pub fn audit_within(spec: &Spec, budget: Option<Duration>) -> Vec<Entry> {
+/// An audit whose decisions had a time limit.
+#[derive(Debug, Clone)]
+pub struct Audit {
+    /// The claims decided, with their verdicts.
+    pub entries: Vec<Entry>,
+    /// The ids of the claims the time limit cut off (no verdict).
+    pub cut_off: Vec<String>,
+}
+
+/// [`audit`], each decision limited to `budget` of time: a decision that
+/// runs over gets no verdict and is listed in [`Audit::cut_off`] (see
+/// [`crate::budget`]), so every verdict printed is the one any machine
+/// computes.
+pub fn audit_within(spec: &Spec, budget: Option<Duration>) -> Audit {
     let doc = document(spec);
     let shared = Arc::new(spec.clone());
-    let run = |f: Decision<Verdict>| -> Verdict {
+    let run = |f: Decision<Verdict>| -> Option<Verdict> {
         match budget {
-            None => f(spec),
+            None => Some(f(spec)),
             Some(limit) => {
                 let s = Arc::clone(&shared);
-                within(limit, move || f(&s))
+                decided(bounded(limit, move || f(&s)), |v| v)
             }
         }
     };
-    let entry = |id: &str, source: &str, statement: String, verdict: Verdict| Entry {
-        id: id.to_string(),
-        document: doc.clone(),
-        source: source.to_string(),
-        statement,
-        verdict,
-        figure: None,
+    let mut audit = Audit {
+        entries: Vec::new(),
+        cut_off: Vec::new(),
     };
+    let mut entry =
+        |id: &str, source: &str, statement: String, verdict: Option<Verdict>| match verdict {
+            Some(verdict) => audit.entries.push(Entry {
+                id: id.to_string(),
+                document: doc.clone(),
+                source: source.to_string(),
+                statement,
+                verdict,
+                figure: None,
+            }),
+            None => audit.cut_off.push(id.to_string()),
+        };
     let names = spec
         .functions
         .iter()
         .map(|f| f.name.as_str())
         .collect::<Vec<_>>()
         .join(", ");
-    let (symmetry_text, symmetry) = match budget {
-        None => judge::symmetry::battery_symmetry(spec),
+    let symmetry = match budget {
+        None => Some(judge::symmetry::battery_symmetry(spec)),
         Some(limit) => {
             let s = Arc::clone(&shared);
-            bounded(limit, move || judge::symmetry::battery_symmetry(s.as_ref())).unwrap_or_else(
-                |why| {
-                    (
-                        "symmetry of the functions".into(),
-                        Verdict::not_checkable(why),
-                    )
-                },
+            decided(
+                bounded(limit, move || judge::symmetry::battery_symmetry(s.as_ref())),
+                |v| ("symmetry of the functions".into(), v),
             )
         }
     };
-    let mut out = vec![
-        entry("unity", "standard battery", format!("partition of unity: {}", judge::unity::sum_label(&spec.functions.iter().map(|f| f.name.clone()).collect::<Vec<_>>())), run(Box::new(|s: &Spec| judge::unity::unity(s)))),
-        entry("nonnegativity", "standard battery", format!("{names} ≥ 0 on the domain exactly for the declared parameter ranges"), run(Box::new(|s: &Spec| judge::nonnegative::nonnegativity(s)))),
-        entry("symmetry", "standard battery", symmetry_text, symmetry),
-        entry("interpolation", "standard battery", "endpoint interpolation: only the first function is nonzero at the start (value 1), only the last at the end (value 1)".into(), run(Box::new(|s: &Spec| judge::endpoint::interpolation(s)))),
-        entry("derivatives", "standard battery", format!("exact endpoint derivatives of orders 0–{} {}, by jets and by symbolic differentiation", TABLE_ORDERS - 1, judge::domain::describe_wrt(spec, table_wrt(spec))), run(Box::new(|s: &Spec| judge::endpoint::derivative_table(s, table_wrt(s))))),
-    ];
+    entry(
+        "unity",
+        "standard battery",
+        format!(
+            "partition of unity: {}",
+            judge::unity::sum_label(
+                &spec
+                    .functions
+                    .iter()
+                    .map(|f| f.name.clone())
+                    .collect::<Vec<_>>()
+            )
+        ),
+        run(Box::new(|s: &Spec| judge::unity::unity(s))),
+    );
+    entry(
+        "nonnegativity",
+        "standard battery",
+        format!("{names} ≥ 0 on the domain exactly for the declared parameter ranges"),
+        run(Box::new(|s: &Spec| judge::nonnegative::nonnegativity(s))),
+    );
+    match symmetry {
+        Some((text, verdict)) => entry("symmetry", "standard battery", text, Some(verdict)),
+        None => entry("symmetry", "standard battery", String::new(), None),
+    }
+    entry("interpolation", "standard battery", "endpoint interpolation: only the first function is nonzero at the start (value 1), only the last at the end (value 1)".into(), run(Box::new(|s: &Spec| judge::endpoint::interpolation(s))));
+    entry(
+        "derivatives",
+        "standard battery",
+        format!(
+            "exact endpoint derivatives of orders 0–{} {}, by jets and by symbolic differentiation",
+            TABLE_ORDERS - 1,
+            judge::domain::describe_wrt(spec, table_wrt(spec))
+        ),
+        run(Box::new(|s: &Spec| {
+            judge::endpoint::derivative_table(s, table_wrt(s))
+        })),
+    );
     for order in [1, 2] {
-        out.push(entry(
+        entry(
             &format!("join-C{order}"),
             "standard battery",
             format!(
@@ -116,18 +162,28 @@ pub fn audit_within(spec: &Spec, budget: Option<Duration>) -> Vec<Entry> {
             run(Box::new(move |s: &Spec| {
                 judge::join::derived_join(s, order)
             })),
-        ));
+        );
     }
-    out.extend(spec.claims.iter().map(|c| {
+    for c in &spec.claims {
         let claim = c.clone();
         entry(
             &c.id,
             &c.source,
             c.statement.clone(),
             run(Box::new(move |s: &Spec| decide(s, &claim))),
-        )
-    }));
-    out
+        );
+    }
+    audit
+}
+
+/// The verdict of a decision that ran with a time limit: `None` when the
+/// limit cut it off, `not-checkable` when it could not run.
+fn decided<T>(result: Result<T, Stopped>, failed: impl FnOnce(Verdict) -> T) -> Option<T> {
+    match result {
+        Ok(v) => Some(v),
+        Err(Stopped::CutOff) => None,
+        Err(Stopped::Failed(why)) => Some(failed(Verdict::not_checkable(why))),
+    }
 }
 
 /// The verdict of one claim of the file.

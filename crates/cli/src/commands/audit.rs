@@ -60,11 +60,12 @@ pub struct AuditArgs {
     /// Report format.
     #[arg(long, value_enum, default_value = "md")]
     format: ReportFormat,
-    /// Write the report to this file (atomically) instead of standard output.
+    /// Write the report to this file (atomically) instead of standard output (`-`: standard output).
     #[arg(long)]
     output: Option<PathBuf>,
     /// With --spec: seconds each claim's decision may take (0.1 to 3600);
-    /// a decision that runs over is reported `not-checkable`.
+    /// a decision that runs over is cut off: listed as not decided, without
+    /// a verdict (verdicts come from counted budgets, the same anywhere).
     #[arg(long, default_value_t = CLAIM_BUDGET.as_secs_f64(), value_parser = time_limit)]
     time_limit: f64,
 }
@@ -85,15 +86,34 @@ pub fn run(args: &AuditArgs) -> CmdResult {
             let spec = Spec::from_file(path)
                 .map_err(|e| CliError::Usage(e.to_string().replace('\n', " ")))?;
             let budget = Duration::from_secs_f64(args.time_limit);
-            let entries: Vec<Entry> = spec_audit::audit_within(&spec, Some(budget))
+            let chosen = |id: &str| {
+                args.claim
+                    .as_deref()
+                    .is_none_or(|c| id.eq_ignore_ascii_case(c))
+            };
+            let audit = spec_audit::audit_within(&spec, Some(budget));
+            let entries: Vec<Entry> = audit
+                .entries
                 .into_iter()
-                .filter(|e| {
-                    args.claim
-                        .as_deref()
-                        .is_none_or(|id| e.id.eq_ignore_ascii_case(id))
-                })
+                .filter(|e| chosen(&e.id))
                 .collect();
-            (entries, spec_audit::intro(&spec))
+            let cut_off: Vec<String> = audit.cut_off.into_iter().filter(|id| chosen(id)).collect();
+            let mut intro = spec_audit::intro(&spec);
+            if !cut_off.is_empty() {
+                intro.push_str(&format!(
+                    " Not decided, cut off by the time limit of {} s per claim (no verdict; a longer --time-limit decides them): {}. Every verdict below is the one any machine computes.",
+                    args.time_limit,
+                    cut_off.join(", ")
+                ));
+            }
+            if entries.is_empty() && !cut_off.is_empty() {
+                return Err(CliError::Usage(format!(
+                    "no claim was decided: {} cut off by the time limit of {} s per claim (a longer --time-limit decides them)",
+                    cut_off.join(", "),
+                    args.time_limit
+                )));
+            }
+            (entries, intro)
         }
         None => (builtin(args)?, report::BUILTIN_INTRO.to_string()),
     };
@@ -119,7 +139,9 @@ pub fn run(args: &AuditArgs) -> CmdResult {
         ReportFormat::Tex => report::tex_entries(&entries, &intro, &view),
     };
     match &args.output {
+        // `--output -` is standard output
         None => Ok(text),
+        Some(path) if path.as_os_str() == "-" => Ok(text),
         Some(path) => {
             write_atomically(path, text.as_bytes())?;
             let shown = view.select(&entries).len();

@@ -9,8 +9,8 @@ use clap::Args;
 use rug::Rational;
 use serde_json::json;
 use trig_core::certified::{
-    self, CheckedF64, F64_CHECK_DIGITS, MAX_BITS, MAX_DIGITS, Stop, TIME_BUDGET, at_bits,
-    check_domain, check_f64, to_digits,
+    self, CheckedF64, F64_CHECK_DIGITS, MAX_BITS, MAX_DIGITS, Stop, WORK_BUDGET, at_bits,
+    check_domain, check_f64, to_digits, to_significant_digits,
 };
 use trig_core::decimal::max_digits;
 use trig_core::families::seed000_nonuniform::NonUniform;
@@ -23,6 +23,7 @@ use trig_specfile::AnyBasis;
 use trig_symbolic::Sym;
 
 use super::{CliError, CmdResult, range_hint};
+use crate::digits;
 use crate::format::{TextOrJson, json};
 
 mod points;
@@ -191,20 +192,18 @@ impl Mode {
         precision_mode(args.prec, args.digits)
     }
 
-    fn describe(&self, bits: u32, proved: usize, stopped: Option<Stop>) -> String {
+    /// The arithmetic as the header states it; `short` values (of `total`)
+    /// have fewer digits than `--digits` asked.
+    fn describe(&self, bits: u32, (short, total): (usize, usize), stopped: Option<Stop>) -> String {
         match *self {
             Mode::F64 => format!("f64; ± certified error bounds, enclosures at {bits} bits"),
             Mode::Bits(b) => format!("mpfr-{b}, certified: only proved digits are printed"),
-            Mode::Digits(n) if proved >= n => {
+            Mode::Digits(n) if short == 0 => {
                 format!("{n} significant digits, all proved; mpfr-{bits}")
             }
             Mode::Digits(n) => format!(
-                "{n} digits requested, {} proved{}",
-                if proved == 0 {
-                    "none".to_string()
-                } else {
-                    format!("{proved}")
-                },
+                "{n} significant digits requested, proved for {} of {total} values{}; the others are marked",
+                total - short,
                 shortfall(bits, stopped)
             ),
         }
@@ -214,10 +213,9 @@ impl Mode {
 /// Why fewer digits than requested are proved.
 pub fn shortfall(bits: u32, stopped: Option<Stop>) -> String {
     match stopped {
-        Some(Stop::Time) => format!(
-            " within the time limit of {} s (at {bits} bits)",
-            TIME_BUDGET.as_secs()
-        ),
+        Some(Stop::Budget) => {
+            format!(" within the work budget of {WORK_BUDGET} units (at {bits} bits)")
+        }
         _ => format!(" at the {bits}-bit limit"),
     }
 }
@@ -259,17 +257,28 @@ struct Evaluation {
     values: Vec<Shown>,
     precision: String,
     note: Option<String>,
+    /// The working precision of the last step, in bits.
+    bits: u32,
 }
 
 pub fn run(args: &EvalArgs) -> CmdResult {
     let mode = Mode::of(args)?;
-    if let Some(path) = &args.at_file {
-        return points::run(args, path, mode);
-    }
     let at_text = args.at.as_deref().unwrap_or_default();
     let at = parse_point(at_text)?;
     let eval = evaluate(args, at_text, &at, mode, subject_of(args)?.as_ref())?;
     Ok(render(args, &eval))
+}
+
+/// `eval --at-file`: the rows written to `out` as they are computed.
+pub fn stream(args: &EvalArgs, out: &mut dyn std::io::Write) -> Result<(), CliError> {
+    let mode = Mode::of(args)?;
+    let path = args.at_file.as_deref().unwrap_or(std::path::Path::new("-"));
+    points::stream(args, path, mode, out)
+}
+
+/// True when the command streams its output (`--at-file`).
+pub fn streams(args: &EvalArgs) -> bool {
+    args.at_file.is_some()
 }
 
 /// The problem `eval` was asked, located on the exact input, with its
@@ -384,7 +393,7 @@ fn evaluate(
         s.problem
             .compute(&|q: &Rational| Interval::from_rational(bits, q))
     };
-    let (values, bits, proved, stopped) = match mode {
+    let (values, bits, short, stopped) = match mode {
         Mode::F64 => {
             for (name, q) in s.problem.inputs(&s.param_names, at_text) {
                 certified::to_f64(q, &name).map_err(|e| {
@@ -420,17 +429,23 @@ fn evaluate(
                     },
                 })
                 .collect();
-            (shown, exact.bits, 0, None)
+            (shown, exact.bits, (0, 0), None)
         }
         Mode::Bits(bits) => {
             let mut f = enclose;
             let e = at_bits(bits, &what, &mut f)?;
             let max = max_digits(bits);
-            (decimals(&e.values, max), bits, e.digits(max), None)
+            (decimals(&e.values, max), bits, (0, 0), None)
         }
         Mode::Digits(n) => {
-            let e = to_digits(n, &what, enclose)?;
-            (decimals(&e.values, n), e.bits, e.digits(n), e.stopped)
+            let e = to_significant_digits(n, &what, enclose)?;
+            let mut shown = decimals(&e.values, n);
+            let proved: Vec<_> = e.values.iter().map(|x| x.decimal(n)).collect();
+            for (v, d) in shown.iter_mut().zip(&proved) {
+                v.note = digits::note(d, n);
+            }
+            let short = (digits::short(&proved, n), proved.len());
+            (shown, e.bits, short, e.stopped)
         }
     };
     Ok(Evaluation {
@@ -438,8 +453,9 @@ fn evaluate(
         citation: s.citation,
         names: s.names,
         values,
-        precision: mode.describe(bits, proved, stopped),
+        precision: mode.describe(bits, short, stopped),
         note: s.note,
+        bits,
     })
 }
 

@@ -11,6 +11,7 @@ use super::table::WrtArg;
 use super::{CliError, CmdResult};
 use crate::cell::Cell;
 use crate::format;
+use crate::names::{names_of, segment_copies};
 use trig_specfile::AnyBasis;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -60,6 +61,21 @@ struct Solved {
     /// `(point, formula, singular where)`.
     forced: Vec<(Sym, Sym, Vec<String>)>,
     names: Vec<String>,
+    /// The letters of the two segments' control points (`P`, `Q`).
+    curves: [String; 2],
+    /// The symbols of the `G` factors (`α`, `β`).
+    factors: [Sym; 2],
+    /// The symbols of the interval lengths (`h₁`, `h₂`; used in `x`).
+    lengths: [Sym; 2],
+}
+
+/// The letter of control points `P0, P1, …`.
+fn letter(points: &[Sym]) -> String {
+    points.first().map_or_else(String::new, |p| {
+        p.to_string()
+            .trim_end_matches(|c: char| c.is_ascii_digit())
+            .to_string()
+    })
 }
 
 pub fn run(args: &JoinArgs) -> CmdResult {
@@ -82,28 +98,30 @@ fn solve(
     params: ParamsArg,
     wrt: Wrt,
 ) -> Result<Solved, CliError> {
-    let param_names = family.param_names();
-    let names = |suffix: &str| -> Vec<Sym> {
-        param_names
-            .iter()
-            .map(|p| Sym::var(&format!("{p}{suffix}")))
-            .collect()
-    };
+    // every symbol below reads differently from the basis's own names
+    let mut namespace = names_of(&family);
     let (first_params, second_params) = match params {
-        ParamsArg::Same => (names(""), names("")),
-        ParamsArg::Different => (names("1"), names("2")),
+        ParamsArg::Same => {
+            let p: Vec<Sym> = family.param_names().iter().map(|p| Sym::var(p)).collect();
+            (p.clone(), p)
+        }
+        ParamsArg::Different => (
+            segment_copies(&mut namespace, &family, 1)?,
+            segment_copies(&mut namespace, &family, 2)?,
+        ),
     };
+    crate::cost::check_join(&family, kind, &first_params, &second_params)?;
     let n = family.function_names().len();
-    let first: Vec<Sym> = (0..n).map(|i| Sym::var(&format!("P{i}"))).collect();
-    let second: Vec<Sym> = (0..n).map(|i| Sym::var(&format!("Q{i}"))).collect();
-    let factors = family.join_factors();
+    let [first, second] = namespace.points(n);
+    let factors = namespace.factors();
+    let [h1, h2] = namespace.lengths();
     let setup = JoinSetup {
         basis: &family,
         first_params: &first_params,
         second_params: &second_params,
         wrt,
-        h: (Sym::var("h1"), Sym::var("h2")),
-        factors,
+        h: (h1.clone(), h2.clone()),
+        factors: factors.clone(),
     };
     let join =
         solve_join(&setup, kind, &first, &second).map_err(|e| CliError::Usage(e.to_string()))?;
@@ -127,6 +145,9 @@ fn solve(
         second_params,
         forced,
         names,
+        curves: [letter(&first), letter(&second)],
+        factors,
+        lengths: [h1, h2],
     })
 }
 
@@ -141,28 +162,41 @@ fn params_text(p: &[Sym]) -> String {
     }
 }
 
-fn conditions(kind: JoinKind) -> &'static str {
+/// The conditions of `kind` between the curves `P`, `Q` with the `G`
+/// factors `α`, `β` (as named in this output).
+fn conditions(kind: JoinKind, [p, q]: &[String; 2], [a, b]: &[String; 2]) -> String {
     match kind {
-        JoinKind::C(0) => "Q(0) = P(1)",
-        JoinKind::C(1) => "Q⁽ʲ⁾(0) = P⁽ʲ⁾(1), j = 0, 1",
-        JoinKind::C(2) => "Q⁽ʲ⁾(0) = P⁽ʲ⁾(1), j = 0, 1, 2",
-        JoinKind::C(_) => "Q⁽ʲ⁾(0) = P⁽ʲ⁾(1), j = 0…3",
-        JoinKind::G1 => "Q(0) = P(1), Q'(0) = α P'(1)",
-        JoinKind::G2 => "Q(0) = P(1), Q'(0) = α P'(1), Q''(0) = α² P''(1) + β P'(1)",
+        JoinKind::C(0) => format!("{q}(0) = {p}(1)"),
+        JoinKind::C(1) => format!("{q}⁽ʲ⁾(0) = {p}⁽ʲ⁾(1), j = 0, 1"),
+        JoinKind::C(2) => format!("{q}⁽ʲ⁾(0) = {p}⁽ʲ⁾(1), j = 0, 1, 2"),
+        JoinKind::C(_) => format!("{q}⁽ʲ⁾(0) = {p}⁽ʲ⁾(1), j = 0…3"),
+        JoinKind::G1 => format!("{q}(0) = {p}(1), {q}'(0) = {a} {p}'(1)"),
+        JoinKind::G2 => format!(
+            "{q}(0) = {p}(1), {q}'(0) = {a} {p}'(1), {q}''(0) = {a}² {p}''(1) + {b} {p}'(1)"
+        ),
     }
 }
 
 fn header(s: &Solved) -> Vec<String> {
+    let [p, q] = &s.curves;
     vec![
         format!("family: {} ({})", s.family.id(), s.family.citation()),
-        format!("join: {} — {}", s.kind, conditions(s.kind)),
+        format!(
+            "join: {} — {}",
+            s.kind,
+            conditions(
+                s.kind,
+                &s.curves,
+                &s.factors.clone().map(|f| f.to_unicode())
+            )
+        ),
         format!("derivatives: {}", s.wrt.describe_on(&s.family.domain())),
         format!(
-            "first segment P(·) = Σ b_i P_i, parameters: {}",
+            "first segment {p}(·) = Σ b_i {p}_i, parameters: {}",
             params_text(&s.first_params)
         ),
         format!(
-            "second segment Q(·) = Σ b_i Q_i, parameters: {}",
+            "second segment {q}(·) = Σ b_i {q}_i, parameters: {}",
             params_text(&s.second_params)
         ),
     ]
@@ -207,6 +241,8 @@ fn json_value(s: &Solved) -> serde_json::Value {
         "wrt": s.wrt.to_string(),
         "first_params": s.first_params.iter().map(|p| p.to_string()).collect::<Vec<_>>(),
         "second_params": s.second_params.iter().map(|p| p.to_string()).collect::<Vec<_>>(),
+        "factors": s.factors.iter().map(|p| p.to_string()).collect::<Vec<_>>(),
+        "lengths": if s.wrt == Wrt::X { json!(s.lengths.iter().map(|p| p.to_string()).collect::<Vec<_>>()) } else { json!(null) },
         "forced": s.forced.iter().map(|(point, value, singular)| json!({
             "point": point.to_string(),
             "formula": value.to_string(),

@@ -16,6 +16,9 @@ pub enum CliError {
     Core(#[from] trig_core::CoreError),
     #[error("{0}")]
     Usage(String),
+    /// Output that could not be written (a closed pipe ends quietly).
+    #[error("cannot write to standard output: {0}")]
+    Write(std::io::Error),
 }
 
 impl From<trig_specfile::OpenError> for CliError {

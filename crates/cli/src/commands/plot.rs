@@ -21,7 +21,7 @@ use trig_verification::judge::region::{Axis, classify_window};
 use super::fit::{FitSetup, Runs, prepare};
 use super::{CliError, CmdResult, range_hint};
 use crate::format::csv_text;
-use crate::output::{write_atomically, wrote};
+use crate::output::{resolve, write_atomically, wrote};
 use trig_specfile::AnyBasis;
 
 #[derive(Debug, Args)]
@@ -207,6 +207,14 @@ fn plotted(family: Option<&str>, v: &Values, what: &str) -> Result<Plotted, CliE
 /// (`NAME.csv`: series, point, x, y), each atomically; the notes on
 /// standard error (standard output stays empty).
 fn write(output: &Path, picture: &Picture) -> CmdResult {
+    let output = resolve(output)?;
+    let output = output.as_path();
+    if std::fs::metadata(output).is_ok_and(|m| !m.is_file()) {
+        return Err(CliError::Usage(format!(
+            "{}: not a regular file; a picture is written with its pgfplots code and data beside it (NAME.tex, NAME.csv), so only to a regular file",
+            output.display()
+        )));
+    }
     let (tex, data) = (output.with_extension("tex"), output.with_extension("csv"));
     if tex == output || data == output {
         return Err(CliError::Usage(format!(

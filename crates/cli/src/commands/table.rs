@@ -3,16 +3,24 @@
 
 use clap::{Args, ValueEnum};
 use rug::Rational;
-use trig_core::certified::{self, CheckedF64, F64_CHECK_DIGITS, at_bits, check_f64, to_digits};
+use trig_core::certified::{
+    self, CheckedF64, F64_CHECK_DIGITS, at_bits, check_f64, to_digits, to_significant_digits,
+};
 use trig_core::decimal::{bound_text, max_digits};
-use trig_core::{CoreError, Described, Interval, Ring, parse_exact};
-use trig_deriv::{End, Wrt, curve_endpoint_derivatives, endpoint_derivatives, knot_derivatives};
-use trig_symbolic::Sym;
+use trig_core::{Basis, CoreError, Described, Interval, Ring, parse_exact};
+use trig_deriv::{
+    End, VanishingDenominator, Wrt, curve_endpoint_derivatives, endpoint_derivatives,
+    knot_derivatives, rational_curve_endpoint_derivatives,
+};
+use trig_symbolic::{Sym, symbolic_atoms};
 
 use super::eval::{Mode, param_pairs, precision_mode, shortfall};
 use super::{CliError, CmdResult, range_hint};
 use crate::cell::{Block, Cell, Rendered};
+use crate::cost;
+use crate::digits;
 use crate::format::{TableFormat, render_blocks};
+use crate::names::names_of;
 use trig_specfile::AnyBasis;
 
 /// Highest order a table can have (the cost model).
@@ -122,10 +130,24 @@ pub fn run(args: &TableArgs) -> CmdResult {
             "--curve tables are exact combinations of the control points; drop --numeric".into(),
         ));
     }
+    if !args.numeric {
+        let params: Vec<Sym> = family.param_names().iter().map(|p| Sym::var(p)).collect();
+        let functions = family.eval(&symbolic_atoms(), &params);
+        let what = format!(
+            "table{} --order {}",
+            if args.rational {
+                " --curve --rational"
+            } else {
+                ""
+            },
+            args.order
+        );
+        cost::check_table(&what, &functions, args.order, args.rational)?;
+    }
     let (blocks, mode) = if args.numeric {
         numeric(args, &family)?
     } else {
-        (exact(args, &family), "exact".to_string())
+        (exact(args, &family)?, "exact".to_string())
     };
     let heading = format!(
         "{id} ({}): derivatives {}, {mode}",
@@ -137,18 +159,21 @@ pub fn run(args: &TableArgs) -> CmdResult {
 
 /// The exact table: parameters (and `h`) as symbols, π symbolic; curve
 /// tables as combinations of the control points `P0, P1, …`.
-fn exact(args: &TableArgs, family: &AnyBasis) -> Vec<Block> {
+fn exact(args: &TableArgs, family: &AnyBasis) -> Result<Vec<Block>, CliError> {
     let params: Vec<Sym> = family.param_names().iter().map(|p| Sym::var(p)).collect();
+    // the length, points and weights read like none of the basis's names
+    let mut namespace = names_of(family);
     let h = if Wrt::from(args.wrt) == Wrt::X {
-        Sym::var("h")
+        namespace.length()
     } else {
         Sym::one()
     };
     let n = family.function_names().len();
-    let names: Vec<String> = (0..n).map(|i| format!("P{i}")).collect();
-    let points: Vec<Sym> = names.iter().map(|p| Sym::var(p)).collect();
-    let weights: Vec<Sym> = (0..n).map(|i| Sym::var(&format!("w{i}"))).collect();
-    build(args, family, &params, &h, Some((&points, &weights)))
+    let [points, _] = namespace.points(n);
+    let names: Vec<String> = points.iter().map(ToString::to_string).collect();
+    let weights = namespace.weights(n);
+    Ok(build(args, family, &params, &h, Some((&points, &weights)))
+        .map_err(|e| CliError::Usage(e.to_string()))?
         .into_iter()
         .map(|b| {
             b.map(|v| {
@@ -159,7 +184,7 @@ fn exact(args: &TableArgs, family: &AnyBasis) -> Vec<Block> {
                 }
             })
         })
-        .collect()
+        .collect())
 }
 
 /// The numeric table at exact parameter values: f64 with a certified
@@ -187,7 +212,11 @@ fn numeric(args: &TableArgs, family: &AnyBasis) -> Result<(Vec<Block>, String), 
             &p.iter().map(mk).collect::<Vec<_>>(),
             &mk(&h),
             None,
-        );
+        )
+        // numeric tables have no curve: nothing divides by a weighted sum
+        .map_err(|e| CoreError::DivisionByZero {
+            quantity: e.to_string(),
+        })?;
         let cells = blocks.iter().flat_map(Block::cells).cloned().collect();
         last = blocks;
         Ok(cells)
@@ -207,7 +236,8 @@ fn numeric(args: &TableArgs, family: &AnyBasis) -> Result<(Vec<Block>, String), 
                 &p.iter().map(Rational::to_f64).collect::<Vec<_>>(),
                 &h.to_f64(),
                 None,
-            );
+            )
+            .map_err(|e| CliError::Usage(e.to_string()))?;
             let values: Vec<f64> = floats.iter().flat_map(Block::cells).copied().collect();
             let mut checked = check_f64(&values, &e.values).into_iter();
             let (mut worst, mut replaced) = (Rational::new(), 0);
@@ -246,13 +276,16 @@ fn numeric(args: &TableArgs, family: &AnyBasis) -> Result<(Vec<Block>, String), 
             (render_decimals(last, max_digits(bits)), note)
         }
         Mode::Digits(n) => {
-            let e = to_digits(n, &what, &mut enclose)?;
-            let proved = e.digits(n);
-            let note = if proved >= n {
+            let e = to_significant_digits(n, &what, &mut enclose)?;
+            let decimals: Vec<_> = e.values.iter().map(|v| v.decimal(n)).collect();
+            let short = digits::short(&decimals, n);
+            let note = if short == 0 {
                 format!("{n} significant digits, all proved (MPFR {} bits)", e.bits)
             } else {
                 format!(
-                    "{n} digits requested, {proved} proved{}",
+                    "{n} digits requested, {} of {} entries with fewer proved{} (an entry 0 ± b proves no digit: |value| ≤ b)",
+                    short,
+                    decimals.len(),
                     shortfall(e.bits, e.stopped)
                 )
             };
@@ -284,7 +317,7 @@ fn build<T: Ring>(
     params: &[T],
     h: &T,
     curve: CurveData<'_, T>,
-) -> Vec<Block<T>> {
+) -> Result<Vec<Block<T>>, VanishingDenominator> {
     macro_rules! with_order {
         ($($n:literal),*) => {
             match args.order {
@@ -302,7 +335,7 @@ fn blocks<T: Ring, const K: usize>(
     params: &[T],
     h: &T,
     curve: CurveData<'_, T>,
-) -> Vec<Block<T>> {
+) -> Result<Vec<Block<T>>, VanishingDenominator> {
     let wrt = Wrt::from(args.wrt);
     let orders = || (0..K).map(|k| k.to_string());
     if args.at == At::Knots {
@@ -321,12 +354,12 @@ fn blocks<T: Ring, const K: usize>(
             .enumerate()
             .map(|(k, label)| (label, cols.iter().map(|c| c[k].clone()).collect()))
             .collect();
-        return vec![Block {
+        return Ok(vec![Block {
             title: "one-sided derivatives of the B-spline basis function at knots n = 0..4".into(),
             corner: "k".into(),
             columns,
             rows,
-        }];
+        }]);
     }
     let ends: &[End] = match args.at {
         At::Start => &[End::Start],
@@ -337,16 +370,14 @@ fn blocks<T: Ring, const K: usize>(
         .map(|&end| {
             let title = format!("{end} of the domain");
             if let (true, Some((points, weights))) = (args.curve, curve) {
-                let values = curve_endpoint_derivatives::<T, K>(
-                    family,
-                    params,
-                    points,
-                    args.rational.then_some(weights),
-                    end,
-                    wrt,
-                    h,
-                );
-                Block {
+                let values = if args.rational {
+                    rational_curve_endpoint_derivatives::<T, K>(
+                        family, params, points, weights, end, wrt, h,
+                    )?
+                } else {
+                    curve_endpoint_derivatives::<T, K>(family, params, points, None, end, wrt, h)
+                };
+                Ok(Block {
                     title: format!(
                         "{title}: {}",
                         if args.rational {
@@ -361,10 +392,10 @@ fn blocks<T: Ring, const K: usize>(
                         .zip(values.iter())
                         .map(|(l, v)| (l, vec![v.clone()]))
                         .collect(),
-                }
+                })
             } else {
                 let table = endpoint_derivatives::<T, K>(family, params, end, wrt, h);
-                Block {
+                Ok(Block {
                     title,
                     corner: "k".into(),
                     columns: family.function_names(),
@@ -372,7 +403,7 @@ fn blocks<T: Ring, const K: usize>(
                         .enumerate()
                         .map(|(k, label)| (label, table.iter().map(|f| f[k].clone()).collect()))
                         .collect(),
-                }
+                })
             }
         })
         .collect()
