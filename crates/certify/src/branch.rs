@@ -1,31 +1,37 @@
 //! Signs of functions that are not polynomial in `sin`, `cos` or the
 //! variable — `t` beside `sin t` (C-curves), `sinh`, `exp`, sines of
-//! parameters, domains `[0, α]` — by interval branch and bound with
-//! outward rounding ([`trig_core::Interval`]), so every `holds` is a proof.
+//! parameters, domains `[0, α]` — by branch and bound with rigorous
+//! enclosures, so every `holds` is a proof.
 //!
 //! The variable is normalised, `x = a(p) + L(p)·τ` with `τ ∈ [0, 1]`; a
 //! box is `τ ∈ [τ₀, τ₁]` times an interval for each parameter. On a box:
 //!
-//! 1. the function is enclosed by evaluating its exact formula on
-//!    intervals: a lower end `≥ 0` proves it there, an upper end `< 0` is a
-//!    certified counterexample (the box's rational centre);
+//! 1. the function is enclosed by a Taylor model of its exact formula
+//!    ([`crate::enclosure`]; intersected with plain interval evaluation,
+//!    which is exact at faces where the model keeps a rounding remainder):
+//!    a lower end `≥ 0` proves it there, an upper end `< 0` is a certified
+//!    counterexample (the box's rational centre); a side along which the
+//!    function is proved monotone is replaced by its lower end;
 //! 2. on a box touching a face of the whole region (`τ = 0`, `τ = 1`, a
 //!    parameter's range end) — where basis functions vanish and enclosures
-//!    cannot decide — the function is `≥ 0` when it is `≥ 0` on the face
-//!    (exactly zero there, decided in the exact ring, or proved on the
-//!    face's lower-dimensional box) and its derivative into the box is
-//!    `≥ 0` (decided the same way: derivatives are exact, by the chain rule
+//!    cannot decide — by the face arguments (`branch/faces.rs`): a function
+//!    zero on the face to order `m` has the sign of its `m`-th derivative
+//!    into the box (Taylor's theorem: the removable zero divided out), and
+//!    otherwise it is `≥ 0` when it is `≥ 0` on the face and its derivative
+//!    into the box is `≥ 0` (derivatives are exact, by the chain rule
 //!    `∂τ = L·∂x`, `∂pᵢ = ∂pᵢ|ₓ + (aᵢ + Lᵢτ)·∂x`);
 //! 3. otherwise the box is split along its widest side.
 //!
-//! Strict signs (for divisors) use the same steps; at an open range end
-//! the face itself is excluded, so `α − sin α > 0` on `(0, π)` is proved
-//! from `(α − sin α)‴ = cos α > 0` near `α = 0`. A decision that does not
-//! finish within the budget is undecided, never a failure.
+//! A function of the variable alone is decided on the union of the
+//! domains, one dimension instead of `1 + d`. Strict signs (for divisors)
+//! use the same steps; at an open range end the face itself is excluded,
+//! so `α − sin α > 0` on `(0, π)` is proved from `(α − sin α)‴ = cos α > 0`
+//! near `α = 0`. The budget is counted in boxes, never timed, so a verdict
+//! does not depend on the machine; a decision that does not finish within
+//! it is undecided, never a failure.
 
 use std::cell::RefCell;
 use std::rc::Rc;
-use std::time::{Duration, Instant};
 
 use rug::float::Round;
 use rug::{Float, Rational};
@@ -34,30 +40,23 @@ use trig_symbolic::Sym;
 
 use crate::atoms::{ParamAtom, d_param, d_variable, param_atoms, value};
 
+mod faces;
+use crate::enclosure::{BoxAtoms, DEGREE};
+
 /// Working precision of the enclosures (bits).
-const PREC: u32 = 64;
+const PREC: u32 = 128;
 /// Most box evaluations of one decision: the budget is counted, not timed,
 /// so a verdict never depends on the machine's load.
 const BUDGET: usize = 12_000;
-/// A safety net in wall time (never reached at the budget above on any
-/// reasonable machine; reported as such).
-const TIME: Duration = Duration::from_secs(120);
 /// Deepest chain of face arguments (derivative order).
 const MAX_ORDER: usize = 8;
 /// Deepest subdivision.
 const MAX_DEPTH: usize = 40;
 /// Most box evaluations of one face argument before it is abandoned.
 const ATTEMPT: usize = 3_000;
-
-/// What the face of a face argument must satisfy: strictly positive for a
-/// strict goal on a closed face, `≥ 0` otherwise.
-fn face_goal(goal: Goal, open: bool) -> Goal {
-    if goal == Goal::Positive && !open {
-        Goal::Positive
-    } else {
-        Goal::NonNegative
-    }
-}
+/// Most subdivisions of one face argument below the box it starts on (the
+/// outer search splits further and tries again).
+const ATTEMPT_DEPTH: usize = 10;
 
 /// A parameter's set: `[lo, hi]` with open ends where flagged; with `pi`
 /// the ends are multiples of π (the parameter is `π·y`, `y ∈ [lo, hi]`).
@@ -128,7 +127,11 @@ struct Engine<'a> {
     evaluations: usize,
     /// The evaluation count at which the current attempt gives up.
     limit: usize,
-    started: Instant,
+    /// The depth at which the current attempt stops splitting.
+    floor: usize,
+    /// Set to the order of a derivative certified negative somewhere: the
+    /// face argument that needs it `≥ 0` is doomed, its search stops.
+    doomed: Option<usize>,
 }
 
 fn float(q: &Rational, round: Round) -> Float {
@@ -137,6 +140,19 @@ fn float(q: &Rational, round: Round) -> Float {
 
 fn interval(lo: &Rational, hi: &Rational) -> Interval {
     Interval::from_ends(PREC, &float(lo, Round::Down), &float(hi, Round::Up))
+}
+
+/// `−f` (its derivatives formed anew).
+fn negate(f: &Fun, dims: usize) -> Rc<Fun> {
+    Fun::new(
+        f.e.iter()
+            .map(|t| Term {
+                coef: t.coef.clone(),
+                sym: -t.sym.clone(),
+            })
+            .collect(),
+        dims,
+    )
 }
 
 fn poly_mul(a: &[Rational], b: &[Rational]) -> Vec<Rational> {
@@ -166,7 +182,17 @@ fn poly_at(a: &[Rational], x: &Rational) -> Rational {
 
 impl Engine<'_> {
     fn out_of_budget(&self) -> bool {
-        self.evaluations >= self.limit.min(BUDGET) || self.started.elapsed() > TIME
+        self.evaluations >= self.limit.min(BUDGET)
+    }
+
+    /// True when side `k` of the box is at most a quarter of the region's.
+    fn narrow(&self, bx: &[(Rational, Rational)], k: usize) -> bool {
+        let global = if k == 0 {
+            Rational::from(1)
+        } else {
+            Rational::from(&self.axes[k - 1].hi - &self.axes[k - 1].lo)
+        };
+        Rational::from(&bx[k].1 - &bx[k].0) * 4u32 <= global
     }
 
     /// `a(p)`, `L(p) = b(p) − a(p)` as exact values in the parameters.
@@ -182,9 +208,34 @@ impl Engine<'_> {
         (a.clone(), b - &a)
     }
 
-    /// The enclosure of `e` on the box `[lo, hi]` (coordinate 0 is `τ`).
+    /// The enclosure of `e` on the box `[lo, hi]` (coordinate 0 is `τ`):
+    /// by Taylor models ([`crate::enclosure`]), by plain intervals when the
+    /// models have none.
     fn enclose(&mut self, e: &Expr, bx: &[(Rational, Rational)]) -> Option<Interval> {
         self.evaluations += 1;
+        let pi: Vec<bool> = self.axes.iter().map(|a| a.pi).collect();
+        let by_models = BoxAtoms::new(self.domain, &self.atoms, &pi, bx, DEGREE)
+            .and_then(|atoms| atoms.eval_terms(e.iter().map(|t| (t.coef.as_slice(), &t.sym))))
+            .and_then(|m| m.range());
+        let decided = |v: &Interval| *v.lo() >= 0 || *v.hi() < 0;
+        match by_models {
+            Some(v) if decided(&v) => Some(v),
+            // both enclose: their intersection does (plain intervals are
+            // exact at a face where a model keeps a rounding remainder)
+            Some(v) => match self.enclose_by_intervals(e, bx) {
+                Some(w) => Some(Interval::from_ends(
+                    PREC,
+                    &v.lo().clone().max(w.lo()),
+                    &v.hi().clone().min(w.hi()),
+                )),
+                None => Some(v),
+            },
+            None => self.enclose_by_intervals(e, bx),
+        }
+    }
+
+    /// The enclosure of `e` by interval evaluation of its exact formula.
+    fn enclose_by_intervals(&self, e: &Expr, bx: &[(Rational, Rational)]) -> Option<Interval> {
         let tau = interval(&bx[0].0, &bx[0].1);
         let p = self.params(&tau, &bx[1..]);
         let d = self.domain;
@@ -293,68 +344,6 @@ impl Engine<'_> {
         out
     }
 
-    /// `e` exactly zero on the face `coordinate k = v` (for `τ`: the atoms
-    /// at that end; for a parameter: substituted when it has no atoms).
-    fn zero_on_face(&self, e: &Expr, k: usize, v: &Rational) -> bool {
-        let p: Vec<Sym> = self
-            .domain
-            .param_names
-            .iter()
-            .map(|n| Sym::var(n))
-            .collect();
-        let mut total = Sym::zero();
-        for t in e {
-            let face = if k == 0 {
-                let end = if *v == 0 {
-                    &self.domain.start
-                } else {
-                    &self.domain.end
-                };
-                let Some(at) = self.domain.atoms_at(end, &Sym::one(), &p) else {
-                    return false;
-                };
-                Sym::rational(poly_at(&t.coef, v))
-                    * &t.sym
-                        .subs("s", &at.s)
-                        .subs("c", &at.c)
-                        .subs("t", &at.t)
-                        .subs("E", &at.e)
-            } else {
-                // the parameter and its atoms at the face value, when exact
-                // (a formula zero for every x is zero on the face)
-                let i = k - 1;
-                let v = if self.axes[i].pi {
-                    Sym::rational(v.clone()) * &Sym::pi()
-                } else {
-                    Sym::rational(v.clone())
-                };
-                let mut at = p.clone();
-                at[i] = v.clone();
-                let symbols = trig_symbolic::symbolic_atoms();
-                let mut face = t.sym.subs(&self.domain.param_names[i], &v);
-                for atom in self.atoms.iter().filter(|a| a.param == i) {
-                    if !face.variables().contains(&atom.name) {
-                        continue;
-                    }
-                    match value(&atom.name, self.domain, &symbols, &at, &self.atoms) {
-                        Some(exact) => face = face.subs(&atom.name, &exact),
-                        None => return false,
-                    }
-                }
-                // τ stays free (a formal variable: zero for every τ is sound)
-                let tau = Sym::var("__tau");
-                let coef = t
-                    .coef
-                    .iter()
-                    .rev()
-                    .fold(Sym::zero(), |acc, q| acc * &tau + &Sym::rational(q.clone()));
-                coef * &face
-            };
-            total = total + &face;
-        }
-        total.is_zero()
-    }
-
     /// Decides the goal for `e` on the box; `order` counts face arguments.
     fn decide(
         &mut self,
@@ -366,14 +355,9 @@ impl Engine<'_> {
     ) -> Outcome {
         let e = &f.e;
         if self.out_of_budget() {
-            return Outcome::Undecided(if self.started.elapsed() > TIME {
-                format!(
-                    "the interval search ran out of time after {} boxes",
-                    self.evaluations
-                )
-            } else {
-                format!("the interval search stopped at its budget of {BUDGET} boxes")
-            });
+            return Outcome::Undecided(format!(
+                "the interval search stopped at its budget of {BUDGET} boxes"
+            ));
         }
         if e.is_empty() {
             return match goal {
@@ -402,6 +386,7 @@ impl Engine<'_> {
                 return if order == 0 {
                     self.negative_at(bx, &v)
                 } else {
+                    self.doomed = Some(order);
                     Outcome::Undecided(
                         "a derivative is negative: the face argument does not apply".into(),
                     )
@@ -410,12 +395,7 @@ impl Engine<'_> {
         }
         // face arguments on the faces of the whole region, on boxes near them
         for k in 0..bx.len() {
-            let global = if k == 0 {
-                Rational::from(1)
-            } else {
-                Rational::from(&self.axes[k - 1].hi - &self.axes[k - 1].lo)
-            };
-            if bx[k].0 == bx[k].1 || Rational::from(&bx[k].1 - &bx[k].0) * 4u32 > global {
+            if bx[k].0 == bx[k].1 || !self.narrow(bx, k) {
                 continue;
             }
             for lower in [true, false] {
@@ -427,7 +407,7 @@ impl Engine<'_> {
                 }
             }
         }
-        if depth >= MAX_DEPTH {
+        if depth >= MAX_DEPTH.min(self.floor) {
             return Outcome::Undecided("subdivision depth limit".into());
         }
         // split the widest side
@@ -450,7 +430,11 @@ impl Engine<'_> {
             child[k] = half;
             // a negative box anywhere decides; an undecided one is kept
             // while the other half is searched for one
-            match self.decide(f, &child, goal, order, depth + 1) {
+            let out = self.decide(f, &child, goal, order, depth + 1);
+            if self.doomed == Some(order) {
+                return out;
+            }
+            match out {
                 Outcome::Proved { boxes } => {
                     if let Outcome::Proved { .. } = result {
                         result = Outcome::Proved { boxes };
@@ -461,98 +445,6 @@ impl Engine<'_> {
             }
         }
         result
-    }
-
-    /// The face argument on side `lower` of coordinate `k`, when that side
-    /// lies on the region's boundary: `None` when it does not apply or fails.
-    #[allow(clippy::too_many_arguments)]
-    fn face_argument(
-        &mut self,
-        f: &Rc<Fun>,
-        bx: &[(Rational, Rational)],
-        goal: Goal,
-        order: usize,
-        depth: usize,
-        k: usize,
-        lower: bool,
-    ) -> Option<Outcome> {
-        let (global, open) = if k == 0 {
-            (
-                if lower {
-                    Rational::new()
-                } else {
-                    Rational::from(1)
-                },
-                false,
-            )
-        } else {
-            let a = &self.axes[k - 1];
-            if lower {
-                (a.lo.clone(), a.lo_open)
-            } else {
-                (a.hi.clone(), a.hi_open)
-            }
-        };
-        let side = if lower { &bx[k].0 } else { &bx[k].1 };
-        if *side != global {
-            return None;
-        }
-        // the face value: ≥ 0 (exactly zero, or proved on the face box)
-        let outer = self.limit;
-        self.limit = outer.min(self.evaluations + ATTEMPT);
-        let result = self.face_attempt(f, bx, goal, order, depth, k, lower, global, open);
-        self.limit = outer;
-        result
-    }
-
-    /// The two halves of a face argument (see [`Engine::face_argument`]).
-    #[allow(clippy::too_many_arguments)]
-    fn face_attempt(
-        &mut self,
-        f: &Rc<Fun>,
-        bx: &[(Rational, Rational)],
-        goal: Goal,
-        order: usize,
-        depth: usize,
-        k: usize,
-        lower: bool,
-        global: Rational,
-        open: bool,
-    ) -> Option<Outcome> {
-        let face_ok = (face_goal(goal, open) == Goal::NonNegative
-            && self.zero_on_face(&f.e, k, &global))
-            || {
-                let mut face = bx.to_vec();
-                face[k] = (global.clone(), global.clone());
-                matches!(
-                    self.decide(f, &face, face_goal(goal, open), order, depth),
-                    Outcome::Proved { .. }
-                )
-            };
-        if !face_ok {
-            return None;
-        }
-        // the derivative into the box (negated on an upper side)
-        let mut d = self.derived(f, k);
-        if !lower {
-            let negated: Expr =
-                d.e.iter()
-                    .map(|t| Term {
-                        coef: t.coef.clone(),
-                        sym: -t.sym.clone(),
-                    })
-                    .collect();
-            d = Fun::new(negated, bx.len());
-        }
-        let inner_goal = if goal == Goal::Positive && open {
-            Goal::Positive
-        } else {
-            Goal::NonNegative
-        };
-        match self.decide(&d, bx, inner_goal, order + 1, depth) {
-            out @ Outcome::Proved { .. } => Some(out),
-            _ => None,
-        }
     }
 
     /// A grid of points (8 steps per side, at most 4096 points) where the
@@ -617,13 +509,73 @@ pub fn positive(f: &Sym, domain: &Domain, axes: &[Axis]) -> Outcome {
 }
 
 fn run(f: &Sym, domain: &Domain, axes: &[Axis], goal: Goal) -> Outcome {
+    // a function of the variable alone is decided on the union of the
+    // domains, `[min a(p), max b(p)]` (one dimension instead of 1 + d)
+    if let Some(hull) = variable_hull(f, domain, axes) {
+        if let proved @ Outcome::Proved { .. } = search(f, &hull, &[], goal) {
+            return proved;
+        }
+    }
+    search(f, domain, axes, goal)
+}
+
+/// When `f` depends on the variable alone (its atoms, `π`, radicals) and
+/// the domain's ends on the parameters: the domain `[min a, max b]` over
+/// the parameter box, without parameters. The union of the domains
+/// `[a(p), b(p)]` over a connected box is that interval (up to ends not
+/// attained at open range ends), so `f ≥ 0` there is `f ≥ 0` on every
+/// domain.
+fn variable_hull(f: &Sym, domain: &Domain, axes: &[Axis]) -> Option<Domain> {
+    let own =
+        |v: &String| ["s", "c", "t", "E", "pi"].contains(&v.as_str()) || v.starts_with("sqrt(");
+    if axes.is_empty()
+        || !f.variables().iter().all(own)
+        || domain.angle.as_ref().is_some_and(|w| !w.params.is_empty())
+    {
+        return None;
+    }
+    // an affine end at the corner that makes it least (or greatest)
+    let extreme = |a: &Affine, least: bool| -> Affine {
+        let mut out = Affine {
+            constant: a.constant.clone(),
+            pi: a.pi.clone(),
+            params: Vec::new(),
+        };
+        for (i, q) in &a.params {
+            let axis = &axes[*i];
+            let at = if (*q > 0) == least {
+                &axis.lo
+            } else {
+                &axis.hi
+            };
+            let v = Rational::from(q * at);
+            if axis.pi {
+                out.pi += v;
+            } else {
+                out.constant += v;
+            }
+        }
+        out
+    };
+    Some(Domain {
+        param_names: Vec::new(),
+        start: extreme(&domain.start, true),
+        end: extreme(&domain.end, false),
+        param_angles: Vec::new(),
+        param_exps: Vec::new(),
+        ..domain.clone()
+    })
+}
+
+fn search(f: &Sym, domain: &Domain, axes: &[Axis], goal: Goal) -> Outcome {
     let mut engine = Engine {
         domain,
         axes,
         atoms: param_atoms(domain),
         evaluations: 0,
         limit: BUDGET,
-        started: Instant::now(),
+        floor: MAX_DEPTH,
+        doomed: None,
     };
     let mut bx = vec![(Rational::new(), Rational::from(1))];
     bx.extend(axes.iter().map(|a| (a.lo.clone(), a.hi.clone())));

@@ -20,15 +20,20 @@
 pub mod algebraic;
 pub mod atoms;
 pub mod bernstein;
+pub mod bernstein_bound;
 pub mod boundary;
 pub mod branch;
 pub mod domain;
+pub mod elementary;
+pub mod enclosure;
+pub mod factors;
 pub mod nonneg;
 pub mod range;
 pub mod region;
 pub mod resultant;
 pub mod standard;
 pub mod sturm;
+pub mod taylor;
 
 pub use domain::{Bound, ParamBox, describe_z, in_z};
 pub use standard::{Standard, standardize};

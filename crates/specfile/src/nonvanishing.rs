@@ -2,21 +2,26 @@
 //! divides by `d`, we prove `d ≠ 0` on the whole domain for every parameter
 //! in its declared range, open and infinite ends excluded exactly.
 //!
-//! Products of exponential atoms (`E = exp(κx)`, `exp(βp)`) never vanish.
-//! Otherwise the proof is the certifier's
+//! `d` is factored exactly first ([`Sym::factored`]) and each factor is
+//! proved nonzero on its own — so a divisor written as a definition
+//! (`D = 2α(1 − cos α)`), whose value arrives expanded, is still proved
+//! factor by factor. Products of exponential atoms (`E = exp(κx)`,
+//! `exp(βp)`) never vanish. Otherwise the proof is the certifier's
 //! ([`trig_certify::nonneg::definite_sign`]) on the standard pieces of the
 //! domain ([`trig_certify::standardize`]): Weierstrass `z = tan(θ/2)`,
 //! every parameter set mapped onto a unit coordinate,
 //! `π ∈ [314159/100000, 314160/100000]`, and exact Bernstein subdivision
-//! until `d` has one strict sign on every cell. Otherwise the file is
-//! refused with an exact witness: a rational point where `d = 0`, or two
-//! where its signs differ; or, when the subdivision cannot decide (or the
-//! divisor is not polynomial in sin, cos or the variable on a standard
-//! domain), with that said (a division we could not prove safe is never
+//! until the factor has one strict sign on every cell; or, for factors not
+//! polynomial in sin, cos or the variable on a standard domain, the
+//! engine's branch and bound ([`trig_certify::factors::nonzero`]).
+//! Otherwise the file is refused with a witness: a rational point where
+//! the factor is 0, or two where its signs differ; or, when no method
+//! decides, with that said (a division we could not prove safe is never
 //! accepted).
 
 use rug::Rational;
-use trig_certify::branch::{self, Outcome};
+use trig_certify::branch::Outcome;
+use trig_certify::factors;
 use trig_certify::nonneg::definite_sign;
 use trig_certify::{ParamBox, standardize};
 use trig_core::Domain;
@@ -32,8 +37,9 @@ fn positive_atom(v: &str) -> bool {
     v == "E" || v.starts_with("exp(")
 }
 
-/// The strict sign of `n` by interval branch and bound (functions not
-/// polynomial in sin, cos or the variable on a standard domain).
+/// The strict sign of the factor `n` of `d` by the engine's branch and
+/// bound (functions not polynomial in sin, cos or the variable on a
+/// standard domain).
 fn interval_sign(
     d: &Sym,
     n: &Sym,
@@ -48,9 +54,16 @@ fn interval_sign(
             })
         })
         .collect::<Result<Vec<_>, String>>()?;
-    let positive = |x: &Sym| branch::positive(x, domain, &axes);
-    match (positive(n), positive(&-n.clone())) {
-        (Outcome::Proved { .. }, _) | (_, Outcome::Proved { .. }) => Ok(()),
+    let failed = match factors::nonzero(n, domain, &axes) {
+        Ok(_) => return Ok(()),
+        Err(failed) => failed,
+    };
+    let part = if failed.factor == Sym::from_poly(d.numerator().clone()) {
+        String::new()
+    } else {
+        format!(" (its factor `{}`)", failed.factor)
+    };
+    match (failed.positive, failed.negative) {
         (
             Outcome::Negative {
                 x: x1, params: p1, ..
@@ -59,12 +72,15 @@ fn interval_sign(
                 x: x2, params: p2, ..
             },
         ) => Err(format!(
-            "division by `{d}`, which changes sign: it is negative at {} and positive at {} (certified enclosures)",
+            "division by `{d}`, which changes sign{part}: it is negative at {} and positive at {} (certified enclosures)",
             at(domain, x1, &p1),
             at(domain, x2, &p2)
         )),
         (Outcome::Undecided(why), _) | (_, Outcome::Undecided(why)) => Err(format!(
-            "division by `{d}`: could not prove that it does not vanish in the declared domain and range ({why}); restate the formula or narrow the range"
+            "division by `{d}`: could not prove that it{part} does not vanish in the declared domain and range ({why}); restate the formula or narrow the range"
+        )),
+        _ => Err(format!(
+            "division by `{d}`: could not prove that it{part} does not vanish in the declared domain and range; restate the formula or narrow the range"
         )),
     }
 }
@@ -106,12 +122,30 @@ pub fn check(d: &Sym, domain: &Domain, params: &[(String, SpecRange)]) -> Result
             unknown.join(", ")
         ));
     }
+    // a product is nonzero exactly when its factors are, and each is
+    // smaller to prove (a definition `2α(1 − cos α)` is factored again)
+    for (factor, _) in &n.factored().num {
+        check_factor(d, &Sym::from_poly(factor.clone()), domain, params)?;
+    }
+    Ok(())
+}
+
+/// `Ok` when the factor `n` of the divisor `d` cannot vanish.
+fn check_factor(
+    d: &Sym,
+    n: &Sym,
+    domain: &Domain,
+    params: &[(String, SpecRange)],
+) -> Result<(), String> {
+    if n.numerator().len() == 1 && n.variables().iter().all(|v| positive_atom(v)) {
+        return Ok(());
+    }
     let pi_range = params
         .iter()
         .any(|(name, r)| r.pi && n.variables().contains(name));
-    let st = match standardize(&n, domain) {
+    let st = match standardize(n, domain) {
         Ok(st) if !pi_range => st,
-        _ => return interval_sign(d, &n, domain, params),
+        _ => return interval_sign(d, n, domain, params),
     };
     let mut sign = 0;
     for piece in &st.pieces {

@@ -7,14 +7,14 @@
 //! exact unless the basis is undefined there).
 
 use rug::Rational;
-use trig_certify::branch::{self, Axis, Outcome};
+use trig_certify::branch::{Axis, Outcome};
 use trig_specfile::{Spec, SpecRange};
-use trig_symbolic::{Poly, Sym};
+use trig_symbolic::Sym;
 
 use crate::verdict::{Status, Verdict};
 
 /// How the interval method decides, as the report states it.
-pub const INTERVAL: &str = "certified: interval branch and bound in 128-bit MPFR with outward rounding over (variable, parameters); next to the domain's ends and the range ends by exact derivatives (≥ 0 on the face and a derivative ≥ 0 into the box); denominators proved of one strict sign first; counterexamples are boxes where the value is certified negative";
+pub const INTERVAL: &str = "certified: branch and bound over (variable, parameters) with Taylor models in 128-bit MPFR (a polynomial and a rigorous remainder) and interval arithmetic with outward rounding; products and quotients factor by factor (denominators of one strict sign); next to the domain's ends and the range ends by exact derivatives (a zero of order m on a face has the sign of the m-th derivative into the box; otherwise ≥ 0 on the face and a derivative ≥ 0 into the box); counterexamples are boxes where the value is certified negative";
 
 /// Width kept of an unbounded range (the search is then partial).
 const TRUNCATE: i64 = 64;
@@ -87,32 +87,10 @@ fn describe_point(spec: &Spec, axes: &[Axis], params: &[Rational], x: f64) -> St
     parts.join(", ")
 }
 
-/// `f ≥ 0` on the domain for the parameters in `axes`: the strict sign of
-/// each denominator factor, then the sign of the numerator.
+/// `f ≥ 0` on the domain for the parameters in `axes`, decided factor by
+/// factor by the engine ([`trig_certify::factors::nonnegative`]).
 pub fn nonnegative(spec: &Spec, name: &str, f: &Sym, axes: &[Axis]) -> (Status, String) {
-    let d = &spec.domain;
-    let mut sign = 1;
-    for (factor, e) in f.denominator() {
-        let g = Sym::from_poly(factor.clone());
-        let s = match (
-            branch::positive(&g, d, axes),
-            branch::positive(&-g.clone(), d, axes),
-        ) {
-            (Outcome::Proved { .. }, _) => 1,
-            (_, Outcome::Proved { .. }) => -1,
-            _ => {
-                return (
-                    Status::NotCheckable,
-                    format!("{name} ≥ 0: the sign of its denominator factor {g} was not proved"),
-                );
-            }
-        };
-        if e % 2 == 1 {
-            sign *= s;
-        }
-    }
-    let num = Sym::from_poly(f.numerator().clone() * &Poly::int(sign));
-    match branch::nonnegative(&num, d, axes) {
+    match trig_certify::factors::nonnegative(f, &spec.domain, axes) {
         Outcome::Proved { boxes } => (
             Status::Holds,
             format!("{name} ≥ 0: certified on the whole domain ({boxes} interval boxes)"),
