@@ -33,18 +33,15 @@
 use std::cell::RefCell;
 use std::rc::Rc;
 
-use rug::float::Round;
-use rug::{Float, Rational};
-use trig_core::{Affine, Atoms, Domain, Interval, Ring};
+use rug::Rational;
+use trig_core::{Affine, Domain, Interval};
 use trig_symbolic::Sym;
 
-use crate::atoms::{ParamAtom, d_param, d_variable, param_atoms, value};
+pub use crate::coordinates::Axis;
+use crate::coordinates::{BoxFunction, Coordinates};
 
 mod faces;
-use crate::enclosure::{BoxAtoms, DEGREE};
 
-/// Working precision of the enclosures (bits).
-const PREC: u32 = 128;
 /// Most box evaluations of one decision: the budget is counted, not timed,
 /// so a verdict never depends on the machine's load.
 const BUDGET: usize = 12_000;
@@ -57,17 +54,6 @@ const ATTEMPT: usize = 3_000;
 /// Most subdivisions of one face argument below the box it starts on (the
 /// outer search splits further and tries again).
 const ATTEMPT_DEPTH: usize = 10;
-
-/// A parameter's set: `[lo, hi]` with open ends where flagged; with `pi`
-/// the ends are multiples of π (the parameter is `π·y`, `y ∈ [lo, hi]`).
-#[derive(Debug, Clone, PartialEq)]
-pub struct Axis {
-    pub lo: Rational,
-    pub hi: Rational,
-    pub lo_open: bool,
-    pub hi_open: bool,
-    pub pi: bool,
-}
 
 /// The decision about one sign question.
 #[derive(Debug, Clone, PartialEq)]
@@ -87,25 +73,15 @@ pub enum Outcome {
     Undecided(String),
 }
 
-/// `Σ coef(τ)·sym`: an exact function with polynomial factors in `τ`
-/// from the chain rule.
-#[derive(Debug, Clone)]
-struct Term {
-    coef: Vec<Rational>,
-    sym: Sym,
-}
-
-type Expr = Vec<Term>;
-
 /// An expression with its first derivatives along each coordinate, formed
 /// on first use (the monotonicity test and the face arguments share them).
 struct Fun {
-    e: Expr,
+    e: BoxFunction,
     d: RefCell<Vec<Option<Rc<Fun>>>>,
 }
 
 impl Fun {
-    fn new(e: Expr, dims: usize) -> Rc<Fun> {
+    fn new(e: BoxFunction, dims: usize) -> Rc<Fun> {
         Rc::new(Fun {
             e,
             d: RefCell::new(vec![None; dims]),
@@ -121,9 +97,7 @@ enum Goal {
 }
 
 struct Engine<'a> {
-    domain: &'a Domain,
-    axes: &'a [Axis],
-    atoms: Vec<ParamAtom>,
+    coords: Coordinates<'a>,
     evaluations: usize,
     /// The evaluation count at which the current attempt gives up.
     limit: usize,
@@ -134,50 +108,9 @@ struct Engine<'a> {
     doomed: Option<usize>,
 }
 
-fn float(q: &Rational, round: Round) -> Float {
-    Float::with_val_round(PREC, q, round).0
-}
-
-fn interval(lo: &Rational, hi: &Rational) -> Interval {
-    Interval::from_ends(PREC, &float(lo, Round::Down), &float(hi, Round::Up))
-}
-
 /// `−f` (its derivatives formed anew).
 fn negate(f: &Fun, dims: usize) -> Rc<Fun> {
-    Fun::new(
-        f.e.iter()
-            .map(|t| Term {
-                coef: t.coef.clone(),
-                sym: -t.sym.clone(),
-            })
-            .collect(),
-        dims,
-    )
-}
-
-fn poly_mul(a: &[Rational], b: &[Rational]) -> Vec<Rational> {
-    let mut out = vec![Rational::new(); a.len() + b.len() - 1];
-    for (i, x) in a.iter().enumerate() {
-        for (j, y) in b.iter().enumerate() {
-            out[i + j] += Rational::from(x * y);
-        }
-    }
-    out
-}
-
-fn poly_derivative(a: &[Rational]) -> Vec<Rational> {
-    if a.len() <= 1 {
-        return vec![Rational::new()];
-    }
-    a.iter()
-        .enumerate()
-        .skip(1)
-        .map(|(k, q)| Rational::from(q * k as u32))
-        .collect()
-}
-
-fn poly_at(a: &[Rational], x: &Rational) -> Rational {
-    a.iter().rev().fold(Rational::new(), |acc, q| acc * x + q)
+    Fun::new(f.e.negated(), dims)
 }
 
 impl Engine<'_> {
@@ -190,90 +123,15 @@ impl Engine<'_> {
         let global = if k == 0 {
             Rational::from(1)
         } else {
-            Rational::from(&self.axes[k - 1].hi - &self.axes[k - 1].lo)
+            Rational::from(&self.coords.axes[k - 1].hi - &self.coords.axes[k - 1].lo)
         };
         Rational::from(&bx[k].1 - &bx[k].0) * 4u32 <= global
     }
 
-    /// `a(p)`, `L(p) = b(p) − a(p)` as exact values in the parameters.
-    fn start_and_length(&self) -> (Sym, Sym) {
-        let p: Vec<Sym> = self
-            .domain
-            .param_names
-            .iter()
-            .map(|n| Sym::var(n))
-            .collect();
-        let a = self.domain.start.eval(&Sym::one(), &p);
-        let b = self.domain.end.eval(&Sym::one(), &p);
-        (a.clone(), b - &a)
-    }
-
-    /// The enclosure of `e` on the box `[lo, hi]` (coordinate 0 is `τ`):
-    /// by Taylor models ([`crate::enclosure`]), by plain intervals when the
-    /// models have none.
-    fn enclose(&mut self, e: &Expr, bx: &[(Rational, Rational)]) -> Option<Interval> {
+    /// The enclosure of `e` on the box (one evaluation of the budget).
+    fn enclose(&mut self, e: &BoxFunction, bx: &[(Rational, Rational)]) -> Option<Interval> {
         self.evaluations += 1;
-        let pi: Vec<bool> = self.axes.iter().map(|a| a.pi).collect();
-        let by_models = BoxAtoms::new(self.domain, &self.atoms, &pi, bx, DEGREE)
-            .and_then(|atoms| atoms.eval_terms(e.iter().map(|t| (t.coef.as_slice(), &t.sym))))
-            .and_then(|m| m.range());
-        let decided = |v: &Interval| *v.lo() >= 0 || *v.hi() < 0;
-        match by_models {
-            Some(v) if decided(&v) => Some(v),
-            // both enclose: their intersection does (plain intervals are
-            // exact at a face where a model keeps a rounding remainder)
-            Some(v) => match self.enclose_by_intervals(e, bx) {
-                Some(w) => Some(Interval::from_ends(
-                    PREC,
-                    &v.lo().clone().max(w.lo()),
-                    &v.hi().clone().min(w.hi()),
-                )),
-                None => Some(v),
-            },
-            None => self.enclose_by_intervals(e, bx),
-        }
-    }
-
-    /// The enclosure of `e` by interval evaluation of its exact formula.
-    fn enclose_by_intervals(&self, e: &Expr, bx: &[(Rational, Rational)]) -> Option<Interval> {
-        let tau = interval(&bx[0].0, &bx[0].1);
-        let p = self.params(&tau, &bx[1..]);
-        let d = self.domain;
-        let a = d.start_value(&tau, &p);
-        let x = a.clone() + &((d.end_value(&tau, &p) - &a) * &tau);
-        let theta = x.clone() * &d.angle_rate(&tau);
-        let (s, c) = theta.try_sin_cos()?;
-        let ex = match &d.exp {
-            Some(k) => (x.clone() * &tau.rational(k)).try_exp()?,
-            None => tau.int(1),
-        };
-        let atoms = Atoms { s, c, t: x, e: ex };
-        let mut sum = tau.int(0);
-        for term in e {
-            let coef = term
-                .coef
-                .iter()
-                .rev()
-                .fold(tau.int(0), |acc, q| acc * &tau + &tau.rational(q));
-            let v = term
-                .sym
-                .eval(&tau, &|n| value(n, d, &atoms, &p, &self.atoms))
-                .ok()?;
-            sum = sum + &(coef * &v);
-        }
-        trig_core::Real::is_finite(&sum).then_some(sum)
-    }
-
-    /// The parameters on the box's coordinates (`π·y` on a π axis).
-    fn params(&self, like: &Interval, coords: &[(Rational, Rational)]) -> Vec<Interval> {
-        coords
-            .iter()
-            .zip(self.axes)
-            .map(|((l, h), a)| {
-                let y = interval(l, h);
-                if a.pi { y * &like.pi() } else { y }
-            })
-            .collect()
+        self.coords.enclose(e, bx)
     }
 
     /// `∂/∂(coordinate k)` of `f`, formed once (along a π axis the factor
@@ -282,66 +140,9 @@ impl Engine<'_> {
         if let Some(d) = &f.d.borrow()[k] {
             return d.clone();
         }
-        let d = Fun::new(self.derivative(&f.e, k), f.d.borrow().len());
+        let d = Fun::new(self.coords.derivative(&f.e, k), f.d.borrow().len());
         f.d.borrow_mut()[k] = Some(d.clone());
         d
-    }
-
-    /// A lower bound of `f` on the box, sharpened by monotonicity: a side
-    /// along which `f` is proved monotone is replaced by its lower end.
-    fn lower_bound(&mut self, f: &Rc<Fun>, bx: &[(Rational, Rational)]) -> Option<Float> {
-        let mut reduced = bx.to_vec();
-        for k in 0..bx.len() {
-            if bx[k].0 == bx[k].1 {
-                continue;
-            }
-            let d = self.derived(f, k);
-            let Some(v) = self.enclose(&d.e, bx) else {
-                continue;
-            };
-            if *v.lo() >= 0 {
-                reduced[k] = (bx[k].0.clone(), bx[k].0.clone());
-            } else if *v.hi() <= 0 {
-                reduced[k] = (bx[k].1.clone(), bx[k].1.clone());
-            }
-        }
-        self.enclose(&f.e, &reduced).map(|v| v.lo().clone())
-    }
-
-    /// `∂/∂(coordinate k)` of `e` (`k = 0` is `τ`).
-    fn derivative(&self, e: &Expr, k: usize) -> Expr {
-        let (_, length) = self.start_and_length();
-        let mut out: Expr = Vec::new();
-        let mut push = |coef: Vec<Rational>, sym: Sym| {
-            if sym.is_zero() || coef.iter().all(|q| *q == 0) {
-                return;
-            }
-            match out.iter_mut().find(|t| t.coef == coef) {
-                Some(t) => t.sym = t.sym.clone() + &sym,
-                None => out.push(Term { coef, sym }),
-            }
-        };
-        for t in e {
-            let dx = d_variable(&t.sym, self.domain);
-            if k == 0 {
-                push(poly_derivative(&t.coef), t.sym.clone());
-                push(t.coef.clone(), length.clone() * &dx);
-            } else {
-                let i = k - 1;
-                // ∂x/∂pᵢ = aᵢ + Lᵢτ
-                let coef_of = |a: &Affine| {
-                    a.params
-                        .iter()
-                        .find(|(j, _)| *j == i)
-                        .map_or_else(Rational::new, |(_, q)| q.clone())
-                };
-                let ai = coef_of(&self.domain.start);
-                let li = Rational::from(&coef_of(&self.domain.end) - &ai);
-                push(t.coef.clone(), d_param(&t.sym, self.domain, i, &self.atoms));
-                push(poly_mul(&t.coef, &[ai, li]), dx);
-            }
-        }
-        out
     }
 
     /// Decides the goal for `e` on the box; `order` counts face arguments.
@@ -359,7 +160,7 @@ impl Engine<'_> {
                 "the interval search stopped at its budget of {BUDGET} boxes"
             ));
         }
-        if e.is_empty() {
+        if e.is_zero() {
             return match goal {
                 Goal::NonNegative => Outcome::Proved {
                     boxes: self.evaluations,
@@ -368,15 +169,10 @@ impl Engine<'_> {
             };
         }
         if let Some(v) = self.enclose(e, bx) {
-            let lo = if *v.lo() >= 0 {
-                Some(v.lo().clone())
-            } else {
-                self.lower_bound(f, bx)
+            let proved = match goal {
+                Goal::NonNegative => *v.lo() >= 0,
+                Goal::Positive => *v.lo() > 0,
             };
-            let proved = lo.is_some_and(|lo| match goal {
-                Goal::NonNegative => lo >= 0,
-                Goal::Positive => lo > 0,
-            });
             if proved {
                 return Outcome::Proved {
                     boxes: self.evaluations,
@@ -450,15 +246,23 @@ impl Engine<'_> {
     /// A grid of points (8 steps per side, at most 4096 points) where the
     /// function is certified negative, if any: a quick counterexample.
     fn probe(&mut self, f: &Rc<Fun>, bx: &[(Rational, Rational)]) -> Option<Outcome> {
-        let steps = if bx.len() <= 2 { 8u32 } else { 4 };
+        let wide = bx.iter().filter(|(l, h)| l != h).count();
+        let steps = |k: usize| -> u32 {
+            match (bx[k].0 == bx[k].1, wide <= 2) {
+                (true, _) => 1,
+                (false, true) => 8,
+                (false, false) => 4,
+            }
+        };
         let mut index = vec![0u32; bx.len()];
         loop {
             let point: Vec<(Rational, Rational)> = bx
                 .iter()
                 .zip(&index)
-                .map(|((lo, hi), i)| {
+                .enumerate()
+                .map(|(k, ((lo, hi), i))| {
                     let q = lo.clone()
-                        + Rational::from(hi - lo) * Rational::from((2 * *i + 1, 2 * steps));
+                        + Rational::from(hi - lo) * Rational::from((2 * *i + 1, 2 * steps(k)));
                     (q.clone(), q)
                 })
                 .collect();
@@ -467,7 +271,7 @@ impl Engine<'_> {
                     return Some(self.negative_at(&point, &v));
                 }
             }
-            let k = index.iter().position(|i| *i + 1 < steps)?;
+            let k = (0..index.len()).find(|&k| index[k] + 1 < steps(k))?;
             index[k] += 1;
             for i in &mut index[..k] {
                 *i = 0;
@@ -480,17 +284,10 @@ impl Engine<'_> {
             .iter()
             .map(|(l, h)| Rational::from(l + h) / 2u32)
             .collect();
-        let tau = interval(&centre[0], &centre[0]);
-        let point: Vec<(Rational, Rational)> =
-            centre[1..].iter().map(|q| (q.clone(), q.clone())).collect();
-        let p = self.params(&tau, &point);
-        let d = self.domain;
-        let a = d.start_value(&tau, &p);
-        let x = a.clone() + &((d.end_value(&tau, &p) - &a) * &tau);
         Outcome::Negative {
             tau: centre[0].clone(),
             params: centre[1..].to_vec(),
-            x: trig_core::Real::to_f64(&x),
+            x: self.coords.x_at(&centre[0], &centre[1..]),
             value: (v.lo().to_f64(), v.hi().to_f64()),
         }
     }
@@ -569,23 +366,25 @@ fn variable_hull(f: &Sym, domain: &Domain, axes: &[Axis]) -> Option<Domain> {
 
 fn search(f: &Sym, domain: &Domain, axes: &[Axis], goal: Goal) -> Outcome {
     let mut engine = Engine {
-        domain,
-        axes,
-        atoms: param_atoms(domain),
+        coords: Coordinates::new(domain, axes),
         evaluations: 0,
         limit: BUDGET,
         floor: MAX_DEPTH,
         doomed: None,
     };
-    let mut bx = vec![(Rational::new(), Rational::from(1))];
+    // a function of the parameters alone does not depend on τ: τ = 0
+    let free = !f
+        .variables()
+        .iter()
+        .any(|v| ["s", "c", "t", "E"].contains(&v.as_str()));
+    let tau_end = if free {
+        Rational::new()
+    } else {
+        Rational::from(1)
+    };
+    let mut bx = vec![(Rational::new(), tau_end)];
     bx.extend(axes.iter().map(|a| (a.lo.clone(), a.hi.clone())));
-    let e = Fun::new(
-        vec![Term {
-            coef: vec![Rational::from(1)],
-            sym: f.clone(),
-        }],
-        bx.len(),
-    );
+    let e = Fun::new(engine.coords.function(f), bx.len());
     if let Some(negative) = engine.probe(&e, &bx) {
         return negative;
     }

@@ -11,24 +11,23 @@
 
 use std::cell::RefCell;
 use std::collections::HashMap;
-use std::rc::Rc;
 
 use rug::Rational;
 use trig_core::{Atoms, Domain, Interval, Ring};
-use trig_symbolic::Sym;
+use trig_symbolic::{Poly, Sym};
 
 use crate::atoms::{ParamAtom, value};
 use crate::taylor::{Space, TaylorModel};
 
 /// Degree of the models.
-pub const DEGREE: u32 = 5;
+pub const DEGREE: u32 = 4;
 /// Coefficient precision (bits).
 pub const PREC: u32 = 128;
 
 /// The atoms of one box as Taylor models.
 pub struct BoxAtoms<'a> {
     domain: &'a Domain,
-    param_atoms: &'a [ParamAtom],
+    param_atoms: Vec<ParamAtom>,
     tau: TaylorModel,
     params: Vec<TaylorModel>,
     atoms: Atoms<TaylorModel>,
@@ -44,33 +43,27 @@ impl std::fmt::Debug for BoxAtoms<'_> {
 impl<'a> BoxAtoms<'a> {
     /// The atoms on the box `bx` (coordinate 0 is `τ`, then one per
     /// parameter; `pi[i]` when parameter `i` is measured in units of π).
-    /// `None` when an atom has no enclosure there.
+    /// The variables of the models are the box's sides of positive width
+    /// (a point side is a constant). `None` when an atom has no enclosure
+    /// there.
     pub fn new(
         domain: &'a Domain,
-        param_atoms: &'a [ParamAtom],
+        param_atoms: &[ParamAtom],
         pi: &[bool],
         bx: &[(Rational, Rational)],
         degree: u32,
     ) -> Option<BoxAtoms<'a>> {
-        let space = Space::new(bx.len(), degree, PREC);
-        BoxAtoms::in_space(domain, param_atoms, pi, bx, &space)
-    }
-
-    /// [`BoxAtoms::new`] in a given space (its variables the box's sides).
-    pub fn in_space(
-        domain: &'a Domain,
-        param_atoms: &'a [ParamAtom],
-        pi: &[bool],
-        bx: &[(Rational, Rational)],
-        space: &Rc<Space>,
-    ) -> Option<BoxAtoms<'a>> {
-        let tau = TaylorModel::coordinate(space, 0, &bx[0].0, &bx[0].1);
-        let params: Vec<TaylorModel> = bx[1..]
-            .iter()
-            .enumerate()
-            .map(|(i, (lo, hi))| {
-                let y = TaylorModel::coordinate(space, i + 1, lo, hi);
-                if pi.get(i).copied().unwrap_or(false) {
+        let wide: Vec<usize> = (0..bx.len()).filter(|&k| bx[k].0 != bx[k].1).collect();
+        let space = Space::new(wide.len(), degree, PREC);
+        let side = |k: usize| match wide.iter().position(|&j| j == k) {
+            Some(v) => TaylorModel::coordinate(&space, v, &bx[k].0, &bx[k].1),
+            None => TaylorModel::constant(&space, &bx[k].0),
+        };
+        let tau = side(0);
+        let params: Vec<TaylorModel> = (1..bx.len())
+            .map(|k| {
+                let y = side(k);
+                if pi.get(k - 1).copied().unwrap_or(false) {
                     y.clone() * &y.pi()
                 } else {
                     y
@@ -96,7 +89,7 @@ impl<'a> BoxAtoms<'a> {
         }
         Some(BoxAtoms {
             domain,
-            param_atoms,
+            param_atoms: param_atoms.to_vec(),
             tau,
             params,
             atoms,
@@ -123,17 +116,63 @@ impl<'a> BoxAtoms<'a> {
             self.domain,
             &self.atoms,
             &self.params,
-            self.param_atoms,
+            &self.param_atoms,
         )?;
         self.cache.borrow_mut().insert(name.to_string(), m.clone());
         Some(m)
     }
 
     /// The model of `f` on the box, or `None` (an unknown atom, or no
-    /// enclosure: a denominator whose range may contain zero).
+    /// enclosure: a denominator whose range may contain zero). The powers
+    /// of the atoms are formed once per evaluation.
     pub fn eval(&self, f: &Sym) -> Option<TaylorModel> {
-        let m = f.eval(&self.tau, &|n| self.atom(n)).ok()?;
+        let mut powers: HashMap<(String, u32), TaylorModel> = HashMap::new();
+        let mut m = self.eval_poly(f.numerator(), &mut powers)?;
+        for (factor, e) in f.denominator() {
+            let d = self.eval_poly(factor, &mut powers)?;
+            for _ in 0..*e {
+                m = m / &d;
+            }
+        }
         (!m.is_fault()).then_some(m)
+    }
+
+    fn eval_poly(
+        &self,
+        p: &Poly,
+        powers: &mut HashMap<(String, u32), TaylorModel>,
+    ) -> Option<TaylorModel> {
+        let mut sum = self.tau.int(0);
+        for (monomial, q) in p.terms() {
+            let mut term = self.tau.rational(q);
+            for (v, e) in monomial.factors() {
+                term = term * &self.power(v.name(), e, powers)?;
+            }
+            sum = sum + &term;
+        }
+        Some(sum)
+    }
+
+    /// `atomᵉ`, from the cache or by one product with a cached power.
+    fn power(
+        &self,
+        name: &str,
+        e: u32,
+        powers: &mut HashMap<(String, u32), TaylorModel>,
+    ) -> Option<TaylorModel> {
+        if let Some(m) = powers.get(&(name.to_string(), e)) {
+            return Some(m.clone());
+        }
+        let m = if e == 1 {
+            self.atom(name)?
+        } else if e % 2 == 0 {
+            let h = self.power(name, e / 2, powers)?;
+            h.clone() * &h
+        } else {
+            self.power(name, e - 1, powers)? * &self.atom(name)?
+        };
+        powers.insert((name.to_string(), e), m.clone());
+        Some(m)
     }
 
     /// `Σ coef(τ)·sym` (a polynomial in `τ` times an exact value, summed).

@@ -19,13 +19,20 @@ use crate::branch::{self, Axis, Outcome};
 
 /// The sign a factor keeps on the domain × box.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Sign {
+pub enum Sign {
     Plus,
     Minus,
 }
 
-/// Its sign (strict for `strict`), the boxes it took, or why not.
-fn sign_of(g: &Sym, domain: &Domain, axes: &[Axis], strict: bool) -> Result<(Sign, usize), String> {
+/// The sign `g` keeps on the domain for every parameter in `axes` (strict
+/// for `strict`: `> 0` or `< 0`, else `≥ 0` or `≤ 0`), with the boxes it
+/// took, or why not.
+pub fn sign_of(
+    g: &Sym,
+    domain: &Domain,
+    axes: &[Axis],
+    strict: bool,
+) -> Result<(Sign, usize), String> {
     let decide = |x: &Sym| {
         if strict {
             branch::positive(x, domain, axes)
@@ -163,7 +170,8 @@ pub struct NonZero {
     pub negative: Outcome,
 }
 
-fn flip(s: Sign) -> Sign {
+/// The opposite sign.
+pub fn flip(s: Sign) -> Sign {
     match s {
         Sign::Plus => Sign::Minus,
         Sign::Minus => Sign::Plus,

@@ -17,10 +17,8 @@
 use std::rc::Rc;
 
 use rug::Rational;
-use trig_symbolic::Sym;
 
-use super::{ATTEMPT, ATTEMPT_DEPTH, Engine, Expr, Fun, Goal, MAX_ORDER, Outcome, negate, poly_at};
-use crate::atoms::value;
+use super::{ATTEMPT, ATTEMPT_DEPTH, Engine, Fun, Goal, MAX_ORDER, Outcome, negate};
 
 /// What the face of a face argument must satisfy: strictly positive for a
 /// strict goal on a closed face, `≥ 0` otherwise.
@@ -33,68 +31,6 @@ fn face_goal(goal: Goal, open: bool) -> Goal {
 }
 
 impl Engine<'_> {
-    /// `e` exactly zero on the face `coordinate k = v` (for `τ`: the atoms
-    /// at that end; for a parameter: substituted when it has no atoms).
-    pub(super) fn zero_on_face(&self, e: &Expr, k: usize, v: &Rational) -> bool {
-        let p: Vec<Sym> = self
-            .domain
-            .param_names
-            .iter()
-            .map(|n| Sym::var(n))
-            .collect();
-        let mut total = Sym::zero();
-        for t in e {
-            let face = if k == 0 {
-                let end = if *v == 0 {
-                    &self.domain.start
-                } else {
-                    &self.domain.end
-                };
-                let Some(at) = self.domain.atoms_at(end, &Sym::one(), &p) else {
-                    return false;
-                };
-                Sym::rational(poly_at(&t.coef, v))
-                    * &t.sym
-                        .subs("s", &at.s)
-                        .subs("c", &at.c)
-                        .subs("t", &at.t)
-                        .subs("E", &at.e)
-            } else {
-                // the parameter and its atoms at the face value, when exact
-                // (a formula zero for every x is zero on the face)
-                let i = k - 1;
-                let v = if self.axes[i].pi {
-                    Sym::rational(v.clone()) * &Sym::pi()
-                } else {
-                    Sym::rational(v.clone())
-                };
-                let mut at = p.clone();
-                at[i] = v.clone();
-                let symbols = trig_symbolic::symbolic_atoms();
-                let mut face = t.sym.subs(&self.domain.param_names[i], &v);
-                for atom in self.atoms.iter().filter(|a| a.param == i) {
-                    if !face.variables().contains(&atom.name) {
-                        continue;
-                    }
-                    match value(&atom.name, self.domain, &symbols, &at, &self.atoms) {
-                        Some(exact) => face = face.subs(&atom.name, &exact),
-                        None => return false,
-                    }
-                }
-                // τ stays free (a formal variable: zero for every τ is sound)
-                let tau = Sym::var("__tau");
-                let coef = t
-                    .coef
-                    .iter()
-                    .rev()
-                    .fold(Sym::zero(), |acc, q| acc * &tau + &Sym::rational(q.clone()));
-                coef * &face
-            };
-            total = total + &face;
-        }
-        total.is_zero()
-    }
-
     /// The face argument on side `lower` of coordinate `k`, when that side
     /// lies on the region's boundary: `None` when it does not apply or fails.
     #[allow(clippy::too_many_arguments)]
@@ -118,7 +54,7 @@ impl Engine<'_> {
                 false,
             )
         } else {
-            let a = &self.axes[k - 1];
+            let a = &self.coords.axes[k - 1];
             if lower {
                 (a.lo.clone(), a.lo_open)
             } else {
@@ -132,7 +68,7 @@ impl Engine<'_> {
         // a function not identically zero on the face is positive near it
         // or touches zero at some points of it: the argument is then tried
         // only on boxes narrow in every direction (splitting does the rest)
-        let vanishes = self.zero_on_face(&f.e, k, &global);
+        let vanishes = self.coords.zero_on_face(&f.e, bx, k, &global);
         if !vanishes && !(0..bx.len()).all(|j| j == k || self.narrow(bx, j)) {
             return None;
         }
@@ -178,10 +114,10 @@ impl Engine<'_> {
         loop {
             g = self.derived(&g, k);
             m += 1;
-            if order + m > MAX_ORDER || g.e.is_empty() {
+            if order + m > MAX_ORDER || g.e.is_zero() {
                 return None;
             }
-            if !self.zero_on_face(&g.e, k, global) {
+            if !self.coords.zero_on_face(&g.e, bx, k, global) {
                 break;
             }
         }
@@ -235,7 +171,7 @@ impl Engine<'_> {
             }
         }
         let face_ok = (face_goal(goal, open) == Goal::NonNegative
-            && self.zero_on_face(&f.e, k, &global))
+            && self.coords.zero_on_face(&f.e, bx, k, &global))
             || {
                 let mut face = bx.to_vec();
                 face[k] = (global.clone(), global.clone());
