@@ -8,6 +8,12 @@ exact object or raises AssertionError; nothing is decided by floating point.
   weierstrass(e, t, m)      sin t, cos t -> 2m/(1+m²), (1-m²)/(1+m²)   (t ∈ [0, π/2] <-> m ∈ [0, 1])
   nonneg_on(f, x, lo, hi)   exact decision of f(x) ≥ 0 on [lo, hi] for a rational univariate f
   param_set(F, x, lam, ...) the exact set of λ with F(x, λ) ≥ 0 for all x in [lo, hi]
+  iv_eval(e, env)           rigorous enclosure (mpmath.iv, outward rounding) of e at exact/interval values
+  iv_sign(e, env)           certified sign (+1/−1) of e, from iv_eval; AssertionError if the enclosure contains 0
+  root_enclosure(F, x, lo, hi)   certified sign change of F between two rationals (a root inside)
+  bernstein_matrix(N, x, d) coefficient matrix of polynomials N_i(x) in the Bernstein basis of degree d on [0, 1]
+  minors(M)                 all nonzero minors of M (every order)
+  tp_certificate_set(N, x, lam, d)  exact set of λ where every minor of the degree-d Bernstein matrix is ≥ 0
 """
 
 import sympy as sp
@@ -324,3 +330,180 @@ def mp_min(fns, var, lo, hi, n=400, dps=100):
         g = sp.lambdify(var, f, "mpmath")
         out.append(min(g(a + (b - a) * k / n) for k in range(n + 1)))
     return out
+
+
+# --------------------------------------------------------------------------- certified numerics
+def iv_eval(expr, env, dps=60):
+    """Rigorous interval enclosure of a SymPy expression (mpmath.iv, outward rounding).
+
+    env maps symbols to exact SymPy numbers (rationals, multiples of π, ...) or to (lo, hi) pairs of
+    exact numbers (then the symbol ranges over [lo, hi]). Rationals are entered as exact quotients,
+    π as iv.pi, sin/cos/tan/exp directly, sinh/cosh through exp. Nothing is rounded before the
+    interval arithmetic starts."""
+    from mpmath import iv
+
+    iv.dps = dps
+
+    def num(v):
+        v = sp.nsimplify(v)
+        if v.is_Rational:
+            return iv.mpf(int(v.p)) / int(v.q)
+        return go(v)
+
+    def go(e):
+        if e.is_Symbol:
+            v = env[e]
+            if isinstance(v, tuple):
+                lo, hi = num(v[0]), num(v[1])
+                return iv.mpf([lo.a, hi.b])
+            return num(v)
+        if e.is_Rational:
+            return iv.mpf(int(e.p)) / int(e.q)
+        if e is sp.pi:
+            return iv.pi
+        if e is sp.E:
+            return iv.exp(iv.mpf(1))
+        if e.is_Add:
+            out = iv.mpf(0)
+            for a in e.args:
+                out = out + go(a)
+            return out
+        if e.is_Mul:
+            out = iv.mpf(1)
+            for a in e.args:
+                out = out * go(a)
+            return out
+        if e.is_Pow:
+            b, x = e.args
+            if x.is_Integer:
+                n = int(x)
+                base = go(b)
+                if n >= 0:
+                    out = iv.mpf(1)
+                    for _ in range(n):
+                        out = out * base
+                    return out
+                out = iv.mpf(1)
+                for _ in range(-n):
+                    out = out * base
+                return 1 / out
+            if x == sp.Rational(1, 2):
+                return iv.sqrt(go(b))
+            raise AssertionError(f"iv_eval: exponent {x}")
+        f = e.func
+        if f in (sp.sin, sp.cos, sp.tan, sp.exp):
+            return getattr(iv, f.__name__)(go(e.args[0]))
+        if f is sp.sinh:
+            y = go(e.args[0])
+            return (iv.exp(y) - iv.exp(-y)) / 2
+        if f is sp.cosh:
+            y = go(e.args[0])
+            return (iv.exp(y) + iv.exp(-y)) / 2
+        raise AssertionError(f"iv_eval: cannot evaluate {e}")
+
+    return go(sp.sympify(expr))
+
+
+def iv_sign(expr, env, dps=60):
+    """Certified sign of expr at env: +1 or −1 (the enclosure excludes 0), else AssertionError."""
+    v = iv_eval(expr, env, dps)
+    if v.a > 0:
+        return 1
+    if v.b < 0:
+        return -1
+    raise AssertionError(f"sign not certified: enclosure {v} contains 0")
+
+
+def iv_digits(expr, env, digits=30, dps=60):
+    """The value of expr at env to `digits` significant digits, certified: both ends of the interval
+    enclosure round to the same string (AssertionError otherwise)."""
+    import mpmath
+
+    v = iv_eval(expr, env, dps)
+    lo = mpmath.nstr(mpmath.mpf(v.a), digits)
+    hi = mpmath.nstr(mpmath.mpf(v.b), digits)
+    assert lo == hi, f"not {digits} certified digits: [{lo}, {hi}]"
+    return lo
+
+
+def root_enclosure(F, x, lo, hi, env=None, dps=60):
+    """Certified: F(lo) and F(hi) have opposite signs (interval arithmetic at dps digits), so F (continuous
+    on [lo, hi]) has a root in (lo, hi). Returns (sign at lo, sign at hi)."""
+    env = dict(env or {})
+    slo = iv_sign(F, {**env, x: lo}, dps)
+    shi = iv_sign(F, {**env, x: hi}, dps)
+    assert slo * shi < 0, f"no sign change of {F} on [{lo}, {hi}]"
+    return slo, shi
+
+
+# --------------------------------------------------------------------------- total positivity
+def bernstein_matrix(N, x, d):
+    """Rows: the coefficients of N_i(x) in the Bernstein basis C(d, j) x^j (1 − x)^{d−j} of degree d on [0, 1].
+
+    A degree below d is elevated exactly (the power-to-Bernstein formula of degree d)."""
+    rows = []
+    for f in N:
+        P = sp.Poly(sp.expand(f), x)
+        assert P.degree() <= d, f"degree {P.degree()} > {d}"
+        a = [P.coeff_monomial(x**k) for k in range(d + 1)]
+        rows.append([sp.factor(sum(sp.binomial(j, k) / sp.binomial(d, k) * a[k] for k in range(j + 1))) for j in range(d + 1)])
+    return sp.Matrix(rows)
+
+
+def minors(M):
+    """All nonzero minors of M, every order (factored)."""
+    import itertools
+
+    r, c = M.shape
+    out = []
+    for k in range(1, min(r, c) + 1):
+        for I in itertools.combinations(range(r), k):
+            for J in itertools.combinations(range(c), k):
+                v = sp.factor(M.extract(list(I), list(J)).det())
+                if v != 0:
+                    out.append(v)
+    return out
+
+
+def tp_certificate_set(N, x, lam, d):
+    """Exact set of λ (closed intervals, exact algebraic ends) where every minor of the degree-d Bernstein
+    matrix of N is ≥ 0. On that set the basis N (hence b = N/(positive common factor), composed with an
+    increasing change of variable) is totally positive: its collocation matrices are the Bernstein ones
+    (TP) times M (Cauchy–Binet). Decided cell by cell between consecutive real roots of the minors."""
+    M = bernstein_matrix(N, x, d)
+    ms = minors(M)
+    crit = set()
+    for y in ms:
+        if y.has(lam):
+            crit |= set(sp.Poly(y, lam).real_roots())
+    crit = sorted(crit, key=lambda r: sp.N(r, 50))
+    if not crit:
+        ok = all(sp.sign(y) >= 0 for y in ms)
+        return ([(-sp.oo, sp.oo)] if ok else []), M
+    cells = [simplest_between(crit[0] - 1, crit[0])]
+    cells += [simplest_between(crit[i], crit[i + 1]) for i in range(len(crit) - 1)]
+    cells += [simplest_between(crit[-1], crit[-1] + 1)]
+
+    def good(v):
+        return all(_alg_sign(sp.nsimplify(y.subs(lam, v))) >= 0 if not v.is_Rational else sp.sign(y.subs(lam, v)) >= 0
+                   for y in ms)
+
+    cell_ok = [good(p) for p in cells]
+    crit_ok = [cell_ok[i] or cell_ok[i + 1] or good(r) for i, r in enumerate(crit)]
+    bounds = [-sp.oo] + crit + [sp.oo]
+    out, cur = [], None
+    for i, ok in enumerate(cell_ok):
+        if ok:
+            cur = [bounds[i], bounds[i + 1]] if cur is None else [cur[0], bounds[i + 1]]
+        elif cur is not None:
+            out.append(tuple(cur))
+            cur = None
+        if i < len(crit):
+            if crit_ok[i] and cur is None:
+                cur = [crit[i], crit[i]]
+            elif not crit_ok[i] and cur is not None:
+                out.append(tuple(cur))
+                cur = None
+    if cur is not None:
+        out.append(tuple(cur))
+    return out, M
