@@ -30,7 +30,7 @@ use crate::atoms::{param_atoms, reflect, value};
 use crate::branch::{Axis, Outcome};
 use crate::factors;
 use crate::range::simplest_between;
-use crate::transcendental::{Equation, certify_end};
+use crate::transcendental::{Equation, certify_end, vanishing_end};
 
 /// A parameter value where a function is certified negative at a point.
 #[derive(Debug, Clone, PartialEq)]
@@ -119,14 +119,38 @@ impl End {
                 ..
             } => format!("{} (exact; {why})", a.describe(symbol, 12)),
             End::Certified {
-                lo, hi, equation, ..
+                lo,
+                hi,
+                equation,
+                inside,
+                outside,
             } => {
-                let unit = if problem.pi { "·π" } else { "" };
+                let enclosure = if problem.pi {
+                    let (a, b) = times_pi(lo, hi);
+                    format!(
+                        "{symbol}/π ∈ [{}, {}], {symbol} ∈ [{}, {}]",
+                        decimal(lo, DIGITS, false),
+                        decimal(hi, DIGITS, true),
+                        decimal(&a, DIGITS, false),
+                        decimal(&b, DIGITS, true)
+                    )
+                } else {
+                    format!(
+                        "{symbol} ∈ [{}, {}]",
+                        decimal(lo, DIGITS, false),
+                        decimal(hi, DIGITS, true)
+                    )
+                };
                 format!(
-                    "the unique root of {} in [{}, {}]{unit} (certified enclosure by a Krawczyk step; the equation is transcendental and the end is not called exact; included)",
+                    "the unique root of {} with {enclosure} (certified enclosure by a Krawczyk step, transcendental or at least not found exact: not called exact; included); just inside {symbol} = {} is admissible (proved), just outside {symbol} = {} {} < 0 at {} ≈ {:.6} (its numerator in [{:.6e}, {:.6e}], certified)",
                     equation.describe(problem.domain, names),
-                    decimal(lo, 12, false),
-                    decimal(hi, 12, true)
+                    value(inside),
+                    value(&outside.param),
+                    names[outside.function],
+                    problem.domain.name,
+                    outside.x,
+                    outside.value.0,
+                    outside.value.1
                 )
             }
             End::Bracket { ok, bad, why, .. } => format!(
@@ -144,6 +168,31 @@ impl End {
             }
         }
     }
+}
+
+/// Decimal digits of a certified enclosure as printed (rounded outward).
+const DIGITS: usize = 24;
+
+/// `[lo·π, hi·π]` enclosed by rationals (π between two 256-bit floats).
+fn times_pi(lo: &Rational, hi: &Rational) -> (Rational, Rational) {
+    use rug::Float;
+    use rug::float::{Constant, Round};
+    let bound = |round| {
+        Float::with_val_round(256, Constant::Pi, round)
+            .0
+            .to_rational()
+            .expect("π is finite")
+    };
+    let (p_lo, p_hi) = (bound(Round::Down), bound(Round::Up));
+    let products = [
+        Rational::from(lo * &p_lo),
+        Rational::from(lo * &p_hi),
+        Rational::from(hi * &p_lo),
+        Rational::from(hi * &p_hi),
+    ];
+    let min = products.iter().min().cloned().unwrap_or_default();
+    let max = products.iter().max().cloned().unwrap_or_default();
+    (min, max)
 }
 
 /// `q`, or `q·π` on a π axis.
@@ -482,6 +531,10 @@ fn refine(problem: &Problem<'_>, mut ok: Rational, mut w: Witness, dir: i32) -> 
             Err(Outside::Undecided(_)) => break,
         }
     }
+    let candidates = simple_values(&ok, &w.param, problem.pi);
+    if let Some(end) = vanishing_end(problem, &ok, &w, dir, &candidates) {
+        return end;
+    }
     match certify_end(problem, &ok, &w, dir) {
         Ok(end) => end,
         Err(why) => End::Bracket {
@@ -587,6 +640,37 @@ mod tests {
                 assert!(lo.to_f64() < 4.493_409_458 && hi.to_f64() > 4.493_409_457);
                 assert!(*at_end);
                 assert_eq!(value.to_string(), "-alpha*cos(alpha) + sin(alpha)");
+            }
+            other => panic!("{other:?}"),
+        }
+    }
+
+    #[test]
+    fn quadratic_c_bezier_ends_exactly_at_pi_where_b1_vanishes() {
+        // BVP 2022 eq. (2); examples/independent/README.md C2: (0, π], b1 ≡ 0 at π
+        let d = c_curve();
+        let (sa, ca) = (v("sin(alpha)"), v("cos(alpha)"));
+        let (s, c) = (v("s"), v("c"));
+        let one = Sym::one();
+        let c_at = ca.clone() * &c + &(sa.clone() * &s);
+        let den = one.clone() - &ca;
+        let fs = [
+            (one.clone() - &c_at) / &den,
+            -((one.clone() - &c + &ca - &c_at) / &den),
+            (one.clone() - &c) / &den,
+        ];
+        let p = Problem::new(&fs, &d, true);
+        let r = maximal_range(&p, &q(1, 2), &q(0, 1), &q(2, 1));
+        assert!(matches!(r.inside, Outcome::Proved { .. }), "{:?}", r.inside);
+        match &r.hi {
+            End::Exact {
+                value,
+                closed: true,
+                outside: Some(w),
+                ..
+            } => {
+                assert_eq!(value, &ExactValue::Rational(q(1, 1)));
+                assert!(w.value.1 < 0.0 && w.param > q(1, 1));
             }
             other => panic!("{other:?}"),
         }

@@ -40,7 +40,7 @@ use trig_symbolic::Sym;
 
 use crate::algebraic::Algebraic;
 use crate::analytic_range::{End, ExactValue, Outside, Problem, Witness};
-use crate::atoms::{d_variable, param_atoms, value};
+use crate::atoms::{d_param, d_variable, param_atoms, value};
 use crate::branch::{self, Outcome};
 use crate::coordinates::{BoxFunction, Coordinates};
 use crate::factors::{self, Sign};
@@ -481,6 +481,143 @@ pub fn certify_end(
         });
     }
     Err("the conditions that make the certified root the end were not proved".into())
+}
+
+/// An exact end where a function vanishes identically: a simple value `q`
+/// strictly between `ok` and the witness's parameter (a multiple of π/12
+/// on a π axis, or the simplest rational) where some function is exactly
+/// 0 for every `x`, with every function `≥ 0` on `[ok, q]` (branch and
+/// bound) and, at a fixed point of the domain, that function strictly
+/// decreasing beyond `q` up to the witness (`dir·∂ₚf < 0` there, so
+/// `f < 0` on `(q, bad]`): `q` is the end, included.
+pub fn vanishing_end(
+    problem: &Problem<'_>,
+    ok: &Rational,
+    w: &Witness,
+    dir: i32,
+    candidates: &[Rational],
+) -> Option<End> {
+    let bad = &w.param;
+    for q in candidates {
+        let vanishing: Vec<usize> = problem
+            .functions
+            .iter()
+            .enumerate()
+            .filter(|(_, f)| {
+                exactly_at(problem, &Sym::from_poly(f.numerator().clone()), q)
+                    .is_some_and(|v| v.is_zero())
+            })
+            .map(|(j, _)| j)
+            .collect();
+        if vanishing.is_empty() {
+            continue;
+        }
+        let (lo, hi) = if q < bad { (q, bad) } else { (bad, q) };
+        let beyond = problem.axis(lo, hi, false, false);
+        let coords = Coordinates::new(problem.domain, &beyond);
+        let decreasing = vanishing.iter().find_map(|&j| {
+            let f = &problem.functions[j];
+            let num = coords.function(&Sym::from_poly(f.numerator().clone()));
+            let dp = coords.derivative(&num, 1);
+            let down = if dir > 0 { dp.negated() } else { dp };
+            // denominators of one strict sign on the bracket beyond
+            let signs: Option<Vec<Sign>> = f
+                .denominator()
+                .keys()
+                .map(|g| {
+                    factors::sign_of(&Sym::from_poly(g.clone()), problem.domain, &beyond, true)
+                        .ok()
+                        .map(|(s, _)| s)
+                })
+                .collect();
+            let negative = signs?.iter().filter(|s| **s == Sign::Minus).count() % 2 == 1;
+            let down = if negative { down.negated() } else { down };
+            [
+                w.tau.clone(),
+                Rational::from((1, 2)),
+                Rational::from((1, 3)),
+            ]
+            .into_iter()
+            .find(|tau| {
+                let cell: Cell = vec![(tau.clone(), tau.clone()), (lo.clone(), hi.clone())];
+                sign_on(&coords, &down, &cell, true, SIGN_DEPTH)
+            })
+            .map(|tau| (j, tau))
+        });
+        let Some((j, tau)) = decreasing else {
+            continue;
+        };
+        if !admissible_up_to(problem, ok, q, dir, &vanishing) {
+            continue;
+        }
+        let var = &problem.domain.name;
+        return Some(End::Exact {
+            value: ExactValue::Rational(q.clone()),
+            closed: true,
+            why: format!(
+                "a basis function (number {}) vanishes identically there and, at {var} = a + {tau}·(b − a), decreases through 0 beyond it: its derivative in the parameter is certified of one sign up to the witness",
+                j + 1
+            ),
+            inside: ok.clone(),
+            outside: Some(w.clone()),
+        });
+    }
+    None
+}
+
+/// Every function `≥ 0` for the parameter between `ok` and `q`: by branch
+/// and bound, or — for a function vanishing identically at `q` — because
+/// its numerator `N`, signed by its denominator (`σ`), does not increase
+/// towards `q` at any fixed fraction `τ` of the domain
+/// (`x = a(p) + L(p)·τ`): `−dir·σ·∂ₚ|_τ N ≥ 0`, so `σN ≥ σN(·, q) = 0`.
+/// With `∂ₚ|_τ = ∂ₚ|ₓ + (a′ + L′·τ)·∂ₓ` and `L > 0`, the sign is that of
+/// `L·∂ₚ|ₓN + (a′·L + L′·(x − a))·∂ₓN`, an exact function on the domain.
+fn admissible_up_to(
+    problem: &Problem<'_>,
+    ok: &Rational,
+    q: &Rational,
+    dir: i32,
+    vanishing: &[usize],
+) -> bool {
+    let d = problem.domain;
+    let (lo, hi) = if ok < q { (ok, q) } else { (q, ok) };
+    let axis = problem.axis(lo, hi, false, false);
+    let atoms = param_atoms(d);
+    let p: Vec<Sym> = d.param_names.iter().map(|n| Sym::var(n)).collect();
+    let a = d.start.eval(&Sym::one(), &p);
+    let length = d.end.eval(&Sym::one(), &p) - &a;
+    let da = d_param(&a, d, 0, &atoms);
+    let dl = d_param(&length, d, 0, &atoms);
+    // the variable `t` may enter the derivative along τ
+    let with_t = Domain {
+        uses_variable: true,
+        ..d.clone()
+    };
+    problem.decided().all(|(j, f)| {
+        if matches!(factors::nonnegative(f, d, &axis), Outcome::Proved { .. }) {
+            return true;
+        }
+        if !vanishing.contains(&j) {
+            return false;
+        }
+        let mut negative = dir > 0;
+        for g in f.denominator().keys() {
+            match factors::sign_of(&Sym::from_poly(g.clone()), d, &axis, true) {
+                Ok((Sign::Minus, _)) => negative = !negative,
+                Ok(_) => {}
+                Err(_) => return false,
+            }
+        }
+        let n = Sym::from_poly(f.numerator().clone());
+        let along = length.clone() * &d_param(&n, d, 0, &atoms)
+            + &((da.clone() * &length + &(dl.clone() * &(Sym::var("t") - &a)))
+                * &d_variable(&n, d));
+        let g = if negative { -along } else { along };
+        matches!(
+            factors::nonnegative(&g, &with_t, &axis),
+            Outcome::Proved { .. }
+        )
+    })
 }
 
 /// The root as an exact value, when the equation vanishes exactly at a

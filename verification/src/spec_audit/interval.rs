@@ -8,9 +8,11 @@
 
 use rug::Rational;
 use trig_certify::branch::{Axis, Outcome};
+use trig_specfile::range::End;
 use trig_specfile::{Spec, SpecRange};
 use trig_symbolic::Sym;
 
+use super::analytic;
 use crate::verdict::{Status, Verdict};
 
 /// How the interval method decides, as the report states it.
@@ -33,14 +35,14 @@ pub fn axes(spec: &Spec, range: Option<&SpecRange>) -> (Vec<Axis>, Vec<String>) 
                     (Some(a), None) => (
                         a.clone(),
                         a.clone() + TRUNCATE,
-                        matches!(r.lo, trig_specfile::range::End::Open(_)),
+                        matches!(r.lo, End::Open(_)),
                         false,
                     ),
                     (None, Some(b)) => (
                         b.clone() - TRUNCATE,
                         b.clone(),
                         false,
-                        matches!(r.hi, trig_specfile::range::End::Open(_)),
+                        matches!(r.hi, End::Open(_)),
                     ),
                     _ => (
                         Rational::from(-TRUNCATE),
@@ -252,10 +254,32 @@ pub fn maximal(spec: &Spec, range: &SpecRange) -> Verdict {
     let mut evidence = inside.evidence;
     let width = Rational::from(&ax[0].hi - &ax[0].lo);
     let step = width / 64u32;
-    for (end, outward) in [(range.lo.value(), -1), (range.hi.value(), 1)] {
+    // the maximal interval by the analytic engine (bounded printed ranges)
+    let values: Vec<Sym> = fs.iter().map(|(_, f)| f.clone()).collect();
+    let found = notes
+        .is_empty()
+        .then(|| analytic::search(spec, &values, &ax[0]));
+    if let Some(r) = &found {
+        evidence.push(analytic::describe(spec, &values, &ax[0], r));
+    }
+    let ends = [
+        (range.lo.value(), -1, matches!(range.lo, End::Open(_))),
+        (range.hi.value(), 1, matches!(range.hi, End::Open(_))),
+    ];
+    for (end, outward, open) in ends {
         let Some(v) = end else {
             continue;
         };
+        let decided = found.as_ref().and_then(|r| {
+            let proved = matches!(r.inside, Outcome::Proved { .. });
+            let e = if outward < 0 { &r.lo } else { &r.hi };
+            analytic::decide_end(v, open, outward, e, proved, range.pi)
+        });
+        if let Some(d) = decided {
+            status = Status::conjunction([status, d.status]);
+            evidence.push(d.line);
+            continue;
+        }
         let shown = value_text(v, range.pi);
         if undefined_at(spec, v, range.pi) {
             evidence.push(format!(
@@ -303,7 +327,12 @@ pub fn maximal(spec: &Spec, range: &SpecRange) -> Verdict {
             }
         }
     }
-    Verdict::new(status, INTERVAL, evidence)
+    let method = if found.is_some() {
+        format!("{INTERVAL}; {}", analytic::ANALYTIC)
+    } else {
+        INTERVAL.to_string()
+    };
+    Verdict::new(status, method, evidence)
 }
 
 /// True when some denominator factor is identically zero at `p = v` (its

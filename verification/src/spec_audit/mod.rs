@@ -11,6 +11,7 @@
 //! cubic they reproduce the built-in verdicts and evidence line for line
 //! (test `spec_thesis_cubic_matches_builtin`).
 
+mod analytic;
 mod certified;
 mod geometry;
 mod interval;
