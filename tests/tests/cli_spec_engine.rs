@@ -67,3 +67,34 @@ fn c_bspline_maximal_range_ends_at_the_root_of_tan_alpha_equals_alpha() {
     // the wider range fails with a certified negative value
     assert_eq!(claim(&cbs, "CBS-wide").0, "fails");
 }
+
+#[test]
+fn every_witness_is_a_real_point() {
+    // README C1: CBS-C3 fails, the third-derivative jump never vanishes;
+    // its witness used to read `α = 1, cos(alpha) = 0` (not a point)
+    let cbs = example("c-bspline.toml");
+    let (v, e) = claim(&cbs, "CBS-C3");
+    assert_eq!(v, "fails", "{e}");
+    assert!(e.contains(r#""name":"α","value":"1/2·π""#), "{e}");
+    assert!(!e.contains(r#""name":"cos(alpha)""#), "{e}");
+    // README B7 / C5: the plain symmetry of the exponential Bernstein
+    // functions fails; at α = 1, t = 1/2 b0 = 0.241175365473302455…, b3(α −
+    // t) = 0.053813497921914074…, enclosed (exp(1/2) is not exact)
+    let eb = example("exp-bernstein-cubic.toml");
+    let (v, e) = claim(&eb, "EB-symmetry");
+    assert_eq!(v, "fails", "{e}");
+    assert!(e.contains("a real point"), "{e}");
+    let (lo, hi) = enclosure_after(&e, "\"unicode\":\"[");
+    let b0 = Float::with_val(
+        256,
+        Float::parse("0.241175365473302455443516123523").expect("d"),
+    );
+    let b3 = Float::with_val(
+        256,
+        Float::parse("0.0538134979219140746620198001438").expect("d"),
+    );
+    assert!(
+        (lo <= b0 && b0 <= hi) || (lo <= b3 && b3 <= hi),
+        "{lo} {hi}"
+    );
+}

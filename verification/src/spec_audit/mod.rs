@@ -29,6 +29,7 @@ use trig_symbolic::Sym;
 
 use crate::budget::{bounded, within};
 use crate::exact::{identity, sum};
+use crate::real_witness::{RealPoints, with_real_points};
 use crate::report::{Document, Entry};
 use crate::verdict::Verdict;
 
@@ -66,6 +67,17 @@ pub fn audit(spec: &Spec) -> Vec<Entry> {
     audit_within(spec, None)
 }
 
+/// The real points of the basis for its witnesses: the domain and the
+/// declared parameter sets (unbounded ones truncated as for the interval
+/// engine).
+fn real_points(spec: &Spec) -> RealPoints {
+    RealPoints {
+        domain: spec.domain.clone(),
+        axes: interval::axes(spec, None).0,
+        symbols: spec.params.iter().map(|p| p.symbol.clone()).collect(),
+    }
+}
+
 /// A decision of the audit, run on the spec.
 type Decision<T> = Box<dyn FnOnce(&Spec) -> T + Send>;
 
@@ -75,6 +87,9 @@ pub fn audit_within(spec: &Spec, budget: Option<Duration>) -> Vec<Entry> {
     let doc = document(spec);
     let shared = Arc::new(spec.clone());
     let run = |f: Decision<Verdict>| -> Verdict {
+        // every witness at a real point of the basis
+        let f: Decision<Verdict> =
+            Box::new(move |s: &Spec| with_real_points(real_points(s), || f(s)));
         match budget {
             None => f(spec),
             Some(limit) => {
@@ -97,11 +112,13 @@ pub fn audit_within(spec: &Spec, budget: Option<Duration>) -> Vec<Entry> {
         .map(|f| f.name.as_str())
         .collect::<Vec<_>>()
         .join(", ");
+    let symmetry_at_real_points =
+        |s: &Spec| with_real_points(real_points(s), || geometry::battery_symmetry(s));
     let (symmetry_text, symmetry) = match budget {
-        None => geometry::battery_symmetry(spec),
+        None => symmetry_at_real_points(spec),
         Some(limit) => {
             let s = Arc::clone(&shared);
-            bounded(limit, move || geometry::battery_symmetry(&s)).unwrap_or_else(|why| {
+            bounded(limit, move || symmetry_at_real_points(&s)).unwrap_or_else(|why| {
                 (
                     "symmetry of the functions".into(),
                     Verdict::not_checkable(why),
