@@ -28,6 +28,7 @@ pub mod coordinates;
 pub mod domain;
 pub mod elementary;
 pub mod enclosure;
+pub mod exp_half_line;
 pub mod factors;
 pub mod krawczyk;
 pub mod nonneg;

@@ -130,6 +130,70 @@ pub fn check(d: &Sym, domain: &Domain, params: &[(String, SpecRange)]) -> Result
     Ok(())
 }
 
+/// True when `n` is a polynomial in `y = exp(p)` alone, `p` a parameter,
+/// with no root for `y` in the image of `p`'s range (bounded or not):
+/// `(0, ∞)` maps onto `(1, ∞)`, a finite end `q ≠ 0` onto a rational
+/// bound of `exp(q)` rounded outward (a larger set, so no root there is a
+/// proof); Sturm sequences count the roots, `∞` replaced by the roots'
+/// bound.
+fn exp_polynomial_nonzero(n: &Sym, params: &[(String, SpecRange)]) -> bool {
+    use crate::range::End;
+    use rug::Float;
+    use rug::float::Round;
+    use trig_certify::sturm::UPoly;
+    let vars = n.variables();
+    let [v] = vars.iter().collect::<Vec<_>>()[..] else {
+        return false;
+    };
+    let Some((_, r)) = params.iter().find(|(name, _)| *v == format!("exp({name})")) else {
+        return false;
+    };
+    let Some(p) = UPoly::from_poly(n.numerator(), v) else {
+        return false;
+    };
+    if r.pi || p.is_zero() {
+        return false;
+    }
+    // the image of an end: (value, open); exp(0) = 1 exactly
+    let image = |q: &Rational, open: bool, up: bool| -> Option<(Rational, bool)> {
+        if *q == 0 {
+            return Some((Rational::from(1), open));
+        }
+        // exp(q) rounded outward: q rounded the same way first
+        let round = if up { Round::Up } else { Round::Down };
+        let mut x = Float::with_val_round(256, q, round).0;
+        x.exp_round(round);
+        x.to_rational().map(|v| (v, false))
+    };
+    let (lo, lo_open) = match &r.lo {
+        End::Unbounded => (Rational::new(), true),
+        End::Closed(q) => match image(q, false, false) {
+            Some(x) => x,
+            None => return false,
+        },
+        End::Open(q) => match image(q, true, false) {
+            Some(x) => x,
+            None => return false,
+        },
+    };
+    let (hi, hi_open) = match &r.hi {
+        End::Unbounded => (p.root_bound() + Rational::from(1), true),
+        End::Closed(q) => match image(q, false, true) {
+            Some(x) => x,
+            None => return false,
+        },
+        End::Open(q) => match image(q, true, true) {
+            Some(x) => x,
+            None => return false,
+        },
+    };
+    // roots in (lo, hi], then the ends
+    let inside = p.count_roots(&lo, &hi);
+    let hi_root = usize::from(p.sign_at(&hi) == 0);
+    let interior = inside - hi_root;
+    interior == 0 && (lo_open || p.sign_at(&lo) != 0) && (hi_open || p.sign_at(&hi) != 0)
+}
+
 /// `Ok` when the factor `n` of the divisor `d` cannot vanish.
 fn check_factor(
     d: &Sym,
@@ -138,6 +202,9 @@ fn check_factor(
     params: &[(String, SpecRange)],
 ) -> Result<(), String> {
     if n.numerator().len() == 1 && n.variables().iter().all(|v| positive_atom(v)) {
+        return Ok(());
+    }
+    if exp_polynomial_nonzero(n, params) {
         return Ok(());
     }
     let pi_range = params
@@ -195,6 +262,35 @@ mod tests {
 
     fn range(text: &str) -> SpecRange {
         SpecRange::parse(text).unwrap()
+    }
+
+    #[test]
+    fn exponential_divisors_on_half_lines() {
+        // exp(α) − 1 (the EB normaliser) and (exp α − 1)² (2 cosh α − 2 times
+        // exp α) do not vanish for α ∈ (0, ∞); exp(α) − 2 vanishes at ln 2
+        let y = Sym::var("exp(alpha)");
+        let one = Sym::one();
+        let half_line = [("alpha".to_string(), range("(0, inf)"))];
+        assert!(exp_polynomial_nonzero(&(y.clone() - &one), &half_line));
+        let sq = (y.clone() - &one) * &(y.clone() - &one);
+        assert!(exp_polynomial_nonzero(&sq, &half_line));
+        assert!(!exp_polynomial_nonzero(
+            &(y.clone() - &Sym::int(2)),
+            &half_line
+        ));
+        // closed at 0: exp(0) − 1 = 0
+        let closed = [("alpha".to_string(), range("[0, inf)"))];
+        assert!(!exp_polynomial_nonzero(&(y.clone() - &one), &closed));
+        // [1, 2]: exp α ∈ [e, e²] ∌ 2 (bounds rounded outward)
+        let bounded = [("alpha".to_string(), range("[1, 2]"))];
+        assert!(exp_polynomial_nonzero(
+            &(y.clone() - &Sym::int(2)),
+            &bounded
+        ));
+        assert!(!exp_polynomial_nonzero(
+            &(y.clone() - &Sym::int(5)),
+            &bounded
+        ));
     }
 
     #[test]

@@ -122,6 +122,9 @@ pub fn all_nonnegative(
     axes: &[Axis],
     notes: &[String],
 ) -> Verdict {
+    if let Some(v) = on_half_line(spec, fs, axes, notes) {
+        return v;
+    }
     let mut status = Status::Holds;
     let mut evidence: Vec<String> = notes.to_vec();
     let mut done: Vec<Option<Status>> = vec![None; fs.len()];
@@ -171,6 +174,40 @@ pub fn all_nonnegative(
         status = Status::NotCheckable;
     }
     Verdict::new(status, INTERVAL, evidence)
+}
+
+/// How an unbounded range of an exponential basis is decided.
+const HALF_LINE: &str = "certified for every parameter of the unbounded range: on [0, p] the atoms y = exp(κx), Y = exp(κp) satisfy 1 ≤ y ≤ Y; with y = 1 + u, Y = 1 + u + v (u, v ≥ 0) every factor of odd multiplicity has coefficients of one sign in u, v (exact rational arithmetic)";
+
+/// Every function `≥ 0` for a range unbounded above (the interval engine
+/// would only search a truncation of it), by the positive-coefficient
+/// certificate of [`trig_certify::exp_half_line`]; `None` when it does not
+/// decide every function.
+fn on_half_line(
+    spec: &Spec,
+    fs: &[(String, Sym)],
+    axes: &[Axis],
+    notes: &[String],
+) -> Option<Verdict> {
+    let [axis] = axes else {
+        return None;
+    };
+    let unbounded_above = spec.params[0].range.lo.value().is_some() && !notes.is_empty();
+    if !unbounded_above || axis.pi {
+        return None;
+    }
+    let evidence: Vec<String> = fs
+        .iter()
+        .map(|(name, f)| {
+            trig_certify::exp_half_line::nonnegative(f, &spec.domain, &axis.lo).map(|_| {
+                format!(
+                    "{name} ≥ 0: certified for every {} in {} (positive coefficients in u, v)",
+                    spec.params[0].symbol, spec.params[0].range
+                )
+            })
+        })
+        .collect::<Option<_>>()?;
+    Some(Verdict::new(Status::Holds, HALF_LINE, evidence))
 }
 
 /// [`nonnegative`], remembered across the claims of one run (the battery
