@@ -4,8 +4,27 @@
 //! Expected values are derived independently of the project in
 //! `examples/independent/README.md`, Part C (cited per test).
 
+use std::path::PathBuf;
+
 use rug::Float;
 use trig_e2e::{example, stdout_ok};
+
+/// A shipped example with `from` replaced by `to` (a narrower or wider
+/// range), written for one test.
+fn variant(name: &str, from: &str, to: &str) -> String {
+    let text = std::fs::read_to_string(example(name)).expect("read example");
+    assert!(text.contains(from), "{from:?} not in {name}");
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cli_spec_engine");
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let path = dir.join(format!("variant-{name}"));
+    std::fs::write(&path, text.replacen(from, to, 1)).expect("write spec");
+    path.display().to_string()
+}
+
+/// The verdict of one claim.
+fn verdict(path: &str, id: &str) -> String {
+    claim(path, id).0
+}
 
 /// The verdict and evidence of one claim of a spec file.
 fn claim(path: &str, id: &str) -> (String, String) {
@@ -97,4 +116,120 @@ fn every_witness_is_a_real_point() {
         (lo <= b0 && b0 <= hi) || (lo <= b3 && b3 <= hi),
         "{lo} {hi}"
     );
+}
+
+#[test]
+fn c_bezier_quadratic_and_cubic_maximal_ranges() {
+    // README C2: quadratic maximal exactly (0, π], closed at π where b1 ≡ 0;
+    // (0, 3π/2] fails (b1 < 0 just beyond π)
+    let cq = example("c-bezier-quadratic.toml");
+    let (v, e) = claim(&cq, "CQ-maximal");
+    assert_eq!(v, "holds", "{e}");
+    assert!(e.contains("upper end α = 1·π exactly (included"), "{e}");
+    let (v, e) = claim(&cq, "CQ-wide");
+    assert_eq!(v, "fails", "{e}");
+    assert!(e.contains("b1 ≥ 0: violated"), "{e}");
+    // a narrower printed range read as maximal fails: the end is π, not 3π/4
+    let narrow = variant(
+        "c-bezier-quadratic.toml",
+        "range = \"(0, pi]\"",
+        "range = \"(0, 3*pi/4]\"",
+    );
+    let (v, e) = claim(&narrow, "CQ-maximal");
+    assert_eq!(v, "fails", "{e}");
+    assert!(e.contains("to the exact end 1·π"), "{e}");
+    // README B1/C2: cubic maximal exactly (0, 2π), 2π excluded (not defined)
+    let cb = example("c-bezier-cubic.toml");
+    assert_eq!(verdict(&cb, "CB-nonnegative"), "holds");
+    let (v, e) = claim(&cb, "CB-maximal");
+    assert_eq!(v, "fails", "{e}");
+    assert!(e.contains("upper end α = 2·π exactly (excluded"), "{e}");
+    let c2p = example("c-bezier-cubic-2pi.toml");
+    assert_eq!(verdict(&c2p, "C2P-maximal"), "holds");
+}
+
+#[test]
+fn hyperbolic_and_exponential_bases_on_a_half_line() {
+    // README C3: quadratic H-Bézier nonnegative for every α > 0 (maximal
+    // (0, ∞)); the file with divisor cosh α − 1 on (0, ∞) loads
+    let hq = example("h-bezier-quadratic.toml");
+    let (v, e) = claim(&hq, "HQ2-maximal");
+    assert_eq!(v, "holds", "{e}");
+    assert!(e.contains("certified for every α in (0, +inf)"), "{e}");
+    assert_eq!(verdict(&hq, "HQ2-hull"), "holds");
+    // read as maximal, the bounded range (0, 3] fails: admissible beyond 3
+    let hq3 = variant(
+        "h-bezier-quadratic.toml",
+        "range = \"(0, inf)\"",
+        "range = \"(0, 3]\"",
+    );
+    let (v, e) = claim(&hq3, "HQ2-maximal");
+    assert_eq!(v, "fails", "{e}");
+    assert!(e.contains("not maximal"), "{e}");
+    // README B2: the cubic H-Bézier basis too (its battery: ≥ 0 on the
+    // declared (0, 3], not maximal there)
+    let (v, e) = claim(&example("h-bezier-cubic.toml"), "nonnegativity");
+    assert_eq!(v, "fails", "{e}");
+    assert!(
+        e.contains("b1 ≥ 0: certified") && e.contains("not maximal"),
+        "{e}"
+    );
+    // README C5: exponential Bernstein on (0, ∞): maximal holds, the plain
+    // symmetry fails; on (0, 3] read as maximal it fails
+    let ebm = example("exp-bernstein-maximal.toml");
+    assert_eq!(verdict(&ebm, "EBM-maximal"), "holds");
+    assert_eq!(verdict(&ebm, "EBM-symmetry"), "fails");
+    let eb3 = variant(
+        "exp-bernstein-maximal.toml",
+        "range = \"(0, inf)\"",
+        "range = \"(0, 3]\"",
+    );
+    assert_eq!(verdict(&eb3, "EBM-maximal"), "fails");
+}
+
+#[test]
+fn trigonometric_bernstein_quartic_ends_exactly_at_pi() {
+    // README C4: maximal exactly (0, π] (b1 ≡ b3 ≡ 0 at π); (0, 3π/2] fails
+    let tb = example("trig-bernstein-quartic.toml");
+    let (v, e) = claim(&tb, "TB4-maximal");
+    assert_eq!(v, "holds", "{e}");
+    assert!(e.contains("upper end α = 1·π exactly (included"), "{e}");
+    let (v, e) = claim(&tb, "TB4-wide");
+    assert_eq!(v, "fails", "{e}");
+    assert!(e.contains("b1 ≥ 0: violated"), "{e}");
+}
+
+#[test]
+fn half_angle_basis_lower_end_is_certified_at_minus_sqrt_of_one_plus_half_sqrt_two() {
+    // README C6: maximal [−√(1 + √2/2), 1] (−1.306562964876376…); the
+    // printed [−1, 1] is not maximal; [−3/2, 1] fails
+    let hal = example("half-angle-lambda.toml");
+    assert_eq!(verdict(&hal, "HAL-nonnegative"), "holds");
+    let (v, e) = claim(&hal, "HAL-maximal");
+    assert_eq!(v, "fails", "{e}");
+    let (lo, hi) = enclosure_after(&e, "λ ∈ [");
+    let end = Float::with_val(
+        256,
+        Float::parse("-1.306562964876376527856643173427").expect("d"),
+    );
+    assert!(lo <= end && end <= hi, "{lo} {hi}");
+    assert!(e.contains("upper end λ = 1 exactly (included"), "{e}");
+    assert!(e.contains("the printed end 1 is the exact end"), "{e}");
+    assert_eq!(verdict(&hal, "HAL-wide"), "fails");
+}
+
+#[test]
+fn squares_have_exact_ends() {
+    // README C7: maximal exactly [−1, 2 + 2√2] (≈ 4.828427124746); the
+    // printed [−1, 1] is not maximal, [−1, 5] fails
+    let sq = example("squares-han.toml");
+    assert_eq!(verdict(&sq, "SQ-nonnegative"), "holds");
+    let (v, e) = claim(&sq, "SQ-maximal");
+    assert_eq!(v, "fails", "{e}");
+    assert!(e.contains("exact end -1 (rational, included)"), "{e}");
+    assert!(
+        e.contains("in [4.828427124746, 4.828427124747]") && e.contains("(irrational, included)"),
+        "{e}"
+    );
+    assert_eq!(verdict(&sq, "SQ-wide"), "fails");
 }
