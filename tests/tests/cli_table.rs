@@ -192,7 +192,7 @@ fn latex_tables_compile() {
     ] {
         let tex = stdout_ok(&[args, &["--format", "tex"]].concat());
         assert!(tex.starts_with("\\documentclass") && tex.ends_with("\\end{document}\n"));
-        match trig_verification::report::latex::compile(&tex, &format!("table-{name}")) {
+        match trig_tex::compile(&tex, &format!("table-{name}")) {
             Some(log) => {
                 assert!(log.errors.is_empty(), "{name}: {:#?}", log.errors);
                 assert_eq!(log.overfull, 0, "{name}: {:#?}", log.overfull_lines);

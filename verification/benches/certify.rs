@@ -7,6 +7,7 @@ use std::hint::black_box;
 use std::path::PathBuf;
 
 use criterion::{Criterion, criterion_group, criterion_main};
+use trig_certify::ParamBox;
 use trig_certify::range::maximal_range;
 use trig_specfile::Spec;
 use trig_symbolic::Sym;
@@ -39,7 +40,7 @@ fn region_of(c: &mut Criterion, file: &str, label: &str, window: bool) {
         [0, 1].map(|k| Axis {
             name: &spec.params[k].name,
             symbol: &spec.params[k].symbol,
-            set: spec.params[k].range.to_box(),
+            set: ParamBox::from_range(&spec.params[k].range),
             source: &spec.params[k].source,
         })
     };

@@ -19,9 +19,9 @@ use std::ops::Deref;
 
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
-use trig_symbolic::{Sym, sympy_symbols};
+use trig_symbolic::{Style, Sym, sympy_symbols};
 
-use crate::verdict::Status;
+use crate::status::Status;
 
 /// An exact expression in every form.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
@@ -183,47 +183,6 @@ impl Expr {
         match &self.factored {
             Some(f) if f.unicode.chars().count() <= self.unicode.chars().count() => &f.sympy,
             _ => &self.sympy,
-        }
-    }
-}
-
-/// The four text forms, for printing combinations.
-#[derive(Clone, Copy, PartialEq, Eq)]
-enum Style {
-    Unicode,
-    Latex,
-    Sympy,
-    Plain,
-}
-
-impl Style {
-    fn sym(self, x: &Sym) -> String {
-        match self {
-            Style::Unicode => x.to_unicode(),
-            Style::Latex => x.to_latex(),
-            Style::Sympy => x.to_sympy(),
-            Style::Plain => x.to_string(),
-        }
-    }
-
-    fn factored(self, f: &trig_symbolic::FactoredQuotient) -> String {
-        match self {
-            Style::Unicode => f.to_unicode(),
-            Style::Latex => f.to_latex(),
-            Style::Sympy => f.to_sympy(),
-            Style::Plain => f.to_plain(),
-        }
-    }
-
-    fn minus(self) -> &'static str {
-        if self == Style::Unicode { "−" } else { "-" }
-    }
-
-    fn times(self) -> &'static str {
-        match self {
-            Style::Unicode => "·",
-            Style::Latex => " ",
-            Style::Sympy | Style::Plain => "*",
         }
     }
 }

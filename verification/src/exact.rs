@@ -4,12 +4,13 @@
 //! of truth); identities are decided by the exact zero test, and a failure is
 //! shown by its exact residual.
 
-use trig_core::{Atoms, Family};
+use trig_core::{Atoms, Basis, Family};
 use trig_deriv::End;
 use trig_symbolic::{Sym, symbolic_atoms};
 
 use crate::evidence::{Evidence, Expr, Kind};
-use crate::verdict::{Status, Verdict};
+use crate::status::Status;
+use crate::verdict::Verdict;
 use crate::witness;
 
 /// How identities are decided, as the report states it.
@@ -25,6 +26,14 @@ pub fn basis(family: Family) -> Vec<Sym> {
 /// The same at given atoms.
 pub fn basis_at(family: Family, atoms: &Atoms<Sym>) -> Vec<Sym> {
     family.eval(atoms, &params(family))
+}
+
+/// Every function of any basis with its parameters as symbols, at the
+/// symbolic atoms (the same as [`basis`] for a catalog family, the exact
+/// formulas of a spec file).
+pub fn basis_of<B: Basis>(b: &B) -> Vec<Sym> {
+    let params: Vec<Sym> = b.param_names().iter().map(|p| Sym::var(p)).collect();
+    b.eval(&symbolic_atoms(), &params)
 }
 
 /// The family's parameters as symbols.

@@ -14,7 +14,7 @@ pub mod continuity;
 pub mod evidence;
 pub mod exact;
 pub mod figures;
-pub mod joins;
+pub mod judge;
 pub mod minimum;
 pub mod numeric;
 pub mod parallel;
@@ -22,12 +22,14 @@ pub mod real_witness;
 pub mod region_audit;
 pub mod report;
 pub mod spec_audit;
+pub mod status;
 pub mod verdict;
 pub mod witness;
 
 pub use claim::{Claim, Seed};
 pub use evidence::{Evidence, EvidenceList, Expr, Witness};
-pub use verdict::{Status, Verdict};
+pub use status::Status;
+pub use verdict::Verdict;
 
 /// Every claim the audit decides, in report order.
 pub fn all_claims() -> Vec<Claim> {

@@ -47,11 +47,7 @@ pub fn counterexample_item(
             .map(|(n, v)| Assignment {
                 name: n.clone(),
                 value: v.clone(),
-                latex: format!(
-                    "{} = {}",
-                    crate::report::to_math(n),
-                    crate::report::to_math(v)
-                ),
+                latex: format!("{} = {}", trig_tex::math(n), trig_tex::math(v)),
             })
             .collect(),
         note: Some(format!(

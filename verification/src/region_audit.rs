@@ -24,7 +24,8 @@ use trig_symbolic::Sym;
 
 use crate::certify::evidence::{MAXIMAL, Published, maximal_against, nonnegative_on_box_named};
 use crate::evidence::EvidenceList;
-use crate::verdict::{Status, Verdict};
+use crate::status::Status;
+use crate::verdict::Verdict;
 
 /// One parameter of the claim: name, printed symbol, printed set, source.
 #[derive(Debug, Clone)]

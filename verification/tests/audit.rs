@@ -222,10 +222,10 @@ fn the_json_report_validates_against_the_published_schema() {
 #[test]
 fn the_latex_report_maps_every_character_and_compiles() {
     let tex = report::tex(outcomes());
-    assert!(report::latex::unmapped(&tex).is_empty());
+    assert!(trig_tex::unmapped(&tex).is_empty());
     assert!(tex.is_ascii(), "every character mapped to ASCII LaTeX");
     assert!(!tex.contains("[U+"), "no unmapped character");
-    match trig_verification::report::latex::compile(&tex, "report") {
+    match trig_tex::compile(&tex, "report") {
         Some(log) => {
             assert!(log.errors.is_empty(), "pdflatex errors: {:#?}", log.errors);
             assert!(

@@ -70,7 +70,10 @@ fn seed004_join_and_interpolation_verdicts() {
     let e14 = verdict("E14");
     assert_eq!(e14.status, Status::Fails);
     assert!(has(&e14, "-P1 + P3"));
-    assert_eq!(e14.correction.as_deref(), Some("derived: Q0 = P1, Q2 = P3"));
+    assert_eq!(
+        e14.correction.as_deref(),
+        Some("use the derived formula: Q₀ = P₁; Q₂ = P₃")
+    );
     assert_eq!(verdict("E15").status, Status::NotCheckable);
     assert_eq!(verdict("E15b").status, Status::Fails);
     assert_eq!(verdict("E16").status, Status::Fails);

@@ -86,3 +86,103 @@ fn literature_example_audits() {
         "every entry has evidence"
     );
 }
+
+/// The thesis cubic's spec file on the range the thesis revises to after
+/// (4.7), `m ∈ (−2, 1]` (T39), with `claims` appended.
+fn thesis_cubic_with(claims: &str) -> Spec {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../examples/thesis-cubic.toml");
+    let text = std::fs::read_to_string(path).expect("read").replacen(
+        "range = \"[-2, 1]\"",
+        "range = \"(-2, 1]\"",
+        1,
+    );
+    Spec::from_str_named(&format!("{text}\n{claims}"), "thesis-cubic-joins.toml")
+        .unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// A printed join in a spec file gets the catalog's judge: the sign typo
+/// of (4.7) is named as for T13 (in the file's names: its first segment
+/// has `m1`, the thesis's first curve `m2`; `Q1` is the thesis's `P5`),
+/// and the corrected print holds.
+#[test]
+fn a_printed_join_with_a_sign_typo_gets_the_catalog_verdict() {
+    let typo = "Q1 = ((m1 + 2)*P3 - (m2 + 2)*P3 - (m1 + 2)*P2)/(m2 + 2)";
+    let claim = |id: &str, formula: &str| {
+        format!(
+            "[[claims]]\nid = \"{id}\"\nsource = \"(4.7)\"\nstatement = \"C1, different m\"\ncheck = \"join\"\njoin = \"C1\"\nwrt = \"angle\"\ndifferent = true\nconditions = [\"{formula}\"]\n"
+        )
+    };
+    let fixed = typo.replacen("- (m2 + 2)*P3", "+ (m2 + 2)*P3", 1);
+    let spec = thesis_cubic_with(&(claim("typo", typo) + &claim("fixed", &fixed)));
+    let entries = spec_audit::audit(&spec);
+    let builtin = &run(None, Some("T13"))[0].verdict;
+    let s = &entry(&entries, "typo").verdict;
+    assert_eq!(s.status, builtin.status);
+    assert_eq!(s.status, Status::HoldsAfterCorrection);
+    // the catalog's correction in the file's names: m₁ ↔ m₂, P₅ ↦ Q₁
+    let renamed = builtin
+        .correction
+        .as_deref()
+        .expect("a correction")
+        .replace("m₁", "m_")
+        .replace("m₂", "m₁")
+        .replace("m_", "m₂")
+        .replace("P₅", "Q₁");
+    assert_eq!(s.correction.as_deref(), Some(renamed.as_str()));
+    assert_eq!(entry(&entries, "fixed").verdict.status, Status::Holds);
+}
+
+/// A printed join that holds only with derivatives in `u`: a G² formula
+/// derived in `u` is named as such, by the catalog judge and by the spec
+/// file's alike; in the angle convention it fails.
+#[test]
+fn a_printed_join_in_another_convention_gets_the_catalog_verdict() {
+    use trig_core::Family;
+    use trig_deriv::{JoinKind, JoinSetup, Wrt, solve_join};
+    use trig_symbolic::Sym;
+    use trig_verification::judge::join::{Printed, PrintedJoin, audit};
+    let sym = |n: &str| Sym::var(n);
+    let (p, q): (Vec<Sym>, Vec<Sym>) = (
+        (0..4).map(|i| sym(&format!("P{i}"))).collect(),
+        (0..4).map(|i| sym(&format!("Q{i}"))).collect(),
+    );
+    let m = vec![sym("m")];
+    let setup = JoinSetup {
+        basis: Family::ThesisCubic,
+        first_params: &m,
+        second_params: &m,
+        wrt: Wrt::U,
+        h: (Sym::one(), Sym::one()),
+        factors: trig_deriv::default_factors(),
+    };
+    let solved = solve_join(&setup, JoinKind::G2, &p, &q).expect("a G2 join");
+    let q2 = solved
+        .forced
+        .iter()
+        .find(|f| f.index == 2)
+        .expect("Q2 forced");
+    let in_u = vec![
+        Printed::new(0, vec![p[3].clone()]),
+        Printed::new(2, vec![q2.value.clone()]),
+    ];
+    // the catalog judge
+    let catalog = audit(&PrintedJoin::new(
+        Family::ThesisCubic,
+        JoinKind::G2,
+        (m.clone(), m.clone()),
+        (p.clone(), q.clone()),
+        in_u,
+    ));
+    assert_eq!(catalog.status, Status::HoldsAfterCorrection, "{catalog:?}");
+    let correction = catalog.correction.clone().expect("a correction");
+    assert!(correction.contains("with respect to u"), "{correction}");
+    // the same print in a spec file
+    let formula = q2.value.to_string();
+    let spec = thesis_cubic_with(&format!(
+        "[[claims]]\nid = \"G2-u\"\nsource = \"derived in u\"\nstatement = \"G2 in u\"\ncheck = \"join\"\njoin = \"G2\"\nwrt = \"angle\"\nconditions = [\"Q0 = P3\", \"Q2 = {formula}\"]\n"
+    ));
+    let entries = spec_audit::audit(&spec);
+    let s = &entry(&entries, "G2-u").verdict;
+    assert_eq!(s.status, catalog.status, "{s:?}");
+    assert_eq!(s.correction.as_deref(), Some(correction.as_str()));
+}

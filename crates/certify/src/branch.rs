@@ -34,7 +34,7 @@ use std::cell::RefCell;
 use std::rc::Rc;
 
 use rug::Rational;
-use trig_core::{Affine, Domain, Interval};
+use trig_core::{Affine, Domain, End, Interval, ParamRange};
 use trig_symbolic::Sym;
 
 pub use crate::coordinates::Axis;
@@ -54,6 +54,19 @@ const ATTEMPT: usize = 3_000;
 /// Most subdivisions of one face argument below the box it starts on (the
 /// outer search splits further and tries again).
 const ATTEMPT_DEPTH: usize = 10;
+
+impl Axis {
+    /// A published range as an axis, when it is bounded.
+    pub fn from_range(r: &ParamRange) -> Option<Axis> {
+        Some(Axis {
+            lo: r.lo.value()?.clone(),
+            hi: r.hi.value()?.clone(),
+            lo_open: matches!(r.lo, End::Open(_)),
+            hi_open: matches!(r.hi, End::Open(_)),
+            pi: r.pi,
+        })
+    }
+}
 
 /// The decision about one sign question.
 #[derive(Debug, Clone, PartialEq)]

@@ -13,6 +13,7 @@
 use std::fmt;
 
 use rug::Rational;
+use trig_core::{End, ParamRange};
 use trig_symbolic::Sym;
 
 use crate::bernstein::Excluded;
@@ -48,6 +49,28 @@ pub struct ParamBox {
 }
 
 impl ParamBox {
+    /// A published range as a parameter set of the Bernstein engine
+    /// (rational ends). A range in multiples of π has none: the interval
+    /// engine takes it ([`crate::branch::Axis::from_range`]); here its
+    /// ends are rounded outward to rationals (`π < 3.1416`), for
+    /// containment proofs only.
+    pub fn from_range(r: &ParamRange) -> ParamBox {
+        let pi = if r.pi {
+            Rational::from((31_416, 10_000))
+        } else {
+            Rational::from(1)
+        };
+        let bound = |e: &End| match e {
+            End::Closed(q) => Bound::Closed(Rational::from(q * &pi)),
+            End::Open(q) => Bound::Open(Rational::from(q * &pi)),
+            End::Unbounded => Bound::Infinite,
+        };
+        ParamBox {
+            lo: bound(&r.lo),
+            hi: bound(&r.hi),
+        }
+    }
+
     /// `[a, b]`.
     pub fn closed(a: Rational, b: Rational) -> ParamBox {
         ParamBox {

@@ -1,7 +1,8 @@
 //! Table cells: how exact and numeric values print in each output format.
 
 use trig_core::Decimal;
-use trig_symbolic::Sym;
+use trig_symbolic::{Style, Sym};
+use trig_tex::expr::number;
 
 /// A value that can stand in a table.
 pub trait Cell {
@@ -39,26 +40,25 @@ impl Cell for Sym {
         let Some(terms) = self.linear_in(vars) else {
             return Rendered::of(self);
         };
-        let join = |f: &dyn Fn(&Sym) -> String, var: &dyn Fn(&Sym) -> String, dot: &str| {
+        let join = |style: Style| {
             terms
                 .iter()
-                .map(|(v, coef)| format!("({}){dot}{}", f(coef), var(&Sym::var(v))))
+                .map(|(v, coef)| {
+                    format!(
+                        "({}){}{}",
+                        style.sym(coef),
+                        style.times(),
+                        style.sym(&Sym::var(v))
+                    )
+                })
                 .collect::<Vec<_>>()
                 .join(" + ")
         };
         Rendered {
-            text: join(&|c| c.to_string(), &|v| v.to_string(), "*"),
-            unicode: join(&|c| c.to_unicode(), &|v| v.to_unicode(), "·"),
-            latex: join(&|c| c.to_latex(), &|v| v.to_latex(), " "),
+            text: join(Style::Plain),
+            unicode: join(Style::Unicode),
+            latex: join(Style::Latex),
         }
-    }
-}
-
-/// `1.5e-3` → `1.5 \times 10^{-3}`.
-fn latex_number(s: &str) -> String {
-    match s.split_once('e') {
-        Some((m, e)) => format!("{m} \\times 10^{{{e}}}"),
-        None => s.to_string(),
     }
 }
 
@@ -68,17 +68,17 @@ impl Rendered {
         Rendered {
             text: text.to_string(),
             unicode: text.to_string(),
-            latex: latex_number(text),
+            latex: number(text),
         }
     }
 
     /// What an enclosure proves: digits, `0 ± bound`, or an enclosure.
     pub fn decimal(d: &Decimal) -> Self {
         let latex = match d {
-            Decimal::Digits { text, .. } => latex_number(text),
-            Decimal::Small { bound } => format!("0 \\pm {}", latex_number(bound)),
-            Decimal::Range { lo, hi } => format!("[{}, {}]", latex_number(lo), latex_number(hi)),
-            Decimal::Undefined(_) => format!("\\text{{{d}}}"),
+            Decimal::Digits { text, .. } => number(text),
+            Decimal::Small { bound } => format!("0 \\pm {}", number(bound)),
+            Decimal::Range { lo, hi } => format!("[{}, {}]", number(lo), number(hi)),
+            Decimal::Undefined(_) => format!("\\text{{{}}}", trig_tex::text(&d.to_string())),
         };
         Rendered {
             text: d.to_string(),

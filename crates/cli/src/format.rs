@@ -1,6 +1,13 @@
 //! Output formats shared by the commands.
 
+use std::fmt::Write;
+
 use clap::ValueEnum;
+use trig_tex::expr::inline_fractions;
+use trig_tex::{Column, LongTable, column_name, document, inline_math, prose};
+
+use crate::cell::Block;
+use crate::commands::CliError;
 
 /// Plain text for people, JSON for machines.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -15,11 +22,6 @@ pub fn json(value: &serde_json::Value) -> String {
     s.push('\n');
     s
 }
-
-use std::fmt::Write;
-
-use crate::cell::Block;
-use crate::commands::CliError;
 
 /// Table formats for papers and programs.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -115,10 +117,8 @@ const TEX_WIDE: usize = 90;
 /// fit the line keeps its rows and columns; a wider one is set one entry
 /// per line (row, column, value), the value wrapping at its operators.
 fn tex_document(heading: &str, blocks: &[Block]) -> String {
-    use trig_verification::report::latex::{preamble, tex_inline};
-    let mut out = String::from(preamble());
-    out.push_str("\\begin{document}\n");
-    let _ = writeln!(out, "\\section*{{{}}}\n", tex_inline(heading));
+    let mut out = String::new();
+    let _ = writeln!(out, "\\section*{{{}}}\n", prose(heading));
     for b in blocks {
         let width = |s: &str| s.chars().count();
         let widest = |k: usize| {
@@ -138,129 +138,40 @@ fn tex_document(heading: &str, blocks: &[Block]) -> String {
             .max()
             .unwrap_or(0);
         let total = labels + (0..b.columns.len()).map(widest).sum::<usize>() + 3 * b.columns.len();
-        let caption = format!("\\caption{{{}}}\\\\", tex_inline(&b.title));
-        if total <= TEX_WIDE {
-            let _ = writeln!(
-                out,
-                "\\begin{{longtable}}{{l{}}}\n{caption}\n\\hline",
-                "l".repeat(b.columns.len())
-            );
-            let headers: Vec<String> = b.columns.iter().map(|c| header_tex(c)).collect();
-            let _ = writeln!(
-                out,
-                "{} & {} \\\\\n\\hline\n\\endhead",
-                tex_inline(&b.corner),
-                headers.join(" & ")
-            );
+        let caption = prose(&b.title);
+        let table = if total <= TEX_WIDE {
+            let mut head = vec![prose(&b.corner)];
+            head.extend(b.columns.iter().map(|c| column_name(c)));
+            let mut t = LongTable::new(vec![Column::Left; b.columns.len() + 1], caption, head);
             for (label, cells) in &b.rows {
-                let cells: Vec<String> = cells.iter().map(|c| format!("${}$", c.latex)).collect();
-                let _ = writeln!(out, "{} & {} \\\\", tex_inline(label), cells.join(" & "));
+                let mut row = vec![prose(label)];
+                row.extend(cells.iter().map(|c| inline_math(&c.latex)));
+                t.row(row);
             }
+            t
         } else {
-            let _ = writeln!(
-                out,
-                "\\begin{{longtable}}{{L{{1.2cm}}L{{2cm}}L{{12.4cm}}}}\n{caption}\n\\hline"
-            );
-            let _ = writeln!(
-                out,
-                "{} & entry & value \\\\\n\\hline\n\\endhead",
-                tex_inline(&b.corner)
-            );
+            let columns = ["1.2cm", "2cm", "12.4cm"].map(Column::Wrap).to_vec();
+            let head = vec![prose(&b.corner), "entry".into(), "value".into()];
+            let mut t = LongTable::new(columns, caption, head);
             for (label, cells) in &b.rows {
                 for (col, cell) in b.columns.iter().zip(cells) {
-                    let _ = writeln!(
-                        out,
-                        "{} & {} & ${}$ \\\\",
-                        tex_inline(label),
-                        header_tex(col),
-                        inline_fractions(&cell.latex)
-                    );
+                    t.row(vec![
+                        prose(label),
+                        column_name(col),
+                        inline_math(&inline_fractions(&cell.latex)),
+                    ]);
                 }
             }
-        }
-        let _ = writeln!(out, "\\hline\n\\end{{longtable}}\n");
+            t
+        };
+        let _ = writeln!(out, "{table}");
     }
-    out.push_str("\\end{document}\n");
-    out
-}
-
-/// A column header: a function name (`b0`, `H2`) as math with its index,
-/// a word (`derivative`) as text.
-fn header_tex(name: &str) -> String {
-    let digits = name.trim_start_matches(|c: char| c.is_ascii_alphabetic());
-    let letters = &name[..name.len() - digits.len()];
-    if !letters.is_empty() && !digits.is_empty() && digits.chars().all(|c| c.is_ascii_digit()) {
-        format!("${letters}_{{{digits}}}$")
-    } else {
-        trig_verification::report::latex::tex_inline(name)
-    }
-}
-
-/// `\frac{a}{b}` as `(a)/(b)` (brackets left out around one symbol): a
-/// fraction cannot break across lines, its inline form breaks at the
-/// operators of its numerator.
-fn inline_fractions(latex: &str) -> String {
-    const FRAC: &str = r"\frac{";
-    let Some(at) = latex.find(FRAC) else {
-        return latex.to_string();
-    };
-    // the group opened at byte `open` (a `{`) and the rest after its `}`
-    let group = |open: usize| -> Option<(&str, &str)> {
-        let mut depth = 0usize;
-        for (k, c) in latex[open..].char_indices() {
-            match c {
-                '{' => depth += 1,
-                '}' => {
-                    depth -= 1;
-                    if depth == 0 {
-                        return Some((&latex[open + 1..open + k], &latex[open + k + 1..]));
-                    }
-                }
-                _ => {}
-            }
-        }
-        None
-    };
-    let Some((num, rest)) = group(at + FRAC.len() - 1) else {
-        return latex.to_string();
-    };
-    let Some((den, rest)) = rest
-        .starts_with('{')
-        .then(|| group(latex.len() - rest.len()))
-        .flatten()
-    else {
-        return latex.to_string();
-    };
-    let wrap = |s: &str| {
-        let s = inline_fractions(s);
-        if s.contains([' ', '+', '-']) {
-            format!("({s})")
-        } else {
-            s
-        }
-    };
-    format!(
-        "{}{}/{}{}",
-        &latex[..at],
-        wrap(num),
-        wrap(den),
-        inline_fractions(rest)
-    )
+    document(&out)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn fractions_inline_and_headers_as_math() {
-        assert_eq!(
-            inline_fractions(r"(\frac{-m w_{1} - 2}{w_{0}^{2}}) P_{0} + \frac{1}{2}"),
-            r"((-m w_{1} - 2)/w_{0}^{2}) P_{0} + 1/2"
-        );
-        assert_eq!(header_tex("b0"), "$b_{0}$");
-        assert_eq!(header_tex("derivative"), "derivative");
-    }
 
     #[test]
     fn csv_fields_are_quoted_when_needed() {

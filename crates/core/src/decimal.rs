@@ -174,6 +174,14 @@ impl Interval {
     }
 }
 
+impl fmt::Display for Interval {
+    /// The proved decimal digits (see [`Interval::decimal`]), at most as
+    /// many as the precision carries.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.decimal(max_digits(self.prec())).to_string())
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -3,9 +3,11 @@
 
 use rug::Rational;
 
+use crate::basis::{Basis, Described};
+use crate::domain::Domain;
 use crate::error::{CoreError, Result};
 use crate::families::{reference, seed000, seed002, seed004, thesis};
-use crate::param::{Bound, ParamSpec, Range, parse_exact};
+use crate::param::{Bound, ParamSpec, Parameter, Range, read_params};
 use crate::scalar::{Real, Ring};
 use crate::variable::{Atoms, Variable};
 
@@ -380,64 +382,6 @@ impl Family {
         }
     }
 
-    /// Reads `name=value` pairs into exact parameter values in the family's
-    /// order, checking names and (unless `allow_outside`) published ranges.
-    pub fn params_from_pairs(
-        &self,
-        pairs: &[(String, String)],
-        allow_outside: bool,
-    ) -> Result<Vec<Rational>> {
-        let info = self.info();
-        if !self.has_formulas() {
-            return Err(CoreError::NoFormulas(info.id.to_string()));
-        }
-        for (name, _) in pairs {
-            if !info
-                .params
-                .iter()
-                .any(|p| p.name == name || p.symbol == name)
-            {
-                let expected = if info.params.is_empty() {
-                    "none".to_string()
-                } else {
-                    info.params
-                        .iter()
-                        .map(|p| p.name)
-                        .collect::<Vec<_>>()
-                        .join(", ")
-                };
-                return Err(CoreError::UnknownParameter {
-                    family: info.id.into(),
-                    name: name.clone(),
-                    expected,
-                });
-            }
-        }
-        info.params
-            .iter()
-            .map(|spec| {
-                let (_, text) = pairs
-                    .iter()
-                    .rev()
-                    .find(|(n, _)| n == spec.name || n == spec.symbol)
-                    .ok_or_else(|| CoreError::MissingParameter {
-                        family: info.id.into(),
-                        name: spec.name.into(),
-                    })?;
-                let value = parse_exact(text)?;
-                if !allow_outside && !spec.range.contains(&value) {
-                    return Err(CoreError::OutOfRange {
-                        family: info.id.into(),
-                        name: spec.name.into(),
-                        value: crate::echo::echo(text),
-                        range: spec.range.to_string(),
-                    });
-                }
-                Ok(value)
-            })
-            .collect()
-    }
-
     /// Numeric evaluation at a point of the native variable, with typed
     /// errors for points outside the domain (unless `allow_outside`) and for
     /// non-finite results (a vanishing denominator).
@@ -461,6 +405,72 @@ impl Family {
             return Err(crate::certified::nonfinite_error(self, x, p, quantity));
         }
         Ok(values)
+    }
+}
+
+impl Described for Family {
+    fn id(&self) -> String {
+        self.info().id.to_string()
+    }
+
+    fn title(&self) -> String {
+        self.info().title.to_string()
+    }
+
+    fn citation(&self) -> String {
+        self.info().citation.to_string()
+    }
+
+    fn domain(&self) -> Domain {
+        let info = self.info();
+        let names: Vec<&str> = info.params.iter().map(|p| p.name).collect();
+        Domain::from_variable(info.variable, &names)
+    }
+
+    fn variable(&self) -> Option<Variable> {
+        Some(self.info().variable)
+    }
+
+    fn variable_name(&self) -> String {
+        self.info().variable.name().to_string()
+    }
+
+    fn parameters(&self) -> Vec<Parameter> {
+        self.info()
+            .params
+            .iter()
+            .map(ParamSpec::parameter)
+            .collect()
+    }
+
+    fn function_names(&self) -> Vec<String> {
+        self.info()
+            .functions
+            .iter()
+            .map(|f| f.to_string())
+            .collect()
+    }
+
+    fn piecewise(&self) -> bool {
+        self.info().piecewise
+    }
+
+    /// As for every basis, after checking that the family has formulas.
+    fn params_from_pairs(
+        &self,
+        pairs: &[(String, String)],
+        allow_outside: bool,
+    ) -> Result<Vec<Rational>> {
+        if !self.has_formulas() {
+            return Err(CoreError::NoFormulas(self.info().id.to_string()));
+        }
+        read_params(self.info().id, &self.parameters(), pairs, allow_outside)
+    }
+}
+
+impl Basis for Family {
+    fn eval<T: Ring>(&self, x: &Atoms<T>, p: &[T]) -> Vec<T> {
+        Family::eval(self, x, p)
     }
 }
 

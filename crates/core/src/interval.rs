@@ -31,13 +31,11 @@
 //! monotone, so every point between them does too).
 
 use std::cmp::Ordering;
-use std::fmt;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
 use rug::float::{Constant, Round};
 use rug::{Float, Rational};
 
-use crate::decimal::max_digits;
 use crate::scalar::{Real, Ring};
 
 /// Why an interval has no enclosure.
@@ -493,13 +491,5 @@ impl Real for Interval {
     /// True when the interval is an enclosure with finite ends.
     fn is_finite(&self) -> bool {
         self.fault.is_none() && self.lo.is_finite() && self.hi.is_finite()
-    }
-}
-
-impl fmt::Display for Interval {
-    /// The proved decimal digits (see [`Interval::decimal`]), at most as
-    /// many as the precision carries.
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.decimal(max_digits(self.prec())).to_string())
     }
 }

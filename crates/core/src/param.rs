@@ -8,6 +8,7 @@ use rug::ops::Pow;
 use crate::domain::Affine;
 use crate::echo::echo;
 use crate::error::{CoreError, Result};
+use crate::range::{End, ParamRange};
 
 /// One end of a parameter range.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -30,11 +31,9 @@ impl Bound {
     }
 }
 
-fn fmt_ratio(n: i64, d: i64) -> String {
-    Rational::from((n, d)).to_string()
-}
-
-/// A published parameter range such as `[−2, 1]` or `(1/2, 2]`.
+/// A catalog family's published range such as `[−2, 1]` or `(1/2, 2]`,
+/// in a form that can be a constant; [`Range::to_param_range`] gives the
+/// value every consumer reads.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Range {
     pub lo: Bound,
@@ -58,33 +57,27 @@ impl Range {
 
     /// True when `x` lies in the range.
     pub fn contains(&self, x: &Rational) -> bool {
-        let above = match self.lo {
-            Bound::Closed(..) => *x >= self.lo.value().expect("closed bound"),
-            Bound::Open(..) => *x > self.lo.value().expect("open bound"),
-            Bound::Unbounded => true,
+        self.to_param_range().contains(x)
+    }
+
+    /// The range as a value ([`ParamRange`]): the form every consumer reads.
+    pub fn to_param_range(&self) -> ParamRange {
+        let end = |b: &Bound| match b {
+            Bound::Closed(..) => End::Closed(b.value().expect("closed bound")),
+            Bound::Open(..) => End::Open(b.value().expect("open bound")),
+            Bound::Unbounded => End::Unbounded,
         };
-        let below = match self.hi {
-            Bound::Closed(..) => *x <= self.hi.value().expect("closed bound"),
-            Bound::Open(..) => *x < self.hi.value().expect("open bound"),
-            Bound::Unbounded => true,
-        };
-        above && below
+        ParamRange {
+            lo: end(&self.lo),
+            hi: end(&self.hi),
+            pi: false,
+        }
     }
 }
 
 impl fmt::Display for Range {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self.lo {
-            Bound::Closed(n, d) => write!(f, "[{}", fmt_ratio(n, d))?,
-            Bound::Open(n, d) => write!(f, "({}", fmt_ratio(n, d))?,
-            Bound::Unbounded => f.write_str("(-inf")?,
-        }
-        f.write_str(", ")?;
-        match self.hi {
-            Bound::Closed(n, d) => write!(f, "{}]", fmt_ratio(n, d)),
-            Bound::Open(n, d) => write!(f, "{})", fmt_ratio(n, d)),
-            Bound::Unbounded => f.write_str("+inf)"),
-        }
+        self.to_param_range().fmt(f)
     }
 }
 
@@ -99,6 +92,84 @@ pub struct ParamSpec {
     pub range: Range,
     /// Where the range is stated.
     pub range_source: &'static str,
+}
+
+impl ParamSpec {
+    /// The parameter as every described basis states it.
+    pub fn parameter(&self) -> Parameter {
+        Parameter {
+            name: self.name.to_string(),
+            symbol: self.symbol.to_string(),
+            range: self.range.to_param_range(),
+            source: self.range_source.to_string(),
+        }
+    }
+}
+
+/// A shape parameter of a basis (catalog family or spec file).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Parameter {
+    /// ASCII name: the symbol in the exact ring, `--param NAME=…`.
+    pub name: String,
+    /// The symbol the source prints (`m`, `β`, `λ`, …).
+    pub symbol: String,
+    /// The published range.
+    pub range: ParamRange,
+    /// Where the range is stated.
+    pub source: String,
+}
+
+/// Reads `name=value` pairs (a parameter's name or printed symbol; the
+/// last pair of a name wins) into exact values in the order of `params`,
+/// checking names and, unless `allow_outside`, the published ranges; `id`
+/// names the basis in errors.
+pub fn read_params(
+    id: &str,
+    params: &[Parameter],
+    pairs: &[(String, String)],
+    allow_outside: bool,
+) -> Result<Vec<Rational>> {
+    for (name, _) in pairs {
+        if !params.iter().any(|p| &p.name == name || &p.symbol == name) {
+            let expected = if params.is_empty() {
+                "none".to_string()
+            } else {
+                params
+                    .iter()
+                    .map(|p| p.name.as_str())
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            };
+            return Err(CoreError::UnknownParameter {
+                family: id.into(),
+                name: name.clone(),
+                expected,
+            });
+        }
+    }
+    params
+        .iter()
+        .map(|spec| {
+            let (_, text) = pairs
+                .iter()
+                .rev()
+                .find(|(n, _)| *n == spec.name || *n == spec.symbol)
+                .ok_or_else(|| CoreError::MissingParameter {
+                    family: id.into(),
+                    name: spec.name.clone(),
+                })?;
+            let value = parse_exact(text)?;
+            if !allow_outside && !spec.range.contains(&value) {
+                return Err(CoreError::OutOfRange {
+                    family: id.into(),
+                    name: spec.name.clone(),
+                    value: echo(text),
+                    range: spec.range.to_string(),
+                });
+            }
+            Ok(value)
+        })
+        .collect()
 }
 
 /// Longest number accepted, in characters (the cost model: exact inputs stay

@@ -33,6 +33,14 @@ impl Variable {
         Ok(())
     }
 
+    /// The variable's name in formulas: `u` or `t`.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Variable::UnitAngle => "u",
+            Variable::Angle | Variable::Polynomial => "t",
+        }
+    }
+
     /// The domain as printed.
     pub fn domain(&self) -> &'static str {
         match self {

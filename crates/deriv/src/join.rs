@@ -123,6 +123,17 @@ pub fn default_factors() -> [Sym; 2] {
     [Sym::var("alpha"), Sym::var("beta")]
 }
 
+/// The names of the `G¹`/`G²` factors of a join of a basis with the
+/// parameters `params`: `alpha`, `beta`, or `gamma`, `delta` when a
+/// parameter is called `alpha` or `beta`.
+pub fn factor_names(params: &[String]) -> [String; 2] {
+    if params.iter().any(|p| p == "alpha" || p == "beta") {
+        ["gamma".into(), "delta".into()]
+    } else {
+        ["alpha".into(), "beta".into()]
+    }
+}
+
 /// Two segments of one basis (a catalog family or a spec file) meeting at
 /// a join.
 #[derive(Debug, Clone)]
@@ -199,12 +210,27 @@ impl Join {
 }
 
 /// Solves the join conditions for the second segment's control points,
-/// named by `second` (symbols), with the first segment's points `first`.
+/// named by `second` (symbols), with the first segment's points `first`;
+/// each condition is solved for its first free point in index order.
 pub fn solve_join<B: Basis>(
     setup: &JoinSetup<'_, B>,
     kind: JoinKind,
     first: &[Sym],
     second: &[Sym],
+) -> Result<Join, JoinError> {
+    solve_join_for(setup, kind, first, second, &[])
+}
+
+/// [`solve_join`], each condition solved for the first point of `prefer`
+/// (indices of the second segment) that it involves and that is still
+/// free, else for its first free point in index order — so a derived
+/// formula can be shown for the point a paper prints.
+pub fn solve_join_for<B: Basis>(
+    setup: &JoinSetup<'_, B>,
+    kind: JoinKind,
+    first: &[Sym],
+    second: &[Sym],
+    prefer: &[usize],
 ) -> Result<Join, JoinError> {
     let needed = kind.order() + 1;
     if second.len() < needed {
@@ -220,7 +246,11 @@ pub fn solve_join<B: Basis>(
         let reduced = forced
             .iter()
             .fold(residual, |r, f| r.subs(&names[f.index], &f.value));
-        let pivot_index = (0..second.len())
+        let pivot_index = prefer
+            .iter()
+            .copied()
+            .filter(|i| *i < second.len())
+            .chain(0..second.len())
             .filter(|i| forced.iter().all(|f| f.index != *i))
             .find(|&i| !reduced.diff(&names[i]).is_zero());
         let Some(index) = pivot_index else {

@@ -9,10 +9,12 @@ pub mod join;
 
 pub use jet::{Jet, angle_atoms, family_derivatives};
 pub use join::{
-    Forced, Join, JoinError, JoinKind, JoinSetup, default_factors, solve_join, vanishing,
+    Forced, Join, JoinError, JoinKind, JoinSetup, default_factors, factor_names, solve_join,
+    solve_join_for, vanishing,
 };
 pub mod table;
 
 pub use table::{
     End, KnotDerivatives, Wrt, curve_endpoint_derivatives, endpoint_derivatives, knot_derivatives,
+    rate,
 };

@@ -351,7 +351,7 @@ mod tests {
     #[test]
     fn conventions_are_stated_for_the_domain() {
         // the catalog's: as printed in its tables
-        let thesis = Basis::domain(&Family::ThesisCubic);
+        let thesis = trig_core::Described::domain(&Family::ThesisCubic);
         assert_eq!(Wrt::U.describe_on(&thesis), Wrt::U.describe(true));
         // a C-curve on [0, α]: t = αu, factor α^k; its angle is t itself
         let mut c_curve = Domain::from_variable(Variable::Angle, &["alpha"]);

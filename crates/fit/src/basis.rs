@@ -13,7 +13,7 @@ use std::any::Any;
 use std::fmt;
 use std::sync::Arc;
 
-use trig_core::{Basis, Batch, Domain, Family};
+use trig_core::{Basis, Batch, Described, Domain, Family};
 use trig_deriv::table::{End, Wrt, endpoint_derivatives};
 
 use crate::error::{FitError, Result};
@@ -46,11 +46,11 @@ impl<B: Basis + fmt::Debug + Send + Sync + 'static> NumericBasis for B {
     }
 
     fn basis_id(&self) -> String {
-        Basis::id(self)
+        Described::id(self)
     }
 
     fn basis_domain(&self) -> Domain {
-        Basis::domain(self)
+        Described::domain(self)
     }
 
     fn counts(&self) -> (usize, usize) {

@@ -11,7 +11,7 @@ use rug::Rational;
 use trig_core::parse_exact;
 
 use crate::InterpError;
-use crate::scheme::Scheme;
+use crate::kind::Scheme;
 
 /// One printed table.
 #[derive(Debug, Clone, Copy)]

@@ -15,6 +15,7 @@
 pub mod data;
 pub mod interval;
 pub mod jumps;
+pub mod kind;
 pub mod minimum;
 pub mod piece;
 pub mod plot;
@@ -24,10 +25,11 @@ pub mod slopes;
 pub use data::{DataSet, TABLES, Table};
 pub use interval::Interval;
 pub use jumps::{KnotJump, knot_jumps};
+pub use kind::{Scheme, Variant};
 pub use minimum::{PieceMinimum, Proof, certified_minimum};
 pub use piece::Piece;
 pub use plot::{PlotSegment, f64_segments};
-pub use scheme::{Scheme, Spline, Variant, build};
+pub use scheme::{Spline, build};
 
 /// What can go wrong building or certifying an interpolant.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]

@@ -2,8 +2,9 @@
 
 use crate::InterpError;
 use crate::data::DataSet;
+use crate::kind::{Scheme, Variant};
 use crate::piece::Piece;
-use crate::scheme::{Scheme, Variant, build};
+use crate::scheme::build;
 
 /// One piece of an interpolant in f64, defined on `[x0, x1]`.
 #[derive(Debug, Clone, PartialEq)]

@@ -3,8 +3,9 @@
 
 use rug::Rational;
 
+use crate::chart::{Frame, Look, Mark, Series};
 use crate::error::{PlotError, Result};
-use crate::picture::{Frame, Look, Mark, Picture, Series};
+use crate::picture::Picture;
 use crate::plotted::Plotted;
 use crate::style::{CURVE, colour, padded};
 

@@ -2,8 +2,9 @@
 //! shape parameter (thesis Figure 6.3: `V₀ = (0,0)`, `V₁ = (1,2)`,
 //! `V₂ = (3,2)`, `V₃ = (4,0)`).
 
+use crate::chart::{Frame, Look, Mark, Series};
 use crate::error::{PlotError, Result};
-use crate::picture::{Frame, Look, Mark, Picture, Series};
+use crate::picture::Picture;
 use crate::plotted::Plotted;
 use crate::style::{CURVE, GREY, THIN, colour, equal_aspect, padded};
 

@@ -3,8 +3,9 @@
 
 use trig_fit::{Outline, OutlineFit};
 
+use crate::chart::{Frame, Look, Mark, Series};
 use crate::error::Result;
-use crate::picture::{Frame, Look, Mark, Picture, Series};
+use crate::picture::Picture;
 use crate::style::{BLACK, CURVE, LIGHT_GREY, colour, equal_aspect, padded};
 
 /// Points drawn per fitted segment.

@@ -3,8 +3,9 @@
 //! sampled pieces (crate `trig-interp` builds them), so this picture knows
 //! nothing of the schemes.
 
+use crate::chart::{Frame, Look, Mark, Series};
 use crate::error::{PlotError, Result};
-use crate::picture::{Frame, Look, Mark, Picture, Series};
+use crate::picture::Picture;
 use crate::style::{BLACK, CURVE, colour, padded};
 
 /// One interpolant: its legend label and its pieces, each a sampled polyline.

@@ -15,6 +15,7 @@
 //! ([`Picture::pgf`]) and the CSV rows ([`Picture::rows`]).
 
 pub mod basis;
+mod chart;
 pub mod curve;
 pub mod error;
 pub mod fit;
@@ -27,10 +28,11 @@ mod style;
 mod svg;
 
 pub use basis::{basis_svg, basis_versus_svg};
+pub use chart::{Frame, Look, Mark, Series};
 pub use curve::curve_svg;
 pub use error::PlotError;
 pub use fit::fit_svg;
 pub use interp::{Interpolant, interp_svg};
-pub use picture::{Frame, Look, Mark, Picture, Series};
+pub use picture::Picture;
 pub use plotted::Plotted;
 pub use region::{RegionCell, RegionKind, region_svg};

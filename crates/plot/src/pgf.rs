@@ -1,11 +1,16 @@
 //! The pgfplots code of a [`Picture`]: a `tikzpicture` to `\input` into a
 //! LaTeX document (which loads `pgfplots`), with the same frame, series,
 //! looks and legend as the SVG, coordinates as floats. The axis has the
-//! size of the SVG's plot area, so equal scales stay equal.
+//! size of the SVG's plot area, so equal scales stay equal. Text (title,
+//! axis labels, legend entries) is written by the one LaTeX writer,
+//! [`trig_tex`].
 
 use std::fmt::Write;
 
-use crate::picture::{Look, Mark, Picture};
+use trig_tex::{comment, text};
+
+use crate::chart::{Look, Mark};
+use crate::picture::Picture;
 use crate::style::{PLOT_AREA, UNIT_MM, X_LABEL_AREA, legend_columns};
 
 /// A number as pgfplots reads it: plain decimals in a moderate range,
@@ -66,18 +71,17 @@ fn options(look: &Look) -> String {
 }
 
 impl Picture {
-    /// The picture as pgfplots code; `text` turns the picture's text
-    /// (title, axis labels, legend entries) into LaTeX.
-    pub fn pgf(&self, text: impl Fn(&str) -> String) -> String {
+    /// The picture as pgfplots code.
+    pub fn pgf(&self) -> String {
         let f = &self.frame;
-        let mut out = String::new();
-        let _ = writeln!(
-            out,
-            "% {} (trig-audit plot; the data is in the CSV file of the same name)\n\
-             % needs \\usepackage{{pgfplots}} with \\pgfplotsset{{compat=1.16}} or later\n\
-             \\begin{{tikzpicture}}\n\\begin{{axis}}[",
-            text(&f.title).replace('\n', " ")
-        );
+        let mut out = comment(&format!(
+            "{} (trig-audit plot; the data is in the CSV file of the same name)",
+            text(&f.title)
+        ));
+        out.push_str(&comment(
+            r"needs \usepackage{pgfplots} with \pgfplotsset{compat=1.16} or later",
+        ));
+        out.push_str("\\begin{tikzpicture}\n\\begin{axis}[\n");
         let below = (f64::from(X_LABEL_AREA) + 8.0) / PLOT_AREA.1;
         // column-major as in the SVG: transposed, `legend columns` counts rows
         let columns = legend_columns(self.legend().map(|(t, _)| t));
@@ -120,7 +124,7 @@ impl Picture {
             );
         }
         for s in &self.series {
-            let _ = writeln!(out, "% {}", text(&s.label));
+            out.push_str(&comment(&text(&s.label)));
             if let (Mark::Cell, [a, b]) = (s.look.mark, &s.points[..]) {
                 let mut fill = colour(&s.look).replace("color=", "fill=");
                 if s.look.opacity < 1.0 {
@@ -158,7 +162,7 @@ impl Picture {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::picture::{Frame, Series};
+    use crate::chart::{Frame, Series};
 
     #[test]
     fn numbers_are_plain_or_scientific() {
@@ -194,9 +198,8 @@ mod tests {
             ],
         )
         .unwrap();
-        let escape = |t: &str| t.replace('&', r"\&").replace('λ', r"$\lambda$");
-        let tex = p.pgf(escape);
-        assert!(tex.contains(r"title={T \& $\lambda$},"), "{tex}");
+        let tex = p.pgf();
+        assert!(tex.contains(r"title={T \& $\lambda $},"), "{tex}");
         assert!(tex.contains("xmin=0, xmax=2,"));
         assert!(tex.contains("width=139.2mm, height=87.6mm"), "{tex}");
         assert_eq!(tex.matches(r"\addlegendentry{").count(), 3);

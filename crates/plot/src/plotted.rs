@@ -5,7 +5,7 @@
 use std::sync::Arc;
 
 use rug::Rational;
-use trig_core::{Batch, Family, Variable};
+use trig_core::{Batch, Described, Family, Variable};
 use trig_fit::NumericBasis;
 
 use crate::error::{PlotError, Result};

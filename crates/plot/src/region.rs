@@ -2,8 +2,9 @@
 //! classified cells of a window of the parameter plane (certified inside,
 //! certified outside, undecided along the edge) with the printed box.
 
+use crate::chart::{Frame, Look, Mark, Series};
 use crate::error::Result;
-use crate::picture::{Frame, Look, Mark, Picture, Series};
+use crate::picture::Picture;
 use crate::style::{BLACK, CURVE, colour};
 
 /// How a cell was classified.

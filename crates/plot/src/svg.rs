@@ -13,8 +13,8 @@ use plotters::element::DashedPathElement;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
+use crate::chart::{Frame, Look, Mark, Series};
 use crate::error::{PlotError, Result, draw};
-use crate::picture::{Frame, Look, Mark, Series};
 use crate::style::{
     CHART_HEIGHT, FONT_LABEL, FONT_LEGEND, FONT_TICK, FONT_TITLE, MARGIN, THIN, TITLE_HEIGHT,
     UNIT_MM, WIDTH, X_LABEL_AREA, Y_LABEL_AREA, legend_columns,

@@ -15,6 +15,12 @@
 //! accepted for `-`, `*`. Two operands side by side (`2 s`, `2(1 − t)`,
 //! `(1 − t)(1 + t)`) are refused with "expected `*`": a missing sign is
 //! never guessed.
+//!
+//! Printed formulas ([`Grammar::Printed`], transcribed from a paper) are
+//! read by the same parser with two additions: juxtaposition multiplies,
+//! binding as `*` does (`term := unary (('*' | '/') unary | power)*`, so
+//! `4(S + 1)b1` is `4·(S + 1)·b1` and `a/2 b` is `(a/2)·b`), and `[ ]`,
+//! `{ }` group as `( )` does (each closed by its own kind).
 
 use rug::Rational;
 use trig_core::parse_exact;
@@ -25,6 +31,10 @@ use crate::error::FormulaError;
 pub const MAX_LEN: usize = 10_000;
 /// Deepest nesting of parentheses, calls and unary signs.
 pub const MAX_DEPTH: usize = 64;
+/// Most operations on any path of the syntax tree (`a - b - c` is two
+/// deep), so that every walk of the tree stays well inside a thread's
+/// stack; real formulas are far below it.
+pub const MAX_HEIGHT: usize = 512;
 /// Largest exponent magnitude in `x^n` (the formula's total cost is bounded
 /// separately, see [`crate::lower`]).
 pub const MAX_EXPONENT: i64 = 64;
@@ -76,6 +86,20 @@ impl Func {
     }
 }
 
+/// How formula text is read: the two grammars share everything but
+/// juxtaposition and brackets.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Grammar {
+    /// Spec files: every product has its sign (`2*s`; `2 s` is refused
+    /// with "expected `*`"), and only `( )` group.
+    #[default]
+    Spec,
+    /// Printed formulas as transcribed from a paper: juxtaposition
+    /// multiplies (`2S`, `4(S + 1)b1`, `(1 + t)(1 - t)`), and `[ ]`, `{ }`
+    /// group as `( )` does. A function name followed by `(` is still a call.
+    Printed,
+}
+
 /// The names of the functions, for messages.
 pub const FUNCTIONS: &str = "sin, cos, sinh, cosh, exp, sqrt";
 
@@ -116,8 +140,13 @@ impl Expr {
     }
 }
 
-/// Reads `text` into a syntax tree.
+/// Reads `text` of a spec file into a syntax tree ([`Grammar::Spec`]).
 pub fn parse(text: &str) -> Result<Expr, FormulaError> {
+    parse_in(text, Grammar::Spec)
+}
+
+/// Reads `text` into a syntax tree in `grammar`.
+pub fn parse_in(text: &str, grammar: Grammar) -> Result<Expr, FormulaError> {
     let chars: Vec<char> = text.chars().collect();
     if chars.len() > MAX_LEN {
         return Err(FormulaError::new(
@@ -125,16 +154,23 @@ pub fn parse(text: &str) -> Result<Expr, FormulaError> {
             format!("formula longer than {MAX_LEN} characters"),
         ));
     }
-    let tokens = lex(&chars)?;
+    let tokens = lex(&chars, grammar)?;
     let mut p = Parser {
         tokens,
         at: 0,
         depth: 0,
         end: chars.len(),
+        grammar,
     };
     let value = p.expr()?;
     match p.peek() {
-        None => Ok(value),
+        None => match deeper_than(&value, MAX_HEIGHT) {
+            None => Ok(value),
+            Some(pos) => Err(FormulaError::new(
+                pos,
+                format!("more than {MAX_HEIGHT} operations deep (split the formula)"),
+            )),
+        },
         Some(t) if starts_operand(&t.kind) => Err(FormulaError::new(
             t.pos,
             format!(
@@ -152,13 +188,28 @@ pub fn parse(text: &str) -> Result<Expr, FormulaError> {
     }
 }
 
+/// The position of an operation with `max` operations above it in `e`, if
+/// any (the walk stops there, so it stays shallow itself).
+fn deeper_than(e: &Expr, max: usize) -> Option<usize> {
+    match &e.node {
+        Node::Number(_) | Node::Name(_) => None,
+        _ if max == 0 => Some(e.pos),
+        Node::Neg(a) | Node::Pow(a, _) | Node::Call(_, a) => deeper_than(a, max - 1),
+        Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) | Node::Div(a, b) => {
+            deeper_than(a, max - 1).or_else(|| deeper_than(b, max - 1))
+        }
+    }
+}
+
 #[derive(Debug, Clone, PartialEq)]
 enum Kind {
     Number(String),
     Name(String),
     Op(char),
-    Open,
-    Close,
+    /// `(`, or in printed formulas `[`, `{`.
+    Open(char),
+    /// The closing bracket of its kind.
+    Close(char),
 }
 
 impl Kind {
@@ -166,15 +217,22 @@ impl Kind {
         match self {
             Kind::Number(n) => format!("the number `{n}`"),
             Kind::Name(n) => format!("`{n}`"),
-            Kind::Op(c) => format!("`{c}`"),
-            Kind::Open => "`(`".into(),
-            Kind::Close => "`)`".into(),
+            Kind::Op(c) | Kind::Open(c) | Kind::Close(c) => format!("`{c}`"),
         }
     }
 }
 
 fn starts_operand(k: &Kind) -> bool {
-    matches!(k, Kind::Number(_) | Kind::Name(_) | Kind::Open)
+    matches!(k, Kind::Number(_) | Kind::Name(_) | Kind::Open(_))
+}
+
+/// The bracket closing `open`.
+fn closing(open: char) -> char {
+    match open {
+        '[' => ']',
+        '{' => '}',
+        _ => ')',
+    }
 }
 
 #[derive(Debug, Clone)]
@@ -183,7 +241,7 @@ struct Token {
     pos: usize,
 }
 
-fn lex(chars: &[char]) -> Result<Vec<Token>, FormulaError> {
+fn lex(chars: &[char], grammar: Grammar) -> Result<Vec<Token>, FormulaError> {
     let mut out = Vec::new();
     let mut i = 0;
     while i < chars.len() {
@@ -217,8 +275,10 @@ fn lex(chars: &[char]) -> Result<Vec<Token>, FormulaError> {
             '+' | '-' | '*' | '/' | '^' => Kind::Op(ch),
             '−' => Kind::Op('-'),
             '·' | '×' => Kind::Op('*'),
-            '(' => Kind::Open,
-            ')' => Kind::Close,
+            '(' => Kind::Open('('),
+            ')' => Kind::Close(')'),
+            '[' | '{' if grammar == Grammar::Printed => Kind::Open(ch),
+            ']' | '}' if grammar == Grammar::Printed => Kind::Close(ch),
             other => {
                 return Err(FormulaError::new(
                     start,
@@ -239,6 +299,7 @@ struct Parser {
     at: usize,
     depth: usize,
     end: usize,
+    grammar: Grammar,
 }
 
 fn boxed(node: Node, pos: usize) -> Expr {
@@ -302,6 +363,12 @@ impl Parser {
         let mut acc = self.unary()?;
         loop {
             if let Some(t) = self.peek().filter(|t| starts_operand(&t.kind)) {
+                if self.grammar == Grammar::Printed {
+                    let pos = t.pos;
+                    let rhs = self.power()?;
+                    acc = boxed(Node::Mul(Box::new(acc), Box::new(rhs)), pos);
+                    continue;
+                }
                 return Err(FormulaError::new(
                     t.pos,
                     format!(
@@ -389,15 +456,12 @@ impl Parser {
                 })?;
                 Ok(boxed(Node::Number(q), token.pos))
             }
-            Kind::Open => {
-                let x = self.parenthesised(token.pos)?;
-                Ok(x)
-            }
+            Kind::Open(open) => self.parenthesised(token.pos, open),
             Kind::Name(name) => {
                 let called = matches!(
                     self.peek(),
                     Some(Token {
-                        kind: Kind::Open,
+                        kind: Kind::Open('('),
                         ..
                     })
                 );
@@ -405,7 +469,7 @@ impl Parser {
                     (Some(f), true) => {
                         self.at += 1;
                         self.enter()?;
-                        let arg = self.parenthesised(token.pos + name.chars().count())?;
+                        let arg = self.parenthesised(token.pos + name.chars().count(), '(')?;
                         self.depth -= 1;
                         Ok(boxed(Node::Call(f, Box::new(arg)), token.pos))
                     }
@@ -413,13 +477,13 @@ impl Parser {
                         token.pos,
                         format!("expected `(` after `{name}`"),
                     )),
-                    (None, true) => Err(FormulaError::new(
+                    (None, true) if self.grammar == Grammar::Spec => Err(FormulaError::new(
                         token.pos,
                         format!(
                             "unknown function `{name}` (expected {FUNCTIONS}), or `*` after `{name}`"
                         ),
                     )),
-                    (None, false) => Ok(boxed(Node::Name(name), token.pos)),
+                    (None, _) => Ok(boxed(Node::Name(name), token.pos)),
                 }
             }
             other => Err(FormulaError::new(
@@ -432,19 +496,22 @@ impl Parser {
         }
     }
 
-    /// The inside of `( … )` whose `(` is at `open` (already consumed).
-    fn parenthesised(&mut self, open: usize) -> Result<Expr, FormulaError> {
+    /// The inside of `( … )` (or `[ … ]`, `{ … }`) whose opening bracket
+    /// `open` is at `at` (already consumed).
+    fn parenthesised(&mut self, at: usize, open: char) -> Result<Expr, FormulaError> {
         let x = self.expr()?;
+        let close = closing(open);
         match self.peek() {
             Some(Token {
-                kind: Kind::Close, ..
-            }) => {
+                kind: Kind::Close(c),
+                ..
+            }) if *c == close => {
                 self.at += 1;
                 Ok(x)
             }
             _ => Err(FormulaError::new(
                 self.pos(),
-                format!("expected `)` to close the `(` at position {open}"),
+                format!("expected `{close}` to close the `{open}` at position {at}"),
             )),
         }
     }
@@ -497,7 +564,123 @@ mod tests {
         assert!(err("1 # 2").message.contains("unexpected character"));
         assert!(err("").message.contains("unexpected end"));
         assert!(err(&"(".repeat(100)).message.contains("nested"));
+        assert!(parse(&format!("{}s", "s - ".repeat(MAX_HEIGHT))).is_ok());
+        let e = err(&format!("{}s", "s - ".repeat(MAX_HEIGHT + 1)));
+        assert_eq!(e.position, 2);
+        assert!(e.message.contains("operations deep"), "{e:?}");
         assert!(err("s^m").message.contains("integer exponent"));
         assert!(err("s^65").message.contains("exponent larger"));
+        // brackets other than `( )` belong to printed formulas only
+        assert!(err("[1 + s]").message.contains("unexpected character `[`"));
+    }
+
+    fn printed(text: &str) -> Result<Expr, FormulaError> {
+        parse_in(text, Grammar::Printed)
+    }
+
+    /// The tree with every position zeroed, to compare shapes.
+    fn shape(text: &str, grammar: Grammar) -> Expr {
+        fn unplaced(e: Expr) -> Expr {
+            let b = |x: Box<Expr>| Box::new(unplaced(*x));
+            let node = match e.node {
+                Node::Neg(a) => Node::Neg(b(a)),
+                Node::Add(x, y) => Node::Add(b(x), b(y)),
+                Node::Sub(x, y) => Node::Sub(b(x), b(y)),
+                Node::Mul(x, y) => Node::Mul(b(x), b(y)),
+                Node::Div(x, y) => Node::Div(b(x), b(y)),
+                Node::Pow(a, n) => Node::Pow(b(a), n),
+                Node::Call(f, a) => Node::Call(f, b(a)),
+                leaf => leaf,
+            };
+            Expr { node, pos: 0 }
+        }
+        unplaced(parse_in(text, grammar).unwrap())
+    }
+
+    #[test]
+    fn printed_formulas_multiply_by_juxtaposition_and_group_with_brackets() {
+        for (print, spec) in [
+            ("4(S + 1)b1", "4*(S + 1)*b1"),
+            ("2S", "2*S"),
+            ("(1 - t)(1 + t)", "(1 - t)*(1 + t)"),
+            ("a/2 b", "a/2*b"),
+            ("-2^2 x", "-2^2*x"),
+            ("x y^2", "x*y^2"),
+            ("[x/2]^2", "(x/2)^2"),
+            (
+                "(pi/2)^3 {(2S - 5)[d S0 + b1]}",
+                "(pi/2)^3*((2*S - 5)*(d*S0 + b1))",
+            ),
+            ("2sin(t)", "2*sin(t)"),
+        ] {
+            assert_eq!(
+                shape(print, Grammar::Printed),
+                shape(spec, Grammar::Spec),
+                "{print}"
+            );
+        }
+        // a juxtaposed product is placed at its second operand
+        let e = printed("2 s").unwrap();
+        assert!(matches!(e.node, Node::Mul(..)) && e.pos == 2, "{e:?}");
+        // each bracket is closed by its own kind
+        let e = printed("[1 + s)").unwrap_err();
+        assert_eq!(e.position, 6);
+        assert!(
+            e.message
+                .contains("expected `]` to close the `[` at position 0")
+        );
+        assert!(printed("{1").unwrap_err().message.contains("expected `}`"));
+        assert!(
+            printed("sin t")
+                .unwrap_err()
+                .message
+                .contains("after `sin`")
+        );
+        assert!(
+            printed("2 ^ s")
+                .unwrap_err()
+                .message
+                .contains("integer exponent")
+        );
+        assert!(
+            printed("1 + ")
+                .unwrap_err()
+                .message
+                .contains("unexpected end")
+        );
+        assert!(printed(")").unwrap_err().message.contains("found `)`"));
+    }
+
+    proptest::proptest! {
+        /// Any text, in either grammar, is read or refused with a position
+        /// inside it (or at its end): never a panic.
+        #[test]
+        fn no_input_panics(text in "\\PC{0,80}", printed_grammar: bool) {
+            let grammar = if printed_grammar { Grammar::Printed } else { Grammar::Spec };
+            if let Err(e) = parse_in(&text, grammar) {
+                proptest::prop_assert!(e.position <= text.chars().count());
+            }
+        }
+
+        /// Texts made of the grammar's own tokens (the inputs most likely to
+        /// reach deep into the parser).
+        #[test]
+        fn no_token_soup_panics(
+            tokens in proptest::collection::vec(
+                proptest::sample::select(vec![
+                    "1", "2.5", ".", "1.2.3", "99999999999999999999", "x", "S0", "pi", "sin",
+                    "sqrt", "+", "-", "−", "*", "·", "/", "^", "^-", "(", ")", "[", "]", "{",
+                    "}", " ", "64", "65",
+                ]),
+                0..40,
+            ),
+            printed_grammar: bool,
+        ) {
+            let text = tokens.concat();
+            let grammar = if printed_grammar { Grammar::Printed } else { Grammar::Spec };
+            if let Err(e) = parse_in(&text, grammar) {
+                proptest::prop_assert!(e.position <= text.chars().count());
+            }
+        }
     }
 }

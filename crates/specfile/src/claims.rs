@@ -7,10 +7,10 @@ use trig_deriv::{End, JoinKind, Wrt};
 use trig_symbolic::Sym;
 
 use crate::error::{Result, SpecError};
-use crate::range::SpecRange;
 use crate::raw::RawClaim;
 use crate::source::Source;
 use crate::spec::{MAX_ORDER, Spec};
+use trig_core::ParamRange;
 
 /// A printed value `name = formula` of one function.
 #[derive(Debug, Clone, PartialEq)]
@@ -34,6 +34,10 @@ pub struct Condition {
     pub point: usize,
     pub text: String,
     pub value: Sym,
+    /// The printed additive terms of the formula (signs included) over its
+    /// printed denominator: `value = Σ terms / denominator`.
+    pub terms: Vec<Sym>,
+    pub denominator: Sym,
     /// Divisions of the printed formula not proved nonzero over the ranges
     /// (why, with the witness): the formula is singular there.
     pub singular: Vec<String>,
@@ -47,13 +51,13 @@ pub enum Check {
     /// Every function ≥ 0 on the domain for the parameter range (the
     /// declared one unless given); `maximal`: the range is the maximal one.
     Nonnegative {
-        range: Option<SpecRange>,
+        range: Option<ParamRange>,
         maximal: bool,
     },
     /// Each listed function monotone on the domain for the range.
     Monotone {
         items: Vec<Monotone>,
-        range: Option<SpecRange>,
+        range: Option<ParamRange>,
     },
     /// `bᵢ(x; p) = b_{offset−i}(A − x; σ(p))`: the map `x ↦ A − x` printed
     /// in the variable, the parameters substituted by `σ` (exchange
@@ -104,7 +108,7 @@ pub enum Check {
     },
     /// Unity and nonnegativity on the range: the convex-hull property of
     /// every curve `Σ bᵢPᵢ` (the standard sufficient condition).
-    ConvexHull { range: Option<SpecRange> },
+    ConvexHull { range: Option<ParamRange> },
     /// The uniform B-spline assembled from the `n` functions (piece `k` is
     /// function `n − 1 − k`) is `Cᵏ` at its knots.
     Continuity { order: usize },
@@ -123,12 +127,7 @@ impl Spec {
     /// The names of the `G¹`/`G²` factors: `alpha`, `beta`, unless a shape
     /// parameter has that name (then `gamma`, `delta`).
     pub fn join_factors(&self) -> [String; 2] {
-        let taken = |n: &str| self.params.iter().any(|p| p.name == n);
-        if taken("alpha") || taken("beta") {
-            ["gamma".into(), "delta".into()]
-        } else {
-            ["alpha".into(), "beta".into()]
-        }
+        trig_deriv::factor_names(&trig_core::Described::param_names(self))
     }
 
     /// The parameters of the two segments of a join with different
@@ -231,7 +230,7 @@ fn one_param_range(
     src: &Source<'_>,
     spec: &Spec,
     range: &Option<Spanned<String>>,
-) -> Result<Option<SpecRange>> {
+) -> Result<Option<ParamRange>> {
     let Some(r) = range else { return Ok(None) };
     if spec.params.len() != 1 {
         return src.invalid(
@@ -240,7 +239,7 @@ fn one_param_range(
             "a range is only accepted for a basis with exactly one parameter".into(),
         );
     }
-    SpecRange::parse(r.get_ref())
+    ParamRange::parse(r.get_ref())
         .map(Some)
         .or_else(|m| src.invalid(r.span(), "claims.range", m))
 }
@@ -467,7 +466,10 @@ fn join(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check> {
                     return src.invalid(item.span(), "claims.conditions", format!("`{text}`: with different parameters write {0}1 (first segment) or {0}2 (second), not {0}", p.name));
                 }
             }
-            Ok(Condition { point, text: text.trim().to_string(), value, singular })
+            let (terms, denominator) = spec
+                .printed_terms(rhs, &extra)
+                .map_err(|e| src.formula_error(item, e))?;
+            Ok(Condition { point, text: text.trim().to_string(), value, terms, denominator, singular })
         })
         .collect::<Result<Vec<_>>>()?;
     Ok(Check::Join {

@@ -18,11 +18,10 @@
 //! * `sqrt` of a rational whose square-free part is a product of 2, 3, 5, 7.
 //!
 //! The cost of a formula is bounded as a whole: every intermediate value
-//! has at most [`MAX_TERMS`] terms and degree [`MAX_DEGREE`], and the
-//! multiplications of one formula (powers included) at most [`MAX_WORK`]
-//! term products — checked before each product is formed.
-
-use std::cell::Cell;
+//! has at most [`MAX_TERMS`] terms, degree [`MAX_DEGREE`] and coefficients
+//! of [`MAX_BITS`] bits, and the multiplications of one formula (powers
+//! included) at most [`MAX_WORK`] term products — checked before each
+//! product is formed.
 
 use rug::Rational;
 use trig_core::angles::{angle_sum, multiple_angle};
@@ -30,14 +29,10 @@ use trig_core::{Affine, Domain, Ring};
 use trig_symbolic::Sym;
 
 use crate::ast::{self, Expr, Func, Node};
+use crate::budget::Budget;
 use crate::error::FormulaError;
 
-/// Most terms of any intermediate value (numerator and denominator factors).
-pub const MAX_TERMS: usize = 4_000;
-/// Highest total degree of any intermediate value.
-pub const MAX_DEGREE: u64 = 128;
-/// Most term products (`|a|·|b|` per multiplication) of one formula.
-pub const MAX_WORK: u64 = 20_000_000;
+pub use crate::budget::{MAX_BITS, MAX_DEGREE, MAX_TERMS, MAX_WORK};
 
 /// The ring names of the atoms: `t` is the variable (whatever its printed
 /// name), `E = exp(κx)`.
@@ -82,7 +77,7 @@ pub fn parse(text: &str, scope: &Scope<'_>) -> Result<Sym, FormulaError> {
 pub fn lower(e: &Expr, scope: &Scope<'_>) -> Result<Sym, FormulaError> {
     Lowering {
         scope,
-        work: Cell::new(0),
+        budget: Budget::default(),
     }
     .value(e)
 }
@@ -209,18 +204,7 @@ pub fn linear(
 
 struct Lowering<'s, 'a> {
     scope: &'s Scope<'a>,
-    /// Term products spent so far.
-    work: Cell<u64>,
-}
-
-/// `(terms, degree)` of an exact value: numerator and denominator factors.
-fn size(x: &Sym) -> (usize, u64) {
-    let num = x.numerator();
-    x.denominator()
-        .iter()
-        .fold((num.len(), num.total_degree()), |(t, d), (f, e)| {
-            (t + f.len(), d + f.total_degree() * u64::from(*e))
-        })
+    budget: Budget,
 }
 
 impl Lowering<'_, '_> {
@@ -228,42 +212,12 @@ impl Lowering<'_, '_> {
         self.scope.params.iter().map(|(n, _)| Sym::var(n)).collect()
     }
 
-    /// Checks the bounds of an intermediate value.
     fn bounded(&self, x: Sym, pos: usize) -> Result<Sym, FormulaError> {
-        let (terms, degree) = size(&x);
-        if terms > MAX_TERMS || degree > MAX_DEGREE {
-            return Err(FormulaError::new(
-                pos,
-                format!(
-                    "the formula is too large here: an intermediate value has {terms} terms and degree {degree} (limits {MAX_TERMS} terms, degree {MAX_DEGREE})"
-                ),
-            ));
-        }
-        Ok(x)
+        self.budget.bounded(x, pos)
     }
 
-    /// `a·b`, after charging its cost and checking the degree bound.
     fn product(&self, a: &Sym, b: &Sym, pos: usize) -> Result<Sym, FormulaError> {
-        let ((ta, da), (tb, db)) = (size(a), size(b));
-        if da + db > MAX_DEGREE {
-            return Err(FormulaError::new(
-                pos,
-                format!(
-                    "the formula's degree would exceed {MAX_DEGREE} here (degrees {da} and {db})"
-                ),
-            ));
-        }
-        let spent = self.work.get() + (ta as u64).max(1) * (tb as u64).max(1);
-        if spent > MAX_WORK {
-            return Err(FormulaError::new(
-                pos,
-                format!(
-                    "the formula is too costly to expand exactly (more than {MAX_WORK} term products); simplify it"
-                ),
-            ));
-        }
-        self.work.set(spent);
-        self.bounded(a.clone() * b, pos)
+        self.budget.product(a, b, pos)
     }
 
     /// `a / b` with the divisor checked factor by factor as written
@@ -616,6 +570,7 @@ mod tests {
         assert!(err("1/(s - s)").message.contains("division by zero"));
         // a formula's cost is bounded as a whole, not per power
         assert!(err("((1 + s + c)^64)^8").message.contains("degree"));
+        assert!(err("(((7^64)^64)^64)^64").message.contains("bits"));
         assert!(err("cos(24*pi*u/2)^64").message.contains("degree"));
         // defined names and the variable outside sin
         assert_eq!(
@@ -651,6 +606,14 @@ mod tests {
         assert_eq!((e.position, e.message.as_str()), (1, "can vanish"));
         assert!(parse("s/(lambda + 2)", &scope).is_ok());
         assert!(parse("m^-1", &scope).is_err());
+    }
+
+    #[test]
+    fn the_deepest_formula_read_lowers_on_a_test_thread() {
+        let d = domain(Variable::UnitAngle);
+        let text = format!("{}s", "s - ".repeat(ast::MAX_HEIGHT));
+        let x = with(&d, Some(1), |s| parse(&text, s)).unwrap();
+        assert_eq!(x, Sym::int(1 - ast::MAX_HEIGHT as i64) * &Sym::var("s"));
     }
 
     #[test]

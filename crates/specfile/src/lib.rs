@@ -30,43 +30,70 @@
 //! assert_eq!(v, vec![0.25, 0.5, 0.25]);
 //! ```
 
+mod any;
 mod ast;
+mod budget;
 pub mod claims;
 pub mod error;
+mod expression;
 pub mod formula;
 pub mod frequencies;
 pub mod nonvanishing;
-pub mod range;
 mod raw;
 mod source;
 pub mod spec;
 
+pub use any::{AnyBasis, OpenError};
+pub use ast::Grammar;
 pub use claims::{Check, Condition, Monotone, Printed, SpecClaim};
 pub use error::{FormulaError, Location, SpecError};
-pub use range::SpecRange;
-pub use spec::{Spec, SpecFunction, SpecParam};
+pub use expression::Expression;
+pub use spec::{Spec, SpecFunction};
 
 use rug::Rational;
-use trig_core::{Atoms, Basis, CoreError, Domain, Real, Ring, parse_exact};
+use trig_core::{Atoms, Basis, CoreError, Described, Domain, Parameter, Real, Ring, Variable};
 use trig_symbolic::Sym;
 
-impl Basis for Spec {
+impl Described for Spec {
     fn id(&self) -> String {
         self.id.clone()
+    }
+
+    fn title(&self) -> String {
+        self.title.clone()
+    }
+
+    fn citation(&self) -> String {
+        self.citation.clone()
     }
 
     fn domain(&self) -> Domain {
         self.domain.clone()
     }
 
-    fn param_names(&self) -> Vec<String> {
-        self.params.iter().map(|p| p.name.clone()).collect()
+    fn variable(&self) -> Option<Variable> {
+        self.legacy
+    }
+
+    fn variable_name(&self) -> String {
+        self.var_name.clone()
+    }
+
+    fn parameters(&self) -> Vec<Parameter> {
+        self.params.clone()
     }
 
     fn function_names(&self) -> Vec<String> {
         self.functions.iter().map(|f| f.name.clone()).collect()
     }
 
+    /// As the file declares (`piecewise = true`).
+    fn piecewise(&self) -> bool {
+        self.piecewise
+    }
+}
+
+impl Basis for Spec {
     /// Each function's exact value evaluated in the ring of the atoms
     /// (numerator and denominator factors through [`trig_symbolic::Poly::eval`],
     /// then one division with the ring's own semantics: IEEE values in
@@ -96,59 +123,6 @@ fn eval_sym<T: Ring>(x: &Sym, like: &T, assign: &dyn Fn(&str) -> Option<T>) -> T
 }
 
 impl Spec {
-    /// Reads `name=value` pairs (name or printed symbol) into exact values
-    /// in parameter order, checking the declared ranges unless
-    /// `allow_outside`.
-    pub fn params_from_pairs(
-        &self,
-        pairs: &[(String, String)],
-        allow_outside: bool,
-    ) -> Result<Vec<Rational>, CoreError> {
-        let expected = || {
-            if self.params.is_empty() {
-                "none".to_string()
-            } else {
-                self.param_names().join(", ")
-            }
-        };
-        for (name, _) in pairs {
-            if !self
-                .params
-                .iter()
-                .any(|p| &p.name == name || &p.symbol == name)
-            {
-                return Err(CoreError::UnknownParameter {
-                    family: self.id.clone(),
-                    name: name.clone(),
-                    expected: expected(),
-                });
-            }
-        }
-        self.params
-            .iter()
-            .map(|spec| {
-                let (_, text) = pairs
-                    .iter()
-                    .rev()
-                    .find(|(n, _)| *n == spec.name || *n == spec.symbol)
-                    .ok_or_else(|| CoreError::MissingParameter {
-                        family: self.id.clone(),
-                        name: spec.name.clone(),
-                    })?;
-                let value = parse_exact(text)?;
-                if !allow_outside && !spec.range.contains(&value) {
-                    return Err(CoreError::OutOfRange {
-                        family: self.id.clone(),
-                        name: spec.name.clone(),
-                        value: text.clone(),
-                        range: spec.range.to_string(),
-                    });
-                }
-                Ok(value)
-            })
-            .collect()
-    }
-
     /// Every function at a point of the native variable, with typed errors
     /// for points outside the domain (unless `allow_outside`) and for
     /// non-finite results.
@@ -158,22 +132,7 @@ impl Spec {
         p: &[Rational],
         allow_outside: bool,
     ) -> Result<Vec<T>, CoreError> {
-        if p.len() != self.params.len() {
-            return Err(CoreError::Count {
-                what: format!("parameters of `{}`", self.id),
-                expected: self.params.len(),
-                got: p.len(),
-            });
-        }
-        let params: Vec<T> = p.iter().map(|q| x.rational(q)).collect();
-        self.domain.check_point(x, &params, allow_outside)?;
-        let values = Basis::eval(self, &self.domain.atoms(x), &params);
-        if values.iter().any(|v| !v.is_finite()) {
-            return Err(CoreError::DivisionByZero {
-                quantity: format!("`{}` at this point", self.id),
-            });
-        }
-        Ok(values)
+        trig_core::basis::eval_at(self, x, p, allow_outside)
     }
 
     /// The functions as exact values with the parameters as symbols.

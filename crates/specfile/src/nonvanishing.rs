@@ -27,7 +27,7 @@ use trig_certify::{ParamBox, standardize};
 use trig_core::Domain;
 use trig_symbolic::Sym;
 
-use crate::range::SpecRange;
+use trig_core::ParamRange;
 
 /// The name `π` takes while it is bounded as a parameter.
 const PI_VAR: &str = "__pi";
@@ -44,12 +44,12 @@ fn interval_sign(
     d: &Sym,
     n: &Sym,
     domain: &Domain,
-    params: &[(String, SpecRange)],
+    params: &[(String, ParamRange)],
 ) -> Result<(), String> {
     let axes = params
         .iter()
         .map(|(name, r)| {
-            r.to_axis().ok_or_else(|| {
+            trig_certify::branch::Axis::from_range(r).ok_or_else(|| {
                 format!("division by `{d}`: the range of {name} is unbounded; the interval method needs bounded ranges")
             })
         })
@@ -97,7 +97,7 @@ fn at(domain: &Domain, x: f64, params: &[Rational]) -> String {
 }
 
 /// `Ok` when `d` cannot vanish; otherwise why (with a witness).
-pub fn check(d: &Sym, domain: &Domain, params: &[(String, SpecRange)]) -> Result<(), String> {
+pub fn check(d: &Sym, domain: &Domain, params: &[(String, ParamRange)]) -> Result<(), String> {
     let n = Sym::from_poly(d.numerator().clone());
     if let Some(q) = n.as_rational() {
         return if q == 0 {
@@ -136,11 +136,11 @@ pub fn check(d: &Sym, domain: &Domain, params: &[(String, SpecRange)]) -> Result
 /// bound of `exp(q)` rounded outward (a larger set, so no root there is a
 /// proof); Sturm sequences count the roots, `∞` replaced by the roots'
 /// bound.
-fn exp_polynomial_nonzero(n: &Sym, params: &[(String, SpecRange)]) -> bool {
-    use crate::range::End;
+fn exp_polynomial_nonzero(n: &Sym, params: &[(String, ParamRange)]) -> bool {
     use rug::Float;
     use rug::float::Round;
     use trig_certify::sturm::UPoly;
+    use trig_core::End;
     let vars = n.variables();
     let [v] = vars.iter().collect::<Vec<_>>()[..] else {
         return false;
@@ -199,7 +199,7 @@ fn check_factor(
     d: &Sym,
     n: &Sym,
     domain: &Domain,
-    params: &[(String, SpecRange)],
+    params: &[(String, ParamRange)],
 ) -> Result<(), String> {
     if n.numerator().len() == 1 && n.variables().iter().all(|v| positive_atom(v)) {
         return Ok(());
@@ -220,7 +220,7 @@ fn check_factor(
         let mut boxes: Vec<(&str, ParamBox)> = params
             .iter()
             .filter(|(name, _)| piece.variables().contains(name))
-            .map(|(name, r)| (name.as_str(), r.to_box()))
+            .map(|(name, r)| (name.as_str(), trig_certify::ParamBox::from_range(r)))
             .collect();
         if piece.variables().contains(PI_VAR) {
             boxes.push((
@@ -260,8 +260,8 @@ mod tests {
         Domain::from_variable(x, &[])
     }
 
-    fn range(text: &str) -> SpecRange {
-        SpecRange::parse(text).unwrap()
+    fn range(text: &str) -> ParamRange {
+        ParamRange::parse(text).unwrap()
     }
 
     #[test]

@@ -17,6 +17,8 @@ pub struct RawSpec {
     pub variable: Spanned<String>,
     pub domain: Option<Spanned<String>>,
     #[serde(default)]
+    pub piecewise: bool,
+    #[serde(default)]
     pub parameters: Vec<RawParam>,
     #[serde(default)]
     pub definitions: Vec<RawFunction>,

@@ -7,7 +7,7 @@ use std::collections::BTreeMap;
 
 use rug::Rational;
 use toml::Spanned;
-use trig_core::{Affine, Domain, Variable};
+use trig_core::{Affine, Domain, Parameter, Variable};
 use trig_symbolic::Sym;
 
 use crate::ast::{self, Expr};
@@ -16,22 +16,9 @@ use crate::error::{FormulaError, Result, SpecError};
 use crate::formula::{Scope, linear, lower};
 use crate::frequencies::{Usage, domain};
 use crate::nonvanishing;
-use crate::range::SpecRange;
 use crate::raw::{RawFunction, RawSpec};
 use crate::source::Source;
-
-/// A shape parameter.
-#[derive(Debug, Clone, PartialEq)]
-pub struct SpecParam {
-    /// ASCII name (symbol name in the exact ring, `--param NAME=…`).
-    pub name: String,
-    /// The symbol the source prints.
-    pub symbol: String,
-    /// The published range.
-    pub range: SpecRange,
-    /// Where the range is stated.
-    pub source: String,
-}
+use trig_core::ParamRange;
 
 /// One basis function or definition.
 #[derive(Debug, Clone, PartialEq)]
@@ -61,11 +48,31 @@ pub struct Spec {
     /// For the legacy trigonometric variables, `k` with the declared angle
     /// `= k·ω`: the shorthands `s`, `c` are its sine and cosine.
     pub shorthand: Option<i64>,
-    pub params: Vec<SpecParam>,
+    /// The functions are the segments of a uniform B-spline basis function
+    /// (piece `k` is function `n − 1 − k`), as the file declares.
+    pub piecewise: bool,
+    pub params: Vec<Parameter>,
     /// Helper definitions (not basis functions).
     pub definitions: Vec<SpecFunction>,
     pub functions: Vec<SpecFunction>,
     pub claims: Vec<SpecClaim>,
+}
+
+/// The additive terms of `e` with their signs: `a − (b + c)` is `+a`,
+/// `−b`, `−c`.
+fn additive_terms<'e>(e: &'e Expr, negated: bool, out: &mut Vec<(bool, &'e Expr)>) {
+    match &e.node {
+        ast::Node::Add(a, b) => {
+            additive_terms(a, negated, out);
+            additive_terms(b, negated, out);
+        }
+        ast::Node::Sub(a, b) => {
+            additive_terms(a, negated, out);
+            additive_terms(b, !negated, out);
+        }
+        ast::Node::Neg(a) => additive_terms(a, !negated, out),
+        _ => out.push((negated, e)),
+    }
 }
 
 /// Names a parameter, function or definition may not take.
@@ -144,7 +151,7 @@ impl Spec {
         &self,
         text: &str,
         extra: &[String],
-        extra_ranges: &[(String, SpecRange)],
+        extra_ranges: &[(String, ParamRange)],
     ) -> std::result::Result<(Sym, Vec<String>), FormulaError> {
         let mut ranges = self.ranges();
         ranges.extend(extra_ranges.iter().cloned());
@@ -158,9 +165,48 @@ impl Spec {
         Ok((value, singular.into_inner()))
     }
 
+    /// A printed claim formula `(t₁ ± t₂ ± …)/d` as printed: its additive
+    /// terms (signs included) and its denominator (`1` when there is none),
+    /// each exact — so that a sign typo in one printed term can be named.
+    pub fn printed_terms(
+        &self,
+        text: &str,
+        extra: &[String],
+    ) -> std::result::Result<(Vec<Sym>, Sym), FormulaError> {
+        let e = ast::parse(text)?;
+        let (num, den) = match &e.node {
+            ast::Node::Div(a, b) => (a.as_ref(), Some(b.as_ref())),
+            _ => (&e, None),
+        };
+        let mut terms = Vec::new();
+        additive_terms(num, false, &mut terms);
+        let accept = |_: &Sym| Ok(());
+        let lowered = terms
+            .into_iter()
+            .map(|(negated, t)| {
+                let v = self.lower_with(t, extra, &accept)?;
+                Ok(if negated { -v } else { v })
+            })
+            .collect::<std::result::Result<Vec<Sym>, FormulaError>>()?;
+        let den = match den {
+            Some(d) => self.lower_with(d, extra, &accept)?,
+            None => Sym::one(),
+        };
+        Ok((lowered, den))
+    }
+
     fn parse_with(
         &self,
         text: &str,
+        extra: &[String],
+        divisor: &dyn Fn(&Sym) -> std::result::Result<(), String>,
+    ) -> std::result::Result<Sym, FormulaError> {
+        self.lower_with(&ast::parse(text)?, extra, divisor)
+    }
+
+    fn lower_with(
+        &self,
+        e: &Expr,
         extra: &[String],
         divisor: &dyn Fn(&Sym) -> std::result::Result<(), String>,
     ) -> std::result::Result<Sym, FormulaError> {
@@ -172,9 +218,8 @@ impl Spec {
                 .find(|(m, _)| m == n)
                 .map(|(_, v)| Ok(v.clone()))
         };
-        let e = ast::parse(text)?;
         lower(
-            &e,
+            e,
             &Scope {
                 domain: &self.domain,
                 var_name: &self.var_name,
@@ -203,7 +248,7 @@ impl Spec {
     }
 
     /// The declared parameter ranges by name.
-    pub fn ranges(&self) -> Vec<(String, SpecRange)> {
+    pub fn ranges(&self) -> Vec<(String, ParamRange)> {
         self.params
             .iter()
             .map(|p| (p.name.clone(), p.range.clone()))
@@ -236,7 +281,7 @@ fn domain_ends(
     src: &Source<'_>,
     field: &Spanned<String>,
     params: &[(String, String)],
-    ranges: &[SpecRange],
+    ranges: &[ParamRange],
 ) -> Result<(Affine, Affine)> {
     let text = field.get_ref().trim();
     let expected = "expected `[a, b]` with ends in numbers, pi and the parameters (e.g. [0, alpha], [-pi/2, pi/2])";
@@ -273,7 +318,7 @@ fn domain_ends(
 /// corners of the box, with `π ∈ (3.14159, 3.14160)`; a corner at an open
 /// end may give `0`, which is not attained; an unbounded parameter must
 /// not occur).
-fn positive_on(l: &Affine, ranges: &[SpecRange]) -> bool {
+fn positive_on(l: &Affine, ranges: &[ParamRange]) -> bool {
     let (pi_lo, pi_hi) = (
         Rational::from((314_159, 100_000)),
         Rational::from((314_160, 100_000)),
@@ -292,7 +337,7 @@ fn positive_on(l: &Affine, ranges: &[SpecRange]) -> bool {
             contribution *= if contribution >= 0 { &pi_lo } else { &pi_hi };
         }
         least += contribution;
-        open |= matches!(worst, crate::range::End::Open(_));
+        open |= matches!(worst, trig_core::End::Open(_));
     }
     least > 0 || (least == 0 && open)
 }
@@ -331,7 +376,7 @@ fn build(src: &Source<'_>, raw: RawSpec) -> Result<Spec> {
         .iter()
         .map(|p| (p.name.clone(), p.symbol.clone()))
         .collect();
-    let ranges: Vec<SpecRange> = params.iter().map(|p| p.range.clone()).collect();
+    let ranges: Vec<ParamRange> = params.iter().map(|p| p.range.clone()).collect();
     let (ends, declared) = match (legacy, &raw.domain) {
         (Some(v), None) => {
             let d = Domain::from_variable(v, &[]);
@@ -401,6 +446,7 @@ fn build(src: &Source<'_>, raw: RawSpec) -> Result<Spec> {
         legacy,
         var_name,
         shorthand,
+        piecewise: raw.piecewise,
         params,
         definitions: Vec::new(),
         functions: Vec::new(),
@@ -434,8 +480,8 @@ fn build(src: &Source<'_>, raw: RawSpec) -> Result<Spec> {
     Ok(spec)
 }
 
-fn read_params(src: &Source<'_>, raw: &RawSpec, var_name: &str) -> Result<Vec<SpecParam>> {
-    let mut params: Vec<SpecParam> = Vec::new();
+fn read_params(src: &Source<'_>, raw: &RawSpec, var_name: &str) -> Result<Vec<Parameter>> {
+    let mut params: Vec<Parameter> = Vec::new();
     if raw.parameters.len() > MAX_PARAMS {
         return src.invalid(
             raw.parameters[MAX_PARAMS].name.span(),
@@ -456,9 +502,9 @@ fn read_params(src: &Source<'_>, raw: &RawSpec, var_name: &str) -> Result<Vec<Sp
                 ),
             );
         }
-        let range = SpecRange::parse(p.range.get_ref())
+        let range = ParamRange::parse(p.range.get_ref())
             .or_else(|m| src.invalid(p.range.span(), "parameters.range", m))?;
-        params.push(SpecParam {
+        params.push(Parameter {
             symbol: p.symbol.clone().unwrap_or_else(|| name.clone()),
             name,
             range,
@@ -558,7 +604,7 @@ struct Lowerer<'a> {
     index: BTreeMap<&'a str, usize>,
     states: RefCell<Vec<State>>,
     params: Vec<(String, String)>,
-    ranges: Vec<(String, SpecRange)>,
+    ranges: Vec<(String, ParamRange)>,
 }
 
 impl Lowerer<'_> {

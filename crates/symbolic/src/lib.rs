@@ -58,7 +58,7 @@ pub use error::SymError;
 pub use factor::{Factored, FactoredQuotient};
 pub use monomial::Monomial;
 pub use poly::Poly;
-pub use print::sympy_symbols;
+pub use print::{Style, sympy_symbols};
 pub use ring::symbolic_atoms;
 pub use sym::Sym;
 pub use var::Var;

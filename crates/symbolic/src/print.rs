@@ -23,11 +23,15 @@
 //! Names: plain text prints them as given. Unicode and LaTeX render the
 //! Greek names (`alpha, beta, eta, lambda, mu, omega, pi, theta, xi, zeta`)
 //! as letters and trailing digits as subscripts (`w0` → `w₀`, `w_{0}`);
-//! LaTeX sets other multi-letter names in `\mathrm{…}`.
+//! LaTeX sets other multi-letter names in `\mathrm{…}`. The names and the
+//! LaTeX pieces are the one LaTeX writer's ([`trig_tex::symbols::greek`],
+//! [`trig_tex::expr`]).
 
 use std::fmt;
 
 use rug::{Integer, Rational};
+use trig_tex::expr as tex;
+use trig_tex::symbols::greek;
 
 use crate::factor::FactoredQuotient;
 use crate::monomial::Monomial;
@@ -35,42 +39,46 @@ use crate::poly::Poly;
 use crate::sym::Sym;
 use crate::var::split_digits;
 
-#[derive(Clone, Copy, PartialEq, Eq)]
-enum Style {
+/// The four text forms of an expression. The LaTeX pieces (names, powers,
+/// fractions) come from the one LaTeX writer, [`trig_tex::expr`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Style {
+    /// Plain ASCII (`*`, `^`), as `Display` prints.
     Plain,
+    /// Greek letters, superscript exponents, `·`, `−`.
     Unicode,
+    /// LaTeX math (without `$`).
     Latex,
+    /// SymPy syntax (see the [module documentation](self)).
     Sympy,
 }
-
-/// Greek names: (name, Unicode, LaTeX).
-const GREEK: [(&str, &str, &str); 10] = [
-    ("alpha", "α", r"\alpha"),
-    ("beta", "β", r"\beta"),
-    ("eta", "η", r"\eta"),
-    ("lambda", "λ", r"\lambda"),
-    ("mu", "μ", r"\mu"),
-    ("omega", "ω", r"\omega"),
-    ("pi", "π", r"\pi"),
-    ("theta", "θ", r"\theta"),
-    ("xi", "ξ", r"\xi"),
-    ("zeta", "ζ", r"\zeta"),
-];
 
 const SUPERSCRIPTS: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
 const SUBSCRIPTS: [char; 10] = ['₀', '₁', '₂', '₃', '₄', '₅', '₆', '₇', '₈', '₉'];
 
 impl Style {
-    fn minus(self) -> &'static str {
+    /// The minus sign.
+    pub fn minus(self) -> &'static str {
         if self == Style::Unicode { "−" } else { "-" }
     }
 
-    fn times(self) -> &'static str {
+    /// The sign of a product.
+    pub fn times(self) -> &'static str {
         match self {
             Style::Plain | Style::Sympy => "*",
             Style::Unicode => "·",
             Style::Latex => " ",
         }
+    }
+
+    /// `x` in this style.
+    pub fn sym(self, x: &Sym) -> String {
+        sym(x, self)
+    }
+
+    /// A factored quotient in this style.
+    pub fn factored(self, f: &FactoredQuotient) -> String {
+        factored(f, self)
     }
 }
 
@@ -123,24 +131,12 @@ fn name(n: &str, style: Style) -> String {
     if style == Style::Plain || prefix.is_empty() {
         return n.to_string();
     }
-    let greek = GREEK.iter().find(|(g, _, _)| *g == prefix);
     match style {
         Style::Unicode => {
-            let base = greek.map_or(prefix, |(_, u, _)| u);
+            let base = greek(prefix).map_or_else(|| prefix.to_string(), String::from);
             format!("{base}{}", digits_in(&SUBSCRIPTS, digits))
         }
-        _ => {
-            let base = match greek {
-                Some((_, _, l)) => (*l).to_string(),
-                None if prefix.chars().count() == 1 => prefix.to_string(),
-                None => format!(r"\mathrm{{{prefix}}}"),
-            };
-            if digits.is_empty() {
-                base
-            } else {
-                format!("{base}_{{{digits}}}")
-            }
-        }
+        _ => tex::name(prefix, digits),
     }
 }
 
@@ -150,7 +146,7 @@ fn power(base: String, e: u32, style: Style) -> String {
         (_, Style::Plain) => format!("{base}^{e}"),
         (_, Style::Sympy) => format!("{base}**{e}"),
         (_, Style::Unicode) => format!("{base}{}", digits_in(&SUPERSCRIPTS, &e.to_string())),
-        (_, Style::Latex) => format!("{base}^{{{e}}}"),
+        (_, Style::Latex) => tex::power(&base, e),
     }
 }
 
@@ -165,7 +161,7 @@ fn monomial(m: &Monomial, style: Style) -> String {
 /// A nonnegative rational coefficient.
 fn coefficient(q: &Rational, style: Style) -> String {
     if style == Style::Latex && *q.denom() != 1 {
-        format!(r"\frac{{{}}}{{{}}}", q.numer(), q.denom())
+        tex::frac(&q.numer().to_string(), &q.denom().to_string())
     } else {
         q.to_string()
     }
@@ -238,9 +234,9 @@ fn sym(x: &Sym, style: Style) -> String {
     if style == Style::Latex {
         let negative = n.len() == 1 && n.leading_term().is_some_and(|(_, q)| *q < 0);
         return if negative {
-            format!(r"-\frac{{{}}}{{{den}}}", poly(&-n, style))
+            format!("-{}", tex::frac(&poly(&-n, style), &den))
         } else {
-            format!(r"\frac{{{}}}{{{den}}}", poly(&n, style))
+            tex::frac(&poly(&n, style), &den)
         };
     }
     let num = if n.len() > 1 {
@@ -326,7 +322,7 @@ fn factored(f: &FactoredQuotient, style: Style) -> String {
     let several = den.len() > 1;
     let den = den.join(style.times());
     match style {
-        Style::Latex => format!(r"{sign}\frac{{{num}}}{{{den}}}"),
+        Style::Latex => format!("{sign}{}", tex::frac(&num, &den)),
         _ if several => format!("{sign}{num}/({den})"),
         _ => format!("{sign}{num}/{den}"),
     }

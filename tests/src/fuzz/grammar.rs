@@ -9,7 +9,7 @@ use std::path::PathBuf;
 use proptest::prelude::*;
 use proptest::strategy::BoxedStrategy;
 use rug::Rational;
-use trig_core::{Basis as _, Domain, Family};
+use trig_core::{Described as _, Domain, Family};
 use trig_specfile::Spec;
 
 /// What the oracle can check beyond "no panic, no hang, one-line errors".

@@ -213,7 +213,7 @@ fn load(subject: &Subject) -> Option<(Option<Family>, Option<Spec>)> {
 }
 
 fn names_of(family: Option<Family>, spec: Option<&Spec>) -> (Vec<String>, Vec<String>) {
-    use trig_core::Basis;
+    use trig_core::Described;
     match (family, spec) {
         (Some(f), _) => (f.param_names(), f.function_names()),
         (None, Some(s)) => (s.param_names(), s.function_names()),

@@ -10,7 +10,8 @@ use super::range::{EndPoint, MaximalRange, Outside, certify_all, maximal_range};
 use crate::evidence::EvidenceList;
 use crate::evidence::{Evidence, Kind, Witness};
 use crate::exact::basis;
-use crate::verdict::{Status, Verdict};
+use crate::status::Status;
+use crate::verdict::Verdict;
 use crate::witness::witness;
 
 /// How nonnegativity is decided, as the report states it.

@@ -15,7 +15,8 @@ use trig_core::Family;
 use trig_symbolic::{Poly, Sym};
 
 use super::sturm::UPoly;
-use crate::verdict::{Status, Verdict};
+use crate::status::Status;
+use crate::verdict::Verdict;
 use trig_certify::{describe_z, in_z};
 
 /// How maxima are counted, as the report states it.

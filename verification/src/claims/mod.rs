@@ -11,6 +11,7 @@ mod seed000_appendix_print;
 mod seed002;
 mod seed003;
 mod seed004;
+mod seed004_joins;
 mod thesis;
 mod thesis_interp;
 mod thesis_joins;
@@ -30,6 +31,7 @@ pub fn all() -> Vec<Claim> {
         seed002::CLAIMS,
         seed003::CLAIMS,
         seed004::CLAIMS,
+        seed004_joins::CLAIMS,
     ]
     .concat()
 }

@@ -12,7 +12,8 @@ use super::seed000_appendix_c::{NONUNIFORM_J, nonuniform_knots};
 use crate::certify::evidence::nonnegative_on;
 use crate::claim::{Claim, Seed};
 use crate::exact::{IDENTITY, basis, identities, residual_verdict, sum};
-use crate::verdict::{Status, Verdict};
+use crate::status::Status;
+use crate::verdict::Verdict;
 use trig_certify::ParamBox;
 
 pub const CLAIMS: &[Claim] = &[

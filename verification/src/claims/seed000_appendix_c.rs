@@ -9,14 +9,15 @@ use trig_core::Family;
 use trig_deriv::{End, Wrt, endpoint_derivatives};
 use trig_symbolic::Sym;
 
-use super::seed000_appendix_print::{Formula, printed_part, zeta};
+use super::seed000_appendix_print::{printed_part, zeta};
 use crate::claim::{Claim, Seed, shared};
 use crate::continuity::{
-    self, ContinuityError, KnotContinuity, METHOD, achieved, curve_end, nonuniform_bspline,
-    uniform_bspline,
+    self, KnotContinuity, METHOD, curve_end, nonuniform_bspline, uniform_bspline,
 };
 use crate::exact::{IDENTITY, symbols};
-use crate::verdict::{Status, Verdict};
+use crate::judge::continuity::at_least;
+use crate::status::Status;
+use crate::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[
     Claim {
@@ -192,7 +193,7 @@ fn m5() -> Verdict {
             parts.push(printed_part(
                 format!("F_j^({r})({at})"),
                 text,
-                &Formula::parse(text),
+                &[],
                 &computed[r],
             ));
         }
@@ -338,11 +339,10 @@ fn appendix_d(lines: impl Iterator<Item = DLine>, label: impl Fn(&DLine) -> Stri
         match line.garbled {
             None => {
                 let at = usize::from(line.end == End::End);
-                let printed = Formula::parse(line.text);
                 parts.push(printed_part(
                     label(&line),
                     line.text,
-                    &printed,
+                    &[],
                     &computed[at][line.order],
                 ));
             }
@@ -374,36 +374,6 @@ fn m9b() -> Verdict {
             .filter(|l| l.garbled.is_some())
             .map(|l| DLine { garbled: None, ..l }),
         |l| format!("{} read as T''(n_{{j+1}}^-)", l.label),
-    )
-}
-
-/// One line per knot, and the verdict "at least C^r at every knot".
-fn at_least(label: &str, knots: &[KnotContinuity], r: usize, param: Option<&str>) -> Verdict {
-    let evidence: Vec<crate::evidence::Evidence> = knots
-        .iter()
-        .map(|k| {
-            let item = k.describe(param);
-            if k.smoothness.is_at_least(r) {
-                item
-            } else {
-                item.witnessed(k.witness())
-            }
-        })
-        .collect();
-    let ok = knots.iter().all(|k| k.smoothness.is_at_least(r));
-    let mut evidence = evidence;
-    evidence.insert(
-        0,
-        format!(
-            "{label}: achieved for all parameter values: {}",
-            achieved(knots).map_or("no knots".into(), |s| s.to_string())
-        )
-        .into(),
-    );
-    Verdict::new(
-        if ok { Status::Holds } else { Status::Fails },
-        METHOD,
-        evidence,
     )
 }
 
@@ -439,8 +409,7 @@ fn c5_except_one(label: &str, knots: &[KnotContinuity]) -> Verdict {
 }
 
 fn uniform_basis() -> Vec<KnotContinuity> {
-    let pieces =
-        uniform_bspline(Family::Seed000Uniform, &[zeta()]).expect("seed000-uniform is piecewise");
+    let pieces = uniform_bspline(&Family::Seed000Uniform, &[zeta()]);
     continuity::continuity(&pieces, true, Some("zeta"))
 }
 
@@ -506,7 +475,7 @@ fn m4() -> Verdict {
                 3,
                 Some("zeta"),
             ),
-            Err(e) => Verdict::not_checkable(e.to_string()),
+            Err(e) => Verdict::not_checkable(format!("the construction is undefined: {e}")),
         },
     ));
     Verdict::all(METHOD, parts)
@@ -557,10 +526,9 @@ fn m4b() -> Verdict {
                         }),
                     )
                 }
-                Err(ContinuityError::Construction(e)) => Verdict::not_checkable(format!(
+                Err(e) => Verdict::not_checkable(format!(
                     "the printed construction (2)–(3) is undefined at coincident knots: {e}"
                 )),
-                Err(e) => Verdict::not_checkable(e.to_string()),
             };
             parts.push((label, v));
         }
@@ -594,7 +562,7 @@ fn m8() -> Verdict {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::claims::seed000_appendix_print::compare;
+    use crate::claims::seed000_appendix_print::{compare, read};
     use crate::continuity::Smoothness;
 
     #[test]
@@ -635,7 +603,7 @@ mod tests {
         assert!(line("T_j'''(n_j^+)").contains(": fails"));
         assert!(line("T_{j+1}''(n_j^-)").contains(": not-checkable — garbled label"));
         assert_eq!(m9b().status, Status::Holds);
-        let want = Formula::parse("(pi/2)^3 (2S - 5)[d S0 + (b0 - b2)S1 + (c0 - c2)S2]");
+        let want = read("(pi/2)^3 (2S - 5)[d S0 + (b0 - b2)S1 + (c0 - c2)S2]", &[]).unwrap();
         assert_eq!(
             compare(&want, &curve_at(End::Start)[3]).status,
             Status::Holds

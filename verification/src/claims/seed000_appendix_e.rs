@@ -16,7 +16,7 @@ use trig_deriv::table::{end_atoms, rate};
 use trig_deriv::{End, Jet, Wrt};
 use trig_symbolic::Sym;
 
-use super::seed000_appendix_print::{Formula, printed_part, zeta};
+use super::seed000_appendix_print::{Shorthand, printed_part, zeta};
 use crate::claim::{Claim, Seed};
 use crate::continuity::quotient_derivatives;
 use crate::exact::{IDENTITY, symbols};
@@ -171,26 +171,22 @@ fn uniform() -> &'static [Vec<Vec<Sym>>] {
 type Entry = (&'static str, usize, usize, usize, String);
 
 /// The shorthands of Appendix E, substituted after reading a print.
-fn shorthands(e: Formula) -> Formula {
-    let defs = [
-        (
-            "A",
-            "S d w0 + [S(b0 + b2) + 4(S + 1)b1]w1 + [S(c0 + c2) + 4(S + 1)c1]w2",
-        ),
-        (
-            "B",
-            "[S(b1 + b3) + 4(S + 1)b2]w1 + [S(c1 + c3) + 4(S + 1)c2]w2 + S a w3",
-        ),
-        ("J", "d w0 + (b0 - 2b1 + b2)w1 + (c0 - 2c1 + c2)w2"),
-        ("M", "-d w0 + (b2 - b0)w1 + (c2 - c0)w2"),
-        ("K", "(b1 - 2(b2) + b3)w1 + (c1 - 2(c2) + c3)w2 + a w3"),
-        ("L", "(b3 - b1)w1 + (c3 - c1)w2 + a w3"),
-        ("g", "2(2S - 5)"),
-        ("e", "(1 + 2S)^3"),
-    ];
-    defs.iter()
-        .fold(e, |acc, (name, text)| acc.with(name, &Formula::parse(text)))
-}
+const SHORTHANDS: [Shorthand; 8] = [
+    (
+        "A",
+        "S d w0 + [S(b0 + b2) + 4(S + 1)b1]w1 + [S(c0 + c2) + 4(S + 1)c1]w2",
+    ),
+    (
+        "B",
+        "[S(b1 + b3) + 4(S + 1)b2]w1 + [S(c1 + c3) + 4(S + 1)c2]w2 + S a w3",
+    ),
+    ("J", "d w0 + (b0 - 2b1 + b2)w1 + (c0 - 2c1 + c2)w2"),
+    ("M", "-d w0 + (b2 - b0)w1 + (c2 - c0)w2"),
+    ("K", "(b1 - 2(b2) + b3)w1 + (c1 - 2(c2) + c3)w2 + a w3"),
+    ("L", "(b3 - b1)w1 + (c3 - c1)w2 + a w3"),
+    ("g", "2(2S - 5)"),
+    ("e", "(1 + 2S)^3"),
+];
 
 fn decide(entries: &[Entry], table: &[Vec<Vec<Sym>>], preamble: &str) -> Verdict {
     let ends = ["n_j^+", "n_{j+1}^-"];
@@ -198,12 +194,7 @@ fn decide(entries: &[Entry], table: &[Vec<Vec<Sym>>], preamble: &str) -> Verdict
         .iter()
         .map(|(eq, i, end, order, text)| {
             let label = format!("{eq} Q_{i}{}({}) H_{i}", "'".repeat(*order), ends[*end]);
-            printed_part(
-                label,
-                text,
-                &shorthands(Formula::parse(text)),
-                &table[*end][*i][*order],
-            )
+            printed_part(label, text, &SHORTHANDS, &table[*end][*i][*order])
         })
         .collect();
     let mut v = Verdict::all(IDENTITY, parts);
@@ -635,7 +626,7 @@ fn m15() -> Verdict {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::verdict::Status;
+    use crate::status::Status;
 
     #[test]
     fn printed_values_that_are_right_hold_and_wrong_ones_fail() {

@@ -14,7 +14,8 @@ use crate::exact::{
     IDENTITY, basis, combination, identities, identity, linear_map_parts, reflect, sum, symbols,
     symmetry,
 };
-use crate::verdict::{Status, Verdict};
+use crate::status::Status;
+use crate::verdict::Verdict;
 use trig_certify::ParamBox;
 
 pub const CLAIMS: &[Claim] = &[

@@ -8,7 +8,8 @@ use trig_symbolic::Sym;
 use crate::claim::{Claim, Seed};
 use crate::evidence::EvidenceList;
 use crate::exact::IDENTITY;
-use crate::verdict::{Status, Verdict};
+use crate::status::Status;
+use crate::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[
     Claim {

@@ -17,7 +17,8 @@ use crate::exact::{
     at_end, basis, combination, identities, identity, residual_verdict, sum, symbols, symmetry,
 };
 use crate::numeric::{counterexample_item, differ, half_pi_minus, point, show, value};
-use crate::verdict::{Status, Verdict};
+use crate::status::Status;
+use crate::verdict::Verdict;
 use trig_certify::ParamBox;
 
 /// A claim of the thesis (seed 001); shared by the thesis claim files.

@@ -20,7 +20,8 @@ use super::thesis::claim;
 use crate::claim::Claim;
 use crate::evidence::{Evidence, EvidenceList};
 use crate::exact::{IDENTITY, identities};
-use crate::verdict::{Status, Verdict};
+use crate::status::Status;
+use crate::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[
     claim(

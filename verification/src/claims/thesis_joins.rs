@@ -21,8 +21,9 @@ use trig_symbolic::Sym;
 use super::thesis::claim;
 use crate::claim::{Claim, shared};
 use crate::exact::{identities, symbols};
-use crate::joins::{Printed, PrintedJoin, audit, audit_surface};
-use crate::verdict::{Status, Verdict};
+use crate::judge::join::{Printed, PrintedJoin, audit, audit_surface};
+use crate::status::Status;
+use crate::verdict::Verdict;
 
 mod cylinder;
 
@@ -181,21 +182,19 @@ fn c0() -> Printed {
 
 /// A thesis curve join: `(m, m)` for Condition 1, the text's `(m2, m1)`
 /// (first curve `m2`, second `m1`) for Condition 2.
-fn thesis_join(kind: JoinKind, same: bool, printed: Vec<Printed>) -> PrintedJoin {
+fn thesis_join(kind: JoinKind, same: bool, printed: Vec<Printed>) -> PrintedJoin<Family> {
     let (first, second) = if same {
         (v("m"), v("m"))
     } else {
         (v("m2"), v("m1"))
     };
-    PrintedJoin {
-        family: Family::ThesisCubic,
+    PrintedJoin::new(
+        Family::ThesisCubic,
         kind,
-        first_params: vec![first],
-        second_params: vec![second],
-        first: symbols("P", 4),
-        second: (4..8).map(p).collect(),
+        (vec![first], vec![second]),
+        (symbols("P", 4), (4..8).map(p).collect()),
         printed,
-    }
+    )
 }
 
 fn c1_same() -> Printed {
@@ -367,7 +366,7 @@ fn surface(kind: JoinKind, same: bool, printed: Vec<Printed>) -> Verdict {
         second_params: vec![v("m2")],
         ..join.clone()
     };
-    let holds = crate::joins::holds_in_angle(&literal);
+    let holds = crate::judge::join::holds_as_printed(&literal);
     verdict.evidence.push(format!(
         "decided with the proofs' convention (5.20)–(5.22): cross-boundary parameter m₁ (= m₁*) for S₂ and m₂ for S₁; read literally, (5.11) gives both patches the cross-boundary parameter m₂ = m₂*, and under that reading the printed formula {} in the angle convention",
         if holds { "holds" } else { "fails" }
@@ -594,7 +593,7 @@ fn t39() -> Verdict {
         for same in [true, false] {
             let join = thesis_join(kind, same, vec![]);
             let setup = trig_deriv::JoinSetup {
-                basis: join.family,
+                basis: join.basis,
                 first_params: &join.first_params,
                 second_params: &join.second_params,
                 wrt: Wrt::Angle,

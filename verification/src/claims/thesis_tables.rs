@@ -24,7 +24,8 @@ use rug::{Integer, Rational};
 use crate::claim::{Claim, Seed};
 use crate::evidence::EvidenceList;
 use crate::evidence::{Evidence, Expr, Kind, Value, Witness};
-use crate::verdict::{Status, Verdict};
+use crate::status::Status;
+use crate::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[Claim {
     id: "T32",

@@ -11,7 +11,7 @@ use serde::{Deserialize, Serialize};
 
 use super::{Entry, View, counts, sections};
 use crate::evidence::{Evidence, Witness};
-use crate::verdict::Status;
+use crate::status::Status;
 
 /// The version of the report format (and of `docs/report.schema.json`).
 pub const SCHEMA_VERSION: &str = "1.1.0";

@@ -1,17 +1,17 @@
-//! The Markdown report: summary, index, then one section per document and
-//! one entry per claim; evidence nested by the parts of the claim.
-//! Expressions longer than [`LONG`] characters are summarised (degree,
-//! number of terms, a factored form when short) — the JSON report has them
-//! whole — and every failing check shows its witness.
+//! The Markdown report ([`Format`] for [`super::render`]): summary and
+//! index as tables, then one section per document and one entry per
+//! claim, evidence as a list nested by the parts of the claim. Expressions
+//! longer than [`LONG`] characters are summarised (degree, number of terms,
+//! a factored form when short) — the JSON report has them whole — and every
+//! failing check shows its witness.
 
 use std::fmt::Write;
 
-use super::{
-    Entry, PRINTED_LONG, View, counts, method_short, methods, printed_shown, sections, short,
-    size_text,
-};
-use crate::evidence::{Evidence, Expr, Part, Witness};
-use crate::verdict::Status;
+use super::render::{Format, Tally, anchor, point_text, render};
+use super::{Document, Entry, View, short};
+use crate::evidence::{Part, Witness};
+use crate::figures::Figure;
+use crate::status::Status;
 
 /// Expressions with more characters are summarised.
 pub const LONG: usize = 120;
@@ -33,329 +33,184 @@ fn code(text: &str) -> String {
     format!("`{}`", text.replace('`', "'"))
 }
 
-/// How an expression is shown where people read.
-pub(crate) enum Shown<'a> {
-    /// In full (the factored form when it is informative and not longer).
-    Full { unicode: &'a str, latex: &'a str },
-    /// Too long: its size, and the factored form when that is short.
-    Summary {
-        degree: u64,
-        terms: usize,
-        factored: Option<(&'a str, &'a str)>,
-    },
-}
-
-/// The form of `e` to show, given the longest form allowed.
-pub(crate) fn shown(e: &Expr, long: usize) -> Shown<'_> {
-    if e.best_unicode().chars().count() <= long {
-        return Shown::Full {
-            unicode: e.best_unicode(),
-            latex: e.best_latex(),
-        };
-    }
-    Shown::Summary {
-        degree: e.degree,
-        terms: e.terms,
-        factored: e
-            .factored
-            .as_ref()
-            .filter(|f| f.unicode.chars().count() <= long)
-            .map(|f| (f.unicode.as_str(), f.latex.as_str())),
-    }
-}
-
-fn expr_md(e: &Expr) -> String {
-    match shown(e, LONG) {
-        Shown::Full { unicode, .. } => code(unicode),
-        Shown::Summary {
-            degree,
-            terms,
-            factored,
-        } => {
-            let f = factored.map_or(String::new(), |u| format!(", factored {}", code(u.0)));
-            format!("[{}{f}; in full in JSON]", size_text(degree, terms))
-        }
-    }
-}
-
-/// The coordinates of a witness: the nonzero ones, then the zero ones as
-/// one chain `a = b = … = 0` (shorter, and as easy to check).
-pub(crate) fn point_text(
-    w: &Witness,
-    name: impl Fn(&crate::evidence::Assignment) -> String,
-    full: impl Fn(&crate::evidence::Assignment) -> String,
-) -> Vec<String> {
-    let (zero, other): (Vec<_>, Vec<_>) = w.point.iter().partition(|a| a.value == "0");
-    let mut out: Vec<String> = other.into_iter().map(&full).collect();
-    match zero.len() {
-        0 => {}
-        1 => out.push(full(zero[0])),
-        _ => out.push(format!(
-            "{} = 0",
-            zero.into_iter().map(name).collect::<Vec<_>>().join(" = ")
-        )),
-    }
-    out
-}
-
-/// A witness on one line.
-pub(crate) fn witness_md(w: &Witness) -> String {
-    let point = point_text(
-        w,
-        |a| a.name.clone(),
-        |a| format!("{} = {}", a.name, a.value),
-    );
-    let values: Vec<String> = w
-        .values
-        .iter()
-        .map(|v| format!("{} = {}", md_text(&v.label), expr_md(&v.value)))
-        .collect();
-    let note = w
-        .note
-        .as_ref()
-        .map_or(String::new(), |n| format!(" ({})", md_text(n)));
-    // exact unless marked (the report's opening says so)
-    let values = format!(
-        "{}{}",
-        values.join(", "),
-        if w.exact { "" } else { " (numeric)" }
-    );
-    if point.is_empty() && note.is_empty() {
-        values
-    } else if point.is_empty() {
-        format!("{}: {values}", note.trim_start())
-    } else {
-        format!("at {}{note}: {values}", code(&point.join(", ")))
-    }
-}
-
-/// One group of items ([`super::groups`]): subjects and status, prose,
-/// expressions, witness.
-fn item_md(group: &[Evidence], part: Option<&Part>, show_witness: bool) -> String {
-    let e = &group[0];
-    let mut out = String::new();
-    if e.subject
-        .as_deref()
-        .is_some_and(|s| part.is_none_or(|p| p.name != *s))
-    {
-        let subjects: Vec<String> = group
-            .iter()
-            .filter_map(|g| g.subject.as_deref())
-            .map(md_text)
-            .collect();
-        out.push_str(&subjects.join("; "));
-        if let Some(p) = e
-            .printed
-            .as_deref()
-            .filter(|_| e.status != Some(Status::Holds))
-        {
-            let _ = match printed_shown(p, LONG) {
-                Some(p) => write!(out, ", printed {}", code(p)),
-                None => write!(out, ", {PRINTED_LONG}"),
-            };
-        }
-        if let Some(st) = e.status {
-            let _ = write!(out, " — **{st}**");
-        }
-        if !e.text.is_empty() || !e.exprs.is_empty() {
-            out.push_str(": ");
-        }
-    } else if let (Some(st), Some(p)) = (e.status, part)
-        && p.status != st
-    {
-        let _ = write!(out, "**{st}**: ");
-    }
-    out.push_str(&md_text(&e.text));
-    for (i, l) in e.exprs.iter().enumerate() {
-        if i > 0 || !e.text.is_empty() {
-            out.push_str("; ");
-        }
-        let _ = write!(out, "{} = {}", md_text(&l.label), expr_md(&l.expr));
-    }
-    if show_witness && let Some(w) = &e.witness {
-        let _ = write!(out, "; witness {}", witness_md(w));
-    }
-    out
-}
-
-/// The evidence as a nested list under `- **Evidence:**`; `skip` is the
-/// item whose witness the entry already shows.
-fn evidence_md(out: &mut String, items: &[Evidence], skip: Option<&Evidence>) {
-    let mut path: Vec<&Part> = Vec::new();
-    for group in super::groups(items) {
-        let e = &group[0];
-        let common = path
-            .iter()
-            .zip(&e.parts)
-            .take_while(|(a, b)| **a == *b)
-            .count();
-        path.truncate(common);
-        for p in &e.parts[common..] {
-            let indent = "  ".repeat(path.len() + 1);
-            let _ = writeln!(out, "{indent}- **{}** — {}", md_text(&p.name), p.status);
-            path.push(p);
-        }
-        let indent = "  ".repeat(path.len() + 1);
-        let own = skip.is_none_or(|s| !std::ptr::eq(s, e));
-        let _ = writeln!(
-            out,
-            "{indent}- {}",
-            item_md(group, path.last().copied(), own)
-        );
-    }
-}
-
 /// The Markdown report: a summary (by verdict and by document), an index
 /// (one line per claim), then one section per document and one entry per
 /// claim — or, with [`View::summary_only`], the summary and index alone.
 pub fn markdown_entries(entries: &[Entry], intro: &str, view: &View) -> String {
-    let shown_entries = view.select(entries);
-    let mut out = String::new();
-    let _ = writeln!(out, "# trig-audit report\n");
-    let _ = writeln!(
-        out,
-        "{intro} Witness values are exact unless marked numeric. Long expressions are summarised here; the JSON report (`--format json`, schema `docs/report.schema.json`) gives every expression in full, in Unicode, LaTeX, SymPy syntax and factored form.\n"
-    );
-    if let Some(n) = view.note() {
-        let _ = writeln!(out, "{n}\n");
+    render(&Markdown, entries, intro, view)
+}
+
+/// The Markdown format of the report.
+struct Markdown;
+
+/// A table row: `| a | b |`.
+fn row<T: std::fmt::Display>(cells: impl IntoIterator<Item = T>) -> String {
+    let cells: Vec<String> = cells.into_iter().map(|c| c.to_string()).collect();
+    format!("| {} |", cells.join(" | "))
+}
+
+impl Format for Markdown {
+    const LONG: usize = LONG;
+    const EQUALS: &'static str = " = ";
+    const DASH: &'static str = " — ";
+    const NESTED: &'static str = " › ";
+
+    fn prose(&self, text: &str) -> String {
+        md_text(text)
     }
-    let _ = writeln!(out, "## Summary\n");
-    let _ = writeln!(
-        out,
-        "| document | claims | {} |",
-        Status::ALL.map(|s| s.label()).join(" | ")
-    );
-    let _ = writeln!(out, "|---|---|{}", "---|".repeat(Status::ALL.len()));
-    let all: Vec<&Entry> = entries.iter().collect();
-    for (doc, of_doc) in sections(&all) {
-        let c: Vec<String> = counts(of_doc.iter().copied())
-            .iter()
-            .map(|(_, k)| k.to_string())
-            .collect();
-        let _ = writeln!(out, "| {} | {} | {} |", doc.id, of_doc.len(), c.join(" | "));
+
+    fn printed(&self, formula: &str) -> String {
+        code(formula)
     }
-    let c: Vec<String> = counts(entries.iter())
-        .iter()
-        .map(|(_, k)| k.to_string())
-        .collect();
-    let _ = writeln!(out, "| **all** | {} | {} |\n", entries.len(), c.join(" | "));
-    // the short form shows what each claim says; the full report links to it
-    let _ = writeln!(out, "## Index\n");
-    if view.summary_only {
-        let _ = writeln!(out, "| claim | verdict | document | source | printed |");
-        let _ = writeln!(out, "|---|---|---|---|---|");
-    } else {
-        let _ = writeln!(out, "| claim | verdict | document | source |");
-        let _ = writeln!(out, "|---|---|---|---|");
+
+    fn strong(&self, text: &str) -> String {
+        format!("**{text}**")
     }
-    for e in &shown_entries {
-        if view.summary_only {
-            let _ = writeln!(
-                out,
-                "| {} | {} | {} | {} | {} |",
-                e.id,
-                e.verdict.status,
-                e.document.id,
-                md_text(&e.source),
-                md_text(&short(&e.statement, 90))
-            );
-        } else {
-            let _ = writeln!(
-                out,
-                "| [{}](#{}) | {} | {} | {} |",
-                e.id,
-                anchor(&e.id),
-                e.verdict.status,
-                e.document.id,
-                md_text(&e.source)
-            );
-        }
+
+    fn formula(&self, unicode: &str, _latex: &str) -> String {
+        code(unicode)
     }
-    out.push('\n');
-    if view.summary_only {
-        return out;
-    }
-    let methods = methods(&shown_entries);
-    let _ = writeln!(out, "## Methods\n");
-    for (k, m) in methods.iter().enumerate() {
-        let _ = writeln!(
-            out,
-            "{}. <a id=\"method-{}\"></a>{}",
-            k + 1,
-            k + 1,
-            md_text(m)
+
+    fn point(&self, w: &Witness) -> Option<String> {
+        let point = point_text(
+            w,
+            |a| a.name.clone(),
+            |a| format!("{} = {}", a.name, a.value),
         );
+        (!point.is_empty()).then(|| code(&point.join(", ")))
     }
-    out.push('\n');
-    for (doc, of_doc) in sections(&shown_entries) {
-        let _ = writeln!(out, "## {} — {}\n", doc.heading, md_text(&doc.title));
-        let _ = writeln!(out, "Source: `{}`\n", doc.location);
-        for e in of_doc {
-            let k = methods
-                .iter()
-                .position(|m| *m == e.verdict.method)
-                .unwrap_or(0)
-                + 1;
-            entry_md(&mut out, e, k);
+
+    fn witnessed(&self, subject: &str, line: &str) -> String {
+        if subject.is_empty() {
+            line.to_string()
+        } else {
+            format!("{subject} {line}")
         }
     }
-    out
-}
 
-/// The anchor of a claim's heading.
-fn anchor(id: &str) -> String {
-    format!("claim-{}", id.to_ascii_lowercase())
-}
+    fn method(&self, short: &str, k: usize) -> String {
+        format!("[{}](#method-{k})", md_text(short))
+    }
 
-fn entry_md(out: &mut String, e: &Entry, method: usize) {
-    let v = &e.verdict;
-    let _ = writeln!(
-        out,
-        "### <a id=\"{}\"></a>{} — {}\n",
-        anchor(&e.id),
-        e.id,
-        v.status
-    );
-    let _ = writeln!(out, "- **Source:** {}", md_text(&e.source));
-    let _ = writeln!(out, "- **Printed:** {}", md_text(&e.statement));
-    let _ = writeln!(
-        out,
-        "- **How:** [{}](#method-{method})",
-        md_text(&method_short(&v.method))
-    );
-    if let Some(corr) = &v.correction {
-        let _ = writeln!(out, "- **Correction:** {}", md_text(corr));
-    }
-    let witness = (v.status != Status::Holds).then(|| e.witness()).flatten();
-    if let Some((item, w)) = witness {
-        let subject = item
-            .parts
-            .iter()
-            .map(|p| p.name.as_str())
-            .chain(item.subject.as_deref())
-            .collect::<Vec<_>>()
-            .join(" › ");
-        let subject = if subject.is_empty() {
-            String::new()
-        } else {
-            format!("{} ", md_text(&subject))
-        };
-        let _ = writeln!(out, "- **Witness:** {subject}{}", witness_md(w));
-    }
-    if let Some(f) = e.figure {
-        let _ = writeln!(
-            out,
-            "- **Figure:** [{}]({}) (drawn by `trig-audit {}`; data: `{}`; pgfplots: `{}`)",
+    fn figure(&self, f: &Figure) -> String {
+        format!(
+            "[{}]({}) (drawn by `trig-audit {}`; data: `{}`; pgfplots: `{}`)",
             md_text(f.caption),
             f.path,
             f.command,
             f.data_path(),
             f.pgf_path()
+        )
+    }
+
+    fn start(&self, out: &mut String, intro: &str, note: Option<&str>) {
+        let _ = writeln!(out, "# trig-audit report\n");
+        let _ = writeln!(
+            out,
+            "{intro} Witness values are exact unless marked numeric. Long expressions are summarised here; the JSON report (`--format json`, schema `docs/report.schema.json`) gives every expression in full, in Unicode, LaTeX, SymPy syntax and factored form.\n"
+        );
+        if let Some(n) = note {
+            let _ = writeln!(out, "{n}\n");
+        }
+    }
+
+    fn summary(&self, out: &mut String, documents: &[(&Document, Tally)], all: &Tally) {
+        let _ = writeln!(out, "## Summary\n");
+        let labels = Status::ALL.map(|s| s.label());
+        let _ = writeln!(out, "{}", row(["document", "claims"].iter().chain(&labels)));
+        let _ = writeln!(out, "|---|---|{}", "---|".repeat(Status::ALL.len()));
+        for (doc, t) in documents {
+            let counts = t.by_status.iter().map(usize::to_string);
+            let line = row([doc.id.clone(), t.claims.to_string()]
+                .into_iter()
+                .chain(counts));
+            let _ = writeln!(out, "{line}");
+        }
+        let counts = all.by_status.iter().map(usize::to_string);
+        let line = row(["**all**".to_string(), all.claims.to_string()]
+            .into_iter()
+            .chain(counts));
+        let _ = writeln!(out, "{line}\n");
+    }
+
+    fn index(&self, out: &mut String, entries: &[&Entry], linked: bool) {
+        // the short form shows what each claim says; the full report links to it
+        let _ = writeln!(out, "## Index\n");
+        if linked {
+            let _ = writeln!(out, "| claim | verdict | document | source |");
+            let _ = writeln!(out, "|---|---|---|---|");
+        } else {
+            let _ = writeln!(out, "| claim | verdict | document | source | printed |");
+            let _ = writeln!(out, "|---|---|---|---|---|");
+        }
+        for e in entries {
+            let (status, doc, source) = (e.verdict.status, &e.document.id, md_text(&e.source));
+            let line = if linked {
+                let id = format!("[{}](#{})", e.id, anchor(&e.id));
+                row([id, status.to_string(), doc.clone(), source])
+            } else {
+                let printed = md_text(&short(&e.statement, 90));
+                row([
+                    e.id.clone(),
+                    status.to_string(),
+                    doc.clone(),
+                    source,
+                    printed,
+                ])
+            };
+            let _ = writeln!(out, "{line}");
+        }
+        out.push('\n');
+    }
+
+    fn methods(&self, out: &mut String, methods: &[&str]) {
+        let _ = writeln!(out, "## Methods\n");
+        for (k, m) in (1..).zip(methods) {
+            let _ = writeln!(out, "{k}. <a id=\"method-{k}\"></a>{}", md_text(m));
+        }
+        out.push('\n');
+    }
+
+    fn section(&self, out: &mut String, doc: &Document) {
+        let _ = writeln!(out, "## {} — {}\n", doc.heading, md_text(&doc.title));
+        let _ = writeln!(out, "Source: `{}`\n", doc.location);
+    }
+
+    fn heading(&self, out: &mut String, e: &Entry) {
+        let _ = writeln!(
+            out,
+            "### <a id=\"{}\"></a>{} — {}\n",
+            anchor(&e.id),
+            e.id,
+            e.verdict.status
         );
     }
-    let _ = writeln!(out, "- **Evidence:**");
-    evidence_md(out, &v.evidence, witness.map(|(item, _)| item));
-    out.push('\n');
+
+    fn field(&self, out: &mut String, name: &str, value: &str) {
+        let _ = writeln!(out, "- **{name}:** {value}");
+    }
+
+    fn evidence_start(&self, out: &mut String) {
+        let _ = writeln!(out, "- **Evidence:**");
+    }
+
+    fn parts(&self, out: &mut String, from: &[Part], to: &[Part]) {
+        let common = from.iter().zip(to).take_while(|(a, b)| a == b).count();
+        for (depth, p) in to.iter().enumerate().skip(common) {
+            let indent = "  ".repeat(depth + 1);
+            let _ = writeln!(out, "{indent}- **{}** — {}", md_text(&p.name), p.status);
+        }
+    }
+
+    fn item(&self, out: &mut String, depth: usize, line: &str) {
+        let _ = writeln!(out, "{}- {line}", "  ".repeat(depth + 1));
+    }
+
+    fn evidence_end(&self, _out: &mut String) {}
+
+    fn finish(&self, out: String) -> String {
+        out
+    }
 }
 
 #[cfg(test)]

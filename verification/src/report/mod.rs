@@ -1,7 +1,9 @@
 //! The audit report: Markdown for people ([`markdown`]), LaTeX for papers
 //! ([`latex`]), JSON for machines ([`json`], with a versioned schema) — all
 //! rendered from the same entries and the same structured evidence
-//! ([`crate::evidence`]). Entries ([`Entry`]) are owned, so claims built at
+//! ([`crate::evidence`]). The text formats are one traversal of the report
+//! (`render`) with a writer per format; the JSON is the entries through
+//! serde. Entries ([`Entry`]) are owned, so claims built at
 //! run time (from a spec file, see [`crate::spec_audit`]) report exactly
 //! like the built-in ones ([`Outcome`]).
 //!
@@ -13,16 +15,17 @@
 pub mod json;
 pub mod latex;
 pub mod markdown;
-mod tex_text;
+mod render;
 
 use crate::Outcome;
 use crate::claim::Seed;
 use crate::evidence::{Evidence, Witness};
 use crate::figures::{self, Figure};
-use crate::verdict::{Status, Verdict};
+use crate::status::Status;
+use crate::verdict::Verdict;
 
 pub use json::{Report, SCHEMA_VERSION, json_entries, schema};
-pub use latex::{tex_entries, tex_escape, to_math};
+pub use latex::tex_entries;
 pub use markdown::markdown_entries;
 
 /// The opening sentence of the built-in report.
@@ -174,23 +177,6 @@ pub fn plural(n: usize, singular: &str, plural: &str) -> String {
     format!("{n} {}", if n == 1 { singular } else { plural })
 }
 
-/// The size of a summarised expression: `degree 15, 315 terms`.
-pub(crate) fn size_text(degree: u64, terms: usize) -> String {
-    format!(
-        "numerator of degree {degree}, {}",
-        plural(terms, "term", "terms")
-    )
-}
-
-/// What stands for a printed formula too long to repeat (the seed has it,
-/// the JSON report too).
-pub(crate) const PRINTED_LONG: &str = "printed formula as in the seed";
-
-/// A printed formula, if it is short enough to repeat beside its check.
-pub(crate) fn printed_shown(printed: &str, long: usize) -> Option<&str> {
-    (printed.chars().count() <= long).then_some(printed)
-}
-
 /// A statement shortened to at most `max` characters for the index.
 pub(crate) fn short(text: &str, max: usize) -> String {
     if text.chars().count() <= max {
@@ -198,72 +184,6 @@ pub(crate) fn short(text: &str, max: usize) -> String {
     }
     let cut: String = text.chars().take(max - 1).collect();
     format!("{}…", cut.trim_end())
-}
-
-/// Items grouped for display: consecutive confirmations (same parts, same
-/// kind, status and prose, about different subjects, no expressions or
-/// witness — "residual is exactly 0" for each of ten identities) become one
-/// group, shown as one line listing their subjects; every other item is a
-/// group of its own.
-pub(crate) fn groups(items: &[Evidence]) -> Vec<&[Evidence]> {
-    let plain = |e: &Evidence| {
-        e.subject.is_some() && e.exprs.is_empty() && e.witness.is_none() && e.status.is_some()
-    };
-    let mut out: Vec<&[Evidence]> = Vec::new();
-    let mut start = 0;
-    for i in 1..=items.len() {
-        let joins = i < items.len() && {
-            let (a, b) = (&items[start], &items[i]);
-            plain(a)
-                && plain(b)
-                && a.parts == b.parts
-                && a.kind == b.kind
-                && a.status == b.status
-                && a.text == b.text
-        };
-        if !joins {
-            out.push(&items[start..i]);
-            start = i;
-        }
-    }
-    out
-}
-
-/// The distinct methods of `entries`, in order of first use (the report
-/// states each once and refers to it by number).
-pub(crate) fn methods<'a>(entries: &[&'a Entry]) -> Vec<&'a str> {
-    let mut out: Vec<&str> = Vec::new();
-    for e in entries {
-        if !out.contains(&e.verdict.method.as_str()) {
-            out.push(&e.verdict.method);
-        }
-    }
-    out
-}
-
-/// A method's short form: up to its first `;` or `,` outside brackets (or
-/// the whole text when it has none), cut after a word to at most 40
-/// characters (the full method is stated once, in the methods list).
-pub(crate) fn method_short(method: &str) -> String {
-    let mut depth = 0i32;
-    let end = method
-        .char_indices()
-        .find(|&(_, ch)| {
-            match ch {
-                '(' | '[' | '{' => depth += 1,
-                ')' | ']' | '}' => depth -= 1,
-                _ => {}
-            }
-            depth == 0 && (ch == ';' || ch == ',')
-        })
-        .map_or(method.len(), |(i, _)| i);
-    let text = method[..end].trim();
-    if text.chars().count() <= 40 {
-        return text.to_string();
-    }
-    let cut: String = text.chars().take(40).collect();
-    let words = cut.rfind(' ').map_or(cut.as_str(), |i| &cut[..i]);
-    format!("{}…", words.trim_end_matches([',', ':', ';']))
 }
 
 /// The built-in Markdown report.

@@ -3,8 +3,9 @@
 //! certification engine on the standard pieces of the domain
 //! ([`trig_certify::standardize`]).
 
-use trig_certify::standardize;
-use trig_specfile::{Monotone, Spec, SpecRange};
+use trig_certify::{ParamBox, standardize};
+use trig_core::ParamRange;
+use trig_specfile::{Monotone, Spec};
 use trig_symbolic::Sym;
 
 use super::interval;
@@ -13,7 +14,8 @@ use crate::certify::evidence::{
     CERTIFIED, Published, maximal_against, monotone_named, nonnegative_named,
 };
 use crate::region_audit::{self, Axis};
-use crate::verdict::{Status, Verdict};
+use crate::status::Status;
+use crate::verdict::Verdict;
 
 /// The functions on the standard domain: `(trigonometric, functions,
 /// names)`, every function split into its pieces (named `b0 on θ ∈ …` when
@@ -48,13 +50,13 @@ pub fn pieces(spec: &Spec) -> Result<(bool, Vec<Sym>, Vec<String>), String> {
 /// Every function `≥ 0` for the parameters in `range` (one parameter;
 /// the declared ranges otherwise): exact Bernstein subdivision on the
 /// standard pieces, the interval engine for other bases.
-fn nonnegative_on(spec: &Spec, range: Option<&SpecRange>) -> Verdict {
+fn nonnegative_on(spec: &Spec, range: Option<&ParamRange>) -> Verdict {
     match pieces(spec) {
         Ok((trig, fs, names)) => match spec.params.as_slice() {
             [] => nonnegative_named(trig, &fs, &names, None, &point_box()),
             [p] => {
                 let r = range.unwrap_or(&p.range);
-                nonnegative_named(trig, &fs, &names, Some(&p.name), &r.to_box())
+                nonnegative_named(trig, &fs, &names, Some(&p.name), &ParamBox::from_range(r))
             }
             _ => several(spec, false),
         },
@@ -63,7 +65,7 @@ fn nonnegative_on(spec: &Spec, range: Option<&SpecRange>) -> Verdict {
 }
 
 /// The interval engine on the whole basis, with why it was needed.
-fn by_intervals(spec: &Spec, range: Option<&SpecRange>, why: &str) -> Verdict {
+fn by_intervals(spec: &Spec, range: Option<&ParamRange>, why: &str) -> Verdict {
     let (axes, notes) = interval::axes(spec, range);
     let fs: Vec<(String, Sym)> = spec
         .functions
@@ -96,7 +98,7 @@ fn several(spec: &Spec, maximal: bool) -> Verdict {
         .map(|p| Axis {
             name: &p.name,
             symbol: &p.symbol,
-            set: p.range.to_box(),
+            set: ParamBox::from_range(&p.range),
             source: &p.source,
         })
         .collect();
@@ -125,7 +127,7 @@ pub fn nonnegativity(spec: &Spec) -> Verdict {
 }
 
 /// A printed nonnegativity claim.
-pub fn nonnegative_claim(spec: &Spec, range: Option<&SpecRange>, maximal: bool) -> Verdict {
+pub fn nonnegative_claim(spec: &Spec, range: Option<&ParamRange>, maximal: bool) -> Verdict {
     match (spec.params.len(), maximal) {
         (1, true) => maximal_versus_published(spec, range),
         (0 | 1, _) => nonnegative_on(spec, range),
@@ -134,7 +136,7 @@ pub fn nonnegative_claim(spec: &Spec, range: Option<&SpecRange>, maximal: bool) 
 }
 
 /// The convex-hull property: unity and nonnegativity on the range.
-pub fn convex_hull(spec: &Spec, range: Option<&SpecRange>) -> Verdict {
+pub fn convex_hull(spec: &Spec, range: Option<&ParamRange>) -> Verdict {
     let mut v = Verdict::all(
         CERTIFIED,
         vec![
@@ -154,7 +156,7 @@ pub fn convex_hull(spec: &Spec, range: Option<&SpecRange>) -> Verdict {
 
 /// The maximal nonnegativity interval of a one-parameter basis against the
 /// published (declared, or the claim's) range.
-fn maximal_versus_published(spec: &Spec, claimed: Option<&SpecRange>) -> Verdict {
+fn maximal_versus_published(spec: &Spec, claimed: Option<&ParamRange>) -> Verdict {
     let p = &spec.params[0];
     let published = claimed.unwrap_or(&p.range);
     let (trig, fs, names) = match pieces(spec) {
@@ -174,7 +176,7 @@ fn maximal_versus_published(spec: &Spec, claimed: Option<&SpecRange>) -> Verdict
         name: &p.name,
         symbol: &p.symbol,
         range: published.to_string(),
-        set: published.to_box(),
+        set: ParamBox::from_range(published),
         source: &source,
     };
     maximal_against(&fs, &names, trig, &cited).1
@@ -183,13 +185,13 @@ fn maximal_versus_published(spec: &Spec, claimed: Option<&SpecRange>) -> Verdict
 /// Printed monotonicity: the certified sign of the derivative on every
 /// piece (a continuous function monotone on each closed piece is monotone
 /// on their union; the pieces keep the direction of the variable).
-pub fn monotone_claim(spec: &Spec, items: &[Monotone], range: Option<&SpecRange>) -> Verdict {
+pub fn monotone_claim(spec: &Spec, items: &[Monotone], range: Option<&ParamRange>) -> Verdict {
     let r = range
         .cloned()
         .or_else(|| spec.params.first().map(|p| p.range.clone()));
     let (param, bx) = match (spec.params.as_slice(), &r) {
         ([], _) => (None, point_box()),
-        ([p], Some(r)) => (Some(p.name.as_str()), r.to_box()),
+        ([p], Some(r)) => (Some(p.name.as_str()), ParamBox::from_range(r)),
         _ => {
             return Verdict::not_checkable(
                 "monotonicity is certified for bases with at most one parameter",

@@ -8,12 +8,13 @@
 
 use rug::Rational;
 use trig_certify::branch::{Axis, Outcome};
-use trig_specfile::range::End;
-use trig_specfile::{Spec, SpecRange};
+use trig_core::{End, ParamRange};
+use trig_specfile::Spec;
 use trig_symbolic::Sym;
 
 use super::analytic;
-use crate::verdict::{Status, Verdict};
+use crate::status::Status;
+use crate::verdict::Verdict;
 
 /// How the interval method decides, as the report states it.
 pub const INTERVAL: &str = "certified: branch and bound over (variable, parameters) with Taylor models in 128-bit MPFR (a polynomial and a rigorous remainder) and interval arithmetic with outward rounding; products and quotients factor by factor (denominators of one strict sign); next to the domain's ends and the range ends by exact derivatives (a zero of order m on a face has the sign of the m-th derivative into the box; otherwise ≥ 0 on the face and a derivative ≥ 0 into the box); counterexamples are boxes where the value is certified negative";
@@ -23,14 +24,14 @@ const TRUNCATE: i64 = 64;
 
 /// The axes of the parameters for a claim: the declared ranges, `range`
 /// replacing the only parameter's; unbounded ranges truncated (noted).
-pub fn axes(spec: &Spec, range: Option<&SpecRange>) -> (Vec<Axis>, Vec<String>) {
+pub fn axes(spec: &Spec, range: Option<&ParamRange>) -> (Vec<Axis>, Vec<String>) {
     let mut notes = Vec::new();
     let axes = spec
         .params
         .iter()
         .map(|p| {
             let r = range.filter(|_| spec.params.len() == 1).unwrap_or(&p.range);
-            r.to_axis().unwrap_or_else(|| {
+            Axis::from_range(r).unwrap_or_else(|| {
                 let (lo, hi, lo_open, hi_open) = match (r.lo.value(), r.hi.value()) {
                     (Some(a), None) => (
                         a.clone(),
@@ -233,7 +234,7 @@ fn memo(spec: &Spec, name: &str, f: &Sym, axes: &[Axis]) -> (Status, String) {
 fn mirrors(spec: &Spec, f: &Sym, g: &Sym) -> bool {
     let a = spec.domain.reflection();
     let params: Vec<Sym> = spec.params.iter().map(|p| Sym::var(&p.name)).collect();
-    super::geometry::reflect(spec, g, &a, &params).is_ok_and(|r| (r - f).is_zero())
+    crate::judge::symmetry::reflect(spec, g, &a, &params).is_ok_and(|r| (r - f).is_zero())
 }
 
 /// The axes with every open end moved inward by an eighth of the width
@@ -279,7 +280,7 @@ fn functions(spec: &Spec) -> Vec<(String, Sym)> {
 /// is undefined (a denominator vanishes identically there); otherwise a
 /// point just beyond it decides: admissible refutes maximality, a
 /// certified counterexample brackets the end.
-pub fn maximal(spec: &Spec, range: &SpecRange) -> Verdict {
+pub fn maximal(spec: &Spec, range: &ParamRange) -> Verdict {
     let (ax, notes) = axes(spec, Some(range));
     let fs = functions(spec);
     let inside = all_nonnegative(spec, &fs, &ax, &notes);
@@ -404,7 +405,7 @@ pub fn monotone(
     name: &str,
     f: &Sym,
     increasing: bool,
-    range: Option<&SpecRange>,
+    range: Option<&ParamRange>,
 ) -> Verdict {
     let d = trig_certify::atoms::d_variable(f, &spec.domain);
     let g = if increasing { d } else { -d };

@@ -13,7 +13,6 @@
 
 mod analytic;
 mod certified;
-mod geometry;
 mod interval;
 mod joins;
 
@@ -24,19 +23,17 @@ use std::time::Duration;
 
 use rug::Rational;
 use trig_certify::ParamBox;
+use trig_deriv::Wrt;
 use trig_specfile::{Check, Spec, SpecClaim};
 use trig_symbolic::Sym;
 
 use crate::budget::{bounded, within};
 use crate::exact::{identity, sum};
+use crate::judge;
+use crate::judge::endpoint::TABLE_ORDERS;
 use crate::real_witness::{RealPoints, with_real_points};
 use crate::report::{Document, Entry};
 use crate::verdict::Verdict;
-
-/// Jet length: derivative orders `0..K`.
-const K: usize = 8;
-/// Orders shown in the standard derivative table.
-const TABLE_ORDERS: usize = 4;
 
 /// The report document of a spec.
 pub fn document(spec: &Spec) -> Document {
@@ -113,12 +110,12 @@ pub fn audit_within(spec: &Spec, budget: Option<Duration>) -> Vec<Entry> {
         .collect::<Vec<_>>()
         .join(", ");
     let symmetry_at_real_points =
-        |s: &Spec| with_real_points(real_points(s), || geometry::battery_symmetry(s));
+        |s: &Spec| with_real_points(real_points(s), || judge::symmetry::battery_symmetry(s));
     let (symmetry_text, symmetry) = match budget {
         None => symmetry_at_real_points(spec),
         Some(limit) => {
             let s = Arc::clone(&shared);
-            bounded(limit, move || symmetry_at_real_points(&s)).unwrap_or_else(|why| {
+            bounded(limit, move || symmetry_at_real_points(s.as_ref())).unwrap_or_else(|why| {
                 (
                     "symmetry of the functions".into(),
                     Verdict::not_checkable(why),
@@ -130,8 +127,8 @@ pub fn audit_within(spec: &Spec, budget: Option<Duration>) -> Vec<Entry> {
         entry("unity", "standard battery", format!("partition of unity: {}", sum_label(spec)), run(Box::new(unity))),
         entry("nonnegativity", "standard battery", format!("{names} ≥ 0 on the domain exactly for the declared parameter ranges"), run(Box::new(certified::nonnegativity))),
         entry("symmetry", "standard battery", symmetry_text, symmetry),
-        entry("interpolation", "standard battery", "endpoint interpolation: only the first function is nonzero at the start (value 1), only the last at the end (value 1)".into(), run(Box::new(geometry::interpolation))),
-        entry("derivatives", "standard battery", format!("exact endpoint derivatives of orders 0–{} {}, by jets and by symbolic differentiation", TABLE_ORDERS - 1, geometry::table_convention(spec)), run(Box::new(geometry::derivative_table))),
+        entry("interpolation", "standard battery", "endpoint interpolation: only the first function is nonzero at the start (value 1), only the last at the end (value 1)".into(), run(Box::new(|s: &Spec| judge::endpoint::interpolation(s)))),
+        entry("derivatives", "standard battery", format!("exact endpoint derivatives of orders 0–{} {}, by jets and by symbolic differentiation", TABLE_ORDERS - 1, judge::domain::describe_wrt(spec, table_wrt(spec))), run(Box::new(|s: &Spec| judge::endpoint::derivative_table(s, table_wrt(s))))),
     ];
     for order in [1, 2] {
         out.push(entry(
@@ -140,7 +137,9 @@ pub fn audit_within(spec: &Spec, budget: Option<Duration>) -> Vec<Entry> {
             format!(
                 "C{order} join of Σ b_i P_i (end) and Σ b_i Q_i (start): derived conditions on Q"
             ),
-            run(Box::new(move |s: &Spec| joins::derived_join(s, order))),
+            run(Box::new(move |s: &Spec| {
+                judge::join::derived_join(s, order)
+            })),
         ));
     }
     out.extend(spec.claims.iter().map(|c| {
@@ -172,9 +171,9 @@ pub fn decide(spec: &Spec, claim: &SpecClaim) -> Verdict {
             at,
             params,
             params_text,
-        } => geometry::symmetry_claim(
+        } => judge::symmetry::symmetry_claim(
             spec,
-            &geometry::PrintedSymmetry {
+            &judge::symmetry::PrintedSymmetry {
                 map_text,
                 map,
                 index_text,
@@ -184,20 +183,22 @@ pub fn decide(spec: &Spec, claim: &SpecClaim) -> Verdict {
                 params_text,
             },
         ),
-        Check::EndpointValues { end, values } => geometry::endpoint_values(spec, *end, values),
+        Check::EndpointValues { end, values } => {
+            judge::endpoint::endpoint_values(spec, *end, values)
+        }
         Check::EndpointDerivatives {
             end,
             order,
             wrt,
             values,
-        } => geometry::endpoint_derivative_values(spec, *end, *order, *wrt, values),
+        } => judge::endpoint::endpoint_derivative_values(spec, *end, *order, *wrt, values),
         Check::CurveDerivative {
             end,
             order,
             wrt,
             text,
             value,
-        } => joins::curve_derivative(spec, *end, *order, *wrt, text, value),
+        } => judge::curve::curve_derivative(spec, *end, *order, *wrt, text, value),
         Check::Join {
             kind,
             wrt,
@@ -205,7 +206,18 @@ pub fn decide(spec: &Spec, claim: &SpecClaim) -> Verdict {
             factors,
             conditions,
         } => joins::printed_join(spec, *kind, *wrt, *different, factors, conditions),
-        Check::Continuity { order } => joins::continuity(spec, *order),
+        Check::Continuity { order } => judge::continuity::bspline_continuity(spec, *order),
+    }
+}
+
+/// The convention of the standard table: the angle for formulas in
+/// `s`, `c` alone, the variable otherwise.
+fn table_wrt(spec: &Spec) -> Wrt {
+    let declared_angle = spec.shorthand.is_none_or(|k| k == 1);
+    if (spec.domain.is_pure_trigonometric() || spec.legacy.is_some()) && declared_angle {
+        Wrt::Angle
+    } else {
+        Wrt::Variable
     }
 }
 

@@ -16,10 +16,10 @@ use trig_core::decimal::max_digits;
 use trig_core::families::seed000_nonuniform::NonUniform;
 use trig_core::knots::check_increasing;
 use trig_core::{
-    Affine, Atoms, Basis, CoreError, Domain, Family, Interval, Real, Ring, SEED000_NONUNIFORM,
-    echo, parse_exact, parse_point, piecewise,
+    Affine, Basis, CoreError, Described, Family, Interval, Real, SEED000_NONUNIFORM, echo,
+    parse_exact, parse_point, piecewise,
 };
-use trig_specfile::Spec;
+use trig_specfile::AnyBasis;
 use trig_symbolic::Sym;
 
 use super::{CliError, CmdResult, range_hint};
@@ -90,123 +90,13 @@ pub fn param_pairs(raw: &[String]) -> Result<Vec<(String, String)>, CliError> {
         .collect()
 }
 
-/// The catalog family `id`; `seed000-nonuniform`, whose segment functions
-/// depend on a knot vector, is named with what it needs instead of being
-/// called unknown.
-pub fn family_by_id(id: &str) -> Result<Family, CliError> {
-    if id == SEED000_NONUNIFORM.id {
-        return Err(CliError::Usage(format!(
-            "`{id}` needs a knot vector: its segment functions change from span to span, so only `trig-audit eval {id} --knots …` evaluates it; for the uniform case use seed000-uniform"
-        )));
-    }
-    Ok(Family::from_id(id)?)
-}
-
-/// A basis to work on: a catalog family or a spec file's basis.
-#[derive(Debug, Clone)]
-pub enum Subject {
-    Family(Family),
-    Spec(Box<Spec>),
-}
-
-impl Subject {
-    /// The family named by `family`, or the basis of the spec file.
-    pub fn from_args(
-        family: Option<&str>,
-        spec: Option<&std::path::Path>,
-    ) -> Result<Subject, CliError> {
-        match (family, spec) {
-            (_, Some(path)) => Spec::from_file(path)
-                .map(|s| Subject::Spec(Box::new(s)))
-                .map_err(|e| CliError::Usage(e.to_string().replace('\n', " "))),
-            (Some(id), None) => {
-                let family = family_by_id(id)?;
-                if !family.has_formulas() {
-                    return Err(CoreError::NoFormulas(id.into()).into());
-                }
-                Ok(Subject::Family(family))
-            }
-            (None, None) => Err(CliError::Usage(
-                "expected a family id or --spec FILE".into(),
-            )),
-        }
-    }
-
-    /// The citation.
-    pub fn citation(&self) -> String {
-        match self {
-            Subject::Family(f) => f.info().citation.to_string(),
-            Subject::Spec(s) => s.citation.clone(),
-        }
-    }
-
-    /// True when the uniform B-spline basis function can be assembled from
-    /// it: a catalog family marked piecewise, or a spec with four segment
-    /// functions (piece k is function 3 − k).
-    pub fn piecewise(&self) -> bool {
-        match self {
-            Subject::Family(f) => f.info().piecewise,
-            Subject::Spec(s) => s.function_names().len() == 4,
-        }
-    }
-
-    /// Exact parameter values from `name=value` pairs.
-    pub fn params_from_pairs(
-        &self,
-        pairs: &[(String, String)],
-        allow_outside: bool,
-    ) -> Result<Vec<Rational>, CoreError> {
-        match self {
-            Subject::Family(f) => f.params_from_pairs(pairs, allow_outside),
-            Subject::Spec(s) => s.params_from_pairs(pairs, allow_outside),
-        }
-    }
-}
-
-impl Basis for Subject {
-    fn id(&self) -> String {
-        match self {
-            Subject::Family(f) => Basis::id(f),
-            Subject::Spec(s) => s.id.clone(),
-        }
-    }
-
-    fn domain(&self) -> Domain {
-        match self {
-            Subject::Family(f) => f.domain(),
-            Subject::Spec(s) => s.domain.clone(),
-        }
-    }
-
-    fn param_names(&self) -> Vec<String> {
-        match self {
-            Subject::Family(f) => f.param_names(),
-            Subject::Spec(s) => s.param_names(),
-        }
-    }
-
-    fn function_names(&self) -> Vec<String> {
-        match self {
-            Subject::Family(f) => f.function_names(),
-            Subject::Spec(s) => s.function_names(),
-        }
-    }
-
-    fn eval<T: Ring>(&self, x: &Atoms<T>, p: &[T]) -> Vec<T> {
-        match self {
-            Subject::Family(f) => Basis::eval(f, x, p),
-            Subject::Spec(s) => Basis::eval(s.as_ref(), x, p),
-        }
-    }
-}
-
 /// What `eval` computes, for any scalar built from the exact inputs: the
 /// functions of a basis at a point, the uniform B-spline basis function on
 /// one of its pieces, or seed 000's non-uniform segment functions on one
 /// span. Points, pieces and spans are located on the exact input.
 enum Problem {
     Basis {
-        subject: Subject,
+        subject: AnyBasis,
         /// The point: a rational or a rational multiple of π.
         x: Affine,
         params: Vec<Rational>,
@@ -395,18 +285,21 @@ struct Setup {
 
 /// The basis `eval` works on, read once (also for many points); `None` for
 /// seed 000's non-uniform construction, which is built per knot vector.
-fn subject_of(args: &EvalArgs) -> Result<Option<Subject>, CliError> {
+fn subject_of(args: &EvalArgs) -> Result<Option<AnyBasis>, CliError> {
     if args.family.as_deref() == Some(SEED000_NONUNIFORM.id) && args.spec.is_none() {
         return Ok(None);
     }
-    Subject::from_args(args.family.as_deref(), args.spec.as_deref()).map(Some)
+    Ok(Some(AnyBasis::open(
+        args.family.as_deref(),
+        args.spec.as_deref(),
+    )?))
 }
 
 fn setup(
     args: &EvalArgs,
     at_text: &str,
     at: &Affine,
-    subject: Option<&Subject>,
+    subject: Option<&AnyBasis>,
 ) -> Result<Setup, CliError> {
     let pairs = param_pairs(&args.params)?;
     let Some(subject) = subject else {
@@ -424,7 +317,7 @@ fn setup(
         .map_err(range_hint)?;
     let (id, citation, param_names) = (subject.id(), subject.citation(), subject.param_names());
     if args.piecewise {
-        let Subject::Family(family) = subject else {
+        let AnyBasis::Family(family) = subject else {
             return Err(CliError::Usage(
                 "--piecewise applies to catalog families only".into(),
             ));
@@ -483,7 +376,7 @@ fn evaluate(
     at_text: &str,
     at: &Affine,
     mode: Mode,
-    subject: Option<&Subject>,
+    subject: Option<&AnyBasis>,
 ) -> Result<Evaluation, CliError> {
     let s = setup(args, at_text, at, subject)?;
     let what = format!("`{}` at this point", s.id);

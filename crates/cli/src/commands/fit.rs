@@ -9,17 +9,17 @@ use std::path::PathBuf;
 use std::sync::Arc;
 
 use clap::{Args, ValueEnum};
-use trig_core::{Basis, Bound, Family};
+use trig_core::{Described, End, Family};
 use trig_fit::optimise::search_between;
 use trig_fit::{
     Continuity, CornerRule, Corners, FitError, FitOptions, Metrics, NumericBasis, Outline,
     OutlineFit, Shape, Summary, THESIS_THRESHOLD, fit_outline,
 };
-use trig_specfile::range::End as SpecEnd;
 use trig_verification::certify::range::EndPoint;
 
-use super::eval::{Subject, param_pairs};
+use super::eval::param_pairs;
 use super::{CliError, CmdResult};
+use trig_specfile::AnyBasis;
 
 /// The families of `--family all`, in the thesis's order, then the
 /// listing variant and the polynomial reference.
@@ -119,57 +119,42 @@ fn fit_err(e: FitError) -> CliError {
 }
 
 /// The bases selected by `--family` or `--spec`.
-pub fn subjects(id: &str, setup: &FitSetup) -> Result<Vec<Subject>, CliError> {
+pub fn subjects(id: &str, setup: &FitSetup) -> Result<Vec<AnyBasis>, CliError> {
     if let Some(path) = &setup.spec {
         if id != "all" {
             return Err(CliError::Usage(
                 "--family and --spec exclude each other: give one basis".into(),
             ));
         }
-        return Ok(vec![Subject::from_args(None, Some(path))?]);
+        return Ok(vec![AnyBasis::open(None, Some(path))?]);
     }
     if id == "all" {
-        Ok(COMPARED.iter().map(|f| Subject::Family(*f)).collect())
+        Ok(COMPARED.iter().map(|f| AnyBasis::Family(*f)).collect())
     } else {
-        Ok(vec![Subject::Family(super::eval::family_by_id(id)?)])
+        Ok(vec![AnyBasis::Family(AnyBasis::family(id)?)])
     }
 }
 
 /// The parameters of `subject`: ASCII name, printed symbol, published range
 /// as the closed search interval's ends `(value, open)` when bounded.
-fn parameters(subject: &Subject) -> Vec<(String, String, Option<SearchEnds>)> {
-    match subject {
-        Subject::Family(f) => f
-            .info()
-            .params
-            .iter()
-            .map(|p| {
-                let end = |b: Bound| {
-                    b.value()
-                        .map(|v| (v.to_f64(), matches!(b, Bound::Open(..))))
-                };
-                let ends = end(p.range.lo).zip(end(p.range.hi));
-                (p.name.to_string(), p.symbol.to_string(), ends)
-            })
-            .collect(),
-        Subject::Spec(s) => s
-            .params
-            .iter()
-            .map(|p| {
-                let scale = if p.range.pi {
-                    std::f64::consts::PI
-                } else {
-                    1.0
-                };
-                let end = |e: &SpecEnd| {
-                    e.value()
-                        .map(|v| (v.to_f64() * scale, matches!(e, SpecEnd::Open(_))))
-                };
-                let ends = end(&p.range.lo).zip(end(&p.range.hi));
-                (p.name.clone(), p.symbol.clone(), ends)
-            })
-            .collect(),
-    }
+fn parameters(subject: &AnyBasis) -> Vec<(String, String, Option<SearchEnds>)> {
+    subject
+        .parameters()
+        .into_iter()
+        .map(|p| {
+            let scale = if p.range.pi {
+                std::f64::consts::PI
+            } else {
+                1.0
+            };
+            let end = |e: &End| {
+                e.value()
+                    .map(|v| (v.to_f64() * scale, matches!(e, End::Open(_))))
+            };
+            let ends = end(&p.range.lo).zip(end(&p.range.hi));
+            (p.name, p.symbol, ends)
+        })
+        .collect()
 }
 
 /// A published range's ends for the search: `((lo, open), (hi, open))`.
@@ -178,7 +163,7 @@ type SearchEnds = ((f64, bool), (f64, bool));
 /// Fixed parameters of `subject` from `--param` pairs (a catalog family's
 /// default 0.6, as the thesis; a spec file's parameters must be given),
 /// checked against the published range.
-fn fixed_params(subject: &Subject, pairs: &[(String, String)]) -> Result<Vec<f64>, CliError> {
+fn fixed_params(subject: &AnyBasis, pairs: &[(String, String)]) -> Result<Vec<f64>, CliError> {
     let mut mine = Vec::new();
     for (name, symbol, _) in parameters(subject) {
         let given = pairs
@@ -186,10 +171,10 @@ fn fixed_params(subject: &Subject, pairs: &[(String, String)]) -> Result<Vec<f64
             .rev()
             .find(|(n, _)| *n == name || *n == symbol)
             .map(|(_, v)| v.clone());
-        let value = match (given, subject) {
+        let value = match (given, subject.as_family()) {
             (Some(v), _) => v,
-            (None, Subject::Family(_)) => THESIS_PARAMETER.to_string(),
-            (None, Subject::Spec(_)) => {
+            (None, Some(_)) => THESIS_PARAMETER.to_string(),
+            (None, None) => {
                 return Err(CliError::Usage(format!(
                     "`{}`: give --param {name}=VALUE (a spec file's parameters have no default)",
                     subject.id()
@@ -209,7 +194,7 @@ fn fixed_params(subject: &Subject, pairs: &[(String, String)]) -> Result<Vec<f64
 
 /// The search interval of `--optimise` for a one-parameter basis, and
 /// where it comes from.
-fn interval(subject: &Subject, range: SearchRange) -> Result<(f64, f64, &'static str), CliError> {
+fn interval(subject: &AnyBasis, range: SearchRange) -> Result<(f64, f64, &'static str), CliError> {
     let (name, _, ends) = parameters(subject).swap_remove(0);
     let Some((lo, hi)) = ends else {
         return Err(CliError::Usage(format!(
@@ -220,14 +205,14 @@ fn interval(subject: &Subject, range: SearchRange) -> Result<(f64, f64, &'static
     let (lo, hi) = search_between(lo, hi);
     let family = match (subject, range) {
         (_, SearchRange::Published) => return Ok((lo, hi, "published range")),
-        (Subject::Spec(_), SearchRange::Certified) => {
+        (AnyBasis::Spec(_), SearchRange::Certified) => {
             return Ok((
                 lo,
                 hi,
                 "published range: certified ranges are computed for catalog families",
             ));
         }
-        (Subject::Family(f), SearchRange::Certified) => *f,
+        (AnyBasis::Family(f), SearchRange::Certified) => *f,
     };
     let (certified, _) = trig_verification::certify::evidence::maximal_versus_published(family);
     // the certified side of each end (an irrational end by the inner side

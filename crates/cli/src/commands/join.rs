@@ -3,15 +3,15 @@
 
 use clap::{Args, ValueEnum};
 use serde_json::json;
-use trig_core::Basis;
+use trig_core::Described;
 use trig_deriv::{JoinKind, JoinSetup, Wrt, solve_join, vanishing};
 use trig_symbolic::Sym;
 
-use super::eval::Subject;
 use super::table::WrtArg;
 use super::{CliError, CmdResult};
 use crate::cell::Cell;
 use crate::format;
+use trig_specfile::AnyBasis;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum ParamsArg {
@@ -52,7 +52,7 @@ pub struct JoinArgs {
 
 /// The solved join, ready to print.
 struct Solved {
-    family: Subject,
+    family: AnyBasis,
     kind: JoinKind,
     wrt: Wrt,
     first_params: Vec<Sym>,
@@ -63,7 +63,7 @@ struct Solved {
 }
 
 pub fn run(args: &JoinArgs) -> CmdResult {
-    let family = Subject::from_args(args.family.as_deref(), args.spec.as_deref())?;
+    let family = AnyBasis::open(args.family.as_deref(), args.spec.as_deref())?;
     let kind: JoinKind = args
         .kind
         .parse()
@@ -76,7 +76,12 @@ pub fn run(args: &JoinArgs) -> CmdResult {
     })
 }
 
-fn solve(family: Subject, kind: JoinKind, params: ParamsArg, wrt: Wrt) -> Result<Solved, CliError> {
+fn solve(
+    family: AnyBasis,
+    kind: JoinKind,
+    params: ParamsArg,
+    wrt: Wrt,
+) -> Result<Solved, CliError> {
     let param_names = family.param_names();
     let names = |suffix: &str| -> Vec<Sym> {
         param_names
@@ -91,10 +96,7 @@ fn solve(family: Subject, kind: JoinKind, params: ParamsArg, wrt: Wrt) -> Result
     let n = family.function_names().len();
     let first: Vec<Sym> = (0..n).map(|i| Sym::var(&format!("P{i}"))).collect();
     let second: Vec<Sym> = (0..n).map(|i| Sym::var(&format!("Q{i}"))).collect();
-    let factors = match &family {
-        Subject::Spec(spec) => spec.join_factors().map(|n| Sym::var(&n)),
-        Subject::Family(_) => trig_deriv::default_factors(),
-    };
+    let factors = family.join_factors();
     let setup = JoinSetup {
         basis: &family,
         first_params: &first_params,
@@ -180,28 +182,19 @@ fn text(s: &Solved) -> String {
 }
 
 fn tex(s: &Solved) -> String {
-    let mut out: String = header(s).iter().map(|l| format!("% {l}\n")).collect();
-    out.push_str("\\begin{align*}\n");
-    let lines: Vec<String> = s
+    let mut out: String = header(s).iter().map(|l| trig_tex::comment(l)).collect();
+    let equations: Vec<(String, String)> = s
         .forced
         .iter()
-        .map(|(point, value, _)| {
-            format!(
-                "{} &= {}",
-                point.to_latex(),
-                value.combination(&s.names).latex
-            )
-        })
+        .map(|(point, value, _)| (point.to_latex(), value.combination(&s.names).latex))
         .collect();
-    out.push_str(&lines.join(" \\\\\n"));
-    out.push_str("\n\\end{align*}\n");
+    out.push_str(&trig_tex::align(&equations));
     for (point, _, singular) in &s.forced {
         if !singular.is_empty() {
-            out.push_str(&format!(
-                "% {}: singular where {}\n",
-                point,
+            out.push_str(&trig_tex::comment(&format!(
+                "{point}: singular where {}",
                 singular.join(", ")
-            ));
+            )));
         }
     }
     out

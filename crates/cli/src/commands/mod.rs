@@ -18,6 +18,16 @@ pub enum CliError {
     Usage(String),
 }
 
+impl From<trig_specfile::OpenError> for CliError {
+    fn from(e: trig_specfile::OpenError) -> Self {
+        use trig_specfile::OpenError;
+        match e {
+            OpenError::Core(e) => CliError::Core(e),
+            e => CliError::Usage(e.to_string().replace('\n', " ")),
+        }
+    }
+}
+
 /// Result of a command: the text to print.
 pub type CmdResult = Result<String, CliError>;
 

@@ -6,23 +6,23 @@ use std::path::{Path, PathBuf};
 
 use clap::{Args, Subcommand};
 use rug::Rational;
+use trig_certify::ParamBox;
 use trig_certify::region::CellKind;
-use trig_core::{Basis, Bound, parse_exact};
+use trig_core::End as SpecEnd;
+use trig_core::{Bound, Described, parse_exact};
 use trig_interp::{DataSet, Scheme, Variant, f64_segments};
 use trig_plot::{
     Interpolant, Picture, Plotted, RegionCell, RegionKind, basis_svg, basis_versus_svg, curve_svg,
     fit_svg, interp_svg, region_svg,
 };
 use trig_specfile::Spec;
-use trig_specfile::range::End as SpecEnd;
 use trig_verification::region_audit::{Axis, classify_window};
-use trig_verification::report::tex_escape;
 
-use super::eval::Subject;
 use super::fit::{FitSetup, Runs, prepare};
 use super::{CliError, CmdResult, range_hint};
 use crate::format::csv_text;
 use crate::output::{write_atomically, wrote};
+use trig_specfile::AnyBasis;
 
 #[derive(Debug, Args)]
 pub struct PlotArgs {
@@ -146,8 +146,8 @@ fn values(
 /// basis, for the values of its one parameter (checked against the
 /// published range unless `--allow-outside-range`).
 fn plotted(family: Option<&str>, v: &Values, what: &str) -> Result<Plotted, CliError> {
-    match Subject::from_args(family, v.spec.as_deref())? {
-        Subject::Family(family) => {
+    match AnyBasis::open(family, v.spec.as_deref())? {
+        AnyBasis::Family(family) => {
             let vals = match family.info().params.first() {
                 None => Vec::new(),
                 Some(p) => {
@@ -157,7 +157,7 @@ fn plotted(family: Option<&str>, v: &Values, what: &str) -> Result<Plotted, CliE
             };
             Plotted::family(family, &vals, v.allow_outside_range, what).map_err(plot_err_hinted)
         }
-        Subject::Spec(spec) => {
+        AnyBasis::Spec(spec) => {
             let settings: Vec<Vec<Rational>> = match spec.params.as_slice() {
                 [] => vec![Vec::new()],
                 [p] => {
@@ -219,7 +219,7 @@ fn write(output: &Path, picture: &Picture) -> CmdResult {
         &Picture::HEADER,
         rows.iter().map(|r| r.iter().map(String::as_str)),
     )?;
-    let pgf = picture.pgf(tex_escape);
+    let pgf = picture.pgf();
     write_atomically(output, picture.svg.as_bytes())?;
     write_atomically(&tex, pgf.as_bytes())?;
     write_atomically(&data, csv.as_bytes())?;
@@ -361,11 +361,11 @@ fn region(path: &Path) -> Result<Picture, CliError> {
             spec.params.len()
         )));
     };
-    fn axis(p: &trig_specfile::SpecParam) -> Axis<'_> {
+    fn axis(p: &trig_core::Parameter) -> Axis<'_> {
         Axis {
             name: &p.name,
             symbol: &p.symbol,
-            set: p.range.to_box(),
+            set: ParamBox::from_range(&p.range),
             source: &p.source,
         }
     }

@@ -5,14 +5,15 @@ use clap::{Args, ValueEnum};
 use rug::Rational;
 use trig_core::certified::{self, CheckedF64, F64_CHECK_DIGITS, at_bits, check_f64, to_digits};
 use trig_core::decimal::{bound_text, max_digits};
-use trig_core::{Basis, CoreError, Interval, Ring, parse_exact};
+use trig_core::{CoreError, Described, Interval, Ring, parse_exact};
 use trig_deriv::{End, Wrt, curve_endpoint_derivatives, endpoint_derivatives, knot_derivatives};
 use trig_symbolic::Sym;
 
-use super::eval::{Mode, Subject, param_pairs, precision_mode, shortfall};
+use super::eval::{Mode, param_pairs, precision_mode, shortfall};
 use super::{CliError, CmdResult, range_hint};
 use crate::cell::{Block, Cell, Rendered};
 use crate::format::{TableFormat, render_blocks};
+use trig_specfile::AnyBasis;
 
 /// Highest order a table can have (the cost model).
 pub const MAX_ORDER: usize = 12;
@@ -95,7 +96,7 @@ impl From<WrtArg> for Wrt {
 }
 
 pub fn run(args: &TableArgs) -> CmdResult {
-    let family = Subject::from_args(args.family.as_deref(), args.spec.as_deref())?;
+    let family = AnyBasis::open(args.family.as_deref(), args.spec.as_deref())?;
     let id = family.id();
     if args.order > MAX_ORDER {
         return Err(CoreError::Limit {
@@ -136,7 +137,7 @@ pub fn run(args: &TableArgs) -> CmdResult {
 
 /// The exact table: parameters (and `h`) as symbols, π symbolic; curve
 /// tables as combinations of the control points `P0, P1, …`.
-fn exact(args: &TableArgs, family: &Subject) -> Vec<Block> {
+fn exact(args: &TableArgs, family: &AnyBasis) -> Vec<Block> {
     let params: Vec<Sym> = family.param_names().iter().map(|p| Sym::var(p)).collect();
     let h = if Wrt::from(args.wrt) == Wrt::X {
         Sym::var("h")
@@ -164,7 +165,7 @@ fn exact(args: &TableArgs, family: &Subject) -> Vec<Block> {
 /// The numeric table at exact parameter values: f64 with a certified
 /// error bound (entries f64 gets wrong replaced by certified values), or
 /// the proved digits of interval jets (`--prec`, `--digits`).
-fn numeric(args: &TableArgs, family: &Subject) -> Result<(Vec<Block>, String), CliError> {
+fn numeric(args: &TableArgs, family: &AnyBasis) -> Result<(Vec<Block>, String), CliError> {
     let pairs = param_pairs(&args.params)?;
     let p = family
         .params_from_pairs(&pairs, args.allow_outside_range)
@@ -279,7 +280,7 @@ type CurveData<'a, T> = Option<(&'a [T], &'a [T])>;
 /// for the requested order.
 fn build<T: Ring>(
     args: &TableArgs,
-    family: &Subject,
+    family: &AnyBasis,
     params: &[T],
     h: &T,
     curve: CurveData<'_, T>,
@@ -297,7 +298,7 @@ fn build<T: Ring>(
 
 fn blocks<T: Ring, const K: usize>(
     args: &TableArgs,
-    family: &Subject,
+    family: &AnyBasis,
     params: &[T],
     h: &T,
     curve: CurveData<'_, T>,

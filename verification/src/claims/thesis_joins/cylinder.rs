@@ -17,11 +17,12 @@ use super::{lin, n, v};
 use crate::claim::shared;
 use crate::evidence::{Evidence, EvidenceList, Expr, Value, Witness};
 use crate::exact::{sum, symbols};
-use crate::joins::{Printed, PrintedJoin, audit_surface};
-use crate::verdict::{Status, Verdict};
+use crate::judge::join::{Printed, PrintedJoin, audit_surface};
+use crate::status::Status;
+use crate::verdict::Verdict;
 
 /// A seam from the end of `from` (points `from0…from3`) to the start of `to`.
-fn seam(from: &str, to: &str) -> PrintedJoin {
+fn seam(from: &str, to: &str) -> PrintedJoin<Family> {
     let (a, b) = (symbols(from, 4), symbols(to, 4));
     let m = v("m");
     let printed = vec![
@@ -36,15 +37,13 @@ fn seam(from: &str, to: &str) -> PrintedJoin {
             ],
         ),
     ];
-    PrintedJoin {
-        family: Family::ThesisCubic,
-        kind: JoinKind::C(2),
-        first_params: vec![m.clone()],
-        second_params: vec![m],
-        first: a,
-        second: b,
+    PrintedJoin::new(
+        Family::ThesisCubic,
+        JoinKind::C(2),
+        (vec![m.clone()], vec![m]),
+        (a, b),
         printed,
-    }
+    )
 }
 
 /// The printed seam formulas of 5.4.3 (C⁰, C¹, C² rows).
@@ -53,7 +52,7 @@ pub fn t26j() -> Verdict {
     shared(&VERDICT, || {
         let m = v("m");
         Verdict::all(
-            crate::joins::METHOD,
+            crate::judge::join::METHOD,
             vec![
                 (
                     "seam P → Q (Q0 = P3, Q1 = 2P3 − P2, Q2 = P1 − (4m+4)P2 + (4m+4)P3)".into(),

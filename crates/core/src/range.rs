@@ -1,11 +1,13 @@
-//! Published parameter ranges with exact rational ends: `[-2, 1]`,
-//! `(1/2, 2]`, `[0, inf)`, `(-inf, +inf)`. Decimals are read exactly
-//! (`0.3` is `3/10`).
+//! Published parameter ranges with exact ends — rational, or rational
+//! multiples of π: `[-2, 1]`, `(1/2, 2]`, `[0, inf)`, `(-inf, +inf)`,
+//! `(0, pi)`. Decimals are read exactly (`0.3` is `3/10`). The range of
+//! every described basis's parameter ([`crate::Parameter`]), catalog
+//! family or spec file.
 
 use std::fmt;
 
+use crate::param::parse_exact;
 use rug::Rational;
-use trig_core::parse_exact;
 
 /// One end of a range.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -28,7 +30,7 @@ impl End {
 /// A parameter range `lo … hi`; with `pi`, the finite ends are the
 /// printed rational multiples of π (`(0, pi)` for C-curves).
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct SpecRange {
+pub struct ParamRange {
     pub lo: End,
     pub hi: End,
     pub pi: bool,
@@ -83,9 +85,9 @@ fn compare_pi(x: &Rational, q: &Rational) -> std::cmp::Ordering {
     }
 }
 
-impl SpecRange {
+impl ParamRange {
     /// Reads a range; the message says what was expected.
-    pub fn parse(text: &str) -> Result<SpecRange, String> {
+    pub fn parse(text: &str) -> Result<ParamRange, String> {
         let expected = "expected a range such as [-2, 1], (1/2, 2] or [0, inf)";
         let t = text.trim();
         let (open_lo, rest) = match t.chars().next() {
@@ -138,7 +140,7 @@ impl SpecRange {
                 "`{text}`: give both finite ends as multiples of pi, or neither (e.g. (0, pi), [pi/6, pi/2])"
             ));
         }
-        let range = SpecRange { lo, hi, pi };
+        let range = ParamRange { lo, hi, pi };
         if let (Some(lo), Some(hi)) = (range.lo.value(), range.hi.value()) {
             let both_closed = matches!((&range.lo, &range.hi), (End::Closed(_), End::Closed(_)));
             if lo > hi || (lo == hi && !both_closed) {
@@ -152,54 +154,24 @@ impl SpecRange {
 
     /// True when `x` lies in the range.
     pub fn contains(&self, x: &Rational) -> bool {
-        if !self.pi {
-            return self.to_box().contains(x);
-        }
         use std::cmp::Ordering::{Equal, Greater, Less};
         let above = match &self.lo {
-            End::Closed(q) => matches!(compare_pi(x, q), Greater | Equal),
-            End::Open(q) => compare_pi(x, q) == Greater,
+            End::Closed(q) => matches!(self.compare(x, q), Greater | Equal),
+            End::Open(q) => self.compare(x, q) == Greater,
             End::Unbounded => true,
         };
         let below = match &self.hi {
-            End::Closed(q) => matches!(compare_pi(x, q), Less | Equal),
-            End::Open(q) => compare_pi(x, q) == Less,
+            End::Closed(q) => matches!(self.compare(x, q), Less | Equal),
+            End::Open(q) => self.compare(x, q) == Less,
             End::Unbounded => true,
         };
         above && below
     }
 
-    /// The range as a parameter set of the Bernstein engine (rational
-    /// ends). A range in multiples of π has none: the callers use the
-    /// interval engine for it ([`SpecRange::to_axis`]); here its ends are
-    /// rounded outward to rationals (`π < 3.1416`), for containment proofs
-    /// only.
-    pub fn to_box(&self) -> trig_certify::ParamBox {
-        let pi = if self.pi {
-            Rational::from((31_416, 10_000))
-        } else {
-            Rational::from(1)
-        };
-        let bound = |e: &End| match e {
-            End::Closed(q) => trig_certify::Bound::Closed(Rational::from(q * &pi)),
-            End::Open(q) => trig_certify::Bound::Open(Rational::from(q * &pi)),
-            End::Unbounded => trig_certify::Bound::Infinite,
-        };
-        trig_certify::ParamBox {
-            lo: bound(&self.lo),
-            hi: bound(&self.hi),
-        }
-    }
-
-    /// The range as an axis of the interval engine, when it is bounded.
-    pub fn to_axis(&self) -> Option<trig_certify::branch::Axis> {
-        Some(trig_certify::branch::Axis {
-            lo: self.lo.value()?.clone(),
-            hi: self.hi.value()?.clone(),
-            lo_open: matches!(self.lo, End::Open(_)),
-            hi_open: matches!(self.hi, End::Open(_)),
-            pi: self.pi,
-        })
+    /// The sign of `x − end` for an end `q` (`q·π` in a range in
+    /// multiples of π).
+    fn compare(&self, x: &Rational, q: &Rational) -> std::cmp::Ordering {
+        if self.pi { compare_pi(x, q) } else { x.cmp(q) }
     }
 
     /// A value inside: the midpoint, one beyond a single finite end, or 0
@@ -219,8 +191,8 @@ impl SpecRange {
     }
 }
 
-/// Printed as `trig_core::Range` prints: `[-2, 1]`, `(1/2, 2]`, `[0, +inf)`.
-impl fmt::Display for SpecRange {
+/// Printed as `[-2, 1]`, `(1/2, 2]`, `[0, +inf)`, `(0, pi)`.
+impl fmt::Display for ParamRange {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let v = |q: &Rational| {
             if !self.pi || *q == 0 {
@@ -255,41 +227,45 @@ mod tests {
 
     #[test]
     fn ranges_read_exactly_and_print_like_the_catalog() {
-        let r = SpecRange::parse("(1/2, 2]").unwrap();
+        let r = ParamRange::parse("(1/2, 2]").unwrap();
         assert_eq!(
             r.to_string(),
-            trig_core::Family::MajeedQayyum.info().params[0]
+            crate::Family::MajeedQayyum.info().params[0]
                 .range
                 .to_string()
         );
         assert!(!r.contains(&Rational::from((1, 2))) && r.contains(&Rational::from(2)));
-        let d = SpecRange::parse("[0.3, 0.5]").unwrap();
+        let d = ParamRange::parse("[0.3, 0.5]").unwrap();
         assert_eq!(d.lo, End::Closed(Rational::from((3, 10))));
         assert_eq!(
-            SpecRange::parse("[0, inf)").unwrap().to_string(),
+            ParamRange::parse("[0, inf)").unwrap().to_string(),
             "[0, +inf)"
         );
-        assert_eq!(SpecRange::parse("[−2, 1]").unwrap().to_string(), "[-2, 1]");
+        assert_eq!(ParamRange::parse("[−2, 1]").unwrap().to_string(), "[-2, 1]");
     }
 
     #[test]
     fn bad_ranges_are_refused_with_a_reason() {
         assert!(
-            SpecRange::parse("[1, -2]")
+            ParamRange::parse("[1, -2]")
                 .unwrap_err()
                 .contains("reversed")
         );
-        assert!(SpecRange::parse("(1, 1]").unwrap_err().contains("reversed"));
         assert!(
-            SpecRange::parse("1, 2")
+            ParamRange::parse("(1, 1]")
+                .unwrap_err()
+                .contains("reversed")
+        );
+        assert!(
+            ParamRange::parse("1, 2")
                 .unwrap_err()
                 .contains("expected a range")
         );
-        assert!(SpecRange::parse("[0, inf]").unwrap_err().contains("open"));
-        assert!(SpecRange::parse("[inf, 0)").is_err());
-        assert!(SpecRange::parse("[a, 2]").is_err());
+        assert!(ParamRange::parse("[0, inf]").unwrap_err().contains("open"));
+        assert!(ParamRange::parse("[inf, 0)").is_err());
+        assert!(ParamRange::parse("[a, 2]").is_err());
         assert!(
-            SpecRange::parse("[1, pi]")
+            ParamRange::parse("[1, pi]")
                 .unwrap_err()
                 .contains("multiples of pi")
         );
@@ -297,16 +273,16 @@ mod tests {
 
     #[test]
     fn ranges_in_multiples_of_pi() {
-        let r = SpecRange::parse("(0, pi)").unwrap();
+        let r = ParamRange::parse("(0, pi)").unwrap();
         assert!(r.pi && r.to_string() == "(0, pi)");
         assert!(r.contains(&Rational::from((314_159, 100_000))));
         assert!(!r.contains(&Rational::from((314_160, 100_000))));
         assert!(!r.contains(&Rational::new()));
-        let s = SpecRange::parse("[pi/6, 3*pi/4]").unwrap();
+        let s = ParamRange::parse("[pi/6, 3*pi/4]").unwrap();
         assert_eq!(s.to_string(), "[pi/6, 3*pi/4]");
         assert!(s.contains(&s.interior_point()));
         assert_eq!(
-            SpecRange::parse("[-pi/2, 2π]").unwrap().to_string(),
+            ParamRange::parse("[-pi/2, 2π]").unwrap().to_string(),
             "[-1*pi/2, 2*pi]"
         );
     }

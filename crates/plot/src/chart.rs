@@ -1,0 +1,96 @@
+//! A chart as data: its frame (title, axis labels, ranges) and its
+//! series, each with its look and legend entry — what every output
+//! format (SVG, pgfplots, CSV) draws from.
+
+/// The frame of a picture: title, axis labels and the ranges shown.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Frame {
+    pub title: String,
+    pub x_label: String,
+    pub y_label: String,
+    pub x: (f64, f64),
+    pub y: (f64, f64),
+    /// Draw the line `y = 0` (the point of positivity plots).
+    pub zero_line: bool,
+}
+
+/// How a series is drawn (sizes in units of [`crate::style::UNIT_MM`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Mark {
+    /// A polyline; `vertices` marks its points.
+    Line {
+        width: f64,
+        dashed: bool,
+        vertices: bool,
+    },
+    /// A filled dot at each point.
+    Dots { radius: f64 },
+    /// A cross at each point.
+    Crosses,
+    /// The filled rectangle spanned by the two points of the series.
+    Cell,
+}
+
+/// Colour, opacity and mark of a series.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Look {
+    pub rgb: (u8, u8, u8),
+    pub opacity: f64,
+    pub mark: Mark,
+}
+
+impl Look {
+    /// An opaque polyline.
+    pub fn line(rgb: (u8, u8, u8), width: f64) -> Self {
+        Look {
+            rgb,
+            opacity: 1.0,
+            mark: Mark::Line {
+                width,
+                dashed: false,
+                vertices: false,
+            },
+        }
+    }
+
+    /// An opaque mark `mark`.
+    pub fn marks(rgb: (u8, u8, u8), mark: Mark) -> Self {
+        Look {
+            rgb,
+            opacity: 1.0,
+            mark,
+        }
+    }
+}
+
+/// One drawn series: its label in the data (with the piece, where a curve
+/// is drawn in pieces), its points in data coordinates, its look, and its
+/// legend entry (the first series of a group carries it).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Series {
+    pub label: String,
+    pub points: Vec<(f64, f64)>,
+    pub look: Look,
+    pub legend: Option<String>,
+}
+
+impl Series {
+    pub fn new(
+        label: impl Into<String>,
+        points: impl IntoIterator<Item = (f64, f64)>,
+        look: Look,
+    ) -> Self {
+        Series {
+            label: label.into(),
+            points: points.into_iter().collect(),
+            look,
+            legend: None,
+        }
+    }
+
+    /// The series with the legend entry `text`.
+    pub fn legend(mut self, text: impl Into<String>) -> Self {
+        self.legend = Some(text.into());
+        self
+    }
+}

@@ -1,0 +1,36 @@
+//! # trig-tex
+//!
+//! The one LaTeX writer of trig-audit: the audit report, the tables of
+//! `table --format tex` and `join --format tex`, the pgfplots code of the
+//! figures, and the LaTeX form of exact expressions (`trig_symbolic`'s
+//! printer takes its pieces from [`expr`]) are all written with it.
+//!
+//! - Text: [`text`] escapes prose (the special characters, every Unicode
+//!   symbol the reports print mapped, [`symbols`]); [`prose`] sets the
+//!   formula-like runs of a statement in math; [`breakable`] lets a long
+//!   path or printed formula break.
+//! - Math: [`math`] turns Unicode formula text (`H_{2−i}(π/2 − u; β)`) into
+//!   LaTeX math; [`inline_math`] and [`fitted_math`] set a formula in text.
+//! - Expressions: [`expr`] spells names, powers, fractions and numbers.
+//! - Tables: [`LongTable`] with its [`Column`]s, [`column_name`].
+//! - Documents: [`PREAMBLE`], [`document`], [`comment`], [`align`];
+//!   [`compile`] runs `pdflatex` for the tests.
+//!
+//! The output is ASCII and compiles with pdfLaTeX (and LuaLaTeX, XeLaTeX)
+//! using the packages of a basic TeX installation. The crate depends on
+//! nothing, so every crate that writes LaTeX can use it.
+
+mod compile;
+mod document;
+pub mod expr;
+mod math;
+pub mod symbols;
+mod table;
+mod text;
+
+pub use compile::{CompileLog, compile};
+pub use document::{PREAMBLE, align, comment, document};
+pub use math::{fitted_math, inline_math, math};
+pub use symbols::unmapped;
+pub use table::{Column, LongTable, column_name};
+pub use text::{breakable, prose, text};
