@@ -233,3 +233,38 @@ fn squares_have_exact_ends() {
     );
     assert_eq!(verdict(&sq, "SQ-wide"), "fails");
 }
+
+#[test]
+fn table_in_the_variable_and_fit_optimise_with_two_parameters() {
+    // README C6: derivatives in t at t = 0 of the half-angle basis (its
+    // atoms are in t/2): order 1 (−(1 + λ√2/2), 1 + λ√2/2, 0), order 3
+    // (1 + √2λ/8, −1 − 3λ/2 − √2λ/8, 3λ/2)
+    let hal = example("half-angle-lambda.toml");
+    let table = stdout_ok(&[
+        "table", "--spec", &hal, "--wrt", "t", "--order", "3", "--at", "start",
+    ]);
+    assert!(table.contains("derivatives with respect to t"), "{table}");
+    assert!(
+        table.contains("| 1 | −1/2·λ·sqrt(2) − 1 | 1/2·λ·sqrt(2) + 1 | 0 |"),
+        "{table}"
+    );
+    assert!(
+        table.contains("| 3 | 1/8·λ·sqrt(2) + 1 | −1/8·λ·sqrt(2) − 3/2·λ − 1 | 3/2·λ |"),
+        "{table}"
+    );
+    // another name is refused, naming the variable
+    let out = trig_e2e::run(&["table", "--spec", &hal, "--wrt", "s"]);
+    assert!(!out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("the basis variable t"));
+    // --optimise with two shape parameters says why it cannot (it printed
+    // nothing optimised and exited 0)
+    let glyph = format!("{}/../data/glyphs/ain.csv", env!("CARGO_MANIFEST_DIR"));
+    let hmh = example("han-ma-huang-cubic.toml");
+    let out = trig_e2e::run(&["fit", "--spec", &hmh, "--glyph", &glyph, "--optimise"]);
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("has 2 (λ, μ)") && err.contains("--param"),
+        "{err}"
+    );
+}

@@ -51,9 +51,11 @@ pub struct TableArgs {
     /// Which end(s), or the knots of the uniform piecewise basis function.
     #[arg(long, value_enum, default_value = "both")]
     at: At,
-    /// Variable of differentiation: the angle θ, u with θ = πu/2, or a data abscissa x.
-    #[arg(long, value_enum, default_value = "angle")]
-    wrt: WrtArg,
+    /// Variable of differentiation: `angle` (θ), `u` (θ = πu/2), `x` (a data
+    /// abscissa), or the basis variable by its own name (`t` for a spec file
+    /// whose variable is `t`, with half angles too).
+    #[arg(long, default_value = "angle", value_name = "WRT")]
+    wrt: String,
     /// Output format.
     #[arg(long, value_enum, default_value = "md")]
     format: TableFormat,
@@ -95,8 +97,24 @@ impl From<WrtArg> for Wrt {
     }
 }
 
+/// The convention `--wrt` names: `angle`, `u`, `x`, or the basis
+/// variable's own name (derivatives in it, whatever angle its atoms use).
+fn wrt_of(text: &str, family: &AnyBasis) -> Result<Wrt, CliError> {
+    let name = family.domain().name;
+    match text.trim() {
+        "angle" | "theta" | "θ" => Ok(Wrt::Angle),
+        "u" => Ok(Wrt::U),
+        "x" => Ok(Wrt::X),
+        t if t == name => Ok(Wrt::Variable),
+        other => Err(CliError::Usage(format!(
+            "--wrt {other}: expected angle, u, x or the basis variable {name}"
+        ))),
+    }
+}
+
 pub fn run(args: &TableArgs) -> CmdResult {
     let family = AnyBasis::open(args.family.as_deref(), args.spec.as_deref())?;
+    let wrt = wrt_of(&args.wrt, &family)?;
     let id = family.id();
     if args.order > MAX_ORDER {
         return Err(CoreError::Limit {
@@ -123,23 +141,23 @@ pub fn run(args: &TableArgs) -> CmdResult {
         ));
     }
     let (blocks, mode) = if args.numeric {
-        numeric(args, &family)?
+        numeric(args, &family, wrt)?
     } else {
-        (exact(args, &family), "exact".to_string())
+        (exact(args, &family, wrt), "exact".to_string())
     };
     let heading = format!(
         "{id} ({}): derivatives {}, {mode}",
         family.citation(),
-        Wrt::from(args.wrt).describe_on(&family.domain())
+        wrt.describe_on(&family.domain())
     );
     render_blocks(&heading, &blocks, args.format)
 }
 
 /// The exact table: parameters (and `h`) as symbols, π symbolic; curve
 /// tables as combinations of the control points `P0, P1, …`.
-fn exact(args: &TableArgs, family: &AnyBasis) -> Vec<Block> {
+fn exact(args: &TableArgs, family: &AnyBasis, wrt: Wrt) -> Vec<Block> {
     let params: Vec<Sym> = family.param_names().iter().map(|p| Sym::var(p)).collect();
-    let h = if Wrt::from(args.wrt) == Wrt::X {
+    let h = if wrt == Wrt::X {
         Sym::var("h")
     } else {
         Sym::one()
@@ -148,7 +166,7 @@ fn exact(args: &TableArgs, family: &AnyBasis) -> Vec<Block> {
     let names: Vec<String> = (0..n).map(|i| format!("P{i}")).collect();
     let points: Vec<Sym> = names.iter().map(|p| Sym::var(p)).collect();
     let weights: Vec<Sym> = (0..n).map(|i| Sym::var(&format!("w{i}"))).collect();
-    build(args, family, &params, &h, Some((&points, &weights)))
+    build(args, family, wrt, &params, &h, Some((&points, &weights)))
         .into_iter()
         .map(|b| {
             b.map(|v| {
@@ -165,7 +183,11 @@ fn exact(args: &TableArgs, family: &AnyBasis) -> Vec<Block> {
 /// The numeric table at exact parameter values: f64 with a certified
 /// error bound (entries f64 gets wrong replaced by certified values), or
 /// the proved digits of interval jets (`--prec`, `--digits`).
-fn numeric(args: &TableArgs, family: &AnyBasis) -> Result<(Vec<Block>, String), CliError> {
+fn numeric(
+    args: &TableArgs,
+    family: &AnyBasis,
+    wrt: Wrt,
+) -> Result<(Vec<Block>, String), CliError> {
     let pairs = param_pairs(&args.params)?;
     let p = family
         .params_from_pairs(&pairs, args.allow_outside_range)
@@ -184,6 +206,7 @@ fn numeric(args: &TableArgs, family: &AnyBasis) -> Result<(Vec<Block>, String), 
         let blocks = build(
             args,
             family,
+            wrt,
             &p.iter().map(mk).collect::<Vec<_>>(),
             &mk(&h),
             None,
@@ -204,6 +227,7 @@ fn numeric(args: &TableArgs, family: &AnyBasis) -> Result<(Vec<Block>, String), 
             let floats = build(
                 args,
                 family,
+                wrt,
                 &p.iter().map(Rational::to_f64).collect::<Vec<_>>(),
                 &h.to_f64(),
                 None,
@@ -281,6 +305,7 @@ type CurveData<'a, T> = Option<(&'a [T], &'a [T])>;
 fn build<T: Ring>(
     args: &TableArgs,
     family: &AnyBasis,
+    wrt: Wrt,
     params: &[T],
     h: &T,
     curve: CurveData<'_, T>,
@@ -288,7 +313,7 @@ fn build<T: Ring>(
     macro_rules! with_order {
         ($($n:literal),*) => {
             match args.order {
-                $($n => blocks::<T, { $n + 1 }>(args, family, params, h, curve),)*
+                $($n => blocks::<T, { $n + 1 }>(args, family, wrt, params, h, curve),)*
                 _ => unreachable!("order checked against MAX_ORDER"),
             }
         };
@@ -299,11 +324,11 @@ fn build<T: Ring>(
 fn blocks<T: Ring, const K: usize>(
     args: &TableArgs,
     family: &AnyBasis,
+    wrt: Wrt,
     params: &[T],
     h: &T,
     curve: CurveData<'_, T>,
 ) -> Vec<Block<T>> {
-    let wrt = Wrt::from(args.wrt);
     let orders = || (0..K).map(|k| k.to_string());
     if args.at == At::Knots {
         let knots = knot_derivatives::<T, K>(family, params, wrt, h);
