@@ -21,11 +21,12 @@ use std::fmt;
 
 use rug::{Integer, Rational};
 use trig_core::families::seed000_nonuniform::NonUniform;
-use trig_core::{Basis, CoreError, Family};
+use trig_core::{CoreError, Family};
 use trig_deriv::{End, Jet, Wrt, angle_atoms, curve_endpoint_derivatives, knot_derivatives};
 use trig_symbolic::{Monomial, Poly, Sym};
 
 use crate::evidence::{Evidence, Expr, Kind};
+use crate::exact::ExactBasis;
 
 /// How continuity is decided, as the report states it.
 pub const METHOD: &str = "exact one-sided derivatives of orders 0–6 (Taylor jets in the symbolic ring) at every knot; a jump is decided by the exact zero test; exceptional parameter values are the rational roots of the first nonzero jump's numerator";
@@ -316,7 +317,7 @@ fn divisors(n: &Integer) -> (Vec<Integer>, bool) {
 /// The `n` pieces of the uniform B-spline basis function assembled from
 /// the `n` functions of `basis` (piece `k` is function `n − 1 − k`), unit
 /// knot spacing, derivatives in the global knot parameter.
-pub fn uniform_bspline<B: Basis>(basis: &B, params: &[Sym]) -> Vec<Piece> {
+pub fn uniform_bspline<B: ExactBasis>(basis: &B, params: &[Sym]) -> Vec<Piece> {
     let knots = knot_derivatives::<Sym, K>(basis, params, Wrt::U, &Sym::one());
     knots
         .windows(2)

@@ -6,6 +6,7 @@
 
 use trig_core::{Atoms, Basis, Family};
 use trig_deriv::End;
+use trig_specfile::{AnyBasis, Spec};
 use trig_symbolic::{Sym, symbolic_atoms};
 
 use crate::evidence::{Evidence, Expr, Kind};
@@ -28,12 +29,47 @@ pub fn basis_at(family: Family, atoms: &Atoms<Sym>) -> Vec<Sym> {
     family.eval(atoms, &params(family))
 }
 
-/// Every function of any basis with its parameters as symbols, at the
-/// symbolic atoms (the same as [`basis`] for a catalog family, the exact
-/// formulas of a spec file).
-pub fn basis_of<B: Basis>(b: &B) -> Vec<Sym> {
-    let params: Vec<Sym> = b.param_names().iter().map(|p| Sym::var(p)).collect();
-    b.eval(&symbolic_atoms(), &params)
+/// A basis the judges can read exactly: its functions in the symbolic
+/// ring with the parameters as symbols, in the form the basis holds them —
+/// a catalog family evaluated at the symbolic atoms, a spec file's formulas
+/// as read (denominators factored as written, so a definition used as a
+/// divisor stays one factor for the certifiers).
+pub trait ExactBasis: Basis {
+    /// Every function, exactly.
+    fn exact_functions(&self) -> Vec<Sym>;
+}
+
+impl ExactBasis for Family {
+    fn exact_functions(&self) -> Vec<Sym> {
+        basis(*self)
+    }
+}
+
+impl ExactBasis for Spec {
+    fn exact_functions(&self) -> Vec<Sym> {
+        self.symbolic()
+    }
+}
+
+impl ExactBasis for AnyBasis {
+    fn exact_functions(&self) -> Vec<Sym> {
+        match self {
+            AnyBasis::Family(f) => f.exact_functions(),
+            AnyBasis::Spec(s) => s.exact_functions(),
+        }
+    }
+}
+
+impl<B: ExactBasis + ?Sized> ExactBasis for &B {
+    fn exact_functions(&self) -> Vec<Sym> {
+        (**self).exact_functions()
+    }
+}
+
+/// Every function of any basis with its parameters as symbols (see
+/// [`ExactBasis`]).
+pub fn basis_of<B: ExactBasis>(b: &B) -> Vec<Sym> {
+    b.exact_functions()
 }
 
 /// The family's parameters as symbols.

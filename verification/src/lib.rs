@@ -19,7 +19,6 @@ pub mod minimum;
 pub mod numeric;
 pub mod parallel;
 pub mod real_witness;
-pub mod region_audit;
 pub mod report;
 pub mod spec_audit;
 pub mod status;

@@ -110,8 +110,10 @@ fn every_claim_that_does_not_hold_shows_a_witness() {
 #[test]
 fn the_markdown_report_is_short_and_its_lines_readable() {
     let md = report::markdown(outcomes());
+    // about 1.2 KB a claim: 119 claims of the first list and the second
+    // list's 64 as they are decided (issue 23)
     assert!(
-        md.len() < 150_000,
+        md.len() < 1_200 * 183,
         "the Markdown report has {} bytes",
         md.len()
     );

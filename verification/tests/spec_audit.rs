@@ -186,3 +186,41 @@ fn a_printed_join_in_another_convention_gets_the_catalog_verdict() {
     assert_eq!(s.status, catalog.status, "{s:?}");
     assert_eq!(s.correction.as_deref(), Some(correction.as_str()));
 }
+
+/// An example spec file with one more claim appended.
+fn example_with(name: &str, claims: &str) -> Spec {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../examples")
+        .join(format!("{name}.toml"));
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{e}"));
+    Spec::from_str_named(&format!("{text}\n{claims}"), name).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// `check = "independent"` both ways, on bases outside the catalog, with
+/// the results derived independently in examples/independent/README.md,
+/// Part D(b): Yan & Liang's cubic is dependent at λ = −3 (b1 ≡ b2), Han's
+/// quadratic at λ = −1 (b1 ≡ 0), the rational quadratic at w = 0; the
+/// C-B-spline is independent on (0, π) (det = 4α(1 − cos α)² sin α).
+#[test]
+fn linear_independence_is_decided_both_ways() {
+    let claim = "[[claims]]\nid = \"IND\"\nsource = \"test\"\nstatement = \"linearly independent\"\ncheck = \"independent\"\n";
+    for (name, status, text) in [
+        ("yan-liang-cubic", Status::Fails, "dependent at λ = -3"),
+        ("han-quadratic", Status::Fails, "dependent at λ = -1"),
+        ("rational-quadratic", Status::Fails, "dependent at w = 0"),
+        ("c-bspline", Status::Holds, "sin(alpha)"),
+    ] {
+        let spec = example_with(name, claim);
+        let v = spec_audit::decide(&spec, &spec.claims[spec.claims.len() - 1]);
+        assert_eq!(v.status, status, "{name}: {v:?}");
+        assert!(format!("{v:?}").contains(text), "{name}: {v:?}");
+    }
+    // narrowed away from the exceptional value, Yan & Liang's basis is independent
+    let narrowed = claim.replace(
+        "check = \"independent\"",
+        "check = \"independent\"\nrange = \"[-2, 1]\"",
+    );
+    let spec = example_with("yan-liang-cubic", &narrowed);
+    let v = spec_audit::decide(&spec, &spec.claims[spec.claims.len() - 1]);
+    assert_eq!(v.status, Status::Holds, "{v:?}");
+}

@@ -20,7 +20,7 @@ use crate::decimal::{Decimal, bound_text};
 use crate::domain::{Affine, Domain};
 use crate::error::{CoreError, Result};
 use crate::interval::{Fault, Interval};
-use crate::param::parse_exact;
+use crate::number::parse_exact;
 use crate::scalar::{Real, Ring};
 
 /// The highest working precision, in bits (about 19,700 decimal digits).
@@ -388,7 +388,7 @@ mod tests {
 
     #[test]
     fn domain_checks_use_the_exact_point() {
-        let point = |text: &str| crate::param::parse_point(text).unwrap();
+        let point = |text: &str| crate::number::parse_point(text).unwrap();
         let domain = |v: Variable| Domain::from_variable(v, &[]);
         let unit = domain(Variable::UnitAngle);
         let angle = domain(Variable::Angle);

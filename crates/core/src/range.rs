@@ -6,7 +6,7 @@
 
 use std::fmt;
 
-use crate::param::parse_exact;
+use crate::number::parse_exact;
 use rug::Rational;
 
 /// One end of a range.

@@ -1,4 +1,5 @@
-//! The claims of a spec file, read into checks the audit can decide.
+//! The claims of a spec file, read into checks the audit can decide
+//! ([`crate::check`]), after the functions ([`crate::spec`]).
 
 use rug::Rational;
 use toml::Spanned;
@@ -6,122 +7,12 @@ use trig_core::{Affine, parse_exact};
 use trig_deriv::{End, JoinKind, Wrt};
 use trig_symbolic::Sym;
 
+use crate::check::{Check, Condition, Monotone, Printed, SpecClaim};
 use crate::error::{Result, SpecError};
 use crate::raw::RawClaim;
 use crate::source::Source;
 use crate::spec::{MAX_ORDER, Spec};
 use trig_core::ParamRange;
-
-/// A printed value `name = formula` of one function.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Printed {
-    pub function: usize,
-    pub text: String,
-    pub value: Sym,
-}
-
-/// A printed monotonicity statement about one function.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Monotone {
-    pub function: usize,
-    pub increasing: bool,
-}
-
-/// A printed join condition `Qk = formula in P0…, Q0…`.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Condition {
-    /// Index `k` of the second segment's control point.
-    pub point: usize,
-    pub text: String,
-    pub value: Sym,
-    /// The printed additive terms of the formula (signs included) over its
-    /// printed denominator: `value = Σ terms / denominator`.
-    pub terms: Vec<Sym>,
-    pub denominator: Sym,
-    /// Divisions of the printed formula not proved nonzero over the ranges
-    /// (why, with the witness): the formula is singular there.
-    pub singular: Vec<String>,
-}
-
-/// What a claim of the file asserts, in a form the audit can decide.
-#[derive(Debug, Clone, PartialEq)]
-pub enum Check {
-    /// `Σ bᵢ = 1`.
-    Unity,
-    /// Every function ≥ 0 on the domain for the parameter range (the
-    /// declared one unless given); `maximal`: the range is the maximal one.
-    Nonnegative {
-        range: Option<ParamRange>,
-        maximal: bool,
-    },
-    /// Each listed function monotone on the domain for the range.
-    Monotone {
-        items: Vec<Monotone>,
-        range: Option<ParamRange>,
-    },
-    /// `bᵢ(x; p) = b_{offset−i}(A − x; σ(p))`: the map `x ↦ A − x` printed
-    /// in the variable, the parameters substituted by `σ` (exchange
-    /// symmetry `λ ↔ μ`; the identity unless given); `at` gives parameter
-    /// values for a numeric counterexample when the map is not the
-    /// reflection of the domain.
-    Symmetry {
-        map_text: String,
-        /// `A`.
-        map: Affine,
-        index_text: String,
-        offset: i64,
-        at: Vec<Rational>,
-        /// `σ(p)` for each parameter, in order.
-        params: Vec<Sym>,
-        /// The printed substitution (`lambda = mu, mu = lambda`), empty
-        /// for the identity.
-        params_text: String,
-    },
-    /// Printed function values at one end.
-    EndpointValues { end: End, values: Vec<Printed> },
-    /// Printed derivatives of one order at one end.
-    EndpointDerivatives {
-        end: End,
-        order: usize,
-        wrt: Wrt,
-        values: Vec<Printed>,
-    },
-    /// Printed derivative of the curve `Σ bᵢPᵢ` at one end, a combination
-    /// of the control points (terminal tangents `r'(0) = 3(P1 − P0)`).
-    CurveDerivative {
-        end: End,
-        order: usize,
-        wrt: Wrt,
-        text: String,
-        value: Sym,
-    },
-    /// Printed conditions making two segments `Σ bᵢPᵢ` (end) and
-    /// `Σ bᵢQᵢ` (start) join: `Cᵏ`, `G¹` (`Q'(0) = αP'(1)`), `G²`; with
-    /// `different`, the first segment has the parameters `p1`, the second
-    /// `p2`. `factors` are the names of the `G` factors `α`, `β`.
-    Join {
-        kind: JoinKind,
-        wrt: Wrt,
-        different: bool,
-        factors: [String; 2],
-        conditions: Vec<Condition>,
-    },
-    /// Unity and nonnegativity on the range: the convex-hull property of
-    /// every curve `Σ bᵢPᵢ` (the standard sufficient condition).
-    ConvexHull { range: Option<ParamRange> },
-    /// The uniform B-spline assembled from the `n` functions (piece `k` is
-    /// function `n − 1 − k`) is `Cᵏ` at its knots.
-    Continuity { order: usize },
-}
-
-/// A claim of the file.
-#[derive(Debug, Clone, PartialEq)]
-pub struct SpecClaim {
-    pub id: String,
-    pub source: String,
-    pub statement: String,
-    pub check: Check,
-}
 
 impl Spec {
     /// The names of the `G¹`/`G²` factors: `alpha`, `beta`, unless a shape
@@ -260,7 +151,24 @@ fn order_field(src: &Source<'_>, c: &RawClaim, order: &Spanned<i64>) -> Result<u
 }
 
 /// Reads one claim.
-pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
+/// Reads the claims of the file into `spec`, whose functions are read;
+/// an id used twice is an error.
+pub(crate) fn attach(src: &Source<'_>, spec: &mut Spec, raw: &[RawClaim]) -> Result<()> {
+    for c in raw {
+        let claim = claim(src, spec, c)?;
+        if spec.claims.iter().any(|d| d.id == claim.id) {
+            return Err(SpecError::Invalid {
+                at: src.at(0),
+                field: "claims.id".into(),
+                message: format!("`{}` is used twice", claim.id),
+            });
+        }
+        spec.claims.push(claim);
+    }
+    Ok(())
+}
+
+fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
     let id = c.id.get_ref().trim().to_string();
     if id.is_empty() {
         return src.invalid(c.id.span(), "claims.id", "expected a nonempty id".into());
@@ -272,6 +180,9 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             maximal: c.maximal.unwrap_or(false),
         },
         "convex-hull" => Check::ConvexHull {
+            range: one_param_range(src, spec, &c.range)?,
+        },
+        "independent" => Check::Independent {
             range: one_param_range(src, spec, &c.range)?,
         },
         "monotone" => monotone(src, spec, c)?,
@@ -310,7 +221,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             return src.invalid(
                 c.check.span(),
                 "claims.check",
-                format!("`{other}`: expected unity, nonnegative, convex-hull, monotone, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join or continuity"),
+                format!("`{other}`: expected unity, nonnegative, convex-hull, independent, monotone, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join or continuity"),
             );
         }
     };

@@ -33,11 +33,13 @@
 mod any;
 mod ast;
 mod budget;
-pub mod claims;
+pub mod check;
+mod claims;
 pub mod error;
 mod expression;
 pub mod formula;
 pub mod frequencies;
+mod load;
 pub mod nonvanishing;
 mod raw;
 mod source;
@@ -45,7 +47,7 @@ pub mod spec;
 
 pub use any::{AnyBasis, OpenError};
 pub use ast::Grammar;
-pub use claims::{Check, Condition, Monotone, Printed, SpecClaim};
+pub use check::{Check, Condition, Monotone, Printed, SpecClaim};
 pub use error::{FormulaError, Location, SpecError};
 pub use expression::Expression;
 pub use spec::{Spec, SpecFunction};

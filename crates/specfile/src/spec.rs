@@ -11,7 +11,7 @@ use trig_core::{Affine, Domain, Parameter, Variable};
 use trig_symbolic::Sym;
 
 use crate::ast::{self, Expr};
-use crate::claims::{SpecClaim, claim};
+use crate::check::SpecClaim;
 use crate::error::{FormulaError, Result, SpecError};
 use crate::formula::{Scope, linear, lower};
 use crate::frequencies::{Usage, domain};
@@ -89,26 +89,6 @@ pub const MAX_PARAMS: usize = 8;
 pub const MAX_FUNCTIONS: usize = 64;
 
 impl Spec {
-    /// Reads and validates the spec file at `path`.
-    pub fn from_file(path: &std::path::Path) -> Result<Spec> {
-        let file = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|e| SpecError::Io {
-            file: file.clone(),
-            reason: e.to_string(),
-        })?;
-        Spec::from_str_named(&text, &file)
-    }
-
-    /// Reads and validates spec text; `file` names it in errors.
-    pub fn from_str_named(text: &str, file: &str) -> Result<Spec> {
-        let src = Source { file, text };
-        let raw: RawSpec = toml::from_str(text).map_err(|e| SpecError::Malformed {
-            at: src.at(e.span().map_or(0, |s| s.start)),
-            message: e.message().trim().replace('\n', "; "),
-        })?;
-        build(&src, raw)
-    }
-
     /// Parameter names and printed symbols, in order.
     pub fn param_pairs(&self) -> Vec<(String, String)> {
         self.params
@@ -342,7 +322,9 @@ fn positive_on(l: &Affine, ranges: &[ParamRange]) -> bool {
     least > 0 || (least == 0 && open)
 }
 
-fn build(src: &Source<'_>, raw: RawSpec) -> Result<Spec> {
+/// The spec of `raw` with its functions read and validated, without its
+/// claims (read next by [`crate::claims::attach`]).
+pub(crate) fn build(src: &Source<'_>, raw: &RawSpec) -> Result<Spec> {
     let id = raw.id.get_ref().trim().to_string();
     if id.is_empty()
         || !id
@@ -371,7 +353,7 @@ fn build(src: &Source<'_>, raw: RawSpec) -> Result<Spec> {
             );
         }
     };
-    let params = read_params(src, &raw, &var_name)?;
+    let params = read_params(src, raw, &var_name)?;
     let pairs: Vec<(String, String)> = params
         .iter()
         .map(|p| (p.name.clone(), p.symbol.clone()))
@@ -399,7 +381,7 @@ fn build(src: &Source<'_>, raw: RawSpec) -> Result<Spec> {
         }
     };
     // every formula's tree, then the base rates of the whole file
-    let entries = read_entries(src, &raw, &pairs, &var_name)?;
+    let entries = read_entries(src, raw, &pairs, &var_name)?;
     let mut usage = Usage::default();
     for (entry, e) in &entries {
         usage
@@ -465,17 +447,6 @@ fn build(src: &Source<'_>, raw: RawSpec) -> Result<Spec> {
         } else {
             spec.functions.push(f);
         }
-    }
-    for c in &raw.claims {
-        let claim = claim(src, &spec, c)?;
-        if spec.claims.iter().any(|d| d.id == claim.id) {
-            return Err(SpecError::Invalid {
-                at: src.at(0),
-                field: "claims.id".into(),
-                message: format!("`{}` is used twice", claim.id),
-            });
-        }
-        spec.claims.push(claim);
     }
     Ok(spec)
 }

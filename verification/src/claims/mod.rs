@@ -3,6 +3,7 @@
 
 use crate::claim::Claim;
 
+mod properties;
 mod seed000;
 mod seed000_appendix_b;
 mod seed000_appendix_c;
@@ -32,6 +33,7 @@ pub fn all() -> Vec<Claim> {
         seed003::CLAIMS,
         seed004::CLAIMS,
         seed004_joins::CLAIMS,
+        properties::CLAIMS,
     ]
     .concat()
 }

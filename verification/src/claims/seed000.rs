@@ -9,9 +9,9 @@ use trig_core::{Family, Ring};
 use trig_symbolic::Sym;
 
 use super::seed000_appendix_c::{NONUNIFORM_J, nonuniform_knots};
-use crate::certify::evidence::nonnegative_on;
 use crate::claim::{Claim, Seed};
 use crate::exact::{IDENTITY, basis, identities, residual_verdict, sum};
+use crate::judge::certificate::nonnegative_on;
 use crate::status::Status;
 use crate::verdict::Verdict;
 use trig_certify::ParamBox;
@@ -258,7 +258,7 @@ fn m6() -> Verdict {
 fn m2() -> Verdict {
     let f = basis(Family::Seed000Uniform);
     let mut v = nonnegative_on(
-        Family::Seed000Uniform,
+        &Family::Seed000Uniform,
         &f,
         Some("zeta"),
         &ParamBox::closed(Rational::new(), Rational::from(4)),

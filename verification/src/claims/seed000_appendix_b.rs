@@ -9,10 +9,10 @@ use trig_symbolic::Sym;
 
 use super::seed000_appendix_c::{NONUNIFORM_J, nonuniform_knots};
 use super::seed000_appendix_print::{printed_part, zeta};
-use crate::certify::evidence::{CERTIFIED, describe};
 use crate::certify::nonneg::certify;
 use crate::claim::{Claim, Seed};
 use crate::exact::{IDENTITY, basis, symbols};
+use crate::judge::certificate::{CERTIFIED, describe};
 use crate::status::Status;
 use crate::verdict::Verdict;
 use trig_certify::{ParamBox, in_z};

@@ -6,7 +6,6 @@ use trig_core::{Family, Ring};
 use trig_deriv::{End, Wrt, curve_endpoint_derivatives};
 use trig_symbolic::{Poly, Sym};
 
-use crate::certify::evidence::nonnegative_on;
 use crate::certify::unimodal::exactly_one_maximum;
 use crate::claim::{Claim, Seed};
 use crate::evidence::EvidenceList;
@@ -14,6 +13,7 @@ use crate::exact::{
     IDENTITY, basis, combination, identities, identity, linear_map_parts, reflect, sum, symbols,
     symmetry,
 };
+use crate::judge::certificate::nonnegative_on;
 use crate::status::Status;
 use crate::verdict::Verdict;
 use trig_certify::ParamBox;
@@ -203,7 +203,7 @@ fn d12() -> Verdict {
 fn d2() -> Verdict {
     let zero = rug::Rational::new();
     nonnegative_on(
-        Family::Seed002Quartic,
+        &Family::Seed002Quartic,
         &basis(Family::Seed002Quartic),
         None,
         &ParamBox::closed(zero.clone(), zero),

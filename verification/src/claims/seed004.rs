@@ -6,8 +6,8 @@ use trig_core::{Family, Ring};
 use trig_deriv::{End, Wrt, curve_endpoint_derivatives, endpoint_derivatives};
 use trig_symbolic::Sym;
 
-use crate::certify::evidence::{nonnegative_on, nonnegative_on_box};
 use crate::claim::{Claim, Seed};
+use crate::judge::certificate::{nonnegative_on, nonnegative_on_box};
 
 use crate::exact::{
     IDENTITY, basis, combination, identities, identity, linear_map_parts, reflect, sum, symbols,
@@ -342,7 +342,7 @@ fn e4() -> Verdict {
     let one = rug::Rational::from(1);
     let unit = ParamBox::closed(-one.clone(), one);
     nonnegative_on_box(
-        Family::Eh,
+        &Family::Eh,
         &basis(Family::Eh),
         &[("lambda", unit.clone()), ("mu", unit)],
     )
@@ -434,10 +434,15 @@ fn e12() -> Verdict {
         let zero = rug::Rational::new();
         parts.push((
             format!("λ = μ = {v}: nonnegativity"),
-            nonnegative_on(Family::Eh, &fs, None, &ParamBox::closed(zero.clone(), zero)),
+            nonnegative_on(
+                &Family::Eh,
+                &fs,
+                None,
+                &ParamBox::closed(zero.clone(), zero),
+            ),
         ));
     }
-    Verdict::all(crate::certify::evidence::CERTIFIED, parts)
+    Verdict::all(crate::judge::certificate::CERTIFIED, parts)
 }
 
 /// `H(x) = α0(t)y_i + α1(t)y_{i+1} + β0(t)h_i d_i + β1(t)·hd·d_{i+1}` for a

@@ -8,13 +8,13 @@ use trig_core::{Family, Variable};
 use trig_deriv::End;
 use trig_symbolic::Sym;
 
-use crate::certify::evidence::{
-    maximal_versus_published, monotone, nonnegative_on, on_published_range,
-};
 use crate::claim::{Claim, Seed};
 use crate::evidence::Evidence;
 use crate::exact::{
     at_end, basis, combination, identities, identity, residual_verdict, sum, symbols, symmetry,
+};
+use crate::judge::certificate::{
+    maximal_versus_published, monotone, nonnegative_on, on_published_range,
 };
 use crate::numeric::{counterexample_item, differ, half_pi_minus, point, show, value};
 use crate::status::Status;
@@ -460,7 +460,7 @@ fn t38() -> Verdict {
 
 fn t2() -> Verdict {
     nonnegative_on(
-        Family::ThesisQuadratic,
+        &Family::ThesisQuadratic,
         &basis(Family::ThesisQuadratic),
         Some("beta"),
         &ParamBox::from_closed(Rational::new()),
@@ -468,7 +468,7 @@ fn t2() -> Verdict {
 }
 
 fn t7() -> Verdict {
-    maximal_versus_published(Family::ThesisCubic).1
+    maximal_versus_published(&Family::ThesisCubic).1
 }
 
 fn t29() -> Verdict {
@@ -481,9 +481,9 @@ fn t29() -> Verdict {
         ));
         parts.push((
             format!("{id}: nonnegative on the published range"),
-            on_published_range(family),
+            on_published_range(&family),
         ));
-        let (_, maximal) = maximal_versus_published(family);
+        let (_, maximal) = maximal_versus_published(&family);
         // the maximal range is evidence, not a condition of this claim
         let note = if maximal.status == Status::Holds {
             "the published range is the maximal one"
@@ -495,7 +495,7 @@ fn t29() -> Verdict {
         m.evidence.push(note);
         parts.push((format!("{id}: maximal range (evidence)"), m));
     }
-    Verdict::all(crate::certify::evidence::CERTIFIED, parts)
+    Verdict::all(crate::judge::certificate::CERTIFIED, parts)
 }
 
 fn beta_half_line() -> ParamBox {
@@ -508,12 +508,12 @@ fn m_range() -> ParamBox {
 
 fn t3() -> Verdict {
     Verdict::all(
-        crate::certify::evidence::CERTIFIED,
+        crate::judge::certificate::CERTIFIED,
         vec![
             (
                 "H0".into(),
                 monotone(
-                    Family::ThesisQuadratic,
+                    &Family::ThesisQuadratic,
                     0,
                     false,
                     Some("beta"),
@@ -523,7 +523,7 @@ fn t3() -> Verdict {
             (
                 "H2".into(),
                 monotone(
-                    Family::ThesisQuadratic,
+                    &Family::ThesisQuadratic,
                     2,
                     true,
                     Some("beta"),
@@ -536,26 +536,26 @@ fn t3() -> Verdict {
 
 fn t8() -> Verdict {
     Verdict::all(
-        crate::certify::evidence::CERTIFIED,
+        crate::judge::certificate::CERTIFIED,
         vec![
             (
                 "b0".into(),
-                monotone(Family::ThesisCubic, 0, false, Some("m"), &m_range()),
+                monotone(&Family::ThesisCubic, 0, false, Some("m"), &m_range()),
             ),
             (
                 "b2".into(),
-                monotone(Family::ThesisCubic, 2, true, Some("m"), &m_range()),
+                monotone(&Family::ThesisCubic, 2, true, Some("m"), &m_range()),
             ),
         ],
     )
 }
 
 fn t8a() -> Verdict {
-    monotone(Family::ThesisCubic, 0, false, Some("m"), &m_range())
+    monotone(&Family::ThesisCubic, 0, false, Some("m"), &m_range())
 }
 
 fn t8b() -> Verdict {
-    monotone(Family::ThesisCubic, 3, true, Some("m"), &m_range())
+    monotone(&Family::ThesisCubic, 3, true, Some("m"), &m_range())
 }
 
 /// For (6.2) at λ = −1, −2: nonnegative and summing to 1 (so every curve
@@ -578,7 +578,7 @@ fn t31() -> Verdict {
             parts.push((
                 format!("{label}, λ = {l}: nonnegativity"),
                 nonnegative_on(
-                    family,
+                    &family,
                     &fs,
                     None,
                     &ParamBox::closed(zero.clone(), zero.clone()),
@@ -590,14 +590,14 @@ fn t31() -> Verdict {
         .iter()
         .chain(&parts[4..6])
         .all(|(_, v)| v.status == Status::Holds);
-    let evidence = Verdict::all(crate::certify::evidence::CERTIFIED, parts).evidence;
+    let evidence = Verdict::all(crate::judge::certificate::CERTIFIED, parts).evidence;
     let mut v = Verdict::new(
         if formula {
             Status::Fails
         } else {
             Status::Holds
         },
-        crate::certify::evidence::CERTIFIED,
+        crate::judge::certificate::CERTIFIED,
         evidence,
     );
     v.evidence.push(

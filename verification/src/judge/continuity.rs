@@ -5,9 +5,8 @@
 //! or a spec file (piece `k` is function `n − 1 − k`), and the pieces a
 //! catalog claim assembles itself.
 
-use trig_core::Basis;
-
 use crate::continuity::{KnotContinuity, METHOD, achieved, continuity, uniform_bspline};
+use crate::exact::ExactBasis;
 use crate::judge::domain::param_symbols;
 use crate::status::Status;
 use crate::verdict::Verdict;
@@ -46,7 +45,7 @@ pub fn at_least(label: &str, knots: &[KnotContinuity], r: usize, param: Option<&
 
 /// The uniform B-spline assembled from the functions of `basis` is `C^order`
 /// at its knots (unit spacing), for every parameter value.
-pub fn bspline_continuity<B: Basis>(basis: &B, order: usize) -> Verdict {
+pub fn bspline_continuity<B: ExactBasis>(basis: &B, order: usize) -> Verdict {
     let n = basis.function_names().len();
     let names = basis.param_names();
     let param = match names.as_slice() {

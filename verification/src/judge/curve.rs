@@ -1,10 +1,10 @@
 //! The curve judge: a printed derivative of the curve `Σ bᵢPᵢ` at one end
 //! of any basis (terminal tangents), decided exactly.
 
-use trig_core::Basis;
 use trig_deriv::{End, Wrt, curve_endpoint_derivatives};
 use trig_symbolic::Sym;
 
+use crate::exact::ExactBasis;
 use crate::exact::{identities, symbols};
 use crate::judge::domain::{describe_wrt, end_text, param_symbols};
 use crate::status::Status;
@@ -15,7 +15,7 @@ const K: usize = 8;
 
 /// A printed derivative of the curve `Σ bᵢPᵢ` at one end (terminal
 /// tangents): exact; a failure shows the computed combination.
-pub fn curve_derivative<B: Basis>(
+pub fn curve_derivative<B: ExactBasis>(
     basis: &B,
     end: End,
     order: usize,

@@ -3,11 +3,11 @@
 //! the exact derivative table (Taylor jets cross-checked by symbolic
 //! differentiation).
 
-use trig_core::Basis;
 use trig_deriv::{End, Wrt, endpoint_derivatives};
 use trig_specfile::Printed;
 use trig_symbolic::Sym;
 
+use crate::exact::ExactBasis;
 use crate::exact::{basis_of, identities};
 use crate::judge::domain::{describe_wrt, end_text, param_symbols, value_at};
 use crate::status::Status;
@@ -20,7 +20,7 @@ pub const TABLE_ORDERS: usize = 4;
 
 /// Only the first function is 1 at the start, only the last at the end,
 /// every other one 0 there.
-pub fn interpolation<B: Basis>(basis: &B) -> Verdict {
+pub fn interpolation<B: ExactBasis>(basis: &B) -> Verdict {
     let names = basis.function_names();
     let b = basis_of(basis);
     let n = b.len();
@@ -40,7 +40,7 @@ pub fn interpolation<B: Basis>(basis: &B) -> Verdict {
 
 /// Printed values at one end; a failure names the computed values as the
 /// correction.
-pub fn endpoint_values<B: Basis>(basis: &B, end: End, values: &[Printed]) -> Verdict {
+pub fn endpoint_values<B: ExactBasis>(basis: &B, end: End, values: &[Printed]) -> Verdict {
     let names = basis.function_names();
     let b = basis_of(basis);
     let e = end_text(basis, end);
@@ -82,7 +82,7 @@ pub fn endpoint_values<B: Basis>(basis: &B, end: End, values: &[Printed]) -> Ver
 
 /// Exact endpoint derivatives (jets over the symbolic ring) against the
 /// printed values.
-pub fn endpoint_derivative_values<B: Basis>(
+pub fn endpoint_derivative_values<B: ExactBasis>(
     basis: &B,
     end: End,
     order: usize,
@@ -112,7 +112,7 @@ pub fn endpoint_derivative_values<B: Basis>(
 
 /// One exact derivative in the table's convention: `d/dθ` (`s ↦ c`,
 /// `c ↦ −s`) or `d/dx` (`s ↦ ωc`, `c ↦ −ωs`, `t ↦ 1`, `E ↦ κE`).
-fn derive<B: Basis>(basis: &B, wrt: Wrt, f: &Sym) -> Sym {
+fn derive<B: ExactBasis>(basis: &B, wrt: Wrt, f: &Sym) -> Sym {
     if wrt == Wrt::Angle && basis.domain().is_trigonometric() {
         return f.d_angle();
     }
@@ -122,7 +122,7 @@ fn derive<B: Basis>(basis: &B, wrt: Wrt, f: &Sym) -> Sym {
 /// The standard derivative table, computed twice: by Taylor jets seeded
 /// with the exact end atoms, and by repeated exact differentiation
 /// evaluated at the end. Holds when they agree.
-pub fn derivative_table<B: Basis>(basis: &B, wrt: Wrt) -> Verdict {
+pub fn derivative_table<B: ExactBasis>(basis: &B, wrt: Wrt) -> Verdict {
     let names = basis.function_names();
     let mut parts = Vec::new();
     let mut table = Vec::new();

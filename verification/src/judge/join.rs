@@ -25,11 +25,12 @@
 //! the whole residual as an identity in `u` (the evidence shows one column's
 //! residual, in the printed names).
 
-use trig_core::{Basis, Domain, Variable};
+use trig_core::{Domain, Variable};
 use trig_deriv::{JoinKind, JoinSetup, Wrt, rate, solve_join, solve_join_for, vanishing};
 use trig_symbolic::Sym;
 
 use crate::evidence::{Evidence, Expr, Kind};
+use crate::exact::ExactBasis;
 use crate::exact::{IDENTITY, basis_of, sum, symbols};
 use crate::judge::domain::{describe_wrt, param_symbols};
 use crate::status::Status;
@@ -114,7 +115,7 @@ pub struct PrintedJoin<B> {
 /// The distinct derivative conventions of `basis`, `printed` first: the
 /// angle, `u`, the data abscissa `x` and the basis variable, each kept
 /// when its rate differs from every earlier one's.
-pub fn conventions(basis: &impl Basis, printed: Wrt) -> Vec<Wrt> {
+pub fn conventions(basis: &impl ExactBasis, printed: Wrt) -> Vec<Wrt> {
     let params: Vec<Sym> = basis.param_names().iter().map(|p| Sym::var(p)).collect();
     let h = Sym::var("h");
     let mut out: Vec<(Wrt, Sym)> = Vec::new();
@@ -127,7 +128,7 @@ pub fn conventions(basis: &impl Basis, printed: Wrt) -> Vec<Wrt> {
     out.into_iter().map(|(w, _)| w).collect()
 }
 
-impl<B: Basis + Clone> PrintedJoin<B> {
+impl<B: ExactBasis + Clone> PrintedJoin<B> {
     /// A printed join in the basis's conventions, the angle first, with the
     /// `G` factors named apart from the parameters.
     pub fn new(
@@ -383,14 +384,14 @@ fn describe(label: String, residuals: &[Sym], names: &[String]) -> Evidence {
 /// True when the printed formulas of a curve join hold in the printed
 /// convention (the column test of a surface join with the same `u`-basis
 /// on both patches).
-pub fn holds_as_printed<B: Basis + Clone>(join: &PrintedJoin<B>) -> bool {
+pub fn holds_as_printed<B: ExactBasis + Clone>(join: &PrintedJoin<B>) -> bool {
     join.residuals(join.printed_wrt(), &join.printed)
         .iter()
         .all(Sym::is_zero)
 }
 
 /// Decides a printed curve join.
-pub fn audit<B: Basis + Clone>(join: &PrintedJoin<B>) -> Verdict {
+pub fn audit<B: ExactBasis + Clone>(join: &PrintedJoin<B>) -> Verdict {
     decide(join, |wrt, printed| {
         let r = join.residuals(wrt, printed);
         (r.clone(), r)
@@ -402,7 +403,7 @@ pub fn audit<B: Basis + Clone>(join: &PrintedJoin<B>) -> Verdict {
 /// `u_param` on both sides: each column `i` gets its own points `Pⱼ_i`, the
 /// printed formulas apply column by column, and the cross-boundary residual
 /// `Σᵢ Bᵢ(u)·rᵢ` must vanish identically in `u`.
-pub fn audit_surface<B: Basis + Clone>(join: &PrintedJoin<B>, u_param: &Sym) -> Verdict {
+pub fn audit_surface<B: ExactBasis + Clone>(join: &PrintedJoin<B>, u_param: &Sym) -> Verdict {
     let params = join.basis.param_names();
     let u_basis: Vec<Sym> = basis_of(&join.basis)
         .iter()
@@ -430,7 +431,7 @@ pub fn audit_surface<B: Basis + Clone>(join: &PrintedJoin<B>, u_param: &Sym) -> 
 }
 
 /// Column `i`: every point `Pⱼ` renamed `Pⱼ_i`.
-fn rename_points<B: Basis + Clone>(join: &PrintedJoin<B>, i: usize) -> PrintedJoin<B> {
+fn rename_points<B: ExactBasis + Clone>(join: &PrintedJoin<B>, i: usize) -> PrintedJoin<B> {
     let rename =
         |v: &[Sym]| -> Vec<Sym> { v.iter().map(|p| Sym::var(&format!("{p}_{i}"))).collect() };
     PrintedJoin {
@@ -441,7 +442,7 @@ fn rename_points<B: Basis + Clone>(join: &PrintedJoin<B>, i: usize) -> PrintedJo
     }
 }
 
-fn rename_printed<B: Basis + Clone>(
+fn rename_printed<B: ExactBasis + Clone>(
     join: &PrintedJoin<B>,
     printed: &[Printed],
     i: usize,
@@ -465,7 +466,7 @@ fn rename_printed<B: Basis + Clone>(
 
 /// The verdict from a residual function `(convention, printed) ↦ (residuals
 /// that decide, residuals shown as evidence)`.
-fn decide<B: Basis + Clone>(
+fn decide<B: ExactBasis + Clone>(
     join: &PrintedJoin<B>,
     residuals: impl Fn(Wrt, &[Printed]) -> (Vec<Sym>, Vec<Sym>),
 ) -> Verdict {
@@ -496,7 +497,7 @@ fn decide<B: Basis + Clone>(
     v
 }
 
-fn decide_residuals<B: Basis + Clone>(
+fn decide_residuals<B: ExactBasis + Clone>(
     join: &PrintedJoin<B>,
     residuals: &impl Fn(Wrt, &[Printed]) -> (Vec<Sym>, Vec<Sym>),
 ) -> Verdict {
@@ -550,7 +551,7 @@ fn the(label: &str) -> String {
 /// in the printed convention, described. Pairs are screened on the shown
 /// residual (for a surface, one column's: it vanishes exactly when every
 /// column's does) and confirmed on the deciding one.
-fn sign_fix<B: Basis + Clone>(
+fn sign_fix<B: ExactBasis + Clone>(
     join: &PrintedJoin<B>,
     residuals: &impl Fn(Wrt, &[Printed]) -> (Vec<Sym>, Vec<Sym>),
 ) -> Option<String> {
@@ -598,7 +599,7 @@ fn sign_fix<B: Basis + Clone>(
 
 /// The control points the join forces, as printed lines (with where each
 /// formula is singular).
-fn forced_lines<B: Basis>(
+fn forced_lines<B: ExactBasis>(
     basis: &B,
     s: &JoinSetup<'_, &B>,
     kind: JoinKind,
@@ -622,7 +623,7 @@ fn forced_lines<B: Basis>(
 
 /// The standard battery's `Cᵏ` join: the second segment's points forced by
 /// the join (solved exactly). Holds when every order can be met.
-pub fn derived_join<B: Basis>(basis: &B, order: usize) -> Verdict {
+pub fn derived_join<B: ExactBasis>(basis: &B, order: usize) -> Verdict {
     let p = param_symbols(basis);
     let wrt = if basis.variable().is_some() {
         Wrt::Angle

@@ -4,9 +4,17 @@
 //! returns a [`crate::Verdict`] with its evidence. A claim (catalog or spec
 //! file) only states what is printed and calls a judge.
 
+pub mod analytic;
+pub mod by_intervals;
+pub mod certificate;
 pub mod continuity;
 pub mod curve;
 pub mod domain;
 pub mod endpoint;
+pub mod independence;
 pub mod join;
+pub mod nonnegative;
+pub mod region;
+pub mod span;
 pub mod symmetry;
+pub mod unity;

@@ -5,10 +5,11 @@
 
 use rug::Rational;
 use trig_core::basis::eval_at;
-use trig_core::{Affine, Basis, Mpfr, Real, Ring, Variable};
+use trig_core::{Affine, Mpfr, Real, Ring, Variable};
 use trig_symbolic::Sym;
 
 use crate::evidence::EvidenceList;
+use crate::exact::ExactBasis;
 use crate::exact::{IDENTITY, basis_of, identities};
 use crate::judge::domain::{param_symbols, pretty};
 use crate::numeric::{PREC, differ, show};
@@ -30,7 +31,12 @@ pub struct PrintedSymmetry<'a> {
 /// `f(A − x; σ(p))` exactly, or why it cannot be formed (the reflected
 /// atoms `sin(ω(A − x))` need `sin ωA` exactly; a parameter inside a sine
 /// may only be renamed to a parameter with the same base rate).
-pub fn reflect<B: Basis>(basis: &B, f: &Sym, a: &Affine, sigma: &[Sym]) -> Result<Sym, String> {
+pub fn reflect<B: ExactBasis>(
+    basis: &B,
+    f: &Sym,
+    a: &Affine,
+    sigma: &[Sym],
+) -> Result<Sym, String> {
     let d = &basis.domain();
     let p = param_symbols(basis);
     // parameters first, simultaneously; their transcendental atoms renamed
@@ -109,7 +115,7 @@ pub fn reflect<B: Basis>(basis: &B, f: &Sym, a: &Affine, sigma: &[Sym]) -> Resul
 
 /// `f_i(x) = f_{offset−i}(A − x; σ(p))` exactly for every `i` with
 /// `offset − i` a function; an index outside the basis is noted.
-fn exact_symmetry<B: Basis>(
+fn exact_symmetry<B: ExactBasis>(
     basis: &B,
     a: &Affine,
     offset: i64,
@@ -145,7 +151,7 @@ fn exact_symmetry<B: Basis>(
 /// The battery's symmetry: the reflection of the domain with the indices
 /// reversed; for two parameters, when that fails, the same with the
 /// parameters exchanged (the usual symmetry of two-parameter bases).
-pub fn battery_symmetry<B: Basis>(basis: &B) -> (String, Verdict) {
+pub fn battery_symmetry<B: ExactBasis>(basis: &B) -> (String, Verdict) {
     let n = basis.function_names().len() as i64;
     let a = basis.domain().reflection();
     let x = &basis.variable_name();
@@ -176,7 +182,7 @@ pub fn battery_symmetry<B: Basis>(basis: &B) -> (String, Verdict) {
 }
 
 /// "as printed the index … is out of range for i = …" when it is.
-fn index_note<B: Basis>(basis: &B, offset: i64, index_text: &str) -> Option<String> {
+fn index_note<B: ExactBasis>(basis: &B, offset: i64, index_text: &str) -> Option<String> {
     let n = basis.function_names().len() as i64;
     let i = (0..n).find(|i| !(0..n).contains(&(offset - i)))?;
     let prefix = basis.function_names()[0]
@@ -191,7 +197,7 @@ fn index_note<B: Basis>(basis: &B, offset: i64, index_text: &str) -> Option<Stri
 
 /// A printed symmetry claim: exact when the map is the reflection of the
 /// domain, otherwise a 256-bit MPFR counterexample at the domain's midpoint.
-pub fn symmetry_claim<B: Basis>(basis: &B, s: &PrintedSymmetry<'_>) -> Verdict {
+pub fn symmetry_claim<B: ExactBasis>(basis: &B, s: &PrintedSymmetry<'_>) -> Verdict {
     let mut v = if *s.map == basis.domain().reflection() {
         exact_symmetry(basis, s.map, s.offset, s.index_text, s.params)
     } else {
@@ -204,7 +210,7 @@ pub fn symmetry_claim<B: Basis>(basis: &B, s: &PrintedSymmetry<'_>) -> Verdict {
     v
 }
 
-fn printed_reflection<B: Basis>(basis: &B, s: &PrintedSymmetry<'_>) -> Verdict {
+fn printed_reflection<B: ExactBasis>(basis: &B, s: &PrintedSymmetry<'_>) -> Verdict {
     let names = basis.function_names();
     let parameters = basis.parameters();
     let n = names.len() as i64;

@@ -7,8 +7,8 @@ use trig_deriv::{JoinKind, Wrt};
 use trig_specfile::{Condition, Spec};
 use trig_symbolic::Sym;
 
-use super::params;
 use crate::exact::symbols;
+use crate::judge::domain::param_symbols;
 use crate::judge::join::{Printed, PrintedJoin, audit, conventions};
 use crate::verdict::Verdict;
 
@@ -28,7 +28,7 @@ pub fn printed_join(
     let (first, second) = if different {
         (spec.segment_params(1), spec.segment_params(2))
     } else {
-        (params(spec), params(spec))
+        (param_symbols(spec), param_symbols(spec))
     };
     let (p, q) = (symbols("P", n), symbols("Q", n));
     let printed = conditions

@@ -11,24 +11,15 @@
 //! cubic they reproduce the built-in verdicts and evidence line for line
 //! (test `spec_thesis_cubic_matches_builtin`).
 
-mod analytic;
-mod certified;
-mod interval;
 mod joins;
-
-pub use certified::pieces as standard_pieces;
 
 use std::sync::Arc;
 use std::time::Duration;
 
-use rug::Rational;
-use trig_certify::ParamBox;
 use trig_deriv::Wrt;
 use trig_specfile::{Check, Spec, SpecClaim};
-use trig_symbolic::Sym;
 
 use crate::budget::{bounded, within};
-use crate::exact::{identity, sum};
 use crate::judge;
 use crate::judge::endpoint::TABLE_ORDERS;
 use crate::real_witness::{RealPoints, with_real_points};
@@ -70,7 +61,7 @@ pub fn audit(spec: &Spec) -> Vec<Entry> {
 fn real_points(spec: &Spec) -> RealPoints {
     RealPoints {
         domain: spec.domain.clone(),
-        axes: interval::axes(spec, None).0,
+        axes: judge::by_intervals::axes(spec, None).0,
         symbols: spec.params.iter().map(|p| p.symbol.clone()).collect(),
     }
 }
@@ -124,8 +115,8 @@ pub fn audit_within(spec: &Spec, budget: Option<Duration>) -> Vec<Entry> {
         }
     };
     let mut out = vec![
-        entry("unity", "standard battery", format!("partition of unity: {}", sum_label(spec)), run(Box::new(unity))),
-        entry("nonnegativity", "standard battery", format!("{names} ≥ 0 on the domain exactly for the declared parameter ranges"), run(Box::new(certified::nonnegativity))),
+        entry("unity", "standard battery", format!("partition of unity: {}", judge::unity::sum_label(&spec.functions.iter().map(|f| f.name.clone()).collect::<Vec<_>>())), run(Box::new(|s: &Spec| judge::unity::unity(s)))),
+        entry("nonnegativity", "standard battery", format!("{names} ≥ 0 on the domain exactly for the declared parameter ranges"), run(Box::new(|s: &Spec| judge::nonnegative::nonnegativity(s)))),
         entry("symmetry", "standard battery", symmetry_text, symmetry),
         entry("interpolation", "standard battery", "endpoint interpolation: only the first function is nonzero at the start (value 1), only the last at the end (value 1)".into(), run(Box::new(|s: &Spec| judge::endpoint::interpolation(s)))),
         entry("derivatives", "standard battery", format!("exact endpoint derivatives of orders 0–{} {}, by jets and by symbolic differentiation", TABLE_ORDERS - 1, judge::domain::describe_wrt(spec, table_wrt(spec))), run(Box::new(|s: &Spec| judge::endpoint::derivative_table(s, table_wrt(s))))),
@@ -157,12 +148,15 @@ pub fn audit_within(spec: &Spec, budget: Option<Duration>) -> Vec<Entry> {
 /// The verdict of one claim of the file.
 pub fn decide(spec: &Spec, claim: &SpecClaim) -> Verdict {
     match &claim.check {
-        Check::Unity => unity(spec),
+        Check::Unity => judge::unity::unity(spec),
         Check::Nonnegative { range, maximal } => {
-            certified::nonnegative_claim(spec, range.as_ref(), *maximal)
+            judge::nonnegative::nonnegative_claim(spec, range.as_ref(), *maximal)
         }
-        Check::ConvexHull { range } => certified::convex_hull(spec, range.as_ref()),
-        Check::Monotone { items, range } => certified::monotone_claim(spec, items, range.as_ref()),
+        Check::ConvexHull { range } => judge::nonnegative::convex_hull(spec, range.as_ref()),
+        Check::Independent { range } => judge::independence::independent(spec, range.as_ref()),
+        Check::Monotone { items, range } => {
+            judge::nonnegative::monotone_claim(spec, items, range.as_ref())
+        }
         Check::Symmetry {
             map_text,
             map,
@@ -219,39 +213,4 @@ fn table_wrt(spec: &Spec) -> Wrt {
     } else {
         Wrt::Variable
     }
-}
-
-fn params(spec: &Spec) -> Vec<Sym> {
-    spec.params.iter().map(|p| Sym::var(&p.name)).collect()
-}
-
-fn point_box() -> ParamBox {
-    ParamBox::closed(Rational::new(), Rational::new())
-}
-
-/// `Σ b_i − 1` when the names share a prefix (`b0, b1, …`), else the sum.
-fn sum_label(spec: &Spec) -> String {
-    let prefix = |n: &str| n.trim_end_matches(|c: char| c.is_ascii_digit()).to_string();
-    let first = prefix(&spec.functions[0].name);
-    if spec
-        .functions
-        .iter()
-        .enumerate()
-        .all(|(i, f)| f.name == format!("{first}{i}"))
-    {
-        format!("Σ {first}_i − 1")
-    } else {
-        format!(
-            "{} − 1",
-            spec.functions
-                .iter()
-                .map(|f| f.name.as_str())
-                .collect::<Vec<_>>()
-                .join(" + ")
-        )
-    }
-}
-
-fn unity(spec: &Spec) -> Verdict {
-    identity(&sum_label(spec), &sum(&spec.symbolic()), &Sym::one())
 }

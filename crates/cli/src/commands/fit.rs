@@ -214,7 +214,7 @@ fn interval(subject: &AnyBasis, range: SearchRange) -> Result<(f64, f64, &'stati
         }
         (AnyBasis::Family(f), SearchRange::Certified) => *f,
     };
-    let (certified, _) = trig_verification::certify::evidence::maximal_versus_published(family);
+    let (certified, _) = trig_verification::judge::certificate::maximal_versus_published(&family);
     // the certified side of each end (an irrational end by the inner side
     // of its isolating interval)
     let end = |e: &EndPoint| match e {

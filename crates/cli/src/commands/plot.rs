@@ -16,7 +16,7 @@ use trig_plot::{
     fit_svg, interp_svg, region_svg,
 };
 use trig_specfile::Spec;
-use trig_verification::region_audit::{Axis, classify_window};
+use trig_verification::judge::region::{Axis, classify_window};
 
 use super::fit::{FitSetup, Runs, prepare};
 use super::{CliError, CmdResult, range_hint};
@@ -370,7 +370,7 @@ fn region(path: &Path) -> Result<Picture, CliError> {
         }
     }
     let axes = [axis(p), axis(q)];
-    let (trig, fs, names) = trig_verification::spec_audit::standard_pieces(&spec)
+    let (trig, fs, names) = trig_verification::judge::nonnegative::pieces(&spec)
         .map_err(|why| CliError::Usage(format!("plot region: {why}")))?;
     let names: Vec<&str> = names.iter().map(String::as_str).collect();
     let reg = classify_window(&fs, &names, trig, &axes);

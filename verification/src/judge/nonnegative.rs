@@ -1,27 +1,32 @@
-//! Inequalities of a spec basis — nonnegativity, maximal ranges and
-//! regions, monotonicity, the convex hull — decided by the one
+//! The nonnegativity judge: nonnegativity, maximal ranges and regions,
+//! monotonicity and the convex hull of any basis — decided by the one
 //! certification engine on the standard pieces of the domain
-//! ([`trig_certify::standardize`]).
+//! ([`trig_certify::standardize`]): exact Bernstein subdivision where the
+//! functions are polynomial in `sin`, `cos` or the variable, the interval
+//! engine ([`super::by_intervals`]) otherwise.
 
+use rug::Rational;
 use trig_certify::{ParamBox, standardize};
 use trig_core::ParamRange;
-use trig_specfile::{Monotone, Spec};
+use trig_specfile::Monotone;
 use trig_symbolic::Sym;
 
-use super::interval;
-use super::{point_box, unity};
-use crate::certify::evidence::{
+use super::by_intervals;
+use super::certificate::{
     CERTIFIED, Published, maximal_against, monotone_named, nonnegative_named,
 };
-use crate::region_audit::{self, Axis};
+use super::region::{self, Axis};
+use super::unity::unity;
+use crate::exact::ExactBasis;
+use crate::exact::basis_of;
 use crate::status::Status;
 use crate::verdict::Verdict;
 
 /// The functions on the standard domain: `(trigonometric, functions,
 /// names)`, every function split into its pieces (named `b0 on θ ∈ …` when
 /// there are several), or why the basis is not standard.
-pub fn pieces(spec: &Spec) -> Result<(bool, Vec<Sym>, Vec<String>), String> {
-    if let Some(p) = spec.params.iter().find(|p| p.range.pi) {
+pub fn pieces<B: ExactBasis>(basis: &B) -> Result<(bool, Vec<Sym>, Vec<String>), String> {
+    if let Some(p) = basis.parameters().iter().find(|p| p.range.pi) {
         return Err(format!(
             "the range {} of {} is in multiples of π",
             p.range, p.symbol
@@ -29,8 +34,9 @@ pub fn pieces(spec: &Spec) -> Result<(bool, Vec<Sym>, Vec<String>), String> {
     }
     let mut trig = None;
     let (mut fs, mut names) = (Vec::new(), Vec::new());
-    for f in &spec.functions {
-        let st = standardize(&f.value, &spec.domain).map_err(|why| format!("{}: {why}", f.name))?;
+    let domain = basis.domain();
+    for (value, name) in basis_of(basis).iter().zip(basis.function_names()) {
+        let st = standardize(value, &domain).map_err(|why| format!("{name}: {why}"))?;
         if trig.is_some_and(|t| t != st.trigonometric) {
             return Err("the functions mix sin/cos and the variable".into());
         }
@@ -38,9 +44,9 @@ pub fn pieces(spec: &Spec) -> Result<(bool, Vec<Sym>, Vec<String>), String> {
         for (piece, label) in st.pieces.into_iter().zip(st.labels) {
             fs.push(piece);
             names.push(if label.is_empty() {
-                f.name.clone()
+                name.clone()
             } else {
-                format!("{} on {label}", f.name)
+                format!("{name} on {label}")
             });
         }
     }
@@ -50,40 +56,36 @@ pub fn pieces(spec: &Spec) -> Result<(bool, Vec<Sym>, Vec<String>), String> {
 /// Every function `≥ 0` for the parameters in `range` (one parameter;
 /// the declared ranges otherwise): exact Bernstein subdivision on the
 /// standard pieces, the interval engine for other bases.
-fn nonnegative_on(spec: &Spec, range: Option<&ParamRange>) -> Verdict {
-    match pieces(spec) {
-        Ok((trig, fs, names)) => match spec.params.as_slice() {
+fn nonnegative_on<B: ExactBasis>(basis: &B, range: Option<&ParamRange>) -> Verdict {
+    match pieces(basis) {
+        Ok((trig, fs, names)) => match basis.parameters().as_slice() {
             [] => nonnegative_named(trig, &fs, &names, None, &point_box()),
             [p] => {
                 let r = range.unwrap_or(&p.range);
                 nonnegative_named(trig, &fs, &names, Some(&p.name), &ParamBox::from_range(r))
             }
-            _ => several(spec, false),
+            _ => several(basis, false),
         },
-        Err(why) => by_intervals(spec, range, &why),
+        Err(why) => interval_engine(basis, range, &why),
     }
 }
 
 /// The interval engine on the whole basis, with why it was needed.
-fn by_intervals(spec: &Spec, range: Option<&ParamRange>, why: &str) -> Verdict {
-    let (axes, notes) = interval::axes(spec, range);
-    let fs: Vec<(String, Sym)> = spec
-        .functions
-        .iter()
-        .map(|f| (f.name.clone(), f.value.clone()))
-        .collect();
-    let mut v = interval::all_nonnegative(spec, &fs, &axes, &notes);
+fn interval_engine<B: ExactBasis>(basis: &B, range: Option<&ParamRange>, why: &str) -> Verdict {
+    let (axes, notes) = by_intervals::axes(basis, range);
+    let fs = by_intervals::functions(basis);
+    let mut v = by_intervals::all_nonnegative(basis, &fs, &axes, &notes);
     v.evidence.insert(0, format!("not polynomial in sin, cos or the variable on a standard domain ({why}): the interval engine decides"));
     v
 }
 
 /// Several parameters: the box of declared ranges against the region —
 /// containment, and when `maximal`, equality (two parameters).
-fn several(spec: &Spec, maximal: bool) -> Verdict {
-    let (trig, fs, names) = match pieces(spec) {
+fn several<B: ExactBasis>(basis: &B, maximal: bool) -> Verdict {
+    let (trig, fs, names) = match pieces(basis) {
         Ok(p) => p,
         Err(why) => {
-            let mut v = by_intervals(spec, None, &why);
+            let mut v = interval_engine(basis, None, &why);
             if maximal && v.status == Status::Holds {
                 v.status = Status::NotCheckable;
                 v.evidence.push("the box is contained in the region; its maximality needs the polynomial method (boundary polynomials), which does not apply");
@@ -92,8 +94,8 @@ fn several(spec: &Spec, maximal: bool) -> Verdict {
         }
     };
     let names: Vec<&str> = names.iter().map(String::as_str).collect();
-    let axes: Vec<Axis<'_>> = spec
-        .params
+    let params = basis.parameters();
+    let axes: Vec<Axis<'_>> = params
         .iter()
         .map(|p| Axis {
             name: &p.name,
@@ -103,10 +105,10 @@ fn several(spec: &Spec, maximal: bool) -> Verdict {
         })
         .collect();
     match <[Axis<'_>; 2]>::try_from(axes) {
-        Ok(two) if maximal => region_audit::maximal(&fs, &names, trig, two),
-        Ok(two) => region_audit::contained(&fs, &names, trig, &two),
+        Ok(two) if maximal => region::maximal(&fs, &names, trig, two),
+        Ok(two) => region::contained(&fs, &names, trig, &two),
         Err(axes) => {
-            let mut v = region_audit::contained(&fs, &names, trig, &axes);
+            let mut v = region::contained(&fs, &names, trig, &axes);
             if maximal && v.status == Status::Holds {
                 v.status = Status::NotCheckable;
                 v.evidence
@@ -118,32 +120,36 @@ fn several(spec: &Spec, maximal: bool) -> Verdict {
 }
 
 /// The whole battery entry for nonnegativity.
-pub fn nonnegativity(spec: &Spec) -> Verdict {
-    match spec.params.len() {
-        0 => nonnegative_on(spec, None),
-        1 => maximal_versus_published(spec, None),
-        _ => several(spec, true),
+pub fn nonnegativity<B: ExactBasis>(basis: &B) -> Verdict {
+    match basis.parameters().len() {
+        0 => nonnegative_on(basis, None),
+        1 => maximal_versus_published(basis, None),
+        _ => several(basis, true),
     }
 }
 
 /// A printed nonnegativity claim.
-pub fn nonnegative_claim(spec: &Spec, range: Option<&ParamRange>, maximal: bool) -> Verdict {
-    match (spec.params.len(), maximal) {
-        (1, true) => maximal_versus_published(spec, range),
-        (0 | 1, _) => nonnegative_on(spec, range),
-        _ => several(spec, maximal),
+pub fn nonnegative_claim<B: ExactBasis>(
+    basis: &B,
+    range: Option<&ParamRange>,
+    maximal: bool,
+) -> Verdict {
+    match (basis.parameters().len(), maximal) {
+        (1, true) => maximal_versus_published(basis, range),
+        (0 | 1, _) => nonnegative_on(basis, range),
+        _ => several(basis, maximal),
     }
 }
 
 /// The convex-hull property: unity and nonnegativity on the range.
-pub fn convex_hull(spec: &Spec, range: Option<&ParamRange>) -> Verdict {
+pub fn convex_hull<B: ExactBasis>(basis: &B, range: Option<&ParamRange>) -> Verdict {
     let mut v = Verdict::all(
         CERTIFIED,
         vec![
-            ("partition of unity".into(), unity(spec)),
+            ("partition of unity".into(), unity(basis)),
             (
                 "nonnegativity".into(),
-                nonnegative_claim(spec, range, false),
+                nonnegative_claim(basis, range, false),
             ),
         ],
     );
@@ -156,13 +162,13 @@ pub fn convex_hull(spec: &Spec, range: Option<&ParamRange>) -> Verdict {
 
 /// The maximal nonnegativity interval of a one-parameter basis against the
 /// published (declared, or the claim's) range.
-fn maximal_versus_published(spec: &Spec, claimed: Option<&ParamRange>) -> Verdict {
-    let p = &spec.params[0];
+fn maximal_versus_published<B: ExactBasis>(basis: &B, claimed: Option<&ParamRange>) -> Verdict {
+    let p = &basis.parameters()[0];
     let published = claimed.unwrap_or(&p.range);
-    let (trig, fs, names) = match pieces(spec) {
+    let (trig, fs, names) = match pieces(basis) {
         Ok(p) => p,
         Err(why) => {
-            let mut v = interval::maximal(spec, published);
+            let mut v = by_intervals::maximal(basis, published);
             v.evidence.insert(0, format!("published range of {}: {published} ({}); not polynomial in sin, cos or the variable on a standard domain ({why}): the interval engine decides", p.symbol, if claimed.is_some() { "as claimed" } else { &p.source }));
             return v;
         }
@@ -185,11 +191,17 @@ fn maximal_versus_published(spec: &Spec, claimed: Option<&ParamRange>) -> Verdic
 /// Printed monotonicity: the certified sign of the derivative on every
 /// piece (a continuous function monotone on each closed piece is monotone
 /// on their union; the pieces keep the direction of the variable).
-pub fn monotone_claim(spec: &Spec, items: &[Monotone], range: Option<&ParamRange>) -> Verdict {
+pub fn monotone_claim<B: ExactBasis>(
+    basis: &B,
+    items: &[Monotone],
+    range: Option<&ParamRange>,
+) -> Verdict {
+    let params = basis.parameters();
     let r = range
         .cloned()
-        .or_else(|| spec.params.first().map(|p| p.range.clone()));
-    let (param, bx) = match (spec.params.as_slice(), &r) {
+        .or_else(|| params.first().map(|p| p.range.clone()));
+    let (values, names, domain) = (basis_of(basis), basis.function_names(), basis.domain());
+    let (param, bx) = match (params.as_slice(), &r) {
         ([], _) => (None, point_box()),
         ([p], Some(r)) => (Some(p.name.as_str()), ParamBox::from_range(r)),
         _ => {
@@ -199,10 +211,12 @@ pub fn monotone_claim(spec: &Spec, items: &[Monotone], range: Option<&ParamRange
         }
     };
     let single = |m: &Monotone| -> Verdict {
-        let f = &spec.functions[m.function];
-        let st = match standardize(&f.value, &spec.domain) {
+        let (name, value) = (&names[m.function], &values[m.function]);
+        let st = match standardize(value, &domain) {
             Ok(st) => st,
-            Err(_) => return interval::monotone(spec, &f.name, &f.value, m.increasing, r.as_ref()),
+            Err(_) => {
+                return by_intervals::monotone(basis, name, value, m.increasing, r.as_ref());
+            }
         };
         let parts: Vec<(String, Verdict)> = st
             .pieces
@@ -210,9 +224,9 @@ pub fn monotone_claim(spec: &Spec, items: &[Monotone], range: Option<&ParamRange
             .zip(&st.labels)
             .map(|(piece, label)| {
                 let name = if label.is_empty() {
-                    f.name.clone()
+                    name.clone()
                 } else {
-                    format!("{} on {label}", f.name)
+                    format!("{name} on {label}")
                 };
                 let v = monotone_named(piece, &name, st.trigonometric, m.increasing, param, &bx);
                 (name, v)
@@ -230,8 +244,13 @@ pub fn monotone_claim(spec: &Spec, items: &[Monotone], range: Option<&ParamRange
             CERTIFIED,
             items
                 .iter()
-                .map(|m| (spec.functions[m.function].name.clone(), single(m)))
+                .map(|m| (names[m.function].clone(), single(m)))
                 .collect(),
         )
     }
+}
+
+/// The parameter box of a basis without parameters: one point.
+fn point_box() -> ParamBox {
+    ParamBox::closed(Rational::new(), Rational::new())
 }

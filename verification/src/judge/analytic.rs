@@ -13,15 +13,16 @@ use rug::Rational;
 use trig_certify::analytic_range::{AnalyticRange, End, ExactValue, Problem, maximal_range};
 use trig_certify::branch::{Axis, Outcome};
 use trig_certify::range::simplest_between;
-use trig_specfile::Spec;
 use trig_symbolic::Sym;
 
+use crate::exact::ExactBasis;
 use crate::status::Status;
 
 /// The analytic engine, as the report states it.
 pub const ANALYTIC: &str = "the maximal interval by the analytic engine: a grid of certified point tests from a value inside the printed range and bisection bracket each end; an end is exact where the basis is undefined or its equation vanishes exactly, certified where a Krawczyk step proves the unique root of the equation of the end (the factor that changes sign, at the end of the domain or at a stationary minimum) and branch and bound proves that admissibility changes exactly there, a bracket otherwise; the part inside the ends is proved as a whole";
 
 /// The decision for one printed end against the maximal interval.
+#[derive(Debug)]
 pub struct EndDecision {
     pub status: Status,
     pub line: String,
@@ -29,8 +30,9 @@ pub struct EndDecision {
 
 /// The maximal interval containing a value inside `printed` (searched one
 /// printed width beyond each end), with the functions' names.
-pub fn search(spec: &Spec, fs: &[Sym], printed: &Axis) -> AnalyticRange {
-    let problem = Problem::new(fs, &spec.domain, printed.pi);
+pub fn search<B: ExactBasis>(basis: &B, fs: &[Sym], printed: &Axis) -> AnalyticRange {
+    let domain = basis.domain();
+    let problem = Problem::new(fs, &domain, printed.pi);
     let width = Rational::from(&printed.hi - &printed.lo).max(Rational::from(1));
     // a simple value well inside (the printed ends may be open)
     let quarter = Rational::from(&printed.hi - &printed.lo) / 4u32;
@@ -44,10 +46,11 @@ pub fn search(spec: &Spec, fs: &[Sym], printed: &Axis) -> AnalyticRange {
 }
 
 /// The whole interval as one line of evidence.
-pub fn describe(spec: &Spec, fs: &[Sym], printed: &Axis, r: &AnalyticRange) -> String {
-    let problem = Problem::new(fs, &spec.domain, printed.pi);
-    let names: Vec<String> = spec.functions.iter().map(|f| f.name.clone()).collect();
-    let symbol = &spec.params[0].symbol;
+pub fn describe<B: ExactBasis>(basis: &B, fs: &[Sym], printed: &Axis, r: &AnalyticRange) -> String {
+    let domain = basis.domain();
+    let problem = Problem::new(fs, &domain, printed.pi);
+    let names = basis.function_names();
+    let symbol = &basis.parameters()[0].symbol;
     let inside = match &r.inside {
         Outcome::Proved { boxes } => {
             format!("the part inside the ends proved ({boxes} interval boxes)")

@@ -22,8 +22,8 @@ use trig_certify::region::{CellKind, Region, region};
 use trig_certify::{Bound, ParamBox};
 use trig_symbolic::Sym;
 
-use crate::certify::evidence::{MAXIMAL, Published, maximal_against, nonnegative_on_box_named};
 use crate::evidence::EvidenceList;
+use crate::judge::certificate::{MAXIMAL, Published, maximal_against, nonnegative_on_box_named};
 use crate::status::Status;
 use crate::verdict::Verdict;
 

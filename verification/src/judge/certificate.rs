@@ -3,13 +3,13 @@
 
 use rug::Rational;
 use trig_certify::{Bound, ParamBox, describe_z};
-use trig_core::Family;
 
-use super::nonneg::{BoxCertificate, Certificate, certify, certify_box};
-use super::range::{EndPoint, MaximalRange, Outside, certify_all, maximal_range};
+use crate::certify::nonneg::{BoxCertificate, Certificate, certify, certify_box};
+use crate::certify::range::{EndPoint, MaximalRange, Outside, certify_all, maximal_range};
 use crate::evidence::EvidenceList;
 use crate::evidence::{Evidence, Kind, Witness};
-use crate::exact::basis;
+use crate::exact::ExactBasis;
+use crate::exact::basis_of;
 use crate::status::Status;
 use crate::verdict::Verdict;
 use crate::witness::witness;
@@ -97,22 +97,25 @@ pub fn describe(
     )
 }
 
-/// Nonnegativity of every function of a family on a parameter box (or at
-/// fixed parameter values substituted beforehand, `param = None`).
-pub fn nonnegative_on(
-    family: Family,
+/// True when the functions of `basis` are written in `sin θ`, `cos θ`
+/// (the certificates then work in `z = tan(θ/2)`).
+fn trigonometric<B: ExactBasis>(basis: &B) -> bool {
+    basis.variable().map_or_else(
+        || basis.domain().is_trigonometric(),
+        |v| v.is_trigonometric(),
+    )
+}
+
+/// Nonnegativity of the functions `fs` of `basis` (named as the basis
+/// names them) on a parameter box, or at fixed parameter values
+/// substituted beforehand (`param = None`).
+pub fn nonnegative_on<B: ExactBasis>(
+    basis: &B,
     fs: &[trig_symbolic::Sym],
     param: Option<&str>,
     bx: &ParamBox,
 ) -> Verdict {
-    let info = family.info();
-    nonnegative_named(
-        info.variable.is_trigonometric(),
-        fs,
-        info.functions,
-        param,
-        bx,
-    )
+    nonnegative_named(trigonometric(basis), fs, &basis.function_names(), param, bx)
 }
 
 /// The same for functions given with their names (any basis, a spec file's
@@ -139,15 +142,14 @@ pub fn nonnegative_named(
     Verdict::new(status, CERTIFIED, evidence)
 }
 
-/// Nonnegativity of every function of a family on a box of several
+/// Nonnegativity of the functions `fs` of `basis` on a box of several
 /// parameters (see [`nonnegative_on_box_named`]).
-pub fn nonnegative_on_box(
-    family: Family,
+pub fn nonnegative_on_box<B: ExactBasis>(
+    basis: &B,
     fs: &[trig_symbolic::Sym],
     params: &[(&str, ParamBox)],
 ) -> Verdict {
-    let info = family.info();
-    nonnegative_on_box_named(info.variable.is_trigonometric(), fs, info.functions, params)
+    nonnegative_on_box_named(trigonometric(basis), fs, &basis.function_names(), params)
 }
 
 /// Nonnegativity of every function on a box of several parameters (tensor
@@ -293,37 +295,23 @@ fn show_interval(r: &MaximalRange, param: &str) -> String {
     format!("{}, {}", end(&r.lo, true), end(&r.hi, false))
 }
 
-/// The maximal nonnegativity interval of a one-parameter family, compared
+/// The maximal nonnegativity interval of a one-parameter basis, compared
 /// with its published range (see [`maximal_against`]).
-pub fn maximal_versus_published(family: Family) -> (MaximalRange, Verdict) {
-    let info = family.info();
-    let spec = info.params[0];
+pub fn maximal_versus_published<B: ExactBasis>(basis: &B) -> (MaximalRange, Verdict) {
+    let p = &basis.parameters()[0];
     let published = Published {
-        name: spec.name,
-        symbol: spec.symbol,
-        range: spec.range.to_string(),
-        set: catalog_box(&spec.range),
-        source: spec.range_source,
+        name: &p.name,
+        symbol: &p.symbol,
+        range: p.range.to_string(),
+        set: ParamBox::from_range(&p.range),
+        source: &p.source,
     };
     maximal_against(
-        &basis(family),
-        info.functions,
-        info.variable.is_trigonometric(),
+        &basis_of(basis),
+        &basis.function_names(),
+        trigonometric(basis),
         &published,
     )
-}
-
-/// A catalog range as a parameter set.
-pub fn catalog_box(r: &trig_core::Range) -> ParamBox {
-    let bound = |b: &trig_core::Bound| match b {
-        trig_core::Bound::Closed(..) => Bound::Closed(b.value().unwrap_or_default()),
-        trig_core::Bound::Open(..) => Bound::Open(b.value().unwrap_or_default()),
-        trig_core::Bound::Unbounded => Bound::Infinite,
-    };
-    ParamBox {
-        lo: bound(&r.lo),
-        hi: bound(&r.hi),
-    }
 }
 
 /// A published parameter range, as the report cites it.
@@ -435,37 +423,36 @@ fn end_status(found: &EndPoint, printed: &Bound, lower: bool) -> Status {
     }
 }
 
-/// Certifies a whole family on its published parameter range (open and
-/// infinite ends excluded exactly, see [`trig_certify::domain`]).
-pub fn on_published_range(family: Family) -> Verdict {
-    let info = family.info();
-    let spec = info.params[0];
-    let bx = catalog_box(&spec.range);
-    let trig = info.variable.is_trigonometric();
-    let cert = certify_all(&basis(family), trig, spec.name, &bx);
+/// Certifies a whole basis on its published parameter range (one
+/// parameter; open and infinite ends excluded exactly, see
+/// [`trig_certify::domain`]).
+pub fn on_published_range<B: ExactBasis>(basis: &B) -> Verdict {
+    let p = &basis.parameters()[0];
+    let bx = ParamBox::from_range(&p.range);
+    let trig = trigonometric(basis);
+    let cert = certify_all(&basis_of(basis), trig, &p.name, &bx);
     let (status, line) = describe(
-        &format!("all functions, {} ∈ {}", spec.symbol, spec.range),
+        &format!("all functions, {} ∈ {}", p.symbol, p.range),
         &cert,
         trig,
-        Some(spec.name),
+        Some(&p.name),
     );
     Verdict::new(status, CERTIFIED, vec![line])
 }
 
-/// Monotonicity of function `index` of `family` on its whole domain for
+/// Monotonicity of function `index` of `basis` on its whole domain for
 /// every parameter in the box: the sign of its derivative, certified.
-pub fn monotone(
-    family: Family,
+pub fn monotone<B: ExactBasis>(
+    basis: &B,
     index: usize,
     increasing: bool,
     param: Option<&str>,
     bx: &ParamBox,
 ) -> Verdict {
-    let info = family.info();
     monotone_named(
-        &basis(family)[index],
-        info.functions[index],
-        info.variable.is_trigonometric(),
+        &basis_of(basis)[index],
+        &basis.function_names()[index],
+        trigonometric(basis),
         increasing,
         param,
         bx,
@@ -495,6 +482,7 @@ pub fn monotone_named(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use trig_core::Family;
 
     #[test]
     fn undecided_ends_are_never_failures() {
@@ -533,15 +521,15 @@ mod tests {
     fn monotonicity_is_proved_or_refuted() {
         let range = ParamBox::closed(Rational::from(-2), Rational::from(1));
         assert_eq!(
-            monotone(Family::ThesisCubic, 0, false, Some("m"), &range).status,
+            monotone(&Family::ThesisCubic, 0, false, Some("m"), &range).status,
             Status::Holds
         );
         assert_eq!(
-            monotone(Family::ThesisCubic, 0, true, Some("m"), &range).status,
+            monotone(&Family::ThesisCubic, 0, true, Some("m"), &range).status,
             Status::Fails
         );
         assert_eq!(
-            monotone(Family::ThesisCubic, 2, true, Some("m"), &range).status,
+            monotone(&Family::ThesisCubic, 2, true, Some("m"), &range).status,
             Status::Fails
         );
     }

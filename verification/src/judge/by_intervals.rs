@@ -1,4 +1,4 @@
-//! Inequalities of spec bases that are not polynomial in sin, cos or the
+//! Inequalities of bases that are not polynomial in sin, cos or the
 //! variable on a standard domain (C-curves, hyperbolic and exponential
 //! bases, half angles, parameter-dependent domains): decided by the
 //! interval engine ([`trig_certify::branch`]). Every `holds` is a proof;
@@ -9,10 +9,11 @@
 use rug::Rational;
 use trig_certify::branch::{Axis, Outcome};
 use trig_core::{End, ParamRange};
-use trig_specfile::Spec;
 use trig_symbolic::Sym;
 
 use super::analytic;
+use crate::exact::ExactBasis;
+use crate::exact::basis_of;
 use crate::status::Status;
 use crate::verdict::Verdict;
 
@@ -24,13 +25,13 @@ const TRUNCATE: i64 = 64;
 
 /// The axes of the parameters for a claim: the declared ranges, `range`
 /// replacing the only parameter's; unbounded ranges truncated (noted).
-pub fn axes(spec: &Spec, range: Option<&ParamRange>) -> (Vec<Axis>, Vec<String>) {
+pub fn axes<B: ExactBasis>(basis: &B, range: Option<&ParamRange>) -> (Vec<Axis>, Vec<String>) {
     let mut notes = Vec::new();
-    let axes = spec
-        .params
+    let params = basis.parameters();
+    let axes = params
         .iter()
         .map(|p| {
-            let r = range.filter(|_| spec.params.len() == 1).unwrap_or(&p.range);
+            let r = range.filter(|_| params.len() == 1).unwrap_or(&p.range);
             Axis::from_range(r).unwrap_or_else(|| {
                 let (lo, hi, lo_open, hi_open) = match (r.lo.value(), r.hi.value()) {
                     (Some(a), None) => (
@@ -78,22 +79,27 @@ fn value_text(q: &Rational, pi: bool) -> String {
     }
 }
 
-fn describe_point(spec: &Spec, axes: &[Axis], params: &[Rational], x: f64) -> String {
-    let mut parts: Vec<String> = spec
-        .params
+fn describe_point<B: ExactBasis>(basis: &B, axes: &[Axis], params: &[Rational], x: f64) -> String {
+    let mut parts: Vec<String> = basis
+        .parameters()
         .iter()
         .zip(params)
         .zip(axes)
         .map(|((p, v), a)| format!("{} = {}", p.symbol, value_text(v, a.pi)))
         .collect();
-    parts.push(format!("{} ≈ {x:.6}", spec.var_name));
+    parts.push(format!("{} ≈ {x:.6}", basis.variable_name()));
     parts.join(", ")
 }
 
 /// `f ≥ 0` on the domain for the parameters in `axes`, decided factor by
 /// factor by the engine ([`trig_certify::factors::nonnegative`]).
-pub fn nonnegative(spec: &Spec, name: &str, f: &Sym, axes: &[Axis]) -> (Status, String) {
-    match trig_certify::factors::nonnegative(f, &spec.domain, axes) {
+pub fn nonnegative<B: ExactBasis>(
+    basis: &B,
+    name: &str,
+    f: &Sym,
+    axes: &[Axis],
+) -> (Status, String) {
+    match trig_certify::factors::nonnegative(f, &basis.domain(), axes) {
         Outcome::Proved { boxes } => (
             Status::Holds,
             format!("{name} ≥ 0: certified on the whole domain ({boxes} interval boxes)"),
@@ -104,7 +110,7 @@ pub fn nonnegative(spec: &Spec, name: &str, f: &Sym, axes: &[Axis]) -> (Status, 
             Status::Fails,
             format!(
                 "{name} ≥ 0: violated at {} (its numerator lies in [{:.6e}, {:.6e}] there, certified)",
-                describe_point(spec, axes, &params, x),
+                describe_point(basis, axes, &params, x),
                 value.0,
                 value.1
             ),
@@ -117,13 +123,13 @@ pub fn nonnegative(spec: &Spec, name: &str, f: &Sym, axes: &[Axis]) -> (Status, 
 }
 
 /// Every function `≥ 0` for the parameters of `axes`.
-pub fn all_nonnegative(
-    spec: &Spec,
+pub fn all_nonnegative<B: ExactBasis>(
+    basis: &B,
     fs: &[(String, Sym)],
     axes: &[Axis],
     notes: &[String],
 ) -> Verdict {
-    if let Some(v) = on_half_line(spec, fs, axes, notes) {
+    if let Some(v) = on_half_line(basis, fs, axes, notes) {
         return v;
     }
     let mut status = Status::Holds;
@@ -131,7 +137,7 @@ pub fn all_nonnegative(
     let mut done: Vec<Option<Status>> = vec![None; fs.len()];
     for (k, (name, f)) in fs.iter().enumerate() {
         // f(x) = g(a + b − x) exactly for a decided g: f ≥ 0 follows from g ≥ 0
-        let partner = (0..fs.len()).find(|&j| j != k && mirrors(spec, f, &fs[j].1));
+        let partner = (0..fs.len()).find(|&j| j != k && mirrors(basis, f, &fs[j].1));
         if let Some(j) = partner.filter(|&j| done[j] == Some(Status::Holds)) {
             evidence.push(format!(
                 "{name} ≥ 0 follows from {} ≥ 0: {name}(x) = {}(a + b − x) exactly and the reflection maps the domain onto itself",
@@ -140,10 +146,10 @@ pub fn all_nonnegative(
             done[k] = Some(Status::Holds);
             continue;
         }
-        let (mut s, mut line) = memo(spec, name, f, axes);
+        let (mut s, mut line) = memo(basis, name, f, axes);
         if s == Status::NotCheckable {
             if let Some(j) = partner.filter(|&j| done[j].is_none()) {
-                let (s2, line2) = memo(spec, &fs[j].0, &fs[j].1, axes);
+                let (s2, line2) = memo(basis, &fs[j].0, &fs[j].1, axes);
                 if s2 == Status::Holds {
                     (s, line) = (
                         s2,
@@ -158,7 +164,7 @@ pub fn all_nonnegative(
         }
         if s == Status::NotCheckable {
             if let Some((inner, text)) = away_from_open_ends(axes) {
-                let (s2, line2) = memo(spec, name, f, &inner);
+                let (s2, line2) = memo(basis, name, f, &inner);
                 if s2 != Status::NotCheckable {
                     line = format!("{line}; on the inner range {text}: {line2}");
                     if s2 == Status::Fails {
@@ -184,8 +190,8 @@ const HALF_LINE: &str = "certified for every parameter of the unbounded range: o
 /// would only search a truncation of it), by the positive-coefficient
 /// certificate of [`trig_certify::exp_half_line`]; `None` when it does not
 /// decide every function.
-fn on_half_line(
-    spec: &Spec,
+fn on_half_line<B: ExactBasis>(
+    basis: &B,
     fs: &[(String, Sym)],
     axes: &[Axis],
     notes: &[String],
@@ -193,17 +199,18 @@ fn on_half_line(
     let [axis] = axes else {
         return None;
     };
-    let unbounded_above = spec.params[0].range.lo.value().is_some() && !notes.is_empty();
+    let p = basis.parameters().into_iter().next()?;
+    let unbounded_above = p.range.lo.value().is_some() && !notes.is_empty();
     if !unbounded_above || axis.pi {
         return None;
     }
     let evidence: Vec<String> = fs
         .iter()
         .map(|(name, f)| {
-            trig_certify::exp_half_line::nonnegative(f, &spec.domain, &axis.lo).map(|_| {
+            trig_certify::exp_half_line::nonnegative(f, &basis.domain(), &axis.lo).map(|_| {
                 format!(
                     "{name} ≥ 0: certified for every {} in {} (positive coefficients in u, v)",
-                    spec.params[0].symbol, spec.params[0].range
+                    p.symbol, p.range
                 )
             })
         })
@@ -213,17 +220,17 @@ fn on_half_line(
 
 /// [`nonnegative`], remembered across the claims of one run (the battery
 /// and the file's claims ask the same questions).
-fn memo(spec: &Spec, name: &str, f: &Sym, axes: &[Axis]) -> (Status, String) {
+fn memo<B: ExactBasis>(basis: &B, name: &str, f: &Sym, axes: &[Axis]) -> (Status, String) {
     use std::collections::HashMap;
     use std::sync::{Mutex, OnceLock};
     type Cache = Mutex<HashMap<String, (Status, String)>>;
     static CACHE: OnceLock<Cache> = OnceLock::new();
-    let key = format!("{}|{name}|{f}|{axes:?}", spec.file);
+    let key = format!("{}|{:?}|{name}|{f}|{axes:?}", basis.id(), basis.domain());
     let cache = CACHE.get_or_init(|| Mutex::new(HashMap::new()));
     if let Some(hit) = cache.lock().ok().and_then(|c| c.get(&key).cloned()) {
         return hit;
     }
-    let result = nonnegative(spec, name, f, axes);
+    let result = nonnegative(basis, name, f, axes);
     if let Ok(mut c) = cache.lock() {
         c.insert(key, result.clone());
     }
@@ -231,10 +238,10 @@ fn memo(spec: &Spec, name: &str, f: &Sym, axes: &[Axis]) -> (Status, String) {
 }
 
 /// True when `f(x) = g(a + b − x)` exactly (same parameters).
-fn mirrors(spec: &Spec, f: &Sym, g: &Sym) -> bool {
-    let a = spec.domain.reflection();
-    let params: Vec<Sym> = spec.params.iter().map(|p| Sym::var(&p.name)).collect();
-    crate::judge::symmetry::reflect(spec, g, &a, &params).is_ok_and(|r| (r - f).is_zero())
+fn mirrors<B: ExactBasis>(basis: &B, f: &Sym, g: &Sym) -> bool {
+    let a = basis.domain().reflection();
+    let params = super::domain::param_symbols(basis);
+    super::symmetry::reflect(basis, g, &a, &params).is_ok_and(|r| (r - f).is_zero())
 }
 
 /// The axes with every open end moved inward by an eighth of the width
@@ -268,10 +275,12 @@ fn away_from_open_ends(axes: &[Axis]) -> Option<(Vec<Axis>, String)> {
     Some((inner, texts.join(" × ")))
 }
 
-fn functions(spec: &Spec) -> Vec<(String, Sym)> {
-    spec.functions
-        .iter()
-        .map(|f| (f.name.clone(), f.value.clone()))
+/// The functions of `basis` with their names.
+pub fn functions<B: ExactBasis>(basis: &B) -> Vec<(String, Sym)> {
+    basis
+        .function_names()
+        .into_iter()
+        .zip(basis_of(basis))
         .collect()
 }
 
@@ -280,14 +289,14 @@ fn functions(spec: &Spec) -> Vec<(String, Sym)> {
 /// is undefined (a denominator vanishes identically there); otherwise a
 /// point just beyond it decides: admissible refutes maximality, a
 /// certified counterexample brackets the end.
-pub fn maximal(spec: &Spec, range: &ParamRange) -> Verdict {
-    let (ax, notes) = axes(spec, Some(range));
-    let fs = functions(spec);
-    let inside = all_nonnegative(spec, &fs, &ax, &notes);
+pub fn maximal<B: ExactBasis>(basis: &B, range: &ParamRange) -> Verdict {
+    let (ax, notes) = axes(basis, Some(range));
+    let fs = functions(basis);
+    let inside = all_nonnegative(basis, &fs, &ax, &notes);
     if inside.status != Status::Holds {
         return inside;
     }
-    let p = &spec.params[0];
+    let p = &basis.parameters()[0];
     let mut status = Status::Holds;
     let mut evidence = inside.evidence;
     let width = Rational::from(&ax[0].hi - &ax[0].lo);
@@ -296,9 +305,9 @@ pub fn maximal(spec: &Spec, range: &ParamRange) -> Verdict {
     let values: Vec<Sym> = fs.iter().map(|(_, f)| f.clone()).collect();
     let found = notes
         .is_empty()
-        .then(|| analytic::search(spec, &values, &ax[0]));
+        .then(|| analytic::search(basis, &values, &ax[0]));
     if let Some(r) = &found {
-        evidence.push(analytic::describe(spec, &values, &ax[0], r));
+        evidence.push(analytic::describe(basis, &values, &ax[0], r));
     }
     let ends = [
         (range.lo.value(), -1, matches!(range.lo, End::Open(_))),
@@ -319,7 +328,7 @@ pub fn maximal(spec: &Spec, range: &ParamRange) -> Verdict {
             continue;
         }
         let shown = value_text(v, range.pi);
-        if undefined_at(spec, v, range.pi) {
+        if undefined_at(basis, &fs, v, range.pi) {
             evidence.push(format!(
                 "the end {} = {shown} is exact: a denominator vanishes identically there, so the basis is not defined at it",
                 p.symbol
@@ -334,7 +343,7 @@ pub fn maximal(spec: &Spec, range: &ParamRange) -> Verdict {
             hi_open: false,
             pi: range.pi,
         }];
-        let beyond = all_nonnegative(spec, &fs, &point, &[]);
+        let beyond = all_nonnegative(basis, &fs, &point, &[]);
         match beyond.status {
             Status::Holds => {
                 status = Status::Fails;
@@ -375,9 +384,10 @@ pub fn maximal(spec: &Spec, range: &ParamRange) -> Verdict {
 
 /// True when some denominator factor is identically zero at `p = v` (its
 /// atoms of the parameter substituted when they are exact there).
-fn undefined_at(spec: &Spec, v: &Rational, pi: bool) -> bool {
+fn undefined_at<B: ExactBasis>(basis: &B, fs: &[(String, Sym)], v: &Rational, pi: bool) -> bool {
     use trig_certify::atoms::{param_atoms, value};
-    let d = &spec.domain;
+    let d = &basis.domain();
+    let name = &basis.parameters()[0].name;
     let atoms = param_atoms(d);
     let params = [if pi {
         Sym::rational(v.clone()) * &Sym::pi()
@@ -385,9 +395,9 @@ fn undefined_at(spec: &Spec, v: &Rational, pi: bool) -> bool {
         Sym::rational(v.clone())
     }];
     let symbols = trig_symbolic::symbolic_atoms();
-    spec.functions.iter().any(|f| {
-        f.value.denominator().keys().any(|factor| {
-            let mut at = Sym::from_poly(factor.clone()).subs(&spec.params[0].name, &params[0]);
+    fs.iter().any(|(_, f)| {
+        f.denominator().keys().any(|factor| {
+            let mut at = Sym::from_poly(factor.clone()).subs(name, &params[0]);
             for a in atoms.iter().filter(|a| a.param == 0) {
                 match value(&a.name, d, &symbols, &params, &atoms) {
                     Some(e) => at = at.subs(&a.name, &e),
@@ -400,20 +410,20 @@ fn undefined_at(spec: &Spec, v: &Rational, pi: bool) -> bool {
 }
 
 /// Monotonicity by the sign of the derivative in the variable.
-pub fn monotone(
-    spec: &Spec,
+pub fn monotone<B: ExactBasis>(
+    basis: &B,
     name: &str,
     f: &Sym,
     increasing: bool,
     range: Option<&ParamRange>,
 ) -> Verdict {
-    let d = trig_certify::atoms::d_variable(f, &spec.domain);
+    let d = trig_certify::atoms::d_variable(f, &basis.domain());
     let g = if increasing { d } else { -d };
-    let (ax, notes) = axes(spec, range);
+    let (ax, notes) = axes(basis, range);
     let what = if increasing {
         format!("{name}' ≥ 0 ({name} increasing)")
     } else {
         format!("−{name}' ≥ 0 ({name} decreasing)")
     };
-    all_nonnegative(spec, &[(what, g)], &ax, &notes)
+    all_nonnegative(basis, &[(what, g)], &ax, &notes)
 }

@@ -1,0 +1,290 @@
+//! Claims of the second list of `shared/claims.md` ("More claims:
+//! properties, shapes, conics, and the arithmetic of the text") that the
+//! judges decide so far: linear independence, the convex hull, affine
+//! invariance, conic arcs. Each states what is printed and calls a judge.
+
+use trig_core::Family;
+use trig_symbolic::Sym;
+
+use crate::claim::{Claim, Seed};
+use crate::judge::{independence, nonnegative, span, unity};
+use crate::status::Status;
+use crate::verdict::Verdict;
+
+/// In report order (after each document's first-list claims).
+pub const CLAIMS: &[Claim] = &[
+    Claim {
+        id: "T40",
+        seed: Seed::S001,
+        source: "1.2 and 2.3.1 (quoting Bashir et al.)",
+        statement: "\"polynomial splines are incapable of generating circular arcs and conical shapes\": no polynomial spline segment traces an arc of a conic",
+        check: t40,
+    },
+    Claim {
+        id: "T41",
+        seed: Seed::S001,
+        source: "1.2, 1.3, 1.5, 2.3.2 (implicit for (3.7))",
+        statement: "the proposed trigonometric spline (3.7) represents conic shapes (circular arcs) that polynomials cannot",
+        check: t41,
+    },
+    Claim {
+        id: "T43",
+        seed: Seed::S001,
+        source: "3.2.3, text after Figure 3.2",
+        statement: "β = 0 ⇒ H0 ≡ H2 ≡ 0, H1 ≡ 1 (the curve is the single point P1)",
+        check: t43,
+    },
+    Claim {
+        id: "T46",
+        seed: Seed::S001,
+        source: "3.2.4 Figure 3.3(a) text, 3.4",
+        statement: "the quadratic curve lies in the convex hull of P0, P1, P2 (\"inside the control polygon\") and has geometric invariance, for β ≥ 0",
+        check: t46,
+    },
+    Claim {
+        id: "T50",
+        seed: Seed::S001,
+        source: "Definition 3.2 (implicit: \"four basis functions\")",
+        statement: "b0 … b3 of (3.7) are linearly independent for every m",
+        check: t50,
+    },
+    Claim {
+        id: "T62",
+        seed: Seed::S001,
+        source: "6.6",
+        statement: "the common value 0.6 lies in the admissible interval of all four methods (m ∈ (−2,1], η ∈ (1/2,2], λ ∈ [−2,1], α ∈ (0,2))",
+        check: t62,
+    },
+    Claim {
+        id: "M16",
+        seed: Seed::S000,
+        source: "3.1.1",
+        statement: "the curve (6) always lies in the convex hull of its control polygon",
+        check: m16,
+    },
+    Claim {
+        id: "M17",
+        seed: Seed::S000,
+        source: "3.1.2",
+        statement: "affine invariance L(Σ S_j F_j(n)) = Σ L(S_j) F_j(n) (sum written 0 … n)",
+        check: m17,
+    },
+    Claim {
+        id: "M18",
+        seed: Seed::S000,
+        source: "5.1.1",
+        statement: "rational and NURBS curves lie in the convex hull of the control polygon (Definition 3 allows \"non-negative weights\")",
+        check: m18,
+    },
+    Claim {
+        id: "M19",
+        seed: Seed::S000,
+        source: "5.1.2",
+        statement: "affine invariance of the rational/NURBS curve",
+        check: m19,
+    },
+    Claim {
+        id: "S3",
+        seed: Seed::S003,
+        source: "Remark 1 (b)",
+        statement: "\"the standard cubic uniform B-spline curves cannot exactly represent arcs of ellipse and arcs of parabola\"",
+        check: s3,
+    },
+    Claim {
+        id: "D13",
+        seed: Seed::S002,
+        source: "Theorem 2 (4)",
+        statement: "the curve (2) lies \"inside its control polygon spanned by P0 … P5\" (convex hull), w_i > 0",
+        check: d13,
+    },
+    Claim {
+        id: "D18",
+        seed: Seed::S002,
+        source: "Definition 1 (implicit: \"basis functions\")",
+        statement: "b0 … b5 are linearly independent",
+        check: d18,
+    },
+];
+
+/// Every `m`: the judge's exact decision does not depend on a range when
+/// the Wronskian's coefficients have no common factor.
+fn t50() -> Verdict {
+    independence::independent(&Family::ThesisCubic, None)
+}
+
+/// Unity and nonnegativity of the segment functions on the published
+/// range of ζ: the convex-hull property of every segment of (6).
+fn m16() -> Verdict {
+    nonnegative::convex_hull(&Family::Seed000Uniform, None)
+}
+
+/// An affine map `L(x) = Ax + b` commutes with `Σ S_j F_j` for every `S_j`
+/// exactly when `Σ F_j = 1` (the translation part): decided as the
+/// partition of unity of the segment functions.
+fn m17() -> Verdict {
+    let mut v = unity::unity(&Family::Seed000Uniform);
+    v.evidence.insert(
+        0,
+        "L(Σ S_j F_j) = A Σ S_j F_j + b and Σ L(S_j) F_j = A Σ S_j F_j + b Σ F_j: equal for every affine L exactly when Σ F_j = 1",
+    );
+    v
+}
+
+fn d18() -> Verdict {
+    independence::independent(&Family::Seed002Quartic, None)
+}
+
+/// A claim that a basis cannot trace a curve, decided by the span judge:
+/// refuted by the control points that trace it.
+fn cannot_trace(family: Family, curve: &str, targets: &[(&str, Sym)], why: &str) -> Verdict {
+    let mut v = span::reproduces(&family, curve, targets);
+    v.status = match v.status {
+        Status::Holds => Status::Fails,
+        Status::Fails => Status::Holds,
+        other => other,
+    };
+    v.evidence.insert(0, why.to_string());
+    v
+}
+
+/// The parabola `(t, t²)`, a conic, is a polynomial curve: the cubic
+/// Bernstein basis traces it.
+fn t40() -> Verdict {
+    let t = Sym::var("t");
+    cannot_trace(
+        Family::Bernstein3,
+        "parabola arc (t, t²), t ∈ [0, 1]",
+        &[("x", t.clone()), ("y", t.clone() * &t)],
+        "a parabola, a conic, is a polynomial curve: traced by the cubic Bézier basis",
+    )
+}
+
+/// The unit circle `(cos θ, sin θ)` in the span of (3.7): for which `m`.
+fn t41() -> Verdict {
+    span::reproduces(
+        &Family::ThesisCubic,
+        "unit circle arc (cos θ, sin θ), θ ∈ [0, π/2]",
+        &[("x", Sym::var("c")), ("y", Sym::var("s"))],
+    )
+}
+
+/// The parabola `(t, t²)` is traced by the uniform cubic B-spline segment.
+fn s3() -> Verdict {
+    let t = Sym::var("t");
+    cannot_trace(
+        Family::BSpline3,
+        "parabola arc (t, t²), t ∈ [0, 1]",
+        &[("x", t.clone()), ("y", t.clone() * &t)],
+        "a parabola is a polynomial curve (refutes the parabola part; no ellipse arc is polynomial)",
+    )
+}
+
+/// The rational functions `Rⱼ = wⱼbⱼ / Σ wₖbₖ` of a basis with symbolic
+/// weights `w0, w1, …`.
+fn rational(family: Family) -> Vec<Sym> {
+    let b = crate::exact::basis(family);
+    let weighted: Vec<Sym> = b
+        .iter()
+        .enumerate()
+        .map(|(j, f)| Sym::var(&format!("w{j}")) * f)
+        .collect();
+    let total = crate::exact::sum(&weighted);
+    weighted.iter().map(|f| f.clone() / &total).collect()
+}
+
+/// Convex hull (unity and nonnegativity for `β ∈ [0, ∞)`, the printed
+/// range) and geometric (affine) invariance, which is the unity part.
+fn t46() -> Verdict {
+    let range = trig_core::ParamRange::parse("[0, inf)").expect("a valid range");
+    let mut v = nonnegative::convex_hull(&Family::ThesisQuadratic, Some(&range));
+    v.evidence.insert(
+        0,
+        "geometric (affine) invariance is the partition of unity (an affine map commutes with Σ H_i P_i exactly when Σ H_i = 1), decided below with the convex hull",
+    );
+    v
+}
+
+/// With weights `w ≥ 0` the rational functions have the signs of the
+/// `F_j` (all weights 1 gives the `F_j` themselves): the convex hull needs
+/// the segment functions nonnegative on the published range.
+fn m18() -> Verdict {
+    let mut v = nonnegative::convex_hull(&Family::Seed000Uniform, None);
+    v.evidence.insert(
+        0,
+        "R_j = w_j F_j / Σ w_k F_k with w ≥ 0 sum to 1; with all weights 1 they are the F_j, so a negative F_j refutes the convex hull for rational curves too",
+    );
+    v
+}
+
+/// `Σ Rⱼ = 1` identically for symbolic weights: affine invariance.
+fn m19() -> Verdict {
+    crate::exact::identity(
+        "Σ w_j F_j / Σ w_k F_k − 1 (weights symbolic)",
+        &crate::exact::sum(&rational(Family::Seed000Uniform)),
+        &Sym::one(),
+    )
+}
+
+/// For `wᵢ > 0` the rational functions are nonnegative and sum to 1 when
+/// the quartic functions are: the convex hull of the rational curve.
+fn d13() -> Verdict {
+    let mut v = nonnegative::convex_hull(&Family::Seed002Quartic, None);
+    v.evidence.insert(
+        0,
+        "R_i = w_i b_i / Σ w_j b_j with every w_i > 0 is ≥ 0 where the b_i are, and Σ R_i = 1: decided on the b_i",
+    );
+    v
+}
+
+/// The quadratic basis (3.1) at `β = 0`, exactly.
+fn t43() -> Verdict {
+    let at_zero: Vec<Sym> = crate::exact::basis(Family::ThesisQuadratic)
+        .iter()
+        .map(|h| h.subs("beta", &Sym::zero()))
+        .collect();
+    crate::exact::identities(
+        [("H0", 0), ("H1", 1), ("H2", 0)]
+            .iter()
+            .zip(at_zero)
+            .map(|((name, want), h)| (format!("{name} at β = 0 ≡ {want}"), h, Sym::int(*want)))
+            .collect(),
+    )
+}
+
+/// 0.6 in each printed interval, and every function of each basis
+/// certified ≥ 0 at the parameter 0.6 (admissible: the basis is
+/// nonnegative there, whatever the printed interval says).
+fn t62() -> Verdict {
+    let value = rug::Rational::from((3, 5));
+    let methods = [
+        (Family::ThesisCubic, "m", "(-2, 1]"),
+        (Family::MajeedQayyum, "eta", "(1/2, 2]"),
+        (Family::Han, "lambda", "[-2, 1]"),
+        (Family::Usman, "alpha", "(0, 2)"),
+    ];
+    let parts = methods
+        .iter()
+        .map(|(family, name, printed)| {
+            let range = trig_core::ParamRange::parse(printed).expect("a valid range");
+            let inside = range.contains(&value);
+            let mut v = crate::judge::certificate::nonnegative_on(
+                family,
+                &crate::exact::basis(*family),
+                Some(name),
+                &trig_certify::ParamBox::closed(value.clone(), value.clone()),
+            );
+            v.evidence.insert(
+                0,
+                format!(
+                    "{name} = 3/5 {} the printed interval {range}",
+                    if inside { "lies in" } else { "lies outside" }
+                ),
+            );
+            if !inside {
+                v.status = Status::Fails;
+            }
+            (format!("{} at {name} = 3/5", family.info().id), v)
+        })
+        .collect();
+    Verdict::all(crate::judge::certificate::CERTIFIED, parts)
+}

@@ -1,0 +1,230 @@
+//! The linear-independence judge: the functions of a basis are linearly
+//! independent ("basis functions" of the space they span) for every
+//! parameter value of a range.
+//!
+//! Decided by the Wronskian `W = det[bⱼ⁽ⁱ⁾]`, `0 ≤ i, j < n`, computed in the
+//! exact ring: analytic functions are dependent exactly where `W ≡ 0` in
+//! the variable. In the normal form of the ring (`s² = 1 − c²`) the
+//! monomials `tᵃ cᵇ sᵉ` (`e ≤ 1`) are independent functions, so `W ≡ 0` for
+//! a parameter value exactly when every coefficient of `W`'s numerator in
+//! those monomials vanishes there:
+//! - one coefficient certified nonzero on the range proves independence;
+//! - a rational parameter value where the whole numerator vanishes (found
+//!   among the rational roots, checked exactly) refutes it.
+
+use trig_certify::branch::{self, Outcome};
+use trig_core::ParamRange;
+use trig_symbolic::{Poly, Sym};
+
+use super::by_intervals::axes;
+use crate::continuity::rational_roots;
+use crate::exact::{ExactBasis, basis_of};
+use crate::status::Status;
+use crate::verdict::Verdict;
+
+/// How independence is decided, as the report states it.
+pub const METHOD: &str = "exact Wronskian in the symbolic ring; its coefficients in the independent monomials t^a·c^b·s^e (e ≤ 1) of the normal form; a coefficient certified nonzero on the range (interval branch and bound) proves independence, a rational parameter value where all vanish (exact) refutes it";
+
+/// Most functions whose Wronskian is expanded (`n!` terms).
+const MAX_FUNCTIONS: usize = 6;
+
+/// The atoms of the variable whose monomials are independent in the
+/// normal form of the exact ring.
+const VARIABLE_ATOMS: [&str; 3] = ["s", "c", "t"];
+
+/// One derivative in the variable of the basis (`d/dθ` for formulas in
+/// `s`, `c` alone: a constant factor per row does not change `W ≡ 0`).
+fn derive<B: ExactBasis>(basis: &B, f: &Sym) -> Sym {
+    let domain = basis.domain();
+    if domain.is_pure_trigonometric() {
+        f.d_angle()
+    } else {
+        trig_certify::atoms::d_variable(f, &domain)
+    }
+}
+
+/// `det m` by expansion along the first row (small `n`).
+fn det(m: &[Vec<Sym>]) -> Sym {
+    match m.len() {
+        0 => Sym::one(),
+        1 => m[0][0].clone(),
+        n => (0..n)
+            .filter(|&j| !m[0][j].is_zero())
+            .map(|j| {
+                let minor: Vec<Vec<Sym>> = m[1..]
+                    .iter()
+                    .map(|row| {
+                        row.iter()
+                            .enumerate()
+                            .filter(|(k, _)| *k != j)
+                            .map(|(_, x)| x.clone())
+                            .collect()
+                    })
+                    .collect();
+                let term = m[0][j].clone() * &det(&minor);
+                if j % 2 == 0 { term } else { -term }
+            })
+            .fold(Sym::zero(), |acc, t| acc + &t),
+    }
+}
+
+/// The Wronskian of the functions of `basis`.
+pub fn wronskian<B: ExactBasis>(basis: &B) -> Sym {
+    let mut rows = vec![basis_of(basis)];
+    for _ in 1..rows[0].len() {
+        let next = rows[rows.len() - 1]
+            .iter()
+            .map(|f| derive(basis, f))
+            .collect();
+        rows.push(next);
+    }
+    det(&rows)
+}
+
+/// The coefficients of `p` in the monomials of the variable's atoms.
+fn coefficients(p: &Poly) -> Vec<Poly> {
+    let mut out = vec![p.clone()];
+    for atom in VARIABLE_ATOMS {
+        out = out
+            .iter()
+            .flat_map(|q| q.coefficients_in(atom))
+            .filter(|q| !q.is_zero())
+            .collect();
+    }
+    out
+}
+
+/// The functions of `basis` are linearly independent for every parameter
+/// value in `range` (the only parameter's; the declared ranges otherwise).
+pub fn independent<B: ExactBasis>(basis: &B, range: Option<&ParamRange>) -> Verdict {
+    let names = basis.function_names();
+    let n = names.len();
+    if n > MAX_FUNCTIONS {
+        return Verdict::not_checkable(format!(
+            "the Wronskian is expanded for at most {MAX_FUNCTIONS} functions ({n} here)"
+        ));
+    }
+    let w = wronskian(basis);
+    let params = basis.parameters();
+    let param_names: Vec<String> = params.iter().map(|p| p.name.clone()).collect();
+    let atoms: Vec<String> = trig_certify::atoms::param_atoms(&basis.domain())
+        .into_iter()
+        .map(|a| a.name)
+        .collect();
+    let unknown: Vec<String> = w
+        .variables()
+        .into_iter()
+        .filter(|v| {
+            !VARIABLE_ATOMS.contains(&v.as_str()) && !param_names.contains(v) && !atoms.contains(v)
+        })
+        .collect();
+    let header = format!(
+        "Wronskian of {} (orders 0–{} in the variable)",
+        names.join(", "),
+        n - 1
+    );
+    if w.is_zero() {
+        return Verdict::new(
+            Status::Fails,
+            METHOD,
+            vec![format!(
+                "{header} vanishes identically: the functions are dependent for every parameter value"
+            )],
+        );
+    }
+    if !unknown.is_empty() {
+        return Verdict::not_checkable(format!(
+            "{header} is written in {}, whose monomials are not known to be independent in the exact ring",
+            unknown.join(", ")
+        ));
+    }
+    let mut coeffs = coefficients(w.numerator());
+    coeffs.sort_by_key(|q| (q.len(), q.total_degree()));
+    let (ax, notes) = axes(basis, range);
+    let shown_range = range
+        .map(ToString::to_string)
+        .or_else(|| params.first().map(|p| p.range.to_string()));
+    // refute: a rational value in the range where every coefficient vanishes
+    if let ([p], false) = (
+        params.as_slice(),
+        atoms.iter().any(|a| w.variables().contains(a)),
+    ) {
+        let r = range.unwrap_or(&p.range);
+        let (roots, _) = rational_roots(w.numerator(), &p.name);
+        if let Some(v) = roots.into_iter().find(|v| r.contains(v)) {
+            let at = w.numerator().subs(&p.name, &Poly::constant(v.clone()));
+            if at.is_zero() {
+                return Verdict::new(
+                    Status::Fails,
+                    METHOD,
+                    vec![format!(
+                        "{header}: at {} = {v}, in the range {r}, every coefficient of its numerator vanishes exactly, so W ≡ 0 there: the functions are linearly dependent at {} = {v}",
+                        p.symbol, p.symbol
+                    )],
+                );
+            }
+        }
+    }
+    let domain = basis.domain();
+    let proved = |f: &Sym| matches!(branch::positive(f, &domain, &ax), Outcome::Proved { .. });
+    // one parameter: the common zeros of the coefficients are the zeros of
+    // their gcd
+    if params.len() == 1 {
+        let common = coeffs
+            .iter()
+            .try_fold(Poly::zero(), |acc, q| trig_symbolic::gcd::gcd(&acc, q));
+        if let Some(g) = common {
+            if g.as_constant().is_some() {
+                return Verdict::new(
+                    Status::Holds,
+                    METHOD,
+                    vec![format!(
+                        "{header}: the {} coefficients of its numerator have no common factor (gcd 1, exact), so W is not identically 0 for every parameter value: independent",
+                        coeffs.len()
+                    )],
+                );
+            }
+            let gs = Sym::from_poly(g.clone());
+            if notes.is_empty() && (proved(&gs) || proved(&-gs.clone())) {
+                return Verdict::new(
+                    Status::Holds,
+                    METHOD,
+                    vec![format!(
+                        "{header}: the gcd {g} of the coefficients of its numerator has one strict sign for {} (certified), so W is not identically 0 there: independent",
+                        shown_range.clone().unwrap_or_default()
+                    )],
+                );
+            }
+        }
+    }
+    // prove: one coefficient of one strict sign on the range
+    for q in coeffs.iter().take(8) {
+        let g = Sym::from_poly(q.clone());
+        if let Some(c) = q.as_constant() {
+            return Verdict::new(
+                Status::Holds,
+                METHOD,
+                vec![format!(
+                    "{header}: its numerator has the constant coefficient {c}, so W is not identically 0 for every parameter value: independent"
+                )],
+            );
+        }
+        if notes.is_empty() && (proved(&g) || proved(&-g.clone())) {
+            return Verdict::new(
+                Status::Holds,
+                METHOD,
+                vec![format!(
+                    "{header}: the coefficient {q} of its numerator has one strict sign for {} (certified), so W is not identically 0 there: independent",
+                    shown_range.clone().unwrap_or_default()
+                )],
+            );
+        }
+    }
+    let mut evidence = notes;
+    evidence.push(format!(
+        "{header}: no coefficient of its numerator was certified nonzero on the range and no rational value where all vanish was found ({} coefficients; the simplest: {})",
+        coeffs.len(),
+        coeffs.first().map(ToString::to_string).unwrap_or_default()
+    ));
+    Verdict::new(Status::NotCheckable, METHOD, evidence)
+}

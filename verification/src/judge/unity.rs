@@ -1,0 +1,33 @@
+//! The partition-of-unity judge: `Σ bᵢ = 1` identically, decided in the
+//! exact ring for any basis.
+
+use trig_symbolic::Sym;
+
+use crate::exact::ExactBasis;
+use crate::exact::{basis_of, identity, sum};
+use crate::verdict::Verdict;
+
+/// `Σ b_i − 1` when the names share a prefix (`b0, b1, …`), else the sum
+/// written out.
+pub fn sum_label(names: &[String]) -> String {
+    let prefix = |n: &str| n.trim_end_matches(|c: char| c.is_ascii_digit()).to_string();
+    let first = prefix(&names[0]);
+    if names
+        .iter()
+        .enumerate()
+        .all(|(i, n)| *n == format!("{first}{i}"))
+    {
+        format!("Σ {first}_i − 1")
+    } else {
+        format!("{} − 1", names.join(" + "))
+    }
+}
+
+/// The functions of `basis` sum to 1 identically.
+pub fn unity<B: ExactBasis>(basis: &B) -> Verdict {
+    identity(
+        &sum_label(&basis.function_names()),
+        &sum(&basis_of(basis)),
+        &Sym::one(),
+    )
+}
