@@ -18,6 +18,7 @@ pub mod judge;
 pub mod minimum;
 pub mod numeric;
 pub mod parallel;
+pub mod real_witness;
 pub mod report;
 pub mod spec_audit;
 pub mod status;

@@ -208,8 +208,13 @@ pub fn ordered_names<'a>(exprs: impl IntoIterator<Item = &'a Sym>) -> Vec<String
 /// A witness that `left ≠ right`: a point where both sides are defined and
 /// differ ([`search`]), with the two values, labelled `labels.0`, `labels.1`.
 /// `None` when the identity holds at every point tried (the residual is
-/// then zero or exceptional; the caller shows it without a witness).
+/// then zero or exceptional; the caller shows it without a witness). While
+/// a spec decision runs, a real point ([`crate::real_witness`]).
 pub fn find(left: &Sym, right: &Sym, labels: (&str, &str)) -> Option<Witness> {
+    // a spec basis: a real point, re-evaluated there
+    if let Some(real) = crate::real_witness::find(left, right, labels) {
+        return real;
+    }
     let names = ordered_names([left, right]);
     let differ = |p: &Point| match (at(left, p), at(right, p)) {
         (Some(l), Some(r)) => !(l - &r).is_zero(),

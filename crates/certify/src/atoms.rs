@@ -128,6 +128,33 @@ pub fn d_param(f: &Sym, domain: &Domain, i: usize, param_atoms: &[ParamAtom]) ->
     f.derive(&rules)
 }
 
+/// `f(a + b − x)`: `f` on the domain's reflection `x ↦ a + b − x` (which
+/// maps the domain onto itself), exactly; `None` when the atoms at
+/// `a + b` are not exact (`sin ω(a + b)`, `exp κ(a + b)`).
+pub fn reflect(f: &Sym, domain: &Domain) -> Option<Sym> {
+    let sum = domain.reflection();
+    let p: Vec<Sym> = domain.param_names.iter().map(|n| Sym::var(n)).collect();
+    let mut images: Vec<(&str, Sym)> = vec![("t", sum.eval(&Sym::one(), &p) - &Sym::var("t"))];
+    if let Some(w) = &domain.angle {
+        let (sa, ca) = domain.sin_cos_of(&sum.times(w)?, &Sym::one(), &p)?;
+        let (s, c) = (Sym::var("s"), Sym::var("c"));
+        images.push(("s", sa.clone() * &c - &(ca.clone() * &s)));
+        images.push(("c", ca * &c + &(sa * &s)));
+    }
+    if let Some(k) = &domain.exp {
+        let ea = domain.exp_of(&sum.scale(k), &Sym::one(), &p)?;
+        images.push(("E", ea / &Sym::var("E")));
+    }
+    let mut g = f.clone();
+    for (atom, _) in &images {
+        g = g.subs(atom, &Sym::var(&format!("__reflect_{atom}")));
+    }
+    for (atom, image) in &images {
+        g = g.try_subs(&format!("__reflect_{atom}"), image).ok()?;
+    }
+    Some(g)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -168,5 +195,11 @@ mod tests {
         assert_eq!(d_variable(&b, &d), Sym::one() - &Sym::var("c"));
         let p = Domain::from_variable(Variable::Polynomial, &[]);
         assert_eq!(d_variable(&Sym::var("t"), &p), Sym::one());
+        // t − sin t reflected on [0, α]: α − t − sin(α − t)
+        let r = reflect(&b, &d).unwrap();
+        let expected =
+            Sym::var("alpha") - &Sym::var("t") - &(Sym::var("sin(alpha)") * &Sym::var("c"))
+                + &(Sym::var("cos(alpha)") * &Sym::var("s"));
+        assert_eq!(r, expected);
     }
 }

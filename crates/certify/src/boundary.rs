@@ -121,12 +121,45 @@ fn conditions(n: &Poly, name: &str) -> Result<Vec<(Poly, String)>, String> {
         let lead = cs.last().cloned().unwrap_or_default();
         let disc = resultant(&m, &from_coefficients(&derivative(&cs), "z"), "z");
         if disc.is_zero() {
-            return Err(format!(
-                "the discriminant of {name} in the variable vanishes identically (a repeated factor)"
-            ));
+            return squarefree_conditions(&m, name);
         }
         out.push((disc, format!("discriminant of {name}")));
         out.push((lead, format!("leading coefficient of {name}")));
+    }
+    Ok(out)
+}
+
+/// The conditions of a polynomial with a repeated factor (its discriminant
+/// vanishes identically): exact factorisation first. A factor of even
+/// multiplicity is a square and never changes the sign; each factor of odd
+/// multiplicity gives its own end values, discriminant and leading
+/// coefficient, and two of them their resultant (where their zeros meet,
+/// the product's sign pattern can change). A parameter where the product's
+/// minimum touches 0 is a root of one of these.
+fn squarefree_conditions(m: &Poly, name: &str) -> Result<Vec<(Poly, String)>, String> {
+    let odd: Vec<Poly> = m
+        .factor()
+        .factors
+        .into_iter()
+        .filter(|(_, e)| e % 2 == 1)
+        .map(|(g, _)| g)
+        .collect();
+    let mut out = Vec::new();
+    for (k, g) in odd.iter().enumerate() {
+        let part = format!("factor {} of {name}", k + 1);
+        if g.degree_in("z") == 0 {
+            out.push((g.clone(), format!("{part} (free of the variable)")));
+            continue;
+        }
+        out.extend(conditions(g, &part)?);
+        for (j, h) in odd.iter().enumerate().skip(k + 1) {
+            if h.degree_in("z") > 0 {
+                out.push((
+                    resultant(g, h, "z"),
+                    format!("resultant of factors {} and {} of {name}", k + 1, j + 1),
+                ));
+            }
+        }
     }
     Ok(out)
 }

@@ -1,40 +1,47 @@
 //! Signs of functions that are not polynomial in `sin`, `cos` or the
 //! variable — `t` beside `sin t` (C-curves), `sinh`, `exp`, sines of
-//! parameters, domains `[0, α]` — by interval branch and bound with
-//! outward rounding ([`trig_core::Interval`]), so every `holds` is a proof.
+//! parameters, domains `[0, α]` — by branch and bound with rigorous
+//! enclosures, so every `holds` is a proof.
 //!
 //! The variable is normalised, `x = a(p) + L(p)·τ` with `τ ∈ [0, 1]`; a
 //! box is `τ ∈ [τ₀, τ₁]` times an interval for each parameter. On a box:
 //!
-//! 1. the function is enclosed by evaluating its exact formula on
-//!    intervals: a lower end `≥ 0` proves it there, an upper end `< 0` is a
-//!    certified counterexample (the box's rational centre);
+//! 1. the function is enclosed by a Taylor model of its exact formula
+//!    ([`crate::enclosure`]; intersected with plain interval evaluation,
+//!    which is exact at faces where the model keeps a rounding remainder):
+//!    a lower end `≥ 0` proves it there, an upper end `< 0` is a certified
+//!    counterexample (the box's rational centre); a side along which the
+//!    function is proved monotone is replaced by its lower end;
 //! 2. on a box touching a face of the whole region (`τ = 0`, `τ = 1`, a
 //!    parameter's range end) — where basis functions vanish and enclosures
-//!    cannot decide — the function is `≥ 0` when it is `≥ 0` on the face
-//!    (exactly zero there, decided in the exact ring, or proved on the
-//!    face's lower-dimensional box) and its derivative into the box is
-//!    `≥ 0` (decided the same way: derivatives are exact, by the chain rule
+//!    cannot decide — by the face arguments (`branch/faces.rs`): a function
+//!    zero on the face to order `m` has the sign of its `m`-th derivative
+//!    into the box (Taylor's theorem: the removable zero divided out), and
+//!    otherwise it is `≥ 0` when it is `≥ 0` on the face and its derivative
+//!    into the box is `≥ 0` (derivatives are exact, by the chain rule
 //!    `∂τ = L·∂x`, `∂pᵢ = ∂pᵢ|ₓ + (aᵢ + Lᵢτ)·∂x`);
 //! 3. otherwise the box is split along its widest side.
 //!
-//! Strict signs (for divisors) use the same steps; at an open range end
-//! the face itself is excluded, so `α − sin α > 0` on `(0, π)` is proved
-//! from `(α − sin α)‴ = cos α > 0` near `α = 0`. A decision that does not
-//! finish within the budget is undecided, never a failure.
+//! A function of the variable alone is decided on the union of the
+//! domains, one dimension instead of `1 + d`. Strict signs (for divisors)
+//! use the same steps; at an open range end the face itself is excluded,
+//! so `α − sin α > 0` on `(0, π)` is proved from `(α − sin α)‴ = cos α > 0`
+//! near `α = 0`. The budget is counted in boxes, never timed, so a verdict
+//! does not depend on the machine; a decision that does not finish within
+//! it is undecided, never a failure.
 
 use std::cell::RefCell;
 use std::rc::Rc;
 
-use rug::float::Round;
-use rug::{Float, Rational};
-use trig_core::{Affine, Atoms, Domain, End, Interval, ParamRange, Ring};
+use rug::Rational;
+use trig_core::{Affine, Domain, End, Interval, ParamRange};
 use trig_symbolic::Sym;
 
-use crate::atoms::{ParamAtom, d_param, d_variable, param_atoms, value};
+pub use crate::coordinates::Axis;
+use crate::coordinates::{BoxFunction, Coordinates};
 
-/// Working precision of the enclosures (bits).
-const PREC: u32 = 64;
+mod faces;
+
 /// Most box evaluations of one decision: the budget is counted, not timed,
 /// so a verdict never depends on the machine's load.
 const BUDGET: usize = 12_000;
@@ -44,27 +51,9 @@ const MAX_ORDER: usize = 8;
 const MAX_DEPTH: usize = 40;
 /// Most box evaluations of one face argument before it is abandoned.
 const ATTEMPT: usize = 3_000;
-
-/// What the face of a face argument must satisfy: strictly positive for a
-/// strict goal on a closed face, `≥ 0` otherwise.
-fn face_goal(goal: Goal, open: bool) -> Goal {
-    if goal == Goal::Positive && !open {
-        Goal::Positive
-    } else {
-        Goal::NonNegative
-    }
-}
-
-/// A parameter's set: `[lo, hi]` with open ends where flagged; with `pi`
-/// the ends are multiples of π (the parameter is `π·y`, `y ∈ [lo, hi]`).
-#[derive(Debug, Clone, PartialEq)]
-pub struct Axis {
-    pub lo: Rational,
-    pub hi: Rational,
-    pub lo_open: bool,
-    pub hi_open: bool,
-    pub pi: bool,
-}
+/// Most subdivisions of one face argument below the box it starts on (the
+/// outer search splits further and tries again).
+const ATTEMPT_DEPTH: usize = 10;
 
 impl Axis {
     /// A published range as an axis, when it is bounded.
@@ -97,25 +86,15 @@ pub enum Outcome {
     Undecided(String),
 }
 
-/// `Σ coef(τ)·sym`: an exact function with polynomial factors in `τ`
-/// from the chain rule.
-#[derive(Debug, Clone)]
-struct Term {
-    coef: Vec<Rational>,
-    sym: Sym,
-}
-
-type Expr = Vec<Term>;
-
 /// An expression with its first derivatives along each coordinate, formed
 /// on first use (the monotonicity test and the face arguments share them).
 struct Fun {
-    e: Expr,
+    e: BoxFunction,
     d: RefCell<Vec<Option<Rc<Fun>>>>,
 }
 
 impl Fun {
-    fn new(e: Expr, dims: usize) -> Rc<Fun> {
+    fn new(e: BoxFunction, dims: usize) -> Rc<Fun> {
         Rc::new(Fun {
             e,
             d: RefCell::new(vec![None; dims]),
@@ -131,45 +110,20 @@ enum Goal {
 }
 
 struct Engine<'a> {
-    domain: &'a Domain,
-    axes: &'a [Axis],
-    atoms: Vec<ParamAtom>,
+    coords: Coordinates<'a>,
     evaluations: usize,
     /// The evaluation count at which the current attempt gives up.
     limit: usize,
+    /// The depth at which the current attempt stops splitting.
+    floor: usize,
+    /// Set to the order of a derivative certified negative somewhere: the
+    /// face argument that needs it `≥ 0` is doomed, its search stops.
+    doomed: Option<usize>,
 }
 
-fn float(q: &Rational, round: Round) -> Float {
-    Float::with_val_round(PREC, q, round).0
-}
-
-fn interval(lo: &Rational, hi: &Rational) -> Interval {
-    Interval::from_ends(PREC, &float(lo, Round::Down), &float(hi, Round::Up))
-}
-
-fn poly_mul(a: &[Rational], b: &[Rational]) -> Vec<Rational> {
-    let mut out = vec![Rational::new(); a.len() + b.len() - 1];
-    for (i, x) in a.iter().enumerate() {
-        for (j, y) in b.iter().enumerate() {
-            out[i + j] += Rational::from(x * y);
-        }
-    }
-    out
-}
-
-fn poly_derivative(a: &[Rational]) -> Vec<Rational> {
-    if a.len() <= 1 {
-        return vec![Rational::new()];
-    }
-    a.iter()
-        .enumerate()
-        .skip(1)
-        .map(|(k, q)| Rational::from(q * k as u32))
-        .collect()
-}
-
-fn poly_at(a: &[Rational], x: &Rational) -> Rational {
-    a.iter().rev().fold(Rational::new(), |acc, q| acc * x + q)
+/// `−f` (its derivatives formed anew).
+fn negate(f: &Fun, dims: usize) -> Rc<Fun> {
+    Fun::new(f.e.negated(), dims)
 }
 
 impl Engine<'_> {
@@ -177,60 +131,20 @@ impl Engine<'_> {
         self.evaluations >= self.limit.min(BUDGET)
     }
 
-    /// `a(p)`, `L(p) = b(p) − a(p)` as exact values in the parameters.
-    fn start_and_length(&self) -> (Sym, Sym) {
-        let p: Vec<Sym> = self
-            .domain
-            .param_names
-            .iter()
-            .map(|n| Sym::var(n))
-            .collect();
-        let a = self.domain.start.eval(&Sym::one(), &p);
-        let b = self.domain.end.eval(&Sym::one(), &p);
-        (a.clone(), b - &a)
-    }
-
-    /// The enclosure of `e` on the box `[lo, hi]` (coordinate 0 is `τ`).
-    fn enclose(&mut self, e: &Expr, bx: &[(Rational, Rational)]) -> Option<Interval> {
-        self.evaluations += 1;
-        let tau = interval(&bx[0].0, &bx[0].1);
-        let p = self.params(&tau, &bx[1..]);
-        let d = self.domain;
-        let a = d.start_value(&tau, &p);
-        let x = a.clone() + &((d.end_value(&tau, &p) - &a) * &tau);
-        let theta = x.clone() * &d.angle_rate(&tau);
-        let (s, c) = theta.try_sin_cos()?;
-        let ex = match &d.exp {
-            Some(k) => (x.clone() * &tau.rational(k)).try_exp()?,
-            None => tau.int(1),
+    /// True when side `k` of the box is at most a quarter of the region's.
+    fn narrow(&self, bx: &[(Rational, Rational)], k: usize) -> bool {
+        let global = if k == 0 {
+            Rational::from(1)
+        } else {
+            Rational::from(&self.coords.axes[k - 1].hi - &self.coords.axes[k - 1].lo)
         };
-        let atoms = Atoms { s, c, t: x, e: ex };
-        let mut sum = tau.int(0);
-        for term in e {
-            let coef = term
-                .coef
-                .iter()
-                .rev()
-                .fold(tau.int(0), |acc, q| acc * &tau + &tau.rational(q));
-            let v = term
-                .sym
-                .eval(&tau, &|n| value(n, d, &atoms, &p, &self.atoms))
-                .ok()?;
-            sum = sum + &(coef * &v);
-        }
-        trig_core::Real::is_finite(&sum).then_some(sum)
+        Rational::from(&bx[k].1 - &bx[k].0) * 4u32 <= global
     }
 
-    /// The parameters on the box's coordinates (`π·y` on a π axis).
-    fn params(&self, like: &Interval, coords: &[(Rational, Rational)]) -> Vec<Interval> {
-        coords
-            .iter()
-            .zip(self.axes)
-            .map(|((l, h), a)| {
-                let y = interval(l, h);
-                if a.pi { y * &like.pi() } else { y }
-            })
-            .collect()
+    /// The enclosure of `e` on the box (one evaluation of the budget).
+    fn enclose(&mut self, e: &BoxFunction, bx: &[(Rational, Rational)]) -> Option<Interval> {
+        self.evaluations += 1;
+        self.coords.enclose(e, bx)
     }
 
     /// `∂/∂(coordinate k)` of `f`, formed once (along a π axis the factor
@@ -239,128 +153,9 @@ impl Engine<'_> {
         if let Some(d) = &f.d.borrow()[k] {
             return d.clone();
         }
-        let d = Fun::new(self.derivative(&f.e, k), f.d.borrow().len());
+        let d = Fun::new(self.coords.derivative(&f.e, k), f.d.borrow().len());
         f.d.borrow_mut()[k] = Some(d.clone());
         d
-    }
-
-    /// A lower bound of `f` on the box, sharpened by monotonicity: a side
-    /// along which `f` is proved monotone is replaced by its lower end.
-    fn lower_bound(&mut self, f: &Rc<Fun>, bx: &[(Rational, Rational)]) -> Option<Float> {
-        let mut reduced = bx.to_vec();
-        for k in 0..bx.len() {
-            if bx[k].0 == bx[k].1 {
-                continue;
-            }
-            let d = self.derived(f, k);
-            let Some(v) = self.enclose(&d.e, bx) else {
-                continue;
-            };
-            if *v.lo() >= 0 {
-                reduced[k] = (bx[k].0.clone(), bx[k].0.clone());
-            } else if *v.hi() <= 0 {
-                reduced[k] = (bx[k].1.clone(), bx[k].1.clone());
-            }
-        }
-        self.enclose(&f.e, &reduced).map(|v| v.lo().clone())
-    }
-
-    /// `∂/∂(coordinate k)` of `e` (`k = 0` is `τ`).
-    fn derivative(&self, e: &Expr, k: usize) -> Expr {
-        let (_, length) = self.start_and_length();
-        let mut out: Expr = Vec::new();
-        let mut push = |coef: Vec<Rational>, sym: Sym| {
-            if sym.is_zero() || coef.iter().all(|q| *q == 0) {
-                return;
-            }
-            match out.iter_mut().find(|t| t.coef == coef) {
-                Some(t) => t.sym = t.sym.clone() + &sym,
-                None => out.push(Term { coef, sym }),
-            }
-        };
-        for t in e {
-            let dx = d_variable(&t.sym, self.domain);
-            if k == 0 {
-                push(poly_derivative(&t.coef), t.sym.clone());
-                push(t.coef.clone(), length.clone() * &dx);
-            } else {
-                let i = k - 1;
-                // ∂x/∂pᵢ = aᵢ + Lᵢτ
-                let coef_of = |a: &Affine| {
-                    a.params
-                        .iter()
-                        .find(|(j, _)| *j == i)
-                        .map_or_else(Rational::new, |(_, q)| q.clone())
-                };
-                let ai = coef_of(&self.domain.start);
-                let li = Rational::from(&coef_of(&self.domain.end) - &ai);
-                push(t.coef.clone(), d_param(&t.sym, self.domain, i, &self.atoms));
-                push(poly_mul(&t.coef, &[ai, li]), dx);
-            }
-        }
-        out
-    }
-
-    /// `e` exactly zero on the face `coordinate k = v` (for `τ`: the atoms
-    /// at that end; for a parameter: substituted when it has no atoms).
-    fn zero_on_face(&self, e: &Expr, k: usize, v: &Rational) -> bool {
-        let p: Vec<Sym> = self
-            .domain
-            .param_names
-            .iter()
-            .map(|n| Sym::var(n))
-            .collect();
-        let mut total = Sym::zero();
-        for t in e {
-            let face = if k == 0 {
-                let end = if *v == 0 {
-                    &self.domain.start
-                } else {
-                    &self.domain.end
-                };
-                let Some(at) = self.domain.atoms_at(end, &Sym::one(), &p) else {
-                    return false;
-                };
-                Sym::rational(poly_at(&t.coef, v))
-                    * &t.sym
-                        .subs("s", &at.s)
-                        .subs("c", &at.c)
-                        .subs("t", &at.t)
-                        .subs("E", &at.e)
-            } else {
-                // the parameter and its atoms at the face value, when exact
-                // (a formula zero for every x is zero on the face)
-                let i = k - 1;
-                let v = if self.axes[i].pi {
-                    Sym::rational(v.clone()) * &Sym::pi()
-                } else {
-                    Sym::rational(v.clone())
-                };
-                let mut at = p.clone();
-                at[i] = v.clone();
-                let symbols = trig_symbolic::symbolic_atoms();
-                let mut face = t.sym.subs(&self.domain.param_names[i], &v);
-                for atom in self.atoms.iter().filter(|a| a.param == i) {
-                    if !face.variables().contains(&atom.name) {
-                        continue;
-                    }
-                    match value(&atom.name, self.domain, &symbols, &at, &self.atoms) {
-                        Some(exact) => face = face.subs(&atom.name, &exact),
-                        None => return false,
-                    }
-                }
-                // τ stays free (a formal variable: zero for every τ is sound)
-                let tau = Sym::var("__tau");
-                let coef = t
-                    .coef
-                    .iter()
-                    .rev()
-                    .fold(Sym::zero(), |acc, q| acc * &tau + &Sym::rational(q.clone()));
-                coef * &face
-            };
-            total = total + &face;
-        }
-        total.is_zero()
     }
 
     /// Decides the goal for `e` on the box; `order` counts face arguments.
@@ -378,7 +173,7 @@ impl Engine<'_> {
                 "the interval search stopped at its budget of {BUDGET} boxes"
             ));
         }
-        if e.is_empty() {
+        if e.is_zero() {
             return match goal {
                 Goal::NonNegative => Outcome::Proved {
                     boxes: self.evaluations,
@@ -387,15 +182,10 @@ impl Engine<'_> {
             };
         }
         if let Some(v) = self.enclose(e, bx) {
-            let lo = if *v.lo() >= 0 {
-                Some(v.lo().clone())
-            } else {
-                self.lower_bound(f, bx)
+            let proved = match goal {
+                Goal::NonNegative => *v.lo() >= 0,
+                Goal::Positive => *v.lo() > 0,
             };
-            let proved = lo.is_some_and(|lo| match goal {
-                Goal::NonNegative => lo >= 0,
-                Goal::Positive => lo > 0,
-            });
             if proved {
                 return Outcome::Proved {
                     boxes: self.evaluations,
@@ -405,6 +195,7 @@ impl Engine<'_> {
                 return if order == 0 {
                     self.negative_at(bx, &v)
                 } else {
+                    self.doomed = Some(order);
                     Outcome::Undecided(
                         "a derivative is negative: the face argument does not apply".into(),
                     )
@@ -413,12 +204,7 @@ impl Engine<'_> {
         }
         // face arguments on the faces of the whole region, on boxes near them
         for k in 0..bx.len() {
-            let global = if k == 0 {
-                Rational::from(1)
-            } else {
-                Rational::from(&self.axes[k - 1].hi - &self.axes[k - 1].lo)
-            };
-            if bx[k].0 == bx[k].1 || Rational::from(&bx[k].1 - &bx[k].0) * 4u32 > global {
+            if bx[k].0 == bx[k].1 || !self.narrow(bx, k) {
                 continue;
             }
             for lower in [true, false] {
@@ -430,7 +216,7 @@ impl Engine<'_> {
                 }
             }
         }
-        if depth >= MAX_DEPTH {
+        if depth >= MAX_DEPTH.min(self.floor) {
             return Outcome::Undecided("subdivision depth limit".into());
         }
         // split the widest side
@@ -453,7 +239,11 @@ impl Engine<'_> {
             child[k] = half;
             // a negative box anywhere decides; an undecided one is kept
             // while the other half is searched for one
-            match self.decide(f, &child, goal, order, depth + 1) {
+            let out = self.decide(f, &child, goal, order, depth + 1);
+            if self.doomed == Some(order) {
+                return out;
+            }
+            match out {
                 Outcome::Proved { boxes } => {
                     if let Outcome::Proved { .. } = result {
                         result = Outcome::Proved { boxes };
@@ -466,110 +256,26 @@ impl Engine<'_> {
         result
     }
 
-    /// The face argument on side `lower` of coordinate `k`, when that side
-    /// lies on the region's boundary: `None` when it does not apply or fails.
-    #[allow(clippy::too_many_arguments)]
-    fn face_argument(
-        &mut self,
-        f: &Rc<Fun>,
-        bx: &[(Rational, Rational)],
-        goal: Goal,
-        order: usize,
-        depth: usize,
-        k: usize,
-        lower: bool,
-    ) -> Option<Outcome> {
-        let (global, open) = if k == 0 {
-            (
-                if lower {
-                    Rational::new()
-                } else {
-                    Rational::from(1)
-                },
-                false,
-            )
-        } else {
-            let a = &self.axes[k - 1];
-            if lower {
-                (a.lo.clone(), a.lo_open)
-            } else {
-                (a.hi.clone(), a.hi_open)
-            }
-        };
-        let side = if lower { &bx[k].0 } else { &bx[k].1 };
-        if *side != global {
-            return None;
-        }
-        // the face value: ≥ 0 (exactly zero, or proved on the face box)
-        let outer = self.limit;
-        self.limit = outer.min(self.evaluations + ATTEMPT);
-        let result = self.face_attempt(f, bx, goal, order, depth, k, lower, global, open);
-        self.limit = outer;
-        result
-    }
-
-    /// The two halves of a face argument (see [`Engine::face_argument`]).
-    #[allow(clippy::too_many_arguments)]
-    fn face_attempt(
-        &mut self,
-        f: &Rc<Fun>,
-        bx: &[(Rational, Rational)],
-        goal: Goal,
-        order: usize,
-        depth: usize,
-        k: usize,
-        lower: bool,
-        global: Rational,
-        open: bool,
-    ) -> Option<Outcome> {
-        let face_ok = (face_goal(goal, open) == Goal::NonNegative
-            && self.zero_on_face(&f.e, k, &global))
-            || {
-                let mut face = bx.to_vec();
-                face[k] = (global.clone(), global.clone());
-                matches!(
-                    self.decide(f, &face, face_goal(goal, open), order, depth),
-                    Outcome::Proved { .. }
-                )
-            };
-        if !face_ok {
-            return None;
-        }
-        // the derivative into the box (negated on an upper side)
-        let mut d = self.derived(f, k);
-        if !lower {
-            let negated: Expr =
-                d.e.iter()
-                    .map(|t| Term {
-                        coef: t.coef.clone(),
-                        sym: -t.sym.clone(),
-                    })
-                    .collect();
-            d = Fun::new(negated, bx.len());
-        }
-        let inner_goal = if goal == Goal::Positive && open {
-            Goal::Positive
-        } else {
-            Goal::NonNegative
-        };
-        match self.decide(&d, bx, inner_goal, order + 1, depth) {
-            out @ Outcome::Proved { .. } => Some(out),
-            _ => None,
-        }
-    }
-
     /// A grid of points (8 steps per side, at most 4096 points) where the
     /// function is certified negative, if any: a quick counterexample.
     fn probe(&mut self, f: &Rc<Fun>, bx: &[(Rational, Rational)]) -> Option<Outcome> {
-        let steps = if bx.len() <= 2 { 8u32 } else { 4 };
+        let wide = bx.iter().filter(|(l, h)| l != h).count();
+        let steps = |k: usize| -> u32 {
+            match (bx[k].0 == bx[k].1, wide <= 2) {
+                (true, _) => 1,
+                (false, true) => 8,
+                (false, false) => 4,
+            }
+        };
         let mut index = vec![0u32; bx.len()];
         loop {
             let point: Vec<(Rational, Rational)> = bx
                 .iter()
                 .zip(&index)
-                .map(|((lo, hi), i)| {
+                .enumerate()
+                .map(|(k, ((lo, hi), i))| {
                     let q = lo.clone()
-                        + Rational::from(hi - lo) * Rational::from((2 * *i + 1, 2 * steps));
+                        + Rational::from(hi - lo) * Rational::from((2 * *i + 1, 2 * steps(k)));
                     (q.clone(), q)
                 })
                 .collect();
@@ -578,7 +284,7 @@ impl Engine<'_> {
                     return Some(self.negative_at(&point, &v));
                 }
             }
-            let k = index.iter().position(|i| *i + 1 < steps)?;
+            let k = (0..index.len()).find(|&k| index[k] + 1 < steps(k))?;
             index[k] += 1;
             for i in &mut index[..k] {
                 *i = 0;
@@ -591,17 +297,10 @@ impl Engine<'_> {
             .iter()
             .map(|(l, h)| Rational::from(l + h) / 2u32)
             .collect();
-        let tau = interval(&centre[0], &centre[0]);
-        let point: Vec<(Rational, Rational)> =
-            centre[1..].iter().map(|q| (q.clone(), q.clone())).collect();
-        let p = self.params(&tau, &point);
-        let d = self.domain;
-        let a = d.start_value(&tau, &p);
-        let x = a.clone() + &((d.end_value(&tau, &p) - &a) * &tau);
         Outcome::Negative {
             tau: centre[0].clone(),
             params: centre[1..].to_vec(),
-            x: trig_core::Real::to_f64(&x),
+            x: self.coords.x_at(&centre[0], &centre[1..]),
             value: (v.lo().to_f64(), v.hi().to_f64()),
         }
     }
@@ -620,22 +319,85 @@ pub fn positive(f: &Sym, domain: &Domain, axes: &[Axis]) -> Outcome {
 }
 
 fn run(f: &Sym, domain: &Domain, axes: &[Axis], goal: Goal) -> Outcome {
+    // a function of the variable alone is decided on the union of the
+    // domains, `[min a(p), max b(p)]` (one dimension instead of 1 + d)
+    if let Some(hull) = variable_hull(f, domain, axes) {
+        if let proved @ Outcome::Proved { .. } = search(f, &hull, &[], goal) {
+            return proved;
+        }
+    }
+    search(f, domain, axes, goal)
+}
+
+/// When `f` depends on the variable alone (its atoms, `π`, radicals) and
+/// the domain's ends on the parameters: the domain `[min a, max b]` over
+/// the parameter box, without parameters. The union of the domains
+/// `[a(p), b(p)]` over a connected box is that interval (up to ends not
+/// attained at open range ends), so `f ≥ 0` there is `f ≥ 0` on every
+/// domain.
+fn variable_hull(f: &Sym, domain: &Domain, axes: &[Axis]) -> Option<Domain> {
+    let own =
+        |v: &String| ["s", "c", "t", "E", "pi"].contains(&v.as_str()) || v.starts_with("sqrt(");
+    if axes.is_empty()
+        || !f.variables().iter().all(own)
+        || domain.angle.as_ref().is_some_and(|w| !w.params.is_empty())
+    {
+        return None;
+    }
+    // an affine end at the corner that makes it least (or greatest)
+    let extreme = |a: &Affine, least: bool| -> Affine {
+        let mut out = Affine {
+            constant: a.constant.clone(),
+            pi: a.pi.clone(),
+            params: Vec::new(),
+        };
+        for (i, q) in &a.params {
+            let axis = &axes[*i];
+            let at = if (*q > 0) == least {
+                &axis.lo
+            } else {
+                &axis.hi
+            };
+            let v = Rational::from(q * at);
+            if axis.pi {
+                out.pi += v;
+            } else {
+                out.constant += v;
+            }
+        }
+        out
+    };
+    Some(Domain {
+        param_names: Vec::new(),
+        start: extreme(&domain.start, true),
+        end: extreme(&domain.end, false),
+        param_angles: Vec::new(),
+        param_exps: Vec::new(),
+        ..domain.clone()
+    })
+}
+
+fn search(f: &Sym, domain: &Domain, axes: &[Axis], goal: Goal) -> Outcome {
     let mut engine = Engine {
-        domain,
-        axes,
-        atoms: param_atoms(domain),
+        coords: Coordinates::new(domain, axes),
         evaluations: 0,
         limit: BUDGET,
+        floor: MAX_DEPTH,
+        doomed: None,
     };
-    let mut bx = vec![(Rational::new(), Rational::from(1))];
+    // a function of the parameters alone does not depend on τ: τ = 0
+    let free = !f
+        .variables()
+        .iter()
+        .any(|v| ["s", "c", "t", "E"].contains(&v.as_str()));
+    let tau_end = if free {
+        Rational::new()
+    } else {
+        Rational::from(1)
+    };
+    let mut bx = vec![(Rational::new(), tau_end)];
     bx.extend(axes.iter().map(|a| (a.lo.clone(), a.hi.clone())));
-    let e = Fun::new(
-        vec![Term {
-            coef: vec![Rational::from(1)],
-            sym: f.clone(),
-        }],
-        bx.len(),
-    );
+    let e = Fun::new(engine.coords.function(f), bx.len());
     if let Some(negative) = engine.probe(&e, &bx) {
         return negative;
     }

@@ -18,17 +18,28 @@
 //! witness is an exact point, re-evaluated before it is returned.
 
 pub mod algebraic;
+pub mod analytic_range;
 pub mod atoms;
 pub mod bernstein;
+pub mod bernstein_bound;
 pub mod boundary;
 pub mod branch;
+pub mod coordinates;
 pub mod domain;
+pub mod elementary;
+pub mod enclosure;
+pub mod exp_half_line;
+pub mod factors;
+pub mod krawczyk;
 pub mod nonneg;
 pub mod range;
+pub mod real_point;
 pub mod region;
 pub mod resultant;
 pub mod standard;
 pub mod sturm;
+pub mod taylor;
+pub mod transcendental;
 
 pub use domain::{Bound, ParamBox, describe_z, in_z};
 pub use standard::{Standard, standardize};

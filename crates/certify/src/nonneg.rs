@@ -239,6 +239,21 @@ fn budget_spent(boxes: usize) -> String {
     )
 }
 
+/// `p` without its factors of even multiplicity (squares, `≥ 0`), when it
+/// has any: the unit times the factors of odd multiplicity, each once.
+fn odd_part(p: &Poly) -> Option<Poly> {
+    let f = p.factor();
+    if f.factors.iter().all(|(_, e)| e % 2 == 1 && *e == 1) {
+        return None;
+    }
+    Some(
+        f.factors
+            .iter()
+            .filter(|(_, e)| e % 2 == 1)
+            .fold(Poly::constant(f.unit.clone()), |acc, (g, _)| acc * g),
+    )
+}
+
 /// Decides `f(θ; p) ≥ 0` for every `θ ∈ [0, π/2]` (every `t ∈ [0, 1]`) and
 /// every `p` in the box. `param` is `None` for functions without parameters.
 pub fn certify(f: &Sym, trigonometric: bool, param: Option<&str>, bx: &ParamBox) -> Certificate {
@@ -320,7 +335,18 @@ pub fn certify_box_to_depth(
     let excluded: Vec<_> = std::iter::once(Default::default())
         .chain(params.iter().map(|(_, bx)| bx.excluded()))
         .collect();
-    match sign_on_unit_cube(&a, depth, false, &excluded) {
+    let mut outcome = sign_on_unit_cube(&a, depth, false, &excluded);
+    if matches!(outcome, SignNd::Undecided { .. }) {
+        // a square factor touching 0 inside stalls the subdivision; it
+        // never changes the sign, so the odd part decides (a witness is
+        // still re-evaluated from f itself below)
+        if let Some(odd) = odd_part(&num) {
+            if let Ok(b) = tensor(&odd, params) {
+                outcome = sign_on_unit_cube(&b, depth, false, &excluded);
+            }
+        }
+    }
+    match outcome {
         SignNd::NonNegative { boxes } => BoxCertificate::NonNegative { boxes },
         SignNd::Negative { point, .. } => {
             let Some((z, values)) = to_params(&point, params) else {

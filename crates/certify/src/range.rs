@@ -506,6 +506,48 @@ mod tests {
         );
     }
 
+    /// A basis of squares (examples/independent/README.md C7):
+    /// b0 = (1 − s)²(1 − λs)², b2 = (1 − c)²(1 − λc)², b1 = 1 − b0 − b2;
+    /// the discriminants of b0, b2 vanish identically (squares), yet the
+    /// maximal range is exactly [−1, 2 + 2√2] (λ² − 4λ − 4 = 0).
+    #[test]
+    fn squares_have_exact_ends_after_squarefree_decomposition() {
+        let (s, c, l) = (Sym::var("s"), Sym::var("c"), Sym::var("lambda"));
+        let one = Sym::one();
+        let sq = |x: Sym| x.clone() * &x;
+        let b0 = sq((one.clone() - &s) * &(one.clone() - &(l.clone() * &s)));
+        let b2 = sq((one.clone() - &c) * &(one.clone() - &(l.clone() * &c)));
+        let b1 = one - &b0 - &b2;
+        let names = ["b0", "b1", "b2"];
+        let r = maximal_range(&[b0, b1, b2], &names, true, "lambda", &Rational::new());
+        match &r.lo {
+            EndPoint::Exact {
+                value,
+                closed: true,
+                ..
+            } => {
+                assert_eq!(value.rational, Some(Rational::from(-1)));
+            }
+            other => panic!("{other:?}"),
+        }
+        match &r.hi {
+            EndPoint::Exact {
+                value,
+                closed: true,
+                ..
+            } => {
+                assert!(value.rational.is_none());
+                // 2 + 2√2 = 4.828427124746…
+                let (lo, hi) = (value.lo.to_f64(), value.hi.to_f64());
+                assert!(
+                    lo <= 4.828_427_124_746_2 && 4.828_427_124_746_1 <= hi,
+                    "{lo} {hi}"
+                );
+            }
+            other => panic!("{other:?}"),
+        }
+    }
+
     /// Han's quadratic basis (CAGD 19 (2002)): b0 = (1 − s)(1 − λs),
     /// b1 = (1 + λ)(s + c − 1), b2 = (1 − c)(1 − λc); admissible exactly for
     /// λ ∈ [−1, 1] (b1 < 0 inside for λ < −1; b0 < 0 near s = 1 for λ > 1).

@@ -2,21 +2,26 @@
 //! divides by `d`, we prove `d ≠ 0` on the whole domain for every parameter
 //! in its declared range, open and infinite ends excluded exactly.
 //!
-//! Products of exponential atoms (`E = exp(κx)`, `exp(βp)`) never vanish.
-//! Otherwise the proof is the certifier's
+//! `d` is factored exactly first ([`Sym::factored`]) and each factor is
+//! proved nonzero on its own — so a divisor written as a definition
+//! (`D = 2α(1 − cos α)`), whose value arrives expanded, is still proved
+//! factor by factor. Products of exponential atoms (`E = exp(κx)`,
+//! `exp(βp)`) never vanish. Otherwise the proof is the certifier's
 //! ([`trig_certify::nonneg::definite_sign`]) on the standard pieces of the
 //! domain ([`trig_certify::standardize`]): Weierstrass `z = tan(θ/2)`,
 //! every parameter set mapped onto a unit coordinate,
 //! `π ∈ [314159/100000, 314160/100000]`, and exact Bernstein subdivision
-//! until `d` has one strict sign on every cell. Otherwise the file is
-//! refused with an exact witness: a rational point where `d = 0`, or two
-//! where its signs differ; or, when the subdivision cannot decide (or the
-//! divisor is not polynomial in sin, cos or the variable on a standard
-//! domain), with that said (a division we could not prove safe is never
+//! until the factor has one strict sign on every cell; or, for factors not
+//! polynomial in sin, cos or the variable on a standard domain, the
+//! engine's branch and bound ([`trig_certify::factors::nonzero`]).
+//! Otherwise the file is refused with a witness: a rational point where
+//! the factor is 0, or two where its signs differ; or, when no method
+//! decides, with that said (a division we could not prove safe is never
 //! accepted).
 
 use rug::Rational;
-use trig_certify::branch::{self, Outcome};
+use trig_certify::branch::Outcome;
+use trig_certify::factors;
 use trig_certify::nonneg::definite_sign;
 use trig_certify::{ParamBox, standardize};
 use trig_core::Domain;
@@ -32,8 +37,9 @@ fn positive_atom(v: &str) -> bool {
     v == "E" || v.starts_with("exp(")
 }
 
-/// The strict sign of `n` by interval branch and bound (functions not
-/// polynomial in sin, cos or the variable on a standard domain).
+/// The strict sign of the factor `n` of `d` by the engine's branch and
+/// bound (functions not polynomial in sin, cos or the variable on a
+/// standard domain).
 fn interval_sign(
     d: &Sym,
     n: &Sym,
@@ -48,9 +54,16 @@ fn interval_sign(
             })
         })
         .collect::<Result<Vec<_>, String>>()?;
-    let positive = |x: &Sym| branch::positive(x, domain, &axes);
-    match (positive(n), positive(&-n.clone())) {
-        (Outcome::Proved { .. }, _) | (_, Outcome::Proved { .. }) => Ok(()),
+    let failed = match factors::nonzero(n, domain, &axes) {
+        Ok(_) => return Ok(()),
+        Err(failed) => failed,
+    };
+    let part = if failed.factor == Sym::from_poly(d.numerator().clone()) {
+        String::new()
+    } else {
+        format!(" (its factor `{}`)", failed.factor)
+    };
+    match (failed.positive, failed.negative) {
         (
             Outcome::Negative {
                 x: x1, params: p1, ..
@@ -59,12 +72,15 @@ fn interval_sign(
                 x: x2, params: p2, ..
             },
         ) => Err(format!(
-            "division by `{d}`, which changes sign: it is negative at {} and positive at {} (certified enclosures)",
+            "division by `{d}`, which changes sign{part}: it is negative at {} and positive at {} (certified enclosures)",
             at(domain, x1, &p1),
             at(domain, x2, &p2)
         )),
         (Outcome::Undecided(why), _) | (_, Outcome::Undecided(why)) => Err(format!(
-            "division by `{d}`: could not prove that it does not vanish in the declared domain and range ({why}); restate the formula or narrow the range"
+            "division by `{d}`: could not prove that it{part} does not vanish in the declared domain and range ({why}); restate the formula or narrow the range"
+        )),
+        _ => Err(format!(
+            "division by `{d}`: could not prove that it{part} does not vanish in the declared domain and range; restate the formula or narrow the range"
         )),
     }
 }
@@ -106,12 +122,97 @@ pub fn check(d: &Sym, domain: &Domain, params: &[(String, ParamRange)]) -> Resul
             unknown.join(", ")
         ));
     }
+    // a product is nonzero exactly when its factors are, and each is
+    // smaller to prove (a definition `2α(1 − cos α)` is factored again)
+    for (factor, _) in &n.factored().num {
+        check_factor(d, &Sym::from_poly(factor.clone()), domain, params)?;
+    }
+    Ok(())
+}
+
+/// True when `n` is a polynomial in `y = exp(p)` alone, `p` a parameter,
+/// with no root for `y` in the image of `p`'s range (bounded or not):
+/// `(0, ∞)` maps onto `(1, ∞)`, a finite end `q ≠ 0` onto a rational
+/// bound of `exp(q)` rounded outward (a larger set, so no root there is a
+/// proof); Sturm sequences count the roots, `∞` replaced by the roots'
+/// bound.
+fn exp_polynomial_nonzero(n: &Sym, params: &[(String, ParamRange)]) -> bool {
+    use rug::Float;
+    use rug::float::Round;
+    use trig_certify::sturm::UPoly;
+    use trig_core::End;
+    let vars = n.variables();
+    let [v] = vars.iter().collect::<Vec<_>>()[..] else {
+        return false;
+    };
+    let Some((_, r)) = params.iter().find(|(name, _)| *v == format!("exp({name})")) else {
+        return false;
+    };
+    let Some(p) = UPoly::from_poly(n.numerator(), v) else {
+        return false;
+    };
+    if r.pi || p.is_zero() {
+        return false;
+    }
+    // the image of an end: (value, open); exp(0) = 1 exactly
+    let image = |q: &Rational, open: bool, up: bool| -> Option<(Rational, bool)> {
+        if *q == 0 {
+            return Some((Rational::from(1), open));
+        }
+        // exp(q) rounded outward: q rounded the same way first
+        let round = if up { Round::Up } else { Round::Down };
+        let mut x = Float::with_val_round(256, q, round).0;
+        x.exp_round(round);
+        x.to_rational().map(|v| (v, false))
+    };
+    let (lo, lo_open) = match &r.lo {
+        End::Unbounded => (Rational::new(), true),
+        End::Closed(q) => match image(q, false, false) {
+            Some(x) => x,
+            None => return false,
+        },
+        End::Open(q) => match image(q, true, false) {
+            Some(x) => x,
+            None => return false,
+        },
+    };
+    let (hi, hi_open) = match &r.hi {
+        End::Unbounded => (p.root_bound() + Rational::from(1), true),
+        End::Closed(q) => match image(q, false, true) {
+            Some(x) => x,
+            None => return false,
+        },
+        End::Open(q) => match image(q, true, true) {
+            Some(x) => x,
+            None => return false,
+        },
+    };
+    // roots in (lo, hi], then the ends
+    let inside = p.count_roots(&lo, &hi);
+    let hi_root = usize::from(p.sign_at(&hi) == 0);
+    let interior = inside - hi_root;
+    interior == 0 && (lo_open || p.sign_at(&lo) != 0) && (hi_open || p.sign_at(&hi) != 0)
+}
+
+/// `Ok` when the factor `n` of the divisor `d` cannot vanish.
+fn check_factor(
+    d: &Sym,
+    n: &Sym,
+    domain: &Domain,
+    params: &[(String, ParamRange)],
+) -> Result<(), String> {
+    if n.numerator().len() == 1 && n.variables().iter().all(|v| positive_atom(v)) {
+        return Ok(());
+    }
+    if exp_polynomial_nonzero(n, params) {
+        return Ok(());
+    }
     let pi_range = params
         .iter()
         .any(|(name, r)| r.pi && n.variables().contains(name));
-    let st = match standardize(&n, domain) {
+    let st = match standardize(n, domain) {
         Ok(st) if !pi_range => st,
-        _ => return interval_sign(d, &n, domain, params),
+        _ => return interval_sign(d, n, domain, params),
     };
     let mut sign = 0;
     for piece in &st.pieces {
@@ -161,6 +262,35 @@ mod tests {
 
     fn range(text: &str) -> ParamRange {
         ParamRange::parse(text).unwrap()
+    }
+
+    #[test]
+    fn exponential_divisors_on_half_lines() {
+        // exp(α) − 1 (the EB normaliser) and (exp α − 1)² (2 cosh α − 2 times
+        // exp α) do not vanish for α ∈ (0, ∞); exp(α) − 2 vanishes at ln 2
+        let y = Sym::var("exp(alpha)");
+        let one = Sym::one();
+        let half_line = [("alpha".to_string(), range("(0, inf)"))];
+        assert!(exp_polynomial_nonzero(&(y.clone() - &one), &half_line));
+        let sq = (y.clone() - &one) * &(y.clone() - &one);
+        assert!(exp_polynomial_nonzero(&sq, &half_line));
+        assert!(!exp_polynomial_nonzero(
+            &(y.clone() - &Sym::int(2)),
+            &half_line
+        ));
+        // closed at 0: exp(0) − 1 = 0
+        let closed = [("alpha".to_string(), range("[0, inf)"))];
+        assert!(!exp_polynomial_nonzero(&(y.clone() - &one), &closed));
+        // [1, 2]: exp α ∈ [e, e²] ∌ 2 (bounds rounded outward)
+        let bounded = [("alpha".to_string(), range("[1, 2]"))];
+        assert!(exp_polynomial_nonzero(
+            &(y.clone() - &Sym::int(2)),
+            &bounded
+        ));
+        assert!(!exp_polynomial_nonzero(
+            &(y.clone() - &Sym::int(5)),
+            &bounded
+        ));
     }
 
     #[test]

@@ -7,17 +7,18 @@
 //! exact unless the basis is undefined there).
 
 use rug::Rational;
-use trig_certify::branch::{self, Axis, Outcome};
-use trig_core::ParamRange;
-use trig_symbolic::{Poly, Sym};
+use trig_certify::branch::{Axis, Outcome};
+use trig_core::{End, ParamRange};
+use trig_symbolic::Sym;
 
+use super::analytic;
 use crate::exact::ExactBasis;
 use crate::exact::basis_of;
 use crate::status::Status;
 use crate::verdict::Verdict;
 
 /// How the interval method decides, as the report states it.
-pub const INTERVAL: &str = "certified: interval branch and bound in 128-bit MPFR with outward rounding over (variable, parameters); next to the domain's ends and the range ends by exact derivatives (≥ 0 on the face and a derivative ≥ 0 into the box); denominators proved of one strict sign first; counterexamples are boxes where the value is certified negative";
+pub const INTERVAL: &str = "certified: branch and bound over (variable, parameters) with Taylor models in 128-bit MPFR (a polynomial and a rigorous remainder) and interval arithmetic with outward rounding; products and quotients factor by factor (denominators of one strict sign); next to the domain's ends and the range ends by exact derivatives (a zero of order m on a face has the sign of the m-th derivative into the box; otherwise ≥ 0 on the face and a derivative ≥ 0 into the box); counterexamples are boxes where the value is certified negative";
 
 /// Width kept of an unbounded range (the search is then partial).
 const TRUNCATE: i64 = 64;
@@ -36,14 +37,14 @@ pub fn axes<B: ExactBasis>(basis: &B, range: Option<&ParamRange>) -> (Vec<Axis>,
                     (Some(a), None) => (
                         a.clone(),
                         a.clone() + TRUNCATE,
-                        matches!(r.lo, trig_core::End::Open(_)),
+                        matches!(r.lo, End::Open(_)),
                         false,
                     ),
                     (None, Some(b)) => (
                         b.clone() - TRUNCATE,
                         b.clone(),
                         false,
-                        matches!(r.hi, trig_core::End::Open(_)),
+                        matches!(r.hi, End::Open(_)),
                     ),
                     _ => (
                         Rational::from(-TRUNCATE),
@@ -90,37 +91,15 @@ fn describe_point<B: ExactBasis>(basis: &B, axes: &[Axis], params: &[Rational], 
     parts.join(", ")
 }
 
-/// `f ≥ 0` on the domain for the parameters in `axes`: the strict sign of
-/// each denominator factor, then the sign of the numerator.
+/// `f ≥ 0` on the domain for the parameters in `axes`, decided factor by
+/// factor by the engine ([`trig_certify::factors::nonnegative`]).
 pub fn nonnegative<B: ExactBasis>(
     basis: &B,
     name: &str,
     f: &Sym,
     axes: &[Axis],
 ) -> (Status, String) {
-    let d = &basis.domain();
-    let mut sign = 1;
-    for (factor, e) in f.denominator() {
-        let g = Sym::from_poly(factor.clone());
-        let s = match (
-            branch::positive(&g, d, axes),
-            branch::positive(&-g.clone(), d, axes),
-        ) {
-            (Outcome::Proved { .. }, _) => 1,
-            (_, Outcome::Proved { .. }) => -1,
-            _ => {
-                return (
-                    Status::NotCheckable,
-                    format!("{name} ≥ 0: the sign of its denominator factor {g} was not proved"),
-                );
-            }
-        };
-        if e % 2 == 1 {
-            sign *= s;
-        }
-    }
-    let num = Sym::from_poly(f.numerator().clone() * &Poly::int(sign));
-    match branch::nonnegative(&num, d, axes) {
+    match trig_certify::factors::nonnegative(f, &basis.domain(), axes) {
         Outcome::Proved { boxes } => (
             Status::Holds,
             format!("{name} ≥ 0: certified on the whole domain ({boxes} interval boxes)"),
@@ -150,6 +129,9 @@ pub fn all_nonnegative<B: ExactBasis>(
     axes: &[Axis],
     notes: &[String],
 ) -> Verdict {
+    if let Some(v) = on_half_line(basis, fs, axes, notes) {
+        return v;
+    }
     let mut status = Status::Holds;
     let mut evidence: Vec<String> = notes.to_vec();
     let mut done: Vec<Option<Status>> = vec![None; fs.len()];
@@ -199,6 +181,41 @@ pub fn all_nonnegative<B: ExactBasis>(
         status = Status::NotCheckable;
     }
     Verdict::new(status, INTERVAL, evidence)
+}
+
+/// How an unbounded range of an exponential basis is decided.
+const HALF_LINE: &str = "certified for every parameter of the unbounded range: on [0, p] the atoms y = exp(κx), Y = exp(κp) satisfy 1 ≤ y ≤ Y; with y = 1 + u, Y = 1 + u + v (u, v ≥ 0) every factor of odd multiplicity has coefficients of one sign in u, v (exact rational arithmetic)";
+
+/// Every function `≥ 0` for a range unbounded above (the interval engine
+/// would only search a truncation of it), by the positive-coefficient
+/// certificate of [`trig_certify::exp_half_line`]; `None` when it does not
+/// decide every function.
+fn on_half_line<B: ExactBasis>(
+    basis: &B,
+    fs: &[(String, Sym)],
+    axes: &[Axis],
+    notes: &[String],
+) -> Option<Verdict> {
+    let [axis] = axes else {
+        return None;
+    };
+    let p = basis.parameters().into_iter().next()?;
+    let unbounded_above = p.range.lo.value().is_some() && !notes.is_empty();
+    if !unbounded_above || axis.pi {
+        return None;
+    }
+    let evidence: Vec<String> = fs
+        .iter()
+        .map(|(name, f)| {
+            trig_certify::exp_half_line::nonnegative(f, &basis.domain(), &axis.lo).map(|_| {
+                format!(
+                    "{name} ≥ 0: certified for every {} in {} (positive coefficients in u, v)",
+                    p.symbol, p.range
+                )
+            })
+        })
+        .collect::<Option<_>>()?;
+    Some(Verdict::new(Status::Holds, HALF_LINE, evidence))
 }
 
 /// [`nonnegative`], remembered across the claims of one run (the battery
@@ -284,10 +301,32 @@ pub fn maximal<B: ExactBasis>(basis: &B, range: &ParamRange) -> Verdict {
     let mut evidence = inside.evidence;
     let width = Rational::from(&ax[0].hi - &ax[0].lo);
     let step = width / 64u32;
-    for (end, outward) in [(range.lo.value(), -1), (range.hi.value(), 1)] {
+    // the maximal interval by the analytic engine (bounded printed ranges)
+    let values: Vec<Sym> = fs.iter().map(|(_, f)| f.clone()).collect();
+    let found = notes
+        .is_empty()
+        .then(|| analytic::search(basis, &values, &ax[0]));
+    if let Some(r) = &found {
+        evidence.push(analytic::describe(basis, &values, &ax[0], r));
+    }
+    let ends = [
+        (range.lo.value(), -1, matches!(range.lo, End::Open(_))),
+        (range.hi.value(), 1, matches!(range.hi, End::Open(_))),
+    ];
+    for (end, outward, open) in ends {
         let Some(v) = end else {
             continue;
         };
+        let decided = found.as_ref().and_then(|r| {
+            let proved = matches!(r.inside, Outcome::Proved { .. });
+            let e = if outward < 0 { &r.lo } else { &r.hi };
+            analytic::decide_end(v, open, outward, e, proved, range.pi)
+        });
+        if let Some(d) = decided {
+            status = Status::conjunction([status, d.status]);
+            evidence.push(d.line);
+            continue;
+        }
         let shown = value_text(v, range.pi);
         if undefined_at(basis, &fs, v, range.pi) {
             evidence.push(format!(
@@ -335,7 +374,12 @@ pub fn maximal<B: ExactBasis>(basis: &B, range: &ParamRange) -> Verdict {
             }
         }
     }
-    Verdict::new(status, INTERVAL, evidence)
+    let method = if found.is_some() {
+        format!("{INTERVAL}; {}", analytic::ANALYTIC)
+    } else {
+        INTERVAL.to_string()
+    };
+    Verdict::new(status, method, evidence)
 }
 
 /// True when some denominator factor is identically zero at `p = v` (its

@@ -4,6 +4,7 @@
 //! returns a [`crate::Verdict`] with its evidence. A claim (catalog or spec
 //! file) only states what is printed and calls a judge.
 
+pub mod analytic;
 pub mod by_intervals;
 pub mod certificate;
 pub mod continuity;

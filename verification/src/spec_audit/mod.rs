@@ -22,6 +22,7 @@ use trig_specfile::{Check, Spec, SpecClaim};
 use crate::budget::{Stopped, bounded};
 use crate::judge;
 use crate::judge::endpoint::TABLE_ORDERS;
+use crate::real_witness::{RealPoints, with_real_points};
 use crate::report::{Document, Entry};
 use crate::verdict::Verdict;
 
@@ -54,6 +55,17 @@ pub fn audit(spec: &Spec) -> Vec<Entry> {
     audit_within(spec, None).entries
 }
 
+/// The real points of the basis for its witnesses: the domain and the
+/// declared parameter sets (unbounded ones truncated as for the interval
+/// engine).
+fn real_points(spec: &Spec) -> RealPoints {
+    RealPoints {
+        domain: spec.domain.clone(),
+        axes: judge::by_intervals::axes(spec, None).0,
+        symbols: spec.params.iter().map(|p| p.symbol.clone()).collect(),
+    }
+}
+
 /// A decision of the audit, run on the spec.
 type Decision<T> = Box<dyn FnOnce(&Spec) -> T + Send>;
 
@@ -74,6 +86,9 @@ pub fn audit_within(spec: &Spec, budget: Option<Duration>) -> Audit {
     let doc = document(spec);
     let shared = Arc::new(spec.clone());
     let run = |f: Decision<Verdict>| -> Option<Verdict> {
+        // every witness at a real point of the basis
+        let f: Decision<Verdict> =
+            Box::new(move |s: &Spec| with_real_points(real_points(s), || f(s)));
         match budget {
             None => Some(f(spec)),
             Some(limit) => {
@@ -104,12 +119,14 @@ pub fn audit_within(spec: &Spec, budget: Option<Duration>) -> Audit {
         .map(|f| f.name.as_str())
         .collect::<Vec<_>>()
         .join(", ");
+    let symmetry_at_real_points =
+        |s: &Spec| with_real_points(real_points(s), || judge::symmetry::battery_symmetry(s));
     let symmetry = match budget {
-        None => Some(judge::symmetry::battery_symmetry(spec)),
+        None => Some(symmetry_at_real_points(spec)),
         Some(limit) => {
             let s = Arc::clone(&shared);
             decided(
-                bounded(limit, move || judge::symmetry::battery_symmetry(s.as_ref())),
+                bounded(limit, move || symmetry_at_real_points(s.as_ref())),
                 |v| ("symmetry of the functions".into(), v),
             )
         }

@@ -300,6 +300,27 @@ pub fn prepare(
         }),
         shape,
     };
+    // the golden-section search optimises one shape parameter: say so
+    // rather than print no optimised fit
+    if runs != Runs::Fixed && selected.iter().all(|s| parameters(s).len() != 1) {
+        let why: Vec<String> = selected
+            .iter()
+            .map(|s| {
+                let symbols: Vec<String> = parameters(s)
+                    .iter()
+                    .map(|(_, sym, _)| sym.clone())
+                    .collect();
+                match symbols.len() {
+                    0 => format!("`{}` has no shape parameter", s.id()),
+                    n => format!("`{}` has {n} ({})", s.id(), symbols.join(", ")),
+                }
+            })
+            .collect();
+        return Err(CliError::Usage(format!(
+            "--optimise searches one shape parameter per segment (golden section); {}: fit with fixed values (--param NAME=VALUE) or choose a one-parameter basis",
+            why.join("; ")
+        )));
+    }
     let mut methods = Vec::new();
     for subject in selected {
         let params = parameters(&subject);

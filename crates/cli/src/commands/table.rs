@@ -59,9 +59,11 @@ pub struct TableArgs {
     /// Which end(s), or the knots of the uniform piecewise basis function.
     #[arg(long, value_enum, default_value = "both")]
     at: At,
-    /// Variable of differentiation: the angle θ, u with θ = πu/2, or a data abscissa x.
-    #[arg(long, value_enum, default_value = "angle")]
-    wrt: WrtArg,
+    /// Variable of differentiation: `angle` (θ), `u` (θ = πu/2), `x` (a data
+    /// abscissa), or the basis variable by its own name (`t` for a spec file
+    /// whose variable is `t`, with half angles too).
+    #[arg(long, default_value = "angle", value_name = "WRT")]
+    wrt: String,
     /// Output format.
     #[arg(long, value_enum, default_value = "md")]
     format: TableFormat,
@@ -103,8 +105,24 @@ impl From<WrtArg> for Wrt {
     }
 }
 
+/// The convention `--wrt` names: `angle`, `u`, `x`, or the basis
+/// variable's own name (derivatives in it, whatever angle its atoms use).
+fn wrt_of(text: &str, family: &AnyBasis) -> Result<Wrt, CliError> {
+    let name = family.domain().name;
+    match text.trim() {
+        "angle" | "theta" | "θ" => Ok(Wrt::Angle),
+        "u" => Ok(Wrt::U),
+        "x" => Ok(Wrt::X),
+        t if t == name => Ok(Wrt::Variable),
+        other => Err(CliError::Usage(format!(
+            "--wrt {other}: expected angle, u, x or the basis variable {name}"
+        ))),
+    }
+}
+
 pub fn run(args: &TableArgs) -> CmdResult {
     let family = AnyBasis::open(args.family.as_deref(), args.spec.as_deref())?;
+    let wrt = wrt_of(&args.wrt, &family)?;
     let id = family.id();
     if args.order > MAX_ORDER {
         return Err(CoreError::Limit {
@@ -145,25 +163,25 @@ pub fn run(args: &TableArgs) -> CmdResult {
         cost::check_table(&what, &functions, args.order, args.rational)?;
     }
     let (blocks, mode) = if args.numeric {
-        numeric(args, &family)?
+        numeric(args, &family, wrt)?
     } else {
-        (exact(args, &family)?, "exact".to_string())
+        (exact(args, &family, wrt)?, "exact".to_string())
     };
     let heading = format!(
         "{id} ({}): derivatives {}, {mode}",
         family.citation(),
-        Wrt::from(args.wrt).describe_on(&family.domain())
+        wrt.describe_on(&family.domain())
     );
     render_blocks(&heading, &blocks, args.format)
 }
 
 /// The exact table: parameters (and `h`) as symbols, π symbolic; curve
 /// tables as combinations of the control points `P0, P1, …`.
-fn exact(args: &TableArgs, family: &AnyBasis) -> Result<Vec<Block>, CliError> {
+fn exact(args: &TableArgs, family: &AnyBasis, wrt: Wrt) -> Result<Vec<Block>, CliError> {
     let params: Vec<Sym> = family.param_names().iter().map(|p| Sym::var(p)).collect();
     // the length, points and weights read like none of the basis's names
     let mut namespace = names_of(family);
-    let h = if Wrt::from(args.wrt) == Wrt::X {
+    let h = if wrt == Wrt::X {
         namespace.length()
     } else {
         Sym::one()
@@ -172,25 +190,31 @@ fn exact(args: &TableArgs, family: &AnyBasis) -> Result<Vec<Block>, CliError> {
     let [points, _] = namespace.points(n);
     let names: Vec<String> = points.iter().map(ToString::to_string).collect();
     let weights = namespace.weights(n);
-    Ok(build(args, family, &params, &h, Some((&points, &weights)))
-        .map_err(|e| CliError::Usage(e.to_string()))?
-        .into_iter()
-        .map(|b| {
-            b.map(|v| {
-                if args.curve {
-                    v.combination(&names)
-                } else {
-                    Rendered::of(&v)
-                }
+    Ok(
+        build(args, family, wrt, &params, &h, Some((&points, &weights)))
+            .map_err(|e| CliError::Usage(e.to_string()))?
+            .into_iter()
+            .map(|b| {
+                b.map(|v| {
+                    if args.curve {
+                        v.combination(&names)
+                    } else {
+                        Rendered::of(&v)
+                    }
+                })
             })
-        })
-        .collect())
+            .collect(),
+    )
 }
 
 /// The numeric table at exact parameter values: f64 with a certified
 /// error bound (entries f64 gets wrong replaced by certified values), or
 /// the proved digits of interval jets (`--prec`, `--digits`).
-fn numeric(args: &TableArgs, family: &AnyBasis) -> Result<(Vec<Block>, String), CliError> {
+fn numeric(
+    args: &TableArgs,
+    family: &AnyBasis,
+    wrt: Wrt,
+) -> Result<(Vec<Block>, String), CliError> {
     let pairs = param_pairs(&args.params)?;
     let p = family
         .params_from_pairs(&pairs, args.allow_outside_range)
@@ -209,6 +233,7 @@ fn numeric(args: &TableArgs, family: &AnyBasis) -> Result<(Vec<Block>, String), 
         let blocks = build(
             args,
             family,
+            wrt,
             &p.iter().map(mk).collect::<Vec<_>>(),
             &mk(&h),
             None,
@@ -233,6 +258,7 @@ fn numeric(args: &TableArgs, family: &AnyBasis) -> Result<(Vec<Block>, String), 
             let floats = build(
                 args,
                 family,
+                wrt,
                 &p.iter().map(Rational::to_f64).collect::<Vec<_>>(),
                 &h.to_f64(),
                 None,
@@ -314,6 +340,7 @@ type CurveData<'a, T> = Option<(&'a [T], &'a [T])>;
 fn build<T: Ring>(
     args: &TableArgs,
     family: &AnyBasis,
+    wrt: Wrt,
     params: &[T],
     h: &T,
     curve: CurveData<'_, T>,
@@ -321,7 +348,7 @@ fn build<T: Ring>(
     macro_rules! with_order {
         ($($n:literal),*) => {
             match args.order {
-                $($n => blocks::<T, { $n + 1 }>(args, family, params, h, curve),)*
+                $($n => blocks::<T, { $n + 1 }>(args, family, wrt, params, h, curve),)*
                 _ => unreachable!("order checked against MAX_ORDER"),
             }
         };
@@ -332,11 +359,11 @@ fn build<T: Ring>(
 fn blocks<T: Ring, const K: usize>(
     args: &TableArgs,
     family: &AnyBasis,
+    wrt: Wrt,
     params: &[T],
     h: &T,
     curve: CurveData<'_, T>,
 ) -> Result<Vec<Block<T>>, VanishingDenominator> {
-    let wrt = Wrt::from(args.wrt);
     let orders = || (0..K).map(|k| k.to_string());
     if args.at == At::Knots {
         let knots = knot_derivatives::<T, K>(family, params, wrt, h);

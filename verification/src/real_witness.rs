@@ -1,0 +1,245 @@
+//! Witnesses at real points for spec bases.
+//!
+//! The generic witness search ([`crate::witness`]) gives every variable its
+//! own small rational. For a spec basis the variables are not independent:
+//! `sin(α)`, `cos(α)`, `α`, and `t`, `s = sin t`, `c = cos t` are functions
+//! of one point, and a witness at `α = 1, cos(alpha) = 0` is no point at
+//! all. While a decision about a spec basis runs ([`with_real_points`]), a
+//! witness of an expression in the domain's atoms is chosen as a real point
+//! — the parameters in their declared sets and `x` in the domain, as exact
+//! reals — and re-evaluated there ([`trig_certify::real_point::differ`]):
+//! exactly when the atoms are exact there (angles at multiples of π/12),
+//! else by disjoint certified enclosures. Other symbols (control points)
+//! keep small rational values.
+
+use std::cell::RefCell;
+use std::collections::BTreeSet;
+use std::rc::Rc;
+
+use rug::Rational;
+use trig_certify::algebraic::decimal;
+use trig_certify::atoms::param_atoms;
+use trig_certify::branch::Axis;
+use trig_certify::real_point::{Difference, RealValue, differ};
+use trig_core::Domain;
+use trig_symbolic::Sym;
+
+use crate::evidence::{Assignment, Expr, Value, Witness};
+
+/// Decimal places of an enclosed value as printed.
+const DIGITS: usize = 15;
+
+/// The real points of a spec basis: its domain, one set per parameter,
+/// the parameters' printed symbols.
+#[derive(Debug, Clone)]
+pub struct RealPoints {
+    pub domain: Domain,
+    pub axes: Vec<Axis>,
+    pub symbols: Vec<String>,
+}
+
+thread_local! {
+    static CURRENT: RefCell<Option<Rc<RealPoints>>> = const { RefCell::new(None) };
+}
+
+/// Runs `f` with witnesses taken at real points of `points` (on this
+/// thread; the previous setting is restored afterwards).
+pub fn with_real_points<T>(points: RealPoints, f: impl FnOnce() -> T) -> T {
+    let previous = CURRENT.with(|c| c.replace(Some(Rc::new(points))));
+    let out = f();
+    CURRENT.with(|c| *c.borrow_mut() = previous);
+    out
+}
+
+/// The current real points, if a spec decision runs.
+fn current() -> Option<Rc<RealPoints>> {
+    CURRENT.with(|c| c.borrow().clone())
+}
+
+/// The names that are functions of the point: the variable's atoms, the
+/// parameters and their atoms.
+fn point_names(points: &RealPoints) -> BTreeSet<String> {
+    let mut names: BTreeSet<String> = ["s", "c", "t", "E"].iter().map(|s| s.to_string()).collect();
+    names.extend(points.domain.param_names.iter().cloned());
+    names.extend(param_atoms(&points.domain).into_iter().map(|a| a.name));
+    names
+}
+
+/// Values tried for the other symbols (control points): attempt `k`.
+fn others_at(names: &[String], k: usize) -> Vec<(String, Rational)> {
+    const SMALL: [i64; 12] = [1, 2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31];
+    names
+        .iter()
+        .enumerate()
+        .map(|(i, n)| (n.clone(), Rational::from(SMALL[(i + k) % SMALL.len()])))
+        .collect()
+}
+
+/// A witness that `left ≠ right` at a real point, when a spec decision runs
+/// and the expressions involve the point; `None` otherwise (the caller then
+/// uses the generic search, which is right for expressions without atoms).
+pub fn find(left: &Sym, right: &Sym, labels: (&str, &str)) -> Option<Option<Witness>> {
+    let points = current()?;
+    let atoms = point_names(&points);
+    let names: BTreeSet<String> = left
+        .variables()
+        .into_iter()
+        .chain(right.variables())
+        .filter(|n| n != "pi" && !n.starts_with("sqrt("))
+        .collect();
+    if !names.iter().any(|n| atoms.contains(n)) {
+        return None;
+    }
+    let others: Vec<String> = names
+        .iter()
+        .filter(|n| !atoms.contains(*n))
+        .cloned()
+        .collect();
+    let uses_x = names
+        .iter()
+        .any(|n| ["s", "c", "t", "E"].contains(&n.as_str()));
+    for k in 0..3 {
+        let fixed = others_at(&others, k);
+        let set = |x: &Sym| {
+            fixed.iter().fold(x.clone(), |acc, (n, q)| {
+                acc.subs(n, &Sym::rational(q.clone()))
+            })
+        };
+        if let Some(d) = differ(&set(left), &set(right), &points.domain, &points.axes) {
+            return Some(Some(witness(&points, &fixed, uses_x, &d, labels)));
+        }
+    }
+    // no real point found where the two sides differ: no witness (the
+    // residual is printed without one)
+    Some(None)
+}
+
+fn witness(
+    points: &RealPoints,
+    fixed: &[(String, Rational)],
+    uses_x: bool,
+    d: &Difference,
+    labels: (&str, &str),
+) -> Witness {
+    let mut point: Vec<Assignment> = points
+        .symbols
+        .iter()
+        .zip(&d.params)
+        .map(|(symbol, v)| assignment(symbol, v))
+        .collect();
+    if uses_x {
+        point.push(assignment(&points.domain.name, &d.x));
+    }
+    point.extend(
+        fixed
+            .iter()
+            .map(|(n, q)| assignment(&Sym::var(n).to_unicode(), &Sym::rational(q.clone()))),
+    );
+    let exact = matches!(d.left, RealValue::Exact(_)) && matches!(d.right, RealValue::Exact(_));
+    let value = |v: &RealValue| match v {
+        RealValue::Exact(x) => Expr::new(x),
+        RealValue::Enclosure(i) => {
+            // rounded outward: every printed digit is certified
+            let end = |f: &rug::Float, up: bool| {
+                f.to_rational()
+                    .map_or_else(|| f.to_string(), |q| decimal(&q, DIGITS, up))
+            };
+            Expr::numeric(&format!("[{}, {}]", end(i.lo(), false), end(i.hi(), true)))
+        }
+    };
+    Witness {
+        point,
+        note: Some(if exact {
+            "a real point: every atom computed from it, values exact".into()
+        } else {
+            "a real point: every atom computed from it, values enclosed in 128-bit MPFR with outward rounding (disjoint)".into()
+        }),
+        values: vec![
+            Value {
+                label: labels.0.to_string(),
+                value: value(&d.left),
+            },
+            Value {
+                label: labels.1.to_string(),
+                value: value(&d.right),
+            },
+        ],
+        exact,
+    }
+}
+
+fn assignment(name: &str, v: &Sym) -> Assignment {
+    Assignment {
+        name: name.to_string(),
+        value: v.to_unicode(),
+        latex: format!("{} = {}", name, v.to_latex()),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use trig_core::Affine;
+
+    fn q(a: i64, b: i64) -> Rational {
+        Rational::from((a, b))
+    }
+
+    /// `t ∈ [0, α]`, `α ∈ (0, π)`, with `sin t`, `cos t`, `sin α`, `cos α`.
+    fn c_curve() -> RealPoints {
+        RealPoints {
+            domain: Domain {
+                name: "t".into(),
+                param_names: vec!["alpha".into()],
+                start: Affine::default(),
+                end: Affine::param(0),
+                angle: Some(Affine::rational(q(1, 1))),
+                uses_variable: true,
+                exp: None,
+                param_angles: vec![(0, q(1, 1))],
+                param_exps: Vec::new(),
+            },
+            axes: vec![Axis {
+                lo: q(0, 1),
+                hi: q(1, 1),
+                lo_open: true,
+                hi_open: true,
+                pi: true,
+            }],
+            symbols: vec!["α".into()],
+        }
+    }
+
+    #[test]
+    fn a_jump_in_cos_alpha_is_witnessed_at_a_real_alpha() {
+        // the C-B-spline's third-derivative jump α²(cos α + 1)/(cos α − 1):
+        // the generic search printed `α = 1, cos(alpha) = 0`, no point at all
+        let (a, ca) = (Sym::var("alpha"), Sym::var("cos(alpha)"));
+        let jump = a.clone() * &a * &(ca.clone() + &Sym::one()) / &(ca - &Sym::one());
+        let w = with_real_points(c_curve(), || {
+            crate::witness::find(&jump, &Sym::zero(), ("jump", "0"))
+        })
+        .expect("a witness");
+        let names: Vec<&str> = w.point.iter().map(|p| p.name.as_str()).collect();
+        assert_eq!(names, ["α"]);
+        assert!(w.exact);
+        // α = π/2: cos α = 0, the jump is −π²/4
+        assert_eq!(w.values[0].value.best_unicode(), "−π²/4");
+        // outside a spec decision the generic search is unchanged
+        let generic = crate::witness::find(&jump, &Sym::zero(), ("jump", "0")).expect("generic");
+        assert!(generic.point.iter().any(|p| p.name.contains("cos")));
+    }
+
+    #[test]
+    fn control_points_keep_rational_values_beside_a_real_point() {
+        // (sin t − t)·P1 against 0 on [0, α]: a real t, P1 rational
+        let (s, t, p1) = (Sym::var("s"), Sym::var("t"), Sym::var("P1"));
+        let x = (s - &t) * &p1;
+        let w = with_real_points(c_curve(), || {
+            crate::witness::find(&x, &Sym::zero(), ("left", "right"))
+        })
+        .expect("a witness");
+        let names: Vec<&str> = w.point.iter().map(|p| p.name.as_str()).collect();
+        assert_eq!(names, ["α", "t", "P₁"]);
+    }
+}
