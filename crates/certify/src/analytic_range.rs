@@ -549,34 +549,16 @@ fn refine(problem: &Problem<'_>, mut ok: Rational, mut w: Witness, dir: i32) -> 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::testing::{q, zero_to_pi};
     use crate::transcendental::Equation;
     use trig_core::Affine;
-
-    fn q(a: i64, b: i64) -> Rational {
-        Rational::from((a, b))
-    }
-
-    /// `t ∈ [0, π]`, `s, c = sin t, cos t`, a parameter `lambda`.
-    fn on_zero_pi() -> Domain {
-        Domain {
-            name: "t".into(),
-            param_names: vec!["lambda".into()],
-            start: Affine::default(),
-            end: Affine::pi_times(q(1, 1)),
-            angle: Some(Affine::rational(q(1, 1))),
-            uses_variable: true,
-            exp: None,
-            param_angles: Vec::new(),
-            param_exps: Vec::new(),
-        }
-    }
 
     #[test]
     fn an_end_at_a_tangency_is_certified_and_an_exact_end_is_exact() {
         // b0 = 1 − λ t sin t, b1 = λ t sin t on [0, π]: admissible exactly
         // for λ ∈ [0, 1/M], M = max t sin t = t* sin t*, tan t* = −t*
         // (examples/independent/transcendental-end.py: 1/M = 0.5495393…)
-        let d = on_zero_pi();
+        let d = zero_to_pi();
         let g = Sym::var("lambda") * &Sym::var("t") * &Sym::var("s");
         let fs = [Sym::one() - &g, g];
         let p = Problem::new(&fs, &d, false);

@@ -255,10 +255,7 @@ pub fn sqrt(x: &TaylorModel) -> TaylorModel {
 mod tests {
     use super::*;
     use crate::taylor::Space;
-
-    fn q(a: i64, b: i64) -> Rational {
-        Rational::from((a, b))
-    }
+    use crate::testing::q;
 
     /// The model's range contains `f` at a grid of points of `[lo, hi]`.
     fn encloses(m: &TaylorModel, lo: f64, hi: f64, f: impl Fn(f64) -> f64) -> f64 {

@@ -208,11 +208,8 @@ pub fn enclose(
 mod tests {
     use super::*;
     use crate::atoms::param_atoms;
+    use crate::testing::q;
     use trig_core::Affine;
-
-    fn q(a: i64, b: i64) -> Rational {
-        Rational::from((a, b))
-    }
 
     fn c_curve() -> Domain {
         Domain {

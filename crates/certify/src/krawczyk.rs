@@ -263,33 +263,15 @@ fn inverse(j: &[Vec<Float>]) -> Option<Vec<Vec<Float>>> {
 mod tests {
     use super::*;
     use crate::coordinates::Axis;
-    use trig_core::{Affine, Domain};
+    use crate::testing::{q, zero_to_pi};
+
     use trig_symbolic::Sym;
-
-    fn q(a: i64, b: i64) -> Rational {
-        Rational::from((a, b))
-    }
-
-    /// `t ∈ [0, π]` with `s, c = sin t, cos t` and a parameter `lambda`.
-    fn fixed() -> Domain {
-        Domain {
-            name: "t".into(),
-            param_names: vec!["lambda".into()],
-            start: Affine::default(),
-            end: Affine::pi_times(q(1, 1)),
-            angle: Some(Affine::rational(q(1, 1))),
-            uses_variable: true,
-            exp: None,
-            param_angles: Vec::new(),
-            param_exps: Vec::new(),
-        }
-    }
 
     #[test]
     fn tangency_of_one_minus_lambda_t_sin_t() {
         // 1 − λ t sin t touches 0 where tan t = −t, λ = 1/(t sin t):
         // t* = 2.028757838110434…, λ* = 0.549539…
-        let d = fixed();
+        let d = zero_to_pi();
         let axes = vec![Axis {
             lo: q(1, 2),
             hi: q(3, 5),
@@ -323,7 +305,7 @@ mod tests {
 
     #[test]
     fn a_box_without_a_zero_is_not_certified() {
-        let d = fixed();
+        let d = zero_to_pi();
         let axes = vec![Axis {
             lo: q(1, 2),
             hi: q(3, 5),

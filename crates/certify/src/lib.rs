@@ -43,3 +43,6 @@ pub mod transcendental;
 
 pub use domain::{Bound, ParamBox, describe_z, in_z};
 pub use standard::{Standard, standardize};
+
+#[cfg(test)]
+mod testing;

@@ -215,10 +215,7 @@ pub fn differ(left: &Sym, right: &Sym, domain: &Domain, axes: &[Axis]) -> Option
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    fn q(a: i64, b: i64) -> Rational {
-        Rational::from((a, b))
-    }
+    use crate::testing::q;
 
     /// `t ∈ [0, α]` with `E = exp(t)`, `exp(α)`.
     fn exponential() -> Domain {

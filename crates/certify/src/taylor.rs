@@ -627,11 +627,8 @@ impl Ring for TaylorModel {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::testing::q;
     use trig_core::Real;
-
-    fn q(a: i64, b: i64) -> Rational {
-        Rational::from((a, b))
-    }
 
     fn range(m: &TaylorModel) -> (f64, f64) {
         let r = m.range().expect("an enclosure");
