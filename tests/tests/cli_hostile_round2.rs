@@ -8,6 +8,7 @@ use std::process::{Command, Output, Stdio};
 use std::time::{Duration, Instant};
 
 use trig_e2e::{binary, error_line, stdout_ok};
+use trig_specfile::{Expression, Grammar};
 use trig_symbolic::Sym;
 
 /// A scratch file for this test process.
@@ -59,6 +60,95 @@ fn item3_the_square_root_of_zero_is_a_value_not_a_hang() {
     assert!(out.status.success(), "{text}");
     assert!(text.contains("b0 = 7.5e-1"), "{text}");
     assert!(text.contains("b1 = 2.5e-1"), "{text}");
+}
+
+/// The long campaign's hang: a C² join of four cubic Bernstein numerators
+/// over `1 + a₁t + … + a₈t⁸` ran for minutes (the exact gcd behind lowest
+/// terms, in eight variables). The forced points are checked against the
+/// triangular system solved here by differentiating the formulas directly:
+/// `Q⁽ʲ⁾(0) = Σᵢ bᵢ⁽ʲ⁾(0)Qᵢ = P⁽ʲ⁾(1)`, `j = 0, 1, 2`.
+#[test]
+fn a_c2_join_of_an_eight_parameter_quotient_ends_with_the_true_points() {
+    let params: Vec<String> = (1..=8).map(|k| format!("a{k}")).collect();
+    let mut text =
+        String::from("id = \"quotient\"\ncitation = \"fuzz\"\nvariable = \"polynomial\"\n");
+    for p in &params {
+        text.push_str(&format!(
+            "[[parameters]]\nname = \"{p}\"\nrange = \"[0, 1]\"\n"
+        ));
+    }
+    let t = v("t");
+    let den = params.iter().enumerate().fold(Sym::one(), |acc, (k, p)| {
+        acc + &(v(p) * &power(&t, k as i32 + 1))
+    });
+    let numerators = ["(1 - t)^3", "3*t*(1 - t)^2", "3*t^2*(1 - t)", "t^3"];
+    let one_minus = Sym::one() - &t;
+    let polys = [
+        power(&one_minus, 3),
+        Sym::int(3) * &t * &power(&one_minus, 2),
+        Sym::int(3) * &power(&t, 2) * &one_minus,
+        power(&t, 3),
+    ];
+    let d: String = params
+        .iter()
+        .enumerate()
+        .map(|(k, p)| format!(" + {p}*t^{}", k + 1))
+        .collect();
+    for (i, n) in numerators.iter().enumerate() {
+        text.push_str(&format!(
+            "[[functions]]\nname = \"b{i}\"\nformula = \"{n}/(1{d})\"\n"
+        ));
+    }
+    let path = scratch("quotient8.toml", &text);
+    let out = run_within(
+        &[
+            "join", "--spec", &path, "--kind", "c2", "--wrt", "u", "--format", "json",
+        ],
+        Duration::from_secs(60),
+    )
+    .expect("the C² join finishes");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let out: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON output");
+    // jets of the basis at both ends, by the exact ring's own derivative
+    let basis: Vec<Sym> = polys.iter().map(|n| n.clone() / &den).collect();
+    let jet = |j: usize, at: i64| -> Vec<Sym> {
+        basis
+            .iter()
+            .map(|b| {
+                (0..j)
+                    .fold(b.clone(), |f, _| f.diff("t"))
+                    .subs("t", &Sym::int(at))
+            })
+            .collect()
+    };
+    let points: Vec<String> = (0..4).map(|i| format!("P{i}")).collect();
+    let p: Vec<Sym> = points.iter().map(|name| v(name)).collect();
+    let mut q: Vec<Sym> = Vec::new();
+    for j in 0..3 {
+        let (left, right) = (jet(j, 1), jet(j, 0));
+        let target = left
+            .iter()
+            .zip(&p)
+            .fold(Sym::zero(), |acc, (b, pi)| acc + &(b.clone() * pi));
+        let known = right
+            .iter()
+            .zip(&q)
+            .fold(Sym::zero(), |acc, (b, qi)| acc + &(b.clone() * qi));
+        q.push((target - &known) / &right[j]);
+    }
+    for (j, truth) in q.iter().enumerate() {
+        assert_eq!(out["forced"][j]["point"], format!("Q{j}"));
+        let printed = out["forced"][j]["formula"].as_str().expect("formula");
+        let names: Vec<&str> = params.iter().chain(&points).map(String::as_str).collect();
+        let printed = Expression::parse(printed, Grammar::Spec, &names)
+            .and_then(|e| e.to_sym())
+            .expect("the printed formula reads");
+        assert_eq!(&printed, truth, "Q{j}");
+    }
 }
 
 /// Item 4: a rational curve table where every function vanishes at an end
@@ -170,6 +260,10 @@ fn shaped_cubic(file: &str, param: &str, other: &str, claims: &str) -> String {
              [[functions]]\nname = \"b3\"\nformula = \"t^3 + {param}*t^2*(1 - t)\"\n{claims}"
         ),
     )
+}
+
+fn power(x: &Sym, n: i32) -> Sym {
+    (0..n).fold(Sym::one(), |acc, _| acc * x)
 }
 
 fn v(name: &str) -> Sym {
