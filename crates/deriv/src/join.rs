@@ -24,7 +24,7 @@ use std::str::FromStr;
 use trig_core::{Basis, Family, Ring};
 use trig_symbolic::Sym;
 
-use crate::table::{End, Wrt, curve_endpoint_derivatives};
+use crate::table::{End, Wrt, endpoint_derivatives};
 
 /// Orders `0…3` of every derivative a join can involve.
 const ORDERS: usize = 4;
@@ -152,29 +152,72 @@ pub struct JoinSetup<'a, B: Basis = Family> {
     pub factors: [Sym; 2],
 }
 
+/// The derivatives of orders `0…3` of every function of a setup's basis at
+/// the end of the first segment and at the start of the second, in the
+/// setup's convention: what every residual of one setup shares, whatever
+/// the control points ([`JoinSetup::end_derivatives`]).
+#[derive(Debug, Clone)]
+pub struct EndDerivatives {
+    /// `bᵢ⁽ʲ⁾(end; p₁)`, indexed `[i][j]`.
+    first: Vec<Vec<Sym>>,
+    /// `bᵢ⁽ʲ⁾(start; p₂)`, indexed `[i][j]`.
+    second: Vec<Vec<Sym>>,
+}
+
 impl<B: Basis> JoinSetup<'_, B> {
+    /// The basis's derivatives at the join ([`EndDerivatives`]).
+    pub fn end_derivatives(&self) -> EndDerivatives {
+        let at = |params: &[Sym], end: End, h: &Sym| {
+            endpoint_derivatives::<Sym, ORDERS>(&self.basis, params, end, self.wrt, h)
+        };
+        EndDerivatives {
+            first: at(self.first_params, End::End, &self.h.0),
+            second: at(self.second_params, End::Start, &self.h.1),
+        }
+    }
+
     /// `Q₂⁽ʲ⁾(0) − target_j(Q₁)` for `j = 0…order`, for the given control
     /// points (symbols, numbers or printed formulas): all zero exactly when
     /// the join holds.
     pub fn residuals(&self, kind: JoinKind, first: &[Sym], second: &[Sym]) -> Vec<Sym> {
-        let q1 = self.derivatives(self.first_params, first, End::End, &self.h.0);
-        let q2 = self.derivatives(self.second_params, second, End::Start, &self.h.1);
+        self.residuals_with(&self.end_derivatives(), kind, first, second)
+    }
+
+    /// [`JoinSetup::residuals`] from derivatives computed once
+    /// ([`JoinSetup::end_derivatives`] of this setup).
+    pub fn residuals_with(
+        &self,
+        ends: &EndDerivatives,
+        kind: JoinKind,
+        first: &[Sym],
+        second: &[Sym],
+    ) -> Vec<Sym> {
+        let q1 = curve(&ends.first, first);
+        let q2 = curve(&ends.second, second);
         (0..=kind.order())
             .map(|j| q2[j].clone() - &kind.target(j, &q1, &self.factors))
             .collect()
     }
+}
 
-    fn derivatives(&self, params: &[Sym], points: &[Sym], end: End, h: &Sym) -> Vec<Sym> {
-        curve_endpoint_derivatives::<Sym, ORDERS>(
-            &self.basis,
-            params,
-            points,
-            None,
-            end,
-            self.wrt,
-            h,
-        )
-    }
+/// `(Σ bᵢ Pᵢ)⁽ʲ⁾ = Σ bᵢ⁽ʲ⁾ Pᵢ` for `j = 0…3`.
+///
+/// # Panics
+/// If there is not one point per function.
+fn curve(functions: &[Vec<Sym>], points: &[Sym]) -> Vec<Sym> {
+    assert_eq!(
+        functions.len(),
+        points.len(),
+        "one control point per function"
+    );
+    (0..ORDERS)
+        .map(|j| {
+            functions
+                .iter()
+                .zip(points)
+                .fold(Sym::zero(), |acc, (b, p)| acc + &(b[j].clone() * p))
+        })
+        .collect()
 }
 
 /// One control point of the second segment forced by the join.
@@ -232,6 +275,19 @@ pub fn solve_join_for<B: Basis>(
     second: &[Sym],
     prefer: &[usize],
 ) -> Result<Join, JoinError> {
+    solve_join_with(setup, &setup.end_derivatives(), kind, first, second, prefer)
+}
+
+/// [`solve_join_for`] from derivatives computed once
+/// ([`JoinSetup::end_derivatives`] of `setup`).
+pub fn solve_join_with<B: Basis>(
+    setup: &JoinSetup<'_, B>,
+    ends: &EndDerivatives,
+    kind: JoinKind,
+    first: &[Sym],
+    second: &[Sym],
+    prefer: &[usize],
+) -> Result<Join, JoinError> {
     let needed = kind.order() + 1;
     if second.len() < needed {
         return Err(JoinError::TooFewPoints {
@@ -242,7 +298,11 @@ pub fn solve_join_for<B: Basis>(
     }
     let names: Vec<String> = second.iter().map(|q| q.to_string()).collect();
     let mut forced: Vec<Forced> = Vec::new();
-    for (order, residual) in setup.residuals(kind, first, second).into_iter().enumerate() {
+    for (order, residual) in setup
+        .residuals_with(ends, kind, first, second)
+        .into_iter()
+        .enumerate()
+    {
         let reduced = forced
             .iter()
             .fold(residual, |r, f| r.subs(&names[f.index], &f.value));
@@ -319,6 +379,32 @@ mod tests {
             wrt,
             h: (Sym::var("h1"), Sym::var("h2")),
             factors: default_factors(),
+        }
+    }
+
+    /// The shared end derivatives give the curve derivatives of
+    /// [`curve_endpoint_derivatives`] (`Σ bᵢ⁽ʲ⁾Pᵢ` against `(Σ bᵢPᵢ)⁽ʲ⁾`).
+    #[test]
+    fn end_derivatives_give_the_curve_derivatives() {
+        let (p, q) = (pts("P", 4), pts("Q", 4));
+        let (m1, m2) = ([Sym::var("m1")], [Sym::var("m2")]);
+        for wrt in [Wrt::Angle, Wrt::U, Wrt::X] {
+            let s = setup(Family::ThesisCubic, &m1, &m2, wrt);
+            let curve = |params: &[Sym], points: &[Sym], end: End, h: &Sym| {
+                crate::table::curve_endpoint_derivatives::<Sym, ORDERS>(
+                    Family::ThesisCubic,
+                    params,
+                    points,
+                    None,
+                    end,
+                    wrt,
+                    h,
+                )
+            };
+            let q1 = curve(&m1, &p, End::End, &s.h.0);
+            let q2 = curve(&m2, &q, End::Start, &s.h.1);
+            let expected: Vec<Sym> = (0..4).map(|j| q2[j].clone() - &q1[j]).collect();
+            assert_eq!(s.residuals(JoinKind::C(3), &p, &q), expected, "{wrt:?}");
         }
     }
 

@@ -9,8 +9,8 @@ pub mod join;
 
 pub use jet::{Jet, angle_atoms, family_derivatives};
 pub use join::{
-    Forced, Join, JoinError, JoinKind, JoinSetup, default_factors, factor_names, solve_join,
-    solve_join_for, vanishing,
+    EndDerivatives, Forced, Join, JoinError, JoinKind, JoinSetup, default_factors, factor_names,
+    solve_join, solve_join_for, solve_join_with, vanishing,
 };
 pub mod table;
 

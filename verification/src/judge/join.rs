@@ -26,7 +26,10 @@
 //! residual, in the printed names).
 
 use trig_core::{Domain, Variable};
-use trig_deriv::{JoinKind, JoinSetup, Wrt, rate, solve_join, solve_join_for, vanishing};
+use trig_deriv::{
+    EndDerivatives, JoinKind, JoinSetup, Wrt, rate, solve_join, solve_join_for, solve_join_with,
+    vanishing,
+};
 use trig_symbolic::Sym;
 
 use crate::evidence::{Evidence, Expr, Kind};
@@ -112,6 +115,19 @@ pub struct PrintedJoin<B> {
     pub notes: Vec<String>,
 }
 
+/// [`EndDerivatives`] of one join in each of its conventions.
+struct Ends(Vec<(Wrt, EndDerivatives)>);
+
+impl Ends {
+    fn of(&self, wrt: Wrt) -> &EndDerivatives {
+        self.0
+            .iter()
+            .find(|(w, _)| *w == wrt)
+            .map(|(_, d)| d)
+            .expect("the derivatives of every convention the join is decided in")
+    }
+}
+
 /// The distinct derivative conventions of `basis`, `printed` first: the
 /// angle, `u`, the data abscissa `x` and the basis variable, each kept
 /// when its rate differs from every earlier one's.
@@ -195,14 +211,30 @@ impl<B: ExactBasis + Clone> PrintedJoin<B> {
             .collect()
     }
 
+    /// The basis's derivatives at the join in every convention, computed
+    /// once for a decision (they do not depend on the control points).
+    fn ends(&self) -> Ends {
+        Ends(
+            self.conventions
+                .iter()
+                .map(|w| (*w, self.setup(*w).end_derivatives()))
+                .collect(),
+        )
+    }
+
     /// The second segment's points: printed formulas where printed, derived
     /// values for the other forced points, symbols for the free ones.
     fn second_points(&self, wrt: Wrt, printed: &[Printed]) -> Vec<Sym> {
+        self.second_points_with(&self.setup(wrt).end_derivatives(), wrt, printed)
+    }
+
+    fn second_points_with(&self, ends: &EndDerivatives, wrt: Wrt, printed: &[Printed]) -> Vec<Sym> {
         let setup = self.setup(wrt);
-        let mut points = match solve_join(&setup, self.kind, &self.first, &self.second) {
-            Ok(join) => join.second_points(&self.second),
-            Err(_) => self.second.clone(),
-        };
+        let mut points =
+            match solve_join_with(&setup, ends, self.kind, &self.first, &self.second, &[]) {
+                Ok(join) => join.second_points(&self.second),
+                Err(_) => self.second.clone(),
+            };
         for p in printed {
             points[p.point] = p.value();
         }
@@ -218,8 +250,19 @@ impl<B: ExactBasis + Clone> PrintedJoin<B> {
 
     /// The residuals (orders `0…k`) of the printed formulas in `wrt`.
     fn residuals(&self, wrt: Wrt, printed: &[Printed]) -> Vec<Sym> {
+        self.residuals_in(
+            &Ends(vec![(wrt, self.setup(wrt).end_derivatives())]),
+            wrt,
+            printed,
+        )
+    }
+
+    /// [`PrintedJoin::residuals`] with the derivatives of [`PrintedJoin::ends`].
+    fn residuals_in(&self, ends: &Ends, wrt: Wrt, printed: &[Printed]) -> Vec<Sym> {
+        let ends = ends.of(wrt);
+        let second = self.second_points_with(ends, wrt, printed);
         self.setup(wrt)
-            .residuals(self.kind, &self.first, &self.second_points(wrt, printed))
+            .residuals_with(ends, self.kind, &self.first, &second)
     }
 
     /// The derived formulas for the printed points, in `wrt` — for every
@@ -392,10 +435,14 @@ pub fn holds_as_printed<B: ExactBasis + Clone>(join: &PrintedJoin<B>) -> bool {
 
 /// Decides a printed curve join.
 pub fn audit<B: ExactBasis + Clone>(join: &PrintedJoin<B>) -> Verdict {
-    decide(join, |wrt, printed| {
-        let r = join.residuals(wrt, printed);
-        (r.clone(), r)
-    })
+    let ends = join.ends();
+    decide(
+        join,
+        &Residuals {
+            shown: &|wrt, printed| join.residuals_in(&ends, wrt, printed),
+            surface: None,
+        },
+    )
 }
 
 /// Decides a printed surface join across the boundary `v = 1 | v = 0` of two
@@ -409,14 +456,16 @@ pub fn audit_surface<B: ExactBasis + Clone>(join: &PrintedJoin<B>, u_param: &Sym
         .iter()
         .map(|f| f.subs(&params[0], u_param))
         .collect();
-    decide(join, |wrt, printed| {
+    // the columns share the basis, its parameters and conventions
+    let ends = join.ends();
+    let surface = |wrt: Wrt, printed: &[Printed]| -> Vec<Sym> {
         let columns: Vec<Vec<Sym>> = (0..u_basis.len())
             .map(|i| {
                 let column = rename_points(join, i);
-                column.residuals(wrt, &rename_printed(join, printed, i))
+                column.residuals_in(&ends, wrt, &rename_printed(join, printed, i))
             })
             .collect();
-        let surface = (0..=join.kind.order())
+        (0..=join.kind.order())
             .map(|k| {
                 sum(&columns
                     .iter()
@@ -424,10 +473,16 @@ pub fn audit_surface<B: ExactBasis + Clone>(join: &PrintedJoin<B>, u_param: &Sym
                     .map(|(r, bi)| bi.clone() * &r[k])
                     .collect::<Vec<_>>())
             })
-            .collect();
-        // shown: the residual of one column, in the printed names
-        (surface, join.residuals(wrt, printed))
-    })
+            .collect()
+    };
+    decide(
+        join,
+        &Residuals {
+            // the residual of one column, in the printed names
+            shown: &|wrt, printed| join.residuals_in(&ends, wrt, printed),
+            surface: Some(&surface),
+        },
+    )
 }
 
 /// Column `i`: every point `Pⱼ` renamed `Pⱼ_i`.
@@ -464,13 +519,32 @@ fn rename_printed<B: ExactBasis + Clone>(
         .collect()
 }
 
-/// The verdict from a residual function `(convention, printed) ↦ (residuals
-/// that decide, residuals shown as evidence)`.
-fn decide<B: ExactBasis + Clone>(
-    join: &PrintedJoin<B>,
-    residuals: impl Fn(Wrt, &[Printed]) -> (Vec<Sym>, Vec<Sym>),
-) -> Verdict {
-    let verdict = decide_residuals(join, &residuals);
+/// A residual function `(convention, printed) ↦ residuals`.
+type ResidualFn<'a> = &'a dyn Fn(Wrt, &[Printed]) -> Vec<Sym>;
+
+/// How a join's residuals are computed: those shown as evidence (a curve's;
+/// for a surface, one column's in the printed names), and a surface's
+/// whole residual, which decides. The column's vanishes exactly when every
+/// column's does, hence exactly when the surface's does (the `u`-basis is
+/// linearly independent); it is the cheap screen, the surface's the proof.
+struct Residuals<'a> {
+    shown: ResidualFn<'a>,
+    surface: Option<ResidualFn<'a>>,
+}
+
+impl Residuals<'_> {
+    /// The residuals that decide, given the shown ones.
+    fn deciding(&self, wrt: Wrt, printed: &[Printed], shown: &[Sym]) -> Vec<Sym> {
+        match self.surface {
+            Some(surface) => surface(wrt, printed),
+            None => shown.to_vec(),
+        }
+    }
+}
+
+/// The verdict from the join's [`Residuals`].
+fn decide<B: ExactBasis + Clone>(join: &PrintedJoin<B>, residuals: &Residuals<'_>) -> Verdict {
+    let verdict = decide_residuals(join, residuals);
     let singular: Vec<String> = join
         .printed
         .iter()
@@ -499,7 +573,7 @@ fn decide<B: ExactBasis + Clone>(
 
 fn decide_residuals<B: ExactBasis + Clone>(
     join: &PrintedJoin<B>,
-    residuals: &impl Fn(Wrt, &[Printed]) -> (Vec<Sym>, Vec<Sym>),
+    residuals: &Residuals<'_>,
 ) -> Verdict {
     let names = join.names();
     let domain = join.basis.domain();
@@ -508,7 +582,8 @@ fn decide_residuals<B: ExactBasis + Clone>(
     let mut evidence = Vec::new();
     let mut holding = Vec::new();
     for wrt in &join.conventions {
-        let (r, shown) = residuals(*wrt, &join.printed);
+        let shown = (residuals.shown)(*wrt, &join.printed);
+        let r = residuals.deciding(*wrt, &join.printed, &shown);
         if holds(&r) {
             holding.push(*wrt);
         }
@@ -548,12 +623,11 @@ fn the(label: &str) -> String {
 /// The fewest sign flips — one term in one printed formula, else one term in
 /// each of two formulas (a sign typo per formula, as when a formula reuses
 /// an earlier one that has its own) — that make the printed formulas hold
-/// in the printed convention, described. Pairs are screened on the shown
-/// residual (for a surface, one column's: it vanishes exactly when every
-/// column's does) and confirmed on the deciding one.
+/// in the printed convention, described. Candidates are screened on the
+/// shown residual and confirmed on the deciding one ([`Residuals`]).
 fn sign_fix<B: ExactBasis + Clone>(
     join: &PrintedJoin<B>,
-    residuals: &impl Fn(Wrt, &[Printed]) -> (Vec<Sym>, Vec<Sym>),
+    residuals: &Residuals<'_>,
 ) -> Option<String> {
     let names = join.names();
     let wrt = join.printed_wrt();
@@ -580,8 +654,8 @@ fn sign_fix<B: ExactBasis + Clone>(
     });
     let found = singles.chain(pairs).find(|chosen| {
         let printed = with(chosen);
-        let (r, shown) = residuals(wrt, &printed);
-        chosen.len() == 1 && zero(&r) || chosen.len() > 1 && zero(&shown) && zero(&r)
+        let shown = (residuals.shown)(wrt, &printed);
+        zero(&shown) && zero(&residuals.deciding(wrt, &printed, &shown))
     })?;
     let terms: Vec<String> = found
         .iter()
