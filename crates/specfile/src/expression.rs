@@ -28,7 +28,7 @@ use std::collections::BTreeSet;
 
 use rug::Rational;
 use rug::ops::Pow;
-use trig_symbolic::Sym;
+use trig_symbolic::{Residue, Sym};
 
 use crate::ast::{self, Expr, Func, Grammar, Node};
 use crate::budget::{Budget, MAX_BITS, bits, too_large};
@@ -77,6 +77,20 @@ impl Expression {
         evaluate(&self.tree, &Rationals, &|name, pos| {
             value(name).ok_or_else(|| unbound(name, pos))
         })
+    }
+
+    /// The image modulo a prime ([`Residue`]) of the value at rational values
+    /// of the symbols (as [`Expression::at`]); `None` for a symbol without
+    /// value or where the image is undefined (a denominator divisible by
+    /// the prime). Images that differ prove values that differ.
+    pub fn at_mod(&self, value: &dyn Fn(&str) -> Option<Rational>) -> Option<Residue> {
+        evaluate(&self.tree, &Residues, &|name, pos| {
+            value(name)
+                .map(|q| Residue::of(&q))
+                .ok_or_else(|| unbound(name, pos))
+        })
+        .ok()
+        .flatten()
     }
 
     /// The value in the exact ring at values of the symbols given as ring
@@ -261,6 +275,42 @@ impl Arithmetic for Rationals {
     }
 }
 
+/// Residues modulo a prime ([`Residue`]); `None` where undefined (a
+/// denominator divisible by the prime), and undefined stays undefined.
+struct Residues;
+
+impl Arithmetic for Residues {
+    type Value = Option<Residue>;
+
+    fn number(&self, q: &Rational) -> Option<Residue> {
+        Residue::of(q)
+    }
+
+    fn neg(&self, a: Option<Residue>) -> Option<Residue> {
+        a.map(Residue::neg)
+    }
+
+    fn add(&self, a: Self::Value, b: &Self::Value, _: usize) -> Result<Self::Value, FormulaError> {
+        Ok(a.zip(*b).map(|(a, b)| a.add(b)))
+    }
+
+    fn sub(&self, a: Self::Value, b: &Self::Value, _: usize) -> Result<Self::Value, FormulaError> {
+        Ok(a.zip(*b).map(|(a, b)| a.sub(b)))
+    }
+
+    fn mul(&self, a: &Self::Value, b: &Self::Value, _: usize) -> Result<Self::Value, FormulaError> {
+        Ok(a.zip(*b).map(|(a, b)| a.mul(b)))
+    }
+
+    fn div(&self, a: &Self::Value, b: &Self::Value, _: usize) -> Result<Self::Value, FormulaError> {
+        Ok(a.zip(*b).and_then(|(a, b)| a.div(b)))
+    }
+
+    fn pow(&self, a: &Self::Value, n: u32, _: usize) -> Result<Self::Value, FormulaError> {
+        Ok(a.map(|a| a.pow(n)))
+    }
+}
+
 /// The exact ring, every product charged to one [`Budget`].
 #[derive(Default)]
 struct Ring {
@@ -352,6 +402,17 @@ mod tests {
         );
         let sym_at = |n: &str| at(n).map(Sym::rational);
         assert_eq!(f.at_sym(&sym_at), Ok(Sym::int(2)));
+        assert_eq!(f.at_mod(&at), Residue::of(&Rational::from(2)));
+        // x = 1: a division by zero has no image; an unbound symbol neither
+        let pole = |n: &str| {
+            if n == "x" {
+                Some(Rational::from(1))
+            } else {
+                at(n)
+            }
+        };
+        assert_eq!(f.at_mod(&pole), None);
+        assert_eq!(f.at_mod(&|_| None), None);
     }
 
     #[test]

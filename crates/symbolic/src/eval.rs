@@ -6,7 +6,7 @@
 //! (e.g. `s = 2k/(1+k²)`, `c = (1−k²)/(1+k²)`), and for any values when the
 //! expression contains neither.
 
-use std::collections::{BTreeMap, BTreeSet};
+use std::collections::BTreeSet;
 
 use rug::Rational;
 use rug::ops::Pow;
@@ -14,7 +14,9 @@ use trig_core::Ring;
 
 use crate::error::SymError;
 use crate::poly::Poly;
+use crate::residue::Residue;
 use crate::sym::Sym;
+use crate::var::Var;
 
 /// The operations evaluation needs, for ℚ and for any [`Ring`].
 trait Field: Clone {
@@ -47,6 +49,29 @@ impl Field for Rational {
     }
 }
 
+/// Residues modulo a prime ([`Residue`]); `None` where undefined (a
+/// denominator divisible by the prime), and undefined stays undefined.
+impl Field for Option<Residue> {
+    fn constant(&self, q: &Rational) -> Self {
+        Residue::of(q)
+    }
+    fn add(self, other: &Self) -> Self {
+        Some(self?.add((*other)?))
+    }
+    fn mul(self, other: &Self) -> Self {
+        Some(self?.mul((*other)?))
+    }
+    fn div(self, other: &Self) -> Self {
+        self?.div((*other)?)
+    }
+    fn pow(&self, n: u32) -> Self {
+        self.map(|r| r.pow(n))
+    }
+    fn is_zero(&self) -> bool {
+        self.is_some_and(Residue::is_zero)
+    }
+}
+
 /// A [`Ring`] value seen as a [`Field`].
 #[derive(Clone)]
 struct InRing<T>(T);
@@ -72,20 +97,34 @@ impl<T: Ring> Field for InRing<T> {
     }
 }
 
-type Values<F> = BTreeMap<String, F>;
+/// The value of each variable, looked up once.
+type Values<F> = Vec<(Var, F)>;
 
-/// Looks up every variable once.
-fn bind<F>(
-    names: BTreeSet<String>,
-    assign: &dyn Fn(&str) -> Option<F>,
-) -> Result<Values<F>, SymError> {
-    names
-        .into_iter()
-        .map(|n| match assign(&n) {
-            Some(x) => Ok((n, x)),
-            None => Err(SymError::UnboundVariable(n)),
-        })
-        .collect()
+/// Looks up every variable once; the error names the first unbound one in
+/// name order.
+fn bind<F>(vars: Vec<Var>, assign: &dyn Fn(&str) -> Option<F>) -> Result<Values<F>, SymError> {
+    let mut values = Vec::with_capacity(vars.len());
+    let mut unbound: BTreeSet<&str> = BTreeSet::new();
+    for v in vars {
+        match assign(v.name()) {
+            Some(x) => values.push((v, x)),
+            None => {
+                unbound.insert(v.name());
+            }
+        }
+    }
+    match unbound.first() {
+        Some(n) => Err(SymError::UnboundVariable((*n).to_string())),
+        None => Ok(values),
+    }
+}
+
+fn value<'a, F>(values: &'a Values<F>, v: &Var) -> &'a F {
+    values
+        .iter()
+        .find(|(w, _)| w == v)
+        .map(|(_, x)| x)
+        .expect("every variable is bound")
 }
 
 /// `p` at bound values (every variable of `p` is bound).
@@ -93,7 +132,7 @@ fn eval_poly<F: Field>(p: &Poly, like: &F, values: &Values<F>) -> F {
     p.terms()
         .fold(like.constant(&Rational::new()), |acc, (m, q)| {
             let term = m.factors().fold(like.constant(q), |t, (v, e)| {
-                t.mul(&values[v.name()].pow(e))
+                t.mul(&value(values, v).pow(e))
             });
             acc.add(&term)
         })
@@ -118,7 +157,7 @@ impl Poly {
         &self,
         assign: &dyn Fn(&str) -> Option<Rational>,
     ) -> Result<Rational, SymError> {
-        let values = bind(self.variables(), assign)?;
+        let values = bind(self.vars(), assign)?;
         Ok(eval_poly(self, &Rational::new(), &values))
     }
 
@@ -129,7 +168,7 @@ impl Poly {
         like: &T,
         assign: &dyn Fn(&str) -> Option<T>,
     ) -> Result<T, SymError> {
-        let values = bind(self.variables(), &|n: &str| assign(n).map(InRing))?;
+        let values = bind(self.vars(), &|n: &str| assign(n).map(InRing))?;
         Ok(eval_poly(self, &InRing(like.clone()), &values).0)
     }
 }
@@ -141,8 +180,18 @@ impl Sym {
         &self,
         assign: &dyn Fn(&str) -> Option<Rational>,
     ) -> Result<Rational, SymError> {
-        let values = bind(self.variables(), assign)?;
+        let values = bind(self.vars(), assign)?;
         eval_sym(self, &Rational::new(), &values)
+    }
+
+    /// The image modulo a prime ([`Residue`]) of the value at the assigned
+    /// rationals: `None` for an unbound variable or where the image is
+    /// undefined (a value's or a coefficient's denominator divisible by the
+    /// prime, a denominator factor vanishing modulo it). Images that differ
+    /// prove values that differ.
+    pub fn eval_mod(&self, assign: &dyn Fn(&str) -> Option<Rational>) -> Option<Residue> {
+        let values = bind(self.vars(), &|n: &str| assign(n).map(|q| Residue::of(&q))).ok()?;
+        eval_sym(self, &None, &values).ok().flatten()
     }
 
     /// The value in the ring of `like` (f64, MPFR, …) at the assigned
@@ -153,7 +202,7 @@ impl Sym {
         like: &T,
         assign: &dyn Fn(&str) -> Option<T>,
     ) -> Result<T, SymError> {
-        let values = bind(self.variables(), &|n: &str| assign(n).map(InRing))?;
+        let values = bind(self.vars(), &|n: &str| assign(n).map(InRing))?;
         eval_sym(self, &InRing(like.clone()), &values).map(|x| x.0)
     }
 }
@@ -179,6 +228,22 @@ mod tests {
             "c" => Some(Rational::from((4, 5))),
             _ => None,
         }
+    }
+
+    #[test]
+    fn image_modulo_a_prime() {
+        let image = Residue::of(&Rational::from((47, 34)));
+        assert_eq!(sample().eval_mod(&exact), image);
+        // m + c = 0 at m = −4/5: the denominator vanishes, no image
+        let pole = |n: &str| {
+            if n == "m" {
+                Some(Rational::from((-4, 5)))
+            } else {
+                exact(n)
+            }
+        };
+        assert_eq!(sample().eval_mod(&pole), None);
+        assert_eq!(sample().eval_mod(&|_| None), None);
     }
 
     #[test]

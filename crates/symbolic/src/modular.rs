@@ -17,8 +17,7 @@
 use crate::poly::Poly;
 use crate::var::Var;
 
-/// The prime `2³¹ − 1`: products of residues fit in `u64`.
-const P: u64 = 2_147_483_647;
+use crate::residue::{P, inverse, pow};
 
 /// True when `f` and all `others` are proved to have no nonconstant common
 /// divisor (see the [module documentation](self)); false means "not proved".
@@ -84,23 +83,6 @@ fn substitute(name: &str) -> u64 {
         (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
     });
     2 + hash % (P - 3)
-}
-
-fn pow(mut base: u64, mut e: u64) -> u64 {
-    let mut out = 1;
-    base %= P;
-    while e > 0 {
-        if e & 1 == 1 {
-            out = out * base % P;
-        }
-        base = base * base % P;
-        e >>= 1;
-    }
-    out
-}
-
-fn inverse(a: u64) -> u64 {
-    pow(a, P - 2)
 }
 
 fn trim(p: &mut Vec<u64>) {

@@ -114,10 +114,29 @@ impl Poly {
 
     /// The names of the variables that occur.
     pub fn variables(&self) -> BTreeSet<String> {
-        self.terms
-            .keys()
-            .flat_map(|m| m.factors().map(|(v, _)| v.name().to_string()))
+        self.vars()
+            .into_iter()
+            .map(|v| v.name().to_string())
             .collect()
+    }
+
+    /// The variables, in order of first occurrence.
+    pub(crate) fn vars(&self) -> Vec<Var> {
+        let mut out = Vec::new();
+        self.collect_vars(&mut out);
+        out
+    }
+
+    /// Adds to `out` every variable of `self` not already there (a name is
+    /// formed once per variable, not once per occurrence).
+    pub(crate) fn collect_vars(&self, out: &mut Vec<Var>) {
+        for m in self.terms.keys() {
+            for (v, _) in m.factors() {
+                if !out.contains(v) {
+                    out.push(*v);
+                }
+            }
+        }
     }
 
     /// Adds `q·m`, rewriting every power `vᵏ` (`k ≥ 2`) of a reduced atom

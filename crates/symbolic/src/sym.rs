@@ -11,7 +11,7 @@ use rug::ops::Pow;
 use crate::error::SymError;
 use crate::gcd::common_factor;
 use crate::poly::Poly;
-use crate::var::PI;
+use crate::var::{PI, Var};
 
 /// An exact symbolic value `num / Π fᵢ^eᵢ`.
 ///
@@ -106,9 +106,18 @@ impl Sym {
 
     /// The names of the variables that occur.
     pub fn variables(&self) -> BTreeSet<String> {
-        let mut out = self.num.variables();
+        self.vars()
+            .into_iter()
+            .map(|v| v.name().to_string())
+            .collect()
+    }
+
+    /// The variables of the numerator and of every denominator factor.
+    pub(crate) fn vars(&self) -> Vec<Var> {
+        let mut out = Vec::new();
+        self.num.collect_vars(&mut out);
         for f in self.den.keys() {
-            out.extend(f.variables());
+            f.collect_vars(&mut out);
         }
         out
     }

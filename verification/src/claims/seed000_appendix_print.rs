@@ -185,6 +185,12 @@ fn simple_witness(printed: &Expression, computed: &Sym) -> Option<crate::Witness
             }
             p.iter().find(|(m, _)| m == n).map(|(_, q)| q.clone())
         };
+        // images modulo a prime that differ prove a difference cheaply
+        if let (Some(a), Some(b)) = (printed.at_mod(&value), computed.eval_mod(&value))
+            && a != b
+        {
+            return true;
+        }
         matches!(
             (printed.at(&value), computed.eval_rational(&value)),
             (Ok(a), Ok(b)) if a != b
