@@ -287,23 +287,23 @@ impl Arithmetic for Residues {
     }
 
     fn neg(&self, a: Option<Residue>) -> Option<Residue> {
-        a.map(Residue::neg)
+        a.map(|a| -a)
     }
 
     fn add(&self, a: Self::Value, b: &Self::Value, _: usize) -> Result<Self::Value, FormulaError> {
-        Ok(a.zip(*b).map(|(a, b)| a.add(b)))
+        Ok(a.zip(*b).map(|(a, b)| a + b))
     }
 
     fn sub(&self, a: Self::Value, b: &Self::Value, _: usize) -> Result<Self::Value, FormulaError> {
-        Ok(a.zip(*b).map(|(a, b)| a.sub(b)))
+        Ok(a.zip(*b).map(|(a, b)| a - b))
     }
 
     fn mul(&self, a: &Self::Value, b: &Self::Value, _: usize) -> Result<Self::Value, FormulaError> {
-        Ok(a.zip(*b).map(|(a, b)| a.mul(b)))
+        Ok(a.zip(*b).map(|(a, b)| a * b))
     }
 
     fn div(&self, a: &Self::Value, b: &Self::Value, _: usize) -> Result<Self::Value, FormulaError> {
-        Ok(a.zip(*b).and_then(|(a, b)| a.div(b)))
+        Ok(a.zip(*b).and_then(|(a, b)| a.checked_div(b)))
     }
 
     fn pow(&self, a: &Self::Value, n: u32, _: usize) -> Result<Self::Value, FormulaError> {

@@ -56,13 +56,13 @@ impl Field for Option<Residue> {
         Residue::of(q)
     }
     fn add(self, other: &Self) -> Self {
-        Some(self?.add((*other)?))
+        Some(self? + (*other)?)
     }
     fn mul(self, other: &Self) -> Self {
-        Some(self?.mul((*other)?))
+        Some(self? * (*other)?)
     }
     fn div(self, other: &Self) -> Self {
-        self?.div((*other)?)
+        self?.checked_div((*other)?)
     }
     fn pow(&self, n: u32) -> Self {
         self.map(|r| r.pow(n))

@@ -7,6 +7,8 @@
 //! a proof, at the cost of word arithmetic instead of growing fractions.
 //! Equal images prove nothing; an undefined image ([`None`]) neither.
 
+use std::ops::{Add, Mul, Neg, Sub};
+
 use rug::Rational;
 
 /// The prime `2³¹ − 1`: products of residues fit in `u64`.
@@ -32,29 +34,41 @@ impl Residue {
         self.0 == 0
     }
 
-    pub fn add(self, other: Residue) -> Residue {
-        Residue((self.0 + other.0) % P)
-    }
-
-    pub fn sub(self, other: Residue) -> Residue {
-        Residue((self.0 + P - other.0) % P)
-    }
-
-    pub fn neg(self) -> Residue {
-        Residue((P - self.0) % P)
-    }
-
-    pub fn mul(self, other: Residue) -> Residue {
-        Residue(self.0 * other.0 % P)
-    }
-
     pub fn pow(self, n: u32) -> Residue {
         Residue(pow(self.0, u64::from(n)))
     }
 
     /// `self / other`, or `None` when `other` is zero.
-    pub fn div(self, other: Residue) -> Option<Residue> {
-        (!other.is_zero()).then(|| self.mul(Residue(inverse(other.0))))
+    pub fn checked_div(self, other: Residue) -> Option<Residue> {
+        (!other.is_zero()).then(|| self * Residue(inverse(other.0)))
+    }
+}
+
+impl Add for Residue {
+    type Output = Residue;
+    fn add(self, other: Residue) -> Residue {
+        Residue((self.0 + other.0) % P)
+    }
+}
+
+impl Sub for Residue {
+    type Output = Residue;
+    fn sub(self, other: Residue) -> Residue {
+        Residue((self.0 + P - other.0) % P)
+    }
+}
+
+impl Neg for Residue {
+    type Output = Residue;
+    fn neg(self) -> Residue {
+        Residue((P - self.0) % P)
+    }
+}
+
+impl Mul for Residue {
+    type Output = Residue;
+    fn mul(self, other: Residue) -> Residue {
+        Residue(self.0 * other.0 % P)
     }
 }
 
@@ -83,12 +97,13 @@ mod tests {
     #[test]
     fn images_of_rationals() {
         let q = |a: i64, b: i64| Residue::of(&Rational::from((a, b))).unwrap();
-        assert_eq!(q(1, 3).mul(q(3, 1)), q(1, 1));
-        assert_eq!(q(1, 2).add(q(1, 3)), q(5, 6));
-        assert_eq!(q(-2, 7).neg(), q(2, 7));
+        assert_eq!(q(1, 3) * q(3, 1), q(1, 1));
+        assert_eq!(q(1, 2) + q(1, 3), q(5, 6));
+        assert_eq!(q(1, 2) - q(1, 3), q(1, 6));
+        assert_eq!(-q(-2, 7), q(2, 7));
         assert_eq!(q(2, 3).pow(3), q(8, 27));
-        assert_eq!(q(1, 4).div(q(1, 2)), Some(q(1, 2)));
-        assert_eq!(q(1, 4).div(q(0, 1)), None);
+        assert_eq!(q(1, 4).checked_div(q(1, 2)), Some(q(1, 2)));
+        assert_eq!(q(1, 4).checked_div(q(0, 1)), None);
         // p divides the denominator: no image
         assert_eq!(Residue::of(&Rational::from((1, P))), None);
         assert!(Residue::of(&Rational::from(P)).unwrap().is_zero());
