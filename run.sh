@@ -79,5 +79,5 @@ case "$cmd" in
     cargo clippy --workspace --all-targets "${FEATURES[@]}" -- -D warnings
     ;;
   bench) cargo bench --workspace "${FEATURES[@]}" ;;
-  figures) TRIG_AUDIT_REDRAW_FIGURES=1 cargo test -p trig-e2e --test cli_figures "${FEATURES[@]}" ;;
+  figures) TRIG_AUDIT_REDRAW_FIGURES=1 cargo test -p trig-e2e --test e2e cli_figures "${FEATURES[@]}" ;;
 esac

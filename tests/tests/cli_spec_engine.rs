@@ -26,9 +26,21 @@ fn verdict(path: &str, id: &str) -> String {
     claim(path, id).0
 }
 
-/// The verdict and evidence of one claim of a spec file.
+/// The verdict and evidence of one claim of a spec file. Verdicts come from
+/// counted budgets; the wall-clock limit only cuts a run off, so it is set
+/// far above what these claims take on a loaded machine (some take 10 s).
 fn claim(path: &str, id: &str) -> (String, String) {
-    let text = stdout_ok(&["audit", "--spec", path, "--claim", id, "--format", "json"]);
+    let text = stdout_ok(&[
+        "audit",
+        "--spec",
+        path,
+        "--claim",
+        id,
+        "--format",
+        "json",
+        "--time-limit",
+        "600",
+    ]);
     let json: serde_json::Value = serde_json::from_str(&text).expect("json");
     let c = &json["claims"][0];
     (

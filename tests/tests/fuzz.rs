@@ -2,7 +2,7 @@
 //! in-process; no panic, no hang, one-line errors, no NaN, and no printed
 //! digit that an independent reference (plain MPFR, ≥ 1000 bits)
 //! contradicts. The CI run is bounded in time; the long run is
-//! `cargo test --release -p trig-e2e --test fuzz -- --ignored`
+//! `cargo test --release -p trig-e2e --test e2e fuzz -- --ignored`
 //! (`FUZZ_CASES`, `FUZZ_SEED`; figures in BENCHMARKS.md).
 
 use std::time::Duration;
@@ -27,7 +27,7 @@ fn hostile_command_lines_in_ci() {
 
 /// The long run: ≥ 100,000 cases, the heaviest precisions included.
 #[test]
-#[ignore = "long run (minutes): cargo test --release -p trig-e2e --test fuzz -- --ignored"]
+#[ignore = "long run (minutes): cargo test --release -p trig-e2e --test e2e fuzz -- --ignored"]
 fn hostile_command_lines_long_run() {
     let cases = std::env::var("FUZZ_CASES")
         .ok()

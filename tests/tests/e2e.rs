@@ -1,0 +1,17 @@
+//! End-to-end tests of the command line and across crates: one binary, one module per area.
+
+mod catalog_parity;
+mod cli_audit;
+mod cli_certify;
+mod cli_eval;
+mod cli_figures;
+mod cli_fit_plot;
+mod cli_hostile;
+mod cli_hostile_round2;
+mod cli_interp;
+mod cli_join;
+mod cli_spec;
+mod cli_spec_engine;
+mod cli_spec_features;
+mod cli_table;
+mod fuzz;

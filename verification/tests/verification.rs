@@ -1,0 +1,9 @@
+//! The audit's integration tests: one binary, one module per area.
+
+mod audit;
+mod certified;
+mod joins;
+mod seed000;
+mod seed002_004;
+mod spec_audit;
+mod thesis_interp;
