@@ -17,7 +17,7 @@
 use crate::poly::Poly;
 use crate::var::Var;
 
-use crate::residue::{P, inverse, pow};
+use crate::residue::{P, Residue, inverse, pow};
 
 /// True when `f` and all `others` are proved to have no nonconstant common
 /// divisor (see the [module documentation](self)); false means "not proved".
@@ -49,11 +49,7 @@ fn image(p: &Poly, x: &str) -> Option<Vec<u64>> {
     let mut residues: Vec<(Var, u64)> = Vec::new();
     let mut out = vec![0u64; p.degree_in(x) as usize + 1];
     for (m, q) in p.terms() {
-        let den = u64::from(q.denom().mod_u(P as u32));
-        if den == 0 {
-            return None;
-        }
-        let mut value = u64::from(q.numer().mod_u(P as u32)) * inverse(den) % P;
+        let mut value = Residue::of(q)?.value();
         let mut power = 0;
         for (v, e) in m.factors() {
             if *v == main {

@@ -21,12 +21,20 @@ pub struct Residue(u64);
 impl Residue {
     /// The image of `q`, or `None` when `p` divides its denominator.
     pub fn of(q: &Rational) -> Option<Residue> {
+        let num = u64::from(q.numer().mod_u(P as u32));
+        if *q.denom() == 1 {
+            return Some(Residue(num));
+        }
         let den = u64::from(q.denom().mod_u(P as u32));
         if den == 0 {
             return None;
         }
-        let num = u64::from(q.numer().mod_u(P as u32));
         Some(Residue(num * inverse(den) % P))
+    }
+
+    /// The representative in `0…p − 1`.
+    pub fn value(self) -> u64 {
+        self.0
     }
 
     /// True for the zero residue.
