@@ -10,7 +10,6 @@ pub mod budget;
 pub mod certify;
 pub mod claim;
 mod claims;
-pub mod continuity;
 pub mod evidence;
 pub mod exact;
 pub mod figures;

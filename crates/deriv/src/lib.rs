@@ -4,6 +4,7 @@
 //! [`trig_core::Mpfr`], the exact symbolic ring — and derivatives of the
 //! catalog's families computed with them.
 
+pub mod continuity;
 pub mod jet;
 pub mod join;
 

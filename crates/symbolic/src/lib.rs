@@ -53,6 +53,7 @@ pub mod poly;
 mod print;
 pub mod residue;
 mod ring;
+mod roots;
 pub mod sym;
 pub mod var;
 
@@ -64,5 +65,6 @@ pub use poly::Poly;
 pub use print::{Style, sympy_symbols};
 pub use residue::Residue;
 pub use ring::symbolic_atoms;
+pub use roots::rational_roots;
 pub use sym::Sym;
 pub use var::Var;

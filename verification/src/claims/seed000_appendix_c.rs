@@ -11,13 +11,13 @@ use trig_symbolic::Sym;
 
 use super::seed000_appendix_print::{printed_part, zeta};
 use crate::claim::{Claim, Seed, shared};
-use crate::continuity::{
-    self, KnotContinuity, METHOD, curve_end, nonuniform_bspline, uniform_bspline,
-};
 use crate::exact::{IDENTITY, symbols};
-use crate::judge::continuity::at_least;
+use crate::judge::continuity::{METHOD, at_least, describe, knot_witness};
 use crate::status::Status;
 use crate::verdict::Verdict;
+use trig_deriv::continuity::{
+    self, KnotContinuity, curve_end, nonuniform_bspline, uniform_bspline,
+};
 
 pub const CLAIMS: &[Claim] = &[
     Claim {
@@ -397,7 +397,7 @@ fn c5_except_one(label: &str, knots: &[KnotContinuity]) -> Verdict {
                 k.smoothness,
                 good.join(", ")
             ))
-            .witnessed(k.witness()),
+            .witnessed(knot_witness(k)),
         );
     }
     let ok = knots.iter().all(|k| k.smoothness.is_at_least(5));
@@ -517,11 +517,11 @@ fn m4b() -> Verdict {
                         if ok { Status::Holds } else { Status::Fails },
                         METHOD,
                         cont.iter().map(|c| {
-                            let item = c.describe(Some("zeta"));
+                            let item = describe(c, Some("zeta"));
                             if c.smoothness.rank() >= want {
                                 item
                             } else {
-                                item.witnessed(c.witness())
+                                item.witnessed(knot_witness(c))
                             }
                         }),
                     )
@@ -563,7 +563,7 @@ fn m8() -> Verdict {
 mod tests {
     use super::*;
     use crate::claims::seed000_appendix_print::{compare, read};
-    use crate::continuity::Smoothness;
+    use trig_deriv::continuity::Smoothness;
 
     #[test]
     fn uniform_seed000_basis_is_c3_at_its_ends_and_smooth_inside() {

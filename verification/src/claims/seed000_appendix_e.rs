@@ -18,9 +18,9 @@ use trig_symbolic::Sym;
 
 use super::seed000_appendix_print::{Shorthand, printed_part, zeta};
 use crate::claim::{Claim, Seed};
-use crate::continuity::quotient_derivatives;
 use crate::exact::{IDENTITY, symbols};
 use crate::verdict::Verdict;
+use trig_deriv::continuity::quotient_derivatives;
 
 pub const CLAIMS: &[Claim] = &[
     Claim {

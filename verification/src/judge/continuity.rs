@@ -5,11 +5,56 @@
 //! or a spec file (piece `k` is function `n − 1 − k`), and the pieces a
 //! catalog claim assembles itself.
 
-use crate::continuity::{KnotContinuity, METHOD, achieved, continuity, uniform_bspline};
+use trig_deriv::continuity::{KnotContinuity, achieved, continuity, uniform_bspline};
+use trig_symbolic::Sym;
+
+use crate::evidence::{Evidence, Expr, Kind, Witness};
 use crate::exact::ExactBasis;
 use crate::judge::domain::param_symbols;
 use crate::status::Status;
 use crate::verdict::Verdict;
+
+/// How continuity is decided, as the report states it.
+pub const METHOD: &str = "exact one-sided derivatives of orders 0–6 (Taylor jets in the symbolic ring) at every knot; a jump is decided by the exact zero test; exceptional parameter values are the rational roots of the first nonzero jump's numerator";
+
+/// A point where the first nonzero jump of `k` is visibly nonzero, with
+/// its exact value there (right − left).
+pub fn knot_witness(k: &KnotContinuity) -> Option<Witness> {
+    let (r, j) = k.first_jump()?;
+    if j.as_rational().is_some() {
+        // A constant jump is its own witness (shown in the item).
+        return None;
+    }
+    let mut w = crate::witness::find(j, &Sym::zero(), (&format!("jump of order {r}"), "0"))?;
+    w.values.truncate(1);
+    Some(w)
+}
+
+/// The continuity at knot `k` as one line for the report.
+pub fn describe(k: &KnotContinuity, param: Option<&str>) -> Evidence {
+    let mut text = k.smoothness.to_string();
+    let p = param.unwrap_or("parameter");
+    for e in &k.exceptions {
+        text.push_str(&format!("; at {p} = {}: {}", e.value, e.smoothness));
+    }
+    if k.roots_incomplete {
+        text.push_str("; (rational-root search incomplete: coefficients too large)");
+    }
+    let mut item = Evidence::new(Kind::Identity, text);
+    item.subject = Some(format!("knot {}", k.knot));
+    if let Some((r, j)) = k.first_jump() {
+        item = item.with(format!("jump of order {r}"), Expr::new(j));
+    }
+    for e in &k.exceptions {
+        if let Some((r, j)) = &e.jump {
+            item = item.with(
+                format!("jump of order {r} at {p} = {}", e.value),
+                Expr::new(j),
+            );
+        }
+    }
+    item
+}
 
 /// `C^r` at every knot, for every parameter value: each knot's achieved
 /// order with its exceptional values (`param`, the one shape parameter),
@@ -18,11 +63,11 @@ pub fn at_least(label: &str, knots: &[KnotContinuity], r: usize, param: Option<&
     let evidence: Vec<crate::evidence::Evidence> = knots
         .iter()
         .map(|k| {
-            let item = k.describe(param);
+            let item = describe(k, param);
             if k.smoothness.is_at_least(r) {
                 item
             } else {
-                item.witnessed(k.witness())
+                item.witnessed(knot_witness(k))
             }
         })
         .collect();

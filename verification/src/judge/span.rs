@@ -12,10 +12,10 @@
 
 use trig_symbolic::{Poly, Sym};
 
-use crate::continuity::rational_roots;
 use crate::exact::{ExactBasis, basis_of};
 use crate::status::Status;
 use crate::verdict::Verdict;
+use trig_symbolic::rational_roots;
 
 /// How the span is decided, as the report states it.
 pub const METHOD: &str = "exact: the coefficients of Σ kᵢbᵢ − g in the independent monomials t^a·c^b·s^e (e ≤ 1) of the ring's normal form, solved for the kᵢ by elimination over Q(parameters)";

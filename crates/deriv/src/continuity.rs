@@ -16,20 +16,16 @@
 //! rational curve segment ([`curve_piece`]), and seed 000's non-uniform
 //! B-spline with the printed coefficients (2)–(3) ([`nonuniform_bspline`]).
 
-use std::collections::{BTreeMap, HashMap};
+use std::collections::BTreeMap;
 use std::fmt;
 
 use rug::{Integer, Rational};
 use trig_core::families::seed000_nonuniform::NonUniform;
-use trig_core::{CoreError, Family};
-use trig_deriv::{End, Jet, Wrt, angle_atoms, curve_endpoint_derivatives, knot_derivatives};
-use trig_symbolic::{Monomial, Poly, Sym};
+use trig_core::{Basis, CoreError, Family};
+use trig_symbolic::{Poly, Sym, rational_roots};
 
-use crate::evidence::{Evidence, Expr, Kind};
-use crate::exact::ExactBasis;
-
-/// How continuity is decided, as the report states it.
-pub const METHOD: &str = "exact one-sided derivatives of orders 0–6 (Taylor jets in the symbolic ring) at every knot; a jump is decided by the exact zero test; exceptional parameter values are the rational roots of the first nonzero jump's numerator";
+use crate::jet::{Jet, angle_atoms};
+use crate::table::{End, Wrt, curve_endpoint_derivatives, knot_derivatives};
 
 /// Highest derivative order examined.
 pub const MAX_ORDER: usize = 6;
@@ -117,45 +113,6 @@ impl KnotContinuity {
     pub fn first_jump(&self) -> Option<(usize, &Sym)> {
         first_jump(&self.jumps)
     }
-
-    /// A point where the first nonzero jump is visibly nonzero, with its
-    /// exact value there (right − left).
-    pub fn witness(&self) -> Option<crate::evidence::Witness> {
-        let (r, j) = self.first_jump()?;
-        if j.as_rational().is_some() {
-            // A constant jump is its own witness (shown in the item).
-            return None;
-        }
-        let mut w = crate::witness::find(j, &Sym::zero(), (&format!("jump of order {r}"), "0"))?;
-        w.values.truncate(1);
-        Some(w)
-    }
-
-    /// One line for the report.
-    pub fn describe(&self, param: Option<&str>) -> Evidence {
-        let mut text = self.smoothness.to_string();
-        let p = param.unwrap_or("parameter");
-        for e in &self.exceptions {
-            text.push_str(&format!("; at {p} = {}: {}", e.value, e.smoothness));
-        }
-        if self.roots_incomplete {
-            text.push_str("; (rational-root search incomplete: coefficients too large)");
-        }
-        let mut item = Evidence::new(Kind::Identity, text);
-        item.subject = Some(format!("knot {}", self.knot));
-        if let Some((r, j)) = self.first_jump() {
-            item = item.with(format!("jump of order {r}"), Expr::new(j));
-        }
-        for e in &self.exceptions {
-            if let Some((r, j)) = &e.jump {
-                item = item.with(
-                    format!("jump of order {r} at {p} = {}", e.value),
-                    Expr::new(j),
-                );
-            }
-        }
-        item
-    }
 }
 
 fn first_jump(jumps: &[Sym]) -> Option<(usize, &Sym)> {
@@ -240,84 +197,10 @@ pub fn achieved(knots: &[KnotContinuity]) -> Option<Smoothness> {
         .min_by_key(Smoothness::rank)
 }
 
-/// Largest coefficient (in absolute value) whose divisors are enumerated.
-const DIVISOR_LIMIT: u64 = 1 << 40;
-
-/// The rational roots `v` of `p` in `var` such that `p(var := v)` vanishes
-/// identically in the other variables, sorted; `false` when some candidate
-/// divisors were not enumerated (coefficient beyond [`DIVISOR_LIMIT`]).
-pub fn rational_roots(p: &Poly, var: &str) -> (Vec<Rational>, bool) {
-    if p.is_zero() || p.degree_in(var) == 0 {
-        return (Vec::new(), true);
-    }
-    // one coefficient group (fixed monomial in the other variables) gives a
-    // univariate polynomial whose roots include every common root
-    let mut groups: HashMap<Monomial, BTreeMap<u32, Rational>> = HashMap::new();
-    for (m, q) in p.terms() {
-        let (rest, e) = m.split(var);
-        *groups.entry(rest).or_default().entry(e).or_default() += q;
-    }
-    let Some(group) = groups.values().max_by_key(|g| g.len()) else {
-        return (Vec::new(), true);
-    };
-    let lcm = group
-        .values()
-        .fold(Integer::from(1), |acc, q| acc.lcm(q.denom()));
-    let coeffs: BTreeMap<u32, Integer> = group
-        .iter()
-        .filter(|(_, q)| **q != 0)
-        .map(|(e, q)| (*e, (q.clone() * &lcm).numer().clone()))
-        .collect();
-    let (Some((&low_e, low)), Some((_, high))) = (coeffs.iter().next(), coeffs.iter().next_back())
-    else {
-        return (Vec::new(), true);
-    };
-    let mut candidates = Vec::new();
-    if low_e > 0 {
-        candidates.push(Rational::new());
-    }
-    let (num_div, ok1) = divisors(low);
-    let (den_div, ok2) = divisors(high);
-    for a in &num_div {
-        for b in &den_div {
-            let r = Rational::from((a.clone(), b.clone()));
-            candidates.push(r.clone());
-            candidates.push(-r);
-        }
-    }
-    candidates.sort();
-    candidates.dedup();
-    let roots = candidates
-        .into_iter()
-        .filter(|v| p.subs(var, &Poly::constant(v.clone())).is_zero())
-        .collect();
-    (roots, ok1 && ok2)
-}
-
-/// Positive divisors of `|n|` by trial division; `false` beyond the limit.
-fn divisors(n: &Integer) -> (Vec<Integer>, bool) {
-    let n = n.clone().abs();
-    let Some(small) = n.to_u64().filter(|v| *v <= DIVISOR_LIMIT) else {
-        return (vec![Integer::from(1)], false);
-    };
-    let mut out = Vec::new();
-    let mut d = 1u64;
-    while d * d <= small {
-        if small % d == 0 {
-            out.push(Integer::from(d));
-            out.push(Integer::from(small / d));
-        }
-        d += 1;
-    }
-    out.sort();
-    out.dedup();
-    (out, true)
-}
-
 /// The `n` pieces of the uniform B-spline basis function assembled from
 /// the `n` functions of `basis` (piece `k` is function `n − 1 − k`), unit
 /// knot spacing, derivatives in the global knot parameter.
-pub fn uniform_bspline<B: ExactBasis>(basis: &B, params: &[Sym]) -> Vec<Piece> {
+pub fn uniform_bspline<B: Basis>(basis: &B, params: &[Sym]) -> Vec<Piece> {
     let knots = knot_derivatives::<Sym, K>(basis, params, Wrt::U, &Sym::one());
     knots
         .windows(2)
@@ -511,7 +394,11 @@ fn scaled(f: &Jet<Sym, K>, rate: &Sym) -> Vec<Sym> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::exact::symbols;
+    use trig_symbolic::Poly;
+
+    fn symbols(prefix: &str, n: usize) -> Vec<Sym> {
+        (0..n).map(|i| Sym::var(&format!("{prefix}{i}"))).collect()
+    }
 
     #[test]
     fn uniform_cubic_bspline_is_exactly_c2_at_every_knot() {
