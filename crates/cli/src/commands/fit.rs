@@ -69,7 +69,8 @@ pub struct FitSetup {
     /// functions interpolating their end control points) instead of a family.
     #[arg(long, value_name = "FILE")]
     pub spec: Option<PathBuf>,
-    /// Shape parameter as name=value (default: 0.6 for every family, as the thesis).
+    /// Shape parameter as name=value, read exactly (a rational or a rational
+    /// multiple of pi such as alpha=pi/2; default: 0.6 for every family, as the thesis).
     #[arg(long = "param", value_name = "NAME=VALUE")]
     params: Vec<String>,
     /// Interval searched by --optimise.
@@ -187,8 +188,7 @@ fn fixed_params(subject: &AnyBasis, pairs: &[(String, String)]) -> Result<Vec<f6
         .params_from_pairs(&mine, false)
         .map_err(CliError::Core)?
         .iter()
-        // nearest (`Rational::to_f64` truncates: 1/20 would be 0.049999…)
-        .map(|q| rug::Float::with_val(53, q).to_f64())
+        .map(trig_core::Affine::to_f64)
         .collect())
 }
 

@@ -76,7 +76,8 @@ pub struct TableArgs {
     /// Numeric table from jets at the given --param values.
     #[arg(long)]
     numeric: bool,
-    /// Shape parameter for --numeric, as name=value.
+    /// Shape parameter for --numeric, as name=value (read exactly: a rational
+    /// or a rational multiple of pi such as alpha=pi/2).
     #[arg(long = "param", value_name = "NAME=VALUE", requires = "numeric")]
     params: Vec<String>,
     /// Certified MPFR interval arithmetic at this many bits for --numeric
@@ -230,11 +231,12 @@ fn numeric(
     let mut last = Vec::new();
     let mut enclose = |bits: u32| {
         let mk = |q: &Rational| Interval::from_rational(bits, q);
+        let zero = mk(&Rational::new());
         let blocks = build(
             args,
             family,
             wrt,
-            &p.iter().map(mk).collect::<Vec<_>>(),
+            &p.iter().map(|a| a.eval(&zero, &[])).collect::<Vec<_>>(),
             &mk(&h),
             None,
         )
@@ -250,7 +252,9 @@ fn numeric(
     let (blocks, arithmetic) = match mode {
         Mode::F64 => {
             let names = family.param_names();
-            for (name, q) in names.iter().zip(&p).chain([(&"--h".to_string(), &h)]) {
+            let parts = p.iter().flat_map(|a| [&a.constant, &a.pi]);
+            let named = names.iter().flat_map(|n| [n, n]).zip(parts);
+            for (name, q) in named.chain([(&"--h".to_string(), &h)]) {
                 certified::to_f64(q, name)
                     .map_err(|e| CliError::Usage(format!("{e} (use --digits N or --prec BITS)")))?;
             }
@@ -259,7 +263,7 @@ fn numeric(
                 args,
                 family,
                 wrt,
-                &p.iter().map(Rational::to_f64).collect::<Vec<_>>(),
+                &p.iter().map(|a| a.eval(&0.0, &[])).collect::<Vec<_>>(),
                 &h.to_f64(),
                 None,
             )
