@@ -102,7 +102,8 @@ pub struct FitArgs {
     /// Family id, or `all` for the six compared families (not with --spec).
     #[arg(long, default_value = "all")]
     family: String,
-    /// Also fit with the shape parameter optimised per segment (golden section).
+    /// Also fit with the shape parameter optimised per segment (golden section;
+    /// a basis with one shape parameter — with several, fit at fixed --param values).
     #[arg(long)]
     optimise: bool,
     #[command(flatten)]
