@@ -13,10 +13,14 @@
 //! product over `r = ±√k` up to sign, which vanishes at `p*` too. What is
 //! left is a polynomial in `p` alone with `p*` among its roots (when it is
 //! not identically zero): with a certified enclosure of `p*` that holds
-//! exactly one root of it, `p*` is that root — exact.
+//! exactly one root of it, `p*` is that root — exact ([`exact_root`]).
 
+use rug::Rational;
+use trig_core::Affine;
 use trig_symbolic::{Poly, Sym};
 
+use crate::algebraic::Algebraic;
+use crate::analytic_range::{ExactValue, Problem};
 use crate::resultant::resultant;
 use crate::sturm::UPoly;
 
@@ -82,10 +86,57 @@ pub fn stationary_polynomial(factor: &Sym, derivative: &Sym, param: &str) -> Opt
     UPoly::from_poly(&r, param)
 }
 
+/// Why an end found by [`exact_root`] is exact.
+pub const WHY: &str = "eliminating the variable from the end's two equations by resultants (z = tan(θ/2), each sqrt(k) as a root of r² − k) leaves a polynomial in the parameter; of its square-free factors only this one has a root in the certified enclosure of the end, so the end is that root";
+
+/// The root of a stationary end exactly: the end's parameter polynomial
+/// ([`stationary_polynomial`]), split into its square-free factors, with
+/// exactly one root among them all in the certified enclosure `(lo, hi)`
+/// (none at its ends) — the end, which is a root of it. Only for a pure
+/// trigonometric domain with constant ends whose angles lie in `(−π, π)`
+/// (so `cos θ ≠ −1` and `z = tan(θ/2)` is finite at the end's point), and
+/// a parameter axis in plain units.
+pub fn exact_root(
+    problem: &Problem<'_>,
+    factor: &Sym,
+    derivative: &Sym,
+    lo: &Rational,
+    hi: &Rational,
+) -> Option<ExactValue> {
+    let d = problem.domain;
+    if problem.pi || !d.is_pure_trigonometric() || !d.start.is_constant() || !d.end.is_constant() {
+        return None;
+    }
+    let rate = d.angle.as_ref()?;
+    let within = |x: &Affine| -> Option<bool> {
+        let theta = rate.times(x)?;
+        let pi = Affine::pi_times(Rational::from(1));
+        let below = trig_core::certified::affine_sign(&pi.plus(&theta.scale(&Rational::from(-1))));
+        let above = trig_core::certified::affine_sign(&pi.plus(&theta));
+        Some(below.ok()?.is_gt() && above.ok()?.is_gt())
+    };
+    if !(within(&d.start)? && within(&d.end)?) {
+        return None;
+    }
+    let p = stationary_polynomial(factor, derivative, &d.param_names[0])?;
+    let mut roots = Vec::new();
+    for (f, _) in p.squarefree_factors() {
+        if f.sign_at(lo) == 0 || f.sign_at(hi) == 0 {
+            return None;
+        }
+        roots.extend(f.isolate(lo, hi).into_iter().map(|iv| (f.clone(), iv)));
+    }
+    let [(f, (a, b))] = <[_; 1]>::try_from(roots).ok()?;
+    let root = Algebraic::new(&f, a, b);
+    Some(match &root.rational {
+        Some(q) => ExactValue::Rational(q.clone()),
+        None => ExactValue::Algebraic(root),
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use rug::Rational;
 
     #[test]
     fn the_end_of_a_half_angle_basis_is_a_root_of_its_quartic() {

@@ -469,7 +469,7 @@ pub fn certify_end(
                 value: value.clone(),
                 closed: true,
                 why: if matches!(equation, Equation::Stationary { .. }) {
-                    ELIMINATED.into()
+                    elimination::WHY.into()
                 } else {
                     "the equation of the end vanishes exactly there".into()
                 },
@@ -638,7 +638,7 @@ fn exact_root(
         Equation::EndValue { value, .. } => value,
         Equation::Stationary {
             factor, derivative, ..
-        } => return eliminated_root(problem, factor, derivative, lo, hi),
+        } => return elimination::exact_root(problem, factor, derivative, lo, hi),
     };
     let name = &problem.domain.param_names[0];
     if !problem.pi && f.variables().iter().all(|v| v == name) {
@@ -662,54 +662,6 @@ fn exact_root(
         .into_iter()
         .find(|v| exactly_at(problem, f, v).is_some_and(|x| x.is_zero()))
         .map(ExactValue::Rational)
-}
-
-/// Why an end found by [`eliminated_root`] is exact.
-const ELIMINATED: &str = "eliminating the variable from the end's two equations by resultants (z = tan(θ/2), each sqrt(k) as a root of r² − k) leaves a polynomial in the parameter; of its square-free factors only this one has a root in the certified enclosure of the end, so the end is that root";
-
-/// The root of a stationary end exactly: the end's parameter polynomial
-/// ([`crate::elimination`]), split into its square-free factors, with
-/// exactly one root among them all in the certified enclosure `(lo, hi)`
-/// (none at its ends) — the end, which is a root of it. Only for a pure
-/// trigonometric domain with constant ends whose angles lie in `(−π, π)`
-/// (so `cos θ ≠ −1` and `z = tan(θ/2)` is finite at the end's point), and
-/// a parameter axis in plain units.
-fn eliminated_root(
-    problem: &Problem<'_>,
-    factor: &Sym,
-    derivative: &Sym,
-    lo: &Rational,
-    hi: &Rational,
-) -> Option<ExactValue> {
-    let d = problem.domain;
-    if problem.pi || !d.is_pure_trigonometric() || !d.start.is_constant() || !d.end.is_constant() {
-        return None;
-    }
-    let rate = d.angle.as_ref()?;
-    let within = |x: &Affine| -> Option<bool> {
-        let theta = rate.times(x)?;
-        let pi = Affine::pi_times(Rational::from(1));
-        let below = trig_core::certified::affine_sign(&pi.plus(&theta.scale(&Rational::from(-1))));
-        let above = trig_core::certified::affine_sign(&pi.plus(&theta));
-        Some(below.ok()?.is_gt() && above.ok()?.is_gt())
-    };
-    if !(within(&d.start)? && within(&d.end)?) {
-        return None;
-    }
-    let p = elimination::stationary_polynomial(factor, derivative, &d.param_names[0])?;
-    let mut roots = Vec::new();
-    for (f, _) in p.squarefree_factors() {
-        if f.sign_at(lo) == 0 || f.sign_at(hi) == 0 {
-            return None;
-        }
-        roots.extend(f.isolate(lo, hi).into_iter().map(|iv| (f.clone(), iv)));
-    }
-    let [(f, (a, b))] = <[_; 1]>::try_from(roots).ok()?;
-    let root = Algebraic::new(&f, a, b);
-    Some(match &root.rational {
-        Some(q) => ExactValue::Rational(q.clone()),
-        None => ExactValue::Algebraic(root),
-    })
 }
 
 /// The conditions of the module docs on `P = [a, b]`.
