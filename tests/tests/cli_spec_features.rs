@@ -462,7 +462,8 @@ fn plot_takes_a_spec_file() {
 }
 
 /// `--param` reads rational multiples of π as ranges and `--at` do (C-curve
-/// papers use `α = π/2`), in every command that reads a parameter value.
+/// papers use `α = π/2`), in every command that reads a parameter value;
+/// an exact table at such a value keeps π symbolic.
 /// Expected digits from an independent evaluation of the closed form in
 /// mpmath at 50 digits (the formula in `examples/c-bezier-cubic.toml`'s
 /// header, cross-checked by quadrature of `b3 = ∫₀ᵗ(1 − cos s)ds /
@@ -512,6 +513,32 @@ fn parameters_may_be_rational_multiples_of_pi() {
         table.contains("| 3 | 0 ± ") && table.contains("| 1.75193839388411 |"),
         "{table}"
     );
+    // the exact table at α = π/2 keeps π symbolic: b3'''(0) = 2/(π − 2),
+    // b1''(0) = 4/((π − 2)(π − 4)) (the numeric table's −4.0818…); where
+    // sin α is not exact the exact table is refused with the reason
+    let exact = stdout_ok(&[
+        "table",
+        "--spec",
+        &cb,
+        "--param",
+        "alpha=pi/2",
+        "--order",
+        "3",
+        "--at",
+        "start",
+    ]);
+    assert!(exact.contains("exact at alpha=pi/2"), "{exact}");
+    assert!(
+        exact.contains("| 3 | 0 | −2/(π − 4) | 4/(π² − 6·π + 8) | 2/(π − 2) |"),
+        "{exact}"
+    );
+    for alpha in ["alpha=1", "alpha=pi/7"] {
+        let line = trig_e2e::error_line(&["table", "--spec", &cb, "--param", alpha]);
+        assert!(
+            line.contains("sin, cos of alpha is not exact there"),
+            "{line}"
+        );
+    }
     let just_below = stdout_ok(&[
         "eval",
         "--spec",
