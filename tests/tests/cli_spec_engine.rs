@@ -212,14 +212,17 @@ fn trigonometric_bernstein_quartic_ends_exactly_at_pi() {
 }
 
 #[test]
-fn half_angle_basis_lower_end_is_certified_at_minus_sqrt_of_one_plus_half_sqrt_two() {
-    // README C6: maximal [−√(1 + √2/2), 1] (−1.306562964876376…); the
-    // printed [−1, 1] is not maximal; [−3/2, 1] fails
+fn half_angle_basis_lower_end_is_exactly_minus_sqrt_of_one_plus_half_sqrt_two() {
+    // README C6: maximal [−√(1 + √2/2), 1] (−1.306562964876376…), the left
+    // end a root of 2λ⁴ − 4λ² + 1 (exact: found by eliminating t from the
+    // end's equations); the printed [−1, 1] is not maximal; [−3/2, 1] fails
     let hal = example("half-angle-lambda.toml");
     assert_eq!(verdict(&hal, "HAL-nonnegative"), "holds");
     let (v, e) = claim(&hal, "HAL-maximal");
     assert_eq!(v, "fails", "{e}");
-    let (lo, hi) = enclosure_after(&e, "λ ∈ [");
+    let root = "lower end the root of 2*λ^4 - 4*λ^2 + 1 = 0 in [";
+    assert!(e.contains("(exact; eliminating the variable"), "{e}");
+    let (lo, hi) = enclosure_after(&e, root);
     let end = Float::with_val(
         256,
         Float::parse("-1.306562964876376527856643173427").expect("d"),

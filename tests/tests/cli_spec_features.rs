@@ -460,3 +460,134 @@ fn plot_takes_a_spec_file() {
         ),
     ]);
 }
+
+/// `--param` reads rational multiples of π as ranges and `--at` do (C-curve
+/// papers use `α = π/2`), in every command that reads a parameter value;
+/// an exact table at such a value keeps π symbolic.
+/// Expected digits from an independent evaluation of the closed form in
+/// mpmath at 50 digits (the formula in `examples/c-bezier-cubic.toml`'s
+/// header, cross-checked by quadrature of `b3 = ∫₀ᵗ(1 − cos s)ds /
+/// ∫₀^α(1 − cos s)ds`): at `α = π/2`, `t = 1/3`. The f64 decimal nearest
+/// `π/2` is another parameter value (its 17th digit shows at 30 digits);
+/// the range `(0, π)` is decided against π's certified enclosures, so
+/// `π` (an open end), `7π` and a decimal just above π are refused and one
+/// just below is not.
+#[test]
+fn parameters_may_be_rational_multiples_of_pi() {
+    let cb = example("c-bezier-cubic.toml");
+    let eval = |alpha: &str| {
+        stdout_ok(&[
+            "eval", "--spec", &cb, "--param", alpha, "--at", "1/3", "--digits", "30",
+        ])
+    };
+    let half_pi = eval("alpha=pi/2");
+    for (name, digits) in [
+        ("b0", "5.12452574439799044135965365346e-1"),
+        ("b1", "3.73605210707087820988597238737e-1"),
+        ("b2", "1.03187701817525791051991535767e-1"),
+        ("b3", "1.07545130355873438234458601493e-2"),
+    ] {
+        assert!(
+            half_pi.contains(&format!("{name} = {digits}\n")),
+            "{half_pi}"
+        );
+    }
+    assert_eq!(eval("alpha=π/2"), half_pi.replace("pi/2", "π/2"));
+    let decimal = eval("alpha=1.5707963267948966");
+    assert!(decimal.contains("b0 = 5.1245257443979903"), "{decimal}");
+    assert!(!decimal.contains("b0 = 5.12452574439799044"), "{decimal}");
+    // the numeric table: b3'''(0) = 1/(α − sin α) = 1/(π/2 − 1)
+    let table = stdout_ok(&[
+        "table",
+        "--spec",
+        &cb,
+        "--numeric",
+        "--param",
+        "alpha=pi/2",
+        "--order",
+        "3",
+        "--digits",
+        "15",
+    ]);
+    assert!(
+        table.contains("| 3 | 0 ± ") && table.contains("| 1.75193839388411 |"),
+        "{table}"
+    );
+    // the exact table at α = π/2 keeps π symbolic: b3'''(0) = 2/(π − 2),
+    // b1''(0) = 4/((π − 2)(π − 4)) (the numeric table's −4.0818…); where
+    // sin α is not exact the exact table is refused with the reason
+    let exact = stdout_ok(&[
+        "table",
+        "--spec",
+        &cb,
+        "--param",
+        "alpha=pi/2",
+        "--order",
+        "3",
+        "--at",
+        "start",
+    ]);
+    assert!(exact.contains("exact at alpha=pi/2"), "{exact}");
+    assert!(
+        exact.contains("| 3 | 0 | −2/(π − 4) | 4/(π² − 6·π + 8) | 2/(π − 2) |"),
+        "{exact}"
+    );
+    for alpha in ["alpha=1", "alpha=pi/7"] {
+        let line = trig_e2e::error_line(&["table", "--spec", &cb, "--param", alpha]);
+        assert!(
+            line.contains("sin, cos of alpha is not exact there"),
+            "{line}"
+        );
+    }
+    let just_below = stdout_ok(&[
+        "eval",
+        "--spec",
+        &cb,
+        "--param",
+        "alpha=3.1415926",
+        "--at",
+        "1",
+    ]);
+    assert!(just_below.contains("b0 = "), "{just_below}");
+    let refused = |alpha: &str| {
+        trig_e2e::error_line(&["eval", "--spec", &cb, "--param", alpha, "--at", "1/3"])
+    };
+    for alpha in ["alpha=pi", "alpha=7*pi", "alpha=3.1415927", "alpha=-pi/2"] {
+        let line = refused(alpha);
+        assert!(
+            line.contains("outside the published range (0, pi)"),
+            "{line}"
+        );
+    }
+    assert!(refused("alpha=pi/x").contains("rational multiple of pi"));
+    // plot and fit read the same values: the basis is drawn over [0, π/2]
+    // and the fit at π/4 is the fit at the f64 nearest π/4
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cli_spec_features");
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let basis = dir.join("c-bezier-half-pi.svg");
+    written(&[
+        "plot",
+        "basis",
+        "--spec",
+        &cb,
+        "--values",
+        "pi/4,pi/2",
+        "--output",
+        &basis.display().to_string(),
+    ]);
+    let xs: Vec<f64> = figure_points(&basis, "\"b0, α = π/2")
+        .iter()
+        .map(|p| p.0)
+        .collect();
+    assert_eq!(
+        xs.iter().copied().fold(f64::NAN, f64::max),
+        std::f64::consts::FRAC_PI_2
+    );
+    let ain = glyph("ain.csv");
+    let fit = |alpha: &str| {
+        fit_totals(&[
+            "fit", "--spec", &cb, "--glyph", &ain, "--param", alpha, "--format", "csv",
+        ])
+    };
+    assert_eq!(fit("alpha=pi/4"), fit("alpha=0.7853981633974483"));
+}

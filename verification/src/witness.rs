@@ -208,14 +208,20 @@ pub fn ordered_names<'a>(exprs: impl IntoIterator<Item = &'a Sym>) -> Vec<String
 /// A witness that `left ≠ right`: a point where both sides are defined and
 /// differ ([`search`]), with the two values, labelled `labels.0`, `labels.1`.
 /// `None` when the identity holds at every point tried (the residual is
-/// then zero or exceptional; the caller shows it without a witness). While
-/// a spec decision runs, a real point ([`crate::real_witness`]).
+/// then zero or exceptional; the caller shows it without a witness), or
+/// when the variables are not independent ([`independent`]: a point valued
+/// one variable at a time would be no real point). While a spec decision
+/// runs, a real point ([`crate::real_witness`]).
 pub fn find(left: &Sym, right: &Sym, labels: (&str, &str)) -> Option<Witness> {
     // a spec basis: a real point, re-evaluated there
     if let Some(real) = crate::real_witness::find(left, right, labels) {
         return real;
     }
     let names = ordered_names([left, right]);
+    if !independent(&names) {
+        // no real point can be named by valuing these one by one
+        return None;
+    }
     let differ = |p: &Point| match (at(left, p), at(right, p)) {
         (Some(l), Some(r)) => !(l - &r).is_zero(),
         _ => false,
@@ -223,6 +229,19 @@ pub fn find(left: &Sym, right: &Sym, labels: (&str, &str)) -> Option<Witness> {
     let point = search(&names, &differ)?;
     let (l, r) = (at(left, &point)?, at(right, &point)?);
     Some(witness(&point, &names, vec![(labels.0, l), (labels.1, r)]))
+}
+
+/// True when valuing `names` one by one (as [`search`] does) names a real
+/// point: no atom that is a function of another variable or a constant —
+/// a parameter's `sin(alpha)`, `cos(alpha/2)`, `exp(beta)`, the variable's
+/// `E = exp(…)`, an algebraic `sqrt(2)` — and not the variable `t` beside
+/// `s = sin θ`, `c = cos θ` (alone, `s, c` are valued on the unit circle,
+/// which is a real θ). Such expressions get their witness at a real point
+/// of their basis ([`crate::real_witness`]) or none.
+fn independent(names: &[String]) -> bool {
+    let dependent = |n: &String| n.contains('(') || n == "E";
+    let has = |v: &str| names.iter().any(|n| n == v);
+    !names.iter().any(dependent) && !(has("t") && (has("s") || has("c")))
 }
 
 /// A witness from a point already chosen and values already computed.
@@ -311,5 +330,30 @@ mod tests {
                 .unwrap_or("")
                 .contains("π kept as a symbol")
         );
+    }
+
+    /// Variables that are functions of one another are never valued one by
+    /// one: `α = 1, cos(alpha) = 0`, `t = 0, s = 1` or `sqrt(2) = 2` would
+    /// be printed as a point although no real point has those values.
+    #[test]
+    fn dependent_atoms_get_no_point_valued_one_by_one() {
+        let (a, ca, t, s) = (
+            Sym::var("alpha"),
+            Sym::var("cos(alpha)"),
+            Sym::var("t"),
+            Sym::var("s"),
+        );
+        let one = Sym::one();
+        for x in [
+            a.clone() * &ca,
+            t.clone() - &s,
+            Sym::var("sqrt(2)") * &a,
+            Sym::var("E") - &one,
+        ] {
+            assert!(find(&x, &Sym::zero(), ("left", "right")).is_none(), "{x}");
+        }
+        // independent variables keep their witness: α·s ≠ 0 at α = 1, s = 1, c = 0
+        assert!(find(&(a * &s), &Sym::zero(), ("left", "right")).is_some());
+        assert!(find(&(t - &one), &Sym::zero(), ("left", "right")).is_some());
     }
 }

@@ -27,6 +27,7 @@ pub mod branch;
 pub mod coordinates;
 pub mod domain;
 pub mod elementary;
+pub mod elimination;
 pub mod enclosure;
 pub mod exp_half_line;
 pub mod factors;

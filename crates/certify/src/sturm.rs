@@ -202,6 +202,42 @@ impl UPoly {
         self.div_rem(&g).0
     }
 
+    /// The square-free decomposition (Yun): `(fᵢ, i)` with `p = c·∏ fᵢⁱ`,
+    /// each `fᵢ` square-free and the `fᵢ` pairwise coprime, so a root of
+    /// `p` is a root of exactly one `fᵢ`; constant factors left out.
+    pub fn squarefree_factors(&self) -> Vec<(UPoly, u32)> {
+        let mut out = Vec::new();
+        if self.degree() == 0 {
+            return out;
+        }
+        let d = self.derivative();
+        let a = self.gcd(&d);
+        let mut b = self.div_rem(&a).0;
+        let mut c = d.div_rem(&a).0;
+        let mut i = 1;
+        loop {
+            let next = c.sub(&b.derivative());
+            let g = b.gcd(&next);
+            if g.degree() > 0 {
+                out.push((g.clone(), i));
+            }
+            b = b.div_rem(&g).0;
+            if b.degree() == 0 {
+                break;
+            }
+            c = next.div_rem(&g).0;
+            i += 1;
+        }
+        out
+    }
+
+    /// `self − other`.
+    fn sub(&self, other: &UPoly) -> UPoly {
+        let n = self.0.len().max(other.0.len());
+        let get = |v: &[Rational], k: usize| v.get(k).cloned().unwrap_or_default();
+        UPoly::new((0..n).map(|k| get(&self.0, k) - get(&other.0, k)).collect())
+    }
+
     /// The Sturm sequence `p, p', −rem(p, p'), …`.
     pub fn sturm_sequence(&self) -> Vec<UPoly> {
         let mut seq = vec![self.clone(), self.derivative()];
@@ -292,6 +328,28 @@ mod tests {
             let lin = UPoly::new(vec![-r.clone(), q(1, 1)]);
             acc.mul(&lin)
         })
+    }
+
+    /// `x⁴(x² − 2)⁷(2x⁴ − 4x² + 1)` (the half-angle basis's elimination
+    /// polynomial) splits into `x` (4), `x² − 2` (7), `x⁴ − 2x² + 1/2` (1).
+    #[test]
+    fn squarefree_factors_separate_the_multiplicities() {
+        let x2m2 = UPoly::new(vec![q(-2, 1), q(0, 1), q(1, 1)]);
+        let quartic = UPoly::new(vec![q(1, 1), q(0, 1), q(-4, 1), q(0, 1), q(2, 1)]);
+        let x = UPoly::new(vec![q(0, 1), q(1, 1)]);
+        let pow = |p: &UPoly, n: u32| (0..n).fold(UPoly::new(vec![q(1, 1)]), |a, _| a.mul(p));
+        let p = pow(&x, 4)
+            .mul(&pow(&x2m2, 7))
+            .mul(&quartic)
+            .mul(&UPoly::new(vec![q(-3, 1)]));
+        let factors = p.squarefree_factors();
+        let monic = |p: &UPoly| p.monic();
+        assert_eq!(
+            factors,
+            vec![(monic(&quartic), 1), (x, 4), (x2m2, 7)],
+            "{factors:?}"
+        );
+        assert!(UPoly::new(vec![q(5, 1)]).squarefree_factors().is_empty());
     }
 
     #[test]

@@ -43,6 +43,7 @@ use crate::analytic_range::{End, ExactValue, Outside, Problem, Witness};
 use crate::atoms::{d_param, d_variable, param_atoms, value};
 use crate::branch::{self, Outcome};
 use crate::coordinates::{BoxFunction, Coordinates};
+use crate::elimination;
 use crate::factors::{self, Sign};
 use crate::krawczyk::{Cell, System};
 use crate::range::simplest_between;
@@ -467,7 +468,11 @@ pub fn certify_end(
             Some(value) => End::Exact {
                 value: value.clone(),
                 closed: true,
-                why: "the equation of the end vanishes exactly there".into(),
+                why: if matches!(equation, Equation::Stationary { .. }) {
+                    elimination::WHY.into()
+                } else {
+                    "the equation of the end vanishes exactly there".into()
+                },
                 inside,
                 outside: Some(witness),
             },
@@ -631,7 +636,9 @@ fn exact_root(
     let f = match equation {
         Equation::Parameter { factor, .. } => factor,
         Equation::EndValue { value, .. } => value,
-        Equation::Stationary { .. } => return None,
+        Equation::Stationary {
+            factor, derivative, ..
+        } => return elimination::exact_root(problem, factor, derivative, lo, hi),
     };
     let name = &problem.domain.param_names[0];
     if !problem.pi && f.variables().iter().all(|v| v == name) {

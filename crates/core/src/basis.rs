@@ -6,7 +6,7 @@
 
 use rug::Rational;
 
-use crate::domain::Domain;
+use crate::domain::{Affine, Domain};
 use crate::error::{CoreError, Result};
 use crate::param::{Parameter, read_params};
 use crate::scalar::{Real, Ring};
@@ -63,7 +63,7 @@ pub trait Described {
         &self,
         pairs: &[(String, String)],
         allow_outside: bool,
-    ) -> Result<Vec<Rational>> {
+    ) -> Result<Vec<Affine>> {
         read_params(&self.id(), &self.parameters(), pairs, allow_outside)
     }
 }
@@ -126,7 +126,7 @@ impl<D: Described + ?Sized> Described for &D {
         &self,
         pairs: &[(String, String)],
         allow_outside: bool,
-    ) -> Result<Vec<Rational>> {
+    ) -> Result<Vec<Affine>> {
         (**self).params_from_pairs(pairs, allow_outside)
     }
 }

@@ -272,14 +272,14 @@ pub fn affine_sign(a: &Affine) -> Result<Ordering> {
 /// Whether the exact point `x` (a rational or a rational multiple of π)
 /// lies in `domain` for the exact parameters `params`: the differences to
 /// the ends, `x − a` and `b − x`, decided exactly by [`affine_sign`].
-pub fn domain_contains(domain: &Domain, x: &Affine, params: &[Rational]) -> Result<bool> {
+pub fn domain_contains(domain: &Domain, x: &Affine, params: &[Affine]) -> Result<bool> {
     let minus = |a: &Affine, b: &Affine| a.plus(&b.scale(&Rational::from(-1))).at(params);
     Ok(affine_sign(&minus(x, &domain.start))? != Ordering::Less
         && affine_sign(&minus(&domain.end, x))? != Ordering::Less)
 }
 
 /// Checks the exact point `x` (as typed: `input`) against `domain`.
-pub fn check_domain(domain: &Domain, x: &Affine, params: &[Rational], input: &str) -> Result<()> {
+pub fn check_domain(domain: &Domain, x: &Affine, params: &[Affine], input: &str) -> Result<()> {
     if domain_contains(domain, x, params)? {
         Ok(())
     } else {

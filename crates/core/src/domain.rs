@@ -93,6 +93,19 @@ impl Affine {
         v
     }
 
+    /// The f64 nearest `q₀ + q_π·π` (parameters ignored: callers pass
+    /// values; a multiple of π from a 128-bit MPFR evaluation) — for
+    /// drawing and fitting, never for a decision.
+    pub fn to_f64(&self) -> f64 {
+        if self.pi == 0 {
+            // nearest (`Rational::to_f64` truncates: 1/20 would be 0.049999…)
+            return rug::Float::with_val(53, &self.constant).to_f64();
+        }
+        let pi = rug::Float::with_val(128, rug::float::Constant::Pi);
+        let v = rug::Float::with_val(128, &self.constant) + pi * &self.pi;
+        v.to_f64()
+    }
+
     /// `self·q`.
     pub fn scale(&self, q: &Rational) -> Affine {
         let mul = |x: &Rational| Rational::from(x * q);
@@ -134,17 +147,20 @@ impl Affine {
         out
     }
 
-    /// The value for the exact parameters `params`: `q₀ + q_π·π`.
-    pub fn at(&self, params: &[Rational]) -> Affine {
-        let mut constant = self.constant.clone();
-        for (i, q) in &self.params {
-            constant += Rational::from(q * &params[*i]);
-        }
-        Affine {
-            constant,
+    /// The value for the exact parameter values `params` (each `q₀ + q_π·π`,
+    /// as [`crate::parse_point`] reads them): again `q₀ + q_π·π`.
+    pub fn at(&self, params: &[Affine]) -> Affine {
+        let mut out = Affine {
+            constant: self.constant.clone(),
             pi: self.pi.clone(),
             params: Vec::new(),
+        };
+        for (i, q) in &self.params {
+            let p = &params[*i];
+            out.constant += Rational::from(q * &p.constant);
+            out.pi += Rational::from(q * &p.pi);
         }
+        out
     }
 
     /// As printed, with the parameters named (`pi/2`, `2*alpha - 1`).

@@ -4,7 +4,7 @@
 use rug::Rational;
 
 use crate::basis::{Basis, Described};
-use crate::domain::Domain;
+use crate::domain::{Affine, Domain};
 use crate::error::{CoreError, Result};
 use crate::families::{reference, seed000, seed002, seed004, thesis};
 use crate::param::{Bound, ParamSpec, Parameter, Range, read_params};
@@ -460,7 +460,7 @@ impl Described for Family {
         &self,
         pairs: &[(String, String)],
         allow_outside: bool,
-    ) -> Result<Vec<Rational>> {
+    ) -> Result<Vec<Affine>> {
         if !self.has_formulas() {
             return Err(CoreError::NoFormulas(self.info().id.to_string()));
         }
@@ -618,7 +618,7 @@ mod tests {
             cubic
                 .params_from_pairs(&pairs(&[("m", "0.6")]), false)
                 .unwrap(),
-            vec![Rational::from((3, 5))]
+            vec![Affine::rational(Rational::from((3, 5)))]
         );
         assert!(matches!(
             cubic.params_from_pairs(&pairs(&[("m", "1.5")]), false),

@@ -4,9 +4,10 @@ use std::fmt;
 
 use rug::Rational;
 
+use crate::domain::Affine;
 use crate::echo::echo;
 use crate::error::{CoreError, Result};
-use crate::number::parse_exact;
+use crate::number::parse_point;
 use crate::range::{End, ParamRange};
 
 /// One end of a parameter range.
@@ -119,15 +120,18 @@ pub struct Parameter {
 }
 
 /// Reads `name=value` pairs (a parameter's name or printed symbol; the
-/// last pair of a name wins) into exact values in the order of `params`,
-/// checking names and, unless `allow_outside`, the published ranges; `id`
-/// names the basis in errors.
+/// last pair of a name wins) into exact values in the order of `params`:
+/// a rational or a rational multiple of π (`alpha=pi/2`, read as
+/// [`parse_point`] reads a point, no parameter left in it). Checks names
+/// and, unless `allow_outside`, the published ranges — exactly, or for a
+/// multiple of π against a rational end by certified enclosures of π;
+/// `id` names the basis in errors.
 pub fn read_params(
     id: &str,
     params: &[Parameter],
     pairs: &[(String, String)],
     allow_outside: bool,
-) -> Result<Vec<Rational>> {
+) -> Result<Vec<Affine>> {
     for (name, _) in pairs {
         if !params.iter().any(|p| &p.name == name || &p.symbol == name) {
             let expected = if params.is_empty() {
@@ -157,8 +161,8 @@ pub fn read_params(
                     family: id.into(),
                     name: spec.name.clone(),
                 })?;
-            let value = parse_exact(text)?;
-            if !allow_outside && !spec.range.contains(&value) {
+            let value = parse_point(text)?;
+            if !allow_outside && !spec.range.contains_value(&value)? {
                 return Err(CoreError::OutOfRange {
                     family: id.into(),
                     name: spec.name.clone(),

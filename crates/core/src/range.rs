@@ -6,6 +6,8 @@
 
 use std::fmt;
 
+use crate::certified::affine_sign;
+use crate::domain::Affine;
 use crate::number::parse_exact;
 use rug::Rational;
 
@@ -168,6 +170,35 @@ impl ParamRange {
         above && below
     }
 
+    /// Whether the exact value `x = q₀ + q_π·π` (a parameter value as
+    /// [`crate::parse_point`] reads it) lies in the range: the sign of
+    /// `x − end` decided exactly when no π is left, else by certified
+    /// enclosures of π ([`crate::certified::affine_sign`]; `q₀ + q·π ≠ 0`
+    /// for `q ≠ 0`, π being irrational).
+    pub fn contains_value(&self, x: &Affine) -> crate::Result<bool> {
+        use std::cmp::Ordering::{Equal, Greater, Less};
+        let minus = |q: &Rational| {
+            let mut d = x.clone();
+            if self.pi {
+                d.pi -= q;
+            } else {
+                d.constant -= q;
+            }
+            affine_sign(&d)
+        };
+        let above = match &self.lo {
+            End::Closed(q) => matches!(minus(q)?, Greater | Equal),
+            End::Open(q) => minus(q)? == Greater,
+            End::Unbounded => true,
+        };
+        let below = match &self.hi {
+            End::Closed(q) => matches!(minus(q)?, Less | Equal),
+            End::Open(q) => minus(q)? == Less,
+            End::Unbounded => true,
+        };
+        Ok(above && below)
+    }
+
     /// The sign of `x − end` for an end `q` (`q·π` in a range in
     /// multiples of π).
     fn compare(&self, x: &Rational, q: &Rational) -> std::cmp::Ordering {
@@ -285,5 +316,32 @@ mod tests {
             ParamRange::parse("[-pi/2, 2π]").unwrap().to_string(),
             "[-1*pi/2, 2*pi]"
         );
+    }
+
+    /// Parameter values that are multiples of π, against ranges in
+    /// multiples of π (exact: `π/2 < π`, the open end `π` excluded) and
+    /// against rational ends (by enclosures of π: `π/2 ∈ [1, 1.5708]`,
+    /// `π/2 ∉ [1, 1.5707]`, `π ∉ [−2, 3.14159]`).
+    #[test]
+    fn multiples_of_pi_are_placed_against_both_kinds_of_range() {
+        let at = |text: &str| crate::parse_point(text).unwrap();
+        let inside = |range: &str, x: &str| {
+            ParamRange::parse(range)
+                .unwrap()
+                .contains_value(&at(x))
+                .unwrap()
+        };
+        assert!(inside("(0, pi)", "pi/2"));
+        assert!(!inside("(0, pi)", "pi"));
+        assert!(inside("(0, pi]", "pi"));
+        assert!(!inside("(0, pi)", "7*pi"));
+        assert!(!inside("(0, pi)", "0*pi"));
+        assert!(inside("(0, pi)", "3.1415926"));
+        assert!(!inside("(0, pi)", "3.1415927"));
+        assert!(inside("[1, 1.5708]", "pi/2"));
+        assert!(!inside("[1, 1.5707]", "pi/2"));
+        assert!(!inside("[-2, 3.14159]", "pi"));
+        assert!(inside("[-2, 3.1416]", "-pi/2"));
+        assert!(inside("[1/2, 2]", "3/4"));
     }
 }

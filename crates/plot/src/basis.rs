@@ -1,7 +1,7 @@
 //! The functions of a basis (a catalog family or a spec file's) for several values of its shape parameter
 //! (thesis Figures 3.1, 3.6, 6.2), alone or against another basis.
 
-use rug::Rational;
+use trig_core::Affine;
 
 use crate::chart::{Frame, Look, Mark, Series};
 use crate::error::{PlotError, Result};
@@ -57,7 +57,7 @@ fn picture(title: String, plots: &[&Plotted]) -> Result<Picture> {
     let mut series = Vec::new();
     for (p, plot) in plots.iter().enumerate() {
         // (index of the first setting, the settings drawn together, curves)
-        let mut groups: Vec<(usize, Vec<Vec<Rational>>, Curves)> = Vec::new();
+        let mut groups: Vec<(usize, Vec<Vec<Affine>>, Curves)> = Vec::new();
         for (k, s) in plot.settings.iter().enumerate() {
             // function-major: one slice of SAMPLES values per function
             let (xs, values) = plot.sample(s, SAMPLES)?;

@@ -5,7 +5,7 @@
 use std::sync::Arc;
 
 use rug::Rational;
-use trig_core::{Batch, Described, Family, Variable};
+use trig_core::{Affine, Batch, Described, Family, Variable};
 use trig_fit::NumericBasis;
 
 use crate::error::{PlotError, Result};
@@ -24,7 +24,7 @@ pub struct Plotted {
     /// The axis label of the basis's variable.
     pub variable: String,
     /// The parameter values of each setting (exact, already checked).
-    pub settings: Vec<Vec<Rational>>,
+    pub settings: Vec<Vec<Affine>>,
 }
 
 impl Plotted {
@@ -34,7 +34,7 @@ impl Plotted {
     /// errors.
     pub fn family(
         family: Family,
-        values: &[Rational],
+        values: &[Affine],
         allow_outside: bool,
         what: &str,
     ) -> Result<Plotted> {
@@ -45,7 +45,7 @@ impl Plotted {
                 .params
                 .iter()
                 .zip(s)
-                .map(|(p, v)| (p.name.to_string(), v.to_string()))
+                .map(|(p, v)| (p.name.to_string(), v.text(&[])))
                 .collect();
             family.params_from_pairs(&pairs, allow_outside)?;
         }
@@ -67,10 +67,13 @@ impl Plotted {
 
     /// The legend text of settings drawn together (`λ = 0, 1`), or the
     /// function names for a basis without parameters.
-    pub fn label(&self, same: &[Vec<Rational>]) -> String {
+    pub fn label(&self, same: &[Vec<Affine>]) -> String {
         match &self.symbol {
             Some(p) if !same[0].is_empty() => {
-                let vals: Vec<String> = same.iter().map(|s| s[0].to_string()).collect();
+                let vals: Vec<String> = same
+                    .iter()
+                    .map(|s| s[0].text(&[]).replace("pi", "π"))
+                    .collect();
                 format!("{p} = {}", vals.join(", "))
             }
             _ => self.functions.join(", "),
@@ -81,11 +84,8 @@ impl Plotted {
     /// `xᵢ` and the values, function-major (`b_k(xᵢ)` at `k·samples + i`).
     /// A catalog family goes through [`Batch`] (with its checks); any other
     /// basis point by point, a non-finite value being an error.
-    pub fn sample(&self, setting: &[Rational], samples: usize) -> Result<(Vec<f64>, Vec<f64>)> {
-        let params: Vec<f64> = setting
-            .iter()
-            .map(|q| rug::Float::with_val(53, q).to_f64())
-            .collect();
+    pub fn sample(&self, setting: &[Affine], samples: usize) -> Result<(Vec<f64>, Vec<f64>)> {
+        let params: Vec<f64> = setting.iter().map(Affine::to_f64).collect();
         let domain = self.basis.basis_domain();
         let (a, b) = (
             domain.start_value(&0.0, &params),
@@ -100,8 +100,12 @@ impl Plotted {
         let xs: Vec<f64> = (0..samples)
             .map(|i| a + (b - a) * i as f64 / (samples - 1) as f64)
             .collect();
-        if let Some(family) = self.basis.as_family() {
-            let values = Batch::new(family, setting, &0.0, true)?.eval(&xs)?;
+        // a catalog family at rational parameters through its batch; at a
+        // multiple of π point by point like any other basis
+        let rational: Option<Vec<Rational>> =
+            setting.iter().map(|a| a.as_rational().cloned()).collect();
+        if let (Some(family), Some(rational)) = (self.basis.as_family(), rational) {
+            let values = Batch::new(family, &rational, &0.0, true)?.eval(&xs)?;
             return Ok((xs, values));
         }
         let n = self.functions.len();

@@ -2,8 +2,7 @@
 //! colours, the bounding box with a margin, equal scales, and the
 //! parameter values a plot varies.
 
-use rug::Rational;
-use trig_core::FamilyInfo;
+use trig_core::{Affine, FamilyInfo};
 
 use crate::error::{PlotError, Result};
 
@@ -115,7 +114,7 @@ pub fn equal_aspect(x: (f64, f64), y: (f64, f64)) -> ((f64, f64), (f64, f64)) {
 /// The parameter settings a plot of `info` draws, one per value in `values`
 /// (one empty setting for a family without parameters); `what` names the
 /// plot in the error for families with several parameters.
-pub fn settings(info: &FamilyInfo, values: &[Rational], what: &str) -> Result<Vec<Vec<Rational>>> {
+pub fn settings(info: &FamilyInfo, values: &[Affine], what: &str) -> Result<Vec<Vec<Affine>>> {
     match info.params.len() {
         0 => Ok(vec![vec![]]),
         1 if !values.is_empty() => Ok(values.iter().map(|v| vec![v.clone()]).collect()),

@@ -6,8 +6,7 @@ use std::sync::Arc;
 
 use std::path::PathBuf;
 
-use rug::Rational;
-use trig_core::Family;
+use trig_core::{Affine, Family};
 use trig_fit::{Continuity, CornerRule, Corners, FitOptions, Outline, Shape, fit_outline};
 use trig_plot::{
     Interpolant, Plotted, basis_svg, basis_versus_svg, curve_svg, fit_svg, interp_svg,
@@ -39,8 +38,8 @@ fn census(svg: &str) -> (usize, usize, Vec<String>) {
     (curves, markers, texts)
 }
 
-fn r(s: &str) -> Rational {
-    s.parse().unwrap()
+fn r(s: &str) -> Affine {
+    Affine::rational(s.parse().unwrap())
 }
 
 #[test]

@@ -141,7 +141,7 @@ impl Described for AnyBasis {
         &self,
         pairs: &[(String, String)],
         allow_outside: bool,
-    ) -> trig_core::Result<Vec<rug::Rational>> {
+    ) -> trig_core::Result<Vec<trig_core::Affine>> {
         self.inner().params_from_pairs(pairs, allow_outside)
     }
 }

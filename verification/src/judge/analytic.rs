@@ -19,7 +19,7 @@ use crate::exact::ExactBasis;
 use crate::status::Status;
 
 /// The analytic engine, as the report states it.
-pub const ANALYTIC: &str = "the maximal interval by the analytic engine: a grid of certified point tests from a value inside the printed range and bisection bracket each end; an end is exact where the basis is undefined or its equation vanishes exactly, certified where a Krawczyk step proves the unique root of the equation of the end (the factor that changes sign, at the end of the domain or at a stationary minimum) and branch and bound proves that admissibility changes exactly there, a bracket otherwise; the part inside the ends is proved as a whole";
+pub const ANALYTIC: &str = "the maximal interval by the analytic engine: a grid of certified point tests from a value inside the printed range and bisection bracket each end; an end is exact where the basis is undefined or its equation vanishes exactly, or where, at a stationary minimum of a trigonometric basis, eliminating the variable by resultants leaves exactly one root in the certified enclosure of the end, certified where a Krawczyk step proves the unique root of the equation of the end (the factor that changes sign, at the end of the domain or at a stationary minimum) and branch and bound proves that admissibility changes exactly there, a bracket otherwise; the part inside the ends is proved as a whole";
 
 /// The decision for one printed end against the maximal interval.
 #[derive(Debug)]

@@ -39,7 +39,8 @@ pub struct EvalArgs {
     /// A spec file (TOML) defining the basis instead of a catalog family (docs/spec.md).
     #[arg(long, value_name = "FILE")]
     spec: Option<std::path::PathBuf>,
-    /// Shape parameter as name=value (decimals are read exactly: 0.6 = 3/5).
+    /// Shape parameter as name=value, read exactly: 0.6 = 3/5, or a rational
+    /// multiple of pi such as alpha=pi/2 (range checks proved).
     #[arg(long = "param", value_name = "NAME=VALUE")]
     params: Vec<String>,
     /// Point in the family's native variable (with --piecewise or --knots: the
@@ -100,13 +101,14 @@ enum Problem {
         subject: AnyBasis,
         /// The point: a rational or a rational multiple of π.
         x: Affine,
-        params: Vec<Rational>,
+        /// Each a rational or a rational multiple of π.
+        params: Vec<Affine>,
     },
     Piecewise {
         family: Family,
         piece: usize,
         local: Rational,
-        params: Vec<Rational>,
+        params: Vec<Affine>,
     },
     NonUniform {
         knots: Vec<Rational>,
@@ -119,8 +121,12 @@ enum Problem {
 impl Problem {
     /// The exact inputs with their names (checked to fit f64 in f64 mode).
     fn inputs<'a>(&'a self, names: &[String], at: &str) -> Vec<(String, &'a Rational)> {
-        let named = |params: &'a [Rational]| -> Vec<(String, &'a Rational)> {
-            names.iter().cloned().zip(params.iter()).collect()
+        let named = |params: &'a [Affine]| -> Vec<(String, &'a Rational)> {
+            names
+                .iter()
+                .zip(params)
+                .flat_map(|(n, p)| [(n.clone(), &p.constant), (n.clone(), &p.pi)])
+                .collect()
         };
         match self {
             Problem::Basis { x, params, .. } => {
@@ -143,8 +149,9 @@ impl Problem {
     fn compute<T: Real>(&self, make: &dyn Fn(&Rational) -> T) -> Result<Vec<T>, CoreError> {
         match self {
             Problem::Basis { subject, x, params } => {
-                let x = x.eval(&make(&Rational::new()), &[]);
-                let p: Vec<T> = params.iter().map(make).collect();
+                let zero = make(&Rational::new());
+                let x = x.eval(&zero, &[]);
+                let p: Vec<T> = params.iter().map(|a| a.eval(&zero, &[])).collect();
                 Ok(subject.eval(&subject.domain().atoms(&x), &p))
             }
             Problem::Piecewise {
@@ -155,7 +162,7 @@ impl Problem {
             } => {
                 let local = make(local);
                 let x = local.clone() * &family.info().variable.end(&local);
-                let p: Vec<T> = params.iter().map(make).collect();
+                let p: Vec<T> = params.iter().map(|a| a.eval(&local, &[])).collect();
                 let values = family.eval(&family.info().variable.atoms(&x), &p);
                 Ok(vec![values[piecewise::segment_function(*piece)].clone()])
             }
@@ -509,6 +516,13 @@ fn nonuniform(
     let zeta = Family::Seed000Uniform
         .params_from_pairs(pairs, args.allow_outside_range)
         .map_err(range_hint)?;
+    // the printed coefficients are checked exactly in ζ: a rational
+    let zeta = zeta[0].as_rational().cloned().ok_or_else(|| {
+        CliError::Usage(format!(
+            "{}: zeta must be rational (the span's denominators are decided exactly in ζ)",
+            info.id
+        ))
+    })?;
     if args.knots.len() > MAX_KNOTS {
         return Err(CoreError::Limit {
             what: format!("--knots with {} knots", args.knots.len()),
@@ -527,14 +541,14 @@ fn nonuniform(
     // is named (a division by zero), one that does not is then proved
     // nonzero by enclosures at a high enough precision.
     let sym = |q: &Rational| Sym::rational(q.clone());
-    NonUniform::new(knots.iter().map(sym).collect(), sym(&zeta[0])).span(span as i64)?;
+    NonUniform::new(knots.iter().map(sym).collect(), sym(&zeta)).span(span as i64)?;
     let note = format!("span j = {span}, local angle t_j = ({local})·π/2");
     Ok(Setup {
         problem: Problem::NonUniform {
             knots,
             span,
             local,
-            zeta: zeta.into_iter().next().expect("seed 000 has one parameter"),
+            zeta,
         },
         id: info.id.to_string(),
         citation: info.citation.to_string(),

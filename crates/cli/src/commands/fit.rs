@@ -69,7 +69,8 @@ pub struct FitSetup {
     /// functions interpolating their end control points) instead of a family.
     #[arg(long, value_name = "FILE")]
     pub spec: Option<PathBuf>,
-    /// Shape parameter as name=value (default: 0.6 for every family, as the thesis).
+    /// Shape parameter as name=value, read exactly (a rational or a rational
+    /// multiple of pi such as alpha=pi/2; default: 0.6 for every family, as the thesis).
     #[arg(long = "param", value_name = "NAME=VALUE")]
     params: Vec<String>,
     /// Interval searched by --optimise.
@@ -101,7 +102,8 @@ pub struct FitArgs {
     /// Family id, or `all` for the six compared families (not with --spec).
     #[arg(long, default_value = "all")]
     family: String,
-    /// Also fit with the shape parameter optimised per segment (golden section).
+    /// Also fit with the shape parameter optimised per segment (golden section;
+    /// a basis with one shape parameter — with several, fit at fixed --param values).
     #[arg(long)]
     optimise: bool,
     #[command(flatten)]
@@ -187,8 +189,7 @@ fn fixed_params(subject: &AnyBasis, pairs: &[(String, String)]) -> Result<Vec<f6
         .params_from_pairs(&mine, false)
         .map_err(CliError::Core)?
         .iter()
-        // nearest (`Rational::to_f64` truncates: 1/20 would be 0.049999…)
-        .map(|q| rug::Float::with_val(53, q).to_f64())
+        .map(trig_core::Affine::to_f64)
         .collect())
 }
 

@@ -9,7 +9,7 @@ use rug::Rational;
 use trig_certify::ParamBox;
 use trig_certify::region::CellKind;
 use trig_core::End as SpecEnd;
-use trig_core::{Bound, Described, parse_exact};
+use trig_core::{Affine, Bound, Described, parse_exact, parse_point};
 use trig_interp::{DataSet, Scheme, Variant, f64_segments};
 use trig_plot::{
     Interpolant, Picture, Plotted, RegionCell, RegionKind, basis_svg, basis_versus_svg, curve_svg,
@@ -105,9 +105,10 @@ struct Values {
     /// Draw the basis of this spec file (TOML, docs/spec.md) instead of a family.
     #[arg(long, value_name = "FILE")]
     spec: Option<PathBuf>,
-    /// Parameter values, comma separated (read exactly); default: five
-    /// values evenly spread over the published range (open ends left out)
-    /// when it is bounded with rational ends; otherwise give them.
+    /// Parameter values, comma separated (read exactly: rationals, or
+    /// rational multiples of pi such as pi/2); default: five values evenly
+    /// spread over the published range (open ends left out) when it is
+    /// bounded with rational ends; otherwise give them.
     #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
     values: Vec<String>,
     /// Allow values outside the published range.
@@ -115,19 +116,20 @@ struct Values {
     allow_outside_range: bool,
 }
 
-/// The values to draw: given, or `lo + k·w/4`, `k = 0..4`, without open
-/// ends, for a range `[lo, hi]` given by its ends `(value, open)` (`None`:
-/// unbounded, or not rational).
+/// The values to draw: given (rationals or rational multiples of π, read
+/// exactly), or `lo + k·w/4`, `k = 0..4`, without open ends, for a range
+/// `[lo, hi]` given by its ends `(value, open)` (`None`: unbounded, or in
+/// multiples of π).
 fn values(
     given: &[String],
     name: &str,
-    lo: Option<(Rational, bool)>,
-    hi: Option<(Rational, bool)>,
-) -> Result<Vec<Rational>, CliError> {
+    lo: Option<(Affine, bool)>,
+    hi: Option<(Affine, bool)>,
+) -> Result<Vec<Affine>, CliError> {
     if !given.is_empty() {
         return Ok(given
             .iter()
-            .map(|v| parse_exact(v))
+            .map(|v| parse_point(v))
             .collect::<Result<_, _>>()?);
     }
     let (Some((lo, lo_open)), Some((hi, hi_open))) = (lo, hi) else {
@@ -135,10 +137,12 @@ fn values(
             "the range of {name} is unbounded (or in multiples of pi): give --values"
         )));
     };
-    let w = (hi - &lo) / 4u32;
+    let w = hi
+        .plus(&lo.scale(&Rational::from(-1)))
+        .scale(&Rational::from((1, 4)));
     Ok((0..=4u32)
         .filter(|&k| !(k == 0 && lo_open || k == 4 && hi_open))
-        .map(|k| lo.clone() + w.clone() * k)
+        .map(|k| lo.plus(&w.scale(&Rational::from(k))))
         .collect())
 }
 
@@ -151,25 +155,28 @@ fn plotted(family: Option<&str>, v: &Values, what: &str) -> Result<Plotted, CliE
             let vals = match family.info().params.first() {
                 None => Vec::new(),
                 Some(p) => {
-                    let end = |b: Bound| b.value().map(|q| (q, matches!(b, Bound::Open(..))));
+                    let end = |b: Bound| {
+                        b.value()
+                            .map(|q| (Affine::rational(q), matches!(b, Bound::Open(..))))
+                    };
                     values(&v.values, p.name, end(p.range.lo), end(p.range.hi))?
                 }
             };
             Plotted::family(family, &vals, v.allow_outside_range, what).map_err(plot_err_hinted)
         }
         AnyBasis::Spec(spec) => {
-            let settings: Vec<Vec<Rational>> = match spec.params.as_slice() {
+            let settings: Vec<Vec<Affine>> = match spec.params.as_slice() {
                 [] => vec![Vec::new()],
                 [p] => {
                     let end = |e: &SpecEnd| {
                         e.value()
                             .filter(|_| !p.range.pi)
-                            .map(|q| (q.clone(), matches!(e, SpecEnd::Open(_))))
+                            .map(|q| (Affine::rational(q.clone()), matches!(e, SpecEnd::Open(_))))
                     };
                     let vals = values(&v.values, &p.name, end(&p.range.lo), end(&p.range.hi))?;
                     let mut settings = Vec::new();
                     for q in vals {
-                        let pair = [(p.name.clone(), q.to_string())];
+                        let pair = [(p.name.clone(), q.text(&[]))];
                         settings.push(
                             spec.params_from_pairs(&pair, v.allow_outside_range)
                                 .map_err(range_hint)?,

@@ -7,7 +7,7 @@ use trig_core::certified::{
     self, CheckedF64, F64_CHECK_DIGITS, at_bits, check_f64, to_digits, to_significant_digits,
 };
 use trig_core::decimal::{bound_text, max_digits};
-use trig_core::{Basis, CoreError, Described, Interval, Ring, parse_exact};
+use trig_core::{Affine, Basis, CoreError, Described, Interval, Ring, parse_exact};
 use trig_deriv::{
     End, VanishingDenominator, Wrt, curve_endpoint_derivatives, endpoint_derivatives,
     knot_derivatives, rational_curve_endpoint_derivatives,
@@ -76,8 +76,11 @@ pub struct TableArgs {
     /// Numeric table from jets at the given --param values.
     #[arg(long)]
     numeric: bool,
-    /// Shape parameter for --numeric, as name=value.
-    #[arg(long = "param", value_name = "NAME=VALUE", requires = "numeric")]
+    /// Shape parameter as name=value, read exactly (a rational or a rational
+    /// multiple of pi such as alpha=pi/2): the numeric table at these values,
+    /// or without --numeric the exact table at them (π symbolic; sin, cos of
+    /// a parameter exact at multiples of π/12 only).
+    #[arg(long = "param", value_name = "NAME=VALUE")]
     params: Vec<String>,
     /// Certified MPFR interval arithmetic at this many bits for --numeric
     /// (default: f64 with a certified error bound); only proved digits are printed.
@@ -149,7 +152,7 @@ pub fn run(args: &TableArgs) -> CmdResult {
         ));
     }
     if !args.numeric {
-        let params: Vec<Sym> = family.param_names().iter().map(|p| Sym::var(p)).collect();
+        let params = exact_params(args, &family)?;
         let functions = family.eval(&symbolic_atoms(), &params);
         let what = format!(
             "table{} --order {}",
@@ -164,8 +167,11 @@ pub fn run(args: &TableArgs) -> CmdResult {
     }
     let (blocks, mode) = if args.numeric {
         numeric(args, &family, wrt)?
-    } else {
+    } else if args.params.is_empty() {
         (exact(args, &family, wrt)?, "exact".to_string())
+    } else {
+        let at = args.params.join(", ");
+        (exact(args, &family, wrt)?, format!("exact at {at}"))
     };
     let heading = format!(
         "{id} ({}): derivatives {}, {mode}",
@@ -177,8 +183,47 @@ pub fn run(args: &TableArgs) -> CmdResult {
 
 /// The exact table: parameters (and `h`) as symbols, π symbolic; curve
 /// tables as combinations of the control points `P0, P1, …`.
+/// The parameters of an exact table: symbols, or with `--param` the exact
+/// values (`q₀ + q_π·π`, π symbolic), refused with the reason where the
+/// table could not stay exact — a parameter inside `sin`, `cos` away from
+/// the multiples of π/12 (where both are exact), or inside `exp` away
+/// from 0.
+fn exact_params(args: &TableArgs, family: &AnyBasis) -> Result<Vec<Sym>, CliError> {
+    if args.params.is_empty() {
+        return Ok(family.param_names().iter().map(|p| Sym::var(p)).collect());
+    }
+    // an exact table stays in the published range (no --allow-outside-range)
+    let values = family.params_from_pairs(&param_pairs(&args.params)?, false)?;
+    let domain = family.domain();
+    let names = family.param_names();
+    let twelfth = |a: &Affine| a.constant == 0 && *Rational::from(&a.pi * 12u32).denom() == 1;
+    let atoms = domain
+        .param_angles
+        .iter()
+        .map(|(i, b)| (i, b, "sin, cos", twelfth(&values[*i].scale(b))))
+        .chain(domain.param_exps.iter().map(|(i, b)| {
+            let x = values[*i].scale(b);
+            (i, b, "exp", x.constant == 0 && x.pi == 0)
+        }));
+    for (i, base, kind, exact) in atoms {
+        if !exact {
+            let name = &names[*i];
+            let argument = if *base == 1 {
+                name.clone()
+            } else {
+                format!("{base}·{name}")
+            };
+            return Err(CliError::Usage(format!(
+                "an exact table at {name} = {}: {kind} of {argument} is not exact there (exact at multiples of pi/12 for sin, cos, at 0 for exp); use --numeric for certified digits",
+                values[*i].text(&[])
+            )));
+        }
+    }
+    Ok(values.iter().map(|a| a.eval(&Sym::one(), &[])).collect())
+}
+
 fn exact(args: &TableArgs, family: &AnyBasis, wrt: Wrt) -> Result<Vec<Block>, CliError> {
-    let params: Vec<Sym> = family.param_names().iter().map(|p| Sym::var(p)).collect();
+    let params = exact_params(args, family)?;
     // the length, points and weights read like none of the basis's names
     let mut namespace = names_of(family);
     let h = if wrt == Wrt::X {
@@ -230,11 +275,12 @@ fn numeric(
     let mut last = Vec::new();
     let mut enclose = |bits: u32| {
         let mk = |q: &Rational| Interval::from_rational(bits, q);
+        let zero = mk(&Rational::new());
         let blocks = build(
             args,
             family,
             wrt,
-            &p.iter().map(mk).collect::<Vec<_>>(),
+            &p.iter().map(|a| a.eval(&zero, &[])).collect::<Vec<_>>(),
             &mk(&h),
             None,
         )
@@ -250,7 +296,9 @@ fn numeric(
     let (blocks, arithmetic) = match mode {
         Mode::F64 => {
             let names = family.param_names();
-            for (name, q) in names.iter().zip(&p).chain([(&"--h".to_string(), &h)]) {
+            let parts = p.iter().flat_map(|a| [&a.constant, &a.pi]);
+            let named = names.iter().flat_map(|n| [n, n]).zip(parts);
+            for (name, q) in named.chain([(&"--h".to_string(), &h)]) {
                 certified::to_f64(q, name)
                     .map_err(|e| CliError::Usage(format!("{e} (use --digits N or --prec BITS)")))?;
             }
@@ -259,7 +307,7 @@ fn numeric(
                 args,
                 family,
                 wrt,
-                &p.iter().map(Rational::to_f64).collect::<Vec<_>>(),
+                &p.iter().map(|a| a.eval(&0.0, &[])).collect::<Vec<_>>(),
                 &h.to_f64(),
                 None,
             )
