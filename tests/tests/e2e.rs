@@ -14,4 +14,5 @@ mod cli_spec;
 mod cli_spec_engine;
 mod cli_spec_features;
 mod cli_table;
+mod cli_witness_points;
 mod fuzz;
