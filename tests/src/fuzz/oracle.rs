@@ -12,7 +12,7 @@
 //!   difference (×4) bounding the reference's own error.
 
 use rug::ops::Pow;
-use rug::{Float, Rational};
+use rug::{Float, Integer, Rational};
 use trig_audit::{MAX_ERROR, Outcome};
 use trig_core::{Family, Mpfr, parse_exact, piecewise};
 use trig_deriv::{End, Wrt, endpoint_derivatives};
@@ -216,10 +216,19 @@ fn holds(c: &Claim, r: &Reference) -> bool {
     }
 }
 
-/// Bits for a reference that resolves `texts`: 256 beyond the longest.
-fn bits_for<'a>(texts: impl Iterator<Item = &'a str>) -> u32 {
+/// Bits for a reference that resolves `texts`: 256 beyond the longest,
+/// plus the integer bits of the largest exact input, so that rounding an
+/// input (`10¹⁰⁰⁰⁰` needs 33,220 bits before its units place) leaves it
+/// within `2⁻¹⁰⁰⁰` absolutely — a sine of a rounded huge argument is noise
+/// that two precisions need not reveal.
+fn bits_for<'a>(texts: impl Iterator<Item = &'a str>, inputs: &[&Rational]) -> u32 {
     let longest = texts.map(str::len).max().unwrap_or(0) as u32;
-    (longest * 34 / 10 + 256).max(1000)
+    let magnitude = inputs
+        .iter()
+        .map(|q| Float::with_val(64, *q).get_exp().unwrap_or(0).max(0) as u32)
+        .max()
+        .unwrap_or(0);
+    (longest * 34 / 10 + 256).max(1000) + magnitude
 }
 
 /// The exact parameter values the command line gives (the last
@@ -288,7 +297,8 @@ fn eval(
         return Ok(0);
     };
     let printed = printed_eval(text)?;
-    let bits = bits_for(printed.iter().map(|(_, v, _)| v.as_str()));
+    let inputs: Vec<&Rational> = params.iter().chain([&at]).collect();
+    let bits = bits_for(printed.iter().map(|(_, v, _)| v.as_str()), &inputs);
     let f = |b: u32| -> Option<Vec<Float>> {
         let x = Mpfr::from_rational(b, &at);
         let values = match (family, &spec, piecewise) {
@@ -447,7 +457,8 @@ fn table(
     if cells.is_empty() {
         return Ok(0);
     }
-    let bits = bits_for(cells.iter().map(|c| c.3.as_str()));
+    let inputs: Vec<&Rational> = params.iter().chain([&h]).collect();
+    let bits = bits_for(cells.iter().map(|c| c.3.as_str()), &inputs);
     let f = |b: u32| -> Option<Vec<Float>> {
         let p: Vec<Mpfr> = params.iter().map(|q| Mpfr::from_rational(b, q)).collect();
         let d = derivatives(
@@ -533,5 +544,23 @@ mod tests {
         assert!(check(&at_end, &end("b3 = 1.00000000000000000000000000000")).is_ok());
         assert!(check(&at_end, &end("b3 = 1.0000000000000000000000000001")).is_err());
         assert!(check(&case, &Outcome::Error("two\nlines".into())).is_err());
+    }
+
+    /// Found by the long run: at `t = −10¹⁰⁰⁰⁰` a reference at 1000 and 2000
+    /// bits rounds the point itself, and its sines are noise that happened
+    /// to agree (`trig-bbasis-half-angle`: the printed
+    /// `b1 = −1.332888791705649867612047545152654154192776`, checked with
+    /// mpmath at 12,000 digits, was right). The reference now carries the
+    /// point's 33,220 integer bits. Here `θ = πu/2` at `u = −10¹⁰⁰⁰⁰` is a
+    /// multiple of 2π, so the thesis basis takes its values at `u = 0`.
+    #[test]
+    fn huge_points_get_a_reference_that_represents_them() {
+        let case = eval_case("-1e10000");
+        let out = |t: &str| Outcome::Output(format!("thesis-cubic at -1e10000 [m=0.6] (x)\n{t}\n"));
+        assert!(check(&case, &out("b0 = 1.0000000000")).is_ok());
+        assert!(check(&case, &out("b0 = 0.99999")).is_err());
+        assert!(check(&case, &out("b1 = 0 ± 1e-20")).is_ok());
+        let big = Rational::from(Integer::from(10).pow(10000u32));
+        assert!(bits_for(std::iter::empty(), &[&big]) >= 1000 + 33_219);
     }
 }
