@@ -101,6 +101,8 @@ fn simpler(name: &str) -> &'static [(i64, i64)] {
         "t" => &[(0, 1), (1, 1), (1, 2)],
         // positive by definition: weights, interval lengths, knot spacings, G¹ factors
         "eta" | "alpha" | "omega" | "w" | "h" | "q" => &[(1, 1), (2, 1)],
+        // interval lengths of a data set: h_i, h_{i+1} (`h_i1`), …
+        _ if stem.starts_with("h_") => &[(1, 1), (2, 1)],
         _ => &[(0, 1), (1, 1), (-1, 1), (2, 1)],
     }
 }

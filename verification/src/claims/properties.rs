@@ -7,6 +7,8 @@ use trig_core::Family;
 use trig_symbolic::Sym;
 
 use crate::claim::{Claim, Seed};
+use crate::claims::seed004::{hermite_segment, interpolation_conditions};
+use crate::exact::IDENTITY;
 use crate::judge::{independence, nonnegative, span, unity};
 use crate::status::Status;
 use crate::verdict::Verdict;
@@ -96,6 +98,20 @@ pub const CLAIMS: &[Claim] = &[
         source: "Theorem 2 (4)",
         statement: "the curve (2) lies \"inside its control polygon spanned by P0 … P5\" (convex hull), w_i > 0",
         check: d13,
+    },
+    Claim {
+        id: "E19",
+        seed: Seed::S004,
+        source: "Abstract, §I, Conclusion",
+        statement: "for the fixed interpolation conditions the shape can be adjusted: the EH interpolant b0 y_i + b1 y_{i+1} + b2 h_i d_i + b3 h_i d_{i+1} keeps H(x_i) = y_i, H(x_{i+1}) = y_{i+1}, H' = d at both ends and is C¹ for all λ, μ",
+        check: e19,
+    },
+    Claim {
+        id: "E23",
+        seed: Seed::S004,
+        source: "§II (\"The standard cubic Hermite spline is C¹ continuous\")",
+        statement: "the spline H_i(x) of §II is C¹",
+        check: e23,
     },
     Claim {
         id: "D18",
@@ -287,4 +303,76 @@ fn t62() -> Verdict {
         })
         .collect();
     Verdict::all(crate::judge::certificate::CERTIFIED, parts)
+}
+
+/// `t = (x − x_i)/h_i` on segment `i` (the reading of E1cb: the printed
+/// `t = (x_{i+1} − x_i)/h_i` is the constant 1).
+fn local_t() -> Sym {
+    (Sym::var("x") - &Sym::var("x_i")) / &Sym::var("h_i")
+}
+
+/// The jumps of value and first derivative at `x_{i+1} = x_i + h_i` between
+/// segment `i` and segment `i + 1` (`t = (x − x_{i+1})/h_{i+1}`) of a
+/// Hermite-type spline whose derivative data `d_{i+1}`, `d_{i+2}` carry the
+/// factors `hd.0`, `hd.1`.
+fn c1_jumps(family: Family, params: &[Sym], hd: (&str, &str)) -> Vec<(String, Sym, Sym)> {
+    let x1 = Sym::var("x_i") + &Sym::var("h_i");
+    let next_t = (Sym::var("x") - &x1) / &Sym::var("h_i1");
+    let left = hermite_segment(family, params, &local_t(), &Sym::var(hd.0), 0);
+    let right = hermite_segment(family, params, &next_t, &Sym::var(hd.1), 1);
+    let at = |f: &Sym| f.subs("x", &x1);
+    vec![
+        (
+            "H_{i+1}(x_{i+1}) − H_i(x_{i+1})".into(),
+            at(&right),
+            at(&left),
+        ),
+        (
+            "H_{i+1}'(x_{i+1}) − H_i'(x_{i+1})".into(),
+            at(&right.diff("x")),
+            at(&left.diff("x")),
+        ),
+    ]
+}
+
+/// The EH interpolant on `[x_i, x_{i+1}]` for symbolic `λ`, `μ`: its four
+/// interpolation conditions, and the `C¹` join with the next segment.
+fn e19() -> Verdict {
+    let params = [Sym::var("lambda"), Sym::var("mu")];
+    let mut parts = interpolation_conditions(Family::Eh, &params, &local_t(), &Sym::var("h_i"));
+    parts.extend(c1_jumps(Family::Eh, &params, ("h_i", "h_i1")));
+    let mut v = crate::exact::identities(parts);
+    v.evidence.insert(
+        0,
+        "t = (x − x_i)/h_i, x_{i+1} = x_i + h_i; the next segment has t = (x − x_{i+1})/h_{i+1} and its own data y_{i+2}, d_{i+2}, h_{i+1}; λ, μ symbolic (every value)",
+    );
+    v
+}
+
+/// The §II spline with the printed factor `h_{i+1}` of `d_{i+1}` (E1c, E1cb):
+/// the derivative jumps at `x_{i+1}` unless `h_{i+1} = h_i`; with `h_i d_{i+1}`
+/// (E1cb's correction) the spline is `C¹`.
+fn e23() -> Verdict {
+    let printed = crate::exact::identities(c1_jumps(Family::Hermite, &[], ("h_i1", "h_i2")));
+    let note = "read as E1cb: t = (x − x_i)/h_i (the printed t = (x_{i+1} − x_i)/h_i is the constant 1, which makes H_i the constant y_{i+1}); x_{i+1} = x_i + h_i; segment i + 1 has t = (x − x_{i+1})/h_{i+1}";
+    if printed.status == Status::Holds {
+        let mut v = printed;
+        v.evidence.insert(0, note);
+        return v;
+    }
+    let corrected = crate::exact::identities(c1_jumps(Family::Hermite, &[], ("h_i", "h_i1")));
+    let mut evidence = printed.evidence;
+    evidence.insert(0, note.to_string());
+    let status = if corrected.status == Status::Holds {
+        Status::HoldsAfterCorrection
+    } else {
+        Status::Fails
+    };
+    evidence.extend(corrected.into_part("with h_i d_{i+1} (and h_{i+1} d_{i+2})"));
+    let v = Verdict::new(status, IDENTITY, evidence);
+    if status == Status::HoldsAfterCorrection {
+        v.with_correction("β1(t) h_i d_{i+1} instead of β1(t) h_{i+1} d_{i+1} in H_i (as E1cb): then H_i'(x_{i+1}) = d_{i+1} = H_{i+1}'(x_{i+1})")
+    } else {
+        v
+    }
 }
