@@ -4,6 +4,7 @@
 //! invariance, conic arcs. Each states what is printed and calls a judge.
 
 use trig_core::Family;
+use trig_deriv::{End, Wrt, endpoint_derivatives};
 use trig_symbolic::Sym;
 
 use crate::claim::{Claim, Seed};
@@ -35,6 +36,13 @@ pub const CLAIMS: &[Claim] = &[
         source: "3.2.3, text after Figure 3.2",
         statement: "β = 0 ⇒ H0 ≡ H2 ≡ 0, H1 ≡ 1 (the curve is the single point P1)",
         check: t43,
+    },
+    Claim {
+        id: "T45",
+        seed: Seed::S001,
+        source: "3.2.4, text after (3.6) and Figure 3.3",
+        statement: "no finite β ≥ 0 makes F(0) = P0 or F(1) = P2 (unless P1 = P0 or P1 = P2); the ends approach P0, P2 as β → ∞",
+        check: t45,
     },
     Claim {
         id: "T46",
@@ -84,6 +92,13 @@ pub const CLAIMS: &[Claim] = &[
         source: "5.1.2",
         statement: "affine invariance of the rational/NURBS curve",
         check: m19,
+    },
+    Claim {
+        id: "M21",
+        seed: Seed::S000,
+        source: "Definition 2",
+        statement: "the printed \"curve\" Y(n) = Σ w_j F_j / Σ w_j F_j (the expression of the rational trigonometric B-spline and NURBS)",
+        check: m21,
     },
     Claim {
         id: "S3",
@@ -375,4 +390,132 @@ fn e23() -> Verdict {
     } else {
         v
     }
+}
+
+/// The printed `Y(n)`: numerator and denominator are the same sum, so `Y ≡ 1`
+/// wherever `Σ w_j F_j ≠ 0` — no control point enters; the curve with points
+/// `H_j` depends on each of them.
+fn m21() -> Verdict {
+    let f = crate::exact::basis(Family::Seed000Uniform);
+    let w = crate::exact::symbols("w", f.len());
+    let weighted: Vec<Sym> = f.iter().zip(&w).map(|(fj, wj)| wj.clone() * fj).collect();
+    let total = crate::exact::sum(&weighted);
+    let printed = total.clone() / &total;
+    let constant =
+        crate::exact::identity_item("Y(n) − 1 (weights symbolic)", &printed, &Sym::one());
+    let points = crate::exact::symbols("H", f.len());
+    let curve = crate::exact::combination(&weighted, &points) / &total;
+    let moves = points.iter().all(|h| !curve.diff(&h.to_string()).is_zero());
+    let is_one = constant.status == Some(Status::Holds);
+    let mut v = Verdict::new(
+        if is_one && moves {
+            Status::Fails
+        } else {
+            Status::NotCheckable
+        },
+        IDENTITY,
+        [constant],
+    );
+    v.evidence.insert(
+        0,
+        "w_j symbolic, F_j the segment functions of (6); Σ_j Q_j(n) = 1 is the partition of unity of the rational basis, not a curve",
+    );
+    let shape = if moves {
+        "∂/∂H_j ≠ 0 for j = 0…3"
+    } else {
+        "not so: some ∂/∂H_j = 0"
+    };
+    v.evidence.push(
+        crate::evidence::Evidence::new(
+            crate::evidence::Kind::Comparison,
+            format!(
+                "with control points: Σ w_j F_j H_j / Σ w_j F_j depends on every H_j ({shape})"
+            ),
+        )
+        .witnessed(crate::witness::find(
+            &printed,
+            &curve,
+            ("printed Y(n)", "Σ w_j F_j H_j / Σ w_j F_j"),
+        )),
+    );
+    if is_one && moves {
+        v.with_correction(
+            "Y(n) = Σ_j w_j F_j(n) H_j / Σ_j w_j F_j(n) (the control points H_j of (6))",
+        )
+    } else {
+        v
+    }
+}
+
+/// `F(0) − P0` and `F(1) − P2` of the quadratic curve (3.1) as multiples
+/// `c·(P1 − P0)`, `c·(P1 − P2)`: the claim needs `c ≠ 0` for every `β ≥ 0`
+/// (a nonzero constant numerator) and `c → 0` as `β → ∞` (numerator of
+/// lower degree in `β` than the denominator).
+fn t45() -> Verdict {
+    let p = crate::exact::symbols("P", 3);
+    let beta = [Sym::var("beta")];
+    let ends = [
+        (
+            "F(0) − P0",
+            End::Start,
+            0,
+            "P1 − P0",
+            "F(0) = P0 only if P1 = P0",
+        ),
+        (
+            "F(1) − P2",
+            End::End,
+            2,
+            "P1 − P2",
+            "F(1) = P2 only if P1 = P2",
+        ),
+    ];
+    let parts = ends
+        .iter()
+        .map(|(label, at, end, direction, only_if)| {
+            // the functions' values at the end (order 0 of their jets)
+            let values: Vec<Sym> = endpoint_derivatives::<Sym, 1>(
+                Family::ThesisQuadratic,
+                &beta,
+                *at,
+                Wrt::Angle,
+                &Sym::one(),
+            )
+            .into_iter()
+            .map(|d| d[0].clone())
+            .collect();
+            let gap = crate::exact::combination(&values, &p) - &p[*end];
+            let c = gap.diff("P1");
+            let shape = crate::exact::identity_item(
+                &format!("{label} − c·({direction}), c = ∂/∂P1"),
+                &gap,
+                &(c.clone() * &(p[1].clone() - &p[*end])),
+            );
+            let never_zero = c.numerator().as_constant().is_some_and(|k| k != 0);
+            let degree = |q: &trig_symbolic::Poly| q.degree_in("beta");
+            let vanishes = degree(c.numerator()) < degree(&c.denominator_poly());
+            let holds = shape.status == Some(Status::Holds) && never_zero && vanishes;
+            let mut v = Verdict::new(
+                if holds { Status::Holds } else { Status::Fails },
+                IDENTITY,
+                [shape],
+            );
+            v.evidence.push(format!(
+                "c = {}: {}; {}",
+                c.to_unicode(),
+                if never_zero {
+                    format!("its numerator is a nonzero constant, so c ≠ 0 wherever the basis is defined (its published range β ≥ 0): {only_if}")
+                } else {
+                    "its numerator is not a nonzero constant".to_string()
+                },
+                if vanishes {
+                    "numerator of lower degree in β than the denominator, so c → 0 as β → ∞"
+                } else {
+                    "c does not tend to 0 as β → ∞"
+                }
+            ));
+            ((*label).to_string(), v)
+        })
+        .collect();
+    Verdict::all(IDENTITY, parts)
 }
