@@ -66,6 +66,13 @@ pub const CLAIMS: &[Claim] = &[
         check: t62,
     },
     Claim {
+        id: "T63",
+        seed: Seed::S001,
+        source: "(6.9)–(6.10)",
+        statement: "the chord-length parameters t_i = Σ_{r=1}^{i} DP_r / Σ_{r=1}^{N} DP_r satisfy t_1 = 0, t_N = 1, with DP_i = ‖P_{i+1} − P_i‖ defined for the sums used",
+        check: t63,
+    },
+    Claim {
         id: "M16",
         seed: Seed::S000,
         source: "3.1.1",
@@ -518,4 +525,53 @@ fn t45() -> Verdict {
         })
         .collect();
     Verdict::all(IDENTITY, parts)
+}
+
+/// (6.9) with the first distance `A = DP_1` and the rest `R = DP_2 + … + DP_N`
+/// as symbols: `t_1 = A/(A + R)`, zero only when `P_2 = P_1`; `t_N = 1`, but
+/// its sum uses `DP_N = ‖P_{N+1} − P_N‖`, and there is no `P_{N+1}` among
+/// `P_1 … P_N`. The usual chord length `t_i = Σ_{r<i} DP_r / Σ_{r<N} DP_r`
+/// gives `t_1 = 0/(A + R') = 0` and `t_N = 1` with `R' = DP_2 + … + DP_{N−1}`.
+fn t63() -> Verdict {
+    let (a, r) = (Sym::var("DP1"), Sym::var("R"));
+    let total = a.clone() + &r;
+    let printed = crate::exact::identities(vec![
+        (
+            "printed t_1 = DP_1/(DP_1 + R), R = DP_2 + … + DP_N".into(),
+            a.clone() / &total,
+            Sym::zero(),
+        ),
+        (
+            "printed t_N = (DP_1 + R)/(DP_1 + R)".into(),
+            total.clone() / &total,
+            Sym::one(),
+        ),
+    ]);
+    let usual = crate::exact::identities(vec![
+        (
+            "t_1 = (empty sum)/(DP_1 + R'), R' = DP_2 + … + DP_{N−1}".into(),
+            Sym::zero() / &(a.clone() + &Sym::var("R'")),
+            Sym::zero(),
+        ),
+        (
+            "t_N = (DP_1 + R')/(DP_1 + R')".into(),
+            (a.clone() + &Sym::var("R'")) / &(a.clone() + &Sym::var("R'")),
+            Sym::one(),
+        ),
+    ]);
+    let status = printed.status;
+    let mut evidence = printed.evidence;
+    evidence.push(
+        "the denominator Σ_{r=1}^{N} DP_r uses DP_N = ‖P_{N+1} − P_N‖: P_{N+1} is not a data point (the data are P_1 … P_N)",
+    );
+    let fixed = usual.status == Status::Holds;
+    evidence.extend(
+        usual.into_part("the usual chord length t_i = Σ_{r=1}^{i−1} DP_r / Σ_{r=1}^{N−1} DP_r"),
+    );
+    let v = Verdict::new(status, IDENTITY, evidence);
+    if fixed && status != Status::Holds {
+        v.with_correction("t_i = Σ_{r=1}^{i−1} DP_r / Σ_{r=1}^{N−1} DP_r (then t_1 = 0, t_N = 1 and only DP_1 … DP_{N−1} are used)")
+    } else {
+        v
+    }
 }
