@@ -4,6 +4,7 @@
 use crate::claim::Claim;
 
 mod properties;
+mod properties_formulas;
 mod seed000;
 mod seed000_appendix_b;
 mod seed000_appendix_c;
