@@ -246,6 +246,13 @@ fn squares_have_exact_ends() {
         e.contains("in [4.828427124746, 4.828427124747]") && e.contains("(irrational, included)"),
         "{e}"
     );
+    // 2 + 2√2 by its minimal polynomial (the boundary polynomial of degree 6
+    // is λ(λ − 2)(λ + 2)(3λ + 2)(λ² − 4λ − 4))
+    assert!(
+        e.contains("the root of lambda^2 - 4*lambda - 4 = 0 in")
+            && e.contains("(minimal polynomial)"),
+        "{e}"
+    );
     assert_eq!(verdict(&sq, "SQ-wide"), "fails");
 }
 

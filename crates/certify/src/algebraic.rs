@@ -4,7 +4,9 @@
 //! Rationality: if `r = a/b` (lowest terms) is a root of `P ∈ ℤ[x]` with
 //! leading coefficient `L`, then `b | L`, so `L·r` is an integer. Once the
 //! isolating interval is narrower than `1/|L|`, it contains at most one
-//! candidate `k/L`; `P(k/L) = 0` decides. A polynomial of degree 2 or 3
+//! candidate `k/L`; `P(k/L) = 0` decides. An irrational root keeps only
+//! the factor of its polynomial without rational roots (each rational root
+//! `r` found this way divides out as `x − r`); a polynomial of degree 2 or 3
 //! without rational roots is irreducible, so it is then the minimal
 //! polynomial.
 
@@ -67,18 +69,24 @@ impl Algebraic {
             self.poly = UPoly::new(vec![-self.lo.clone(), Rational::from(1)]).integer_primitive();
             self.minimal = true;
         } else {
-            self.minimal =
-                self.poly.degree() == 2 || (self.poly.degree() == 3 && self.no_rational_root());
+            for r in self.rational_roots() {
+                let (quotient, _) = self.poly.div_rem(&UPoly::new(vec![-r, Rational::from(1)]));
+                self.poly = quotient.integer_primitive();
+            }
+            // no rational root is left: degree 2 or 3 is irreducible
+            self.minimal = matches!(self.poly.degree(), 2 | 3);
         }
     }
 
-    /// No root of `poly` is rational (each real root tested as above).
-    fn no_rational_root(&self) -> bool {
+    /// The rational roots of `poly` (each real root isolated and tested as
+    /// above).
+    fn rational_roots(&self) -> Vec<Rational> {
         let bound = self.poly.root_bound();
+        let lead = self.poly.leading().clone().abs();
         self.poly
             .isolate(&-bound.clone(), &bound)
             .into_iter()
-            .all(|(lo, hi)| {
+            .filter_map(|(lo, hi)| {
                 let mut other = Algebraic {
                     poly: self.poly.clone(),
                     lo,
@@ -86,17 +94,16 @@ impl Algebraic {
                     rational: None,
                     minimal: false,
                 };
-                if other.is_point() {
-                    return false;
+                if !other.is_point() {
+                    other.refine(&(Rational::from(1) / (lead.clone() * 2u32)));
                 }
-                let lead = self.poly.leading().clone().abs();
-                other.refine(&(Rational::from(1) / (lead.clone() * 2u32)));
                 if other.is_point() {
-                    return false;
+                    return Some(other.lo);
                 }
                 let cand = (lead.clone() * &other.lo).ceil() / &lead;
-                !(cand <= other.hi && self.poly.sign_at(&cand) == 0)
+                (cand <= other.hi && self.poly.sign_at(&cand) == 0).then_some(cand)
             })
+            .collect()
     }
 
     /// Bisects the isolating interval until it is narrower than `width`
@@ -227,6 +234,31 @@ mod tests {
         let c = UPoly::new(vec![q(-2, 1), q(0, 1), q(0, 1), q(1, 1)]);
         let a = Algebraic::new(&c, q(1, 1), q(2, 1));
         assert!(a.rational.is_none() && a.minimal);
+    }
+
+    /// The boundary polynomial of `examples/squares-han.toml`'s upper end:
+    /// `3λ⁶ − 10λ⁵ − 32λ⁴ + 32λ³ + 80λ² + 32λ = λ(λ − 2)(λ + 2)(3λ + 2)(λ² − 4λ − 4)`
+    /// (SymPy): the rational roots divide out and `λ² − 4λ − 4` is minimal.
+    #[test]
+    fn rational_roots_divide_out_to_the_minimal_polynomial() {
+        let c = |k: i64| q(k, 1);
+        let p = UPoly::new(vec![c(0), c(32), c(80), c(32), c(-32), c(-10), c(3)]);
+        let iv = p.isolate(&q(4, 1), &q(5, 1));
+        assert_eq!(iv.len(), 1);
+        let a = Algebraic::new(&p, iv[0].0.clone(), iv[0].1.clone());
+        assert!(a.rational.is_none() && a.minimal);
+        assert_eq!(a.poly_text("λ"), "λ^2 - 4*λ - 4");
+        // x³ − 2 has no rational root: minimal as it is; with the factor x − 1, too
+        let cube = UPoly::new(vec![c(-2), c(0), c(0), c(1)]);
+        let with_one = cube.mul(&UPoly::new(vec![c(-1), c(1)]));
+        let iv = with_one.isolate(&q(5, 4), &q(3, 2));
+        let b = Algebraic::new(&with_one, iv[0].0.clone(), iv[0].1.clone());
+        assert!(b.minimal && b.poly.degree() == 3, "{}", b.poly_text("x"));
+        // degree 4 without rational roots: not called minimal
+        let quartic = UPoly::new(vec![c(-2), c(0), c(0), c(0), c(1)]);
+        let iv = quartic.isolate(&q(1, 1), &q(2, 1));
+        let d = Algebraic::new(&quartic, iv[0].0.clone(), iv[0].1.clone());
+        assert!(!d.minimal && d.poly.degree() == 4);
     }
 
     #[test]
