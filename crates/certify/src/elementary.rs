@@ -22,7 +22,8 @@ use rug::Rational;
 use rug::float::Round;
 use trig_core::{Interval, Real, Ring};
 
-use crate::taylor::{TaylorModel, up};
+use crate::rounding::{down, up};
+use crate::taylor::TaylorModel;
 
 /// `h¹, …, hᵈ` (index 0 unused: the constant 1).
 fn powers(h: &TaylorModel, d: u32) -> Vec<TaylorModel> {
@@ -179,7 +180,7 @@ pub fn recip(x: &TaylorModel) -> TaylorModel {
     if !(m > 0.0 && m.is_finite()) {
         return fault(x);
     }
-    let m = crate::taylor::down(m);
+    let m = down(m);
     let ps = powers(&e.h, if e.hb == 0.0 { 0 } else { e.d });
     let d = ps.len() as u32 - 1;
     let rest = if e.hb == 0.0 {
@@ -218,7 +219,7 @@ pub fn sqrt(x: &TaylorModel) -> TaylorModel {
     if !(m > 0.0 && m.is_finite()) {
         return fault(x);
     }
-    let m = crate::taylor::down(m);
+    let m = down(m);
     let Some(root) = e.c0.try_sqrt() else {
         return fault(x);
     };

@@ -37,6 +37,7 @@ pub mod range;
 pub mod real_point;
 pub mod region;
 pub mod resultant;
+mod rounding;
 pub mod standard;
 pub mod sturm;
 pub mod taylor;

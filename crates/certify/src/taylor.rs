@@ -37,6 +37,7 @@ use rug::{Assign, Float, Rational};
 use trig_core::{Interval, Ring};
 
 use crate::bernstein_bound::{Span, conversion};
+use crate::rounding::up;
 
 /// The monomials of total degree at most `degree` in `vars` variables, the
 /// table of their products, and the count of operations done in them.
@@ -171,32 +172,6 @@ fn push_with_total(out: &mut Vec<Vec<u32>>, e: &mut [u32], at: usize, left: u32)
         push_with_total(out, e, at + 1, left - k);
     }
     e[at] = 0;
-}
-
-/// The next f64 above a nonnegative `x` (an upper bound of the exact value
-/// that `x` rounds to nearest); `+∞` stays.
-pub fn up(x: f64) -> f64 {
-    if x.is_nan() {
-        return f64::INFINITY;
-    }
-    if x < 0.0 {
-        return -down(-x);
-    }
-    if x.is_infinite() {
-        return x;
-    }
-    f64::from_bits(x.to_bits() + 1)
-}
-
-/// The next f64 below a nonnegative `x` (`0` stays `0` for `x = 0`).
-pub fn down(x: f64) -> f64 {
-    if x <= 0.0 {
-        return if x == 0.0 { 0.0 } else { -up(-x) };
-    }
-    if x.is_infinite() {
-        return f64::MAX;
-    }
-    f64::from_bits(x.to_bits() - 1)
 }
 
 /// An upper bound of `|x|` as an f64.
@@ -706,15 +681,5 @@ mod tests {
         assert!(!pi.is_fault());
         assert!(third.int(0).is_zero() && !third.is_zero());
         assert!((Real::to_f64(&r) - std::f64::consts::PI).abs() < 1e-15);
-    }
-
-    #[test]
-    fn up_and_down_bracket() {
-        for x in [0.0, 1.0, 1e-300, 3.5, f64::MAX] {
-            assert!(up(x) > x || up(x).is_infinite());
-            assert!(down(x) < x || x == 0.0);
-        }
-        assert_eq!(up(f64::INFINITY), f64::INFINITY);
-        assert!(up(f64::NAN).is_infinite());
     }
 }

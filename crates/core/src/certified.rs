@@ -23,14 +23,11 @@ use crate::number::parse_exact;
 use crate::scalar::{Real, Ring};
 use crate::work;
 
-/// The highest working precision, in bits (about 19,700 decimal digits).
-pub const MAX_BITS: u32 = 1 << 16;
+use crate::precision::MIN_BITS;
+pub use crate::precision::{MAX_BITS, affine_sign};
 
 /// The most significant digits a request may ask for.
 pub const MAX_DIGITS: usize = 10_000;
-
-/// The smallest working precision.
-const MIN_BITS: u32 = 64;
 
 /// Digits certified for f64 cross-checks: more than f64 carries, so the
 /// enclosure's own width is negligible in the stated bound.
@@ -244,29 +241,6 @@ pub fn enclose_basis<B: Basis + ?Sized>(
     let xi = Interval::from_rational(bits, x);
     let p: Vec<Interval> = params.iter().map(|q| xi.rational(q)).collect();
     basis.eval(&basis.domain().atoms(&xi), &p)
-}
-
-/// The sign of the exact real `a = q₀ + q_π·π` (no parameters): exact when
-/// `q_π = 0` (or both vanish), else by enclosures of increasing precision
-/// (π is irrational, so a nonzero value is decided).
-pub fn affine_sign(a: &Affine) -> Result<Ordering> {
-    if a.pi == 0 {
-        return Ok(a.constant.cmp0());
-    }
-    let mut bits = MIN_BITS;
-    loop {
-        let zero = Interval::from_rational(bits, &Rational::new());
-        if let Some(order) = a.eval(&zero, &[]).partial_cmp(&zero) {
-            return Ok(order);
-        }
-        if bits >= MAX_BITS {
-            return Err(CoreError::Undecidable {
-                what: format!("the sign of {}", a.text(&[])),
-                bits,
-            });
-        }
-        bits = bits.saturating_mul(2).min(MAX_BITS);
-    }
 }
 
 /// Whether the exact point `x` (a rational or a rational multiple of π)

@@ -37,6 +37,7 @@ pub mod mpfr;
 pub mod number;
 pub mod param;
 pub mod piecewise;
+mod precision;
 pub mod range;
 pub mod scalar;
 pub mod sincos;

@@ -6,9 +6,9 @@
 
 use std::fmt;
 
-use crate::certified::affine_sign;
 use crate::domain::Affine;
 use crate::number::parse_exact;
+use crate::precision::affine_sign;
 use rug::Rational;
 
 /// One end of a range.
@@ -173,7 +173,7 @@ impl ParamRange {
     /// Whether the exact value `x = q₀ + q_π·π` (a parameter value as
     /// [`crate::parse_point`] reads it) lies in the range: the sign of
     /// `x − end` decided exactly when no π is left, else by certified
-    /// enclosures of π ([`crate::certified::affine_sign`]; `q₀ + q·π ≠ 0`
+    /// enclosures of π ([`crate::precision::affine_sign`]; `q₀ + q·π ≠ 0`
     /// for `q ≠ 0`, π being irrational).
     pub fn contains_value(&self, x: &Affine) -> crate::Result<bool> {
         use std::cmp::Ordering::{Equal, Greater, Less};
