@@ -47,7 +47,10 @@ pub fn check(case: &Case, outcome: &Outcome) -> Result<usize, String> {
                     params,
                     at,
                     piecewise,
-                } => eval(basis, params, at, *piecewise, text),
+                } => {
+                    delivered(text, &case.args)?;
+                    eval(basis, params, at, *piecewise, text)
+                }
                 Check::Table {
                     basis,
                     params,
@@ -58,6 +61,59 @@ pub fn check(case: &Case, outcome: &Outcome) -> Result<usize, String> {
             }
         }
     }
+}
+
+/// Digits promised are digits delivered: under a header that says every
+/// value has its `--digits N` proved, each value shows `N` significant
+/// digits (JSON: `proved_digits` ≥ `N`), never `0 ± b` or an enclosure.
+fn delivered(text: &str, args: &[String]) -> Result<(), String> {
+    let Some(n) = args
+        .iter()
+        .position(|a| a == "--digits")
+        .and_then(|i| args.get(i + 1))
+        .and_then(|d| d.parse::<usize>().ok())
+    else {
+        return Ok(());
+    };
+    if let Ok(json) = serde_json::from_str::<serde_json::Value>(text) {
+        let all = json["precision"]
+            .as_str()
+            .is_some_and(|p| p.contains("all proved"));
+        if all {
+            for (name, d) in json["proved_digits"].as_object().into_iter().flatten() {
+                if d.as_u64().is_some_and(|d| (d as usize) < n) {
+                    return Err(format!("header says all {n} digits proved, {name} has {d}"));
+                }
+            }
+        }
+        return Ok(());
+    }
+    let Some(header) = text.lines().next() else {
+        return Ok(());
+    };
+    if !header.contains("all proved") {
+        return Ok(());
+    }
+    for line in text.lines().skip(1) {
+        let Some((name, value)) = line.split_once(" = ") else {
+            continue;
+        };
+        let value = value.split(" (").next().unwrap_or(value).trim();
+        let mantissa = value.split(['e', 'E']).next().unwrap_or(value);
+        let digits = mantissa
+            .chars()
+            .filter(char::is_ascii_digit)
+            .skip_while(|c| *c == '0')
+            .count();
+        // an integer is an exact value (printed as it is, `proved_digits` null)
+        let exact = !value.contains(['.', 'e', 'E', '±', '[']);
+        if value.contains('±') || value.starts_with('[') || (digits != n && !exact) {
+            return Err(format!(
+                "header says all {n} digits proved, printed {name} = {value}"
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// The G factors and interval lengths of a join read unlike every
@@ -525,6 +581,24 @@ mod tests {
 
     /// The oracle is not vacuous: a wrong digit, a too small bound, a
     /// wrong zero enclosure, NaN and multi-line errors are all caught.
+    #[test]
+    fn undelivered_digits_are_caught() {
+        let args: Vec<String> = ["eval", "han", "--digits", "5"].map(String::from).to_vec();
+        let header = "han at 1e-10 [lambda=0] (5 significant digits, all proved; mpfr-128)";
+        let ok = format!("{header}\nb0 = 1.0000\nb2 = 2.4674e-20\n");
+        assert!(delivered(&ok, &args).is_ok());
+        // item 7 of issue 22: a zero enclosure under "all proved"
+        let bad = format!("{header}\nb0 = 1.0000\nb2 = 0 ± 2.2e-19\n");
+        assert!(delivered(&bad, &args).is_err());
+        assert!(delivered(&format!("{header}\nb1 = 3.14e-10\n"), &args).is_err());
+        // an exact value prints as it is
+        assert!(delivered(&format!("{header}\nb0 = 1\nb3 = 0\n"), &args).is_ok());
+        let said = "han at 1e-10 [lambda=0] (5 significant digits requested, proved for 3 of 4 values at the 128-bit limit; the others are marked)\nb2 = 0 ± 2.2e-19\n";
+        assert!(delivered(said, &args).is_ok());
+        let json = r#"{"precision": "5 significant digits, all proved; mpfr-128", "proved_digits": {"b0": 5, "b2": 0}}"#;
+        assert!(delivered(json, &args).is_err());
+    }
+
     #[test]
     fn wrong_outputs_are_caught() {
         // b0(0) = 1 exactly; b3(1/4; 3/5) = 0.0025823702910142048907…
