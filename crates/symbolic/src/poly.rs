@@ -114,10 +114,7 @@ impl Poly {
 
     /// The names of the variables that occur.
     pub fn variables(&self) -> BTreeSet<String> {
-        self.vars()
-            .into_iter()
-            .map(|v| v.name().to_string())
-            .collect()
+        crate::var::names(self.vars())
     }
 
     /// The variables, in order of first occurrence.

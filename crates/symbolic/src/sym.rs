@@ -106,10 +106,7 @@ impl Sym {
 
     /// The names of the variables that occur.
     pub fn variables(&self) -> BTreeSet<String> {
-        self.vars()
-            .into_iter()
-            .map(|v| v.name().to_string())
-            .collect()
+        crate::var::names(self.vars())
     }
 
     /// The variables of the numerator and of every denominator factor.

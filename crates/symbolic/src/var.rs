@@ -202,6 +202,11 @@ fn radicand(name: &str) -> Option<u32> {
     [2, 3, 5, 7].contains(&p).then_some(p)
 }
 
+/// The names of `vars`, as a sorted set.
+pub(crate) fn names(vars: Vec<Var>) -> std::collections::BTreeSet<String> {
+    vars.into_iter().map(|v| v.name().to_string()).collect()
+}
+
 /// Splits a name into the part before its trailing digits and the digits.
 pub(crate) fn split_digits(name: &str) -> (&str, &str) {
     let cut = name.trim_end_matches(|ch: char| ch.is_ascii_digit()).len();

@@ -10,8 +10,9 @@
 //! one over `Q(parameters)`. A left-over equation free of the unknowns is
 //! the condition on the parameters for `g` to lie in the span.
 
-use trig_symbolic::{Poly, Sym};
+use trig_symbolic::Sym;
 
+use super::independence::coefficients;
 use crate::exact::{ExactBasis, basis_of};
 use crate::status::Status;
 use crate::verdict::Verdict;
@@ -19,9 +20,6 @@ use trig_symbolic::rational_roots;
 
 /// How the span is decided, as the report states it.
 pub const METHOD: &str = "exact: the coefficients of Σ kᵢbᵢ − g in the independent monomials t^a·c^b·s^e (e ≤ 1) of the ring's normal form, solved for the kᵢ by elimination over Q(parameters)";
-
-/// The atoms of the variable (see [`super::independence`]).
-const VARIABLE_ATOMS: [&str; 3] = ["s", "c", "t"];
 
 /// The unknown coefficient `k_i` (a name no formula can use).
 fn unknown(i: usize) -> String {
@@ -42,19 +40,6 @@ pub enum Span {
     Only { condition: Sym },
 }
 
-/// The coefficients of `p` in the monomials of the variable's atoms.
-fn equations(p: &Poly) -> Vec<Poly> {
-    let mut out = vec![p.clone()];
-    for atom in VARIABLE_ATOMS {
-        out = out
-            .iter()
-            .flat_map(|q| q.coefficients_in(atom))
-            .filter(|q| !q.is_zero())
-            .collect();
-    }
-    out
-}
-
 /// Whether `g` lies in the span of the functions `b`.
 pub fn span(b: &[Sym], g: &Sym) -> Span {
     let names: Vec<String> = (0..b.len()).map(unknown).collect();
@@ -65,7 +50,7 @@ pub fn span(b: &[Sym], g: &Sym) -> Span {
     let residual = combination - g;
     let mut forced: Vec<(usize, Sym)> = Vec::new();
     let mut pivots = Vec::new();
-    for eq in equations(residual.numerator()) {
+    for eq in coefficients(residual.numerator()) {
         let reduced = forced
             .iter()
             .fold(Sym::from_poly(eq), |r, (i, v)| r.subs(&names[*i], v));
