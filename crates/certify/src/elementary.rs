@@ -17,9 +17,11 @@
 //!   may contain 0: no enclosure);
 //! * `√x`: `|(1/2 choose d+1)|·(c₀ − H)^{1/2 − d − 1}`, when `c₀ > H`.
 
+use std::ops::Div;
+
 use rug::Float;
 use rug::Rational;
-use rug::float::Round;
+use rug::float::{Constant, Round};
 use trig_core::{Interval, Real, Ring};
 
 use crate::rounding::{down, up};
@@ -250,6 +252,63 @@ pub fn sqrt(x: &TaylorModel) -> TaylorModel {
         pow = pow / &e.c0;
     }
     series(&ps, &coefs, e.hb, rest)
+}
+
+/// `a / b = a · (1/b)`, the reciprocal by its series ([`recip`]).
+impl Div<&TaylorModel> for TaylorModel {
+    type Output = TaylorModel;
+    #[expect(
+        clippy::suspicious_arithmetic_impl,
+        reason = "a quotient of models is a product with the reciprocal"
+    )]
+    fn div(self, rhs: &TaylorModel) -> TaylorModel {
+        self * &recip(rhs)
+    }
+}
+
+impl Div<TaylorModel> for TaylorModel {
+    type Output = TaylorModel;
+    fn div(self, rhs: TaylorModel) -> TaylorModel {
+        self / &rhs
+    }
+}
+
+/// Taylor models are a [`Ring`] with the elementary functions of this
+/// module: the same basis formulas evaluate on them.
+impl Ring for TaylorModel {
+    fn int(&self, n: i64) -> Self {
+        TaylorModel::constant(self.space(), &Rational::from(n))
+    }
+
+    fn ratio(&self, num: i64, den: i64) -> Self {
+        TaylorModel::constant(self.space(), &Rational::from((num, den)))
+    }
+
+    fn rational(&self, q: &Rational) -> Self {
+        TaylorModel::constant(self.space(), q)
+    }
+
+    fn pi(&self) -> Self {
+        let space = self.space();
+        TaylorModel::rounded(space, Float::with_val(space.prec(), Constant::Pi))
+    }
+
+    /// Proved zero: every coefficient and the remainder are zero.
+    fn is_zero(&self) -> bool {
+        self.is_exact_zero()
+    }
+
+    fn try_sin_cos(&self) -> Option<(Self, Self)> {
+        Some(sin_cos(self))
+    }
+
+    fn try_exp(&self) -> Option<Self> {
+        Some(exp(self))
+    }
+
+    fn try_sqrt(&self) -> Option<Self> {
+        Some(sqrt(self))
+    }
 }
 
 #[cfg(test)]

@@ -20,7 +20,7 @@ use trig_core::Affine;
 use trig_symbolic::{Poly, Sym};
 
 use crate::algebraic::Algebraic;
-use crate::analytic_range::{ExactValue, Problem};
+use crate::analytic_end::{ExactValue, Problem};
 use crate::resultant::resultant;
 use crate::sturm::UPoly;
 

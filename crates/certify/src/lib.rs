@@ -18,6 +18,7 @@
 //! witness is an exact point, re-evaluated before it is returned.
 
 pub mod algebraic;
+pub mod analytic_end;
 pub mod analytic_range;
 pub mod atoms;
 pub mod bernstein;

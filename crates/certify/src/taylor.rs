@@ -23,18 +23,18 @@
 //!
 //! Constants are made from an existing model ([`trig_core::Ring`]): the
 //! models of one box share their [`Space`]. Elementary functions of models
-//! are in [`crate::elementary`].
+//! are in [`crate::elementary`], with the [`trig_core::Ring`] implementation.
 
 use std::cell::Cell;
 use std::cmp::Ordering;
 use std::fmt;
-use std::ops::{Add, Div, Mul, Neg, Sub};
+use std::ops::{Add, Mul, Neg, Sub};
 use std::rc::Rc;
 
-use rug::float::{Constant, Round};
+use rug::float::Round;
 use rug::ops::NegAssign;
 use rug::{Assign, Float, Rational};
-use trig_core::{Interval, Ring};
+use trig_core::Interval;
 
 use crate::bernstein_bound::{Span, conversion};
 use crate::rounding::up;
@@ -220,6 +220,20 @@ impl TaylorModel {
         }
         m.coef[0] = v;
         m
+    }
+
+    /// The model of the float `v` rounded to nearest: `v` with one unit in
+    /// its last place as remainder.
+    pub fn rounded(space: &Rc<Space>, v: Float) -> TaylorModel {
+        let mut m = TaylorModel::zero(space);
+        m.rad = ulp(&v);
+        m.coef[0] = v;
+        m
+    }
+
+    /// Proved zero: every coefficient and the remainder are zero.
+    pub fn is_exact_zero(&self) -> bool {
+        !self.fault && self.rad == 0.0 && self.coef.iter().all(|c| c.is_zero())
     }
 
     /// The exact zero of the space.
@@ -544,10 +558,6 @@ by_ref!(Add, add, |a: TaylorModel, b: &TaylorModel| a
 by_ref!(Sub, sub, |a: TaylorModel, b: &TaylorModel| a
     .add_signed(b, true));
 by_ref!(Mul, mul, |a: TaylorModel, b: &TaylorModel| a.product(b));
-by_ref!(Div, div, |a: TaylorModel, b: &TaylorModel| {
-    let r = crate::elementary::recip(b);
-    a.product(&r)
-});
 
 impl Neg for TaylorModel {
     type Output = TaylorModel;
@@ -560,50 +570,11 @@ impl Neg for TaylorModel {
     }
 }
 
-impl Ring for TaylorModel {
-    fn int(&self, n: i64) -> Self {
-        TaylorModel::constant(&self.space, &Rational::from(n))
-    }
-
-    fn ratio(&self, num: i64, den: i64) -> Self {
-        TaylorModel::constant(&self.space, &Rational::from((num, den)))
-    }
-
-    fn rational(&self, q: &Rational) -> Self {
-        TaylorModel::constant(&self.space, q)
-    }
-
-    fn pi(&self) -> Self {
-        let mut m = TaylorModel::zero(&self.space);
-        let v = Float::with_val(self.space.prec, Constant::Pi);
-        m.rad = ulp(&v);
-        m.coef[0] = v;
-        m
-    }
-
-    /// Proved zero: every coefficient and the remainder are zero.
-    fn is_zero(&self) -> bool {
-        !self.fault && self.rad == 0.0 && self.coef.iter().all(|c| c.is_zero())
-    }
-
-    fn try_sin_cos(&self) -> Option<(Self, Self)> {
-        Some(crate::elementary::sin_cos(self))
-    }
-
-    fn try_exp(&self) -> Option<Self> {
-        Some(crate::elementary::exp(self))
-    }
-
-    fn try_sqrt(&self) -> Option<Self> {
-        Some(crate::elementary::sqrt(self))
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::testing::q;
-    use trig_core::Real;
+    use trig_core::{Real, Ring};
 
     fn range(m: &TaylorModel) -> (f64, f64) {
         let r = m.range().expect("an enclosure");

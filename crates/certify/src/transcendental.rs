@@ -39,7 +39,7 @@ use trig_core::{Affine, Domain};
 use trig_symbolic::Sym;
 
 use crate::algebraic::Algebraic;
-use crate::analytic_range::{End, ExactValue, Outside, Problem, Witness};
+use crate::analytic_end::{End, Equation, ExactValue, Outside, Problem, Witness};
 use crate::atoms::{d_param, d_variable, param_atoms, value};
 use crate::branch::{self, Outcome};
 use crate::coordinates::{BoxFunction, Coordinates};
@@ -48,106 +48,6 @@ use crate::factors::{self, Sign};
 use crate::krawczyk::{Cell, System};
 use crate::range::simplest_between;
 use crate::sturm::UPoly;
-
-/// The equation an end solves (the factor signed so that it is `≥ 0`
-/// inside).
-#[derive(Debug, Clone, PartialEq)]
-pub enum Equation {
-    /// `factor(p) = 0`, a factor in the parameter alone.
-    Parameter { function: usize, factor: Sym },
-    /// `factor(x, p) = 0` at the end `x = start` (`at_end` false) or
-    /// `x = end` of the domain; `value` is the factor there, exactly — or,
-    /// when the factor vanishes there identically, its derivative of order
-    /// `order` into the domain (the first that does not).
-    EndValue {
-        function: usize,
-        factor: Sym,
-        order: u32,
-        at_end: bool,
-        value: Sym,
-    },
-    /// `factor(x, p) = 0` and `derivative = ∂ₓfactor = 0`: the minimum over
-    /// `x` touches 0 inside the domain, at `τ ∈ tau` (`x = a + Lτ`).
-    Stationary {
-        function: usize,
-        factor: Sym,
-        derivative: Sym,
-        tau: (Rational, Rational),
-    },
-}
-
-impl Equation {
-    /// The equation as printed: the variable's atoms named after it
-    /// (`sin(t)`, `exp(t)` when their rate is 1), `names` the functions.
-    pub fn describe(&self, domain: &Domain, names: &[String]) -> String {
-        let show = |f: &Sym| shown(f, domain);
-        let var = &domain.name;
-        match self {
-            Equation::Parameter { function, factor } => {
-                format!("{} = 0 (a factor of {})", show(factor), names[*function])
-            }
-            Equation::EndValue {
-                function,
-                factor,
-                order,
-                at_end,
-                value,
-            } => {
-                let end = if *at_end { &domain.end } else { &domain.start };
-                let what = match order {
-                    0 => String::new(),
-                    1 => "the derivative into the domain of ".into(),
-                    k => format!("the derivative of order {k} into the domain of "),
-                };
-                format!(
-                    "{} = 0 ({what}the factor {} of {} at {var} = {})",
-                    show(value),
-                    show(factor),
-                    names[*function],
-                    end.text(&domain.param_names)
-                )
-            }
-            Equation::Stationary {
-                function,
-                factor,
-                derivative,
-                ..
-            } => format!(
-                "{} = 0 and {} = 0 in ({var}, {}) (the factor of {} and its derivative in {var}: where its minimum over {var} touches 0)",
-                show(factor),
-                show(derivative),
-                domain.param_names[0],
-                names[*function]
-            ),
-        }
-    }
-}
-
-/// `f` printed with the variable's atoms named after it when their rate
-/// is 1 (`s` as `sin(t)`, `E` as `exp(t)`), Unicode.
-fn shown(f: &Sym, domain: &Domain) -> String {
-    let greek = |text: String| {
-        domain.param_names.iter().fold(text, |text, n| {
-            let u = Sym::var(n).to_unicode();
-            text.replace(&format!("({n}"), &format!("({u}"))
-        })
-    };
-    let var = &domain.name;
-    let unit = |rate: Option<Rational>| rate.is_some_and(|r| r == 1);
-    let mut g = f.clone();
-    if unit(domain.angle.as_ref().and_then(|w| w.as_rational().cloned())) {
-        g = g
-            .subs("s", &Sym::var(&format!("sin({var})")))
-            .subs("c", &Sym::var(&format!("cos({var})")));
-    }
-    if unit(domain.exp.clone()) {
-        g = g.subs("E", &Sym::var(&format!("exp({var})")));
-    }
-    if var != "t" {
-        g = g.subs("t", &Sym::var(var));
-    }
-    greek(g.to_unicode())
-}
 
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Kind {
