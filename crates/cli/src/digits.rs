@@ -5,6 +5,17 @@
 //! proved" only when every value has its `N` digits.
 
 use trig_core::Decimal;
+use trig_core::certified::{Stop, WORK_BUDGET};
+
+/// Why fewer digits than requested are proved (after "… proved").
+pub fn shortfall(bits: u32, stopped: Option<Stop>) -> String {
+    match stopped {
+        Some(Stop::Budget) => {
+            format!(" within the work budget of {WORK_BUDGET} units (at {bits} bits)")
+        }
+        _ => format!(" at the {bits}-bit limit"),
+    }
+}
 
 /// The note for a value printed as `decimal` under a request for `n`
 /// significant digits, if it needs one.
@@ -23,12 +34,6 @@ pub fn note(decimal: &Decimal, n: usize) -> Option<String> {
         )),
         Decimal::Range { .. } | Decimal::Undefined(_) => Some("no significant digit proved".into()),
     }
-}
-
-/// How many of `decimals` fall short of `n` proved digits (exact values
-/// never do).
-pub fn short(decimals: &[Decimal], n: usize) -> usize {
-    decimals.iter().filter(|d| d.digits() < n).count()
 }
 
 #[cfg(test)]
@@ -58,6 +63,5 @@ mod tests {
             bound: "2.2e-19".into(),
         };
         assert!(note(&small, 5).unwrap().contains("≤ 2.2e-19"));
-        assert_eq!(short(&[small, digits("0", 1, true)], 5), 1);
     }
 }

@@ -1,5 +1,7 @@
 //! Knot vectors: validation and span lookup.
 
+use rug::Rational;
+
 use crate::error::{CoreError, Result};
 use crate::scalar::Real;
 
@@ -61,6 +63,22 @@ pub fn locate<T: Real>(knots: &[T], x: &T) -> Result<(usize, T)> {
     }
     let i = knots[1..last].iter().take_while(|k| **k <= *x).count();
     let local = (x.clone() - &knots[i]) / &(knots[i + 1].clone() - &knots[i]);
+    Ok((i, local))
+}
+
+/// The span `i` with `knots[i] ≤ x < knots[i+1]` (the last span closed)
+/// and the exact local coordinate, for strictly increasing exact knots;
+/// `input` is the point as printed in the error.
+pub fn locate_exact(knots: &[Rational], x: &Rational, input: &str) -> Result<(usize, Rational)> {
+    let last = knots.len() - 1;
+    if *x < knots[0] || *x > knots[last] {
+        return Err(CoreError::PointOutsideDomain {
+            value: input.to_string(),
+            domain: format!("[{}, {}]", knots[0], knots[last]),
+        });
+    }
+    let i = knots[1..last].iter().take_while(|k| *k <= x).count();
+    let local = Rational::from(x - &knots[i]) / Rational::from(&knots[i + 1] - &knots[i]);
     Ok((i, local))
 }
 

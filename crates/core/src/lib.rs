@@ -27,6 +27,7 @@ pub mod decimal;
 pub mod domain;
 pub mod echo;
 pub mod error;
+pub mod evaluation;
 pub mod families;
 pub mod family;
 mod float;

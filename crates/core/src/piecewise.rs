@@ -8,9 +8,13 @@
 
 use rug::Rational;
 
+use crate::basis::Described;
+use crate::domain::Affine;
+use crate::echo::echo;
 use crate::error::{CoreError, Result};
+use crate::evaluation::{Computation, named_affine};
 use crate::family::Family;
-use crate::knots::locate;
+use crate::knots::{locate, locate_exact};
 use crate::scalar::Real;
 
 /// Number of knot intervals of a cubic B-spline basis function.
@@ -38,6 +42,56 @@ pub fn eval_uniform<T: Real>(family: Family, n: &T, p: &[Rational]) -> Result<T>
     let x = local * &family.info().variable.end(n);
     let values = family.eval_at(&x, p, false)?;
     Ok(values[segment_function(piece)].clone())
+}
+
+/// The uniform B-spline basis function of a family at one exact global
+/// point `n ∈ [0, 4]`, located exactly on its piece (a [`Computation`]).
+#[derive(Debug, Clone)]
+pub struct UniformAt {
+    family: Family,
+    piece: usize,
+    local: Rational,
+    params: Vec<Affine>,
+    names: Vec<String>,
+}
+
+impl UniformAt {
+    /// The piece of `n` (typed as `n_text`) and its local coordinate, for a
+    /// family with segment functions; `params` exact, already read.
+    pub fn new(family: Family, n: &Rational, n_text: &str, params: Vec<Affine>) -> Result<Self> {
+        if !family.info().piecewise {
+            return Err(CoreError::Malformed {
+                input: family.info().id.into(),
+                expected:
+                    "a family with uniform B-spline segment functions (seed000-uniform, bspline3)"
+                        .into(),
+            });
+        }
+        let knots: Vec<Rational> = (0..=PIECES as i64).map(Rational::from).collect();
+        let (piece, local) = locate_exact(&knots, n, &echo(n_text))?;
+        Ok(UniformAt {
+            family,
+            piece,
+            local,
+            params,
+            names: family.param_names(),
+        })
+    }
+}
+
+impl Computation for UniformAt {
+    fn inputs(&self) -> Vec<(String, &Rational)> {
+        named_affine(&self.names, &self.params)
+    }
+
+    fn compute<T: Real>(&self, make: &dyn Fn(&Rational) -> T) -> Result<Vec<T>> {
+        let local = make(&self.local);
+        let variable = &self.family.info().variable;
+        let x = local.clone() * &variable.end(&local);
+        let p: Vec<T> = self.params.iter().map(|a| a.eval(&local, &[])).collect();
+        let values = self.family.eval(&variable.atoms(&x), &p);
+        Ok(vec![values[segment_function(self.piece)].clone()])
+    }
 }
 
 #[cfg(test)]

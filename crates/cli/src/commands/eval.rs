@@ -8,16 +8,13 @@ use std::fmt::Write;
 use clap::Args;
 use rug::Rational;
 use serde_json::json;
-use trig_core::certified::{
-    self, CheckedF64, F64_CHECK_DIGITS, MAX_BITS, MAX_DIGITS, Stop, WORK_BUDGET, at_bits,
-    check_domain, check_f64, to_digits, to_significant_digits,
-};
-use trig_core::decimal::max_digits;
-use trig_core::families::seed000_nonuniform::NonUniform;
-use trig_core::knots::check_increasing;
+use trig_core::certified::{CheckedF64, MAX_BITS, MAX_DIGITS, Stop};
+use trig_core::evaluation::{self, Arithmetic, BasisAt, Computation, Value};
+use trig_core::families::seed000_nonuniform::{NonUniform, SpanAt};
+use trig_core::knots::{check_increasing, locate_exact};
+use trig_core::piecewise::UniformAt;
 use trig_core::{
-    Affine, Basis, CoreError, Described, Family, Interval, Real, SEED000_NONUNIFORM, echo,
-    parse_exact, parse_point, piecewise,
+    Affine, CoreError, Described, Family, Real, SEED000_NONUNIFORM, echo, parse_exact, parse_point,
 };
 use trig_specfile::AnyBasis;
 use trig_symbolic::Sym;
@@ -92,156 +89,70 @@ pub fn param_pairs(raw: &[String]) -> Result<Vec<(String, String)>, CliError> {
         .collect()
 }
 
-/// What `eval` computes, for any scalar built from the exact inputs: the
-/// functions of a basis at a point, the uniform B-spline basis function on
-/// one of its pieces, or seed 000's non-uniform segment functions on one
-/// span. Points, pieces and spans are located on the exact input.
-enum Problem {
-    Basis {
-        subject: AnyBasis,
-        /// The point: a rational or a rational multiple of π.
-        x: Affine,
-        /// Each a rational or a rational multiple of π.
-        params: Vec<Affine>,
-    },
-    Piecewise {
-        family: Family,
-        piece: usize,
-        local: Rational,
-        params: Vec<Affine>,
-    },
-    NonUniform {
-        knots: Vec<Rational>,
-        span: usize,
-        local: Rational,
-        zeta: Rational,
-    },
+/// What `eval` computes: the functions of a basis at a point, the uniform
+/// B-spline basis function on one of its pieces, or seed 000's non-uniform
+/// segment functions on one span — each a library [`Computation`].
+enum Problem<'a> {
+    Basis(BasisAt<'a, AnyBasis>),
+    Piecewise(UniformAt),
+    NonUniform(SpanAt),
 }
 
-impl Problem {
-    /// The exact inputs with their names (checked to fit f64 in f64 mode).
-    fn inputs<'a>(&'a self, names: &[String], at: &str) -> Vec<(String, &'a Rational)> {
-        let named = |params: &'a [Affine]| -> Vec<(String, &'a Rational)> {
-            names
-                .iter()
-                .zip(params)
-                .flat_map(|(n, p)| [(n.clone(), &p.constant), (n.clone(), &p.pi)])
-                .collect()
-        };
+impl Computation for Problem<'_> {
+    fn inputs(&self) -> Vec<(String, &Rational)> {
         match self {
-            Problem::Basis { x, params, .. } => {
-                let mut v = named(params);
-                v.push((format!("the point {}", echo(at)), &x.constant));
-                v.push((format!("the point {}", echo(at)), &x.pi));
-                v
-            }
-            Problem::Piecewise { params, .. } => named(params),
-            Problem::NonUniform { knots, zeta, .. } => knots
-                .iter()
-                .enumerate()
-                .map(|(i, k)| (format!("knot n_{i}"), k))
-                .chain([("zeta".to_string(), zeta)])
-                .collect(),
+            Problem::Basis(p) => p.inputs(),
+            Problem::Piecewise(p) => p.inputs(),
+            Problem::NonUniform(p) => p.inputs(),
         }
     }
 
-    /// The values in the scalar `make` builds from exact rationals.
     fn compute<T: Real>(&self, make: &dyn Fn(&Rational) -> T) -> Result<Vec<T>, CoreError> {
         match self {
-            Problem::Basis { subject, x, params } => {
-                let zero = make(&Rational::new());
-                let x = x.eval(&zero, &[]);
-                let p: Vec<T> = params.iter().map(|a| a.eval(&zero, &[])).collect();
-                Ok(subject.eval(&subject.domain().atoms(&x), &p))
-            }
-            Problem::Piecewise {
-                family,
-                piece,
-                local,
-                params,
-            } => {
-                let local = make(local);
-                let x = local.clone() * &family.info().variable.end(&local);
-                let p: Vec<T> = params.iter().map(|a| a.eval(&local, &[])).collect();
-                let values = family.eval(&family.info().variable.atoms(&x), &p);
-                Ok(vec![values[piecewise::segment_function(*piece)].clone()])
-            }
-            Problem::NonUniform {
-                knots,
-                span,
-                local,
-                zeta,
-            } => {
-                let local = make(local);
-                let theta = local.clone() * &SEED000_NONUNIFORM.variable.end(&local);
-                let (s, c) = theta.sin_cos();
-                let formulas = NonUniform::new(knots.iter().map(make).collect(), make(zeta));
-                Ok(formulas.segment(*span as i64, &s, &c)?.to_vec())
-            }
+            Problem::Basis(p) => p.compute(make),
+            Problem::Piecewise(p) => p.compute(make),
+            Problem::NonUniform(p) => p.compute(make),
         }
     }
 }
 
-/// The arithmetic of an evaluation.
-#[derive(Debug, Clone, Copy)]
-pub enum Mode {
-    /// f64, each value with a certified error bound (or replaced by the
-    /// certified value when f64 is off).
-    F64,
-    /// Intervals at a fixed precision: the digits that precision proves.
-    Bits(u32),
-    /// Intervals at increasing precision until this many digits are proved.
-    Digits(usize),
-}
-
-impl Mode {
-    fn of(args: &EvalArgs) -> Result<Mode, CliError> {
-        precision_mode(args.prec, args.digits)
-    }
-
-    /// The arithmetic as the header states it; `short` values (of `total`)
-    /// have fewer digits than `--digits` asked.
-    fn describe(&self, bits: u32, (short, total): (usize, usize), stopped: Option<Stop>) -> String {
-        match *self {
-            Mode::F64 => format!("f64; ± certified error bounds, enclosures at {bits} bits"),
-            Mode::Bits(b) => format!("mpfr-{b}, certified: only proved digits are printed"),
-            Mode::Digits(n) if short == 0 => {
-                format!("{n} significant digits, all proved; mpfr-{bits}")
-            }
-            Mode::Digits(n) => format!(
-                "{n} significant digits requested, proved for {} of {total} values{}; the others are marked",
-                total - short,
-                shortfall(bits, stopped)
-            ),
+/// The arithmetic as the header states it; `short` values (of `total`)
+/// have fewer digits than `--digits` asked.
+fn describe(
+    arithmetic: Arithmetic,
+    bits: u32,
+    (short, total): (usize, usize),
+    stopped: Option<Stop>,
+) -> String {
+    match arithmetic {
+        Arithmetic::F64 => format!("f64; ± certified error bounds, enclosures at {bits} bits"),
+        Arithmetic::Bits(b) => format!("mpfr-{b}, certified: only proved digits are printed"),
+        Arithmetic::Digits(n) if short == 0 => {
+            format!("{n} significant digits, all proved; mpfr-{bits}")
         }
+        Arithmetic::Digits(n) => format!(
+            "{n} significant digits requested, proved for {} of {total} values{}; the others are marked",
+            total - short,
+            digits::shortfall(bits, stopped)
+        ),
     }
 }
 
-/// Why fewer digits than requested are proved.
-pub fn shortfall(bits: u32, stopped: Option<Stop>) -> String {
-    match stopped {
-        Some(Stop::Budget) => {
-            format!(" within the work budget of {WORK_BUDGET} units (at {bits} bits)")
-        }
-        _ => format!(" at the {bits}-bit limit"),
-    }
-}
-
-/// `--prec` and `--digits` as a [`Mode`], checked against the limits.
-pub fn precision_mode(prec: Option<u32>, digits: Option<usize>) -> Result<Mode, CliError> {
+/// `--prec` and `--digits` as an [`Arithmetic`], checked against the limits.
+pub fn arithmetic_of(prec: Option<u32>, digits: Option<usize>) -> Result<Arithmetic, CliError> {
     match (prec, digits) {
         (Some(_), Some(_)) => Err(CliError::Usage(
             "--prec and --digits exclude each other: --digits raises the precision itself".into(),
         )),
-        (Some(bits), None) if (2..=MAX_BITS).contains(&bits) => Ok(Mode::Bits(bits)),
+        (Some(bits), None) if (2..=MAX_BITS).contains(&bits) => Ok(Arithmetic::Bits(bits)),
         (Some(bits), None) => Err(CliError::Usage(format!(
             "--prec {bits}: expected a precision from 2 to {MAX_BITS} bits"
         ))),
-        (None, Some(n)) if (1..=MAX_DIGITS).contains(&n) => Ok(Mode::Digits(n)),
+        (None, Some(n)) if (1..=MAX_DIGITS).contains(&n) => Ok(Arithmetic::Digits(n)),
         (None, Some(n)) => Err(CliError::Usage(format!(
             "--digits {n}: expected 1 to {MAX_DIGITS} significant digits"
         ))),
-        (None, None) => Ok(Mode::F64),
+        (None, None) => Ok(Arithmetic::F64),
     }
 }
 
@@ -269,18 +180,18 @@ struct Evaluation {
 }
 
 pub fn run(args: &EvalArgs) -> CmdResult {
-    let mode = Mode::of(args)?;
+    let arithmetic = arithmetic_of(args.prec, args.digits)?;
     let at_text = args.at.as_deref().unwrap_or_default();
     let at = parse_point(at_text)?;
-    let eval = evaluate(args, at_text, &at, mode, subject_of(args)?.as_ref())?;
+    let eval = evaluate(args, at_text, &at, arithmetic, subject_of(args)?.as_ref())?;
     Ok(render(args, &eval))
 }
 
 /// `eval --at-file`: the rows written to `out` as they are computed.
 pub fn stream(args: &EvalArgs, out: &mut dyn std::io::Write) -> Result<(), CliError> {
-    let mode = Mode::of(args)?;
+    let arithmetic = arithmetic_of(args.prec, args.digits)?;
     let path = args.at_file.as_deref().unwrap_or(std::path::Path::new("-"));
-    points::stream(args, path, mode, out)
+    points::stream(args, path, arithmetic, out)
 }
 
 /// True when the command streams its output (`--at-file`).
@@ -290,11 +201,10 @@ pub fn streams(args: &EvalArgs) -> bool {
 
 /// The problem `eval` was asked, located on the exact input, with its
 /// description.
-struct Setup {
-    problem: Problem,
+struct Setup<'a> {
+    problem: Problem<'a>,
     id: String,
     citation: String,
-    param_names: Vec<String>,
     names: Vec<String>,
     note: Option<String>,
 }
@@ -311,12 +221,12 @@ fn subject_of(args: &EvalArgs) -> Result<Option<AnyBasis>, CliError> {
     )?))
 }
 
-fn setup(
+fn setup<'a>(
     args: &EvalArgs,
     at_text: &str,
     at: &Affine,
-    subject: Option<&AnyBasis>,
-) -> Result<Setup, CliError> {
+    subject: Option<&'a AnyBasis>,
+) -> Result<Setup<'a>, CliError> {
     let pairs = param_pairs(&args.params)?;
     let Some(subject) = subject else {
         return nonuniform(args, &pairs, at_text, rational_point(at, at_text)?);
@@ -327,11 +237,7 @@ fn setup(
             SEED000_NONUNIFORM.id
         )));
     }
-    let subject = subject.clone();
-    let params = subject
-        .params_from_pairs(&pairs, args.allow_outside_range)
-        .map_err(range_hint)?;
-    let (id, citation, param_names) = (subject.id(), subject.citation(), subject.param_names());
+    let (id, citation) = (subject.id(), subject.citation());
     if args.piecewise {
         let AnyBasis::Family(family) = subject else {
             return Err(CliError::Usage(
@@ -343,35 +249,31 @@ fn setup(
                 "--piecewise needs a family with uniform B-spline segment functions (seed000-uniform, bspline3); `{id}` is not one"
             )));
         }
-        let (piece, local) = locate_exact(&uniform_knots(), rational_point(at, at_text)?, at_text)?;
+        let params = subject
+            .params_from_pairs(&pairs, args.allow_outside_range)
+            .map_err(range_hint)?;
+        let piece = UniformAt::new(*family, rational_point(at, at_text)?, at_text, params)?;
         return Ok(Setup {
-            problem: Problem::Piecewise {
-                family,
-                piece,
-                local,
-                params,
-            },
+            problem: Problem::Piecewise(piece),
             id,
             citation,
-            param_names,
             names: vec!["B(n)".into()],
             note: Some("uniform B-spline basis function on knots 0,1,2,3,4".into()),
         });
     }
-    if !args.allow_outside_range {
-        check_domain(&subject.domain(), at, &params, at_text).map_err(range_hint)?;
-    }
-    let names = subject.function_names();
+    let at = BasisAt::new(
+        subject,
+        at.clone(),
+        at_text,
+        &pairs,
+        args.allow_outside_range,
+    )
+    .map_err(range_hint)?;
     Ok(Setup {
-        problem: Problem::Basis {
-            subject,
-            x: at.clone(),
-            params,
-        },
+        problem: Problem::Basis(at),
         id,
         citation,
-        param_names,
-        names,
+        names: subject.function_names(),
         note: None,
     })
 }
@@ -387,131 +289,75 @@ fn rational_point<'a>(at: &'a Affine, at_text: &str) -> Result<&'a Rational, Cli
     })
 }
 
+/// The certified values of what `eval` was asked (the library's one
+/// evaluation path), as text.
 fn evaluate(
     args: &EvalArgs,
     at_text: &str,
     at: &Affine,
-    mode: Mode,
+    arithmetic: Arithmetic,
     subject: Option<&AnyBasis>,
 ) -> Result<Evaluation, CliError> {
     let s = setup(args, at_text, at, subject)?;
     let what = format!("`{}` at this point", s.id);
-    let enclose = |bits: u32| {
-        s.problem
-            .compute(&|q: &Rational| Interval::from_rational(bits, q))
-    };
-    let (values, bits, short, stopped) = match mode {
-        Mode::F64 => {
-            for (name, q) in s.problem.inputs(&s.param_names, at_text) {
-                certified::to_f64(q, &name).map_err(|e| {
-                    CliError::Usage(format!("{e} (evaluate with --digits N or --prec BITS)"))
-                })?;
-            }
-            let exact = to_digits(F64_CHECK_DIGITS, &what, enclose)?;
-            // f64 failures (a rounded divisor that is exactly zero) leave
-            // the certified values in place
-            let f64_values = s
-                .problem
-                .compute(&|q: &Rational| q.to_f64())
-                .unwrap_or_else(|_| vec![f64::NAN; exact.values.len()]);
-            let shown = check_f64(&f64_values, &exact.values)
-                .into_iter()
-                .map(|c| match c {
-                    CheckedF64::Accurate { text, bound } => Shown {
-                        text,
-                        bound: Some(bound),
-                        note: None,
-                        digits: None,
-                    },
-                    CheckedF64::Replaced { decimal, f64_error } => Shown {
-                        digits: Some(decimal.digits()),
-                        text: decimal.to_string(),
-                        bound: None,
-                        note: Some(match f64_error {
-                            Some(e) => {
-                                format!("certified value; the f64 result is off by up to {e}")
-                            }
-                            None => "certified value; the f64 result is not finite".into(),
-                        }),
-                    },
-                })
-                .collect();
-            (shown, exact.bits, (0, 0), None)
+    let e = evaluation::evaluate(&s.problem, arithmetic, &what).map_err(|e| match e {
+        CoreError::NotRepresentable { .. } => {
+            CliError::Usage(format!("{e} (evaluate with --digits N or --prec BITS)"))
         }
-        Mode::Bits(bits) => {
-            let mut f = enclose;
-            let e = at_bits(bits, &what, &mut f)?;
-            let max = max_digits(bits);
-            (decimals(&e.values, max), bits, (0, 0), None)
-        }
-        Mode::Digits(n) => {
-            let e = to_significant_digits(n, &what, enclose)?;
-            let mut shown = decimals(&e.values, n);
-            let proved: Vec<_> = e.values.iter().map(|x| x.decimal(n)).collect();
-            for (v, d) in shown.iter_mut().zip(&proved) {
-                v.note = digits::note(d, n);
-            }
-            let short = (digits::short(&proved, n), proved.len());
-            (shown, e.bits, short, e.stopped)
-        }
+        e => e.into(),
+    })?;
+    let values: Vec<Shown> = e.values.iter().map(|v| shown(v, arithmetic)).collect();
+    let short = match arithmetic {
+        Arithmetic::Digits(n) => (e.short_of(n), e.values.len()),
+        _ => (0, 0),
     };
     Ok(Evaluation {
         id: s.id,
         citation: s.citation,
         names: s.names,
         values,
-        precision: mode.describe(bits, short, stopped),
+        precision: describe(arithmetic, e.bits, short, e.stopped),
         note: s.note,
-        bits,
+        bits: e.bits,
     })
 }
 
-/// The proved decimals of enclosures, at most `max` digits each.
-fn decimals(values: &[Interval], max: usize) -> Vec<Shown> {
-    values
-        .iter()
-        .map(|v| {
-            let d = v.decimal(max);
-            Shown {
-                digits: Some(d.digits()),
-                text: d.to_string(),
-                bound: None,
-                note: None,
-            }
-        })
-        .collect()
-}
-
-/// Knots `0, 1, 2, 3, 4` of the uniform B-spline basis function.
-fn uniform_knots() -> Vec<Rational> {
-    (0..=piecewise::PIECES as i64).map(Rational::from).collect()
-}
-
-/// The span `i` with `knots[i] ≤ x < knots[i+1]` (the last span closed)
-/// and the exact local coordinate, for strictly increasing exact knots.
-fn locate_exact(
-    knots: &[Rational],
-    x: &Rational,
-    input: &str,
-) -> Result<(usize, Rational), CoreError> {
-    let last = knots.len() - 1;
-    if *x < knots[0] || *x > knots[last] {
-        return Err(CoreError::PointOutsideDomain {
-            value: echo(input),
-            domain: format!("[{}, {}]", knots[0], knots[last]),
-        });
+/// One certified value as printed.
+fn shown(value: &Value, arithmetic: Arithmetic) -> Shown {
+    match value {
+        Value::F64(CheckedF64::Accurate { text, bound }) => Shown {
+            text: text.clone(),
+            bound: Some(bound.clone()),
+            note: None,
+            digits: None,
+        },
+        Value::F64(CheckedF64::Replaced { decimal, f64_error }) => Shown {
+            digits: Some(decimal.digits()),
+            text: decimal.to_string(),
+            bound: None,
+            note: Some(match f64_error {
+                Some(e) => format!("certified value; the f64 result is off by up to {e}"),
+                None => "certified value; the f64 result is not finite".into(),
+            }),
+        },
+        Value::Proved(d) => Shown {
+            digits: Some(d.digits()),
+            text: d.to_string(),
+            bound: None,
+            note: match arithmetic {
+                Arithmetic::Digits(n) => digits::note(d, n),
+                _ => None,
+            },
+        },
     }
-    let i = knots[1..last].iter().take_while(|k| *k <= x).count();
-    let local = Rational::from(x - &knots[i]) / Rational::from(&knots[i + 1] - &knots[i]);
-    Ok((i, local))
 }
 
-fn nonuniform(
+fn nonuniform<'a>(
     args: &EvalArgs,
     pairs: &[(String, String)],
     at_text: &str,
     n: &Rational,
-) -> Result<Setup, CliError> {
+) -> Result<Setup<'a>, CliError> {
     let info = SEED000_NONUNIFORM;
     let zeta = Family::Seed000Uniform
         .params_from_pairs(pairs, args.allow_outside_range)
@@ -536,7 +382,7 @@ fn nonuniform(
         .map(|k| parse_exact(k))
         .collect::<Result<_, CoreError>>()?;
     check_increasing(&knots, 2, |i| echo(&args.knots[i]))?;
-    let (span, local) = locate_exact(&knots, n, at_text)?;
+    let (span, local) = locate_exact(&knots, n, &echo(at_text))?;
     // The printed coefficients exactly first: a denominator that vanishes
     // is named (a division by zero), one that does not is then proved
     // nonzero by enclosures at a high enough precision.
@@ -544,15 +390,14 @@ fn nonuniform(
     NonUniform::new(knots.iter().map(sym).collect(), sym(&zeta)).span(span as i64)?;
     let note = format!("span j = {span}, local angle t_j = ({local})·π/2");
     Ok(Setup {
-        problem: Problem::NonUniform {
+        problem: Problem::NonUniform(SpanAt {
             knots,
             span,
             local,
             zeta,
-        },
+        }),
         id: info.id.to_string(),
         citation: info.citation.to_string(),
-        param_names: info.params.iter().map(|p| p.name.to_string()).collect(),
         names: info.functions.iter().map(|s| s.to_string()).collect(),
         note: Some(note),
     })

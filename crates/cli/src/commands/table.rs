@@ -3,18 +3,17 @@
 
 use clap::{Args, ValueEnum};
 use rug::Rational;
-use trig_core::certified::{
-    self, CheckedF64, F64_CHECK_DIGITS, at_bits, check_f64, to_digits, to_significant_digits,
-};
-use trig_core::decimal::{bound_text, max_digits};
-use trig_core::{Affine, Basis, CoreError, Described, Interval, Ring, parse_exact};
+use trig_core::certified::CheckedF64;
+use trig_core::decimal::bound_text;
+use trig_core::evaluation::{self, Arithmetic, Computation, Value};
+use trig_core::{Affine, Basis, CoreError, Described, Real, Ring, parse_exact};
 use trig_deriv::{
     End, VanishingDenominator, Wrt, curve_endpoint_derivatives, endpoint_derivatives,
     knot_derivatives, rational_curve_endpoint_derivatives,
 };
 use trig_symbolic::{Sym, symbolic_atoms};
 
-use super::eval::{Mode, param_pairs, precision_mode, shortfall};
+use super::eval::{arithmetic_of, param_pairs};
 use super::{CliError, CmdResult, range_hint};
 use crate::cell::{Block, Cell, Rendered};
 use crate::cost;
@@ -254,14 +253,15 @@ fn exact(args: &TableArgs, family: &AnyBasis, wrt: Wrt) -> Result<Vec<Block>, Cl
 
 /// The numeric table at exact parameter values: f64 with a certified
 /// error bound (entries f64 gets wrong replaced by certified values), or
-/// the proved digits of interval jets (`--prec`, `--digits`).
+/// the proved digits of interval jets (`--prec`, `--digits`) — the
+/// library's one evaluation path ([`evaluation::evaluate`]).
 fn numeric(
     args: &TableArgs,
     family: &AnyBasis,
     wrt: Wrt,
 ) -> Result<(Vec<Block>, String), CliError> {
     let pairs = param_pairs(&args.params)?;
-    let p = family
+    let params = family
         .params_from_pairs(&pairs, args.allow_outside_range)
         .map_err(range_hint)?;
     let h = match &args.h {
@@ -271,68 +271,49 @@ fn numeric(
     if h <= 0 {
         return Err(CliError::Usage("--h must be positive".into()));
     }
-    let what = format!("the derivatives of `{}`", family.id());
-    let mut last = Vec::new();
-    let mut enclose = |bits: u32| {
-        let mk = |q: &Rational| Interval::from_rational(bits, q);
-        let zero = mk(&Rational::new());
-        let blocks = build(
-            args,
-            family,
-            wrt,
-            &p.iter().map(|a| a.eval(&zero, &[])).collect::<Vec<_>>(),
-            &mk(&h),
-            None,
-        )
-        // numeric tables have no curve: nothing divides by a weighted sum
-        .map_err(|e| CoreError::DivisionByZero {
-            quantity: e.to_string(),
-        })?;
-        let cells = blocks.iter().flat_map(Block::cells).cloned().collect();
-        last = blocks;
-        Ok(cells)
+    let arithmetic = arithmetic_of(args.prec, args.digits)?;
+    let table = Derivatives {
+        args,
+        family,
+        wrt,
+        names: family.param_names(),
+        params,
+        h,
     };
-    let mode = precision_mode(args.prec, args.digits)?;
-    let (blocks, arithmetic) = match mode {
-        Mode::F64 => {
-            let names = family.param_names();
-            let parts = p.iter().flat_map(|a| [&a.constant, &a.pi]);
-            let named = names.iter().flat_map(|n| [n, n]).zip(parts);
-            for (name, q) in named.chain([(&"--h".to_string(), &h)]) {
-                certified::to_f64(q, name)
-                    .map_err(|e| CliError::Usage(format!("{e} (use --digits N or --prec BITS)")))?;
-            }
-            let e = to_digits(F64_CHECK_DIGITS, &what, &mut enclose)?;
-            let floats = build(
-                args,
-                family,
-                wrt,
-                &p.iter().map(|a| a.eval(&0.0, &[])).collect::<Vec<_>>(),
-                &h.to_f64(),
-                None,
-            )
-            .map_err(|e| CliError::Usage(e.to_string()))?;
-            let values: Vec<f64> = floats.iter().flat_map(Block::cells).copied().collect();
-            let mut checked = check_f64(&values, &e.values).into_iter();
-            let (mut worst, mut replaced) = (Rational::new(), 0);
-            let blocks = floats
-                .into_iter()
-                .map(|b| {
-                    b.map(|_| match checked.next() {
-                        Some(CheckedF64::Accurate { text, bound }) => {
-                            if let Ok(q) = parse_exact(&bound) {
-                                worst = worst.clone().max(q);
-                            }
-                            Rendered::number(&text)
-                        }
-                        Some(CheckedF64::Replaced { decimal, .. }) => {
-                            replaced += 1;
-                            Rendered::decimal(&decimal)
-                        }
-                        None => Rendered::number("?"),
-                    })
-                })
-                .collect();
+    let what = format!("the derivatives of `{}`", family.id());
+    let e = evaluation::evaluate(&table, arithmetic, &what).map_err(|e| match e {
+        CoreError::NotRepresentable { .. } => {
+            CliError::Usage(format!("{e} (use --digits N or --prec BITS)"))
+        }
+        e => e.into(),
+    })?;
+    // the table's shape (f64 arithmetic cannot fail on it: no curve)
+    let shape = table
+        .blocks(&|q: &Rational| q.to_f64())
+        .map_err(|e| CliError::Usage(e.to_string()))?;
+    let (mut worst, mut replaced) = (Rational::new(), 0);
+    let mut values = e.values.iter();
+    let blocks = shape
+        .into_iter()
+        .map(|b| {
+            b.map(|_| match values.next() {
+                Some(Value::F64(CheckedF64::Accurate { text, bound })) => {
+                    if let Ok(q) = parse_exact(bound) {
+                        worst = worst.clone().max(q);
+                    }
+                    Rendered::number(text)
+                }
+                Some(Value::F64(CheckedF64::Replaced { decimal, .. })) => {
+                    replaced += 1;
+                    Rendered::decimal(decimal)
+                }
+                Some(Value::Proved(decimal)) => Rendered::decimal(decimal),
+                None => Rendered::number("?"),
+            })
+        })
+        .collect();
+    let arithmetic = match arithmetic {
+        Arithmetic::F64 => {
             let mut note = format!(
                 "f64, every entry within {} of the exact value (certified)",
                 bound_text(&worst)
@@ -342,28 +323,21 @@ fn numeric(
                     "; {replaced} entries where f64 is off show proved digits instead"
                 ));
             }
-            (blocks, note)
+            note
         }
-        Mode::Bits(bits) => {
-            at_bits(bits, &what, &mut enclose)?;
-            let note = format!("MPFR {bits} bits, proved digits only");
-            (render_decimals(last, max_digits(bits)), note)
-        }
-        Mode::Digits(n) => {
-            let e = to_significant_digits(n, &what, &mut enclose)?;
-            let decimals: Vec<_> = e.values.iter().map(|v| v.decimal(n)).collect();
-            let short = digits::short(&decimals, n);
-            let note = if short == 0 {
+        Arithmetic::Bits(bits) => format!("MPFR {bits} bits, proved digits only"),
+        Arithmetic::Digits(n) => {
+            let short = e.short_of(n);
+            if short == 0 {
                 format!("{n} significant digits, all proved (MPFR {} bits)", e.bits)
             } else {
                 format!(
                     "{n} digits requested, {} of {} entries with fewer proved{} (an entry 0 ± b proves no digit: |value| ≤ b)",
                     short,
-                    decimals.len(),
-                    shortfall(e.bits, e.stopped)
+                    e.values.len(),
+                    digits::shortfall(e.bits, e.stopped)
                 )
-            };
-            (render_decimals(last, n), note)
+            }
         }
     };
     Ok((
@@ -372,12 +346,47 @@ fn numeric(
     ))
 }
 
-/// Interval cells printed as their proved digits.
-fn render_decimals(blocks: Vec<Block<Interval>>, max: usize) -> Vec<Block> {
-    blocks
-        .into_iter()
-        .map(|b| b.map(|v| Rendered::decimal(&v.decimal(max))))
-        .collect()
+/// A numeric derivative table as a library [`Computation`]: its cells,
+/// block by block, from the exact parameters and `h`.
+struct Derivatives<'a> {
+    args: &'a TableArgs,
+    family: &'a AnyBasis,
+    wrt: Wrt,
+    names: Vec<String>,
+    params: Vec<Affine>,
+    h: Rational,
+}
+
+impl Derivatives<'_> {
+    fn blocks<T: Ring>(
+        &self,
+        make: &dyn Fn(&Rational) -> T,
+    ) -> Result<Vec<Block<T>>, VanishingDenominator> {
+        let zero = make(&Rational::new());
+        let p: Vec<T> = self.params.iter().map(|a| a.eval(&zero, &[])).collect();
+        build(self.args, self.family, self.wrt, &p, &make(&self.h), None)
+    }
+}
+
+impl Computation for Derivatives<'_> {
+    fn inputs(&self) -> Vec<(String, &Rational)> {
+        let parts = self.params.iter().flat_map(|a| [&a.constant, &a.pi]);
+        let named = self.names.iter().flat_map(|n| [n.clone(), n.clone()]);
+        named
+            .zip(parts)
+            .chain([("--h".to_string(), &self.h)])
+            .collect()
+    }
+
+    fn compute<T: Real>(&self, make: &dyn Fn(&Rational) -> T) -> Result<Vec<T>, CoreError> {
+        let blocks = self
+            .blocks(make)
+            // numeric tables have no curve: nothing divides by a weighted sum
+            .map_err(|e| CoreError::DivisionByZero {
+                quantity: e.to_string(),
+            })?;
+        Ok(blocks.iter().flat_map(Block::cells).cloned().collect())
+    }
 }
 
 /// Control points and weights of a curve table (symbols, exact mode only).

@@ -8,9 +8,13 @@
 //! `c_{j,0} = 0`, so the printed `c_{j,2}`, which divides by `c_{j,0}`, is
 //! undefined — the audit reports this.)
 
+use rug::Rational;
+
 use crate::error::{CoreError, Result};
+use crate::evaluation::Computation;
 use crate::families::seed000::blending;
-use crate::scalar::Ring;
+use crate::family::SEED000_NONUNIFORM;
+use crate::scalar::{Real, Ring};
 
 /// The printed coefficient formulas over one knot vector.
 #[derive(Debug, Clone)]
@@ -227,6 +231,37 @@ fn dot<T: Ring>(w: &[T; 4], l: &[T; 4]) -> T {
     let mut terms = w.iter().zip(l).map(|(wk, lk)| wk.clone() * lk);
     let first = terms.next().expect("four terms");
     terms.fold(first, |acc, x| acc + &x)
+}
+
+/// The four segment functions of one span at an exact local coordinate,
+/// over exact knots (a [`Computation`]; the local angle is
+/// `t_j = local·π/2`). The caller has checked the knots and the span's
+/// printed coefficients exactly.
+#[derive(Debug, Clone)]
+pub struct SpanAt {
+    pub knots: Vec<Rational>,
+    pub span: usize,
+    pub local: Rational,
+    pub zeta: Rational,
+}
+
+impl Computation for SpanAt {
+    fn inputs(&self) -> Vec<(String, &Rational)> {
+        self.knots
+            .iter()
+            .enumerate()
+            .map(|(i, k)| (format!("knot n_{i}"), k))
+            .chain([("zeta".to_string(), &self.zeta)])
+            .collect()
+    }
+
+    fn compute<T: Real>(&self, make: &dyn Fn(&Rational) -> T) -> Result<Vec<T>> {
+        let local = make(&self.local);
+        let theta = local.clone() * &SEED000_NONUNIFORM.variable.end(&local);
+        let (s, c) = theta.sin_cos();
+        let formulas = NonUniform::new(self.knots.iter().map(make).collect(), make(&self.zeta));
+        Ok(formulas.segment(self.span as i64, &s, &c)?.to_vec())
+    }
 }
 
 #[cfg(test)]

@@ -27,9 +27,10 @@ use serde_json::json;
 use trig_core::input::{Lines, Source};
 use trig_core::{Affine, Described, SEED000_NONUNIFORM, parse_point, work};
 
-use super::{CliError, EvalArgs, Evaluation, Mode, evaluate, param_pairs, subject_of};
+use super::{CliError, EvalArgs, Evaluation, evaluate, param_pairs, subject_of};
 use crate::cost;
 use crate::format::{TextOrJson, json};
+use trig_core::evaluation::Arithmetic;
 use trig_specfile::AnyBasis;
 
 /// The points of `source`, one at a time: the text as written, its exact
@@ -74,7 +75,7 @@ fn count(source: &Source) -> Result<u64, CliError> {
 pub(super) fn stream(
     args: &EvalArgs,
     path: &Path,
-    mode: Mode,
+    mode: Arithmetic,
     out: &mut dyn Write,
 ) -> Result<(), CliError> {
     if args.piecewise
@@ -142,7 +143,7 @@ fn json_limit(values: u64) -> trig_core::CoreError {
 /// The rows as they are evaluated, with the work they spend.
 struct Rows<'a> {
     args: &'a EvalArgs,
-    mode: Mode,
+    mode: Arithmetic,
     subject: Option<&'a AnyBasis>,
     /// The number of points, when known before (a file).
     total: Option<u64>,
@@ -155,7 +156,7 @@ struct Rows<'a> {
 /// The work of one evaluation at the domain's midpoint: what a point costs
 /// when nothing is exactly zero (a point such as `0` can be much cheaper,
 /// so it would predict a file badly).
-fn probe(args: &EvalArgs, mode: Mode, subject: Option<&AnyBasis>) -> Option<u64> {
+fn probe(args: &EvalArgs, mode: Arithmetic, subject: Option<&AnyBasis>) -> Option<u64> {
     let s = subject?;
     let pairs = param_pairs(&args.params).ok()?;
     let p = s.params_from_pairs(&pairs, args.allow_outside_range).ok()?;
@@ -205,9 +206,9 @@ impl Rows<'_> {
     /// The arithmetic as the title states it (before any value).
     fn title_mode(&self) -> String {
         match self.mode {
-            Mode::F64 => "f64; ± certified error bounds".into(),
-            Mode::Bits(b) => format!("mpfr-{b}, certified: only proved digits are printed"),
-            Mode::Digits(n) => format!(
+            Arithmetic::F64 => "f64; ± certified error bounds".into(),
+            Arithmetic::Bits(b) => format!("mpfr-{b}, certified: only proved digits are printed"),
+            Arithmetic::Digits(n) => format!(
                 "{n} significant digits requested, only proved digits printed; the last line says whether all were"
             ),
         }
@@ -261,7 +262,7 @@ fn text(
                     largest = Some((x, b.clone()));
                 }
             }
-            if let (Mode::Digits(n), Some(d)) = (rows.mode, v.digits) {
+            if let (Arithmetic::Digits(n), Some(d)) = (rows.mode, v.digits) {
                 short += usize::from(d < n);
             }
         }
@@ -275,16 +276,16 @@ fn text(
         return Err(CliError::Usage(format!("{name}: no points")));
     }
     let last = match rows.mode {
-        Mode::F64 => largest.map(|(_, b)| {
+        Arithmetic::F64 => largest.map(|(_, b)| {
             format!(
                 "# every f64 value is within {b} of the exact value (enclosures up to {bits} bits)"
             )
         }),
-        Mode::Bits(_) => None,
-        Mode::Digits(n) if short == 0 => Some(format!(
+        Arithmetic::Bits(_) => None,
+        Arithmetic::Digits(n) if short == 0 => Some(format!(
             "# {n} significant digits of every value, all proved (MPFR up to {bits} bits)"
         )),
-        Mode::Digits(n) => Some(format!(
+        Arithmetic::Digits(n) => Some(format!(
             "# {n} significant digits requested: {short} values have fewer (marked above)"
         )),
     };
