@@ -193,32 +193,6 @@ pub fn linear_map_parts(
         .collect()
 }
 
-/// The symmetry `f_i(x) = f_{n−1−i}(x̄)` for the listed `i`, with `x̄` the
-/// reflection of the family's variable (`u ↦ 1 − u`, `t ↦ π/2 − t` for the
-/// angle, `t ↦ 1 − t` for polynomials), decided exactly.
-pub fn symmetry(family: Family, indices: std::ops::Range<usize>) -> Verdict {
-    let info = family.info();
-    let (x, reflected) = match info.variable {
-        trig_core::Variable::UnitAngle => ("u", "1 − u"),
-        trig_core::Variable::Angle => ("t", "π/2 − t"),
-        trig_core::Variable::Polynomial => ("t", "1 − t"),
-    };
-    let b = basis(family);
-    let n = b.len();
-    let f = info.functions;
-    identities(
-        indices
-            .map(|i| {
-                (
-                    format!("{}({x}) − {}({reflected})", f[i], f[n - 1 - i]),
-                    b[i].clone(),
-                    reflect(&b[n - 1 - i], info.variable.is_trigonometric()),
-                )
-            })
-            .collect(),
-    )
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

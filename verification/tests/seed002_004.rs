@@ -4,9 +4,9 @@
 use proptest::prelude::*;
 use rug::{Float, Rational};
 use trig_certify::ParamBox;
+use trig_certify::maxima::{Maximum, profile};
 use trig_core::{Family, Mpfr, Real};
 use trig_verification::certify::nonneg::{BoxCertificate, certify_box};
-use trig_verification::certify::unimodal::{Maximum, profile};
 use trig_verification::exact::basis;
 use trig_verification::{Status, Verdict, run};
 

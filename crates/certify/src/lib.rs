@@ -33,6 +33,7 @@ pub mod enclosure;
 pub mod exp_half_line;
 pub mod factors;
 pub mod krawczyk;
+pub mod maxima;
 pub mod nonneg;
 pub mod range;
 pub mod real_point;

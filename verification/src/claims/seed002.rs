@@ -6,14 +6,14 @@ use trig_core::{Family, Ring};
 use trig_deriv::{End, Wrt, curve_endpoint_derivatives};
 use trig_symbolic::{Poly, Sym};
 
-use crate::certify::unimodal::exactly_one_maximum;
 use crate::claim::{Claim, Seed};
 use crate::evidence::EvidenceList;
 use crate::exact::{
     IDENTITY, basis, combination, identities, identity, linear_map_parts, reflect, sum, symbols,
-    symmetry,
 };
 use crate::judge::certificate::nonnegative_on;
+use crate::judge::maxima::exactly_one_maximum;
+use crate::judge::symmetry::reflection_symmetry;
 use crate::status::Status;
 use crate::verdict::Verdict;
 use trig_certify::ParamBox;
@@ -143,7 +143,7 @@ fn d1b() -> Verdict {
 }
 
 fn d3() -> Verdict {
-    symmetry(Family::Seed002Quartic, 0..3)
+    reflection_symmetry(&Family::Seed002Quartic, 0..3)
 }
 
 /// `R, R', R''` (in θ) of the rational curve at `θ = 0` and `θ = π/2`, with
@@ -292,7 +292,7 @@ fn d10b() -> Verdict {
 /// Each `b_i` has exactly one maximum on `[0, π/2]`: certified count of the
 /// sign changes of `b_i'`.
 fn d4() -> Verdict {
-    exactly_one_maximum(Family::Seed002Quartic, &basis(Family::Seed002Quartic))
+    exactly_one_maximum(&Family::Seed002Quartic, &basis(Family::Seed002Quartic))
 }
 
 /// The six left-hand sides of (3) against the curve's own derivatives: as

@@ -11,8 +11,8 @@ use crate::judge::certificate::{nonnegative_on, nonnegative_on_box};
 
 use crate::exact::{
     IDENTITY, basis, combination, identities, identity, linear_map_parts, reflect, sum, symbols,
-    symmetry,
 };
+use crate::judge::symmetry::reflection_symmetry;
 use crate::status::Status;
 use crate::verdict::Verdict;
 use trig_certify::ParamBox;
@@ -238,7 +238,7 @@ fn e3b() -> Verdict {
 }
 
 fn e5() -> Verdict {
-    symmetry(Family::Eh, 0..4)
+    reflection_symmetry(&Family::Eh, 0..4)
 }
 
 fn e6() -> Verdict {

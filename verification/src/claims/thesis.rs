@@ -11,11 +11,12 @@ use trig_symbolic::Sym;
 use crate::claim::{Claim, Seed};
 use crate::evidence::Evidence;
 use crate::exact::{
-    at_end, basis, combination, identities, identity, residual_verdict, sum, symbols, symmetry,
+    at_end, basis, combination, identities, identity, residual_verdict, sum, symbols,
 };
 use crate::judge::certificate::{
     maximal_versus_published, monotone, nonnegative_on, on_published_range,
 };
+use crate::judge::symmetry::reflection_symmetry;
 use crate::numeric::{counterexample_item, differ, half_pi_minus, point, show, value};
 use crate::status::Status;
 use crate::verdict::Verdict;
@@ -221,7 +222,7 @@ fn t4() -> Verdict {
 }
 
 fn t4b() -> Verdict {
-    symmetry(Family::ThesisQuadratic, 0..3)
+    reflection_symmetry(&Family::ThesisQuadratic, 0..3)
 }
 
 fn quadratic_curve_ends() -> (Sym, Sym) {
@@ -272,7 +273,7 @@ fn t9() -> Verdict {
 }
 
 fn t9b() -> Verdict {
-    symmetry(Family::ThesisCubic, 0..4)
+    reflection_symmetry(&Family::ThesisCubic, 0..4)
 }
 
 fn t25() -> Verdict {

@@ -3,6 +3,8 @@
 //! exchanged when printed so), by a 256-bit MPFR counterexample otherwise;
 //! and the battery's symmetry, which finds the exchange by itself.
 
+use std::ops::Range;
+
 use rug::Rational;
 use trig_core::basis::eval_at;
 use trig_core::{Affine, Mpfr, Real, Ring, Variable};
@@ -113,14 +115,15 @@ pub fn reflect<B: ExactBasis>(
     Ok(g)
 }
 
-/// `f_i(x) = f_{offset−i}(A − x; σ(p))` exactly for every `i` with
-/// `offset − i` a function; an index outside the basis is noted.
+/// `f_i(x) = f_{offset−i}(A − x; σ(p))` exactly for every `i` in
+/// `indices` with `offset − i` a function (the offset as printed:
+/// `index_text`); an index outside the basis is noted.
 fn exact_symmetry<B: ExactBasis>(
     basis: &B,
     a: &Affine,
-    offset: i64,
-    index_text: &str,
+    (offset, index_text): (i64, &str),
     sigma: &[Sym],
+    indices: Range<i64>,
 ) -> Verdict {
     let b = basis_of(basis);
     let names = basis.function_names();
@@ -128,7 +131,7 @@ fn exact_symmetry<B: ExactBasis>(
     let x = &basis.variable_name();
     let xr = format!("{} − {x}", pretty(a, basis));
     let mut parts = Vec::new();
-    for i in (0..n).filter(|i| (0..n).contains(&(offset - i))) {
+    for i in indices.filter(|i| (0..n).contains(&(offset - i))) {
         let (i, j) = (i as usize, (offset - i) as usize);
         match reflect(basis, &b[j], a, sigma) {
             Ok(r) => parts.push((
@@ -148,6 +151,15 @@ fn exact_symmetry<B: ExactBasis>(
     v
 }
 
+/// `f_i(x) = f_{n−1−i}(A − x)` for the printed `i` (`indices`), exactly:
+/// the reflection of the domain with the indices reversed and the
+/// parameters kept.
+pub fn reflection_symmetry<B: ExactBasis>(basis: &B, indices: Range<i64>) -> Verdict {
+    let n = basis.function_names().len() as i64;
+    let a = basis.domain().reflection();
+    exact_symmetry(basis, &a, (n - 1, ""), &param_symbols(basis), indices)
+}
+
 /// The battery's symmetry: the reflection of the domain with the indices
 /// reversed; for two parameters, when that fails, the same with the
 /// parameters exchanged (the usual symmetry of two-parameter bases).
@@ -156,7 +168,7 @@ pub fn battery_symmetry<B: ExactBasis>(basis: &B) -> (String, Verdict) {
     let a = basis.domain().reflection();
     let x = &basis.variable_name();
     let xr = format!("{} − {x}", pretty(&a, basis));
-    let plain = exact_symmetry(basis, &a, n - 1, "", &param_symbols(basis));
+    let plain = reflection_symmetry(basis, 0..n);
     let text = format!("f_i({x}) = f_{{{}−i}}({xr})", n - 1);
     if plain.status == Status::Holds || basis.parameters().len() != 2 {
         return (text, plain);
@@ -165,7 +177,7 @@ pub fn battery_symmetry<B: ExactBasis>(basis: &B) -> (String, Verdict) {
         param_symbols(basis)[1].clone(),
         param_symbols(basis)[0].clone(),
     ];
-    let exchanged = exact_symmetry(basis, &a, n - 1, "", &swapped);
+    let exchanged = exact_symmetry(basis, &a, (n - 1, ""), &swapped, 0..n);
     if exchanged.status != Status::Holds {
         return (text, plain);
     }
@@ -199,7 +211,8 @@ fn index_note<B: ExactBasis>(basis: &B, offset: i64, index_text: &str) -> Option
 /// domain, otherwise a 256-bit MPFR counterexample at the domain's midpoint.
 pub fn symmetry_claim<B: ExactBasis>(basis: &B, s: &PrintedSymmetry<'_>) -> Verdict {
     let mut v = if *s.map == basis.domain().reflection() {
-        exact_symmetry(basis, s.map, s.offset, s.index_text, s.params)
+        let n = basis.function_names().len() as i64;
+        exact_symmetry(basis, s.map, (s.offset, s.index_text), s.params, 0..n)
     } else {
         printed_reflection(basis, s)
     };
@@ -297,7 +310,7 @@ fn printed_reflection<B: ExactBasis>(basis: &B, s: &PrintedSymmetry<'_>) -> Verd
         ],
     )]);
     let a_refl = d.reflection();
-    let reading = exact_symmetry(basis, &a_refl, n - 1, "", &param_symbols(basis));
+    let reading = exact_symmetry(basis, &a_refl, (n - 1, ""), &param_symbols(basis), 0..n);
     if status == Status::Fails && reading.status == Status::Holds {
         evidence.push(if basis.variable() == Some(Variable::UnitAngle) {
             "the statement holds in the angle θ = πu/2 (θ ↦ π/2 − θ), i.e. for u ↦ 1 − u; see the reading".to_string()
