@@ -5,6 +5,7 @@ use crate::claim::Claim;
 
 mod properties;
 mod properties_formulas;
+mod second_list;
 mod seed000;
 mod seed000_appendix_b;
 mod seed000_appendix_c;
@@ -35,6 +36,7 @@ pub fn all() -> Vec<Claim> {
         seed004::CLAIMS,
         seed004_joins::CLAIMS,
         properties::CLAIMS,
+        second_list::CLAIMS,
     ]
     .concat()
 }
