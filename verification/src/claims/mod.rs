@@ -18,6 +18,7 @@ mod seed004_joins;
 mod thesis;
 mod thesis_interp;
 mod thesis_joins;
+mod thesis_out_of_range;
 mod thesis_tables;
 
 /// All claims, in report order.
@@ -37,6 +38,7 @@ pub fn all() -> Vec<Claim> {
         seed004_joins::CLAIMS,
         properties::CLAIMS,
         second_list::CLAIMS,
+        thesis_out_of_range::CLAIMS,
     ]
     .concat()
 }
