@@ -51,7 +51,7 @@ fn circle_point(k: i64) -> (Rational, Rational) {
     let z = Rational::from((k, STEPS));
     let z2 = Rational::from(&z * &z);
     let d = Rational::from(1 + &z2);
-    (Rational::from(2 * z) / &d, Rational::from(1 - z2) / d)
+    ((2 * z) / &d, (1 - z2) / d)
 }
 
 /// The four functions of (3.7) at `m` and the exact point `(s, c)`.
@@ -90,7 +90,7 @@ fn curve_outside(b: &[Sym], m: i64) -> Option<(Rational, Rational, Rational, Rat
             (Rational::from(6 - &y), "y ≤ 6 (edge P1P2)"),
             (Rational::from(3 * &x) - &y, "3x − y ≥ 0 (edge P0P1)"),
             (
-                Rational::from(24 - Rational::from(3 * &x)) - &y,
+                (24 - Rational::from(3 * &x)) - &y,
                 "3(8 − x) − y ≥ 0 (edge P2P3)",
             ),
         ];
