@@ -16,7 +16,10 @@ mod seed004;
 mod seed004_joins;
 mod thesis;
 mod thesis_interp;
+mod thesis_interp_text;
 mod thesis_joins;
+mod thesis_lsq;
+mod thesis_survey;
 mod thesis_tables;
 mod thesis_text;
 
@@ -37,6 +40,9 @@ pub fn all() -> Vec<Claim> {
         seed004_joins::CLAIMS,
         properties::CLAIMS,
         thesis_text::CLAIMS,
+        thesis_survey::CLAIMS,
+        thesis_interp_text::CLAIMS,
+        thesis_lsq::CLAIMS,
     ]
     .concat()
 }

@@ -423,7 +423,7 @@ pub fn describe(name: &str, variant: Variant, m: &PieceMinimum) -> String {
 const CERTIFIED: &str = "certified minimum per piece: control points enclosed for π ∈ [3.14159265358979323846264338327, …328], Weierstrass z = tan(θ/2) + exact Bernstein subdivision lower bound, exact value at a rational point as upper bound";
 
 /// The certified minima of the example `name` with `scheme`/`variant`, as a verdict.
-fn positivity(name: &str, scheme: Scheme, variant: Variant) -> Verdict {
+pub(super) fn positivity(name: &str, scheme: Scheme, variant: Variant) -> Verdict {
     let result = DataSet::named(name)
         .and_then(|d| build(&d, scheme, variant, &Interval::point(Rational::new())))
         .and_then(|s| certified_minimum(&s, &crate::minimum::prove));
