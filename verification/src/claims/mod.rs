@@ -17,9 +17,13 @@ mod seed004;
 mod seed004_joins;
 mod thesis;
 mod thesis_interp;
+mod thesis_interp_text;
 mod thesis_joins;
+mod thesis_lsq;
 mod thesis_out_of_range;
+mod thesis_survey;
 mod thesis_tables;
+mod thesis_text;
 
 /// All claims, in report order.
 pub fn all() -> Vec<Claim> {
@@ -39,6 +43,10 @@ pub fn all() -> Vec<Claim> {
         properties::CLAIMS,
         second_list::CLAIMS,
         thesis_out_of_range::CLAIMS,
+        thesis_text::CLAIMS,
+        thesis_survey::CLAIMS,
+        thesis_interp_text::CLAIMS,
+        thesis_lsq::CLAIMS,
     ]
     .concat()
 }

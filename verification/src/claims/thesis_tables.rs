@@ -24,6 +24,7 @@ use rug::{Integer, Rational};
 use crate::claim::{Claim, Seed};
 use crate::evidence::EvidenceList;
 use crate::evidence::{Evidence, Expr, Kind, Value, Witness};
+use crate::judge::quoted::decimal;
 use crate::status::Status;
 use crate::verdict::Verdict;
 
@@ -35,7 +36,7 @@ pub const CLAIMS: &[Claim] = &[Claim {
     check: t32,
 }];
 
-const DATA: &str = include_str!("thesis_tables.txt");
+pub(super) const DATA: &str = include_str!("thesis_tables.txt");
 
 /// How the tables are checked, as the report states it.
 const METHOD: &str = "exact rational arithmetic on the printed decimals; a relation holds when the exact difference is within the printed rounding (½ unit in the last printed place of every value involved); relations of a segment table: TOTAL before and after total = Σ of the segments, TOTAL max and min = max and min over the segments, TOTAL average = mean of the segment averages, and each figure the text quotes = the TOTAL row; of a summary table: each entry = the TOTAL row of its per-letter table; of Table 6.17: each best scheme = the smallest average error, and its figures = the summaries";
@@ -57,14 +58,14 @@ impl std::error::Error for DataError {}
 
 /// A printed number: its text, exact value and rounding allowance.
 #[derive(Debug, Clone)]
-struct Num {
-    text: String,
-    value: Rational,
+pub(super) struct Num {
+    pub(super) text: String,
+    pub(super) value: Rational,
     allowance: Rational,
 }
 
 impl Num {
-    fn parse(text: &str, line: usize) -> Result<Num, DataError> {
+    pub(super) fn parse(text: &str, line: usize) -> Result<Num, DataError> {
         let value = trig_core::parse_exact(text).map_err(|e| DataError {
             line,
             reason: e.to_string(),
@@ -86,23 +87,23 @@ impl Num {
 
 /// One printed table.
 #[derive(Debug, Clone, Default)]
-struct Table {
-    number: String,
-    letter: String,
-    scheme: String,
+pub(super) struct Table {
+    pub(super) number: String,
+    pub(super) letter: String,
+    pub(super) scheme: String,
     column: String,
     notes: Vec<String>,
     /// Row label and cells (segment tables: segment rows, then TOTAL).
-    rows: Vec<(String, Vec<Num>)>,
+    pub(super) rows: Vec<(String, Vec<Num>)>,
     /// Numbers the text states: key and value.
-    texts: Vec<(String, Num)>,
+    pub(super) texts: Vec<(String, Num)>,
     /// Summary tables: the per-letter tables of the four columns.
     of: Vec<String>,
     /// Table 6.17: letter, printed best scheme, average, bad points.
     best: Vec<(String, String, Num, Num)>,
 }
 
-fn parse(data: &str) -> Result<Vec<Table>, DataError> {
+pub(super) fn parse(data: &str) -> Result<Vec<Table>, DataError> {
     let mut tables: Vec<Table> = Vec::new();
     for (i, raw) in data.lines().enumerate() {
         let line = i + 1;
@@ -160,27 +161,6 @@ fn parse(data: &str) -> Result<Vec<Table>, DataError> {
     Ok(tables)
 }
 
-/// An exact rational as a decimal when it terminates (all printed
-/// differences do), else as a fraction with a 6-digit approximation.
-fn decimal(q: &Rational) -> String {
-    for places in 0..=20u32 {
-        let scaled = q.clone() * Rational::from(Integer::from(10).pow(places));
-        if *scaled.denom() == 1 {
-            let n = scaled.numer().clone();
-            let digits = n.clone().abs().to_string();
-            let sign = if n < 0 { "-" } else { "" };
-            if places == 0 {
-                return format!("{sign}{digits}");
-            }
-            let p = places as usize;
-            let padded = format!("{digits:0>width$}", width = p + 1);
-            let (int, frac) = padded.split_at(padded.len() - p);
-            return format!("{sign}{int}.{frac}");
-        }
-    }
-    format!("{q} ≈ {:.6}", q.to_f64())
-}
-
 /// One relation `printed = computed` with its rounding allowance.
 fn relation(what: &str, printed: &Num, computed: &Rational, allowance: Rational) -> Check {
     let diff = printed.value.clone() - computed;
@@ -232,7 +212,7 @@ struct Check {
 /// Segment-table columns: before total, after total, max, min, average.
 const COLUMNS: [&str; 5] = ["before total", "after total", "max", "min", "average"];
 
-fn total_row(t: &Table) -> Result<&[Num], String> {
+pub(super) fn total_row(t: &Table) -> Result<&[Num], String> {
     t.rows
         .iter()
         .find(|(l, _)| l == "TOTAL")
@@ -321,7 +301,7 @@ const SUMMARY: [(&str, usize); 4] = [
     ("Min. Error", 3),
     ("Ave. Error", 4),
 ];
-const SCHEMES: [&str; 4] = ["proposed", "Majeed", "Han", "Usman"];
+pub(super) const SCHEMES: [&str; 4] = ["proposed", "Majeed", "Han", "Usman"];
 
 fn find<'a>(tables: &'a [Table], number: &str) -> Result<&'a Table, String> {
     tables
@@ -330,7 +310,7 @@ fn find<'a>(tables: &'a [Table], number: &str) -> Result<&'a Table, String> {
         .ok_or_else(|| format!("no Table {number}"))
 }
 
-fn summary_row<'a>(t: &'a Table, label: &str) -> Result<&'a [Num], String> {
+pub(super) fn summary_row<'a>(t: &'a Table, label: &str) -> Result<&'a [Num], String> {
     t.rows
         .iter()
         .find(|(l, _)| l == label)

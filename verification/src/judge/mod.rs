@@ -15,6 +15,7 @@ pub mod independence;
 pub mod join;
 pub mod maxima;
 pub mod nonnegative;
+pub mod quoted;
 pub mod region;
 pub mod span;
 pub mod symmetry;

@@ -1,0 +1,348 @@
+//! Thesis 4.3.4–4.3.5: what the text says about the interpolants of
+//! Tables 4.4–4.6 (claims T55, T56, T57), decided on the curves the
+//! schemes of `trig-interp` build from the printed tables and on the
+//! printed data themselves.
+//!
+//! A maximum is the certified minimum of `−P`
+//! ([`trig_interp::certified_minimum`] on the spline with every control
+//! point negated): `max P ∈ [−upper, −lower]` on each piece.
+
+use rug::Rational;
+use trig_interp::{
+    DataSet, Interval, PieceMinimum, Scheme, Spline, Variant, build, certified_minimum,
+};
+
+use super::thesis::claim;
+use super::thesis_interp::positivity;
+use crate::claim::Claim;
+use crate::evidence::{Evidence, Expr, Kind, Value, Witness};
+use crate::judge::quoted::decimal;
+use crate::status::Status;
+use crate::verdict::Verdict;
+
+pub const CLAIMS: &[Claim] = &[
+    claim(
+        "T55",
+        "4.3.4, Figure 4.13 text",
+        "the G² interpolant of Table 4.4 rises to about 55 near x = 4.5, then drops towards the endpoint",
+        t55,
+    ),
+    claim(
+        "T56",
+        "4.3.5, text on Figures 4.14 and 4.15",
+        "the data of Tables 4.5/4.6 have \"a point lying on the zero axis at x = 1\" and \"several data points … exactly on … zero\"",
+        t56,
+    ),
+    claim(
+        "T57",
+        "4.3.5, last paragraph",
+        "with the C¹/C² schemes (4.21)/(4.25), the interpolants of data sets V/VI dip below zero (\"a high tendency to oscillate below the zero level\")",
+        t57,
+    ),
+];
+
+/// How a maximum is certified, as the report states it.
+const MAXIMUM: &str = "certified maximum per piece: the certified minimum of −P (control points enclosed for π ∈ [3.14159265358979323846264338327, …328], Weierstrass z = tan(θ/2) + exact Bernstein subdivision), so max P ∈ [−upper, −lower]; reading of \"about 55\": the maximum rounds to 55 at two significant digits (certified in [54.5, 55.5)); of \"near x = 4.5\": the maximum lies on the piece [4, 5], whose middle is 4.5";
+
+/// `q` with 4 decimals, rounded down or up.
+fn dec4(q: &Rational, up: bool) -> String {
+    let scaled = q.clone() * Rational::from(10_000);
+    let k = if up { scaled.ceil() } else { scaled.floor() };
+    decimal(&(k / Rational::from(10_000)))
+}
+
+/// Certified bounds `[lo, hi]` of the maximum of each piece of `spline`.
+fn piece_maxima(spline: &Spline<Interval>) -> Result<Vec<(Rational, Rational, f64)>, String> {
+    let mut negated = spline.clone();
+    for piece in &mut negated.pieces {
+        piece.points = piece.points.clone().map(|v| -v);
+    }
+    let minima = certified_minimum(&negated, &crate::minimum::prove).map_err(|e| e.to_string())?;
+    minima
+        .iter()
+        .map(|m: &PieceMinimum| match &m.lower {
+            Some(l) => Ok((-m.upper.clone(), -l.clone(), m.x)),
+            None => Err(format!(
+                "piece {}: the maximum is not certified ({})",
+                m.piece + 1,
+                m.undecided.as_deref().unwrap_or("undecided")
+            )),
+        })
+        .collect()
+}
+
+/// T55 on the interpolant `scheme`/`variant` of the table `name`.
+fn peak(name: &str, scheme: Scheme, variant: Variant) -> Result<Verdict, String> {
+    let data = DataSet::named(name).map_err(|e| e.to_string())?;
+    let spline = build(&data, scheme, variant, &Interval::point(Rational::new()))
+        .map_err(|e| e.to_string())?;
+    let maxima = piece_maxima(&spline)?;
+    let (j, (lo, hi, x)) = maxima
+        .iter()
+        .enumerate()
+        .max_by(|a, b| a.1.0.cmp(&b.1.0))
+        .ok_or("no pieces")?;
+    let mut items: Vec<Evidence> = maxima
+        .iter()
+        .enumerate()
+        .map(|(i, (l, h, x))| {
+            Evidence::note(format!(
+                "piece {} [{}, {}]: max P ∈ [{}, {}] at x ≈ {x:.4}",
+                i + 1,
+                data.x[i],
+                data.x[i + 1],
+                dec4(l, false),
+                dec4(h, true)
+            ))
+        })
+        .collect();
+    // the piece of the maximum is certified when its lower bound beats every other upper bound
+    let alone = maxima
+        .iter()
+        .enumerate()
+        .all(|(i, (_, h, _))| i == j || h < lo);
+    let (a, b) = (&data.x[j], &data.x[j + 1]);
+    let four_and_half = Rational::from((9, 2));
+    let near = alone && (a.clone() + b) / 2u32 == four_and_half;
+    items.push(
+        Evidence::new(
+            Kind::Comparison,
+            format!(
+                "the maximum over [{}, {}] lies on piece {} [{a}, {b}] (x ≈ {x:.4}){}",
+                data.x[0],
+                data.x[data.x.len() - 1],
+                j + 1,
+                if alone {
+                    ", every other piece's certified maximum being lower"
+                } else {
+                    "; another piece's bound overlaps it"
+                }
+            ),
+        )
+        .about("near x = 4.5", status(near)),
+    );
+    let (low, high) = (Rational::from((109, 2)), Rational::from((111, 2)));
+    let about = *lo >= low && *hi < high;
+    items.push(
+        Evidence::new(
+            Kind::Comparison,
+            format!(
+                "max P ∈ [{}, {}] ⊂ [54.5, 55.5): {}",
+                dec4(lo, false),
+                dec4(hi, true),
+                if about { "yes" } else { "no" }
+            ),
+        )
+        .about("rises to about 55", status(about))
+        .witnessed((!about).then(|| bound_witness(lo, hi))),
+    );
+    let above = (lo.to_f64() / 55.0 - 1.0) * 100.0;
+    let loose = lo.clone() * 10u32 >= 55 * 9 && hi.clone() * 10u32 <= 55 * 11;
+    items.push(Evidence::note(format!(
+        "for comparison: the certified maximum is {above:.1}% above 55; a looser reading of \"about\" (within 10%) would {}",
+        if loose { "accept it" } else { "not accept it either" }
+    )));
+    let end = &data.f[data.f.len() - 1];
+    let drops = end < lo && j + 1 == maxima.len();
+    items.push(
+        Evidence::new(
+            Kind::Comparison,
+            format!(
+                "P(x_n) = f_n = {} below the maximum, which lies on the last piece: {}",
+                decimal(end),
+                if drops { "yes" } else { "no" }
+            ),
+        )
+        .about("then drops towards the endpoint", status(drops)),
+    );
+    let st = Status::conjunction(items.iter().filter_map(|e| e.status));
+    Ok(Verdict::new(st, MAXIMUM, items))
+}
+
+fn bound_witness(lo: &Rational, hi: &Rational) -> Witness {
+    let v = |label: &str, q: &Rational, up: bool| Value {
+        label: label.into(),
+        value: Expr::decimal(q, &dec4(q, up)),
+    };
+    Witness {
+        point: Vec::new(),
+        note: Some("the certified maximum".into()),
+        values: vec![v("max P ≥", lo, false), v("max P ≤", hi, true)],
+        exact: true,
+    }
+}
+
+fn status(ok: bool) -> Status {
+    if ok { Status::Holds } else { Status::Fails }
+}
+
+fn t55() -> Verdict {
+    peak("thesis-table-4.4", Scheme::G2, Variant::Printed).unwrap_or_else(Verdict::not_checkable)
+}
+
+/// A printed data value against the value the text gives it.
+fn data_value(
+    name: &str,
+    at: &Rational,
+    text: Rational,
+    subject: &str,
+) -> Result<Evidence, String> {
+    let data = DataSet::named(name).map_err(|e| e.to_string())?;
+    let i = data
+        .x
+        .iter()
+        .position(|x| x == at)
+        .ok_or_else(|| format!("{name} has no knot x = {at}"))?;
+    let f = &data.f[i];
+    let ok = *f == text;
+    Ok(Evidence::new(
+        Kind::Comparison,
+        format!(
+            "{}, row {}: x = {at}, f = {}",
+            data.table.caption,
+            i + 1,
+            decimal(f)
+        ),
+    )
+    .about(subject, status(ok))
+    .witnessed((!ok).then(|| Witness {
+        point: Vec::new(),
+        note: Some(format!("{} at x = {at}", data.table.caption)),
+        values: vec![
+            Value {
+                label: "printed f".into(),
+                value: Expr::decimal(f, &decimal(f)),
+            },
+            Value {
+                label: "on the zero axis".into(),
+                value: Expr::decimal(&text, &decimal(&text)),
+            },
+        ],
+        exact: true,
+    })))
+}
+
+fn t56() -> Verdict {
+    let run = || -> Result<Vec<Evidence>, String> {
+        let mut items = vec![data_value(
+            "thesis-table-4.6",
+            &Rational::from(1),
+            Rational::new(),
+            "\"a point lying on the zero axis at x = 1\" (Figure 4.15, Table 4.6)",
+        )?];
+        for name in ["thesis-table-4.5", "thesis-table-4.6"] {
+            let data = DataSet::named(name).map_err(|e| e.to_string())?;
+            let zeros = data.f.iter().filter(|f| **f == 0).count();
+            let values: Vec<String> = data.f.iter().map(decimal).collect();
+            items.push(
+                Evidence::new(
+                    Kind::Comparison,
+                    format!(
+                        "{}: f = {}; {zeros} of {} exactly 0",
+                        data.table.caption,
+                        values.join(", "),
+                        data.f.len()
+                    ),
+                )
+                .about(
+                    format!(
+                        "\"several data points lie exactly on … zero axis\" ({})",
+                        data.table.caption
+                    ),
+                    status(zeros >= 2),
+                ),
+            );
+        }
+        items.push(Evidence::note(
+            "the full sentence of 4.3.5 reads \"exactly on or extremely close to zero axis\"; its second alternative (values 0.1 at x = 1 and 1 at x = 2, which 4.3.5 itself calls \"a near-zero point\") has no definition of \"extremely close\" and is not decided",
+        ));
+        Ok(items)
+    };
+    match run() {
+        Ok(items) => {
+            let st = Status::conjunction(items.iter().filter_map(|e| e.status));
+            Verdict::new(
+                st,
+                "the printed data values of Tables 4.5 and 4.6, read exactly; \"several\" read as at least two",
+                items,
+            )
+        }
+        Err(why) => Verdict::not_checkable(why),
+    }
+}
+
+/// "The interpolant dips below zero": the negation of its certified
+/// positivity (a certified negative value holds, a certified
+/// nonnegativity fails).
+fn dips(name: &str, scheme: Scheme, variant: Variant) -> Verdict {
+    let v = positivity(name, scheme, variant);
+    let st = match v.status {
+        Status::Fails => Status::Holds,
+        Status::Holds => Status::Fails,
+        other => other,
+    };
+    let mut out = Verdict::new(st, v.method, v.evidence);
+    if st == Status::Fails {
+        out.evidence
+            .push("every piece is certified ≥ 0 (above): the curve never dips below zero");
+    }
+    out
+}
+
+fn t57() -> Verdict {
+    let mut parts = Vec::new();
+    for (name, set) in [("thesis-table-4.5", "V"), ("thesis-table-4.6", "VI")] {
+        for (scheme, label) in [(Scheme::C1, "C¹ (4.21)"), (Scheme::C2, "C² (4.25)")] {
+            parts.push((
+                format!("data set {set}, {label}"),
+                dips(name, scheme, Variant::Printed),
+            ));
+        }
+    }
+    let mut v = Verdict::all(
+        "certified minimum per piece of the printed schemes on the printed data, with the tables' m_i; \"dips below zero\" holds when some piece is certified negative somewhere, fails when every piece is certified ≥ 0",
+        parts,
+    );
+    v.evidence.push(
+        "the printed C² scheme (4.25) uses the control points of (4.21) (its (4.23)/(4.24) only compute D_i), so its curve is the C¹ curve (T21)",
+    );
+    v
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_maximum_of_a_piece_brackets_its_values() {
+        let data = DataSet::named("thesis-table-4.4").unwrap();
+        let spline = build(
+            &data,
+            Scheme::G2,
+            Variant::Printed,
+            &Interval::point(Rational::new()),
+        )
+        .unwrap();
+        let maxima = piece_maxima(&spline).unwrap();
+        // every piece's maximum is at least its end values (the data)
+        for (i, (lo, hi, _)) in maxima.iter().enumerate() {
+            assert!(lo <= hi);
+            assert!(*hi >= data.f[i] && *hi >= data.f[i + 1], "piece {i}");
+        }
+    }
+
+    #[test]
+    fn a_changed_value_decides_the_zero_point() {
+        let on = data_value(
+            "thesis-table-4.6",
+            &Rational::from(1),
+            Rational::from((1, 10)),
+            "x",
+        )
+        .unwrap();
+        assert_eq!(on.status, Some(Status::Holds));
+        let off = data_value("thesis-table-4.6", &Rational::from(1), Rational::new(), "x").unwrap();
+        assert_eq!(off.status, Some(Status::Fails));
+        assert!(off.witness.is_some());
+    }
+}

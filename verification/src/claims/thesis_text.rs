@@ -1,0 +1,686 @@
+//! Thesis Chapter 6, the text against its tables (claims T66, T67, T68,
+//! T71): every figure and every statement in words that the paragraphs of
+//! 6.8 and 6.9 derive from Tables 6.2–6.16, recomputed from the printed
+//! cells.
+//!
+//! The tables are those of claim T32 (`thesis_tables.txt`, each cell an
+//! exact rational read from its printed decimal); the statements in words
+//! are `thesis_text_quotes.txt`, each with the reading it is decided under.
+//! A quoted figure is judged by [`crate::judge::quoted`]: it holds when it
+//! is the exact recomputed value rounded to the quoted decimals.
+
+use rug::Rational;
+
+use super::thesis::claim;
+use super::thesis_tables::{DATA, Num, SCHEMES, Table, parse, summary_row, total_row};
+use crate::claim::Claim;
+use crate::evidence::{Evidence, Expr, Kind, Value, Witness};
+use crate::judge::quoted::{QUOTED, decimal, quoted_figure, quoted_order};
+use crate::status::Status;
+use crate::verdict::Verdict;
+
+pub const CLAIMS: &[Claim] = &[
+    claim(
+        "T66",
+        "6.8.1–6.8.12, text under each table",
+        "figures in the text derived from Tables 6.2–6.13: before/after differences, \"largest total error in segment k\", \"mostly below 1.6\", quoted averages and maxima",
+        t66,
+    ),
+    claim(
+        "T67",
+        "6.8.13 (text on Table 6.15), 6.9",
+        "for delta: \"Han best, followed by the proposed spline, Majeed & Qayyum, Usman\"; 6.9: the proposed spline is \"most precise to the real image and nearest to the control polygon\"",
+        t67,
+    ),
+    claim(
+        "T68",
+        "Tables 6.2–6.13 against (3.7), (6.1), (6.2), 6.6",
+        "the four tables per letter are consistent with the stated set-up: all methods at parameter 0.6, with (3.7)(m) ≡ (6.2)(λ = m) and (6.1)(η) ≡ (6.2)(λ = η − 1) up to t ↦ 2t/π (T28); so proposed = Han and M&Q ≠ Han are expected, but the \"Before\" columns show proposed ≠ Han and M&Q = Han in 10 of 11 epsilon segments",
+        t68,
+    ),
+    claim(
+        "T71",
+        "6.9",
+        "\"increasing the total number of curve segments will decrease the approximation error\"",
+        t71,
+    ),
+];
+
+const QUOTES: &str = include_str!("thesis_text_quotes.txt");
+
+/// How T66 is decided, as the report states it.
+const T66_METHOD: &str = "exact rational arithmetic on the printed cells; a quoted figure with d decimals holds when it is the recomputed value rounded to d places (before/after: the TOTAL row; increment: TOTAL after − TOTAL before; maximum/minimum: over the segment rows; average: the TOTAL row and the mean of the segment averages, the convention of Tables 6.2–6.9 and of the summary Tables 6.14–6.16); statements in words under the reading stated with each";
+
+/// The columns of a segment table.
+const BEFORE: usize = 0;
+const AFTER: usize = 1;
+const MAX: usize = 2;
+const MIN: usize = 3;
+const AVE: usize = 4;
+
+/// One segment row: its number and its five cells.
+struct Segment<'a> {
+    number: usize,
+    cells: &'a [Num],
+}
+
+impl Segment<'_> {
+    fn increase(&self) -> Rational {
+        self.cells[AFTER].value.clone() - &self.cells[BEFORE].value
+    }
+    fn ratio(&self) -> Option<Rational> {
+        (self.cells[BEFORE].value != 0)
+            .then(|| self.cells[AFTER].value.clone() / &self.cells[BEFORE].value)
+    }
+}
+
+fn segments(t: &Table) -> Result<Vec<Segment<'_>>, String> {
+    t.rows
+        .iter()
+        .filter(|(label, _)| label != "TOTAL")
+        .map(|(label, cells)| {
+            let number = label
+                .parse()
+                .map_err(|_| format!("Table {}: row label {label} is not a segment", t.number))?;
+            if cells.len() != 5 {
+                return Err(format!(
+                    "Table {}: segment {number} needs 5 cells",
+                    t.number
+                ));
+            }
+            Ok(Segment { number, cells })
+        })
+        .collect()
+}
+
+/// A statement in words of `thesis_text_quotes.txt`.
+enum Words {
+    Largest(Vec<usize>),
+    Increase(Vec<usize>),
+    Increased(Vec<usize>),
+    Unchanged(Vec<usize>),
+    MostIncreased,
+    MostlyBelow(Num),
+}
+
+struct Quote {
+    table: String,
+    words: Words,
+    printed: String,
+}
+
+fn quotes(data: &str) -> Result<Vec<Quote>, String> {
+    let mut out = Vec::new();
+    for (i, raw) in data.lines().enumerate() {
+        if raw.trim().is_empty() || raw.starts_with('#') {
+            continue;
+        }
+        let err = |why: &str| format!("thesis_text_quotes.txt line {}: {why}", i + 1);
+        let f: Vec<&str> = raw.split('\t').collect();
+        let [table, kind, arg, printed] = f[..] else {
+            return Err(err("four tab-separated fields"));
+        };
+        let segs = || -> Result<Vec<usize>, String> {
+            arg.split_whitespace()
+                .map(|s| s.parse().map_err(|_| err("segment numbers")))
+                .collect()
+        };
+        let words = match kind {
+            "largest" => Words::Largest(segs()?),
+            "increase" => Words::Increase(segs()?),
+            "increased" => Words::Increased(segs()?),
+            "unchanged" => Words::Unchanged(segs()?),
+            "most-increased" => Words::MostIncreased,
+            "mostly-below" => {
+                Words::MostlyBelow(Num::parse(arg, i + 1).map_err(|e| e.to_string())?)
+            }
+            other => return Err(err(&format!("unknown kind {other}"))),
+        };
+        out.push(Quote {
+            table: table.into(),
+            words,
+            printed: printed.into(),
+        });
+    }
+    Ok(out)
+}
+
+fn list(segs: &[usize]) -> String {
+    segs.iter()
+        .map(usize::to_string)
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// A two-value witness: `a` against `b`, exact.
+fn pair(note: String, a: (&str, &Rational), b: (&str, &Rational)) -> Option<Witness> {
+    let value = |(label, v): (&str, &Rational)| Value {
+        label: label.into(),
+        value: Expr::decimal(v, &decimal(v)),
+    };
+    Some(Witness {
+        point: Vec::new(),
+        note: Some(note),
+        values: vec![value(a), value(b)],
+        exact: true,
+    })
+}
+
+fn status(ok: bool) -> Status {
+    if ok { Status::Holds } else { Status::Fails }
+}
+
+/// "The named segments stand above every other one by `key`": the smallest
+/// named value against the largest other one.
+fn stands_out(
+    segs: &[Segment],
+    named: &[usize],
+    key: &dyn Fn(&Segment) -> Option<Rational>,
+) -> Result<(bool, Option<Witness>, String), String> {
+    let keyed = |inside: bool| -> Result<Vec<(usize, Rational)>, String> {
+        segs.iter()
+            .filter(|s| named.contains(&s.number) == inside)
+            .map(|s| {
+                key(s)
+                    .map(|v| (s.number, v))
+                    .ok_or_else(|| format!("segment {} has no value", s.number))
+            })
+            .collect()
+    };
+    let (inside, outside) = (keyed(true)?, keyed(false)?);
+    if inside.len() != named.len() {
+        return Err(format!("the table has no segment among {}", list(named)));
+    }
+    let low = inside.iter().min_by(|a, b| a.1.cmp(&b.1)).expect("named");
+    let Some(high) = outside.iter().max_by(|a, b| a.1.cmp(&b.1)) else {
+        return Ok((true, None, "no other segment".into()));
+    };
+    let ok = low.1 > high.1;
+    let text = format!(
+        "lowest named: segment {} ({}); highest other: segment {} ({})",
+        low.0,
+        decimal(&low.1),
+        high.0,
+        decimal(&high.1)
+    );
+    let witness = (!ok).then(|| {
+        pair(
+            format!("segment {} is not named, segment {} is", high.0, low.0),
+            (&format!("segment {}", high.0), &high.1),
+            (&format!("segment {}", low.0), &low.1),
+        )
+    });
+    Ok((ok, witness.flatten(), text))
+}
+
+/// The item deciding one statement in words about table `t`.
+fn words_item(t: &Table, q: &Quote) -> Result<Evidence, String> {
+    let segs = segments(t)?;
+    let n = segs.len();
+    let subject = format!("\"{}\"", q.printed);
+    let item = |ok: bool, reading: &str, text: String, witness: Option<Witness>| {
+        Evidence::new(Kind::Comparison, format!("reading: {reading}; {text}"))
+            .about(subject.clone(), status(ok))
+            .witnessed(witness)
+    };
+    let after = |s: &Segment| Some(s.cells[AFTER].value.clone());
+    Ok(match &q.words {
+        Words::Largest(named) => {
+            let (ok, w, text) = stands_out(&segs, named, &after)?;
+            let (before_ok, _, _) = stands_out(&segs, named, &|s: &Segment| {
+                Some(s.cells[BEFORE].value.clone())
+            })?;
+            item(
+                ok,
+                &format!(
+                    "segment(s) {} hold the largest After total errors",
+                    list(named)
+                ),
+                format!(
+                    "{text} (the Before column {})",
+                    if before_ok { "agrees" } else { "does not" }
+                ),
+                w,
+            )
+        }
+        Words::Increase(named) => {
+            let (abs_ok, abs_w, abs_text) =
+                stands_out(&segs, named, &|s: &Segment| Some(s.increase()))?;
+            let (rel_ok, _, rel_text) = stands_out(&segs, named, &|s: &Segment| s.ratio())?;
+            item(
+                abs_ok || rel_ok,
+                &format!(
+                    "segment(s) {} have the largest increases, after − before or after/before",
+                    list(named)
+                ),
+                format!("after − before: {abs_text}; after/before: {rel_text}"),
+                abs_w,
+            )
+        }
+        Words::Increased(named) | Words::Unchanged(named) => {
+            let rise = matches!(q.words, Words::Increased(_));
+            let bad = segs.iter().find(|s| {
+                named.contains(&s.number)
+                    && if rise {
+                        s.increase() <= 0
+                    } else {
+                        s.increase() != 0
+                    }
+            });
+            let text = match bad {
+                Some(s) => format!(
+                    "segment {}: before {}, after {}",
+                    s.number, s.cells[BEFORE].text, s.cells[AFTER].text
+                ),
+                None => format!("every one of segment(s) {}", list(named)),
+            };
+            let w = bad.and_then(|s| {
+                pair(
+                    format!("segment {}", s.number),
+                    ("before", &s.cells[BEFORE].value),
+                    ("after", &s.cells[AFTER].value),
+                )
+            });
+            let reading = if rise {
+                "after > before"
+            } else {
+                "after = before"
+            };
+            item(bad.is_none(), reading, text, w)
+        }
+        Words::MostIncreased => {
+            let k = segs.iter().filter(|s| s.increase() > 0).count();
+            item(
+                2 * k > n,
+                "more than half of the segments have after > before",
+                format!("{k} of {n}"),
+                None,
+            )
+        }
+        Words::MostlyBelow(x) => {
+            let k = segs.iter().filter(|s| s.cells[AVE].value < x.value).count();
+            item(
+                2 * k > n,
+                &format!(
+                    "more than half of the segment averages are below {}",
+                    x.text
+                ),
+                format!("{k} of {n}"),
+                None,
+            )
+        }
+    })
+}
+
+/// The items of the quoted figures of table `t` (its `text` lines).
+fn figure_items(t: &Table) -> Result<Vec<Evidence>, String> {
+    let total = total_row(t)?;
+    let segs = segments(t)?;
+    let column = |k: usize| segs.iter().map(move |s| &s.cells[k].value);
+    let mut out = Vec::new();
+    for (key, v) in &t.texts {
+        let mut compare = |what: &str, r: Rational, from: &str| {
+            out.push(quoted_figure(what, &v.text, &r, from));
+        };
+        match key.as_str() {
+            "before" => compare(
+                "total error before",
+                total[BEFORE].value.clone(),
+                "TOTAL before",
+            ),
+            "after" => compare(
+                "total error after",
+                total[AFTER].value.clone(),
+                "TOTAL after",
+            ),
+            "increment" => compare(
+                "increase of the total error",
+                total[AFTER].value.clone() - &total[BEFORE].value,
+                "TOTAL after − TOTAL before",
+            ),
+            "max" => compare(
+                "maximum error",
+                column(MAX).max().cloned().ok_or("no segments")?,
+                "max over the segments",
+            ),
+            "min" => compare(
+                "minimum error",
+                column(MIN).min().cloned().ok_or("no segments")?,
+                "min over the segments",
+            ),
+            "ave" => {
+                compare("average error", total[AVE].value.clone(), "TOTAL average");
+                let mean =
+                    column(AVE).fold(Rational::new(), |a, x| a + x) / Rational::from(segs.len());
+                compare("average error", mean, "mean of the segment averages");
+            }
+            other => return Err(format!("Table {}: unknown text key {other}", t.number)),
+        }
+    }
+    Ok(out)
+}
+
+fn table_part(t: &Table, quotes: &[Quote]) -> Verdict {
+    let mut items = match figure_items(t) {
+        Ok(items) => items,
+        Err(why) => return Verdict::not_checkable(why),
+    };
+    for q in quotes.iter().filter(|q| q.table == t.number) {
+        match words_item(t, q) {
+            Ok(item) => items.push(item),
+            Err(why) => return Verdict::not_checkable(why),
+        }
+    }
+    let st = Status::conjunction(items.iter().filter_map(|e| e.status));
+    Verdict::new(st, QUOTED, items)
+}
+
+fn tables() -> Result<Vec<Table>, String> {
+    parse(DATA).map_err(|e| e.to_string())
+}
+
+fn t66() -> Verdict {
+    let (tables, quotes) = match (tables(), quotes(QUOTES)) {
+        (Ok(t), Ok(q)) => (t, q),
+        (Err(e), _) | (_, Err(e)) => return Verdict::not_checkable(e),
+    };
+    let parts = tables
+        .iter()
+        .filter(|t| SCHEMES.contains(&t.scheme.as_str()))
+        .map(|t| {
+            (
+                format!("Table {} ({}, {})", t.number, t.letter, t.scheme),
+                table_part(t, &quotes),
+            )
+        })
+        .collect();
+    Verdict::all(T66_METHOD, parts)
+}
+
+/// The names the thesis uses for the four schemes of the summary tables.
+const NAMES: [&str; 4] = ["proposed", "Majeed & Qayyum", "Han", "Usman"];
+
+fn summary<'a>(tables: &'a [Table], letter: &str) -> Result<&'a Table, String> {
+    tables
+        .iter()
+        .find(|t| t.scheme == "summary" && t.letter == letter)
+        .ok_or_else(|| format!("no summary table for {letter}"))
+}
+
+fn row_entries(t: &Table, row: &str) -> Result<Vec<(&'static str, Rational)>, String> {
+    let cells = summary_row(t, row)?;
+    Ok(NAMES
+        .iter()
+        .copied()
+        .zip(cells.iter().map(|c| c.value.clone()))
+        .collect())
+}
+
+/// The scheme of least value in `row` of `t`.
+fn least(t: &Table, row: &str) -> Result<(&'static str, Rational), String> {
+    row_entries(t, row)?
+        .into_iter()
+        .min_by(|a, b| a.1.cmp(&b.1))
+        .ok_or_else(|| format!("Table {}: empty row {row}", t.number))
+}
+
+fn t67() -> Verdict {
+    let tables = match tables() {
+        Ok(t) => t,
+        Err(e) => return Verdict::not_checkable(e),
+    };
+    let order = || -> Result<Verdict, String> {
+        let delta = summary(&tables, "Delta")?;
+        let printed = ["Han", "proposed", "Majeed & Qayyum", "Usman"];
+        let mut items = vec![quoted_order(
+            "order by average error (6.8.13: \"the lowest average error, followed by …\")",
+            &format!("Ave. Error of Table {}", delta.number),
+            &row_entries(delta, "Ave. Error")?,
+            &printed,
+        )];
+        for row in ["Total Error", "Max. Error", "Bad points (>1.5)"] {
+            let e = quoted_order(row, row, &row_entries(delta, row)?, &printed);
+            items.push(Evidence::note(format!(
+                "for comparison (not the criterion the text names), {row}: {}",
+                e.text
+            )));
+        }
+        let st = Status::conjunction(items.iter().filter_map(|e| e.status));
+        Ok(Verdict::new(st, QUOTED, items))
+    };
+    let precise = || -> Result<Verdict, String> {
+        let mut items = Vec::new();
+        for letter in ["Epsilon", "Delta", "ع"] {
+            let t = summary(&tables, letter)?;
+            let (best, v) = least(t, "Ave. Error")?;
+            let proposed = summary_row(t, "Ave. Error")?[0].value.clone();
+            let ok = best == "proposed";
+            items.push(
+                Evidence::new(
+                    Kind::Comparison,
+                    format!(
+                        "smallest average error in Table {}: {best} ({}); proposed {}",
+                        t.number,
+                        decimal(&v),
+                        decimal(&proposed)
+                    ),
+                )
+                .about(format!("{letter}: proposed most precise"), status(ok))
+                .witnessed(if ok {
+                    None
+                } else {
+                    pair(
+                        format!("Table {}, Ave. Error", t.number),
+                        (best, &v),
+                        ("proposed", &proposed),
+                    )
+                }),
+            );
+        }
+        let st = Status::conjunction(items.iter().filter_map(|e| e.status));
+        Ok(Verdict::new(
+            st,
+            "reading: \"most precise to the real image\" = the smallest average error (the measure 6.8.13 and Table 6.17 rank by), in each of Tables 6.14–6.16",
+            items,
+        ))
+    };
+    let run = |f: &dyn Fn() -> Result<Verdict, String>| f().unwrap_or_else(Verdict::not_checkable);
+    Verdict::all(
+        QUOTED,
+        vec![
+            (
+                "Table 6.15: Han, then proposed, Majeed & Qayyum, Usman".into(),
+                run(&order),
+            ),
+            ("6.9: most precise to the real image".into(), run(&precise)),
+            (
+                "6.9: nearest to the control polygon".into(),
+                Verdict::not_checkable(
+                    "no table measures it: Tables 6.2–6.16 give distances from the fitted curves to the data points only, none from a curve to its control polygon",
+                ),
+            ),
+        ],
+    )
+}
+
+fn find<'a>(tables: &'a [Table], letter: &str, scheme: &str) -> Result<&'a Table, String> {
+    tables
+        .iter()
+        .find(|t| t.letter == letter && t.scheme == scheme)
+        .ok_or_else(|| format!("no {scheme} table for {letter}"))
+}
+
+/// Per segment, whether two tables print the same value in `column`.
+fn same(a: &[Segment], b: &[Segment], column: usize) -> Result<Vec<bool>, String> {
+    if a.len() != b.len() {
+        return Err("the tables have different segment counts".into());
+    }
+    Ok(a.iter()
+        .zip(b)
+        .map(|(x, y)| x.cells[column].value == y.cells[column].value)
+        .collect())
+}
+
+/// The printed count of T68: "proposed ≠ Han and M&Q = Han in 10 of 11
+/// epsilon segments" (the Before columns).
+const T68_COUNT: &str = "10";
+
+fn t68() -> Verdict {
+    let t28 = super::thesis::CLAIMS
+        .iter()
+        .find(|c| c.id == "T28")
+        .map(|c| (c.check)());
+    let Some(t28) = t28.filter(|v| v.status == Status::Holds) else {
+        return Verdict::not_checkable(
+            "T28 (the identities (3.7)(m) ≡ (6.2)(λ = m) ≡ (6.1)(η = m + 1)) does not hold, so the expected equalities have no basis",
+        );
+    };
+    let tables = match tables() {
+        Ok(t) => t,
+        Err(e) => return Verdict::not_checkable(e),
+    };
+    let run = || -> Result<Vec<Evidence>, String> {
+        let mut items = vec![Evidence::note(format!(
+            "T28 {}: (3.7) at m = 0.6 is (6.2) at λ = 0.6, and (6.1) at η = 0.6 is (6.2) at λ = −0.4; 6.6 fixes the parameter at 0.6 for every method, so the proposed and Han fits of the same data are the same curves and their errors must be equal, while Majeed & Qayyum fits with another basis",
+            t28.status
+        ))];
+        for letter in ["Epsilon", "Delta", "ع"] {
+            let [p, m, h] = ["proposed", "Majeed", "Han"].map(|s| find(&tables, letter, s));
+            let (p, m, h) = (p?, m?, h?);
+            let (sp, sm, sh) = (segments(p)?, segments(m)?, segments(h)?);
+            for (column, name) in [(BEFORE, "Before"), (AFTER, "After")] {
+                let ph = same(&sp, &sh, column)?;
+                let mh = same(&sm, &sh, column)?;
+                let n = ph.len();
+                let k = ph.iter().filter(|x| **x).count();
+                let first = sp.iter().zip(&sh).zip(&ph).find(|(_, eq)| !**eq);
+                let witness = first.and_then(|((a, b), _)| {
+                    pair(
+                        format!("segment {}, {name} total error", a.number),
+                        (
+                            &format!("Table {} (proposed)", p.number),
+                            &a.cells[column].value,
+                        ),
+                        (&format!("Table {} (Han)", h.number), &b.cells[column].value),
+                    )
+                });
+                let kmh = mh.iter().filter(|x| **x).count();
+                items.push(
+                    Evidence::new(
+                        Kind::Comparison,
+                        format!(
+                            "proposed = Han in {k} of {n} segments (Tables {} and {}); Majeed & Qayyum = Han in {kmh} of {n} (Table {})",
+                            p.number, h.number, m.number
+                        ),
+                    )
+                    .about(format!("{letter}, {name}: proposed = Han"), status(k == n))
+                    .witnessed(witness),
+                );
+                if letter == "Epsilon" && column == BEFORE {
+                    let both = ph.iter().zip(&mh).filter(|(a, b)| !**a && **b).count();
+                    items.push(quoted_figure(
+                        "the claim's count: Epsilon Before segments with proposed ≠ Han and Majeed & Qayyum = Han",
+                        T68_COUNT,
+                        &Rational::from(both),
+                        &format!("count over the {n} segments"),
+                    ));
+                }
+            }
+        }
+        Ok(items)
+    };
+    match run() {
+        Ok(items) => Verdict::new(
+            Status::conjunction(items.iter().filter_map(|e| e.status)),
+            "exact comparison of the printed cells (equal means the same rational); expected from T28 and the set-up of 6.6: proposed = Han in every segment, Before and After",
+            items,
+        ),
+        Err(why) => Verdict::not_checkable(why),
+    }
+}
+
+fn t71() -> Verdict {
+    let tables = match tables() {
+        Ok(t) => t,
+        Err(e) => return Verdict::not_checkable(e),
+    };
+    let mut counts: Vec<String> = Vec::new();
+    for t in tables
+        .iter()
+        .filter(|t| SCHEMES.contains(&t.scheme.as_str()))
+    {
+        let n = segments(t).map_or(0, |s| s.len());
+        let line = format!("{} {n}", t.letter);
+        if !counts.contains(&line) {
+            counts.push(line);
+        }
+    }
+    let letters: Vec<&str> = tables.iter().map(|t| t.letter.as_str()).collect();
+    let varies = letters.iter().any(|l| {
+        counts
+            .iter()
+            .filter(|c| c.split(' ').next() == Some(l))
+            .count()
+            > 1
+    });
+    if varies {
+        return Verdict::not_checkable(
+            "a letter appears with two segment counts, but the tables do not say the segmentation is the only change",
+        );
+    }
+    Verdict::not_checkable(format!(
+        "no table varies the number of segments of a shape: each letter is fitted with one segmentation only (segments per letter: {}), so no printed error belongs to a finer partition of the same outline; the claim needs the errors of one outline at two segment counts",
+        counts.join(", ")
+    ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const TABLE: &str = "== 9.1 | x | proposed | (I)\n\
+        1\t10\t30\t3\t0\t1\n\
+        2\t10\t20\t4\t0\t2\n\
+        3\t10\t10\t2\t0\t3\n\
+        TOTAL\t30\t60\t4\t0\t2\n\
+        text increment 30\n\
+        text ave 2\n";
+
+    fn quote(line: &str) -> Quote {
+        quotes(line).unwrap().pop().unwrap()
+    }
+
+    #[test]
+    fn the_quoted_figures_of_a_table_are_recomputed() {
+        let t = &parse(TABLE).unwrap()[0];
+        let v = table_part(t, &[]);
+        assert_eq!(v.status, Status::Holds, "{:?}", v.evidence);
+        let bad = TABLE.replace("text ave 2", "text ave 2.1");
+        let v = table_part(&parse(&bad).unwrap()[0], &[]);
+        assert_eq!(v.status, Status::Fails);
+    }
+
+    #[test]
+    fn statements_in_words_follow_their_reading() {
+        let t = &parse(TABLE).unwrap()[0];
+        let decide = |line: &str| words_item(t, &quote(line)).unwrap().status;
+        assert_eq!(decide("9.1\tlargest\t1\tw"), Some(Status::Holds));
+        assert_eq!(decide("9.1\tlargest\t2\tw"), Some(Status::Fails));
+        assert_eq!(decide("9.1\tincrease\t1 2\tw"), Some(Status::Holds));
+        assert_eq!(decide("9.1\tincrease\t1 3\tw"), Some(Status::Fails));
+        assert_eq!(decide("9.1\tunchanged\t3\tw"), Some(Status::Holds));
+        assert_eq!(decide("9.1\tincreased\t3\tw"), Some(Status::Fails));
+        assert_eq!(decide("9.1\tmost-increased\t-\tw"), Some(Status::Holds));
+        assert_eq!(decide("9.1\tmostly-below\t2\tw"), Some(Status::Fails));
+        assert_eq!(decide("9.1\tmostly-below\t2.5\tw"), Some(Status::Holds));
+        assert!(quotes("9.1\tsmallest\t1\tw").is_err());
+    }
+
+    #[test]
+    fn every_quote_names_an_embedded_table() {
+        let tables = tables().unwrap();
+        for q in quotes(QUOTES).unwrap() {
+            assert!(tables.iter().any(|t| t.number == q.table), "{}", q.table);
+        }
+    }
+}
