@@ -16,6 +16,7 @@ pub mod join;
 pub mod maxima;
 pub mod nonnegative;
 pub mod region;
+pub mod shape_effect;
 pub mod span;
 pub mod symmetry;
 pub mod unity;

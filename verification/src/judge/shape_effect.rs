@@ -1,0 +1,341 @@
+//! The shape-effect judge: how the weights `bᵢ` of a curve `Σ bᵢPᵢ` move
+//! as one shape parameter `p` increases, for any basis.
+//!
+//! Papers print "the curve approaches the control polygon as `p`
+//! increases" without a definition. The weakest reasonable one, stated in
+//! every verdict: on the whole domain and parameter box the end weights do
+//! not increase and the inner weights do not decrease,
+//!
+//! `∂b₀/∂p ≤ 0`, `∂bₙ/∂p ≤ 0`, `∂bᵢ/∂p ≥ 0` (`0 < i < n`),
+//!
+//! so weight moves monotonically from the end control points to the inner
+//! ones at every point of the curve ("towards the polygon"); "away from
+//! the polygon" is the opposite. A claim about other target points (a
+//! segment `P_{i−3}P_{i−1}` of a B-spline segment) states the move of each
+//! weight directly ([`Move`]).
+//!
+//! Each sign is decided by the one certification engine on the exact
+//! derivative `∂bᵢ/∂p` ([`trig_symbolic::Sym::diff`]): exact Bernstein
+//! subdivision over (z = tan(θ/2) or t) × parameter box on the standard
+//! pieces of the domain, the interval engine ([`super::by_intervals`])
+//! for other bases. A failure shows an exact point and the derivative's
+//! exact value there.
+
+use rug::Rational;
+use trig_certify::branch::Axis;
+use trig_certify::nonneg::{BoxCertificate, certify_box};
+use trig_certify::{ParamBox, standardize};
+use trig_core::{Affine, ParamRange, Parameter};
+use trig_specfile::Direction;
+use trig_symbolic::Sym;
+
+use super::by_intervals;
+use super::certificate::{CERTIFIED, counterexample};
+use crate::evidence::{Evidence, Expr, Kind, Value};
+use crate::exact::{ExactBasis, basis_of};
+use crate::status::Status;
+use crate::verdict::Verdict;
+
+/// How a shape effect is decided, as the report states it.
+pub const SHAPE: &str =
+    "certified sign of the exact derivative ∂b_i/∂p on the whole domain × parameter box; ";
+
+/// The definition of "towards the control polygon", as the report states it.
+pub const TOWARDS: &str = "definition (weakest reasonable; the source gives none): the curve Σ b_i P_i moves towards its control polygon as the parameter increases when, on the whole domain and parameter box, the end weights do not increase and the inner weights do not decrease (∂b_0/∂p ≤ 0, ∂b_n/∂p ≤ 0, ∂b_i/∂p ≥ 0 for 0 < i < n): weight moves monotonically from the end control points to the inner ones; away from the polygon is the opposite";
+
+/// How one weight is claimed to move as the parameter increases.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Move {
+    /// `∂bᵢ/∂p ≥ 0`.
+    Increases,
+    /// `∂bᵢ/∂p ≤ 0`.
+    Decreases,
+}
+
+/// The moves of `n` weights for a direction: towards the polygon, the end
+/// weights decrease and the inner ones increase; away, the opposite.
+pub fn moves(direction: Direction, n: usize) -> Vec<Move> {
+    let (end, inner) = match direction {
+        Direction::TowardsPolygon => (Move::Decreases, Move::Increases),
+        Direction::AwayFromPolygon => (Move::Increases, Move::Decreases),
+    };
+    (0..n)
+        .map(|i| if i == 0 || i + 1 == n { end } else { inner })
+        .collect()
+}
+
+/// A printed direction as the parameter increases (`range`: the chosen
+/// parameter's range, the declared one unless given; the other parameters
+/// over their declared ranges), under the definition [`TOWARDS`].
+pub fn shape_effect<B: ExactBasis>(
+    basis: &B,
+    param: &str,
+    direction: Direction,
+    range: Option<&ParamRange>,
+) -> Verdict {
+    let ranges: Vec<(&str, ParamRange)> = range.map(|r| (param, r.clone())).into_iter().collect();
+    let mut v = weights_move(
+        basis,
+        param,
+        &moves(direction, basis.function_names().len()),
+        &ranges,
+    );
+    v.evidence.insert(0, TOWARDS);
+    v
+}
+
+/// Each weight `bᵢ` moves as `moves[i]` states when `param` increases, on
+/// the whole domain and the parameter box: each parameter over `ranges`
+/// where given (a point range `[v, v]` fixes it), its declared range
+/// otherwise.
+pub fn weights_move<B: ExactBasis>(
+    basis: &B,
+    param: &str,
+    moves: &[Move],
+    ranges: &[(&str, ParamRange)],
+) -> Verdict {
+    let params = basis.parameters();
+    let Some(index) = params.iter().position(|p| p.name == param) else {
+        return Verdict::not_checkable(format!("the basis has no parameter `{param}`"));
+    };
+    let symbol = params[index].symbol.clone();
+    if let Some(why) = parameter_outside_formulas(basis, index) {
+        return Verdict::not_checkable(format!(
+            "{symbol} {why}: the derivative ∂b_i/∂{symbol} at a fixed point of the variable is not the effect on the curve (or not formed exactly); not decided"
+        ));
+    }
+    let chosen: Vec<(&Parameter, ParamRange)> = params
+        .iter()
+        .map(|p| {
+            let r = ranges
+                .iter()
+                .find(|(n, _)| *n == p.name)
+                .map_or_else(|| p.range.clone(), |(_, r)| r.clone());
+            (p, r)
+        })
+        .collect();
+    let mut evidence = vec![Evidence::note(format!(
+        "parameter box {}",
+        chosen
+            .iter()
+            .map(|(p, r)| format!("{} ∈ {r}", p.symbol))
+            .collect::<Vec<_>>()
+            .join(" × ")
+    ))];
+    let mut status = Status::Holds;
+    let mut interval = false;
+    for ((f, name), m) in basis_of(basis)
+        .iter()
+        .zip(basis.function_names())
+        .zip(moves)
+    {
+        let d = f.diff(param);
+        let label = format!("∂{name}/∂{symbol}");
+        let subject = match m {
+            Move::Increases => format!("{label} ≥ 0 ({name} increases with {symbol})"),
+            Move::Decreases => format!("{label} ≤ 0 ({name} decreases as {symbol} increases)"),
+        };
+        let (s, text, witness) = if d.is_zero() {
+            (
+                Status::Holds,
+                format!("{label} ≡ 0 exactly ({name} does not depend on {symbol})"),
+                None,
+            )
+        } else {
+            let g = match m {
+                Move::Increases => d.clone(),
+                Move::Decreases => -d.clone(),
+            };
+            let sign = match m {
+                Move::Increases => Rational::from(1),
+                Move::Decreases => Rational::from(-1),
+            };
+            match standardized(basis, &g, &chosen) {
+                Some(pieces) => certified(&pieces, &chosen, &label, &sign),
+                None => {
+                    interval = true;
+                    by_interval_engine(basis, &subject, &g, &chosen)
+                }
+            }
+        };
+        status = Status::conjunction([status, s]);
+        evidence.push(
+            Evidence::new(Kind::Certificate, text)
+                .about(subject, s)
+                .with(label, Expr::new(&d))
+                .witnessed(witness),
+        );
+    }
+    let engine = if interval {
+        by_intervals::INTERVAL
+    } else {
+        CERTIFIED
+    };
+    Verdict::new(status, format!("{SHAPE}{engine}"), evidence)
+}
+
+/// Why the parameter's effect is not the derivative of the formulas at a
+/// fixed point of the variable: it moves the domain's ends or its angle,
+/// or it occurs inside `sin`, `cos` or `exp` (separate atoms of the ring).
+fn parameter_outside_formulas<B: ExactBasis>(basis: &B, index: usize) -> Option<&'static str> {
+    let d = basis.domain();
+    let moves = |a: &Affine| a.params.iter().any(|(i, _)| *i == index);
+    if moves(&d.start) || moves(&d.end) || d.angle.as_ref().is_some_and(moves) {
+        return Some("moves the domain");
+    }
+    let atom = |list: &[(usize, Rational)]| list.iter().any(|(i, _)| *i == index);
+    (atom(&d.param_angles) || atom(&d.param_exps)).then_some("occurs inside sin, cos or exp")
+}
+
+/// The standard pieces of `g` with whether they are trigonometric, or
+/// `None` when the Bernstein path does not apply (not polynomial in `sin`,
+/// `cos` or the variable on a standard domain, or a range in multiples
+/// of π).
+fn standardized<B: ExactBasis>(
+    basis: &B,
+    g: &Sym,
+    chosen: &[(&Parameter, ParamRange)],
+) -> Option<(bool, Vec<(Sym, String)>)> {
+    if chosen.iter().any(|(_, r)| r.pi) {
+        return None;
+    }
+    let st = standardize(g, &basis.domain()).ok()?;
+    Some((
+        st.trigonometric,
+        st.pieces.into_iter().zip(st.labels).collect(),
+    ))
+}
+
+/// The Bernstein certificate of `g ≥ 0` on every piece (`g = sign·∂bᵢ/∂p`):
+/// a counterexample shows the derivative's exact value.
+fn certified(
+    (trig, pieces): &(bool, Vec<(Sym, String)>),
+    chosen: &[(&Parameter, ParamRange)],
+    label: &str,
+    sign: &Rational,
+) -> (Status, String, Option<crate::evidence::Witness>) {
+    let boxes: Vec<(&str, ParamBox)> = chosen
+        .iter()
+        .map(|(p, r)| (p.name.as_str(), ParamBox::from_range(r)))
+        .collect();
+    let mut total = 0;
+    for (piece, where_) in pieces {
+        let on = if where_.is_empty() {
+            String::new()
+        } else {
+            format!(" on {where_}")
+        };
+        match certify_box(piece, *trig, &boxes) {
+            BoxCertificate::NonNegative { boxes } => total += boxes,
+            BoxCertificate::Counterexample { params, z, value } => {
+                let named: Vec<(&str, &Rational)> = boxes
+                    .iter()
+                    .zip(&params)
+                    .map(|((n, _), v)| (*n, v))
+                    .collect();
+                let mut w = counterexample(&named, &z, &value, *trig);
+                let derivative = Rational::from(sign * &value);
+                w.values = vec![Value {
+                    label: format!("{label}{on}"),
+                    value: Expr::new(&Sym::rational(derivative)),
+                }];
+                return (
+                    Status::Fails,
+                    format!(
+                        "violated{on}: the weight moves the other way at the witness point (exact)"
+                    ),
+                    Some(w),
+                );
+            }
+            BoxCertificate::Pole(why) => {
+                return (
+                    Status::Fails,
+                    format!("not defined on the whole domain and box{on}: {why}"),
+                    None,
+                );
+            }
+            BoxCertificate::Undecided(why) => {
+                return (Status::NotCheckable, format!("undecided{on} ({why})"), None);
+            }
+        }
+    }
+    (
+        Status::Holds,
+        format!(
+            "certified on the whole domain and box ({})",
+            crate::report::plural(total, "Bernstein box", "Bernstein boxes")
+        ),
+        None,
+    )
+}
+
+/// The interval engine on `g ≥ 0` (bounded ranges only).
+fn by_interval_engine<B: ExactBasis>(
+    basis: &B,
+    subject: &str,
+    g: &Sym,
+    chosen: &[(&Parameter, ParamRange)],
+) -> (Status, String, Option<crate::evidence::Witness>) {
+    let axes: Option<Vec<Axis>> = chosen.iter().map(|(_, r)| Axis::from_range(r)).collect();
+    let Some(axes) = axes else {
+        return (
+            Status::NotCheckable,
+            "not polynomial in sin, cos or the variable on a standard domain, and a range is unbounded: the interval engine needs bounded ranges".into(),
+            None,
+        );
+    };
+    let (s, line) = by_intervals::nonnegative(basis, subject, g, &axes);
+    (s, format!("interval engine: {line}"), None)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use trig_core::Family;
+
+    fn range(text: &str) -> ParamRange {
+        ParamRange::parse(text).expect("a valid range")
+    }
+
+    #[test]
+    fn towards_means_end_weights_fall_and_inner_weights_rise() {
+        use Move::{Decreases as D, Increases as I};
+        assert_eq!(moves(Direction::TowardsPolygon, 4), vec![D, I, I, D]);
+        assert_eq!(moves(Direction::AwayFromPolygon, 3), vec![I, D, I]);
+    }
+
+    #[test]
+    fn the_thesis_cubic_approaches_its_polygon_as_m_grows() {
+        let towards = shape_effect(&Family::ThesisCubic, "m", Direction::TowardsPolygon, None);
+        assert_eq!(towards.status, Status::Holds, "{:?}", towards.evidence);
+        let away = shape_effect(&Family::ThesisCubic, "m", Direction::AwayFromPolygon, None);
+        assert_eq!(away.status, Status::Fails);
+        // ∂b0/∂m = −s(1 − s)², exactly, at the witness's s
+        let w = away
+            .evidence
+            .iter()
+            .find_map(|e| e.witness.as_ref())
+            .expect("a witness");
+        let s: Rational = w.point[2].value.parse().expect("s is rational");
+        let expected = -(s.clone() * (Rational::from(1) - s.clone()).square());
+        assert_eq!(w.point[2].name, "s");
+        assert_eq!(w.values[0].value.plain, expected.to_string(), "{w:?}");
+    }
+
+    #[test]
+    fn fixing_a_parameter_is_a_point_range_and_a_missing_one_is_not_checkable() {
+        // EH bases (1): ∂b2/∂μ = t²(1 − t)² ≥ 0, ∂b3/∂μ = −t²(1 − t)² ≤ 0,
+        // b0, b1 free of μ
+        use Move::{Decreases as D, Increases as I};
+        let fixed = [("lambda", range("[1/2, 1/2]"))];
+        let v = weights_move(&Family::Eh, "mu", &[I, D, I, D], &fixed);
+        assert_eq!(v.status, Status::Holds, "{:?}", v.evidence);
+        assert!(v.evidence.iter().any(|e| e.contains("≡ 0 exactly")));
+        let w = weights_move(&Family::Eh, "mu", &[I, D, D, I], &fixed);
+        assert_eq!(w.status, Status::Fails);
+        assert_eq!(
+            weights_move(&Family::Eh, "nu", &[I, D, I, D], &[]).status,
+            Status::NotCheckable
+        );
+    }
+}

@@ -1,0 +1,111 @@
+//! `check = "shape-effect"` both ways on bases outside the catalog, with the
+//! results derived independently in examples/independent/README.md, Part
+//! D(e) (definition there and in the judge: end weights decrease and inner
+//! weights increase as the parameter grows, on the whole domain × range).
+
+use std::path::PathBuf;
+
+use trig_specfile::Spec;
+use trig_verification::evidence::Witness;
+use trig_verification::{Status, Verdict, spec_audit};
+
+/// An example spec file with one shape-effect claim appended, decided.
+fn decide(name: &str, fields: &str) -> Verdict {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../examples")
+        .join(format!("{name}.toml"));
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{e}"));
+    let claim = format!(
+        "[[claims]]\nid = \"SHAPE\"\nsource = \"test\"\nstatement = \"shape effect\"\ncheck = \"shape-effect\"\n{fields}\n"
+    );
+    let spec =
+        Spec::from_str_named(&format!("{text}\n{claim}"), name).unwrap_or_else(|e| panic!("{e}"));
+    spec_audit::decide(&spec, &spec.claims[spec.claims.len() - 1])
+}
+
+fn witness(v: &Verdict) -> &Witness {
+    v.evidence
+        .iter()
+        .find_map(|e| e.witness.as_ref())
+        .unwrap_or_else(|| panic!("a witness: {v:?}"))
+}
+
+fn at<'a>(w: &'a Witness, name: &str) -> &'a str {
+    &w.point
+        .iter()
+        .find(|a| a.name == name)
+        .unwrap_or_else(|| panic!("{name} in {w:?}"))
+        .value
+}
+
+/// Holds: Han 2002 quadratic (∂b/∂λ = (−s(1 − s), s + c − 1, −c(1 − c))),
+/// Yan & Liang (−t(1−t)³, t(1−t)³, t³(1−t), −t³(1−t)), squared Han on its
+/// printed [−1, 1]; the half-angle basis through the interval engine. The
+/// opposite direction fails on each.
+#[test]
+fn towards_the_polygon_holds_where_part_d_proves_it() {
+    for name in [
+        "han-quadratic",
+        "yan-liang-cubic",
+        "squares-han",
+        "half-angle-lambda",
+    ] {
+        let v = decide(
+            name,
+            "parameter = \"lambda\"\ndirection = \"towards-polygon\"",
+        );
+        assert_eq!(v.status, Status::Holds, "{name}: {v:?}");
+        assert!(format!("{v:?}").contains("weakest reasonable"), "{name}");
+        let away = decide(
+            name,
+            "parameter = \"lambda\"\ndirection = \"away-from-polygon\"",
+        );
+        assert_eq!(away.status, Status::Fails, "{name}: {away:?}");
+    }
+}
+
+/// Fails: squared Han beyond λ = 1, inside its maximal nonnegativity range
+/// [−1, 2 + 2√2]: at λ = 2, (sin t, cos t) = (4/5, 3/5), ∂b0/∂λ =
+/// −2 s(1 − s)²(1 − λs) = 24/625 > 0 (Part D(e)): the end weight grows.
+#[test]
+fn squared_han_beyond_one_moves_weight_to_the_ends() {
+    let v = decide(
+        "squares-han",
+        "parameter = \"lambda\"\ndirection = \"towards-polygon\"\nrange = \"[-1, 2]\"",
+    );
+    assert_eq!(v.status, Status::Fails, "{v:?}");
+    let w = witness(&v);
+    assert_eq!(w.values[0].label, "∂b0/∂λ", "{w:?}");
+    assert_eq!(
+        (at(w, "λ"), at(w, "s"), at(w, "c")),
+        ("2", "4/5", "3/5"),
+        "{w:?}"
+    );
+    assert_eq!(w.values[0].value.plain, "24/625", "{w:?}");
+}
+
+/// A parameter the basis does not have, or a direction not known, is a
+/// typed error of the file.
+#[test]
+fn malformed_shape_claims_are_refused() {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../examples/han-quadratic.toml");
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{e}"));
+    for (fields, field) in [
+        (
+            "parameter = \"mu\"\ndirection = \"towards-polygon\"",
+            "claims.parameter",
+        ),
+        (
+            "parameter = \"lambda\"\ndirection = \"closer\"",
+            "claims.direction",
+        ),
+        ("parameter = \"lambda\"", "claims.direction"),
+    ] {
+        let claim = format!(
+            "[[claims]]\nid = \"SHAPE\"\nsource = \"test\"\nstatement = \"s\"\ncheck = \"shape-effect\"\n{fields}\n"
+        );
+        let err = Spec::from_str_named(&format!("{text}\n{claim}"), "han-quadratic")
+            .expect_err("refused");
+        assert!(err.to_string().contains(field), "{err}");
+    }
+}
