@@ -109,3 +109,36 @@ fn malformed_shape_claims_are_refused() {
         assert!(err.to_string().contains(field), "{err}");
     }
 }
+
+/// The catalog's shape claims, with the values derived by hand: Usman's
+/// (6.3) at (S, U) = (4/5, 3/5) has ∂a0/∂α = S² − S = −4/25 (a0 falls as α
+/// grows: the curve moves towards the polygon, not away); the EH bases
+/// give ∂b0/∂λ = t²(1 − t)² = 1/16 at t = 1/2 (a concurrent increase raises
+/// the end weight b0).
+#[test]
+fn catalog_shape_claims_are_decided() {
+    let verdict = |id: &str| trig_verification::run(None, Some(id))[0].verdict.clone();
+    for (id, status) in [
+        ("T44", Status::Holds),
+        ("T47", Status::Holds),
+        ("T53", Status::Holds),
+        ("D21", Status::Fails),
+        ("S5", Status::NotCheckable),
+        ("D15", Status::NotCheckable),
+    ] {
+        assert_eq!(verdict(id).status, status, "{id}: {:?}", verdict(id));
+    }
+    let t61 = verdict("T61");
+    assert_eq!(t61.status, Status::Fails, "{t61:?}");
+    let w = witness(&t61);
+    assert_eq!((at(w, "s"), at(w, "c")), ("4/5", "3/5"), "{w:?}");
+    assert_eq!(
+        (w.values[0].label.as_str(), w.values[0].value.plain.as_str()),
+        ("∂a0/∂α", "-4/25")
+    );
+    let e21 = verdict("E21");
+    assert_eq!(e21.status, Status::Fails, "{e21:?}");
+    let w = witness(&e21);
+    assert_eq!(at(w, "t"), "1/2", "{w:?}");
+    assert_eq!(w.values[0].value.plain, "1/16", "{w:?}");
+}

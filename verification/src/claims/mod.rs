@@ -14,6 +14,7 @@ mod seed002;
 mod seed003;
 mod seed004;
 mod seed004_joins;
+mod shape_effect;
 mod thesis;
 mod thesis_interp;
 mod thesis_joins;
@@ -35,6 +36,7 @@ pub fn all() -> Vec<Claim> {
         seed004::CLAIMS,
         seed004_joins::CLAIMS,
         properties::CLAIMS,
+        shape_effect::CLAIMS,
     ]
     .concat()
 }
