@@ -114,7 +114,7 @@ fn malformed_shape_claims_are_refused() {
 /// (6.3) at (S, U) = (4/5, 3/5) has ∂a0/∂α = S² − S = −4/25 (a0 falls as α
 /// grows: the curve moves towards the polygon, not away); the EH bases
 /// give ∂b0/∂λ = t²(1 − t)² = 1/16 at t = 1/2 (a concurrent increase raises
-/// the end weight b0).
+/// the end weight b0); D15 compares curvatures at the common end P0.
 #[test]
 fn catalog_shape_claims_are_decided() {
     let verdict = |id: &str| trig_verification::run(None, Some(id))[0].verdict.clone();
@@ -124,7 +124,6 @@ fn catalog_shape_claims_are_decided() {
         ("T53", Status::Holds),
         ("D21", Status::Fails),
         ("S5", Status::NotCheckable),
-        ("D15", Status::NotCheckable),
     ] {
         assert_eq!(verdict(id).status, status, "{id}: {:?}", verdict(id));
     }
@@ -135,6 +134,15 @@ fn catalog_shape_claims_are_decided() {
     assert_eq!(
         (w.values[0].label.as_str(), w.values[0].value.plain.as_str()),
         ("∂a0/∂α", "-4/25")
+    );
+    // the rational quartic with w2 = 2 bends at P0 with curvature
+    // (3/4)·w0w2/w1² = 3/2 against the quintic Bézier curve's 4/5
+    let d15 = verdict("D15");
+    assert_eq!(d15.status, Status::Fails, "{d15:?}");
+    let w = witness(&d15);
+    assert_eq!(
+        (w.values[0].value.plain.as_str(), w.values[1].value.plain.as_str()),
+        ("3/2", "4/5")
     );
     let e21 = verdict("E21");
     assert_eq!(e21.status, Status::Fails, "{e21:?}");

@@ -6,7 +6,7 @@
 //! quantity beside the verdict.
 
 use rug::Rational;
-use trig_core::{Described, Family, ParamRange};
+use trig_core::{Described, Family, ParamRange, Ring};
 use trig_specfile::Direction;
 use trig_symbolic::Sym;
 
@@ -422,11 +422,157 @@ fn s5() -> Verdict {
     )
 }
 
-/// Two curves with different bases and parameters (θ ∈ [0, π/2] for the
-/// RQTB curve, u ∈ [0, 1] for the Bézier curves) and no printed
-/// correspondence, weights or measure of "closer".
+/// The curvature at the start `P0 = (0, 0)` of the curve `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ`
+/// from the values and first two derivatives of each `bᵢ` there (any
+/// parameter: curvature does not depend on it), with the polygon's first
+/// edge on the x-axis: `κ = y''/x'²` where `y' = 0` and `x' > 0`; `None`
+/// otherwise.
+fn start_curvature(jets: &[Vec<Sym>], weights: &[Rational], points: &[Point]) -> Option<Rational> {
+    let sum = |order: usize, coordinate: Option<usize>| -> Rational {
+        jets.iter()
+            .zip(weights)
+            .zip(points)
+            .map(|((jet, w), p)| {
+                let value = jet[order].as_rational().unwrap_or_default() * w.clone();
+                match coordinate {
+                    None => value,
+                    Some(0) => value * p.0.clone(),
+                    Some(_) => value * p.1.clone(),
+                }
+            })
+            .sum()
+    };
+    // R = N/W: R' = N'/W − NW'/W², R'' = N''/W − 2N'W'/W² − NW''/W² + 2NW'²/W³
+    let (w0, w1, w2) = (sum(0, None), sum(1, None), sum(2, None));
+    let derivative = |k: usize| -> (Rational, Rational) {
+        let (n0, n1, n2) = (sum(0, Some(k)), sum(1, Some(k)), sum(2, Some(k)));
+        let first = n1.clone() / w0.clone() - n0.clone() * w1.clone() / w0.clone().square();
+        let second = n2 / w0.clone()
+            - Rational::from(2) * n1 * w1.clone() / w0.clone().square()
+            - n0.clone() * w2.clone() / w0.clone().square()
+            + Rational::from(2) * n0 * w1.clone().square() / w0.clone().square() / w0.clone();
+        (first, second)
+    };
+    let ((x1, _), (y1, y2)) = (derivative(0), derivative(1));
+    (y1 == 0 && x1 > 0).then(|| y2 / x1.square())
+}
+
+/// The Bernstein polynomials of degree `n` in `t` with their first two
+/// derivatives at `t = 0`.
+fn bernstein_jets(n: u32) -> Vec<Vec<Sym>> {
+    let t = Sym::var("t");
+    (0..=n)
+        .map(|i| {
+            let binomial = (0..i).fold(Rational::from(1), |acc, k| acc * (n - k) / (k + 1));
+            let b = Sym::rational(binomial) * &t.powi(i) * &(Sym::one() - &t).powi(n - i);
+            let (d1, d2) = (b.diff("t"), b.diff("t").diff("t"));
+            [b, d1, d2]
+                .iter()
+                .map(|f| f.subs("t", &Sym::zero()))
+                .collect()
+        })
+        .collect()
+}
+
+/// Curves with different parameters compared where no convention is
+/// needed: the curvature at the common start `P0`, where both leave along
+/// `P1 − P0`. A curve between the quintic Bézier curve and the polygon
+/// near `P0` (`0 ≤ y_R ≤ y_Q` for `y ≈ κx²/2` in the frame of the edge
+/// `P0P1`) has `κ_R ≤ κ_Q`; the weights `wᵢ > 0` are free (Theorem 2).
 fn d15() -> Verdict {
-    Verdict::not_checkable(
-        "not decided: \"between the quintic Bézier curve and the control polygon\" and \"closer\" compare curves of different bases and parameters (θ ∈ [0, π/2] against u ∈ [0, 1]) with weights w_i left free; the document prints no correspondence of parameters, no weights and no measure of closeness, and the weakest comparison of weights would have to fix all three",
+    let polygon = polygon(&[
+        (0, 1, 0, 1),
+        (1, 1, 0, 1),
+        (1, 1, 1, 1),
+        (2, 1, 1, 1),
+        (3, 1, 1, 1),
+        (4, 1, 0, 1),
+    ]);
+    let rqtb = trig_deriv::endpoint_derivatives::<Sym, 3>(
+        Family::Seed002Quartic,
+        &[],
+        trig_deriv::End::Start,
+        trig_deriv::Wrt::Angle,
+        &Sym::one(),
+    );
+    let ones = vec![q(1, 1); 6];
+    let mut weighted = ones.clone();
+    weighted[2] = q(2, 1);
+    let curvatures = [
+        (
+            "the RQTB curve, weights 1",
+            start_curvature(&rqtb, &ones, &polygon),
+        ),
+        (
+            "the RQTB curve, w2 = 2, other weights 1",
+            start_curvature(&rqtb, &weighted, &polygon),
+        ),
+        (
+            "the quintic Bézier curve",
+            start_curvature(&bernstein_jets(5), &ones, &polygon),
+        ),
+        (
+            "the quartic Bézier curve",
+            start_curvature(&bernstein_jets(4), &ones[..5], &polygon[..5]),
+        ),
+    ];
+    let Some(values) = curvatures
+        .iter()
+        .map(|(_, k)| k.clone())
+        .collect::<Option<Vec<Rational>>>()
+    else {
+        return Verdict::not_checkable("the curvature at P0 could not be formed exactly");
+    };
+    let shown: Vec<String> = curvatures
+        .iter()
+        .zip(&values)
+        .map(|((name, _), k)| format!("{name}: {k}"))
+        .collect();
+    let (weighted_k, quintic, quartic) = (&values[1], &values[2], &values[3]);
+    let status = if weighted_k > quintic && weighted_k > quartic {
+        Status::Fails
+    } else {
+        Status::NotCheckable
+    };
+    let point: Vec<(String, Rational)> = polygon
+        .iter()
+        .take(3)
+        .enumerate()
+        .flat_map(|(i, (x, y))| [(format!("x{i}"), x.clone()), (format!("y{i}"), y.clone())])
+        .chain([("w2".to_string(), q(2, 1))])
+        .collect();
+    let names: Vec<String> = point.iter().map(|(n, _)| n.clone()).collect();
+    let witness = crate::witness::witness(
+        &point,
+        &names,
+        vec![
+            (
+                "curvature of the RQTB curve at P0",
+                Sym::rational(weighted_k.clone()),
+            ),
+            (
+                "of the quintic Bézier curve",
+                Sym::rational(quintic.clone()),
+            ),
+        ],
+    );
+    let item = Evidence::new(
+        crate::evidence::Kind::Comparison,
+        format!(
+            "exact curvatures at P0 (polygon (0,0), (1,0), (1,1), …; derivatives of (1) in θ, of the Bernstein polynomials in u, curvature being independent of the parameter): {}",
+            shown.join("; ")
+        ),
+    )
+    .about("κ_RQTB(P0) ≤ κ_quintic(P0) for weights w_i > 0", status)
+    .witnessed((status == Status::Fails).then_some(witness));
+    Verdict::new(
+        status,
+        "exact: end derivatives of the bases (Taylor jets over the symbolic ring), the rational curve by the quotient rule; curvature at the common end point compared",
+        vec![
+            Evidence::note(
+                "definition (weakest reasonable; the document gives none): \"between the quintic Bézier curve and the control polygon\" and \"closer\" are read geometrically, without a correspondence of parameters; near P0 both curves leave along P1 − P0 and y ≈ κx²/2 in the frame of the edge P0P1, so lying between them needs κ_RQTB ≤ κ_quintic at P0 (a necessary condition; with all weights 1 it holds at P0, which proves nothing globally)",
+            ),
+            item,
+        ],
     )
 }
