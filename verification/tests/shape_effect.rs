@@ -141,7 +141,10 @@ fn catalog_shape_claims_are_decided() {
     assert_eq!(d15.status, Status::Fails, "{d15:?}");
     let w = witness(&d15);
     assert_eq!(
-        (w.values[0].value.plain.as_str(), w.values[1].value.plain.as_str()),
+        (
+            w.values[0].value.plain.as_str(),
+            w.values[1].value.plain.as_str()
+        ),
         ("3/2", "4/5")
     );
     let e21 = verdict("E21");
@@ -149,4 +152,38 @@ fn catalog_shape_claims_are_decided() {
     let w = witness(&e21);
     assert_eq!(at(w, "t"), "1/2", "{w:?}");
     assert_eq!(w.values[0].value.plain, "1/16", "{w:?}");
+}
+
+/// A parameter inside a rational basis (the rational quadratic's weight w:
+/// the inner weight grows with w), inside `cos` (weight cos α: it falls as
+/// α grows on [0, 1], so the curve moves away, decided through
+/// ∂cos α/∂α = −sin α by the interval engine), and one that moves the
+/// domain (the quadratic C-Bézier basis on [0, α]: not decided).
+#[test]
+fn parameters_in_weights_atoms_and_domains() {
+    let v = decide(
+        "rational-quadratic",
+        "parameter = \"w\"\ndirection = \"towards-polygon\"",
+    );
+    assert_eq!(v.status, Status::Holds, "{v:?}");
+    let spec = |direction: &str| {
+        format!(
+            "id = \"weight-cos\"\ncitation = \"test\"\nvariable = \"t\"\ndomain = \"[0, 1]\"\n\n[[parameters]]\nname = \"alpha\"\nrange = \"[0, 1]\"\n\n[[functions]]\nname = \"b0\"\nformula = \"(1 - t)^2 / ((1 - t)^2 + 2*cos(alpha)*t*(1 - t) + t^2)\"\n\n[[functions]]\nname = \"b1\"\nformula = \"2*cos(alpha)*t*(1 - t) / ((1 - t)^2 + 2*cos(alpha)*t*(1 - t) + t^2)\"\n\n[[functions]]\nname = \"b2\"\nformula = \"t^2 / ((1 - t)^2 + 2*cos(alpha)*t*(1 - t) + t^2)\"\n\n[[claims]]\nid = \"SHAPE\"\nsource = \"test\"\nstatement = \"s\"\ncheck = \"shape-effect\"\nparameter = \"alpha\"\ndirection = \"{direction}\"\n"
+        )
+    };
+    for (direction, status) in [
+        ("away-from-polygon", Status::Holds),
+        ("towards-polygon", Status::Fails),
+    ] {
+        let s =
+            Spec::from_str_named(&spec(direction), "weight-cos").unwrap_or_else(|e| panic!("{e}"));
+        let v = spec_audit::decide(&s, &s.claims[0]);
+        assert_eq!(v.status, status, "{direction}: {v:?}");
+    }
+    let c = decide(
+        "c-bezier-quadratic",
+        "parameter = \"alpha\"\ndirection = \"towards-polygon\"",
+    );
+    assert_eq!(c.status, Status::NotCheckable, "{c:?}");
+    assert!(format!("{c:?}").contains("moves the domain"), "{c:?}");
 }

@@ -15,13 +15,17 @@
 //! weight directly ([`Move`]).
 //!
 //! Each sign is decided by the one certification engine on the exact
-//! derivative `∂bᵢ/∂p` ([`trig_symbolic::Sym::diff`]): exact Bernstein
+//! derivative `∂bᵢ/∂p` at a fixed point of the variable
+//! ([`trig_certify::atoms::d_param`]: the parameter and its atoms
+//! `sin(bp)`, `exp(bp)`; a parameter that moves the domain is not
+//! decided): exact Bernstein
 //! subdivision over (z = tan(θ/2) or t) × parameter box on the standard
 //! pieces of the domain, the interval engine ([`super::by_intervals`])
 //! for other bases. A failure shows an exact point and the derivative's
 //! exact value there.
 
 use rug::Rational;
+use trig_certify::atoms::{d_param, param_atoms};
 use trig_certify::branch::Axis;
 use trig_certify::nonneg::{BoxCertificate, certify_box};
 use trig_certify::{ParamBox, standardize};
@@ -99,11 +103,17 @@ pub fn weights_move<B: ExactBasis>(
         return Verdict::not_checkable(format!("the basis has no parameter `{param}`"));
     };
     let symbol = params[index].symbol.clone();
-    if let Some(why) = parameter_outside_formulas(basis, index) {
+    let domain = basis.domain();
+    let moves_domain = |a: &Affine| a.params.iter().any(|(i, _)| *i == index);
+    if moves_domain(&domain.start)
+        || moves_domain(&domain.end)
+        || domain.angle.as_ref().is_some_and(moves_domain)
+    {
         return Verdict::not_checkable(format!(
-            "{symbol} {why}: the derivative ∂b_i/∂{symbol} at a fixed point of the variable is not the effect on the curve (or not formed exactly); not decided"
+            "{symbol} moves the domain: the derivative ∂b_i/∂{symbol} at a fixed point of the variable is not the effect on the curve (that needs the normalised variable, which this judge does not form); not decided"
         ));
     }
+    let atoms = param_atoms(&domain);
     let chosen: Vec<(&Parameter, ParamRange)> = params
         .iter()
         .map(|p| {
@@ -129,7 +139,7 @@ pub fn weights_move<B: ExactBasis>(
         .zip(basis.function_names())
         .zip(moves)
     {
-        let d = f.diff(param);
+        let d = d_param(f, &domain, index, &atoms);
         let label = format!("∂{name}/∂{symbol}");
         let subject = match m {
             Move::Increases => format!("{label} ≥ 0 ({name} increases with {symbol})"),
@@ -154,7 +164,11 @@ pub fn weights_move<B: ExactBasis>(
                 Some(pieces) => certified(&pieces, &chosen, &label, &sign),
                 None => {
                     interval = true;
-                    by_interval_engine(basis, &subject, &g, &chosen)
+                    let tested = match m {
+                        Move::Increases => label.clone(),
+                        Move::Decreases => format!("−{label}"),
+                    };
+                    by_interval_engine(basis, &tested, &g, &chosen)
                 }
             }
         };
@@ -172,19 +186,6 @@ pub fn weights_move<B: ExactBasis>(
         CERTIFIED
     };
     Verdict::new(status, format!("{SHAPE}{engine}"), evidence)
-}
-
-/// Why the parameter's effect is not the derivative of the formulas at a
-/// fixed point of the variable: it moves the domain's ends or its angle,
-/// or it occurs inside `sin`, `cos` or `exp` (separate atoms of the ring).
-fn parameter_outside_formulas<B: ExactBasis>(basis: &B, index: usize) -> Option<&'static str> {
-    let d = basis.domain();
-    let moves = |a: &Affine| a.params.iter().any(|(i, _)| *i == index);
-    if moves(&d.start) || moves(&d.end) || d.angle.as_ref().is_some_and(moves) {
-        return Some("moves the domain");
-    }
-    let atom = |list: &[(usize, Rational)]| list.iter().any(|(i, _)| *i == index);
-    (atom(&d.param_angles) || atom(&d.param_exps)).then_some("occurs inside sin, cos or exp")
 }
 
 /// The standard pieces of `g` with whether they are trigonometric, or
@@ -277,10 +278,11 @@ fn certified(
     )
 }
 
-/// The interval engine on `g ≥ 0` (bounded ranges only).
+/// The interval engine on `g ≥ 0`, `g` shown as `tested` (bounded ranges
+/// only).
 fn by_interval_engine<B: ExactBasis>(
     basis: &B,
-    subject: &str,
+    tested: &str,
     g: &Sym,
     chosen: &[(&Parameter, ParamRange)],
 ) -> (Status, String, Option<crate::evidence::Witness>) {
@@ -292,7 +294,7 @@ fn by_interval_engine<B: ExactBasis>(
             None,
         );
     };
-    let (s, line) = by_intervals::nonnegative(basis, subject, g, &axes);
+    let (s, line) = by_intervals::nonnegative(basis, tested, g, &axes);
     (s, format!("interval engine: {line}"), None)
 }
 
