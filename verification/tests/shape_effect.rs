@@ -158,7 +158,7 @@ fn catalog_shape_claims_are_decided() {
 /// the inner weight grows with w), inside `cos` (weight cos α: it falls as
 /// α grows on [0, 1], so the curve moves away, decided through
 /// ∂cos α/∂α = −sin α by the interval engine), and one that moves the
-/// domain (the quadratic C-Bézier basis on [0, α]: not decided).
+/// domain (the quadratic C-Bézier basis on [0, α]).
 #[test]
 fn parameters_in_weights_atoms_and_domains() {
     let v = decide(
@@ -180,10 +180,18 @@ fn parameters_in_weights_atoms_and_domains() {
         let v = spec_audit::decide(&s, &s.claims[0]);
         assert_eq!(v.status, status, "{direction}: {v:?}");
     }
-    let c = decide(
-        "c-bezier-quadratic",
-        "parameter = \"alpha\"\ndirection = \"towards-polygon\"",
-    );
-    assert_eq!(c.status, Status::NotCheckable, "{c:?}");
-    assert!(format!("{c:?}").contains("moves the domain"), "{c:?}");
+    // the quadratic C-Bézier basis on [0, α], compared at a fixed point of
+    // u = t/α: the inner weight falls as α grows (Part D(e): at the middle
+    // b1 = cos(α/2)/(1 + cos(α/2)), decreasing), so away holds
+    for (direction, status) in [
+        ("away-from-polygon", Status::Holds),
+        ("towards-polygon", Status::Fails),
+    ] {
+        let c = decide(
+            "c-bezier-quadratic",
+            &format!("parameter = \"alpha\"\ndirection = \"{direction}\""),
+        );
+        assert_eq!(c.status, status, "{direction}: {c:?}");
+        assert!(format!("{c:?}").contains("normalised variable"), "{c:?}");
+    }
 }

@@ -17,15 +17,15 @@
 //! Each sign is decided by the one certification engine on the exact
 //! derivative `∂bᵢ/∂p` at a fixed point of the variable
 //! ([`trig_certify::atoms::d_param`]: the parameter and its atoms
-//! `sin(bp)`, `exp(bp)`; a parameter that moves the domain is not
-//! decided): exact Bernstein
+//! `sin(bp)`, `exp(bp)`; on a domain `[a, b]` that moves with `p`, at a
+//! fixed point of `u = (x − a)/(b − a)`): exact Bernstein
 //! subdivision over (z = tan(θ/2) or t) × parameter box on the standard
 //! pieces of the domain, the interval engine ([`super::by_intervals`])
 //! for other bases. A failure shows an exact point and the derivative's
 //! exact value there.
 
 use rug::Rational;
-use trig_certify::atoms::{d_param, param_atoms};
+use trig_certify::atoms::{d_param, d_variable, param_atoms};
 use trig_certify::branch::Axis;
 use trig_certify::nonneg::{BoxCertificate, certify_box};
 use trig_certify::{ParamBox, standardize};
@@ -104,15 +104,16 @@ pub fn weights_move<B: ExactBasis>(
     };
     let symbol = params[index].symbol.clone();
     let domain = basis.domain();
-    let moves_domain = |a: &Affine| a.params.iter().any(|(i, _)| *i == index);
-    if moves_domain(&domain.start)
-        || moves_domain(&domain.end)
-        || domain.angle.as_ref().is_some_and(moves_domain)
+    if domain
+        .angle
+        .as_ref()
+        .is_some_and(|w| w.params.iter().any(|(i, _)| *i == index))
     {
         return Verdict::not_checkable(format!(
-            "{symbol} moves the domain: the derivative ∂b_i/∂{symbol} at a fixed point of the variable is not the effect on the curve (that needs the normalised variable, which this judge does not form); not decided"
+            "{symbol} changes the angle's rate: the weights at a fixed point of the normalised variable are not formed here; not decided"
         ));
     }
+    let moving = normalised_velocity(&domain, index);
     let atoms = param_atoms(&domain);
     let chosen: Vec<(&Parameter, ParamRange)> = params
         .iter()
@@ -124,14 +125,18 @@ pub fn weights_move<B: ExactBasis>(
             (p, r)
         })
         .collect();
-    let mut evidence = vec![Evidence::note(format!(
+    let mut evidence = Vec::new();
+    if moving.is_some() {
+        evidence.push(Evidence::note(format!("the domain [{}, {}] moves with {symbol}: the weights are compared at a fixed point of the normalised variable u = (x − a)/(b − a), x = a + (b − a)u, so ∂b_i/∂{symbol} below is the total derivative ∂b_i/∂{symbol} + (∂x/∂{symbol})·∂b_i/∂x with ∂x/∂{symbol} = a' + (b' − a')(x − a)/(b − a)", domain.start.text(&domain.param_names), domain.end.text(&domain.param_names))));
+    }
+    evidence.push(Evidence::note(format!(
         "parameter box {}",
         chosen
             .iter()
             .map(|(p, r)| format!("{} ∈ {r}", p.symbol))
             .collect::<Vec<_>>()
             .join(" × ")
-    ))];
+    )));
     let mut status = Status::Holds;
     let mut interval = false;
     for ((f, name), m) in basis_of(basis)
@@ -139,7 +144,10 @@ pub fn weights_move<B: ExactBasis>(
         .zip(basis.function_names())
         .zip(moves)
     {
-        let d = d_param(f, &domain, index, &atoms);
+        let mut d = d_param(f, &domain, index, &atoms);
+        if let Some(v) = &moving {
+            d = d + &(v.clone() * &d_variable(f, &domain));
+        }
         let label = format!("∂{name}/∂{symbol}");
         let subject = match m {
             Move::Increases => format!("{label} ≥ 0 ({name} increases with {symbol})"),
@@ -186,6 +194,33 @@ pub fn weights_move<B: ExactBasis>(
         CERTIFIED
     };
     Verdict::new(status, format!("{SHAPE}{engine}"), evidence)
+}
+
+/// `∂x/∂p` at a fixed `u` for `x = a + (b − a)u` on a domain `[a, b]` that
+/// moves with the parameter `index`: `a' + (b' − a')(x − a)/(b − a)`
+/// (`a'`, `b'` the rational coefficients of the parameter in the ends);
+/// `None` when the ends do not contain it.
+fn normalised_velocity(domain: &trig_core::Domain, index: usize) -> Option<Sym> {
+    let rate = |a: &Affine| {
+        a.params
+            .iter()
+            .find(|(i, _)| *i == index)
+            .map(|(_, q)| q.clone())
+    };
+    let (da, db) = (rate(&domain.start), rate(&domain.end));
+    if da.is_none() && db.is_none() {
+        return None;
+    }
+    let (da, db) = (da.unwrap_or_default(), db.unwrap_or_default());
+    let params: Vec<Sym> = domain.param_names.iter().map(|n| Sym::var(n)).collect();
+    let one = Sym::one();
+    let (a, b) = (
+        domain.start.eval(&one, &params),
+        domain.end.eval(&one, &params),
+    );
+    let x = Sym::var("t");
+    let slope = Sym::rational(Rational::from(&db - &da));
+    Some(Sym::rational(da) + &(slope * &(x - &a) / &(b - &a)))
 }
 
 /// The standard pieces of `g` with whether they are trigonometric, or
