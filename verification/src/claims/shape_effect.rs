@@ -410,12 +410,18 @@ fn s5() -> Verdict {
         &(r - &star),
         &(kappa * &(p[0].clone() + &p[3] - &p[1] - &p[2])),
     );
+    // a wrong printed comparison value refutes the claim; otherwise the
+    // missing κ(α) decides
+    let status = match item.status {
+        Some(Status::Fails) => Status::Fails,
+        _ => Status::NotCheckable,
+    };
     Verdict::new(
-        Status::NotCheckable,
+        status,
         IDENTITY,
         vec![
             Evidence::note(
-                "not decided: the α-B-spline basis (2) and the factor κ(α) of (9) are lost in this copy (only fragments of (9) remain), so neither κ(α) nor its monotonicity in α can be formed; the verdict is decided by this missing part",
+                "not decided: the α-B-spline basis (2) and the factor κ(α) of (9) are lost in this copy (only fragments of (9) remain), so neither κ(α) nor its monotonicity in α can be formed; this missing part decides the verdict unless the printed comparison value κ = 1/48 of the standard cubic B-spline is wrong (checked below)",
             ),
             item,
         ],
