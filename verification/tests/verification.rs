@@ -5,5 +5,6 @@ mod certified;
 mod joins;
 mod seed000;
 mod seed002_004;
+mod shape_effect;
 mod spec_audit;
 mod thesis_interp;

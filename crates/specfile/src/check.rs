@@ -21,6 +21,16 @@ pub struct Monotone {
     pub increasing: bool,
 }
 
+/// The direction a printed shape-parameter claim states, as the parameter
+/// increases: the curve `Σ bᵢPᵢ` moves towards its control polygon (the
+/// end weights `b₀`, `bₙ` decrease and the inner weights increase) or away
+/// from it (the opposite).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Direction {
+    TowardsPolygon,
+    AwayFromPolygon,
+}
+
 /// A printed join condition `Qk = formula in P0…, Q0…`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Condition {
@@ -120,6 +130,14 @@ pub enum Check {
     /// The functions are linearly independent for every parameter value of
     /// the range (the declared ranges without one).
     Independent { range: Option<ParamRange> },
+    /// As `parameter` increases (over `range`, the declared one unless
+    /// given; the other parameters over their declared ranges) the curve
+    /// moves in `direction`.
+    ShapeEffect {
+        parameter: String,
+        direction: Direction,
+        range: Option<ParamRange>,
+    },
     /// The uniform B-spline assembled from the `n` functions (piece `k` is
     /// function `n − 1 − k`) is `Cᵏ` at its knots.
     Continuity { order: usize },

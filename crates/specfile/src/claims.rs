@@ -7,7 +7,7 @@ use trig_core::{Affine, parse_exact};
 use trig_deriv::{End, JoinKind, Wrt};
 use trig_symbolic::{Names, Sym};
 
-use crate::check::{Check, Condition, Monotone, Printed, SpecClaim};
+use crate::check::{Check, Condition, Direction, Monotone, Printed, SpecClaim};
 use crate::error::{Result, SpecError};
 use crate::raw::RawClaim;
 use crate::source::Source;
@@ -203,6 +203,7 @@ fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
             range: one_param_range(src, spec, &c.range)?,
         },
         "monotone" => monotone(src, spec, c)?,
+        "shape-effect" => shape_effect(src, spec, c)?,
         "symmetry" => symmetry(src, spec, c)?,
         "endpoint-values" => Check::EndpointValues {
             end: end_field(src, need(src, c, &c.end, "end")?)?,
@@ -250,7 +251,7 @@ fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
             return src.invalid(
                 c.check.span(),
                 "claims.check",
-                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, monotone, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join or continuity"),
+                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join or continuity"),
             );
         }
     };
@@ -366,6 +367,46 @@ fn monotone(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check> {
     Ok(Check::Monotone {
         items,
         range: one_param_range(src, spec, &c.range)?,
+    })
+}
+
+/// `parameter = "lambda"`, `direction = "towards-polygon"` or
+/// `"away-from-polygon"`, optional `range` (of that parameter).
+fn shape_effect(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check> {
+    let name = need(src, c, &c.parameter, "parameter")?;
+    let Some(p) = spec
+        .params
+        .iter()
+        .find(|p| p.name == name.get_ref().trim() || p.symbol == name.get_ref().trim())
+    else {
+        return src.invalid(
+            name.span(),
+            "claims.parameter",
+            format!("`{}`: not a parameter of the basis", name.get_ref()),
+        );
+    };
+    let dir = need(src, c, &c.direction, "direction")?;
+    let direction = match dir.get_ref().trim() {
+        "towards-polygon" => Direction::TowardsPolygon,
+        "away-from-polygon" => Direction::AwayFromPolygon,
+        other => {
+            return src.invalid(
+                dir.span(),
+                "claims.direction",
+                format!("`{other}`: expected `towards-polygon` or `away-from-polygon`"),
+            );
+        }
+    };
+    let range = match &c.range {
+        Some(r) => Some(
+            ParamRange::parse(r.get_ref()).or_else(|m| src.invalid(r.span(), "claims.range", m))?,
+        ),
+        None => None,
+    };
+    Ok(Check::ShapeEffect {
+        parameter: p.name.clone(),
+        direction,
+        range,
     })
 }
 

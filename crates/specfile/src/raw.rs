@@ -68,4 +68,6 @@ pub struct RawClaim {
     pub join: Option<Spanned<String>>,
     pub different: Option<bool>,
     pub conditions: Option<Vec<Spanned<String>>>,
+    pub parameter: Option<Spanned<String>>,
+    pub direction: Option<Spanned<String>>,
 }

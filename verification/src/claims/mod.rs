@@ -15,6 +15,7 @@ mod seed002;
 mod seed003;
 mod seed004;
 mod seed004_joins;
+mod shape_effect;
 mod thesis;
 mod thesis_interp;
 mod thesis_interp_text;
@@ -47,6 +48,7 @@ pub fn all() -> Vec<Claim> {
         thesis_survey::CLAIMS,
         thesis_interp_text::CLAIMS,
         thesis_lsq::CLAIMS,
+        shape_effect::CLAIMS,
     ]
     .concat()
 }

@@ -17,6 +17,7 @@ pub mod maxima;
 pub mod nonnegative;
 pub mod quoted;
 pub mod region;
+pub mod shape_effect;
 pub mod span;
 pub mod symmetry;
 pub mod unity;

@@ -234,6 +234,11 @@ pub fn decide(spec: &Spec, claim: &SpecClaim) -> Verdict {
         Check::Monotone { items, range } => {
             judge::nonnegative::monotone_claim(spec, items, range.as_ref())
         }
+        Check::ShapeEffect {
+            parameter,
+            direction,
+            range,
+        } => judge::shape_effect::shape_effect(spec, parameter, *direction, range.as_ref()),
         Check::Symmetry {
             map_text,
             map,

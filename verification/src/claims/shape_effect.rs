@@ -1,0 +1,584 @@
+//! Claims of the second list of `shared/claims.md` about the effect of a
+//! shape parameter ("the curve approaches the control polygon as `m`
+//! increases"): each states what is printed and calls the shape-effect
+//! judge ([`crate::judge::shape_effect`]), which decides under the weakest
+//! reasonable definition and states it; printed polygons give an explicit
+//! quantity beside the verdict.
+
+use rug::Rational;
+use trig_core::{Described, Family, ParamRange, Ring};
+use trig_specfile::Direction;
+use trig_symbolic::Sym;
+
+use crate::claim::{Claim, Seed};
+use crate::evidence::Evidence;
+use crate::exact::{IDENTITY, identity_item};
+use crate::judge::certificate::CERTIFIED;
+use crate::judge::nonnegative::convex_hull;
+use crate::judge::shape_effect::{
+    Move, Point, SHAPE, TOWARDS, moves, polygon_distances, shape_effect, weights_move,
+};
+use crate::status::Status;
+use crate::verdict::Verdict;
+
+/// In report order (after the second list's other claims).
+pub const CLAIMS: &[Claim] = &[
+    Claim {
+        id: "T44",
+        seed: Seed::S001,
+        source: "3.2.3, text after Figure 3.2",
+        statement: "as β increases, the distance of the quadratic curve (3.1) from the control polygon increases (example P0 = (0,0), P1 = (1.5,1.5), P2 = (3,0))",
+        check: t44,
+    },
+    Claim {
+        id: "T47",
+        seed: Seed::S001,
+        source: "3.3.3 (after Figure 3.7), 6.2 (Figure 6.3(a) text)",
+        statement: "the cubic curve (3.7) approaches the control polygon as m increases (polygons (0,0),(7,3),(10.5,8),(12,16); (0,0),(1.5,1.5),(3,0),(4.5,1.5); (0,0),(1,2),(3,2),(4,0)); \"all resulting curves remain entirely within the convex hull\"",
+        check: t47,
+    },
+    Claim {
+        id: "T53",
+        seed: Seed::S001,
+        source: "5.4.1, Figure 5.2 text",
+        statement: "for m = −1.8, −1, 0, 1 the surface (tensor product of (3.7)) of the printed net lies inside the control net; increasing m \"pulls\" the surface toward the net",
+        check: t53,
+    },
+    Claim {
+        id: "T61",
+        seed: Seed::S001,
+        source: "6.2, Figure 6.3 (b), (d) text",
+        statement: "(6.1): the curve approaches the polygon as η increases; (6.3): all curves for η ∈ [0,1] are inside the convex hull, and a larger α moves the curve farther from the polygon (V = (0,0),(1,2),(3,2),(4,0))",
+        check: t61,
+    },
+    Claim {
+        id: "D15",
+        seed: Seed::S002,
+        source: "Theorem 2 (5), Conclusion",
+        statement: "the RQTB curve lies between the quintic Bézier curve and the control polygon and is closer to the polygon than the quintic (Conclusion: than the quartic and quintic) Bézier curves",
+        check: d15,
+    },
+    Claim {
+        id: "D21",
+        seed: Seed::S002,
+        source: "Abstract, §III, Conclusion",
+        statement: "the shape is adjusted by the shape parameter \"while the control polygon is kept unchanged\" ((1) has no parameter, and in (3) α1, α2 determine P1, P4)",
+        check: d21,
+    },
+    Claim {
+        id: "S5",
+        seed: Seed::S003,
+        source: "Results (e), (9); Remark 1 (c)",
+        statement: "‖r_i(1/2) − p*‖ = κ(α)‖p_i + p_{i+3} − p_{i+1} − p_{i+2}‖ with κ increasing in α, so the curve is closer to the polygon as α decreases; with a proper α it is closer than the standard cubic B-spline (κ = 1/48)",
+        check: s5,
+    },
+    Claim {
+        id: "E21",
+        seed: Seed::S004,
+        source: "§IV (i)–(iii)",
+        statement: "with λ fixed, as μ increases (or decreases) the segment R_{i,3} approaches the line segment P_{i−3}P_{i−1}; with μ fixed, as λ increases (or decreases) it approaches P_{i−2}P_i; varying both concurrently moves it toward the whole control polygon",
+        check: e21,
+    },
+];
+
+fn q(n: i64, d: i64) -> Rational {
+    Rational::from((n, d))
+}
+
+fn polygon(points: &[(i64, i64, i64, i64)]) -> Vec<Point> {
+    points
+        .iter()
+        .map(|&(a, b, c, d)| (q(a, b), q(c, d)))
+        .collect()
+}
+
+/// `(0,0), (1,2), (3,2), (4,0)`: the polygon of thesis Figure 6.3.
+fn figure_6_3() -> Vec<Point> {
+    polygon(&[(0, 1, 0, 1), (1, 1, 2, 1), (3, 1, 2, 1), (4, 1, 0, 1)])
+}
+
+/// The rational point `θ = 2 arctan(1/2)` of the angle, `(s, c) = (4/5, 3/5)`,
+/// where the explicit quantities are evaluated.
+fn near_middle() -> Vec<(&'static str, Rational)> {
+    vec![("s", q(4, 5)), ("c", q(3, 5))]
+}
+
+fn range(text: &str) -> ParamRange {
+    ParamRange::parse(text).unwrap_or_else(|why| panic!("the range {text}: {why}"))
+}
+
+/// The judge's verdict with explicit quantities on printed polygons
+/// appended.
+fn with_polygons(mut v: Verdict, quantities: Vec<Evidence>) -> Verdict {
+    v.evidence.extend(quantities);
+    v
+}
+
+/// (3.1) with `β ≥ 0`: the end weights `H0 = β/(β+1)(1 − s)²`,
+/// `H2 = β/(β+1)(1 − c)²` grow with `β` (at `β = 0` the curve is `P1`).
+fn t44() -> Verdict {
+    let family = Family::ThesisQuadratic;
+    let printed = polygon(&[(0, 1, 0, 1), (3, 2, 3, 2), (3, 1, 0, 1)]);
+    let v = shape_effect(&family, "beta", Direction::AwayFromPolygon, None);
+    let at = near_middle();
+    let values = [q(1, 2), q(1, 1), q(2, 1)];
+    with_polygons(
+        v,
+        vec![polygon_distances(&family, &printed, &at, "beta", &values)],
+    )
+}
+
+/// (3.7) on its range: towards the polygon as `m` increases, and the
+/// convex hull (unity and certified nonnegativity).
+fn t47() -> Verdict {
+    let family = Family::ThesisCubic;
+    let polygons = [
+        polygon(&[(0, 1, 0, 1), (7, 1, 3, 1), (21, 2, 8, 1), (12, 1, 16, 1)]),
+        polygon(&[(0, 1, 0, 1), (3, 2, 3, 2), (3, 1, 0, 1), (9, 2, 3, 2)]),
+        figure_6_3(),
+    ];
+    let (at, values) = (near_middle(), [q(-1, 1), q(0, 1), q(1, 1)]);
+    let quantities = polygons
+        .iter()
+        .map(|p| polygon_distances(&family, p, &at, "m", &values))
+        .collect();
+    let approaches = with_polygons(
+        shape_effect(&family, "m", Direction::TowardsPolygon, None),
+        quantities,
+    );
+    Verdict::all(
+        format!("{SHAPE}{CERTIFIED}"),
+        vec![
+            ("approaches the polygon as m increases".into(), approaches),
+            (
+                "all curves within the convex hull".into(),
+                convex_hull(&family, None),
+            ),
+        ],
+    )
+}
+
+/// The surface `S(u, v) = Σᵢ Σⱼ bᵢ(u) bⱼ(v) Pᵢⱼ` of (3.7): along every
+/// isoparametric line a curve of (3.7) whose control points are curves of
+/// (3.7), so both statements reduce to the curve basis.
+fn t53() -> Verdict {
+    let family = Family::ThesisCubic;
+    let mut pulls = shape_effect(&family, "m", Direction::TowardsPolygon, None);
+    pulls.evidence.insert(
+        0,
+        "the surface is the tensor product S(u, v) = Σ_i Σ_j b_i(u) b_j(v) P_ij with the same m: for fixed v a curve of (3.7) in u with control points Q_i(v) = Σ_j b_j(v) P_ij, and the same in v; \"pulls toward the net\" is read as the curve effect in each direction (then the corner weights b_0 b_0, … decrease and the four inner weights b_i b_j, i, j ∈ {1, 2}, increase, by the product rule with b ≥ 0)",
+    );
+    let mut parts = vec![(
+        "increasing m pulls the surface toward the net".into(),
+        pulls,
+    )];
+    for m in ["-9/5", "-1", "0", "1"] {
+        let mut hull = convex_hull(&family, Some(&range(&format!("[{m}, {m}]"))));
+        hull.evidence.insert(
+            0,
+            "the product weights b_i(u) b_j(v) are ≥ 0 and sum to 1 exactly when the b_i are (a negative b_i(u₀) times a positive b_j(v) is negative): the surface lies in the convex hull of the net",
+        );
+        parts.push((format!("inside the control net at m = {m}"), hull));
+    }
+    Verdict::all(format!("{SHAPE}{CERTIFIED}"), parts)
+}
+
+/// Figure 6.3 (b), (d): (6.1) in `η`, (6.3) in `α` (its variable is the
+/// printed `η ∈ [0, 1]`).
+fn t61() -> Verdict {
+    let v = figure_6_3();
+    let at = near_middle();
+    let eta = with_polygons(
+        shape_effect(
+            &Family::MajeedQayyum,
+            "eta",
+            Direction::TowardsPolygon,
+            None,
+        ),
+        vec![polygon_distances(
+            &Family::MajeedQayyum,
+            &v,
+            &at,
+            "eta",
+            &[q(3, 4), q(1, 1), q(2, 1)],
+        )],
+    );
+    let alpha = with_polygons(
+        shape_effect(&Family::Usman, "alpha", Direction::AwayFromPolygon, None),
+        vec![polygon_distances(
+            &Family::Usman,
+            &v,
+            &at,
+            "alpha",
+            &[q(1, 2), q(1, 1), q(3, 2)],
+        )],
+    );
+    Verdict::all(
+        format!("{SHAPE}{CERTIFIED}"),
+        vec![
+            ("(6.1): approaches the polygon as η increases".into(), eta),
+            (
+                "(6.3): all curves for η ∈ [0, 1] within the convex hull".into(),
+                convex_hull(&Family::Usman, None),
+            ),
+            (
+                "(6.3): a larger α moves the curve farther from the polygon".into(),
+                alpha,
+            ),
+        ],
+    )
+}
+
+/// A printed alternative "as `p` increases (or decreases)": holds when one
+/// of the two directions holds, and then that direction's evidence decides
+/// (the other is summarised); otherwise both are shown.
+fn either(increasing: Verdict, decreasing: Verdict) -> Verdict {
+    let method = increasing.method.clone();
+    let named = [
+        ("as the parameter increases", increasing),
+        ("as the parameter decreases", decreasing),
+    ];
+    let mut v = match named.iter().position(|(_, v)| v.status == Status::Holds) {
+        Some(k) => {
+            let [a, b] = named;
+            let ((name, holds), (other, rest)) = if k == 0 { (a, b) } else { (b, a) };
+            let mut v = Verdict::all(method, vec![(name.to_string(), holds)]);
+            v.evidence.push(Evidence::note(format!(
+                "{other}: {} (every move reverses), not the direction that decides",
+                rest.status
+            )));
+            v
+        }
+        None => Verdict::all(
+            method,
+            named.into_iter().map(|(n, v)| (n.to_string(), v)).collect(),
+        ),
+    };
+    v.evidence.insert(
+        0,
+        "printed \"with the increasing (or decreasing)\": holds when one direction holds",
+    );
+    v
+}
+
+/// The moves as `p` increases that bring weight onto `target` (the indices
+/// of the segment's end points): theirs rise, the others fall; decreasing
+/// `p` reverses every move.
+fn onto(target: &[usize], increasing: bool) -> Vec<Move> {
+    (0..4)
+        .map(|i| {
+            if target.contains(&i) == increasing {
+                Move::Increases
+            } else {
+                Move::Decreases
+            }
+        })
+        .collect()
+}
+
+/// Seed 004 §IV with the EH bases (1) as the weights of
+/// `R_{i,3} = Σⱼ bⱼ P_{i+j−3}` (2); (4) prints the same derivatives,
+/// `∂R/∂λ = t²(1 − t)²(P_{i−3} − P_{i−2})`, `∂R/∂μ = t²(1 − t)²(P_{i−1} − P_i)`.
+fn e21() -> Verdict {
+    const DEFINITION: &str = "definition (weakest reasonable; the source gives none): the segment approaches the line segment P_aP_b as the parameter changes when, on the whole domain and parameter box, the weights of P_a and P_b do not decrease and the weights of the other two control points do not increase (weight moves monotonically onto the segment's ends); towards the whole polygon as in the judge (end weights b_0, b_3 fall, inner b_1, b_2 rise)";
+    let family = Family::Eh;
+    let segment = |param: &str, target: &[usize]| {
+        either(
+            weights_move(&family, param, &onto(target, true), &[]),
+            weights_move(&family, param, &onto(target, false), &[]),
+        )
+    };
+    let concurrent = |direction: Direction| -> Verdict {
+        let each = moves(direction, 4);
+        Verdict::all(
+            format!("{SHAPE}{CERTIFIED}"),
+            vec![
+                ("in λ".into(), weights_move(&family, "lambda", &each, &[])),
+                ("in μ".into(), weights_move(&family, "mu", &each, &[])),
+            ],
+        )
+    };
+    // along λ = λ0 + τ, μ = μ0 + τ the derivative is ∂/∂λ + ∂/∂μ: equal to
+    // the derivative in one parameter when each bᵢ has only one of them
+    let b = crate::exact::basis(family);
+    let separated = b
+        .iter()
+        .all(|f| f.diff("lambda").is_zero() || f.diff("mu").is_zero());
+    let both = if separated {
+        let mut v = either(
+            concurrent(Direction::TowardsPolygon),
+            concurrent(Direction::AwayFromPolygon),
+        );
+        v.evidence.insert(0, TOWARDS);
+        v.evidence.insert(1, "each b_i contains only one of λ, μ (b0, b1: λ; b2, b3: μ, the ≡ 0 lines below), so along λ = λ0 + τ, μ = μ0 + τ the derivative ∂b_i/∂τ = ∂b_i/∂λ + ∂b_i/∂μ is the derivative in its own parameter: the concurrent change is decided in each parameter; concurrent decrease ⇔ away from the polygon as both increase");
+        v
+    } else {
+        Verdict::not_checkable(
+            "a function contains both λ and μ: the concurrent change is not decided parameter by parameter",
+        )
+    };
+    let mut v = Verdict::all(
+        format!("{SHAPE}{CERTIFIED}"),
+        vec![
+            (
+                "(i) λ fixed, μ varies: approaches P_{i−3}P_{i−1}".into(),
+                segment("mu", &[0, 2]),
+            ),
+            (
+                "(ii) μ fixed, λ varies: approaches P_{i−2}P_i".into(),
+                segment("lambda", &[1, 3]),
+            ),
+            (
+                "(iii) both vary concurrently: approaches the whole polygon".into(),
+                both,
+            ),
+        ],
+    );
+    v.evidence.insert(0, DEFINITION);
+    v
+}
+
+/// Definition 1 (1) has no parameter; in (3) the printed shape parameters
+/// fix the control points `P1`, `P4` through the end tangents
+/// `4(w1/w0)(P1 − P0) = α1(V2 − V0)`, `4(w4/w5)(P5 − P4) = α2(V3 − V1)`:
+/// solved exactly, `∂P1/∂α1 ≢ 0`.
+fn d21() -> Verdict {
+    let var = |n: &str| Sym::var(n);
+    let four = Sym::int(4);
+    let solve = |equation: &Sym, unknown: &str| -> Sym {
+        // linear in the unknown: a·X + b = 0
+        let a = equation.diff(unknown);
+        let b = equation.subs(unknown, &Sym::zero());
+        -(b / &a)
+    };
+    let e1 = four.clone() * &(var("w1") / &var("w0")) * &(var("P1") - &var("P0"))
+        - &(var("alpha1") * &(var("V2") - &var("V0")));
+    let e4 = four * &(var("w4") / &var("w5")) * &(var("P5") - &var("P4"))
+        - &(var("alpha2") * &(var("V3") - &var("V1")));
+    let p1 = solve(&e1, "P1");
+    let p4 = solve(&e4, "P4");
+    let params = Family::Seed002Quartic.parameters();
+    let mut evidence = vec![Evidence::note(format!(
+        "Definition 1, (1): the basis has {} shape parameter{}: with P0 … P5 and the weights fixed the curve of (2) is fixed",
+        if params.is_empty() {
+            "no".to_string()
+        } else {
+            params.len().to_string()
+        },
+        if params.len() == 1 { "" } else { "s" }
+    ))];
+    evidence.push(Evidence::note(format!(
+        "(3) solved for the control points (one coordinate; the same for each): P1 = {}, P4 = {}",
+        p1.to_unicode(),
+        p4.to_unicode()
+    )));
+    let items = [
+        identity_item(
+            "∂P1/∂α1 = 0 (P1 kept as α1 varies)",
+            &p1.diff("alpha1"),
+            &Sym::zero(),
+        ),
+        identity_item(
+            "∂P4/∂α2 = 0 (P4 kept as α2 varies)",
+            &p4.diff("alpha2"),
+            &Sym::zero(),
+        ),
+    ];
+    let status = Status::conjunction(items.iter().filter_map(|e| e.status));
+    evidence.extend(items);
+    evidence.push(Evidence::note(
+        "the weights w_i change the shape with P0 … P5 fixed, but the document names α1, α2 the shape parameters; the interpolation form (4), Σ Tb_i(t, α1, α2) V_i, has its functions Tb_i garbled in this copy",
+    ));
+    Verdict::new(status, IDENTITY, evidence)
+}
+
+/// The standard cubic B-spline at `t = 1/2`: `r(1/2) − p* = (1/48)(p0 + p3
+/// − p1 − p2)` with `p* = (p1 + p2)/2` — the printed comparison value;
+/// seed 003's own basis (2) and `κ(α)` of (9) are not legible here.
+fn s5() -> Verdict {
+    let half = Sym::rational(q(1, 2));
+    let b: Vec<Sym> = crate::exact::basis(Family::BSpline3)
+        .iter()
+        .map(|f| f.subs("t", &half))
+        .collect();
+    let p = crate::exact::symbols("p", 4);
+    let r = crate::exact::combination(&b, &p);
+    let star = (p[1].clone() + &p[2]) * &half;
+    let kappa = Sym::rational(q(1, 48));
+    let item = identity_item(
+        "standard cubic B-spline: r(1/2) − p* = (1/48)(p_i + p_{i+3} − p_{i+1} − p_{i+2})",
+        &(r - &star),
+        &(kappa * &(p[0].clone() + &p[3] - &p[1] - &p[2])),
+    );
+    // a wrong printed comparison value refutes the claim; otherwise the
+    // missing κ(α) decides
+    let status = match item.status {
+        Some(Status::Fails) => Status::Fails,
+        _ => Status::NotCheckable,
+    };
+    Verdict::new(
+        status,
+        IDENTITY,
+        vec![
+            Evidence::note(
+                "not decided: the α-B-spline basis (2) and the factor κ(α) of (9) are lost in this copy (only fragments of (9) remain), so neither κ(α) nor its monotonicity in α can be formed; this missing part decides the verdict unless the printed comparison value κ = 1/48 of the standard cubic B-spline is wrong (checked below)",
+            ),
+            item,
+        ],
+    )
+}
+
+/// The curvature at the start `P0 = (0, 0)` of the curve `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ`
+/// from the values and first two derivatives of each `bᵢ` there (any
+/// parameter: curvature does not depend on it), with the polygon's first
+/// edge on the x-axis: `κ = y''/x'²` where `y' = 0` and `x' > 0`; `None`
+/// otherwise.
+fn start_curvature(jets: &[Vec<Sym>], weights: &[Rational], points: &[Point]) -> Option<Rational> {
+    let sum = |order: usize, coordinate: Option<usize>| -> Rational {
+        jets.iter()
+            .zip(weights)
+            .zip(points)
+            .map(|((jet, w), p)| {
+                let value = jet[order].as_rational().unwrap_or_default() * w.clone();
+                match coordinate {
+                    None => value,
+                    Some(0) => value * p.0.clone(),
+                    Some(_) => value * p.1.clone(),
+                }
+            })
+            .sum()
+    };
+    // R = N/W: R' = N'/W − NW'/W², R'' = N''/W − 2N'W'/W² − NW''/W² + 2NW'²/W³
+    let (w0, w1, w2) = (sum(0, None), sum(1, None), sum(2, None));
+    let derivative = |k: usize| -> (Rational, Rational) {
+        let (n0, n1, n2) = (sum(0, Some(k)), sum(1, Some(k)), sum(2, Some(k)));
+        let first = n1.clone() / w0.clone() - n0.clone() * w1.clone() / w0.clone().square();
+        let second = n2 / w0.clone()
+            - Rational::from(2) * n1 * w1.clone() / w0.clone().square()
+            - n0.clone() * w2.clone() / w0.clone().square()
+            + Rational::from(2) * n0 * w1.clone().square() / w0.clone().square() / w0.clone();
+        (first, second)
+    };
+    let ((x1, _), (y1, y2)) = (derivative(0), derivative(1));
+    (y1 == 0 && x1 > 0).then(|| y2 / x1.square())
+}
+
+/// The Bernstein polynomials of degree `n` in `t` with their first two
+/// derivatives at `t = 0`.
+fn bernstein_jets(n: u32) -> Vec<Vec<Sym>> {
+    let t = Sym::var("t");
+    (0..=n)
+        .map(|i| {
+            let binomial = (0..i).fold(Rational::from(1), |acc, k| acc * (n - k) / (k + 1));
+            let b = Sym::rational(binomial) * &t.powi(i) * &(Sym::one() - &t).powi(n - i);
+            let (d1, d2) = (b.diff("t"), b.diff("t").diff("t"));
+            [b, d1, d2]
+                .iter()
+                .map(|f| f.subs("t", &Sym::zero()))
+                .collect()
+        })
+        .collect()
+}
+
+/// Curves with different parameters compared where no convention is
+/// needed: the curvature at the common start `P0`, where both leave along
+/// `P1 − P0`. A curve between the quintic Bézier curve and the polygon
+/// near `P0` (`0 ≤ y_R ≤ y_Q` for `y ≈ κx²/2` in the frame of the edge
+/// `P0P1`) has `κ_R ≤ κ_Q`; the weights `wᵢ > 0` are free (Theorem 2).
+fn d15() -> Verdict {
+    let polygon = polygon(&[
+        (0, 1, 0, 1),
+        (1, 1, 0, 1),
+        (1, 1, 1, 1),
+        (2, 1, 1, 1),
+        (3, 1, 1, 1),
+        (4, 1, 0, 1),
+    ]);
+    let rqtb = trig_deriv::endpoint_derivatives::<Sym, 3>(
+        Family::Seed002Quartic,
+        &[],
+        trig_deriv::End::Start,
+        trig_deriv::Wrt::Angle,
+        &Sym::one(),
+    );
+    let ones = vec![q(1, 1); 6];
+    let mut weighted = ones.clone();
+    weighted[2] = q(2, 1);
+    let curvatures = [
+        (
+            "the RQTB curve, weights 1",
+            start_curvature(&rqtb, &ones, &polygon),
+        ),
+        (
+            "the RQTB curve, w2 = 2, other weights 1",
+            start_curvature(&rqtb, &weighted, &polygon),
+        ),
+        (
+            "the quintic Bézier curve",
+            start_curvature(&bernstein_jets(5), &ones, &polygon),
+        ),
+        (
+            "the quartic Bézier curve",
+            start_curvature(&bernstein_jets(4), &ones[..5], &polygon[..5]),
+        ),
+    ];
+    let Some(values) = curvatures
+        .iter()
+        .map(|(_, k)| k.clone())
+        .collect::<Option<Vec<Rational>>>()
+    else {
+        return Verdict::not_checkable("the curvature at P0 could not be formed exactly");
+    };
+    let shown: Vec<String> = curvatures
+        .iter()
+        .zip(&values)
+        .map(|((name, _), k)| format!("{name}: {k}"))
+        .collect();
+    let (weighted_k, quintic, quartic) = (&values[1], &values[2], &values[3]);
+    let status = if weighted_k > quintic && weighted_k > quartic {
+        Status::Fails
+    } else {
+        Status::NotCheckable
+    };
+    let point: Vec<(String, Rational)> = polygon
+        .iter()
+        .take(3)
+        .enumerate()
+        .flat_map(|(i, (x, y))| [(format!("x{i}"), x.clone()), (format!("y{i}"), y.clone())])
+        .chain([("w2".to_string(), q(2, 1))])
+        .collect();
+    let names: Vec<String> = point.iter().map(|(n, _)| n.clone()).collect();
+    let witness = crate::witness::witness(
+        &point,
+        &names,
+        vec![
+            (
+                "curvature of the RQTB curve at P0",
+                Sym::rational(weighted_k.clone()),
+            ),
+            (
+                "of the quintic Bézier curve",
+                Sym::rational(quintic.clone()),
+            ),
+        ],
+    );
+    let item = Evidence::new(
+        crate::evidence::Kind::Comparison,
+        format!(
+            "exact curvatures at P0 (polygon (0,0), (1,0), (1,1), …; derivatives of (1) in θ, of the Bernstein polynomials in u, curvature being independent of the parameter): {}",
+            shown.join("; ")
+        ),
+    )
+    .about("κ_RQTB(P0) ≤ κ_quintic(P0) for weights w_i > 0", status)
+    .witnessed((status == Status::Fails).then_some(witness));
+    Verdict::new(
+        status,
+        "exact: end derivatives of the bases (Taylor jets over the symbolic ring), the rational curve by the quotient rule; curvature at the common end point compared",
+        vec![
+            Evidence::note(
+                "definition (weakest reasonable; the document gives none): \"between the quintic Bézier curve and the control polygon\" and \"closer\" are read geometrically, without a correspondence of parameters; near P0 both curves leave along P1 − P0 and y ≈ κx²/2 in the frame of the edge P0P1, so lying between them needs κ_RQTB ≤ κ_quintic at P0 (a necessary condition; with all weights 1 it holds at P0, which proves nothing globally)",
+            ),
+            item,
+        ],
+    )
+}
