@@ -3,6 +3,8 @@
 
 use crate::claim::Claim;
 
+mod local_control;
+mod local_control_joins;
 mod properties;
 mod properties_formulas;
 mod seed000;
@@ -35,6 +37,7 @@ pub fn all() -> Vec<Claim> {
         seed004::CLAIMS,
         seed004_joins::CLAIMS,
         properties::CLAIMS,
+        local_control::CLAIMS,
     ]
     .concat()
 }
