@@ -68,4 +68,7 @@ pub struct RawClaim {
     pub join: Option<Spanned<String>>,
     pub different: Option<bool>,
     pub conditions: Option<Vec<Spanned<String>>>,
+    pub control: Option<Spanned<String>>,
+    pub scope: Option<Spanned<String>>,
+    pub segments: Option<Vec<i64>>,
 }

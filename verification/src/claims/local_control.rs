@@ -309,6 +309,33 @@ mod tests {
         assert_eq!(at(1, 0), Sym::var("V2"));
     }
 
+    /// The computed sets of segments (the "enters exactly" lines).
+    fn entered(v: &Verdict) -> Vec<String> {
+        v.evidence
+            .iter()
+            .filter(|e| e.text.contains("enters exactly"))
+            .map(|e| e.text.clone())
+            .collect()
+    }
+
+    #[test]
+    fn the_local_claims_compute_their_segments() {
+        assert_eq!(
+            entered(&d19()),
+            ["α_j enters exactly: j−1, j (printed: j−1, j)"]
+        );
+        let m = entered(&m20());
+        assert_eq!(m.len(), 2);
+        assert!(m.iter().all(|l| l.contains("exactly: j, j+1, j+2, j+3 (")));
+        assert_eq!(entered(&t48()), ["m_j enters exactly: j (printed: j)"]);
+        let e = e24();
+        assert_eq!(e.status, Status::Holds);
+        assert!(e.evidence.iter().any(|i| {
+            i.line()
+                .contains("derivatives in u: achieved for all parameter values: exactly C^0")
+        }));
+    }
+
     #[test]
     fn every_claim_of_this_file_decides() {
         for c in CLAIMS {

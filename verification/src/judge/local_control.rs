@@ -59,11 +59,7 @@ pub struct Entry {
 
 /// The text of the segment `j + o`.
 pub fn segment(o: i64) -> String {
-    match o {
-        0 => "segment j".into(),
-        o if o > 0 => format!("segment j+{o}"),
-        o => format!("segment j−{}", -o),
-    }
+    format!("segment j{}", signed(o))
 }
 
 /// The printed set as text.
@@ -163,6 +159,9 @@ pub fn compare(what: &str, entries: &[Entry], printed: &[i64]) -> Verdict {
         status = Status::conjunction([status, item.status.unwrap_or(Status::NotCheckable)]);
         evidence.push(item);
     }
+    // the segments where the print is wrong first (the report shows the
+    // first witness beside the verdict), each group in segment order
+    evidence.sort_by_key(|e| e.status == Some(Status::Holds));
     evidence.insert(
         0,
         Evidence::note(format!(
@@ -202,6 +201,28 @@ fn entries(
     }
 }
 
+/// `+k`, `−k`, or nothing for `0` (an index offset as printed).
+fn signed(k: i64) -> String {
+    match k {
+        0 => String::new(),
+        k if k > 0 => format!("+{k}"),
+        k => format!("−{}", -k),
+    }
+}
+
+/// An entry with the parameter's name in its labels replaced by its
+/// printed symbol.
+fn relabel(e: Entry, name: &str, symbol: &str) -> Entry {
+    Entry {
+        offset: e.offset,
+        weights: e
+            .weights
+            .into_iter()
+            .map(|(l, w)| (l.replace(&format!("∂{name}"), &format!("∂{symbol}")), w))
+            .collect(),
+    }
+}
+
 /// The printed local-control claim about the uniform B-spline assembled
 /// from the functions of `basis`: `control` enters exactly the segments
 /// `j + o`, `o ∈ printed` (segment `i` is `Σ_k b_k P_{i+first+k}`).
@@ -224,6 +245,13 @@ pub fn local_control<B: ExactBasis>(
             names.join(", ")
         ));
     }
+    let params = basis.parameters();
+    let symbol = |name: &str| {
+        params
+            .iter()
+            .find(|p| p.name == name)
+            .map_or_else(|| name.to_string(), |p| p.symbol.clone())
+    };
     let d = |name: &str, f: &Sym| match index(name) {
         Some(i) => d_param(f, &domain, i, &atoms),
         None => Sym::zero(),
@@ -233,40 +261,39 @@ pub fn local_control<B: ExactBasis>(
         Control::Point => format!(
             "segment i = Σ_{{k=0}}^{{{}}} b_k(x) P_{{i{}+k}} (uniform B-spline of the {n} functions; piece k is function {} − k)",
             n - 1,
-            match first {
-                0 => String::new(),
-                f if f > 0 => format!("+{f}"),
-                f => format!("−{}", -f),
-            },
+            signed(first),
             n - 1
         ),
-        Control::SegmentParameter { name, shift } => format!(
-            "segment i = Σ_{{k=0}}^{{{}}} b_k(x; {name}_{{i{}}}) times its control points (however they are shared): {name}_j is the parameter of segment j{} only",
-            n - 1,
-            match shift {
-                0 => String::new(),
-                s if *s > 0 => format!("+{s}"),
-                s => format!("−{}", -s),
-            },
-            match -shift {
-                0 => String::new(),
-                s if s > 0 => format!("+{s}"),
-                s => format!("−{}", -s),
-            },
-        ),
-        Control::CurveParameter { name } => format!(
-            "segment i = Σ_{{k=0}}^{{{}}} b_k(x; {name}) times its control points, one {name} for every segment",
-            n - 1
-        ),
+        Control::SegmentParameter { name, shift } => {
+            let p = symbol(name);
+            format!(
+                "segment i = Σ_{{k=0}}^{{{}}} b_k(x; {p}_{{i{}}}) times its control points (however they are shared): {p}_j is the parameter of segment j{} only",
+                n - 1,
+                signed(*shift),
+                signed(-shift)
+            )
+        }
+        Control::CurveParameter { name } => {
+            let p = symbol(name);
+            format!(
+                "segment i = Σ_{{k=0}}^{{{}}} b_k(x; {p}) times its control points, one {p} for every segment",
+                n - 1
+            )
+        }
     };
     let mut v = match control {
         Control::Point => compare("P_j", &entries(&functions, control, first, d), printed),
         Control::SegmentParameter { name, .. } => compare(
-            &format!("{name}_j"),
-            &entries(&functions, control, first, d),
+            &format!("{}_j", symbol(name)),
+            &entries(&functions, control, first, |_, f| d(name, f))
+                .into_iter()
+                .map(|e| relabel(e, name, &symbol(name)))
+                .collect::<Vec<_>>(),
             printed,
         ),
-        Control::CurveParameter { name } => curve_parameter(name, &functions, d, printed),
+        Control::CurveParameter { name } => {
+            curve_parameter(&symbol(name), &functions, |f| d(name, f), printed)
+        }
     };
     v.evidence.insert(0, Evidence::note(layout));
     v
@@ -278,13 +305,13 @@ pub fn local_control<B: ExactBasis>(
 fn curve_parameter(
     name: &str,
     functions: &[Sym],
-    d: impl Fn(&str, &Sym) -> Sym,
+    d: impl Fn(&Sym) -> Sym,
     printed: &[i64],
 ) -> Verdict {
     let weights: Vec<(String, Sym)> = functions
         .iter()
         .enumerate()
-        .map(|(k, b)| (format!("∂b{k}/∂{name}"), d(name, b)))
+        .map(|(k, b)| (format!("∂b{k}/∂{name}"), d(b)))
         .collect();
     let outside = printed.iter().max().map_or(0, |m| m + 1);
     let mut all: Vec<i64> = printed.to_vec();
@@ -297,10 +324,23 @@ fn curve_parameter(
         })
         .collect();
     let mut v = compare(name, &entries, printed);
+    let every = v
+        .evidence
+        .iter()
+        .any(|item| item.text.starts_with("enters"));
+    for item in v.evidence.iter_mut() {
+        if item.text.starts_with(&format!("{name} enters exactly")) {
+            item.text = format!(
+                "{name} enters {} (printed: {})",
+                if every { "every segment" } else { "no segment" },
+                set_text(&printed.iter().copied().collect())
+            );
+        }
+    }
     v.evidence.insert(
         0,
         Evidence::note(format!(
-            "one value of {name} for the whole curve: every segment has the same weights ∂b_k/∂{name}, so {name} enters every segment or none (segments are counted from the first printed one, j = 0)"
+            "one value of {name} for the whole curve: every segment has the same weights ∂b_k/∂{name}, so {name} enters every segment or none; shown on the printed segments and the next one"
         )),
     );
     v
