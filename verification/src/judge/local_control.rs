@@ -74,15 +74,17 @@ fn set_text(offsets: &BTreeSet<i64>) -> String {
         .join(", ")
 }
 
-/// Whether a control enters with the weights of one entry: `Some(item)`
-/// proving it does (a nonzero weight with a witness), `None` when every
-/// weight is exactly 0, or an item saying it could not be shown.
+/// Whether a control enters a segment with the weights of one entry.
 enum Enters {
+    /// Proved: a nonzero weight with a point where it is nonzero.
     Yes(Evidence),
+    /// Proved not: every weight is exactly 0 (why, as text).
     No(String),
+    /// A weight is nonzero in the ring but no point showed it (why).
     Unknown(String),
 }
 
+/// Decides [`Enters`] for the weights of one segment.
 fn enters(weights: &[(String, Sym)]) -> Enters {
     let nonzero: Vec<&(String, Sym)> = weights.iter().filter(|(_, w)| !w.is_zero()).collect();
     if nonzero.is_empty() {
