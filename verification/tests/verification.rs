@@ -3,6 +3,7 @@
 mod audit;
 mod certified;
 mod joins;
+mod local_control;
 mod seed000;
 mod seed002_004;
 mod shape_effect;

@@ -141,6 +141,20 @@ pub enum Check {
     /// The uniform B-spline assembled from the `n` functions (piece `k` is
     /// function `n − 1 − k`) is `Cᵏ` at its knots.
     Continuity { order: usize },
+    /// Local control of that B-spline (segment `i` is `Σ b_k P_{i+k}`):
+    /// the varied control enters exactly the printed segments `j + o`,
+    /// `o ∈ segments`.
+    LocalControl { varied: Varied, segments: Vec<i64> },
+}
+
+/// What a local-control claim varies.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Varied {
+    /// The control point `P_j`.
+    Point,
+    /// The parameter `name`: one value per segment (`per_segment`, segment
+    /// `j` has its own `name_j`) or one for the whole curve.
+    Parameter { name: String, per_segment: bool },
 }
 
 /// A claim of the file.

@@ -7,7 +7,7 @@ use trig_core::{Affine, parse_exact};
 use trig_deriv::{End, JoinKind, Wrt};
 use trig_symbolic::{Names, Sym};
 
-use crate::check::{Check, Condition, Direction, Monotone, Printed, SpecClaim};
+use crate::check::{Check, Condition, Direction, Monotone, Printed, SpecClaim, Varied};
 use crate::error::{Result, SpecError};
 use crate::raw::RawClaim;
 use crate::source::Source;
@@ -247,11 +247,12 @@ fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
                 order: order_field(src, c, need(src, c, &c.order, "order")?)?,
             }
         }
+        "local-control" => local_control(src, spec, c)?,
         other => {
             return src.invalid(
                 c.check.span(),
                 "claims.check",
-                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join or continuity"),
+                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, continuity or local-control"),
             );
         }
     };
@@ -261,6 +262,60 @@ fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
         statement: c.statement.clone(),
         check,
     })
+}
+
+/// `control = "point"` (the control point `P_j`) or a parameter's name
+/// with `scope = "segment"` (one value per segment) or `"curve"` (one for
+/// the whole curve); `segments = [-3, -2, -1, 0]`, the printed segments
+/// `j + o`.
+fn local_control(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check> {
+    let control = need(src, c, &c.control, "control")?;
+    let segments = need(src, c, &c.segments, "segments")?.clone();
+    let name = control.get_ref().trim();
+    let varied = if name == "point" {
+        if let Some(scope) = &c.scope {
+            return src.invalid(
+                scope.span(),
+                "claims.scope",
+                "`scope` belongs to a parameter (`control = \"point\"` varies a control point)"
+                    .into(),
+            );
+        }
+        Varied::Point
+    } else {
+        if !spec.params.iter().any(|p| p.name == name) {
+            let names: Vec<&str> = spec.params.iter().map(|p| p.name.as_str()).collect();
+            return src.invalid(
+                control.span(),
+                "claims.control",
+                format!(
+                    "`{name}`: expected `point` or a parameter ({})",
+                    if names.is_empty() {
+                        "none declared".to_string()
+                    } else {
+                        names.join(", ")
+                    }
+                ),
+            );
+        }
+        let scope = need(src, c, &c.scope, "scope")?;
+        let per_segment = match scope.get_ref().trim() {
+            "segment" => true,
+            "curve" => false,
+            other => {
+                return src.invalid(
+                    scope.span(),
+                    "claims.scope",
+                    format!("`{other}`: expected `segment` (one value per segment) or `curve` (one value for the whole curve)"),
+                );
+            }
+        };
+        Varied::Parameter {
+            name: name.to_string(),
+            per_segment,
+        }
+    };
+    Ok(Check::LocalControl { varied, segments })
 }
 
 /// `values = ["P0 = (x, y)", …]` (one point per function, in order) and

@@ -48,7 +48,7 @@ pub mod spec;
 
 pub use any::{AnyBasis, OpenError};
 pub use ast::Grammar;
-pub use check::{Check, Condition, Direction, Monotone, Printed, SpecClaim};
+pub use check::{Check, Condition, Direction, Monotone, Printed, SpecClaim, Varied};
 pub use error::{FormulaError, Location, SpecError};
 pub use expression::Expression;
 pub use spec::{Spec, SpecFunction};

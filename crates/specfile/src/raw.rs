@@ -70,4 +70,7 @@ pub struct RawClaim {
     pub conditions: Option<Vec<Spanned<String>>>,
     pub parameter: Option<Spanned<String>>,
     pub direction: Option<Spanned<String>>,
+    pub control: Option<Spanned<String>>,
+    pub scope: Option<Spanned<String>>,
+    pub segments: Option<Vec<i64>>,
 }

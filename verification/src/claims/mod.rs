@@ -3,6 +3,8 @@
 
 use crate::claim::Claim;
 
+mod local_control;
+mod local_control_joins;
 mod properties;
 mod properties_formulas;
 mod second_list;
@@ -49,6 +51,7 @@ pub fn all() -> Vec<Claim> {
         thesis_interp_text::CLAIMS,
         thesis_lsq::CLAIMS,
         shape_effect::CLAIMS,
+        local_control::CLAIMS,
     ]
     .concat()
 }

@@ -148,7 +148,7 @@ fn d3() -> Verdict {
 
 /// `R, R', R''` (in θ) of the rational curve at `θ = 0` and `θ = π/2`, with
 /// control points `P0…P5` and weights `w0…w5` as symbols.
-fn rational_ends(p: &[Sym], w: &[Sym]) -> (Vec<Sym>, Vec<Sym>) {
+pub(super) fn rational_ends(p: &[Sym], w: &[Sym]) -> (Vec<Sym>, Vec<Sym>) {
     let at = |end| {
         curve_endpoint_derivatives::<Sym, 3>(
             Family::Seed002Quartic,

@@ -13,6 +13,7 @@ pub mod domain;
 pub mod endpoint;
 pub mod independence;
 pub mod join;
+pub mod local_control;
 pub mod maxima;
 pub mod nonnegative;
 pub mod quoted;

@@ -17,11 +17,12 @@ use std::sync::Arc;
 use std::time::Duration;
 
 use trig_deriv::Wrt;
-use trig_specfile::{Check, Spec, SpecClaim};
+use trig_specfile::{Check, Spec, SpecClaim, Varied};
 
 use crate::budget::{Stopped, bounded};
 use crate::judge;
 use crate::judge::endpoint::TABLE_ORDERS;
+use crate::judge::local_control::Control;
 use crate::real_witness::{RealPoints, with_real_points};
 use crate::report::{Document, Entry};
 use crate::verdict::Verdict;
@@ -283,6 +284,20 @@ pub fn decide(spec: &Spec, claim: &SpecClaim) -> Verdict {
             conditions,
         } => joins::printed_join(spec, *kind, *wrt, *different, factors, conditions),
         Check::Continuity { order } => judge::continuity::bspline_continuity(spec, *order),
+        Check::LocalControl { varied, segments } => {
+            let control = match varied {
+                Varied::Point => Control::Point,
+                Varied::Parameter {
+                    name,
+                    per_segment: true,
+                } => Control::SegmentParameter {
+                    name: name.clone(),
+                    shift: 0,
+                },
+                Varied::Parameter { name, .. } => Control::CurveParameter { name: name.clone() },
+            };
+            judge::local_control::local_control(spec, &control, 0, segments)
+        }
     }
 }
 

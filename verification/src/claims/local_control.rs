@@ -1,0 +1,346 @@
+//! Local control, joins of piecewise curves and the interpolation of the
+//! second list of `shared/claims.md`: which segments a control point, a
+//! weight or a shape parameter enters (T48, M20, D19, decided by the
+//! local-control judge), how consecutive segments join (E24, by the
+//! continuity judge), which control points a refinement moves (T65), how a
+//! piecewise curve interpolates (D17), and the printed G² conditions (T51,
+//! T54). Each states what is printed and computes the verdict.
+
+use trig_core::{Family, Ring};
+use trig_deriv::continuity::{Piece, continuity, curve_piece};
+use trig_deriv::{End, Wrt, curve_endpoint_derivatives};
+use trig_symbolic::Sym;
+
+use super::local_control_joins::{d17, t51, t54, t65};
+use super::seed002::rational_ends;
+use crate::claim::{Claim, Seed};
+use crate::evidence::Evidence;
+use crate::exact::{IDENTITY, basis, identities, symbols};
+use crate::judge::continuity::at_least;
+use crate::judge::local_control::{self, Control, Entry, compare};
+use crate::status::Status;
+use crate::verdict::Verdict;
+
+/// In report order (after each document's first-list claims).
+pub const CLAIMS: &[Claim] = &[
+    Claim {
+        id: "T48",
+        seed: Seed::S001,
+        source: "3.1, 3.3.4 (with 4.3.1: \"each value m_i influences the shape of the i-th curve segment\")",
+        statement: "m provides local shape control: \"local modification can be made without influencing the rest of the curve\" (the spline of (3.7) with one m_i per segment)",
+        check: t48,
+    },
+    Claim {
+        id: "T51",
+        seed: Seed::S001,
+        source: "4.1.2 (iii) and the summary item (iii)",
+        statement: "G²: P'(1) = λQ'(0), P''(1) = μQ''(0) + γQ'(0), μ > 0 matches the curvatures; \"C² and G² … have the same velocity and acceleration vector\"",
+        check: t51,
+    },
+    Claim {
+        id: "T54",
+        seed: Seed::S001,
+        source: "(4.29) against (4.28)",
+        statement: "G² interpolation end conditions P'(x_i) = αd_i, P''(x_i) = α²D_{i+1} + βD_i agree with (4.28) P'_{i+1}(0) = αP'_i(1), P''_{i+1}(0) = α²P''_i(1) + βP'_i(1)",
+        check: t54,
+    },
+    Claim {
+        id: "T65",
+        seed: Seed::S001,
+        source: "6.6, paragraph after Figure 6.7, with (4.4)–(4.6)",
+        statement: "the C¹ refinement by (4.6) \"retains the corner points\" and \"will solely affect only the control points of V3 of the first curve and V0 for the next curve\"",
+        check: t65,
+    },
+    Claim {
+        id: "M20",
+        seed: Seed::S000,
+        source: "5.1.3 with (1) and Definition 3",
+        statement: "local control: changing a control point H_j or a weight w_j changes the rational / NURBS curve only on [n_j, n_{j+4})",
+        check: m20,
+    },
+    Claim {
+        id: "D17",
+        seed: Seed::S002,
+        source: "§V, text after (8)",
+        statement: "Q(u) interpolates the points; adding Q_{−1}, Q_{n+1} (two knots, two parameters) gives an open interpolating curve; adding Q_{−1} = Q_n, Q_{n+1} = Q_0, Q_{n+2} = Q_1 (three knots u_0, u_n, u_{n+1}, three parameters α_0, α_n, α_{n+1}) gives a closed one",
+        check: d17,
+    },
+    Claim {
+        id: "D19",
+        seed: Seed::S002,
+        source: "§I (\"The changes of a local shape parameter will only affect two curve segments\"), (6)–(7)",
+        statement: "α_i enters only the segments Q_{i−1} and Q_i of (6)–(7)",
+        check: d19,
+    },
+    Claim {
+        id: "E24",
+        seed: Seed::S004,
+        source: "(2)–(3) (implicit \"piecewise … spline curve\")",
+        statement: "consecutive segments of (3) join continuously: R_i(1) = P_{i−2} = R_{i+1}(0), and R' matches in t (C¹ in u only when Δt_i = Δt_{i+1})",
+        check: e24,
+    },
+];
+
+/// T48: the spline of (3.7) as the thesis builds it (4.19: segment `i`
+/// is `Σ b_k(u; m_i)` times its own control points, "each value m_i
+/// influences the shape of the i-th curve segment"): `m_i` enters exactly
+/// segment `i`. The other reading — one `m` for the whole curve, as the
+/// figures of 3.3.3 vary it — is decided too and reported as a note.
+fn t48() -> Verdict {
+    let f = Family::ThesisCubic;
+    let m = "m".to_string();
+    let mut v = local_control::local_control(
+        &f,
+        &Control::SegmentParameter {
+            name: m.clone(),
+            shift: 0,
+        },
+        0,
+        &[0],
+    );
+    let global = local_control::local_control(&f, &Control::CurveParameter { name: m }, 0, &[0]);
+    v.evidence.insert(
+        0,
+        Evidence::note(
+            "reading: one m_i per segment, as the thesis's spline is printed (4.19) and used (4.3.1: \"each value m_i influences the shape of the i-th curve segment\"; Tables 4.1–4.6 list m_i per interval); the control points of segment i, (4.21)/(4.25), depend on m_i and the data of [x_i, x_{i+1}] only (the composite curves of 4.1 are another construction: there (4.7) computes the next segment's P5 from m_1 and m_2, so a change of m also moves the next segment)",
+        ),
+    );
+    v.evidence.push(Evidence::note(format!(
+        "the other reading, one m for the whole curve, {}: m then enters every segment (not local shape control)",
+        global.status
+    )));
+    v
+}
+
+/// M20: the rational / NURBS curve of Definition 3 on the knot interval
+/// `[n_i, n_{i+1})` is `Σ_k w_{i−3+k} H_{i−3+k} F_k / Σ_k w_{i−3+k} F_k`
+/// ((1): `F_j` is `0` outside `[n_j, n_{j+4})`, its four pieces are
+/// `F3 … F0` of (5)); `H_j` and `w_j` enter the interval `j + o` through
+/// the local index `k = 3 − o`, with the weights `∂Z/∂H_k`, `∂Z/∂w_k`.
+fn m20() -> Verdict {
+    let f = basis(Family::Seed000Uniform);
+    let h = symbols("H", 4);
+    let w = symbols("w", 4);
+    let num = (0..4).fold(Sym::zero(), |acc, k| acc + &(w[k].clone() * &h[k] * &f[k]));
+    let den = (0..4).fold(Sym::zero(), |acc, k| acc + &(w[k].clone() * &f[k]));
+    let z = num / &den;
+    let entries = |name: &str, of: &[Sym]| -> Vec<Entry> {
+        (0..4)
+            .map(|k| Entry {
+                offset: 3 - k as i64,
+                weights: vec![(format!("∂Z/∂{name}{k}"), z.diff(&of[k].to_string()))],
+            })
+            .collect()
+    };
+    let printed = [0, 1, 2, 3];
+    let mut v = Verdict::all(
+        local_control::METHOD,
+        vec![
+            (
+                "control point H_j".into(),
+                compare("H_j", &entries("H", &h), &printed),
+            ),
+            (
+                "weight w_j".into(),
+                compare("w_j", &entries("w", &w), &printed),
+            ),
+        ],
+    );
+    v.evidence.insert(
+        0,
+        Evidence::note(
+            "segment j + o is the knot interval [n_{j+o}, n_{j+o+1}) with the uniform pieces F0…F3 of (5) and the local control points H_{j+o−3+k}, weights w_{j+o−3+k}; [n_j, n_{j+4}) is segments j … j+3; local symbols H_k, w_k (k = 3 − o) stand for H_j, w_j",
+        ),
+    );
+    v
+}
+
+/// The rational curve (2) of seed 002 with the control points fixed by
+/// the end conditions (3) (reading D6b): `Q(t, α1, α2)` of (4) on the local
+/// points `V0 … V3` (one coordinate), the weights `w0 … w5` as symbols.
+/// `P0 = V1`, `P5 = V2`; `P1`, `P2` solve `R'(0)`, `R''(0)`, and `P4`, `P3`
+/// solve `R'(π/2)`, `R''(π/2)`, each linear in its point.
+pub(super) fn seed002_segment() -> Sym {
+    let v = symbols("V", 4);
+    let w = symbols("w", 6);
+    let mut p = symbols("P", 6);
+    let (a1, a2) = (Sym::var("alpha1"), Sym::var("alpha2"));
+    let two = Sym::int(2);
+    p[0] = v[1].clone();
+    p[5] = v[2].clone();
+    // (end, order, the unknown point, its right-hand side in (3))
+    let steps = [
+        (0, 1, 1, a1.clone() * &(v[2].clone() - &v[0])),
+        (
+            0,
+            2,
+            2,
+            a1 * &(v[0].clone() - &(two.clone() * &v[1]) + &v[2]),
+        ),
+        (1, 1, 4, a2.clone() * &(v[3].clone() - &v[1])),
+        (1, 2, 3, a2 * &(v[1].clone() - &(two * &v[2]) + &v[3])),
+    ];
+    for (end, order, k, rhs) in steps {
+        let (r0, r1) = rational_ends(&p, &w);
+        let lhs = if end == 0 { &r0[order] } else { &r1[order] };
+        let name = format!("P{k}");
+        let coefficient = lhs.diff(&name);
+        let rest = lhs.subs(&name, &Sym::zero());
+        p[k] = (rhs - &rest) / &coefficient;
+    }
+    let b = basis(Family::Seed002Quartic);
+    let num = (0..6).fold(Sym::zero(), |acc, k| acc + &(w[k].clone() * &b[k] * &p[k]));
+    let den = (0..6).fold(Sym::zero(), |acc, k| acc + &(w[k].clone() * &b[k]));
+    num / &den
+}
+
+/// D19: segment `Q_i(t, α_i, α_{i+1})` of (6) uses `α_i` as its first
+/// parameter and `Q_{i−1}` as its second; every other segment has neither.
+fn d19() -> Verdict {
+    let q = seed002_segment();
+    let entries = [
+        Entry {
+            offset: 0,
+            weights: vec![("∂Q_i/∂α_i = ∂Q/∂α1".into(), q.diff("alpha1"))],
+        },
+        Entry {
+            offset: -1,
+            weights: vec![("∂Q_{i−1}/∂α_i = ∂Q/∂α2".into(), q.diff("alpha2"))],
+        },
+    ];
+    let mut v = compare("α_j", &entries, &[-1, 0]);
+    v.evidence.insert(
+        0,
+        Evidence::note(
+            "segment i of (6) is Q_i(t, α_i, α_{i+1}) = Q(t, α1, α2) of (4) on V_{i−1} … V_{i+2}: the rational curve (2) with P0…P5 solved from the end conditions (3) (reading D6b; the printed Tb_i of (5) is unreadable, see D12); so α_j is α1 of Q_j, α2 of Q_{j−1}, and in no other segment; the witness is a point where the derivative is nonzero",
+        ),
+    );
+    v
+}
+
+/// E24: two consecutive segments of (3), `R_i` on `P_{i−3} … P_i` and
+/// `R_{i+1}` on `P_{i−2} … P_{i+1}` (local symbols `P0 … P4`), joined at
+/// their common knot: derivatives in `t` (unit intervals), then in `u`
+/// (`d/du = (1/Δt_i) d/dt` on segment `i`).
+fn e24() -> Verdict {
+    let f = Family::Eh;
+    let params = crate::exact::params(f);
+    let p = symbols("P", 5);
+    let (dt0, dt1) = (Sym::var("dt_i"), Sym::var("dt_i1"));
+    let left = curve_piece(f, &params, &p[0..4], None);
+    let right = curve_piece(f, &params, &p[1..5], None);
+    let in_u = |piece: &Piece, dt: &Sym| {
+        let scale = |d: &[Sym]| -> Vec<Sym> {
+            d.iter()
+                .enumerate()
+                .map(|(r, x)| x.clone() / &dt.powi(r as u32))
+                .collect()
+        };
+        Piece {
+            start: scale(&piece.start),
+            end: scale(&piece.end),
+        }
+    };
+    let label = "R_i, R_{i+1} of (2) (local P0 … P4 = P_{i−3} … P_{i+1})";
+    let t = at_least(
+        &format!("{label}, derivatives in t"),
+        &continuity(&[left.clone(), right.clone()], false, None),
+        1,
+        None,
+    );
+    let u_pieces = [in_u(&left, &dt0), in_u(&right, &dt1)];
+    let u_knots = continuity(&u_pieces, false, None);
+    let jump = u_pieces[1].start[1].clone() - &u_pieces[0].end[1];
+    let expected = (Sym::one() / &dt1 - &(Sym::one() / &dt0)) * &p[3];
+    let values = identities(vec![
+        ("R_i(1) = P_{i−2}".into(), left.end[0].clone(), p[1].clone()),
+        (
+            "R_{i+1}(0) = P_{i−2}".into(),
+            right.start[0].clone(),
+            p[1].clone(),
+        ),
+    ]);
+    let u_jump = identities(vec![
+        (
+            "jump of R' in u = (1/Δt_{i+1} − 1/Δt_i)·P_i".into(),
+            jump.clone(),
+            expected,
+        ),
+        (
+            "the jump of R' in u at Δt_{i+1} = Δt_i".into(),
+            jump.subs("dt_i1", &dt0),
+            Sym::zero(),
+        ),
+    ]);
+    let mut u_evidence = at_least(&format!("{label}, derivatives in u"), &u_knots, 0, None);
+    u_evidence.evidence.extend(u_jump.evidence.into_vec());
+    u_evidence.status = Status::conjunction([u_evidence.status, u_jump.status]);
+    Verdict::all(
+        format!("{}; {IDENTITY}", crate::judge::continuity::METHOD),
+        vec![
+            ("C⁰: R_i(1) = P_{i−2} = R_{i+1}(0)".into(), values),
+            ("R' matches in t (C¹ in t)".into(), t),
+            (
+                "in u: C⁰, and C¹ only when Δt_i = Δt_{i+1} (P_i ≠ 0)".into(),
+                u_evidence,
+            ),
+        ],
+    )
+}
+
+/// The first derivatives in `u` of the thesis cubic at its ends, for the
+/// helpers of the join claims.
+pub(super) fn thesis_tangents(points: &[Sym], end: End) -> Sym {
+    let f = Family::ThesisCubic;
+    let params = crate::exact::params(f);
+    curve_endpoint_derivatives::<Sym, 2>(f, &params, points, None, end, Wrt::U, &Sym::one())[1]
+        .clone()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_seed002_segment_interpolates_its_middle_points() {
+        let q = seed002_segment();
+        let at = |s: i64, c: i64| q.subs("s", &Sym::int(s)).subs("c", &Sym::int(c));
+        assert_eq!(at(0, 1), Sym::var("V1"));
+        assert_eq!(at(1, 0), Sym::var("V2"));
+    }
+
+    /// The computed sets of segments (the "enters exactly" lines).
+    fn entered(v: &Verdict) -> Vec<String> {
+        v.evidence
+            .iter()
+            .filter(|e| e.text.contains("enters exactly"))
+            .map(|e| e.text.clone())
+            .collect()
+    }
+
+    #[test]
+    fn the_local_claims_compute_their_segments() {
+        assert_eq!(
+            entered(&d19()),
+            ["α_j enters exactly: j−1, j (printed: j−1, j)"]
+        );
+        let m = entered(&m20());
+        assert_eq!(m.len(), 2);
+        assert!(m.iter().all(|l| l.contains("exactly: j, j+1, j+2, j+3 (")));
+        assert_eq!(entered(&t48()), ["m_j enters exactly: j (printed: j)"]);
+        let e = e24();
+        assert_eq!(e.status, Status::Holds);
+        assert!(e.evidence.iter().any(|i| {
+            i.line()
+                .contains("derivatives in u: achieved for all parameter values: exactly C^0")
+        }));
+    }
+
+    #[test]
+    fn every_claim_of_this_file_decides() {
+        for c in CLAIMS {
+            let v = (c.check)();
+            assert_ne!(v.status, Status::NotCheckable, "{}: {:?}", c.id, v.evidence);
+        }
+    }
+}
