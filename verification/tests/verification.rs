@@ -7,3 +7,4 @@ mod seed000;
 mod seed002_004;
 mod spec_audit;
 mod thesis_interp;
+mod total_positivity;

@@ -140,7 +140,8 @@ pub fn factorise(
     }
     let mut numerators = Vec::new();
     for (fz, (own_zz, own_z, sign)) in zs.iter().zip(&split) {
-        let mut n = fz.numerator().scale(&Rational::from(*sign)) * &one_plus_z2().pow(zz_power - own_zz);
+        let mut n =
+            fz.numerator().scale(&Rational::from(*sign)) * &one_plus_z2().pow(zz_power - own_zz);
         for (g, e) in &common {
             let mine = own_z.iter().find(|(h, _)| h == g).map_or(0, |(_, k)| *k);
             n = n * &g.pow(e - mine);
@@ -239,7 +240,9 @@ impl Factorisation {
 
 /// The sets of `k` indices out of `n`, as bit masks, in lexicographic order.
 fn subsets(n: usize, k: usize) -> Vec<u32> {
-    (0u32..(1 << n)).filter(|m| m.count_ones() as usize == k).collect()
+    (0u32..(1 << n))
+        .filter(|m| m.count_ones() as usize == k)
+        .collect()
 }
 
 fn indices(mask: u32) -> Vec<usize> {
@@ -265,17 +268,19 @@ pub fn minors(m: &[Vec<UPoly>]) -> Vec<Minor> {
                 let value = if k == 1 {
                     m[last][ci[0]].clone()
                 } else {
-                    ci.iter().enumerate().fold(UPoly::new(vec![]), |acc, (t, &j)| {
-                        let Some(sub) = previous.get(&(rest, c & !(1 << j))) else {
-                            return acc;
-                        };
-                        let term = m[last][j].mul(sub);
-                        if (k - 1 + t) % 2 == 0 {
-                            acc.add(&term)
-                        } else {
-                            acc.sub(&term)
-                        }
-                    })
+                    ci.iter()
+                        .enumerate()
+                        .fold(UPoly::new(vec![]), |acc, (t, &j)| {
+                            let Some(sub) = previous.get(&(rest, c & !(1 << j))) else {
+                                return acc;
+                            };
+                            let term = m[last][j].mul(sub);
+                            if (k - 1 + t) % 2 == 0 {
+                                acc.add(&term)
+                            } else {
+                                acc.sub(&term)
+                            }
+                        })
                 };
                 if !value.is_zero() {
                     out.push(Minor {
@@ -314,7 +319,8 @@ fn grids(functions: usize) -> &'static [u32] {
 /// negative minor; the minor is re-evaluated as a determinant.
 pub fn negative_collocation_minor(fzs: &[Sym], extra: &[Rational]) -> Option<NegativeMinor> {
     let value = |f: &Sym, z: &Rational| -> Option<Rational> {
-        f.eval_rational(&|n: &str| (n == "z").then(|| z.clone())).ok()
+        f.eval_rational(&|n: &str| (n == "z").then(|| z.clone()))
+            .ok()
     };
     for &g in grids(fzs.len()) {
         let mut points: Vec<Rational> = (0..=g).map(|k| Rational::from((k, g))).collect();
@@ -340,7 +346,13 @@ pub fn negative_collocation_minor(fzs: &[Sym], extra: &[Rational]) -> Option<Neg
         let values: Vec<Vec<Rational>> = negative
             .rows
             .iter()
-            .map(|&i| negative.cols.iter().map(|&j| table[i][j].leading()).collect())
+            .map(|&i| {
+                negative
+                    .cols
+                    .iter()
+                    .map(|&j| table[i][j].leading())
+                    .collect()
+            })
             .collect();
         let minor = determinant(&values);
         if minor < 0 {

@@ -272,10 +272,18 @@ impl PieceEnd {
             (PieceEnd::Infinite, true) => "(−∞".into(),
             (PieceEnd::Infinite, false) => "∞)".into(),
             (PieceEnd::At { value, closed }, true) => {
-                format!("{}{}", if *closed { "[" } else { "(" }, value.describe(var, 6))
+                format!(
+                    "{}{}",
+                    if *closed { "[" } else { "(" },
+                    value.describe(var, 6)
+                )
             }
             (PieceEnd::At { value, closed }, false) => {
-                format!("{}{}", value.describe(var, 6), if *closed { "]" } else { ")" })
+                format!(
+                    "{}{}",
+                    value.describe(var, 6),
+                    if *closed { "]" } else { ")" }
+                )
             }
         }
     }
@@ -289,7 +297,13 @@ impl NonnegativeSet {
         }
         self.pieces
             .iter()
-            .map(|p| format!("{}, {}", p.lo.describe(var, true), p.hi.describe(var, false)))
+            .map(|p| {
+                format!(
+                    "{}, {}",
+                    p.lo.describe(var, true),
+                    p.hi.describe(var, false)
+                )
+            })
             .collect::<Vec<_>>()
             .join(" ∪ ")
     }

@@ -202,6 +202,9 @@ fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
         "independent" => Check::Independent {
             range: one_param_range(src, spec, &c.range)?,
         },
+        "total-positivity" => Check::TotalPositivity {
+            range: one_param_range(src, spec, &c.range)?,
+        },
         "monotone" => monotone(src, spec, c)?,
         "symmetry" => symmetry(src, spec, c)?,
         "endpoint-values" => Check::EndpointValues {
@@ -250,7 +253,7 @@ fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
             return src.invalid(
                 c.check.span(),
                 "claims.check",
-                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, monotone, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join or continuity"),
+                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join or continuity"),
             );
         }
     };

@@ -18,6 +18,7 @@ mod thesis;
 mod thesis_interp;
 mod thesis_joins;
 mod thesis_tables;
+mod total_positivity;
 
 /// All claims, in report order.
 pub fn all() -> Vec<Claim> {
@@ -35,6 +36,7 @@ pub fn all() -> Vec<Claim> {
         seed004::CLAIMS,
         seed004_joins::CLAIMS,
         properties::CLAIMS,
+        total_positivity::CLAIMS,
     ]
     .concat()
 }

@@ -18,4 +18,5 @@ pub mod nonnegative;
 pub mod region;
 pub mod span;
 pub mod symmetry;
+pub mod total_positivity;
 pub mod unity;
