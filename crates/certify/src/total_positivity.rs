@@ -381,11 +381,12 @@ pub fn determinant(a: &[Vec<Rational>]) -> Rational {
             det = -det;
         }
         det *= &m[col][col];
-        for r in col + 1..n {
-            let f = Rational::from(&m[r][col] / &m[col][col]);
-            for c in col..n {
-                let v = Rational::from(&f * &m[col][c]);
-                m[r][c] -= v;
+        let (top, below) = m.split_at_mut(col + 1);
+        let pivot_row = &top[col];
+        for row in below {
+            let f = Rational::from(&row[col] / &pivot_row[col]);
+            for (x, p) in row.iter_mut().zip(pivot_row).skip(col) {
+                *x -= Rational::from(&f * p);
             }
         }
     }
