@@ -110,10 +110,11 @@ fn every_claim_that_does_not_hold_shows_a_witness() {
 #[test]
 fn the_markdown_report_is_short_and_its_lines_readable() {
     let md = report::markdown(outcomes());
-    // about 1.2 KB a claim: 119 claims of the first list and the second
-    // list's 64 as they are decided (issue 23)
+    // about 1.5 KB a claim: 119 claims of the first list and the 64 of the
+    // second, whose evidence lists more parts (quoted figures against
+    // tables, a witness per property and basis)
     assert!(
-        md.len() < 1_200 * 183,
+        md.len() < 1_600 * 183,
         "the Markdown report has {} bytes",
         md.len()
     );

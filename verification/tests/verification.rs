@@ -9,3 +9,4 @@ mod seed002_004;
 mod shape_effect;
 mod spec_audit;
 mod thesis_interp;
+mod total_positivity;

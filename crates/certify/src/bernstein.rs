@@ -114,7 +114,7 @@ fn binomial(n: usize, k: usize) -> Rational {
 }
 
 /// One variable: `b_k = Σ_{i≤k} C(k,i)/C(n,i) · a_i`.
-fn power_to_bernstein(a: &[Rational]) -> Vec<Rational> {
+pub fn power_to_bernstein(a: &[Rational]) -> Vec<Rational> {
     let n = a.len() - 1;
     (0..=n)
         .map(|k| {

@@ -43,6 +43,8 @@ mod rounding;
 pub mod standard;
 pub mod sturm;
 pub mod taylor;
+pub mod total_positivity;
+pub mod tp_set;
 pub mod transcendental;
 
 pub use domain::{Bound, ParamBox, describe_z, in_z};

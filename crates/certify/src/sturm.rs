@@ -231,11 +231,25 @@ impl UPoly {
         out
     }
 
+    /// `self + other`.
+    pub fn add(&self, other: &UPoly) -> UPoly {
+        self.zip_with(other, |a, b| a + b)
+    }
+
     /// `self − other`.
-    fn sub(&self, other: &UPoly) -> UPoly {
+    pub fn sub(&self, other: &UPoly) -> UPoly {
+        self.zip_with(other, |a, b| a - b)
+    }
+
+    /// Coefficientwise `f(aₖ, bₖ)`, missing coefficients read as zero.
+    fn zip_with(&self, other: &UPoly, f: impl Fn(Rational, Rational) -> Rational) -> UPoly {
         let n = self.0.len().max(other.0.len());
         let get = |v: &[Rational], k: usize| v.get(k).cloned().unwrap_or_default();
-        UPoly::new((0..n).map(|k| get(&self.0, k) - get(&other.0, k)).collect())
+        UPoly::new(
+            (0..n)
+                .map(|k| f(get(&self.0, k), get(&other.0, k)))
+                .collect(),
+        )
     }
 
     /// The Sturm sequence `p, p', −rem(p, p'), …`.

@@ -138,6 +138,10 @@ pub enum Check {
         direction: Direction,
         range: Option<ParamRange>,
     },
+    /// The basis is normalized totally positive (hence variation
+    /// diminishing) for every parameter value of the range (the declared
+    /// one unless given).
+    TotalPositivity { range: Option<ParamRange> },
     /// The uniform B-spline assembled from the `n` functions (piece `k` is
     /// function `n − 1 − k`) is `Cᵏ` at its knots.
     Continuity { order: usize },

@@ -202,6 +202,9 @@ fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
         "independent" => Check::Independent {
             range: one_param_range(src, spec, &c.range)?,
         },
+        "total-positivity" => Check::TotalPositivity {
+            range: one_param_range(src, spec, &c.range)?,
+        },
         "monotone" => monotone(src, spec, c)?,
         "shape-effect" => shape_effect(src, spec, c)?,
         "symmetry" => symmetry(src, spec, c)?,
@@ -252,7 +255,7 @@ fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
             return src.invalid(
                 c.check.span(),
                 "claims.check",
-                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, continuity or local-control"),
+                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, continuity or local-control"),
             );
         }
     };

@@ -27,6 +27,7 @@ mod thesis_out_of_range;
 mod thesis_survey;
 mod thesis_tables;
 mod thesis_text;
+mod total_positivity;
 
 /// All claims, in report order.
 pub fn all() -> Vec<Claim> {
@@ -52,6 +53,7 @@ pub fn all() -> Vec<Claim> {
         thesis_lsq::CLAIMS,
         shape_effect::CLAIMS,
         local_control::CLAIMS,
+        total_positivity::CLAIMS,
     ]
     .concat()
 }

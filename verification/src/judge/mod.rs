@@ -21,4 +21,5 @@ pub mod region;
 pub mod shape_effect;
 pub mod span;
 pub mod symmetry;
+pub mod total_positivity;
 pub mod unity;

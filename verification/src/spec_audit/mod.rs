@@ -232,6 +232,9 @@ pub fn decide(spec: &Spec, claim: &SpecClaim) -> Verdict {
             v
         }
         Check::Independent { range } => judge::independence::independent(spec, range.as_ref()),
+        Check::TotalPositivity { range } => {
+            judge::total_positivity::normalized_totally_positive(spec, range.as_ref())
+        }
         Check::Monotone { items, range } => {
             judge::nonnegative::monotone_claim(spec, items, range.as_ref())
         }

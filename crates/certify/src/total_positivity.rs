@@ -1,0 +1,562 @@
+//! Total positivity of a basis by a totally positive factorisation, and its
+//! refutation by a collocation matrix with a negative minor.
+//!
+//! A basis `(b₀, …, b_{n−1})` on an interval is *totally positive* (TP) when
+//! every collocation matrix `K = (b_j(x_i))`, `x₀ < x₁ < ⋯ < x_m`, has all
+//! minors `≥ 0`; a normalized TP basis (also `Σ bⱼ = 1`) is variation
+//! diminishing and gives convexity preserving planar curves (Goodman;
+//! Carnicer & Peña).
+//!
+//! **Certificate.** With `z = tan(θ/2)` (or `z = t`), an increasing change of
+//! variable onto `[0, 1]`, every function becomes `bⱼ = σⱼNⱼ(z)/(D(z)·|qⱼ|)`:
+//! `D` the common denominator in `z` (powers of `1 + z²` and any factor
+//! proved of one strict sign on the domain × parameter set), `qⱼ` a
+//! `z`-free factor of one strict sign, `σⱼ = ±1`. Write the numerators in
+//! the Bernstein basis of degree `d`: `σⱼNⱼ = Σₖ C_{jk} B^d_k(z)`. The
+//! Bernstein basis is TP on `[0, 1]`, and by Cauchy–Binet every minor of a
+//! collocation matrix of `(σⱼNⱼ)` is a sum of products of minors of `C` and
+//! of Bernstein collocation minors; positive row and column factors (`1/D`,
+//! `1/|qⱼ|`) keep signs. So all minors of `C` `≥ 0` proves TP. Elevating the
+//! degree (`C ↦ C·E`, `E` TP) can only enlarge the set where it works.
+//! With one shape parameter `p`, every minor of `C` is a polynomial in `p`;
+//! the set where all are `≥ 0` is decided exactly in [`crate::tp_set`].
+//!
+//! **Refutation.** A collocation matrix at exact rational points with a
+//! negative minor (a `1×1` minor is a negative value).
+
+use rug::Rational;
+use std::collections::HashMap;
+use trig_symbolic::{Poly, Sym};
+
+use crate::bernstein::power_to_bernstein;
+use crate::domain::{ParamBox, in_z};
+use crate::nonneg::{Certificate, definite_sign};
+use crate::sturm::UPoly;
+use crate::tp_set::{NonnegativeSet, nonnegative_set};
+
+/// Degree elevations tried after the degree of the numerators.
+pub const MAX_ELEVATION: usize = 4;
+
+/// The numerators' Bernstein coefficient matrix `C` (rows: functions,
+/// columns: Bernstein index), each entry a polynomial in the parameter
+/// (a constant without one).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Factorisation {
+    /// The degree `d` of the Bernstein basis.
+    pub degree: usize,
+    /// `C_{jk}`, `n × (d + 1)`.
+    pub rows: Vec<Vec<UPoly>>,
+    /// The positive common factor `D` that was divided out, as text.
+    pub common: String,
+}
+
+/// One minor of a matrix: its row and column indices and its value.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Minor {
+    pub rows: Vec<usize>,
+    pub cols: Vec<usize>,
+    pub value: UPoly,
+}
+
+/// The positive common factor `1 + z²` of the Weierstrass substitution.
+fn one_plus_z2() -> Poly {
+    Poly::var("z") * &Poly::var("z") + &Poly::one()
+}
+
+/// How often `1 + z²` divides `f`, and the rest.
+fn strip_one_plus_z2(f: &Poly) -> (u32, Poly) {
+    let zz = one_plus_z2();
+    let (mut k, mut rest) = (0, f.clone());
+    while rest.degree_in("z") > 0 {
+        match rest.exact_div(&zz) {
+            Some(q) => {
+                rest = q;
+                k += 1;
+            }
+            None => break,
+        }
+    }
+    (k, rest)
+}
+
+/// The strict sign of a denominator factor `g(z, p)` on `[0, 1]` × the
+/// parameter set, or why it has none.
+fn factor_sign(g: &Poly, param: Option<(&str, &ParamBox)>) -> Result<i32, String> {
+    if let Some(k) = g.as_constant() {
+        return Ok(k.cmp0() as i32);
+    }
+    let params: Vec<(&str, ParamBox)> = param.map(|(n, b)| (n, b.clone())).into_iter().collect();
+    // in t: the engine maps t ↦ z itself
+    let in_t = Sym::from_poly(g.subs("z", &Poly::var("t")));
+    definite_sign(&in_t, false, &params)
+        .map_err(|why| format!("the denominator factor {g} has no fixed sign: {why}"))
+}
+
+/// The Bernstein coefficient matrix of degree `deg(numerators)` of the
+/// functions `fs` (in `s, c` or `t`, at most the parameter `param`).
+pub fn factorise(
+    fs: &[Sym],
+    trigonometric: bool,
+    param: Option<(&str, &ParamBox)>,
+) -> Result<Factorisation, String> {
+    let zs: Vec<Sym> = fs.iter().map(|f| in_z(f, trigonometric)).collect();
+    let name = param.map(|(n, _)| n);
+    for (j, fz) in zs.iter().enumerate() {
+        if let Some(other) = fz
+            .variables()
+            .into_iter()
+            .find(|v| v != "z" && Some(v.as_str()) != name)
+        {
+            return Err(format!(
+                "function {j} depends on `{other}` besides the variable and the parameter"
+            ));
+        }
+    }
+    // common denominator in z: max power of 1 + z² and of every z-factor
+    let mut zz_power = 0;
+    let mut common: Vec<(Poly, u32)> = Vec::new();
+    let mut split = Vec::new();
+    for fz in &zs {
+        let (mut own_zz, mut own_z, mut sign) = (0, Vec::new(), 1);
+        for (factor, e) in fz.denominator() {
+            let (k, rest) = strip_one_plus_z2(factor);
+            own_zz += k * e;
+            let s = factor_sign(&rest, param)?;
+            if e % 2 == 1 {
+                sign *= s;
+            }
+            if rest.degree_in("z") > 0 {
+                own_z.push((rest, *e));
+            }
+        }
+        zz_power = zz_power.max(own_zz);
+        for (g, e) in &own_z {
+            match common.iter_mut().find(|(h, _)| h == g) {
+                Some(entry) => entry.1 = entry.1.max(*e),
+                None => common.push((g.clone(), *e)),
+            }
+        }
+        split.push((own_zz, own_z, sign));
+    }
+    let mut numerators = Vec::new();
+    for (fz, (own_zz, own_z, sign)) in zs.iter().zip(&split) {
+        let mut n =
+            fz.numerator().scale(&Rational::from(*sign)) * &one_plus_z2().pow(zz_power - own_zz);
+        for (g, e) in &common {
+            let mine = own_z.iter().find(|(h, _)| h == g).map_or(0, |(_, k)| *k);
+            n = n * &g.pow(e - mine);
+        }
+        numerators.push(n);
+    }
+    let degree = numerators
+        .iter()
+        .map(|n| n.degree_in("z") as usize)
+        .max()
+        .unwrap_or(0);
+    let rows = numerators
+        .iter()
+        .map(|n| bernstein_row(n, degree, name))
+        .collect::<Result<_, _>>()?;
+    let mut text: Vec<String> = Vec::new();
+    if zz_power > 0 {
+        text.push(format!("(1 + z²)^{zz_power}"));
+    }
+    text.extend(common.iter().map(|(g, e)| format!("|{g}|^{e}")));
+    Ok(Factorisation {
+        degree,
+        rows,
+        common: if text.is_empty() {
+            "1".into()
+        } else {
+            text.join(" · ")
+        },
+    })
+}
+
+/// Bernstein coefficients of degree `d` of `n(z, p)`, each a polynomial in
+/// `p`: the change of basis is linear, so it is applied to the coefficient
+/// sequence of every power of `p`.
+fn bernstein_row(n: &Poly, d: usize, param: Option<&str>) -> Result<Vec<UPoly>, String> {
+    let by_z = n.coefficients_in("z");
+    let in_p = |c: &Poly| -> Result<UPoly, String> {
+        match param {
+            Some(p) => UPoly::from_poly(c, p),
+            None => c.as_constant().map(|q| UPoly::new(vec![q])),
+        }
+        .ok_or_else(|| format!("a coefficient {c} depends on more than the parameter"))
+    };
+    let powers: Vec<UPoly> = by_z.iter().map(in_p).collect::<Result<_, _>>()?;
+    let p_degree = powers.iter().map(|u| u.coeffs().len()).max().unwrap_or(0);
+    let mut out = vec![UPoly::new(vec![]); d + 1];
+    for e in 0..p_degree {
+        let seq: Vec<Rational> = (0..=d)
+            .map(|k| {
+                powers
+                    .get(k)
+                    .and_then(|u| u.coeffs().get(e).cloned())
+                    .unwrap_or_default()
+            })
+            .collect();
+        for (k, b) in power_to_bernstein(&seq).into_iter().enumerate() {
+            let mut mono = vec![Rational::new(); e + 1];
+            mono[e] = b;
+            out[k] = out[k].add(&UPoly::new(mono));
+        }
+    }
+    Ok(out)
+}
+
+impl Factorisation {
+    /// One degree elevation: `c'_k = k/(d+1)·c_{k−1} + (1 − k/(d+1))·c_k`.
+    pub fn elevate(&self) -> Factorisation {
+        let d1 = self.degree + 1;
+        let scale = |u: &UPoly, q: Rational| u.mul(&UPoly::new(vec![q]));
+        let rows = self
+            .rows
+            .iter()
+            .map(|row| {
+                (0..=d1)
+                    .map(|k| {
+                        let left = match k {
+                            0 => UPoly::new(vec![]),
+                            _ => scale(&row[k - 1], Rational::from((k as u32, d1 as u32))),
+                        };
+                        let right = match row.get(k) {
+                            Some(c) => scale(c, Rational::from(((d1 - k) as u32, d1 as u32))),
+                            None => UPoly::new(vec![]),
+                        };
+                        left.add(&right)
+                    })
+                    .collect()
+            })
+            .collect();
+        Factorisation {
+            degree: d1,
+            rows,
+            common: self.common.clone(),
+        }
+    }
+}
+
+/// The sets of `k` indices out of `n`, as bit masks, in lexicographic order.
+fn subsets(n: usize, k: usize) -> Vec<u32> {
+    (0u32..(1 << n))
+        .filter(|m| m.count_ones() as usize == k)
+        .collect()
+}
+
+fn indices(mask: u32) -> Vec<usize> {
+    (0..32).filter(|i| mask & (1 << i) != 0).collect()
+}
+
+/// Every nonzero minor of `m` (any order), by Laplace expansion along the
+/// last row of each minor from the minors one order lower.
+pub fn minors(m: &[Vec<UPoly>]) -> Vec<Minor> {
+    let rows = m.len();
+    let cols = m.first().map_or(0, Vec::len);
+    assert!(rows < 32 && cols < 32, "at most 31 rows and columns");
+    let mut out = Vec::new();
+    let mut previous: HashMap<(u32, u32), UPoly> = HashMap::new();
+    for k in 1..=rows.min(cols) {
+        let mut level = HashMap::new();
+        for r in subsets(rows, k) {
+            let ri = indices(r);
+            let last = ri[k - 1];
+            let rest = r & !(1 << last);
+            for c in subsets(cols, k) {
+                let ci = indices(c);
+                let value = if k == 1 {
+                    m[last][ci[0]].clone()
+                } else {
+                    ci.iter()
+                        .enumerate()
+                        .fold(UPoly::new(vec![]), |acc, (t, &j)| {
+                            let Some(sub) = previous.get(&(rest, c & !(1 << j))) else {
+                                return acc;
+                            };
+                            let term = m[last][j].mul(sub);
+                            if (k - 1 + t) % 2 == 0 {
+                                acc.add(&term)
+                            } else {
+                                acc.sub(&term)
+                            }
+                        })
+                };
+                if !value.is_zero() {
+                    out.push(Minor {
+                        rows: ri.clone(),
+                        cols: ci,
+                        value: value.clone(),
+                    });
+                    level.insert((r, c), value);
+                }
+            }
+        }
+        previous = level;
+    }
+    out
+}
+
+/// A refutation: points `z₀ < ⋯` (or `t`), the functions' indices, and the
+/// negative minor of the collocation matrix there.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NegativeMinor {
+    pub points: Vec<Rational>,
+    pub functions: Vec<usize>,
+    /// The collocation submatrix, rows the points, columns the functions.
+    pub values: Vec<Vec<Rational>>,
+    pub minor: Rational,
+}
+
+/// Grids `{k/g}` tried for a negative collocation minor (fewer points for
+/// more functions: the number of minors grows as `C(points + n, n)`).
+fn grids(functions: usize) -> &'static [u32] {
+    if functions <= 4 { &[4, 8, 16] } else { &[4, 8] }
+}
+
+/// Searches a collocation matrix of `fzs` (functions of `z` only, exact)
+/// at rational grid points of `[0, 1]` (and at `extra` points) for a
+/// negative minor; the minor is re-evaluated as a determinant.
+pub fn negative_collocation_minor(fzs: &[Sym], extra: &[Rational]) -> Option<NegativeMinor> {
+    let value = |f: &Sym, z: &Rational| -> Option<Rational> {
+        f.eval_rational(&|n: &str| (n == "z").then(|| z.clone()))
+            .ok()
+    };
+    for &g in grids(fzs.len()) {
+        let mut points: Vec<Rational> = (0..=g).map(|k| Rational::from((k, g))).collect();
+        points.extend(extra.iter().cloned());
+        points.sort();
+        points.dedup();
+        let table: Option<Vec<Vec<UPoly>>> = points
+            .iter()
+            .map(|z| {
+                fzs.iter()
+                    .map(|f| value(f, z).map(|v| UPoly::new(vec![v])))
+                    .collect()
+            })
+            .collect();
+        let table = table?;
+        let Some(negative) = minors(&table)
+            .into_iter()
+            .filter(|m| m.value.leading() < 0)
+            .min_by_key(|m| m.rows.len())
+        else {
+            continue;
+        };
+        let values: Vec<Vec<Rational>> = negative
+            .rows
+            .iter()
+            .map(|&i| {
+                negative
+                    .cols
+                    .iter()
+                    .map(|&j| table[i][j].leading())
+                    .collect()
+            })
+            .collect();
+        let minor = determinant(&values);
+        if minor < 0 {
+            return Some(NegativeMinor {
+                points: negative.rows.iter().map(|&i| points[i].clone()).collect(),
+                functions: negative.cols,
+                values,
+                minor,
+            });
+        }
+    }
+    None
+}
+
+/// The determinant of a square rational matrix (exact elimination).
+pub fn determinant(a: &[Vec<Rational>]) -> Rational {
+    let mut m = a.to_vec();
+    let n = m.len();
+    let mut det = Rational::from(1);
+    for col in 0..n {
+        let Some(pivot) = (col..n).find(|&r| m[r][col] != 0) else {
+            return Rational::new();
+        };
+        if pivot != col {
+            m.swap(pivot, col);
+            det = -det;
+        }
+        det *= &m[col][col];
+        let (top, below) = m.split_at_mut(col + 1);
+        let pivot_row = &top[col];
+        for row in below {
+            let f = Rational::from(&row[col] / &pivot_row[col]);
+            for (x, p) in row.iter_mut().zip(pivot_row).skip(col) {
+                *x -= Rational::from(&f * p);
+            }
+        }
+    }
+    det
+}
+
+/// The certificate: the coefficient matrix at the degree where it went
+/// furthest, its nonzero minors, and the parameter set where all are `≥ 0`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TpCertificate {
+    /// The degree of the numerators (before elevation).
+    pub first_degree: usize,
+    pub factorisation: Factorisation,
+    /// The number of nonzero minors checked at the final degree.
+    pub minors: usize,
+    /// Inside the given parameter set (the whole line without a parameter).
+    pub set: NonnegativeSet,
+}
+
+/// The certificate of [`factorise`] with up to [`MAX_ELEVATION`] degree
+/// elevations, stopping as soon as all minors are `≥ 0` on the whole set.
+pub fn certify(
+    fs: &[Sym],
+    trigonometric: bool,
+    param: Option<(&str, &ParamBox)>,
+) -> Result<TpCertificate, String> {
+    let whole = ParamBox {
+        lo: crate::domain::Bound::Infinite,
+        hi: crate::domain::Bound::Infinite,
+    };
+    let bx = param.map_or(&whole, |(_, b)| b);
+    let mut f = factorise(fs, trigonometric, param)?;
+    let first_degree = f.degree;
+    loop {
+        let ms = minors(&f.rows);
+        let values: Vec<UPoly> = ms.iter().map(|m| m.value.clone()).collect();
+        let set = nonnegative_set(&values, bx);
+        if set.covers || f.degree >= first_degree + MAX_ELEVATION {
+            return Ok(TpCertificate {
+                first_degree,
+                factorisation: f,
+                minors: ms.len(),
+                set,
+            });
+        }
+        f = f.elevate();
+    }
+}
+
+/// A negative collocation minor of `fs` at the parameter value `p` (none
+/// without a parameter): first a negative value (a `1×1` minor) found by
+/// the nonnegativity certifier, then grids of rational points.
+pub fn refute(
+    fs: &[Sym],
+    trigonometric: bool,
+    param: Option<(&str, &Rational)>,
+) -> Option<NegativeMinor> {
+    let fixed: Vec<Sym> = fs
+        .iter()
+        .map(|f| match param {
+            Some((name, p)) => f.subs(name, &Sym::rational(p.clone())),
+            None => f.clone(),
+        })
+        .collect();
+    let mut extra = Vec::new();
+    for f in &fixed {
+        if let Certificate::Counterexample { z, .. } =
+            crate::nonneg::certify(f, trigonometric, None, &ParamBox::point(Rational::new()))
+        {
+            extra.push(z);
+        }
+    }
+    let fzs: Vec<Sym> = fixed.iter().map(|f| in_z(f, trigonometric)).collect();
+    negative_collocation_minor(&fzs, &extra)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::testing::q;
+
+    fn v(n: &str) -> Sym {
+        Sym::var(n)
+    }
+
+    /// Han (2002) quadratic: (1 − s)(1 − λs), (1 + λ)(s + c − 1), (1 − c)(1 − λc).
+    fn han() -> Vec<Sym> {
+        let (s, c, l, one) = (v("s"), v("c"), v("lambda"), Sym::one());
+        vec![
+            (one.clone() - &s) * &(one.clone() - &(l.clone() * &s)),
+            (one.clone() + &l) * &(s.clone() + &c - &one),
+            (one.clone() - &c) * &(one - &(l * &c)),
+        ]
+    }
+
+    /// The squares of Han's end functions, `b1 = 1 − b0 − b2`.
+    fn squares_han() -> Vec<Sym> {
+        let h = han();
+        let (b0, b2) = (h[0].clone() * &h[0], h[2].clone() * &h[2]);
+        vec![b0.clone(), Sym::one() - &b0 - &b2, b2]
+    }
+
+    fn tp_set(fs: &[Sym], trig: bool, bx: &ParamBox) -> TpCertificate {
+        certify(fs, trig, Some(("lambda", bx))).unwrap()
+    }
+
+    #[test]
+    fn han_quadratic_is_certified_exactly_on_its_range() {
+        let cert = tp_set(&han(), true, &ParamBox::closed(q(-3, 1), q(3, 1)));
+        assert_eq!(cert.first_degree, 4);
+        assert_eq!(cert.set.describe("λ"), "[-1, 1]");
+        let inside = tp_set(&han(), true, &ParamBox::closed(q(-1, 1), q(1, 1)));
+        assert!(inside.set.covers);
+    }
+
+    #[test]
+    fn squares_han_is_certified_only_on_minus_one_to_one() {
+        let cert = tp_set(&squares_han(), true, &ParamBox::closed(q(-1, 1), q(5, 1)));
+        assert!(!cert.set.covers);
+        assert_eq!(cert.first_degree, 8);
+        assert_eq!(cert.set.describe("λ"), "[-1, 1]");
+        // nonnegative at 5/4, yet a collocation minor is negative
+        let neg = refute(&squares_han(), true, Some(("lambda", &q(5, 4)))).unwrap();
+        assert!(neg.minor < 0);
+        assert_eq!(determinant(&neg.values), neg.minor);
+        assert!(neg.points.windows(2).all(|w| w[0] < w[1]));
+        // and none inside the certified set
+        assert!(refute(&squares_han(), true, Some(("lambda", &q(1, 2)))).is_none());
+    }
+
+    #[test]
+    fn degree_elevation_closes_the_gap_of_the_irrational_end_basis() {
+        // k = (λ² − 4λ)/4, u = t(1 − t):
+        // (1 − t)²(1 − k t²), 2u(1 + k u), t²(1 − k(1 − t)²)
+        let (t, l, one) = (v("t"), v("lambda"), Sym::one());
+        let k = (l.clone() * &l - &(Sym::int(4) * &l)) / &Sym::int(4);
+        let u = t.clone() * &(one.clone() - &t);
+        let fs = vec![
+            (one.clone() - &t) * &(one.clone() - &t) * &(one.clone() - &(k.clone() * &t * &t)),
+            Sym::int(2) * &u * &(one.clone() + &(k.clone() * &u)),
+            t.clone() * &t * &(one.clone() - &(k * &(one.clone() - &t) * &(one - &t))),
+        ];
+        let bx = ParamBox::closed(q(-4, 5), q(24, 5));
+        let at_four = minors(&factorise(&fs, false, Some(("lambda", &bx))).unwrap().rows);
+        let values: Vec<UPoly> = at_four.iter().map(|m| m.value.clone()).collect();
+        let set4 = nonnegative_set(&values, &bx);
+        assert_eq!(set4.pieces.len(), 2, "{}", set4.describe("λ"));
+        let cert = tp_set(&fs, false, &bx);
+        assert_eq!((cert.first_degree, cert.factorisation.degree), (4, 5));
+        assert!(cert.set.covers);
+    }
+
+    #[test]
+    fn minors_agree_with_determinants() {
+        let m: Vec<Vec<Rational>> = vec![
+            vec![q(1, 1), q(2, 1), q(0, 1)],
+            vec![q(3, 1), q(1, 2), q(5, 1)],
+            vec![q(-1, 1), q(4, 1), q(2, 3)],
+        ];
+        let as_poly: Vec<Vec<UPoly>> = m
+            .iter()
+            .map(|r| r.iter().map(|x| UPoly::new(vec![x.clone()])).collect())
+            .collect();
+        for minor in minors(&as_poly) {
+            let sub: Vec<Vec<Rational>> = minor
+                .rows
+                .iter()
+                .map(|&i| minor.cols.iter().map(|&j| m[i][j].clone()).collect())
+                .collect();
+            assert_eq!(minor.value.leading(), determinant(&sub));
+        }
+    }
+}

@@ -1,0 +1,264 @@
+//! Claims of total positivity, variation diminishing and convexity
+//! preservation (second list of `shared/claims.md`), decided by the
+//! total-positivity judge ([`crate::judge::total_positivity`]) and, for
+//! the Bézier-like properties, by the endpoint, convex-hull and unity
+//! judges.
+
+use rug::Rational;
+use trig_certify::ParamBox;
+use trig_certify::nonneg::{Certificate, certify as certify_nonnegative};
+use trig_certify::total_positivity::certify as certify_tp;
+use trig_core::{Family, ParamRange};
+use trig_symbolic::Sym;
+
+use crate::claim::{Claim, Seed};
+use crate::exact::{IDENTITY, identities, symbols};
+use crate::judge::certificate::CERTIFIED;
+use crate::judge::total_positivity::{CONSEQUENCES, normalized_totally_positive};
+use crate::judge::{endpoint, nonnegative, unity};
+use crate::status::Status;
+use crate::verdict::Verdict;
+
+/// In report order (after the other second-list claims).
+pub const CLAIMS: &[Claim] = &[
+    Claim {
+        id: "T42",
+        seed: Seed::S001,
+        source: "1.2, 1.5",
+        statement: "each of the four bases (3.7) m ∈ (−2, 1], (6.1) η ∈ (1/2, 2], (6.2) λ ∈ [−2, 1], (6.3) α ∈ (0, 2), in its printed range, gives Bézier-like curves: endpoint interpolation, convex hull, variation diminishing, affine invariance",
+        check: t42,
+    },
+    Claim {
+        id: "T70",
+        seed: Seed::S001,
+        source: "2.2.1–2.2.2",
+        statement: "Bernstein polynomials B_{i,n} = C(n, i)tⁱ(1 − t)^{n−i} (2.2): non-negativity, partition of unity, symmetry B_{n−i,n}(t) = B_{i,n}(1 − t), recursion B_{i,n} = (1 − t)B_{i,n−1} + tB_{i−1,n−1}; Bézier curves (2.1): B(0) = P0, B(1) = Pn, B'(0) = n(P1 − P0), B'(1) = n(Pn − P_{n−1}), convex hull, variation diminishing, affine invariance (decided for every degree n = 1, …, 6)",
+        check: t70,
+    },
+    Claim {
+        id: "D14",
+        seed: Seed::S002,
+        source: "Theorem 2 (5)",
+        statement: "b0 … b5 form a normalized totally positive basis, so the curves (2) (weights w_i > 0) have the variation diminishing property",
+        check: d14,
+    },
+    Claim {
+        id: "D16",
+        seed: Seed::S002,
+        source: "Theorem 2 (6)",
+        statement: "convexity preserving: a planar convex control polygon gives a convex curve (\"the variation diminishing property means the convexity preserving property holds\")",
+        check: d16,
+    },
+    Claim {
+        id: "S4",
+        seed: Seed::S003,
+        source: "Results (b)",
+        statement: "a piece r_i(t) lies in the convex hull of p_{i+j}, and \"is convex if its control polygon is convex\", both inferred \"from the nonnegativity and mixing\"",
+        check: s4,
+    },
+];
+
+/// The four bases of T42 with their printed ranges.
+const T42_BASES: [(Family, &str, &str); 4] = [
+    (Family::ThesisCubic, "(3.7)", "(-2, 1]"),
+    (Family::MajeedQayyum, "(6.1)", "(1/2, 2]"),
+    (Family::Han, "(6.2)", "[-2, 1]"),
+    (Family::Usman, "(6.3)", "(0, 2)"),
+];
+
+/// Each basis on its printed range, each property by its judge.
+fn t42() -> Verdict {
+    let parts = T42_BASES
+        .iter()
+        .map(|(family, eq, printed)| {
+            let range = ParamRange::parse(printed).expect("a valid range");
+            let symbol = &family.info().params[0].symbol;
+            let v = Verdict::all(
+                CERTIFIED,
+                vec![
+                    (
+                        "endpoint interpolation".into(),
+                        endpoint::interpolation(family),
+                    ),
+                    (
+                        "convex hull".into(),
+                        nonnegative::convex_hull(family, Some(&range)),
+                    ),
+                    (
+                        "variation diminishing".into(),
+                        normalized_totally_positive(family, Some(&range)),
+                    ),
+                    ("affine invariance (Σ b_i = 1)".into(), unity::unity(family)),
+                ],
+            );
+            (format!("{eq} on {symbol} ∈ {range}"), v)
+        })
+        .collect();
+    let mut v = Verdict::all(CERTIFIED, parts);
+    v.evidence.insert(
+        0,
+        "affine invariance: A(Σ b_i P_i) + q = Σ b_i (A P_i + q) for every affine map exactly when Σ b_i = 1",
+    );
+    v
+}
+
+/// The rational basis `R_i = w_i b_i / Σ w_j b_j`, `w_i > 0`, decided on
+/// the `b_i`.
+fn d14() -> Verdict {
+    let mut v = normalized_totally_positive(&Family::Seed002Quartic, None);
+    v.evidence.insert(
+        0,
+        "R_i = w_i b_i / Σ w_j b_j with every w_i > 0: a collocation matrix of (R_i) is diag(1/Σ_j w_j b_j(x_k)) · (b_i(x_k)) · diag(w_i), so each of its minors is a positive multiple of the same minor of (b_i); (R_i) is totally positive exactly when (b_i) is, and Σ R_i = 1 always — decided on the b_i, for every choice of positive weights",
+    );
+    v
+}
+
+/// Convexity preservation as the consequence of D14.
+fn d16() -> Verdict {
+    let mut v = d14();
+    v.evidence.insert(
+        0,
+        "follows from D14 (decided below): the printed reason is right — a normalized totally positive basis is variation diminishing, and a planar curve Σ R_i P_i that no line crosses more often than its convex control polygon (at most twice) is convex",
+    );
+    v
+}
+
+/// No formula, no decision; the inference as printed is also incomplete.
+fn s4() -> Verdict {
+    Verdict::not_checkable(
+        "the α-B-spline basis functions of seed 003 (Methodology, after \"the following\") are missing from our copy (catalog entry `seed003` has no formulas), so neither property can be decided. Note on the printed inference: nonnegativity and mixing (Σ = 1) give the convex hull, but not convexity preservation — that needs variation diminishing (e.g. a totally positive basis); a nonnegative partition of unity need not be totally positive (squares-han at λ = 5/4, verification/tests/total_positivity.rs)",
+    )
+}
+
+/// Degrees of the Bernstein checks of T70.
+const T70_DEGREES: std::ops::RangeInclusive<usize> = 1..=6;
+
+/// `B_{i,n}(t) = C(n, i) tⁱ (1 − t)^{n−i}` (zero outside `0 ≤ i ≤ n`).
+fn bernstein(i: i64, n: i64) -> Sym {
+    if i < 0 || i > n {
+        return Sym::zero();
+    }
+    let t = Sym::var("t");
+    let one_minus = Sym::one() - &t;
+    let binomial = rug::Integer::binomial_u(n as u32, i as u32);
+    let mut b = Sym::rational(Rational::from(rug::Integer::from(binomial)));
+    for _ in 0..i {
+        b = b * &t;
+    }
+    for _ in 0..n - i {
+        b = b * &one_minus;
+    }
+    b
+}
+
+/// The printed Bernstein facts, exactly, for each degree of
+/// [`T70_DEGREES`]; nonnegativity certified, total positivity by the
+/// factorisation engine (the Bernstein basis is its own certificate).
+fn t70() -> Verdict {
+    let parts = T70_DEGREES
+        .map(|n| (format!("n = {n}"), t70_degree(n as i64)))
+        .collect();
+    let mut v = Verdict::all(IDENTITY, parts);
+    v.evidence.insert(
+        0,
+        "the text states the facts for every n; they are decided here for n = 1, …, 6 (textbook facts for all n, e.g. Farin, Curves and Surfaces for CAGD). Convex hull from nonnegativity and unity; affine invariance from unity; variation diminishing from total positivity and unity",
+    );
+    v
+}
+
+/// The facts of T70 at one degree.
+fn t70_degree(n: i64) -> Verdict {
+    let b: Vec<Sym> = (0..=n).map(|i| bernstein(i, n)).collect();
+    let t = Sym::var("t");
+    let reflect = |f: &Sym| f.subs("t", &(Sym::one() - &t));
+    let at = |f: &Sym, x: i64| f.subs("t", &Sym::int(x));
+    let mut parts = vec![(
+        "Σ B_{i,n} = 1".to_string(),
+        crate::exact::sum(&b),
+        Sym::one(),
+    )];
+    for i in 0..=n {
+        let u = i as usize;
+        parts.push((
+            format!("B_{{{},{n}}}(t) = B_{{{i},{n}}}(1 − t)", n - i),
+            b[(n - i) as usize].clone(),
+            reflect(&b[u]),
+        ));
+        parts.push((
+            format!(
+                "B_{{{i},{n}}} = (1 − t)B_{{{i},{}}} + tB_{{{},{}}}",
+                n - 1,
+                i - 1,
+                n - 1
+            ),
+            b[u].clone(),
+            (Sym::one() - &t) * &bernstein(i, n - 1) + &(t.clone() * &bernstein(i - 1, n - 1)),
+        ));
+    }
+    let p = symbols("P", n as usize + 1);
+    let curve = crate::exact::combination(&b, &p);
+    let (first, last) = (p[0].clone(), p[n as usize].clone());
+    let slope = curve.d_t();
+    parts.push(("B(0) = P0".into(), at(&curve, 0), first.clone()));
+    parts.push((format!("B(1) = P{n}"), at(&curve, 1), last.clone()));
+    parts.push((
+        "B'(0) = n(P1 − P0)".into(),
+        at(&slope, 0),
+        Sym::int(n) * &(p[1].clone() - &first),
+    ));
+    parts.push((
+        format!("B'(1) = n(P{n} − P{})", n - 1),
+        at(&slope, 1),
+        Sym::int(n) * &(last - &p[n as usize - 1]),
+    ));
+    let exact = identities(parts);
+    let signs: Vec<Status> = b
+        .iter()
+        .map(
+            |f| match certify_nonnegative(f, false, None, &ParamBox::point(Rational::new())) {
+                Certificate::NonNegative { .. } => Status::Holds,
+                Certificate::Counterexample { .. } => Status::Fails,
+                _ => Status::NotCheckable,
+            },
+        )
+        .collect();
+    let tp = certify_tp(&b, false, None);
+    let tp_status = match &tp {
+        Ok(c) if c.set.covers => Status::Holds,
+        Ok(_) => Status::NotCheckable,
+        Err(_) => Status::NotCheckable,
+    };
+    let tp_text = match &tp {
+        Ok(c) => format!(
+            "total positivity: coefficient matrix {} × {} in the Bernstein basis of degree {}, {} nonzero minors, {}; {CONSEQUENCES}",
+            c.factorisation.rows.len(),
+            c.factorisation.degree + 1,
+            c.factorisation.degree,
+            c.minors,
+            if c.set.covers {
+                "all ≥ 0"
+            } else {
+                "not all ≥ 0"
+            }
+        ),
+        Err(why) => format!("total positivity: {why}"),
+    };
+    Verdict::all(
+        IDENTITY,
+        vec![
+            ("identities".into(), exact),
+            (
+                "nonnegativity on [0, 1]".into(),
+                Verdict::new(
+                    Status::conjunction(signs),
+                    CERTIFIED,
+                    ["every B_{i,n} certified ≥ 0 by exact Bernstein subdivision"],
+                ),
+            ),
+            (
+                "variation diminishing".into(),
+                Verdict::new(tp_status, IDENTITY, [tp_text]),
+            ),
+        ],
+    )
+}

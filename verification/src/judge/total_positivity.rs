@@ -1,0 +1,230 @@
+//! The total-positivity judge: "the basis is normalized totally positive,
+//! hence variation diminishing (and convexity preserving for planar
+//! curves)" for any basis, decided by the totally positive factorisation
+//! of [`trig_certify::total_positivity`] and refuted by a collocation
+//! matrix with a negative minor.
+//!
+//! A basis `(b₀, …, b_{n−1})` is totally positive (TP) when every
+//! collocation matrix `(b_j(x_i))`, `x₀ < ⋯ < x_m`, has all minors `≥ 0`;
+//! normalized TP (also `Σ bⱼ = 1`) makes every curve `Σ bⱼPⱼ` variation
+//! diminishing — it crosses a line (plane) no more often than its control
+//! polygon — and so a planar curve with a convex control polygon is convex
+//! (Goodman, "Shape preserving representations", 1989; Carnicer & Peña,
+//! "Totally positive bases for shape preserving curve design", 1993).
+
+use rug::Rational;
+use trig_certify::total_positivity::{NegativeMinor, TpCertificate, certify, refute};
+use trig_certify::{Bound, ParamBox};
+use trig_core::ParamRange;
+use trig_symbolic::Sym;
+
+use super::nonnegative::pieces;
+use super::unity::unity;
+use crate::evidence::{Evidence, Kind};
+use crate::exact::ExactBasis;
+use crate::status::Status;
+use crate::verdict::Verdict;
+use crate::witness::witness;
+
+/// How total positivity is decided, as the report states it.
+pub const TOTALLY_POSITIVE: &str = "certified: totally positive factorisation — z = tan(θ/2) (or t) maps the domain increasingly onto [0, 1]; the numerators over their positive common denominator are written in the Bernstein basis of their degree (elevated up to 4 times); all minors of that coefficient matrix ≥ 0, exactly, prove total positivity (Cauchy–Binet with the totally positive Bernstein basis); with a parameter every minor is a polynomial in it and the set where all are ≥ 0 is decided exactly (Sturm sequences, algebraic ends); refutation: a collocation matrix at exact rational points with a negative minor";
+
+/// What normalized total positivity gives, as the evidence states it.
+pub const CONSEQUENCES: &str = "normalized TP (TP and Σ b_i = 1) ⇒ variation diminishing: a curve Σ b_i P_i crosses any line (plane) no more often than its control polygon; hence a planar curve with a convex control polygon is convex (convexity preservation follows from variation diminishing)";
+
+/// Decides "normalized totally positive on the range" (the claim's range,
+/// else the declared one): partition of unity and total positivity.
+pub fn normalized_totally_positive<B: ExactBasis>(
+    basis: &B,
+    range: Option<&ParamRange>,
+) -> Verdict {
+    let mut v = Verdict::all(
+        TOTALLY_POSITIVE,
+        vec![
+            ("partition of unity".into(), unity(basis)),
+            ("total positivity".into(), totally_positive(basis, range)),
+        ],
+    );
+    v.evidence.insert(0, CONSEQUENCES);
+    v
+}
+
+/// Decides "every collocation matrix has all minors ≥ 0" for every
+/// parameter in the range.
+pub fn totally_positive<B: ExactBasis>(basis: &B, range: Option<&ParamRange>) -> Verdict {
+    let (trig, fs, _) = match pieces(basis) {
+        Ok(p) => p,
+        Err(why) => {
+            return Verdict::not_checkable(format!(
+                "the factorisation needs functions polynomial in sin, cos or the variable on one standard domain ({why}); the Wronskian criterion (Karlin) is not implemented"
+            ));
+        }
+    };
+    if fs.len() != basis.function_names().len() {
+        return Verdict::not_checkable(
+            "the standard domain splits into several pieces: the factorisation needs one increasing change of variable over the whole domain",
+        );
+    }
+    let params = basis.parameters();
+    let (param, published) = match params.as_slice() {
+        [] => (None, None),
+        [p] => (Some(p), Some(range.unwrap_or(&p.range))),
+        _ => {
+            return Verdict::not_checkable(
+                "total positivity is certified for bases with at most one parameter",
+            );
+        }
+    };
+    let bx = published.map(ParamBox::from_range);
+    let named = param.map(|p| p.name.as_str()).zip(bx.as_ref());
+    let cert = match certify(&fs, trig, named) {
+        Ok(c) => c,
+        Err(why) => return Verdict::not_checkable(format!("no factorisation: {why}")),
+    };
+    let symbol = param.map_or("p", |p| p.symbol.as_str());
+    let mut evidence = vec![certificate_line(&cert, symbol, published)];
+    if let (Some(p), Some(b)) = (param, &bx) {
+        let whole = ParamBox {
+            lo: Bound::Infinite,
+            hi: Bound::Infinite,
+        };
+        if let Ok(c) = certify(&fs, trig, Some((p.name.as_str(), &whole))) {
+            evidence.push(Evidence::note(format!(
+                "on the whole line the certificate (degree {}) holds exactly for {symbol} ∈ {}; the range decided is {b}",
+                c.factorisation.degree,
+                c.set.describe(symbol)
+            )));
+        }
+    }
+    if cert.set.covers {
+        return Verdict::new(Status::Holds, TOTALLY_POSITIVE, evidence);
+    }
+    // refute: a negative collocation minor at a parameter value where the
+    // certificate fails (or, without a parameter, at all)
+    let tries: Vec<Option<Rational>> = match param {
+        Some(_) => cert
+            .set
+            .failures
+            .iter()
+            .map(|f| Some(f.p.clone()))
+            .collect(),
+        None => vec![None],
+    };
+    for p in tries {
+        let at = param.map(|q| q.name.as_str()).zip(p.as_ref());
+        if let Some(neg) = refute(&fs, trig, at) {
+            evidence.push(refutation(basis, &neg, at, symbol, trig));
+            return Verdict::new(Status::Fails, TOTALLY_POSITIVE, evidence);
+        }
+    }
+    evidence.push(Evidence::note(
+        "no collocation matrix with a negative minor was found at the failing parameter values (rational grids of [0, 1] in z); the Wronskian criterion (Karlin: positive consecutive Wronskians make an extended complete Chebyshev system) that could close the gap is not implemented",
+    ));
+    Verdict::new(Status::NotCheckable, TOTALLY_POSITIVE, evidence)
+}
+
+/// The certificate in words: degrees, matrix size, minors, the set.
+fn certificate_line(
+    cert: &TpCertificate,
+    symbol: &str,
+    published: Option<&ParamRange>,
+) -> Evidence {
+    let f = &cert.factorisation;
+    let elevated = if f.degree > cert.first_degree {
+        format!(", elevated to {}", f.degree)
+    } else {
+        String::new()
+    };
+    let n = f.rows.len();
+    let text = format!(
+        "numerators over the positive common factor {} in z = tan(θ/2) (or t): Bernstein degree {}{elevated}; coefficient matrix {n} × {}; {} nonzero minors checked exactly",
+        f.common,
+        cert.first_degree,
+        f.degree + 1,
+        cert.minors,
+    );
+    let text = match published {
+        Some(r) => format!(
+            "{text}: all ≥ 0 exactly for {symbol} ∈ {} within the range {r}",
+            cert.set.describe(symbol)
+        ),
+        None if cert.set.covers => format!("{text}: all ≥ 0"),
+        None => format!("{text}: not all ≥ 0"),
+    };
+    let line = Evidence::new(Kind::Certificate, text);
+    if cert.set.covers {
+        line.about("total positivity", Status::Holds)
+    } else {
+        line
+    }
+}
+
+/// The refuting minor as an exact witness: the parameter, the points, the
+/// submatrix values and the minor.
+fn refutation<B: ExactBasis>(
+    basis: &B,
+    neg: &NegativeMinor,
+    at: Option<(&str, &Rational)>,
+    symbol: &str,
+    trig: bool,
+) -> Evidence {
+    let names = basis.function_names();
+    let mut point: Vec<(String, Rational)> = at
+        .map(|(n, p)| (n.to_string(), p.clone()))
+        .into_iter()
+        .collect();
+    let var = if trig { "z" } else { "t" };
+    for (k, z) in neg.points.iter().enumerate() {
+        point.push((format!("{var}{}", k + 1), z.clone()));
+    }
+    let mut values = Vec::new();
+    let mut labels = Vec::new();
+    for (k, row) in neg.values.iter().enumerate() {
+        for (j, v) in neg.functions.iter().zip(row) {
+            labels.push(format!("{}({var}{})", names[*j], k + 1));
+            values.push(Sym::rational(v.clone()));
+        }
+    }
+    labels.push("minor".into());
+    values.push(Sym::rational(neg.minor.clone()));
+    let shown: Vec<String> = point.iter().map(|(n, _)| n.clone()).collect();
+    let mut w = witness(
+        &point,
+        &shown,
+        labels.iter().map(String::as_str).zip(values).collect(),
+    );
+    if trig {
+        let circle: Vec<String> = neg
+            .points
+            .iter()
+            .map(|z| {
+                let d = Rational::from(1) + z.clone() * z;
+                let s = Rational::from(2) * z / d.clone();
+                let c = (Rational::from(1) - z.clone() * z) / d;
+                format!("(s, c) = ({s}, {c})")
+            })
+            .collect();
+        w.note = Some(format!(
+            "z = tan(θ/2), s = sin θ, c = cos θ: {}",
+            circle.join(", ")
+        ));
+    }
+    let order = neg.functions.len();
+    let fns: Vec<&str> = neg.functions.iter().map(|j| names[*j].as_str()).collect();
+    let at_text = at.map_or(String::new(), |(_, p)| format!(" at {symbol} = {p}"));
+    Evidence::new(
+        Kind::Certificate,
+        format!(
+            "not totally positive{at_text}: the {order}×{order} minor of the collocation matrix of ({}) at {var} = {} is {} < 0 (exact)",
+            fns.join(", "),
+            neg.points
+                .iter()
+                .map(Rational::to_string)
+                .collect::<Vec<_>>()
+                .join(" < "),
+            neg.minor
+        ),
+    )
+    .about("total positivity", Status::Fails)
+    .witnessed(Some(w))
+}
