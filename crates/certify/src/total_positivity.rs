@@ -406,6 +406,18 @@ pub struct TpCertificate {
     pub set: NonnegativeSet,
 }
 
+impl TpCertificate {
+    /// The parameter values of `bx` where every minor of this certificate
+    /// (at its degree, no further elevation) is `≥ 0`.
+    pub fn set_within(&self, bx: &ParamBox) -> NonnegativeSet {
+        let values: Vec<UPoly> = minors(&self.factorisation.rows)
+            .into_iter()
+            .map(|m| m.value)
+            .collect();
+        nonnegative_set(&values, bx)
+    }
+}
+
 /// The certificate of [`factorise`] with up to [`MAX_ELEVATION`] degree
 /// elevations, stopping as soon as all minors are `≥ 0` on the whole set.
 pub fn certify(

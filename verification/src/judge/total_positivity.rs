@@ -83,18 +83,17 @@ pub fn totally_positive<B: ExactBasis>(basis: &B, range: Option<&ParamRange>) ->
     };
     let symbol = param.map_or("p", |p| p.symbol.as_str());
     let mut evidence = vec![certificate_line(&cert, symbol, published)];
-    if let (Some(p), Some(b)) = (param, &bx) {
+    if let Some(b) = &bx {
+        // the same minors on the whole line: where this certificate reaches
         let whole = ParamBox {
             lo: Bound::Infinite,
             hi: Bound::Infinite,
         };
-        if let Ok(c) = certify(&fs, trig, Some((p.name.as_str(), &whole))) {
-            evidence.push(Evidence::note(format!(
-                "on the whole line the certificate (degree {}) holds exactly for {symbol} ∈ {}; the range decided is {b}",
-                c.factorisation.degree,
-                c.set.describe(symbol)
-            )));
-        }
+        evidence.push(Evidence::note(format!(
+            "on the whole line the minors of this certificate (degree {}) are all ≥ 0 exactly for {symbol} ∈ {}; the range decided is {b}",
+            cert.factorisation.degree,
+            cert.set_within(&whole).describe(symbol)
+        )));
     }
     if cert.set.covers {
         return Verdict::new(Status::Holds, TOTALLY_POSITIVE, evidence);
