@@ -25,18 +25,23 @@ pub fn segment_function(piece: usize) -> usize {
     PIECES - 1 - piece
 }
 
+/// An error unless `family` has uniform B-spline segment functions.
+fn require_segments(family: Family) -> Result<()> {
+    if family.info().piecewise {
+        return Ok(());
+    }
+    Err(CoreError::Malformed {
+        input: family.info().id.into(),
+        expected: "a family with uniform B-spline segment functions (seed000-uniform, bspline3)"
+            .into(),
+    })
+}
+
 /// The uniform B-spline basis function of `family` at global `n ∈ [0, 4]`
 /// (unit knot spacing). Its local variable on interval `k` is `n − k` mapped to
 /// the family's native domain (`t = π/2 (n − k)` for angle families).
 pub fn eval_uniform<T: Real>(family: Family, n: &T, p: &[Rational]) -> Result<T> {
-    if !family.info().piecewise {
-        return Err(CoreError::Malformed {
-            input: family.info().id.into(),
-            expected:
-                "a family with uniform B-spline segment functions (seed000-uniform, bspline3)"
-                    .into(),
-        });
-    }
+    require_segments(family)?;
     let knots: Vec<T> = (0..=PIECES as i64).map(|k| n.int(k)).collect();
     let (piece, local) = locate(&knots, n)?;
     let x = local * &family.info().variable.end(n);
@@ -52,21 +57,13 @@ pub struct UniformAt {
     piece: usize,
     local: Rational,
     params: Vec<Affine>,
-    names: Vec<String>,
 }
 
 impl UniformAt {
     /// The piece of `n` (typed as `n_text`) and its local coordinate, for a
     /// family with segment functions; `params` exact, already read.
     pub fn new(family: Family, n: &Rational, n_text: &str, params: Vec<Affine>) -> Result<Self> {
-        if !family.info().piecewise {
-            return Err(CoreError::Malformed {
-                input: family.info().id.into(),
-                expected:
-                    "a family with uniform B-spline segment functions (seed000-uniform, bspline3)"
-                        .into(),
-            });
-        }
+        require_segments(family)?;
         let knots: Vec<Rational> = (0..=PIECES as i64).map(Rational::from).collect();
         let (piece, local) = locate_exact(&knots, n, &echo(n_text))?;
         Ok(UniformAt {
@@ -74,14 +71,13 @@ impl UniformAt {
             piece,
             local,
             params,
-            names: family.param_names(),
         })
     }
 }
 
 impl Computation for UniformAt {
     fn inputs(&self) -> Vec<(String, &Rational)> {
-        named_affine(&self.names, &self.params)
+        named_affine(&self.family.param_names(), &self.params)
     }
 
     fn compute<T: Real>(&self, make: &dyn Fn(&Rational) -> T) -> Result<Vec<T>> {

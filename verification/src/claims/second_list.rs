@@ -6,11 +6,11 @@
 //! whatever part the text does decide.
 
 use trig_core::Family;
-use trig_deriv::{End, Wrt, curve_endpoint_derivatives};
+use trig_deriv::{End, Wrt};
 use trig_interp::{Scheme, Variant};
 use trig_symbolic::Sym;
 
-use super::thesis_interp::positivity;
+use super::thesis_interp::{derivs, positivity};
 use crate::claim::{Claim, Seed};
 use crate::evidence::Evidence;
 use crate::exact::{IDENTITY, basis, identities, identity_item, sum, symbols};
@@ -139,15 +139,7 @@ fn t58() -> Verdict {
 /// `P` at one end of the thesis cubic (3.7), derivatives of order 0–2 in
 /// `wrt`, for control points `points` (one coordinate).
 fn cubic_end(m: &Sym, points: &[Sym], end: End, wrt: Wrt) -> Vec<Sym> {
-    curve_endpoint_derivatives::<Sym, 3>(
-        Family::ThesisCubic,
-        std::slice::from_ref(m),
-        points,
-        None,
-        end,
-        wrt,
-        &Sym::one(),
-    )
+    derivs(points, m, end, wrt, &Sym::one())
 }
 
 fn q(n: i64) -> Sym {

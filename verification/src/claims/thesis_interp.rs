@@ -109,7 +109,7 @@ fn v(name: &str) -> Sym {
 }
 
 /// Derivatives of orders 0…2 of `Σ b_j(·; m) P_j` at `end` in `wrt`.
-fn derivs(points: &[Sym; 4], m: &Sym, end: End, wrt: Wrt, h: &Sym) -> Vec<Sym> {
+pub(super) fn derivs(points: &[Sym], m: &Sym, end: End, wrt: Wrt, h: &Sym) -> Vec<Sym> {
     curve_endpoint_derivatives::<Sym, 3>(
         Family::ThesisCubic,
         std::slice::from_ref(m),
