@@ -134,6 +134,22 @@ pub fn error_line(args: &[&str]) -> String {
     lines[0].to_string()
 }
 
+/// The message of a command line that does not parse (clap's: the error,
+/// a tip or the possible values, the usage), asserting exit status 2 and
+/// nothing on standard output.
+pub fn usage_error(args: &[&str]) -> String {
+    let out = run(args);
+    assert_eq!(
+        out.status.code(),
+        Some(2),
+        "trig-audit {args:?} should fail"
+    );
+    let err = String::from_utf8(out.stderr).expect("utf-8 error");
+    assert!(err.starts_with("error: "), "{err}");
+    assert!(out.stdout.is_empty(), "nothing on stdout when failing");
+    err
+}
+
 /// Asserts that each argument list fails with a one-line error containing
 /// the expected text.
 pub fn assert_errors(cases: &[(&[&str], &str)]) {

@@ -1,9 +1,12 @@
 //! `trig-audit`: the command-line front end, as a library so that tests can
 //! run whole command lines in-process (the fuzz suite in `tests/`).
 //!
-//! [`run`] parses one command line and runs it. Every failure is one line
-//! `error: …` (control characters escaped, long messages cut) with exit
-//! status 2; nothing reachable from here panics on bad input.
+//! [`run`] parses one command line and runs it. A command that fails says
+//! so in one line `error: …` (control characters escaped, long messages
+//! cut); a command line that does not parse gets clap's whole message (the
+//! error, a "did you mean" tip or the possible values, the usage line),
+//! each line bounded. Both exit with status 2; nothing reachable from here
+//! panics on bad input.
 
 mod cell;
 mod commands;
@@ -16,11 +19,18 @@ mod output;
 use std::ffi::OsString;
 
 use clap::error::ErrorKind;
-use clap::{Parser, Subcommand};
+use clap::{CommandFactory, Parser, Subcommand};
 
 use crate::commands::{
-    audit::AuditArgs, eval::EvalArgs, fit::FitArgs, interp::InterpArgs, join::JoinArgs,
-    list::ListArgs, plot::PlotArgs, table::TableArgs,
+    audit::AuditArgs,
+    eval::EvalArgs,
+    fit::FitArgs,
+    generate::{CompletionsArgs, ManArgs},
+    interp::InterpArgs,
+    join::JoinArgs,
+    list::ListArgs,
+    plot::PlotArgs,
+    table::TableArgs,
 };
 
 /// Machine-checked audits of trigonometric and polynomial spline bases.
@@ -49,6 +59,10 @@ enum Command {
     Plot(PlotArgs),
     /// A positivity-preserving interpolant of thesis 4.3 on its data: pieces, knot jumps, certified minimum.
     Interp(InterpArgs),
+    /// Print the shell completion script (bash, zsh, fish, elvish, powershell).
+    Completions(CompletionsArgs),
+    /// Print the man page (roff) of trig-audit or of one subcommand.
+    Man(ManArgs),
 }
 
 /// What a command line produced.
@@ -60,6 +74,10 @@ pub enum Outcome {
     Help(String),
     /// A one-line message for standard error (exit status 2).
     Error(String),
+    /// A command line that does not parse: clap's message for standard
+    /// error, several lines (the error, a tip, the usage), each bounded
+    /// (exit status 2).
+    Usage(String),
 }
 
 /// Longest error message, in characters: the head and the tail are kept.
@@ -101,13 +119,7 @@ where
                 ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => Outcome::Error(one_line(
                     "a subcommand is required: audit, list, eval, table, join, fit, plot or interp (see trig-audit --help)",
                 )),
-                _ => {
-                    let text = e.to_string();
-                    let first = text.lines().next().unwrap_or("bad command line");
-                    let first = first.strip_prefix("error: ").unwrap_or(first);
-                    // clap quotes the offending argument whole: keep it short
-                    Outcome::Error(bounded(&format!("{first} (see --help)"), MAX_USAGE_ERROR))
-                }
+                _ => Outcome::Usage(usage_error(&e.render().to_string())),
             };
         }
     };
@@ -123,6 +135,8 @@ where
         Command::Fit(args) => commands::fit::run(&args),
         Command::Plot(args) => commands::plot::run(&args),
         Command::Interp(args) => commands::interp::run(&args),
+        Command::Completions(args) => commands::generate::completions(&args, Cli::command()),
+        Command::Man(args) => commands::generate::man(&args, Cli::command()),
     };
     let written = result.and_then(|text| {
         out.write_all(text.as_bytes())
@@ -138,8 +152,32 @@ where
     }
 }
 
-/// Longest command-line (usage) error, in characters.
-const MAX_USAGE_ERROR: usize = 300;
+/// Longest line of a command-line (usage) error, in characters: clap
+/// quotes the offending argument whole.
+const MAX_USAGE_LINE: usize = 300;
+
+/// Most lines of a command-line (usage) error: an argument with line
+/// breaks in it spreads over lines.
+pub const MAX_USAGE_LINES: usize = 24;
+
+/// Clap's message for a command line that does not parse, every line on
+/// its own (control characters escaped) and at most [`MAX_USAGE_LINE`]
+/// characters, at most [`MAX_USAGE_LINES`] lines, without trailing blanks.
+fn usage_error(text: &str) -> String {
+    let lines: Vec<&str> = text.trim_end().lines().collect();
+    let keep =
+        |ls: &[&str]| -> Vec<String> { ls.iter().map(|l| bounded(l, MAX_USAGE_LINE)).collect() };
+    let shown = if lines.len() <= MAX_USAGE_LINES {
+        keep(&lines)
+    } else {
+        let (head, tail) = (MAX_USAGE_LINES / 2, MAX_USAGE_LINES / 2 - 1);
+        let mut shown = keep(&lines[..head]);
+        shown.push(format!("… [{} lines cut] …", lines.len() - head - tail));
+        shown.extend(keep(&lines[lines.len() - tail..]));
+        shown
+    };
+    shown.join("\n")
+}
 
 /// `message` on one line (control characters escaped) and at most
 /// [`MAX_ERROR`] characters (the middle cut, its length stated).
@@ -176,25 +214,90 @@ mod tests {
         assert!(line.starts_with("a\\nb"));
     }
 
+    /// A command line that does not parse keeps clap's hints: the
+    /// similar subcommand or option, the possible values.
     #[test]
-    fn clap_errors_are_one_line() {
-        for args in [
-            &["trig-audit", "eval", "--bogus"][..],
-            &["trig-audit", "eval", "thesis-cubic", "--at"],
-            &["trig-audit"],
-            &[
-                "trig-audit",
-                "table",
-                "x",
-                "--order",
-                "99999999999999999999999",
-            ],
+    fn usage_errors_keep_clap_hints() {
+        for (args, hint) in [
+            (
+                &["trig-audit", "audti"][..],
+                "similar subcommand exists: 'audit'",
+            ),
+            (
+                &["trig-audit", "audit", "--formt", "md"],
+                "similar argument exists: '--format'",
+            ),
+            (
+                &["trig-audit", "audit", "--verdict", "fail"],
+                "[possible values: holds, fails",
+            ),
+            (
+                &["trig-audit", "eval", "--bogus"],
+                "unexpected argument '--bogus'",
+            ),
         ] {
             match run(args) {
-                Outcome::Error(line) => assert!(!line.contains('\n'), "{line}"),
+                Outcome::Usage(text) => {
+                    assert!(text.starts_with("error: "), "{text}");
+                    assert!(text.contains(hint), "{args:?}: {text}");
+                    assert!(text.contains("--help"), "{text}");
+                }
                 other => panic!("{args:?}: {other:?}"),
             }
         }
+    }
+
+    #[test]
+    fn usage_errors_are_bounded() {
+        let long = "9".repeat(100_000);
+        let many = "1\n".repeat(10_000);
+        for args in [
+            &["trig-audit", "table", "x", "--order", &long][..],
+            &["trig-audit", "eval", "thesis-cubic", "--at"],
+            &["trig-audit", "audit", "--format", &many],
+        ] {
+            match run(args) {
+                Outcome::Usage(text) => {
+                    let lines: Vec<&str> = text.lines().collect();
+                    assert!(lines.len() <= MAX_USAGE_LINES + 1, "{} lines", lines.len());
+                    assert!(
+                        lines
+                            .iter()
+                            .all(|l| l.chars().count() <= MAX_USAGE_LINE + 60)
+                    );
+                }
+                other => panic!("{:?}: {other:?}", &args[..2]),
+            }
+        }
+        assert!(matches!(run(["trig-audit"]), Outcome::Error(_)));
         assert!(matches!(run(["trig-audit", "--help"]), Outcome::Help(_)));
+    }
+
+    #[test]
+    fn completions_and_man_pages() {
+        let Outcome::Output(bash) = run(["trig-audit", "completions", "bash"]) else {
+            panic!("no bash completions")
+        };
+        assert!(
+            bash.contains("audit") && bash.contains("--format"),
+            "{bash}"
+        );
+        let Outcome::Output(page) = run(["trig-audit", "man"]) else {
+            panic!("no man page")
+        };
+        assert!(
+            page.starts_with(".ie") || page.contains(".TH trig-audit"),
+            "{page}"
+        );
+        let Outcome::Output(page) = run(["trig-audit", "man", "audit"]) else {
+            panic!("no man page of audit")
+        };
+        assert!(
+            page.contains("trig-audit-audit") && page.contains("verdict"),
+            "{page}"
+        );
+        assert!(
+            matches!(run(["trig-audit", "man", "nope"]), Outcome::Error(e) if e.contains("one of: audit"))
+        );
     }
 }

@@ -18,6 +18,10 @@ fn main() -> ExitCode {
             eprintln!("error: {line}");
             ExitCode::from(2)
         }
+        Outcome::Usage(text) => {
+            eprintln!("{text}");
+            ExitCode::from(2)
+        }
     }
 }
 

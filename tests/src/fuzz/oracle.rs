@@ -1,6 +1,7 @@
 //! The oracle: what the outcome of a command line must satisfy.
 //!
-//! * An error is one line, bounded in length.
+//! * An error is one line, bounded in length; a command line that does
+//!   not parse gets clap's message: a few lines, each bounded.
 //! * `eval` and `table --numeric` print no NaN or infinity.
 //! * Every value they print is right: a printed decimal `d` with `n`
 //!   significant digits is the exact value rounded to nearest (`|x − d| ≤`
@@ -13,7 +14,7 @@
 
 use rug::ops::Pow;
 use rug::{Float, Rational};
-use trig_audit::{MAX_ERROR, Outcome};
+use trig_audit::{MAX_ERROR, MAX_USAGE_LINES, Outcome};
 use trig_core::{Family, Mpfr, parse_exact, piecewise};
 use trig_deriv::{End, Wrt, endpoint_derivatives};
 use trig_specfile::Spec;
@@ -28,6 +29,17 @@ pub fn check(case: &Case, outcome: &Outcome) -> Result<usize, String> {
         Outcome::Error(line) => {
             if line.is_empty() || line.contains('\n') || line.chars().count() > MAX_ERROR + 100 {
                 Err(format!("bad error message: {line:?}"))
+            } else {
+                Ok(0)
+            }
+        }
+        Outcome::Usage(text) => {
+            let lines: Vec<&str> = text.lines().collect();
+            if !text.starts_with("error: ")
+                || lines.len() > MAX_USAGE_LINES + 1
+                || lines.iter().any(|l| l.chars().count() > 400)
+            {
+                Err(format!("bad usage message: {text:?}"))
             } else {
                 Ok(0)
             }
