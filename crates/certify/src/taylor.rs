@@ -179,8 +179,12 @@ pub fn abs_up(x: &Float) -> f64 {
     if x.is_nan() {
         return f64::INFINITY;
     }
-    let a = x.clone().abs();
-    a.to_f64_round(Round::Up)
+    // no copy of `x`: |x| rounded up is −(x rounded down) for x < 0
+    if x.is_sign_negative() {
+        -x.to_f64_round(Round::Down)
+    } else {
+        x.to_f64_round(Round::Up)
+    }
 }
 
 /// A Taylor model on the unit box of its [`Space`] (see the module docs).
@@ -575,6 +579,30 @@ mod tests {
     use super::*;
     use crate::testing::q;
     use trig_core::{Real, Ring};
+
+    /// `abs_up(x) ≥ |x|` exactly, and it is the nearest f64 above: for
+    /// values between f64s of both signs, ±0, and beyond the f64 range.
+    #[test]
+    fn abs_up_bounds_the_magnitude_from_above() {
+        let third = Float::with_val(200, 1) / 3u32;
+        let huge = Float::with_val(200, Float::parse("1e400").expect("a number"));
+        for x in [
+            third.clone(),
+            -third,
+            Float::with_val(200, 0),
+            -huge.clone(),
+            huge,
+        ] {
+            let a = abs_up(&x);
+            let magnitude = x.clone().abs();
+            assert!(Float::with_val(200, a) >= magnitude, "{x}: {a}");
+            if a.is_finite() && a > 0.0 {
+                assert!(Float::with_val(200, a.next_down()) < magnitude, "{x}: {a}");
+            }
+        }
+        assert_eq!(abs_up(&Float::with_val(53, -0.5)), 0.5);
+        assert_eq!(abs_up(&Float::with_val(53, f64::NAN)), f64::INFINITY);
+    }
 
     fn range(m: &TaylorModel) -> (f64, f64) {
         let r = m.range().expect("an enclosure");

@@ -53,7 +53,7 @@ pub fn intro(spec: &Spec) -> String {
 
 /// The standard battery, then the file's claims.
 pub fn audit(spec: &Spec) -> Vec<Entry> {
-    audit_within(spec, None).entries
+    audit_within(spec, None, None).entries
 }
 
 /// The real points of the basis for its witnesses: the domain and the
@@ -82,19 +82,21 @@ pub struct Audit {
 /// [`audit`], each decision limited to `budget` of time: a decision that
 /// runs over gets no verdict and is listed in [`Audit::cut_off`] (see
 /// [`crate::budget`]), so every verdict printed is the one any machine
-/// computes.
-pub fn audit_within(spec: &Spec, budget: Option<Duration>) -> Audit {
+/// computes. With `only`, just the entry of that id (case-insensitive) is
+/// decided — the others are not computed at all.
+pub fn audit_within(spec: &Spec, budget: Option<Duration>, only: Option<&str>) -> Audit {
     let doc = document(spec);
     let shared = Arc::new(spec.clone());
-    let run = |f: Decision<Verdict>| -> Option<Verdict> {
-        // every witness at a real point of the basis
-        let f: Decision<Verdict> =
+    let wanted = |id: &str| only.is_none_or(|c| id.eq_ignore_ascii_case(c));
+    // every witness at a real point of the basis, within the budget
+    let run = |f: Decision<(String, Verdict)>| -> Option<(String, Verdict)> {
+        let f: Decision<(String, Verdict)> =
             Box::new(move |s: &Spec| with_real_points(real_points(s), || f(s)));
         match budget {
             None => Some(f(spec)),
             Some(limit) => {
                 let s = Arc::clone(&shared);
-                decided(bounded(limit, move || f(&s)), |v| v)
+                decided(bounded(limit, move || f(&s)), |v| (String::new(), v))
             }
         }
     };
@@ -102,36 +104,34 @@ pub fn audit_within(spec: &Spec, budget: Option<Duration>) -> Audit {
         entries: Vec::new(),
         cut_off: Vec::new(),
     };
+    // an entry whose statement the decision may state (symmetry names the
+    // exchange it found); `statement` is used when it does not
     let mut entry =
-        |id: &str, source: &str, statement: String, verdict: Option<Verdict>| match verdict {
-            Some(verdict) => audit.entries.push(Entry {
-                id: id.to_string(),
-                document: doc.clone(),
-                source: source.to_string(),
-                statement,
-                verdict,
-                figure: None,
-            }),
-            None => audit.cut_off.push(id.to_string()),
+        |id: &str, source: &str, statement: String, decide: Decision<(String, Verdict)>| {
+            if !wanted(id) {
+                return;
+            }
+            match run(decide) {
+                Some((stated, verdict)) => audit.entries.push(Entry {
+                    id: id.to_string(),
+                    document: doc.clone(),
+                    source: source.to_string(),
+                    statement: if stated.is_empty() { statement } else { stated },
+                    verdict,
+                    figure: None,
+                }),
+                None => audit.cut_off.push(id.to_string()),
+            }
         };
+    let plain = |f: fn(&Spec) -> Verdict| -> Decision<(String, Verdict)> {
+        Box::new(move |s: &Spec| (String::new(), f(s)))
+    };
     let names = spec
         .functions
         .iter()
         .map(|f| f.name.as_str())
         .collect::<Vec<_>>()
         .join(", ");
-    let symmetry_at_real_points =
-        |s: &Spec| with_real_points(real_points(s), || judge::symmetry::battery_symmetry(s));
-    let symmetry = match budget {
-        None => Some(symmetry_at_real_points(spec)),
-        Some(limit) => {
-            let s = Arc::clone(&shared);
-            decided(
-                bounded(limit, move || symmetry_at_real_points(s.as_ref())),
-                |v| ("symmetry of the functions".into(), v),
-            )
-        }
-    };
     entry(
         "unity",
         "standard battery",
@@ -145,19 +145,21 @@ pub fn audit_within(spec: &Spec, budget: Option<Duration>) -> Audit {
                     .collect::<Vec<_>>()
             )
         ),
-        run(Box::new(|s: &Spec| judge::unity::unity(s))),
+        plain(judge::unity::unity),
     );
     entry(
         "nonnegativity",
         "standard battery",
         format!("{names} ≥ 0 on the domain exactly for the declared parameter ranges"),
-        run(Box::new(|s: &Spec| judge::nonnegative::nonnegativity(s))),
+        plain(judge::nonnegative::nonnegativity),
     );
-    match symmetry {
-        Some((text, verdict)) => entry("symmetry", "standard battery", text, Some(verdict)),
-        None => entry("symmetry", "standard battery", String::new(), None),
-    }
-    entry("interpolation", "standard battery", "endpoint interpolation: only the first function is nonzero at the start (value 1), only the last at the end (value 1)".into(), run(Box::new(|s: &Spec| judge::endpoint::interpolation(s))));
+    entry(
+        "symmetry",
+        "standard battery",
+        "symmetry of the functions".into(),
+        Box::new(|s: &Spec| judge::symmetry::battery_symmetry(s)),
+    );
+    entry("interpolation", "standard battery", "endpoint interpolation: only the first function is nonzero at the start (value 1), only the last at the end (value 1)".into(), plain(judge::endpoint::interpolation));
     entry(
         "derivatives",
         "standard battery",
@@ -166,9 +168,7 @@ pub fn audit_within(spec: &Spec, budget: Option<Duration>) -> Audit {
             TABLE_ORDERS - 1,
             judge::domain::describe_wrt(spec, table_wrt(spec))
         ),
-        run(Box::new(|s: &Spec| {
-            judge::endpoint::derivative_table(s, table_wrt(s))
-        })),
+        plain(|s| judge::endpoint::derivative_table(s, table_wrt(s))),
     );
     for order in [1, 2] {
         entry(
@@ -177,9 +177,7 @@ pub fn audit_within(spec: &Spec, budget: Option<Duration>) -> Audit {
             format!(
                 "C{order} join of Σ b_i P_i (end) and Σ b_i Q_i (start): derived conditions on Q"
             ),
-            run(Box::new(move |s: &Spec| {
-                judge::join::derived_join(s, order)
-            })),
+            Box::new(move |s: &Spec| (String::new(), judge::join::derived_join(s, order))),
         );
     }
     for c in &spec.claims {
@@ -188,7 +186,7 @@ pub fn audit_within(spec: &Spec, budget: Option<Duration>) -> Audit {
             &c.id,
             &c.source,
             c.statement.clone(),
-            run(Box::new(move |s: &Spec| decide(s, &claim))),
+            Box::new(move |s: &Spec| (String::new(), decide(s, &claim))),
         );
     }
     audit

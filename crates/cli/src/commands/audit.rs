@@ -91,7 +91,7 @@ pub fn run(args: &AuditArgs) -> CmdResult {
                     .as_deref()
                     .is_none_or(|c| id.eq_ignore_ascii_case(c))
             };
-            let audit = spec_audit::audit_within(&spec, Some(budget));
+            let audit = spec_audit::audit_within(&spec, Some(budget), args.claim.as_deref());
             let entries: Vec<Entry> = audit
                 .entries
                 .into_iter()
