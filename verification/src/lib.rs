@@ -14,6 +14,7 @@ pub mod evidence;
 pub mod exact;
 pub mod figures;
 pub mod judge;
+mod memo;
 pub mod minimum;
 pub mod numeric;
 pub mod parallel;

@@ -51,6 +51,12 @@ pub fn with_real_points<T>(points: RealPoints, f: impl FnOnce() -> T) -> T {
     out
 }
 
+/// The witness context of this thread as text (for [`crate::memo`] keys:
+/// a decision's witnesses depend on it).
+pub(crate) fn context_key() -> String {
+    format!("{:?}", current())
+}
+
 /// The current real points, if a spec decision runs.
 fn current() -> Option<Rc<RealPoints>> {
     CURRENT.with(|c| c.borrow().clone())

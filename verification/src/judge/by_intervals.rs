@@ -14,6 +14,8 @@ use trig_symbolic::Sym;
 use super::analytic;
 use crate::exact::ExactBasis;
 use crate::exact::basis_of;
+use crate::memo::Memo;
+use crate::real_witness::context_key;
 use crate::status::Status;
 use crate::verdict::Verdict;
 
@@ -290,6 +292,21 @@ pub fn functions<B: ExactBasis>(basis: &B) -> Vec<(String, Sym)> {
 /// point just beyond it decides: admissible refutes maximality, a
 /// certified counterexample brackets the end.
 pub fn maximal<B: ExactBasis>(basis: &B, range: &ParamRange) -> Verdict {
+    static DECIDED: Memo<Verdict> = Memo::new();
+    let key = format!(
+        "{:?}",
+        (
+            functions(basis),
+            basis.domain(),
+            basis.parameters(),
+            range,
+            context_key()
+        )
+    );
+    DECIDED.get_or_compute(key, || maximal_uncached(basis, range))
+}
+
+fn maximal_uncached<B: ExactBasis>(basis: &B, range: &ParamRange) -> Verdict {
     let (ax, notes) = axes(basis, Some(range));
     let fs = functions(basis);
     let inside = all_nonnegative(basis, &fs, &ax, &notes);
