@@ -17,13 +17,22 @@ as_root() {
   if [ "$(id -u)" = 0 ]; then "$@"; else sudo "$@"; fi
 }
 
-# apt-get quietly, every line it prints on standard error.
+# apt-get quietly: one line saying what is installed; apt's own output goes
+# to a log that is shown (on standard error) only when the install fails.
 install_packages() {
   echo "run.sh: installing $* (apt-get)" >&2
-  {
-    as_root apt-get update -qq
-    DEBIAN_FRONTEND=noninteractive as_root apt-get install -y -qq "$@"
-  } >&2
+  local log
+  log=$(mktemp)
+  if ! {
+    as_root apt-get update -qq &&
+      DEBIAN_FRONTEND=noninteractive as_root apt-get install -y -qq "$@"
+  } >"$log" 2>&1; then
+    cat "$log" >&2
+    rm -f "$log"
+    echo "run.sh: apt-get could not install $*" >&2
+    return 1
+  fi
+  rm -f "$log"
 }
 
 # True when the system's GMP and MPFR headers are recent enough for
