@@ -3,7 +3,8 @@
 //! of a statement (`H_{2−i}(π/2 − u; β)`) set in math mode ([`prose`]).
 //! The output is ASCII and compiles with pdfLaTeX.
 
-use crate::math::{inline_math, math};
+use crate::marked::{CLOSE, OPEN, marked};
+use crate::math::{inline_breakable, inline_math, math};
 use crate::symbols::{TEXT, is_mathy, lookup};
 
 /// Words that stay text even between formulas.
@@ -104,10 +105,17 @@ fn classify(word: &str) -> Token {
     Token::Text
 }
 
-/// Prose with formulas: whitespace-separated runs of formula-like words
-/// (subscripts, superscripts, Unicode symbols, with the operators and short
-/// variable names between them) set as one formula each, the rest escaped.
+/// Prose with formulas. Text with markup ([`crate::marked`]) is set as
+/// marked; generated text without markup (evidence lines, labels) has its
+/// formula-like runs found by their look: whitespace-separated runs of
+/// formula-like words (subscripts, superscripts, Unicode symbols, with the
+/// operators and short variable names between them) set as one formula
+/// each, the rest escaped. Printed statements carry markup and never go
+/// through this guess.
 pub fn prose(line: &str) -> String {
+    if line.contains([OPEN, CLOSE]) {
+        return marked(line);
+    }
     // `code spans` (commands, file names) in typewriter, the rest as prose
     if line.contains('`') {
         return line
@@ -138,7 +146,7 @@ pub fn prose(line: &str) -> String {
         }
         let run = &words[start..i];
         if kinds[start..i].contains(&Token::Math) {
-            out.push(inline_math(&math(&run.join(" "))));
+            out.push(inline_breakable(&math(&run.join(" "))));
         } else {
             out.extend(run.iter().map(|w| text(w)));
         }
@@ -158,7 +166,7 @@ mod tests {
         );
         assert_eq!(
             text("θ ↦ π/2 − θ, b₀ ≥ 0 — “ok”"),
-            r"$\theta $ $\mapsto $ $\pi $/2 $-$ $\theta $, b$_{0}$ $\geq $ 0 --- ``ok''"
+            r"$\theta$ $\mapsto$ $\pi$/2 $-$ $\theta$, b$_{0}$ $\geq$ 0 --- ``ok''"
         );
     }
 
@@ -166,11 +174,11 @@ mod tests {
     fn statements_set_their_formulas_in_math() {
         assert_eq!(
             prose("H_i(u; β) = H_{2−i}(π/2 − u; β) (as printed)"),
-            r"$H_{i}(u; \beta ) = H_{2-i}(\pi /2 - u; \beta )$ (as printed)"
+            r"$H_{i}(u;\allowbreak \beta) = H_{2-i}(\frac{\pi}{2} - u;\allowbreak \beta)$ (as printed)"
         );
         assert_eq!(
             prose("x² + y²³ ≥ 0 for all x"),
-            r"$x^{2} + y^{23} \geq  0$ for all x"
+            r"$x^{2} + y^{23} \geq 0$ for all x"
         );
         assert_eq!(prose("the set {1, 2}"), r"the set \{1, 2\}");
         assert_eq!(prose("P_{i,j} x̄"), r"$P_{i,j} \bar{x}$");
