@@ -5,7 +5,7 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use trig_e2e::{binary, stdout_ok};
+use trig_e2e::{binary, error_line, stdout_ok};
 
 /// The workspace root (where the figures' paths start).
 fn root() -> PathBuf {
@@ -39,6 +39,11 @@ fn a_fragment_by_default_a_document_with_standalone() {
     let whole = stdout_ok(&["audit", "--seed", "004", "--format", "tex", "--standalone"]);
     assert!(whole.starts_with("\\documentclass"));
     assert!(whole.trim_end().ends_with("\\end{document}"));
+    let bad = error_line(&["audit", "--seed", "004", "--standalone"]);
+    assert!(
+        bad.contains("--standalone applies to --format tex"),
+        "{bad}"
+    );
     let body = |t: &str| t[t.find("\\section*").expect("a title")..].to_string();
     assert!(
         body(&whole).starts_with(&body(&part)[..200]),

@@ -75,8 +75,38 @@ enum Token {
     Text,
 }
 
+/// An equation or appendix number in brackets (`(4.21)`, `(A45)`).
+fn is_label(word: &str) -> bool {
+    let Some(inner) = word.strip_prefix('(').and_then(|w| w.strip_suffix(')')) else {
+        return false;
+    };
+    let number = inner.trim_start_matches(|c: char| c.is_ascii_uppercase());
+    inner.len() - number.len() <= 1
+        && number.starts_with(|c: char| c.is_ascii_digit())
+        && number.chars().all(|c| c.is_ascii_digit() || c == '.')
+        && (number.len() < inner.len() || number.contains('.'))
+}
+
+/// A prime after a name or bracket (`R''(0)`, `b0'`), not a possessive.
+fn has_prime(word: &str) -> bool {
+    let core = word.trim_end_matches([',', ';', ':', '.']);
+    let chars: Vec<char> = core.chars().collect();
+    !core.ends_with("'s")
+        && chars
+            .windows(2)
+            .any(|w| w[1] == '\'' && (w[0].is_ascii_alphanumeric() || w[0] == ')' || w[0] == '\''))
+}
+
 fn classify(word: &str) -> Token {
-    if word.contains(['_', '^']) || word.chars().any(|c| is_mathy(c) || c == '\u{304}') {
+    let trimmed = word.trim_end_matches([',', ';', '.']);
+    // labels stay text: `(4.21)`, `(A45)`, a claim id before a colon (`T4:`)
+    if is_label(trimmed) || (trimmed.ends_with(':') && !trimmed.chars().any(is_mathy)) {
+        return Token::Text;
+    }
+    if word.contains(['_', '^'])
+        || has_prime(word)
+        || word.chars().any(|c| is_mathy(c) || c == '\u{304}')
+    {
         return Token::Math;
     }
     if !word.is_empty() && word.chars().all(|c| "=+-<>/*".contains(c)) {
@@ -90,6 +120,20 @@ fn classify(word: &str) -> Token {
         && number
             .chars()
             .all(|c| c.is_ascii_digit() || c == '/' || c == '.')
+    {
+        return Token::Var;
+    }
+    // a product or call of short names and numbers: `4(w1/w0)(P1`
+    let letter_runs = core
+        .split(|c: char| !c.is_ascii_alphabetic())
+        .filter(|run| !run.is_empty());
+    if core.contains(|c: char| c.is_ascii_digit())
+        && core.contains(['(', ')', '/'])
+        && letter_runs.clone().count() > 0
+        && letter_runs.clone().all(|run| run.len() <= 2)
+        && core
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || "()[]/+*.,".contains(c))
     {
         return Token::Var;
     }
@@ -184,6 +228,19 @@ mod tests {
         assert_eq!(prose("P_{i,j} x̄"), r"$P_{i,j} \bar{x}$");
         assert_eq!(math("(1 + z²)^(−3) F^(4)"), r"(1 + z^{2})^{(-3)} F^{(4)}");
         assert_eq!(prose("b_{j+2,i} of {a_b}"), r"$b_{j+2,i}$ of $\{a_{b}\}$");
+        // primes are math, labels and claim ids text
+        assert_eq!(
+            prose("R''(0) − printed (A45) (4.21) Han's"),
+            r"$R''(0) -$ printed (A45) (4.21) Han's"
+        );
+        assert_eq!(
+            prose("R'(0) − 4(w1/w0)(P1 −P0) (as printed)"),
+            r"$R'(0) - 4(\frac{w_{1}}{w_{0}})(P_{1} -P_{0})$ (as printed)"
+        );
+        assert_eq!(
+            prose("reading of T4: H_i(u) = 1"),
+            r"reading of T4: $H_{i}(u) = 1$"
+        );
         assert_eq!(
             prose("run `trig-audit audit` now"),
             r"run \texttt{trig-audit audit} now"

@@ -126,6 +126,11 @@ pub fn run(args: &AuditArgs) -> CmdResult {
             args.claim.as_deref().unwrap_or("")
         )));
     }
+    if args.standalone && args.format != ReportFormat::Tex {
+        return Err(CliError::Usage(
+            "--standalone applies to --format tex (a complete LaTeX document)".into(),
+        ));
+    }
     let view = View {
         summary_only: args.summary,
         verdicts: args.verdict.iter().map(|v| Status::from(*v)).collect(),
