@@ -112,6 +112,19 @@ fn classify(word: &str) -> Token {
     if !word.is_empty() && word.chars().all(|c| "=+-<>/*".contains(c)) {
         return Token::Op;
     }
+    // a function of a short name applied: `Q2(0)`, `R(t;`
+    let name = trimmed.trim_end_matches(':');
+    let letters = name.len()
+        - name
+            .trim_start_matches(|c: char| c.is_ascii_alphabetic())
+            .len();
+    let after = name[letters..].trim_start_matches(|c: char| c.is_ascii_digit());
+    if (1..=2).contains(&letters)
+        && after.starts_with('(')
+        && !WORDS.contains(&name[..letters].to_ascii_lowercase().as_str())
+    {
+        return Token::Math;
+    }
     let core: String = word
         .trim_matches(|c: char| "()[],;:.".contains(c))
         .to_string();
@@ -176,6 +189,21 @@ pub fn prose(line: &str) -> String {
     }
     let words: Vec<&str> = line.split(' ').collect();
     let kinds: Vec<Token> = words.iter().map(|w| classify(w)).collect();
+    // a word ending a clause: `,`, `;` or `:` outside brackets
+    let mut depth = 0i32;
+    let ends: Vec<bool> = words
+        .iter()
+        .map(|w| {
+            for c in w.chars() {
+                match c {
+                    '(' | '[' | '{' => depth += 1,
+                    ')' | ']' | '}' => depth -= 1,
+                    _ => {}
+                }
+            }
+            depth <= 0 && w.ends_with([',', ';', ':'])
+        })
+        .collect();
     let mut out: Vec<String> = Vec::new();
     let mut i = 0;
     while i < words.len() {
@@ -187,10 +215,20 @@ pub fn prose(line: &str) -> String {
         let start = i;
         while i < words.len() && kinds[i] != Token::Text {
             i += 1;
+            if ends[i - 1] {
+                break;
+            }
         }
         let run = &words[start..i];
         if kinds[start..i].contains(&Token::Math) {
-            out.push(inline_breakable(&math(&run.join(" "))));
+            // trailing punctuation stays in the text
+            let formula = run.join(" ");
+            let body = formula.trim_end_matches([',', ';', ':', '.']);
+            out.push(format!(
+                "{}{}",
+                inline_breakable(&math(body)),
+                &formula[body.len()..]
+            ));
         } else {
             out.extend(run.iter().map(|w| text(w)));
         }
@@ -236,6 +274,10 @@ mod tests {
         assert_eq!(
             prose("R'(0) − 4(w1/w0)(P1 −P0) (as printed)"),
             r"$R'(0) - 4(\frac{w_{1}}{w_{0}})(P_{1} -P_{0})$ (as printed)"
+        );
+        assert_eq!(
+            prose("Condition 1, Q2(0); T4 holds"),
+            r"Condition 1, $Q_{2}(0)$; T4 holds"
         );
         assert_eq!(
             prose("reading of T4: H_i(u) = 1"),
