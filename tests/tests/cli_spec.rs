@@ -51,6 +51,7 @@ fn audit_of_the_shipped_examples() {
         &example("thesis-cubic.toml"),
         "--format",
         "tex",
+        "--standalone",
     ]);
     assert!(tex.contains("\\subsection*{Spec thesis-cubic"));
     assert!(tex.trim_end().ends_with("\\end{document}"));

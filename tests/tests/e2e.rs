@@ -2,6 +2,7 @@
 
 mod catalog_parity;
 mod cli_audit;
+mod cli_audit_tex;
 mod cli_certify;
 mod cli_eval;
 mod cli_figures;

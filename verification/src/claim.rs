@@ -64,7 +64,9 @@ pub struct Claim {
     /// Equation or section.
     pub source: &'static str,
     /// The statement as printed (short quotation), or for a `…b` claim the
-    /// one obvious reading, labelled as such.
+    /// one obvious reading, labelled as such; its formulas marked `⟪…⟫`
+    /// ([`trig_tex::marked`]), so that the LaTeX report sets them in math
+    /// and the other reports show the text as printed ([`trig_tex::plain`]).
     pub statement: &'static str,
     /// The checker.
     pub check: fn() -> Verdict,

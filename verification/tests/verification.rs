@@ -3,6 +3,7 @@
 mod audit;
 mod certified;
 mod joins;
+mod latex_statements;
 mod local_control;
 mod seed000;
 mod seed002_004;

@@ -199,7 +199,7 @@ mod tests {
         )
         .unwrap();
         let tex = p.pgf();
-        assert!(tex.contains(r"title={T \& $\lambda $},"), "{tex}");
+        assert!(tex.contains(r"title={T \& $\lambda$},"), "{tex}");
         assert!(tex.contains("xmin=0, xmax=2,"));
         assert!(tex.contains("width=139.2mm, height=87.6mm"), "{tex}");
         assert_eq!(tex.matches(r"\addlegendentry{").count(), 3);

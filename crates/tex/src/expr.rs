@@ -2,19 +2,37 @@
 //! numbers. The exact ring prints its expressions with these
 //! (`trig_symbolic`'s LaTeX style), the tables their numbers.
 
+use crate::math::math;
 use crate::symbols::{greek, math_symbol};
 
 /// A variable's name in math: a Greek name as its letter (`beta` →
-/// `\beta`), one letter as itself, a longer name upright (`\mathrm{foo}`);
-/// trailing `digits` as a subscript (`w0` → `w_{0}`).
+/// `\beta`), one ASCII letter as itself, a longer ASCII name upright
+/// (`\mathrm{foo}`), any other name through the math writer (`P_`, `y_i`,
+/// `R''`, `P₁`); trailing `digits` as a subscript (`w0` → `w_{0}`,
+/// `P_` and `2` → `P_{2}`, `y_i` and `1` → `y_{i}{}_{1}`).
 pub fn name(prefix: &str, digits: &str) -> String {
-    let base = match greek(prefix).and_then(math_symbol) {
-        Some(letter) => letter.to_string(),
-        None if prefix.chars().count() == 1 => prefix.to_string(),
-        None => format!(r"\mathrm{{{prefix}}}"),
+    let prefix = if digits.is_empty() {
+        prefix
+    } else {
+        prefix.strip_suffix('_').unwrap_or(prefix)
     };
+    if let Some(letter) = greek(prefix).and_then(math_symbol) {
+        return indexed(letter, digits);
+    }
+    if prefix.len() > 1 && prefix.chars().all(|c| c.is_ascii_alphabetic()) {
+        return indexed(&format!(r"\mathrm{{{prefix}}}"), digits);
+    }
     if digits.is_empty() {
-        base
+        math(prefix)
+    } else {
+        math(&format!("{prefix}_{{{digits}}}"))
+    }
+}
+
+/// `base` (a name without scripts) with `digits` as its index.
+fn indexed(base: &str, digits: &str) -> String {
+    if digits.is_empty() {
+        base.to_string()
     } else {
         format!("{base}_{{{digits}}}")
     }
@@ -102,6 +120,14 @@ mod tests {
         assert_eq!(name("foo", ""), r"\mathrm{foo}");
         assert_eq!(name("gamma", "1"), r"\gamma_{1}");
         assert_eq!(name("foo", "1"), r"\mathrm{foo}_{1}");
+        // names with scripts, primes and underscores of their own
+        assert_eq!(name("P_", "2"), "P_{2}");
+        assert_eq!(name("b1_", "2"), "b_{1}{}_{2}");
+        assert_eq!(name("y_i", "1"), "y_{i}{}_{1}");
+        assert_eq!(name("P₁", ""), "P_{1}");
+        assert_eq!(name("R''", ""), "R''");
+        assert_eq!(name("P′", "0"), "P'_{0}");
+        assert_eq!(name("x_", ""), r"x\_");
         assert_eq!(power("(m + 1)", 2), "(m + 1)^{2}");
         assert_eq!(frac("1", "2"), r"\frac{1}{2}");
         assert_eq!(number("1.5e-3"), r"1.5 \times 10^{-3}");

@@ -6,14 +6,18 @@
 //! printer takes its pieces from [`expr`]) are all written with it.
 //!
 //! - Text: [`text`] escapes prose (the special characters, every Unicode
-//!   symbol the reports print mapped, [`symbols`]); [`prose`] sets the
-//!   formula-like runs of a statement in math; [`breakable`] lets a long
-//!   path or printed formula break.
-//! - Math: [`math`] turns Unicode formula text (`H_{2−i}(π/2 − u; β)`) into
-//!   LaTeX math; [`inline_math`] and [`fitted_math`] set a formula in text.
+//!   symbol the reports print mapped, [`symbols`]); [`marked`] sets text
+//!   with explicit math markup (`⟪…⟫`, how printed statements are stored;
+//!   [`plain`] is the text as printed); [`prose`] sets generated text
+//!   without markup, finding its formula-like runs; [`breakable`] lets a
+//!   long path or printed formula break.
+//! - Math: [`math`], the one math writer, turns Unicode formula text
+//!   (`H_{2−i}(π/2 − u; β)`, `b0'(0) = 3/A`) into LaTeX math; [`inline_math`]
+//!   and [`fitted_math`] set a formula in text.
 //! - Expressions: [`expr`] spells names, powers, fractions and numbers.
 //! - Tables: [`LongTable`] with its [`Column`]s, [`column_name`].
-//! - Documents: [`PREAMBLE`], [`document`], [`comment`], [`align`];
+//! - Documents: [`PREAMBLE`], [`document`]; fragments for `\input`
+//!   ([`fragment`], needing only [`FRAGMENT_PACKAGES`]); [`comment`], [`align`];
 //!   [`compile`] runs `pdflatex` for the tests.
 //!
 //! The output is ASCII and compiles with pdfLaTeX (and LuaLaTeX, XeLaTeX)
@@ -23,13 +27,17 @@
 mod compile;
 mod document;
 pub mod expr;
+pub mod marked;
 mod math;
 pub mod symbols;
 mod table;
 mod text;
 
 pub use compile::{CompileLog, compile};
-pub use document::{PREAMBLE, align, comment, document};
+pub use document::{
+    FRAGMENT_PACKAGES, FRAGMENT_SETUP, PREAMBLE, align, comment, document, fragment,
+};
+pub use marked::{marked, plain};
 pub use math::{fitted_math, inline_math, math};
 pub use symbols::unmapped;
 pub use table::{Column, LongTable, column_name};

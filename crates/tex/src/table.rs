@@ -14,8 +14,8 @@ pub enum Column {
     Left,
     /// Right-aligned, as wide as its widest entry (`r`).
     Right,
-    /// Ragged-right text wrapping at this width (`L{width}`, a column type
-    /// of [`crate::PREAMBLE`]).
+    /// Ragged-right text wrapping at this width (a `p` column of the
+    /// `array` package: `>{\raggedright\arraybackslash}p{width}`).
     Wrap(&'static str),
 }
 
@@ -24,13 +24,14 @@ impl fmt::Display for Column {
         match self {
             Column::Left => f.write_str("l"),
             Column::Right => f.write_str("r"),
-            Column::Wrap(width) => write!(f, "L{{{width}}}"),
+            Column::Wrap(width) => write!(f, r">{{\raggedright\arraybackslash}}p{{{width}}}"),
         }
     }
 }
 
-/// A `longtable`: cells are LaTeX (text mode), rows as many as the columns.
-/// `Display` writes it, ending with `\end{longtable}` and a line break.
+/// A `longtable` with `booktabs` rules: cells are LaTeX (text mode), rows
+/// as many as the columns. `Display` writes it, ending with
+/// `\end{longtable}` and a line break.
 #[derive(Debug, Clone)]
 pub struct LongTable {
     columns: Vec<Column>,
@@ -91,19 +92,19 @@ impl fmt::Display for LongTable {
         let columns: String = self.columns.iter().map(Column::to_string).collect();
         writeln!(f, "\\begin{{longtable}}{{{columns}}}")?;
         let star = if self.numbered { "" } else { "*" };
-        writeln!(f, "\\caption{star}{{{}}}\\\\\n\\hline", self.caption)?;
+        writeln!(f, "\\caption{star}{{{}}}\\\\\n\\toprule", self.caption)?;
         row(f, &self.head)?;
-        writeln!(f, "\\hline\n\\endhead")?;
+        writeln!(f, "\\midrule\n\\endhead")?;
         for cells in &self.body {
             row(f, cells)?;
         }
         if !self.foot.is_empty() {
-            writeln!(f, "\\hline")?;
+            writeln!(f, "\\midrule")?;
             for cells in &self.foot {
                 row(f, cells)?;
             }
         }
-        writeln!(f, "\\hline\n\\end{{longtable}}")?;
+        writeln!(f, "\\bottomrule\n\\end{{longtable}}")?;
         if self.small {
             writeln!(f, "}}")?;
         }
@@ -140,7 +141,7 @@ mod tests {
         t.foot(["x", "y", "z"].map(String::from).to_vec());
         assert_eq!(
             t.to_string(),
-            "{\\small\n\\begin{longtable}{lrL{2cm}}\n\\caption*{T}\\\\\n\\hline\na & b & c \\\\\n\\hline\n\\endhead\n1 & 2 & 3 \\\\\n\\hline\nx & y & z \\\\\n\\hline\n\\end{longtable}\n}\n"
+            "{\\small\n\\begin{longtable}{lr>{\\raggedright\\arraybackslash}p{2cm}}\n\\caption*{T}\\\\\n\\toprule\na & b & c \\\\\n\\midrule\n\\endhead\n1 & 2 & 3 \\\\\n\\midrule\nx & y & z \\\\\n\\bottomrule\n\\end{longtable}\n}\n"
         );
         assert_eq!(column_name("b0"), "$b_{0}$");
         assert_eq!(column_name("derivative"), "derivative");

@@ -21,7 +21,7 @@ pub const CLAIMS: &[Claim] = &[Claim {
     id: "M11",
     seed: Seed::S000,
     source: "Appendix B",
-    statement: "Σ_i b_{j+2,i} l_i(t_{j+2}) = (1 + z²)^(−3) Σ_k y_k z^k with the printed y_0 … y_6, z = tan(t/2), and hence the piece is > 0 for z ∈ [0, 1)",
+    statement: "⟪Σ_i b_{j+2,i} l_i(t_{j+2}) = (1 + z²)^(−3) Σ_k y_k z^k⟫ with the printed ⟪y_0 … y_6⟫, ⟪z = tan(t/2)⟫, and hence the piece is ⟪> 0⟫ for ⟪z ∈ [0, 1)⟫",
     check: m11,
 }];
 

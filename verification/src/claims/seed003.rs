@@ -16,14 +16,14 @@ pub const CLAIMS: &[Claim] = &[
         id: "S1",
         seed: Seed::S003,
         source: "whole paper",
-        statement: "nonnegativity for 0.3 ≤ α ≤ 0.5, partition of unity, symmetry, endpoint properties, C³, ellipse and parabola arcs, optimal α = 0.3375",
+        statement: "nonnegativity for ⟪0.3 ≤ α ≤ 0.5⟫, partition of unity, symmetry, endpoint properties, ⟪C³⟫, ellipse and parabola arcs, optimal ⟪α = 0.3375⟫",
         check: s1,
     },
     Claim {
         id: "S2",
         seed: Seed::S003,
         source: "Remark 1 (a)",
-        statement: "the standard cubic uniform B-spline curves are only C² (not C³)",
+        statement: "the standard cubic uniform B-spline curves are only ⟪C²⟫ (not ⟪C³⟫)",
         check: s2,
     },
 ];

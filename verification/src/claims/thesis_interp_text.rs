@@ -24,19 +24,19 @@ pub const CLAIMS: &[Claim] = &[
     claim(
         "T55",
         "4.3.4, Figure 4.13 text",
-        "the G² interpolant of Table 4.4 rises to about 55 near x = 4.5, then drops towards the endpoint",
+        "the ⟪G²⟫ interpolant of Table 4.4 rises to about 55 near ⟪x = 4.5⟫, then drops towards the endpoint",
         t55,
     ),
     claim(
         "T56",
         "4.3.5, text on Figures 4.14 and 4.15",
-        "the data of Tables 4.5/4.6 have \"a point lying on the zero axis at x = 1\" and \"several data points … exactly on … zero\"",
+        "the data of Tables 4.5/4.6 have \"a point lying on the zero axis at ⟪x = 1⟫\" and \"several data points … exactly on … zero\"",
         t56,
     ),
     claim(
         "T57",
         "4.3.5, last paragraph",
-        "with the C¹/C² schemes (4.21)/(4.25), the interpolants of data sets V/VI dip below zero (\"a high tendency to oscillate below the zero level\")",
+        "with the ⟪C¹⟫/⟪C²⟫ schemes (4.21)/(4.25), the interpolants of data sets V/VI dip below zero (\"a high tendency to oscillate below the zero level\")",
         t57,
     ),
 ];

@@ -23,7 +23,7 @@ use crate::verdict::Verdict;
 pub const CLAIMS: &[Claim] = &[claim(
     "T64",
     "(6.11)–(6.18)",
-    "the least-squares normal equations for V1, V2 and their Cramer solution",
+    "the least-squares normal equations for ⟪V1⟫, ⟪V2⟫ and their Cramer solution",
     t64,
 )];
 

@@ -24,7 +24,7 @@ pub const CLAIMS: &[Claim] = &[Claim {
     id: "T52",
     seed: Seed::S001,
     source: "4.2.1 Figure 4.6 text; 5.4.1 Figure 5.3 text",
-    statement: "for m outside (−2, 1] the curve (control points (0,0), (2,6), (6,6), (8,0)) and the surface (the printed 4×4 net, m = −4, −3, 3, 4) leave the convex hull / control net",
+    statement: "for ⟪m⟫ outside ⟪(−2, 1]⟫ the curve (control points ⟪(0,0)⟫, ⟪(2,6)⟫, ⟪(6,6)⟫, ⟪(8,0)⟫) and the surface (the printed ⟪4×4⟫ net, ⟪m = −4, −3, 3, 4⟫) leave the convex hull / control net",
     check: t52,
 }];
 

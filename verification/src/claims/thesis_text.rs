@@ -23,7 +23,7 @@ pub const CLAIMS: &[Claim] = &[
     claim(
         "T66",
         "6.8.1–6.8.12, text under each table",
-        "figures in the text derived from Tables 6.2–6.13: before/after differences, \"largest total error in segment k\", \"mostly below 1.6\", quoted averages and maxima",
+        "figures in the text derived from Tables 6.2–6.13: before/after differences, \"largest total error in segment ⟪k⟫\", \"mostly below 1.6\", quoted averages and maxima",
         t66,
     ),
     claim(
@@ -35,7 +35,7 @@ pub const CLAIMS: &[Claim] = &[
     claim(
         "T68",
         "Tables 6.2–6.13 against (3.7), (6.1), (6.2), 6.6",
-        "the four tables per letter are consistent with the stated set-up: all methods at parameter 0.6, with (3.7)(m) ≡ (6.2)(λ = m) and (6.1)(η) ≡ (6.2)(λ = η − 1) up to t ↦ 2t/π (T28); so proposed = Han and M&Q ≠ Han are expected, but the \"Before\" columns show proposed ≠ Han and M&Q = Han in 10 of 11 epsilon segments",
+        "the four tables per letter are consistent with the stated set-up: all methods at parameter 0.6, with (3.7)(⟪m⟫) ≡ (6.2)(⟪λ = m⟫) and (6.1)(⟪η⟫) ≡ (6.2)(⟪λ = η − 1⟫) up to ⟪t ↦ 2t/π⟫ (T28); so proposed = Han and M&Q ≠ Han are expected, but the \"Before\" columns show proposed ≠ Han and M&Q = Han in 10 of 11 epsilon segments",
         t68,
     ),
     claim(

@@ -25,21 +25,21 @@ pub const CLAIMS: &[Claim] = &[
         id: "T42",
         seed: Seed::S001,
         source: "1.2, 1.5",
-        statement: "each of the four bases (3.7) m ∈ (−2, 1], (6.1) η ∈ (1/2, 2], (6.2) λ ∈ [−2, 1], (6.3) α ∈ (0, 2), in its printed range, gives Bézier-like curves: endpoint interpolation, convex hull, variation diminishing, affine invariance",
+        statement: "each of the four bases (3.7) ⟪m ∈ (−2, 1]⟫, (6.1) ⟪η ∈ (1/2, 2]⟫, (6.2) ⟪λ ∈ [−2, 1]⟫, (6.3) ⟪α ∈ (0, 2)⟫, in its printed range, gives Bézier-like curves: endpoint interpolation, convex hull, variation diminishing, affine invariance",
         check: t42,
     },
     Claim {
         id: "T70",
         seed: Seed::S001,
         source: "2.2.1–2.2.2",
-        statement: "Bernstein polynomials B_{i,n} = C(n, i)tⁱ(1 − t)^{n−i} (2.2): non-negativity, partition of unity, symmetry B_{n−i,n}(t) = B_{i,n}(1 − t), recursion B_{i,n} = (1 − t)B_{i,n−1} + tB_{i−1,n−1}; Bézier curves (2.1): B(0) = P0, B(1) = Pn, B'(0) = n(P1 − P0), B'(1) = n(Pn − P_{n−1}), convex hull, variation diminishing, affine invariance (decided for every degree n = 1, …, 6)",
+        statement: "Bernstein polynomials ⟪B_{i,n} = C(n, i)tⁱ(1 − t)^{n−i}⟫ (2.2): non-negativity, partition of unity, symmetry ⟪B_{n−i,n}(t) = B_{i,n}(1 − t)⟫, recursion ⟪B_{i,n} = (1 − t)B_{i,n−1} + tB_{i−1,n−1}⟫; Bézier curves (2.1): ⟪B(0) = P0⟫, ⟪B(1) = Pn⟫, ⟪B'(0) = n(P1 − P0)⟫, ⟪B'(1) = n(Pn − P_{n−1})⟫, convex hull, variation diminishing, affine invariance (decided for every degree ⟪n = 1, …, 6⟫)",
         check: t70,
     },
     Claim {
         id: "D14",
         seed: Seed::S002,
         source: "Theorem 2 (5)",
-        statement: "b0 … b5 form a normalized totally positive basis, so the curves (2) (weights w_i > 0) have the variation diminishing property",
+        statement: "⟪b0 … b5⟫ form a normalized totally positive basis, so the curves (2) (weights ⟪w_i > 0⟫) have the variation diminishing property",
         check: d14,
     },
     Claim {
@@ -53,7 +53,7 @@ pub const CLAIMS: &[Claim] = &[
         id: "S4",
         seed: Seed::S003,
         source: "Results (b)",
-        statement: "a piece r_i(t) lies in the convex hull of p_{i+j}, and \"is convex if its control polygon is convex\", both inferred \"from the nonnegativity and mixing\"",
+        statement: "a piece ⟪r_i(t)⟫ lies in the convex hull of ⟪p_{i+j}⟫, and \"is convex if its control polygon is convex\", both inferred \"from the nonnegativity and mixing\"",
         check: s4,
     },
 ];

@@ -146,7 +146,7 @@ pub fn json_entries(entries: &[Entry], intro: &str, view: &View) -> Report {
                 seed: e.document.id.clone(),
                 seed_file: e.document.file.clone(),
                 source: e.source.clone(),
-                statement: e.statement.clone(),
+                statement: trig_tex::plain(&e.statement),
                 verdict: e.verdict.status,
                 method: e.verdict.method.clone(),
                 correction: e.verdict.correction.clone(),

@@ -1,17 +1,24 @@
-//! The LaTeX report ([`Format`] for [`super::render`]): a complete
-//! document that compiles with pdfLaTeX (and LuaLaTeX, XeLaTeX) using
-//! packages of a basic TeX installation, written with the one LaTeX writer
-//! ([`trig_tex`]). Formulas are set in math mode (expressions from their
-//! LaTeX form, statements through [`trig_tex::prose`]); long expressions
-//! are summarised as in the Markdown report ([`LONG`]); tables wrap their
-//! text columns so that they fit the page.
+//! The LaTeX report ([`Format`] for [`super::render`]): by default a
+//! fragment to `\input` into a plain `article` that loads the standard
+//! packages [`trig_tex::FRAGMENT_PACKAGES`] (with `pgfplots` too, the
+//! figures are drawn); with [`TexOptions::standalone`] a complete document.
+//! Both compile with pdfLaTeX (and LuaLaTeX, XeLaTeX), written with the one
+//! LaTeX writer ([`trig_tex`]). Formulas are set in math mode (expressions
+//! from their LaTeX form, printed statements from their markup through
+//! [`trig_tex::marked`]); long expressions are summarised as in the
+//! Markdown report ([`LONG`]); tables (`booktabs` rules) wrap their text
+//! columns at fractions of the line width, so that they fit any page.
 
 use std::fmt::Write;
+use std::path::{Component, Path, PathBuf};
 
-use trig_tex::{Column, LongTable, breakable, document, fitted_math, inline_math, prose, text};
+use trig_tex::marked::truncate;
+use trig_tex::{
+    Column, LongTable, breakable, document, fitted_math, fragment, inline_math, marked, prose, text,
+};
 
 use super::render::{Format, Tally, anchor, point_text, render};
-use super::{Document, Entry, View, short};
+use super::{Document, Entry, View};
 use crate::evidence::{Part, Witness};
 use crate::figures::Figure;
 use crate::status::Status;
@@ -19,16 +26,82 @@ use crate::status::Status;
 /// Expressions with more characters (Unicode form) are summarised.
 pub const LONG: usize = 160;
 
-/// A complete LaTeX document: summary and index as tables, then one
-/// subsection per document and one subsubsection per claim.
-pub fn tex_entries(entries: &[Entry], intro: &str, view: &View) -> String {
-    render(&Latex, entries, intro, view)
+/// How the LaTeX report is written.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct TexOptions {
+    /// A complete document instead of a fragment for `\input`.
+    pub standalone: bool,
+    /// The directory the report is written to: figures are included by
+    /// their path relative to it (`None`: the current directory, where the
+    /// figures' paths start).
+    pub output_dir: Option<PathBuf>,
+}
+
+/// The LaTeX report: summary and index as tables, then one subsection per
+/// document and one subsubsection per claim; a fragment or a complete
+/// document ([`TexOptions`]).
+pub fn tex_entries(entries: &[Entry], intro: &str, view: &View, options: &TexOptions) -> String {
+    render(&Latex { options }, entries, intro, view)
 }
 
 /// The LaTeX format of the report.
-struct Latex;
+struct Latex<'a> {
+    options: &'a TexOptions,
+}
 
-impl Format for Latex {
+/// A column of a table `fraction` of the line wide (its padding included).
+macro_rules! share {
+    ($fraction:literal) => {
+        Column::Wrap(concat!(
+            r"\dimexpr ",
+            $fraction,
+            r"\linewidth-2\tabcolsep\relax"
+        ))
+    };
+}
+
+/// The file a figure is drawn in, as LaTeX includes it: a PDF or PNG beside
+/// the SVG, else its pgfplots code; `None` when none of them exists.
+fn figure_file(f: &Figure) -> Option<(String, bool)> {
+    let pdf = f
+        .path
+        .rsplit_once('.')
+        .map(|(stem, _)| stem)
+        .unwrap_or(f.path);
+    [
+        (format!("{pdf}.pdf"), true),
+        (format!("{pdf}.png"), true),
+        (f.pgf_path(), false),
+    ]
+    .into_iter()
+    .find(|(path, _)| Path::new(path).is_file())
+}
+
+/// `target` (a path from the current directory) relative to the directory
+/// `base`; `target` itself when the two have no common root.
+fn relative(target: &str, base: Option<&Path>) -> String {
+    let Some(base) = base else {
+        return target.to_string();
+    };
+    let (Ok(to), Ok(from)) = (Path::new(target).canonicalize(), base.canonicalize()) else {
+        return target.to_string();
+    };
+    let to: Vec<Component> = to.components().collect();
+    let from: Vec<Component> = from.components().collect();
+    let common = to.iter().zip(&from).take_while(|(a, b)| a == b).count();
+    if common == 0 {
+        return target.to_string();
+    }
+    let mut out: Vec<String> = vec!["..".to_string(); from.len() - common];
+    out.extend(
+        to[common..]
+            .iter()
+            .map(|c| c.as_os_str().to_string_lossy().into_owned()),
+    );
+    out.join("/")
+}
+
+impl Format for Latex<'_> {
     const LONG: usize = LONG;
     const EQUALS: &'static str = " $=$ ";
     const DASH: &'static str = " --- ";
@@ -36,6 +109,10 @@ impl Format for Latex {
 
     fn prose(&self, text: &str) -> String {
         prose(text)
+    }
+
+    fn statement(&self, statement: &str) -> String {
+        marked(statement)
     }
 
     fn printed(&self, formula: &str) -> String {
@@ -77,14 +154,34 @@ impl Format for Latex {
         format!("{} (\\hyperlink{{method-{k}}}{{method {k}}})", prose(short))
     }
 
+    /// The figure itself when its file exists (a PDF or PNG with
+    /// `\includegraphics`, else the pgfplots code with `\input` when the
+    /// document loads pgfplots), by its path relative to where the report
+    /// is written; else where it is.
     fn figure(&self, f: &Figure) -> String {
-        format!(
-            "{} (\\texttt{{{}}}; data \\texttt{{{}}}; pgfplots \\texttt{{{}}})",
-            prose(f.caption),
-            breakable(f.path),
-            breakable(&f.data_path()),
-            breakable(&f.pgf_path())
-        )
+        let base = self.options.output_dir.as_deref();
+        let reference = format!(
+            "\\texttt{{{}}}; data \\texttt{{{}}}; pgfplots \\texttt{{{}}}",
+            breakable(&relative(f.path, base)),
+            breakable(&relative(&f.data_path(), base)),
+            breakable(&relative(&f.pgf_path(), base))
+        );
+        let caption = prose(f.caption);
+        match figure_file(f) {
+            None => format!("{caption} ({reference})"),
+            Some((file, true)) => {
+                let file = relative(&file, base);
+                // braces around the name: dots in it are not its extension
+                let (stem, ext) = file.rsplit_once('.').unwrap_or((&file, ""));
+                format!(
+                    "{caption} ({reference})\\par\n\\begin{{center}}\\includegraphics[width=\\linewidth,height=0.4\\textheight,keepaspectratio]{{{{{stem}}}.{ext}}}\\end{{center}}"
+                )
+            }
+            Some((file, false)) => format!(
+                "{caption} ({reference})\\par\n\\ifdefined\\pgfplotsset\n\\begin{{center}}\\fitbox{{\\input{{{}}}}}\\end{{center}}\n\\else\n(the figure is drawn when the document loads \\texttt{{pgfplots}})\n\\fi",
+                relative(&file, base)
+            ),
+        }
     }
 
     fn start(&self, out: &mut String, intro: &str, note: Option<&str>) {
@@ -124,12 +221,17 @@ impl Format for Latex {
 
     fn index(&self, out: &mut String, entries: &[&Entry], linked: bool) {
         let _ = writeln!(out, "\\subsection*{{Index}}\n");
-        let columns = ["1.1cm", "2.2cm", "0.8cm", "3.2cm", "7.4cm"].map(Column::Wrap);
+        let columns = vec![
+            share!("0.10"),
+            share!("0.17"),
+            share!("0.09"),
+            share!("0.20"),
+            share!("0.44"),
+        ];
         let head = ["claim", "verdict", "doc.", "source", "printed"].map(String::from);
-        let mut table =
-            LongTable::new(columns.to_vec(), "One line per claim".into(), head.to_vec())
-                .unnumbered()
-                .small();
+        let mut table = LongTable::new(columns, "One line per claim".into(), head.to_vec())
+            .unnumbered()
+            .small();
         for e in entries {
             let id = if linked {
                 format!("\\hyperlink{{{}}}{{{}}}", anchor(&e.id), text(&e.id))
@@ -141,7 +243,7 @@ impl Format for Latex {
                 e.verdict.status.to_string(),
                 text(&e.document.id),
                 prose(&e.source),
-                prose(&short(&e.statement, 120)),
+                marked(&truncate(&e.statement, 120)),
             ]);
         }
         let _ = writeln!(out, "{table}");
@@ -209,7 +311,11 @@ impl Format for Latex {
     }
 
     fn finish(&self, out: String) -> String {
-        document(&out)
+        if self.options.standalone {
+            document(&out)
+        } else {
+            fragment("trig-audit report (LaTeX fragment)", &out)
+        }
     }
 }
 
@@ -220,14 +326,15 @@ mod tests {
 
     #[test]
     fn tex_report_has_summary_index_and_one_subsection_per_document() {
-        let tex = tex_entries(
-            &[
-                entry("A1", doc("b", 5), Status::Fails),
-                entry("A2", doc("a", 1), Status::Holds),
-            ],
-            "intro",
-            &View::default(),
-        );
+        let entries = [
+            entry("A1", doc("b", 5), Status::Fails),
+            entry("A2", doc("a", 1), Status::Holds),
+        ];
+        let standalone = TexOptions {
+            standalone: true,
+            output_dir: None,
+        };
+        let tex = tex_entries(&entries, "intro", &View::default(), &standalone);
         assert!(tex.starts_with("\\documentclass"));
         assert!(tex.trim_end().ends_with("\\end{document}"));
         let a = tex.find("\\subsection*{Spec a --- $t_{1}$}").unwrap();
@@ -236,6 +343,33 @@ mod tests {
         assert!(tex.contains("\\textbf{all} & 2 & 1 & 1 & 0 & 0 \\\\"));
         assert!(tex.contains("\\hyperlink{claim-a1}{A1} & fails"));
         assert!(tex.contains("residual $=$ $m^{2} - 4$"), "{tex}");
+        assert!(tex.contains("\\toprule") && !tex.contains("\\hline"));
         assert!(tex.is_ascii(), "every character mapped");
+        // the default: a fragment, the same body without a preamble
+        let part = tex_entries(&entries, "intro", &View::default(), &TexOptions::default());
+        assert!(part.starts_with("% trig-audit report"));
+        assert!(!part.contains("\\documentclass") && !part.contains("\\begin{document}"));
+        assert!(part.contains("\\hyperlink{claim-a1}{A1} & fails"));
+    }
+
+    #[test]
+    fn statements_are_set_from_their_markup() {
+        let mut e = entry("A1", doc("a", 1), Status::Holds);
+        e.statement = "reading of T4 (A45): ⟪R''(π/2) = tan α⟫".into();
+        let tex = tex_entries(&[e], "intro", &View::default(), &TexOptions::default());
+        assert!(
+            tex.contains(r"reading of T4 (A45): $R''(\frac{\pi}{2}) = \tan \alpha$"),
+            "{tex}"
+        );
+    }
+
+    #[test]
+    fn paths_are_relative_to_the_output_directory() {
+        let here = std::env::current_dir().unwrap();
+        let dir = here.join("src");
+        assert_eq!(relative("Cargo.toml", Some(&dir)), "../Cargo.toml");
+        assert_eq!(relative("src/lib.rs", Some(&here)), "src/lib.rs");
+        assert_eq!(relative("src/lib.rs", None), "src/lib.rs");
+        assert_eq!(relative("no/such/file", Some(&dir)), "no/such/file");
     }
 }

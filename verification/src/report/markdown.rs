@@ -7,6 +7,8 @@
 
 use std::fmt::Write;
 
+use trig_tex::plain;
+
 use super::render::{Format, Tally, anchor, point_text, render};
 use super::{Document, Entry, View, short};
 use crate::evidence::{Part, Witness};
@@ -56,7 +58,11 @@ impl Format for Markdown {
     const NESTED: &'static str = " › ";
 
     fn prose(&self, text: &str) -> String {
-        md_text(text)
+        md_text(&plain(text))
+    }
+
+    fn statement(&self, marked: &str) -> String {
+        md_text(&plain(marked))
     }
 
     fn printed(&self, formula: &str) -> String {
@@ -149,7 +155,7 @@ impl Format for Markdown {
                 let id = format!("[{}](#{})", e.id, anchor(&e.id));
                 row([id, status.to_string(), doc.clone(), source])
             } else {
-                let printed = md_text(&short(&e.statement, 90));
+                let printed = md_text(&short(&plain(&e.statement), 90));
                 row([
                     e.id.clone(),
                     status.to_string(),

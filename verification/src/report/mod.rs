@@ -25,7 +25,7 @@ use crate::status::Status;
 use crate::verdict::Verdict;
 
 pub use json::{Report, SCHEMA_VERSION, json_entries, schema};
-pub use latex::tex_entries;
+pub use latex::{TexOptions, tex_entries};
 pub use markdown::markdown_entries;
 
 /// The opening sentence of the built-in report.
@@ -68,7 +68,8 @@ pub struct Entry {
     pub document: Document,
     /// Equation or section.
     pub source: String,
-    /// The statement as printed.
+    /// The statement as printed, its formulas marked
+    /// ([`trig_tex::marked`]; [`trig_tex::plain`] is the text as printed).
     pub statement: String,
     pub verdict: Verdict,
     /// A figure supporting the verdict ([`crate::figures`]).
@@ -196,9 +197,18 @@ pub fn json(outcomes: &[Outcome]) -> Report {
     json_entries(&entries(outcomes), BUILTIN_INTRO, &View::default())
 }
 
-/// The built-in report as a LaTeX document.
+/// The built-in report as a complete LaTeX document.
 pub fn tex(outcomes: &[Outcome]) -> String {
-    tex_entries(&entries(outcomes), BUILTIN_INTRO, &View::default())
+    let standalone = TexOptions {
+        standalone: true,
+        output_dir: None,
+    };
+    tex_entries(
+        &entries(outcomes),
+        BUILTIN_INTRO,
+        &View::default(),
+        &standalone,
+    )
 }
 
 #[cfg(test)]

@@ -43,8 +43,10 @@ pub(crate) trait Format {
     /// Between the names of nested parts.
     const NESTED: &'static str;
 
-    /// Prose, with its formulas (a statement, a label, a note).
+    /// Prose, with its formulas (a label, a note).
     fn prose(&self, text: &str) -> String;
+    /// A printed statement, its formulas marked ([`trig_tex::marked`]).
+    fn statement(&self, marked: &str) -> String;
     /// A formula as printed in the source (transcribed text).
     fn printed(&self, formula: &str) -> String;
     /// Emphasised text (a status).
@@ -129,7 +131,7 @@ fn entry<F: Format>(f: &F, out: &mut String, e: &Entry, method: usize) {
     let v = &e.verdict;
     f.heading(out, e);
     f.field(out, "Source", &f.prose(&e.source));
-    f.field(out, "Printed", &f.prose(&e.statement));
+    f.field(out, "Printed", &f.statement(&e.statement));
     f.field(out, "How", &f.method(&method_short(&v.method), method));
     if let Some(corr) = &v.correction {
         f.field(out, "Correction", &f.prose(corr));

@@ -63,6 +63,9 @@ pub struct AuditArgs {
     /// Write the report to this file (atomically) instead of standard output (`-`: standard output).
     #[arg(long)]
     output: Option<PathBuf>,
+    /// With --format tex: a complete document (preamble and all) instead of a fragment to \input into an article loading amsmath, amssymb, booktabs, longtable, array, graphicx.
+    #[arg(long)]
+    standalone: bool,
     /// With --spec: seconds each claim's decision may take (0.1 to 3600);
     /// a decision that runs over is cut off: listed as not decided, without
     /// a verdict (verdicts come from counted budgets, the same anywhere).
@@ -123,6 +126,11 @@ pub fn run(args: &AuditArgs) -> CmdResult {
             args.claim.as_deref().unwrap_or("")
         )));
     }
+    if args.standalone && args.format != ReportFormat::Tex {
+        return Err(CliError::Usage(
+            "--standalone applies to --format tex (a complete LaTeX document)".into(),
+        ));
+    }
     let view = View {
         summary_only: args.summary,
         verdicts: args.verdict.iter().map(|v| Status::from(*v)).collect(),
@@ -136,7 +144,22 @@ pub fn run(args: &AuditArgs) -> CmdResult {
             s.push('\n');
             s
         }
-        ReportFormat::Tex => report::tex_entries(&entries, &intro, &view),
+        ReportFormat::Tex => {
+            // figures are included by their path from where the report is written
+            let output_dir =
+                args.output
+                    .as_deref()
+                    .filter(|p| p.as_os_str() != "-")
+                    .map(|p| match p.parent() {
+                        Some(dir) if !dir.as_os_str().is_empty() => dir.to_path_buf(),
+                        _ => PathBuf::from("."),
+                    });
+            let options = report::TexOptions {
+                standalone: args.standalone,
+                output_dir,
+            };
+            report::tex_entries(&entries, &intro, &view, &options)
+        }
     };
     match &args.output {
         // `--output -` is standard output

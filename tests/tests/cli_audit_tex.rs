@@ -1,0 +1,92 @@
+//! `audit --format tex`: a fragment for `\input` by default, a complete
+//! document with `--standalone`; figures included by their path relative to
+//! where the report is written, or named when their file is not there.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use trig_e2e::{binary, error_line, stdout_ok};
+
+/// The workspace root (where the figures' paths start).
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .expect("workspace root")
+        .to_path_buf()
+}
+
+/// Runs `trig-audit` in `dir`, asserting success.
+fn run_in(dir: &Path, args: &[&str]) {
+    let out = Command::new(binary())
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .expect("run trig-audit");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+#[test]
+fn a_fragment_by_default_a_document_with_standalone() {
+    let part = stdout_ok(&["audit", "--seed", "004", "--format", "tex"]);
+    assert!(part.starts_with("% trig-audit report"), "{part}");
+    assert!(part.contains("amsmath,amssymb,booktabs,longtable,array,graphicx"));
+    assert!(!part.contains("\\documentclass") && !part.contains("\\begin{document}"));
+    assert!(part.contains("\\toprule") && !part.contains("\\hline"));
+    let whole = stdout_ok(&["audit", "--seed", "004", "--format", "tex", "--standalone"]);
+    assert!(whole.starts_with("\\documentclass"));
+    assert!(whole.trim_end().ends_with("\\end{document}"));
+    let bad = error_line(&["audit", "--seed", "004", "--standalone"]);
+    assert!(
+        bad.contains("--standalone applies to --format tex"),
+        "{bad}"
+    );
+    let body = |t: &str| t[t.find("\\section*").expect("a title")..].to_string();
+    assert!(
+        body(&whole).starts_with(&body(&part)[..200]),
+        "the same report"
+    );
+}
+
+#[test]
+fn figures_are_included_relative_to_the_output_directory() {
+    let out = std::env::temp_dir().join(format!("trig-audit-tex-{}", std::process::id()));
+    let sub = out.join("paper");
+    std::fs::create_dir_all(&sub).unwrap();
+    let file = sub.join("report.tex");
+    let file_arg = file.display().to_string();
+    run_in(
+        &root(),
+        &[
+            "audit", "--claim", "T7", "--format", "tex", "--output", &file_arg,
+        ],
+    );
+    let tex = std::fs::read_to_string(&file).unwrap();
+    let included = tex
+        .split("\\input{")
+        .nth(1)
+        .and_then(|rest| rest.split('}').next())
+        .unwrap_or_else(|| panic!("the figure is included: {tex}"));
+    assert!(!Path::new(included).is_absolute(), "{included}");
+    assert!(included.ends_with("audit-T7-thesis-cubic-outside-range.tex"));
+    assert!(
+        sub.join(included).is_file(),
+        "{included} from {}",
+        sub.display()
+    );
+    // run elsewhere, the figure file is not there: named, not included
+    run_in(
+        &out,
+        &[
+            "audit", "--claim", "T7", "--format", "tex", "--output", &file_arg,
+        ],
+    );
+    let tex = std::fs::read_to_string(&file).unwrap();
+    assert!(!tex.contains("\\input{"), "{tex}");
+    let named = tex.replace("\\allowbreak{}", "");
+    assert!(named.contains("docs/figures/audit-T7-thesis-cubic-outside-range.tex"));
+    let _ = std::fs::remove_dir_all(&out);
+}
