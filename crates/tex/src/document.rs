@@ -3,8 +3,8 @@
 //! equations.
 
 /// The preamble of every LaTeX document trig-audit writes (reports and
-/// tables): page, fonts, math, tables, links; the column type `L` of
-/// [`crate::Column::Wrap`] and the command of [`crate::fitted_math`].
+/// tables): page, fonts, math, tables, links; the command of
+/// [`crate::fitted_math`].
 pub const PREAMBLE: &str = r"\documentclass[a4paper,10pt]{article}
 \usepackage{iftex}
 \ifPDFTeX
@@ -14,6 +14,7 @@ pub const PREAMBLE: &str = r"\documentclass[a4paper,10pt]{article}
 \fi
 \usepackage{amsmath,amssymb}
 \usepackage{array,longtable,graphicx}
+\usepackage{booktabs}
 \usepackage[margin=2cm]{geometry}
 \IfFileExists{hyperref.sty}{\usepackage[hidelinks]{hyperref}}{%
   \providecommand{\hypertarget}[2]{#2}\providecommand{\hyperlink}[2]{#2}}
@@ -21,7 +22,6 @@ pub const PREAMBLE: &str = r"\documentclass[a4paper,10pt]{article}
 \setlength{\parskip}{3pt}
 \setlength{\emergencystretch}{3em}
 \sloppy
-\newcolumntype{L}[1]{>{\raggedright\arraybackslash}p{#1}}
 % a long formula on its own line, scaled down only if wider than the line
 \newcommand{\fitmath}[1]{\par\noindent\resizebox{\ifdim\width>\linewidth\linewidth\else\width\fi}{!}{$\displaystyle #1$}\par}
 ";

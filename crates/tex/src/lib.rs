@@ -12,9 +12,11 @@
 //! - Math: [`math`] turns Unicode formula text (`H_{2−i}(π/2 − u; β)`) into
 //!   LaTeX math; [`inline_math`] and [`fitted_math`] set a formula in text.
 //! - Expressions: [`expr`] spells names, powers, fractions and numbers.
-//! - Tables: [`LongTable`] with its [`Column`]s, [`column_name`].
+//! - Tables: [`LongTable`] with its [`Column`]s, [`column_name`]; the
+//!   tables of values of `table --format tex`, [`value_tables`].
 //! - Documents: [`PREAMBLE`], [`document`], [`comment`], [`align`];
-//!   [`compile`] runs `pdflatex` for the tests.
+//!   fragments to `\input` and plain articles around them ([`input_note`],
+//!   [`article`]); [`compile`] runs `pdflatex` for the tests.
 //!
 //! The output is ASCII and compiles with pdfLaTeX (and LuaLaTeX, XeLaTeX)
 //! using the packages of a basic TeX installation. The crate depends on
@@ -23,6 +25,7 @@
 mod compile;
 mod document;
 pub mod expr;
+mod fragment;
 mod math;
 pub mod symbols;
 mod table;
@@ -30,7 +33,8 @@ mod text;
 
 pub use compile::{CompileLog, compile};
 pub use document::{PREAMBLE, align, comment, document};
+pub use fragment::{article, input_note};
 pub use math::{fitted_math, inline_math, math};
 pub use symbols::unmapped;
-pub use table::{Column, LongTable, column_name};
+pub use table::{Column, LongTable, TABLE_PACKAGES, ValueTable, column_name, value_tables};
 pub use text::{breakable, prose, text};
