@@ -200,9 +200,9 @@ fn tick(v: f64) -> String {
     text.replace('-', "−")
 }
 
-/// Decimals enough for a tick value (at most 6, none trailing beyond one).
+/// Decimals enough for a tick value (at most 6, none trailing).
 fn decimals(v: f64) -> usize {
-    (1..=6)
+    (0..=6)
         .find(|&d| {
             let scale = 10f64.powi(d as i32);
             ((v * scale).round() - v * scale).abs() < 1e-6 * scale.max(1.0)
@@ -304,8 +304,8 @@ mod tests {
     #[test]
     fn tick_labels_have_a_real_minus_sign_and_few_decimals() {
         assert_eq!(tick(-0.2), "−0.2");
-        assert_eq!(tick(1.0), "1.0");
-        assert_eq!(tick(-150.0), "−150.0");
+        assert_eq!(tick(1.0), "1");
+        assert_eq!(tick(-150.0), "−150");
         assert_eq!(tick(0.125), "0.125");
     }
 }
