@@ -72,6 +72,8 @@ fn table_fragments_use_standard_packages_and_real_fractions() {
             && whole.ends_with("\\end{document}\n"),
         "{whole}"
     );
+    let refused = error_line(&["table", "thesis-cubic", "--standalone"]);
+    assert!(refused.contains("--format tex"), "{refused}");
 }
 
 #[test]

@@ -127,6 +127,11 @@ fn wrt_of(text: &str, family: &AnyBasis) -> Result<Wrt, CliError> {
 }
 
 pub fn run(args: &TableArgs) -> CmdResult {
+    if args.standalone && args.format != TableFormat::Tex {
+        return Err(CliError::Usage(
+            "--standalone writes a whole LaTeX document: it goes with --format tex".into(),
+        ));
+    }
     let family = AnyBasis::open(args.family.as_deref(), args.spec.as_deref())?;
     let wrt = wrt_of(&args.wrt, &family)?;
     let id = family.id();
