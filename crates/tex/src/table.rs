@@ -19,17 +19,30 @@ pub enum Column {
     Left,
     /// Right-aligned, as wide as its widest entry (`r`).
     Right,
-    /// Ragged-right text wrapping at this width (a LaTeX length: `p{width}`
-    /// with every cell `\raggedright`).
+    /// Ragged-right text wrapping at this width (a LaTeX length): with the
+    /// `array` package `>{\raggedright\arraybackslash}p{width}`, with
+    /// standard packages only ([`LongTable::standard_packages`]) `p{width}`
+    /// and every cell opened by `\raggedright` (in the last column
+    /// `\raggedright\let\\\tabularnewline`, what `\arraybackslash` does:
+    /// `\\` still ends the row).
     Wrap(&'static str),
 }
 
-impl fmt::Display for Column {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+/// What opens a cell of a wrapping column in a table without `array`: in
+/// the last column, and in the others.
+const RAGGED_LAST_CELL: &str = r"\raggedright\let\\\tabularnewline ";
+const RAGGED_CELL: &str = r"\raggedright ";
+
+impl Column {
+    /// The column's letter (with `array`, `>{…}` for a wrapping column).
+    fn spec(&self, array: bool) -> String {
         match self {
-            Column::Left => f.write_str("l"),
-            Column::Right => f.write_str("r"),
-            Column::Wrap(width) => write!(f, "p{{{width}}}"),
+            Column::Left => "l".into(),
+            Column::Right => "r".into(),
+            Column::Wrap(width) if array => {
+                format!(r">{{\raggedright\arraybackslash}}p{{{width}}}")
+            }
+            Column::Wrap(width) => format!("p{{{width}}}"),
         }
     }
 }
@@ -42,6 +55,7 @@ pub struct LongTable {
     caption: String,
     numbered: bool,
     small: bool,
+    array: bool,
     head: Vec<String>,
     body: Vec<Vec<String>>,
     foot: Vec<Vec<String>>,
@@ -55,6 +69,7 @@ impl LongTable {
             caption,
             numbered: true,
             small: false,
+            array: true,
             head,
             body: Vec::new(),
             foot: Vec::new(),
@@ -73,6 +88,13 @@ impl LongTable {
         self
     }
 
+    /// The same table for a document with standard packages only
+    /// (`longtable`, `booktabs`): no column type of the `array` package.
+    pub fn standard_packages(mut self) -> LongTable {
+        self.array = false;
+        self
+    }
+
     /// Appends a row of the body.
     pub fn row(&mut self, cells: Vec<String>) {
         self.body.push(cells);
@@ -84,18 +106,23 @@ impl LongTable {
     }
 }
 
-/// A row: cells of wrapping columns ragged right, ended by
-/// `\tabularnewline` (a `\\` would end the ragged paragraph instead).
-fn row(f: &mut fmt::Formatter<'_>, columns: &[Column], cells: &[String]) -> fmt::Result {
-    let cells: Vec<String> = cells
-        .iter()
-        .zip(columns.iter().chain(std::iter::repeat(&Column::Left)))
-        .map(|(cell, column)| match column {
-            Column::Wrap(_) => format!("\\raggedright {cell}"),
-            _ => cell.clone(),
-        })
-        .collect();
-    writeln!(f, "{} \\tabularnewline", cells.join(" & "))
+impl LongTable {
+    /// A row: without `array`, the cells of wrapping columns opened by
+    /// [`RAGGED_CELL`] ([`RAGGED_LAST_CELL`] in the last column).
+    fn write_row(&self, f: &mut fmt::Formatter<'_>, cells: &[String]) -> fmt::Result {
+        let last = self.columns.len().saturating_sub(1);
+        let cells: Vec<String> = cells
+            .iter()
+            .zip(self.columns.iter().chain(std::iter::repeat(&Column::Left)))
+            .enumerate()
+            .map(|(k, (cell, column))| match column {
+                Column::Wrap(_) if !self.array && k == last => format!("{RAGGED_LAST_CELL}{cell}"),
+                Column::Wrap(_) if !self.array => format!("{RAGGED_CELL}{cell}"),
+                _ => cell.clone(),
+            })
+            .collect();
+        writeln!(f, "{} \\\\", cells.join(" & "))
+    }
 }
 
 impl fmt::Display for LongTable {
@@ -103,23 +130,19 @@ impl fmt::Display for LongTable {
         if self.small {
             writeln!(f, "{{\\small")?;
         }
-        let columns: String = self.columns.iter().map(Column::to_string).collect();
+        let columns: String = self.columns.iter().map(|c| c.spec(self.array)).collect();
         writeln!(f, "\\begin{{longtable}}{{@{{}}{columns}@{{}}}}")?;
         let star = if self.numbered { "" } else { "*" };
-        writeln!(
-            f,
-            "\\caption{star}{{{}}}\\tabularnewline\n\\toprule",
-            self.caption
-        )?;
-        row(f, &self.columns, &self.head)?;
+        writeln!(f, "\\caption{star}{{{}}}\\\\\n\\toprule", self.caption)?;
+        self.write_row(f, &self.head)?;
         writeln!(f, "\\midrule\n\\endhead")?;
         for cells in &self.body {
-            row(f, &self.columns, cells)?;
+            self.write_row(f, cells)?;
         }
         if !self.foot.is_empty() {
             writeln!(f, "\\midrule")?;
             for cells in &self.foot {
-                row(f, &self.columns, cells)?;
+                self.write_row(f, cells)?;
             }
         }
         writeln!(f, "\\bottomrule\n\\end{{longtable}}")?;
@@ -198,7 +221,8 @@ impl ValueTable {
         if widest.iter().sum::<f64>() + gaps <= TEXT_WIDTH {
             let mut head = vec![prose(&self.corner)];
             head.extend(self.columns.iter().map(|c| column_name(c)));
-            let mut t = LongTable::new(vec![Column::Left; widest.len()], caption, head);
+            let mut t =
+                LongTable::new(vec![Column::Left; widest.len()], caption, head).standard_packages();
             for (label, cells) in &self.rows {
                 let mut row = vec![prose(label)];
                 row.extend(cells.iter().map(|c| inline_math(&cell_math(c, TEXT_WIDTH))));
@@ -207,7 +231,7 @@ impl ValueTable {
             return t;
         }
         let head = vec![prose(&self.corner), "entry".into(), "value".into()];
-        let mut t = LongTable::new(ENTRY_COLUMNS.to_vec(), caption, head);
+        let mut t = LongTable::new(ENTRY_COLUMNS.to_vec(), caption, head).standard_packages();
         for (label, cells) in &self.rows {
             for (column, cell) in self.columns.iter().zip(cells) {
                 t.row(vec![
@@ -253,7 +277,16 @@ mod tests {
         t.foot(["x", "y", "z"].map(String::from).to_vec());
         assert_eq!(
             t.to_string(),
-            "{\\small\n\\begin{longtable}{@{}lrp{2cm}@{}}\n\\caption*{T}\\tabularnewline\n\\toprule\na & b & \\raggedright c \\tabularnewline\n\\midrule\n\\endhead\n1 & 2 & \\raggedright 3 \\tabularnewline\n\\midrule\nx & y & \\raggedright z \\tabularnewline\n\\bottomrule\n\\end{longtable}\n}\n"
+            "{\\small\n\\begin{longtable}{@{}lr>{\\raggedright\\arraybackslash}p{2cm}@{}}\n\\caption*{T}\\\\\n\\toprule\na & b & c \\\\\n\\midrule\n\\endhead\n1 & 2 & 3 \\\\\n\\midrule\nx & y & z \\\\\n\\bottomrule\n\\end{longtable}\n}\n"
+        );
+        let mut t = LongTable::new(vec![Column::Wrap("2cm")], "T".into(), vec!["a".into()])
+            .standard_packages();
+        t.row(vec!["1".into()]);
+        assert!(
+            t.to_string().contains("{@{}p{2cm}@{}}")
+                && t.to_string()
+                    .contains("\\raggedright\\let\\\\\\tabularnewline 1 \\\\\n"),
+            "{t}"
         );
         assert_eq!(column_name("b0"), "$b_{0}$");
         assert_eq!(column_name("derivative"), "derivative");
