@@ -61,9 +61,9 @@ fn every_linked_figure_is_drawn_by_its_command_and_committed() {
     let _ = std::fs::remove_dir_all(&scratch);
 }
 
-/// Compiles the pgfplots code `pgf` in a minimal document with pdflatex in
-/// the directory `dir`, when pdflatex (with pgfplots) is on the machine;
-/// says so when not.
+/// Compiles the pgfplots code `pgf` in a figure of a plain article with
+/// pdflatex in the directory `dir` (no error, no overfull box), when
+/// pdflatex (with pgfplots) is on the machine; says so when not.
 fn compiles(pgf: &Path, dir: &Path, claim: &str) {
     let available = Command::new("kpsewhich")
         .arg("pgfplots.sty")
@@ -81,7 +81,7 @@ fn compiles(pgf: &Path, dir: &Path, claim: &str) {
     std::fs::write(
         &doc,
         format!(
-            "\\documentclass{{article}}\n\\usepackage[margin=2cm]{{geometry}}\n\\usepackage{{pgfplots}}\n\\pgfplotsset{{compat=1.16}}\n\\begin{{document}}\n\\input{{{name}}}\n\\end{{document}}\n"
+            "\\documentclass{{article}}\n\\usepackage{{pgfplots}}\n\\pgfplotsset{{compat=1.16}}\n\\begin{{document}}\n\\begin{{figure}}\n\\centering\n\\input{{{name}}}\n\\caption{{C}}\n\\end{{figure}}\n\\end{{document}}\n"
         ),
     )
     .expect("document written");
@@ -96,6 +96,11 @@ fn compiles(pgf: &Path, dir: &Path, claim: &str) {
     assert!(
         !log.contains("Missing character"),
         "{claim}: a character is missing:\n{log}"
+    );
+    // a default article's text width, no margin added
+    assert!(
+        !log.contains("Overfull"),
+        "{claim}: wider than the text:\n{log}"
     );
     assert!(
         doc.with_extension("pdf").exists(),

@@ -190,9 +190,10 @@ fn plots_are_written_as_svg() {
         // (args, file, polylines of ≥ 20 points = solid curve series; a
         // dashed curve is drawn as short pieces)
         (
+            // a colour per function, the first value solid, the others dashed
             vec!["basis".into(), "--family".into(), "majeed-qayyum".into()],
             out("basis.svg"),
-            4 * 4,
+            4,
         ),
         (
             vec![

@@ -74,7 +74,7 @@ fn every_format_renders() {
     let tex = stdout_ok(&[&base[..], &["--format", "tex"]].concat());
     assert!(
         tex.contains("\\begin{longtable}")
-            && tex.contains("\\caption{start of the domain}")
+            && tex.contains("exact; start of the domain}")
             && tex.contains("$b_{0}$")
             && tex.contains("$-m - 2$"),
         "{tex}"
@@ -171,9 +171,10 @@ fn bad_table_requests_are_one_line_errors() {
     assert_errors(cases);
 }
 
-/// The LaTeX tables are complete documents that compile with pdflatex and
-/// fit the page — the rational curve table too (set one entry per line, its
-/// fractions inline so that they break) — when `pdflatex` is on the machine.
+/// With `--standalone` the LaTeX tables are complete plain articles that
+/// compile with pdflatex and fit the page — the rational curve table too
+/// (set one entry per line, its long fractions inline so that they break)
+/// — when `pdflatex` is on the machine.
 #[test]
 fn latex_tables_compile() {
     for (name, args) in [
@@ -190,8 +191,11 @@ fn latex_tables_compile() {
             ][..],
         ),
     ] {
-        let tex = stdout_ok(&[args, &["--format", "tex"]].concat());
-        assert!(tex.starts_with("\\documentclass") && tex.ends_with("\\end{document}\n"));
+        let tex = stdout_ok(&[args, &["--format", "tex", "--standalone"]].concat());
+        assert!(
+            tex.starts_with("\\documentclass{article}\n") && tex.ends_with("\\end{document}\n"),
+            "{tex}"
+        );
         match trig_tex::compile(&tex, &format!("table-{name}")) {
             Some(log) => {
                 assert!(log.errors.is_empty(), "{name}: {:#?}", log.errors);

@@ -11,6 +11,7 @@ mod cli_hostile;
 mod cli_hostile_round2;
 mod cli_interp;
 mod cli_join;
+mod cli_paste;
 mod cli_spec;
 mod cli_spec_engine;
 mod cli_spec_features;

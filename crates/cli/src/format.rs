@@ -3,8 +3,7 @@
 use std::fmt::Write;
 
 use clap::ValueEnum;
-use trig_tex::expr::inline_fractions;
-use trig_tex::{Column, LongTable, column_name, document, inline_math, prose};
+use trig_tex::{ValueTable, value_tables};
 
 use crate::cell::Block;
 use crate::commands::CliError;
@@ -32,11 +31,13 @@ pub enum TableFormat {
     Json,
 }
 
-/// Renders blocks under a heading in the chosen format.
+/// Renders blocks under a heading in the chosen format (LaTeX as a
+/// fragment to `\input`, or a whole document when `standalone`).
 pub fn render_blocks(
     heading: &str,
     blocks: &[Block],
     format: TableFormat,
+    standalone: bool,
 ) -> Result<String, CliError> {
     let mut out = String::new();
     match format {
@@ -53,7 +54,7 @@ pub fn render_blocks(
                 out.push('\n');
             }
         }
-        TableFormat::Tex => out = tex_document(heading, blocks),
+        TableFormat::Tex => out = tex_tables(heading, blocks, standalone),
         TableFormat::Csv => {
             let rows = blocks.iter().flat_map(|b| {
                 b.rows.iter().flat_map(move |(label, cells)| {
@@ -108,65 +109,29 @@ where
     String::from_utf8(bytes).map_err(|e| CliError::Usage(format!("cannot write CSV: {e}")))
 }
 
-/// Characters of the widest table set with `l` columns (wider ones are set
-/// one entry per line, the value in a wrapping column).
-const TEX_WIDE: usize = 90;
-
-/// A complete LaTeX document (the report's preamble): the heading as a
-/// section, each block as a captioned `longtable`. A block whose entries
-/// fit the line keeps its rows and columns; a wider one is set one entry
-/// per line (row, column, value), the value wrapping at its operators.
-fn tex_document(heading: &str, blocks: &[Block]) -> String {
-    let mut out = String::new();
-    let _ = writeln!(out, "\\section*{{{}}}\n", prose(heading));
-    for b in blocks {
-        let width = |s: &str| s.chars().count();
-        let widest = |k: usize| {
-            b.rows
+/// The blocks as LaTeX tables of values under `heading` (the one LaTeX
+/// writer, [`value_tables`]): a fragment to `\input`, or with
+/// `standalone` a whole plain `article`.
+fn tex_tables(heading: &str, blocks: &[Block], standalone: bool) -> String {
+    let tables: Vec<ValueTable> = blocks
+        .iter()
+        .map(|b| ValueTable {
+            title: b.title.clone(),
+            corner: b.corner.clone(),
+            columns: b.columns.clone(),
+            rows: b
+                .rows
                 .iter()
-                .filter_map(|(_, cells)| cells.get(k))
-                .map(|c| width(&c.unicode))
-                .chain([width(&b.columns[k])])
-                .max()
-                .unwrap_or(0)
-        };
-        let labels = b
-            .rows
-            .iter()
-            .map(|(l, _)| width(l))
-            .chain([width(&b.corner)])
-            .max()
-            .unwrap_or(0);
-        let total = labels + (0..b.columns.len()).map(widest).sum::<usize>() + 3 * b.columns.len();
-        let caption = prose(&b.title);
-        let table = if total <= TEX_WIDE {
-            let mut head = vec![prose(&b.corner)];
-            head.extend(b.columns.iter().map(|c| column_name(c)));
-            let mut t = LongTable::new(vec![Column::Left; b.columns.len() + 1], caption, head);
-            for (label, cells) in &b.rows {
-                let mut row = vec![prose(label)];
-                row.extend(cells.iter().map(|c| inline_math(&c.latex)));
-                t.row(row);
-            }
-            t
-        } else {
-            let columns = ["1.2cm", "2cm", "12.4cm"].map(Column::Wrap).to_vec();
-            let head = vec![prose(&b.corner), "entry".into(), "value".into()];
-            let mut t = LongTable::new(columns, caption, head);
-            for (label, cells) in &b.rows {
-                for (col, cell) in b.columns.iter().zip(cells) {
-                    t.row(vec![
-                        prose(label),
-                        column_name(col),
-                        inline_math(&inline_fractions(&cell.latex)),
-                    ]);
-                }
-            }
-            t
-        };
-        let _ = writeln!(out, "{table}");
-    }
-    document(&out)
+                .map(|(label, cells)| {
+                    (
+                        label.clone(),
+                        cells.iter().map(|c| c.latex.clone()).collect(),
+                    )
+                })
+                .collect(),
+        })
+        .collect();
+    value_tables(heading, &tables, standalone)
 }
 
 #[cfg(test)]

@@ -3,11 +3,11 @@
 
 use trig_core::Affine;
 
-use crate::chart::{Frame, Look, Mark, Series};
+use crate::chart::{Frame, Look, Series};
 use crate::error::{PlotError, Result};
 use crate::picture::Picture;
 use crate::plotted::Plotted;
-use crate::style::{CURVE, colour, padded};
+use crate::style::{CURVE, GREY, colour, dash, padded};
 
 /// The curves of one setting, one per function.
 type Curves = Vec<Vec<(f64, f64)>>;
@@ -15,10 +15,12 @@ type Curves = Vec<Vec<(f64, f64)>>;
 /// Points per function.
 const SAMPLES: usize = 201;
 
-/// Every function of a basis over its domain, one colour per parameter
-/// setting of `plot` (one setting, no parameters, for a basis without
-/// them). Series: (functions) × settings curves; settings whose functions
-/// coincide are drawn once, labelled with every value (`λ = 0, 1`).
+/// Every function of a basis over its domain: a colour per function, a
+/// line style (solid, dashed, dotted, …) per parameter setting of `plot`
+/// (one setting, no parameters, for a basis without them). Series:
+/// (functions) × settings curves; settings whose functions coincide are
+/// drawn once, labelled with every value (`λ = 0, 1`). The legend lists
+/// the functions by colour, then the settings by line style.
 pub fn basis_svg(plot: &Plotted) -> Result<Picture> {
     let title = format!(
         "{}: {} — {}",
@@ -29,9 +31,11 @@ pub fn basis_svg(plot: &Plotted) -> Result<Picture> {
     picture(title, &[plot])
 }
 
-/// `plot` (solid) and `versus` (dashed) over each other, the same colour
-/// for the same parameter value: what a listing computes beside what is
-/// printed. Both must have the same variable, functions and settings.
+/// `plot` (wide and light) and `versus` (thin) over each other, the same
+/// colour for the same function and the same line style for the same
+/// parameter value: what a listing computes beside what is printed (where
+/// they agree the thin line runs inside the wide one). Both must have the
+/// same variable, functions and settings.
 pub fn basis_versus_svg(plot: &Plotted, versus: &Plotted) -> Result<Picture> {
     if plot.variable != versus.variable
         || plot.functions.len() != versus.functions.len()
@@ -43,7 +47,7 @@ pub fn basis_versus_svg(plot: &Plotted, versus: &Plotted) -> Result<Picture> {
         )));
     }
     let title = format!(
-        "{} (solid) versus {} (dashed): {}",
+        "{} (wide) versus {} (thin): {}",
         plot.id,
         versus.id,
         plot.functions.join(", ")
@@ -51,10 +55,29 @@ pub fn basis_versus_svg(plot: &Plotted, versus: &Plotted) -> Result<Picture> {
     picture(title, &[plot, versus])
 }
 
-/// The picture of `plots`, the first solid, the others dashed; with more
-/// than one, every label names its basis.
+/// How the `p`-th of the plots drawn together is drawn: alone, or the
+/// first wide and light, the others thin.
+fn stroke(p: usize, plots: usize) -> (f64, f64) {
+    match (plots, p) {
+        (1, _) => (CURVE, 1.0),
+        (_, 0) => (4.0 * CURVE, 0.4),
+        _ => (CURVE, 1.0),
+    }
+}
+
+/// The picture of `plots` (see [`basis_svg`], [`basis_versus_svg`]).
 fn picture(title: String, plots: &[&Plotted]) -> Result<Picture> {
-    let mut series = Vec::new();
+    // the legend first: functions by colour, settings by line style, plots by width
+    let entry =
+        |label: &str, look: Look| Series::new(format!("legend: {label}"), [], look).legend(label);
+    let mut series: Vec<Series> = plots[0]
+        .functions
+        .iter()
+        .enumerate()
+        .map(|(j, name)| entry(name, Look::line(colour(j), CURVE)))
+        .collect();
+    let mut drawn: Vec<Series> = Vec::new();
+    let mut styles: Vec<(usize, String)> = Vec::new();
     for (p, plot) in plots.iter().enumerate() {
         // (index of the first setting, the settings drawn together, curves)
         let mut groups: Vec<(usize, Vec<Vec<Affine>>, Curves)> = Vec::new();
@@ -70,26 +93,40 @@ fn picture(title: String, plots: &[&Plotted]) -> Result<Picture> {
                 None => groups.push((k, vec![s.clone()], curves)),
             }
         }
+        let (width, opacity) = stroke(p, plots.len());
         for (k, same, curves) in groups {
-            let look = Look {
-                mark: Mark::Line {
-                    width: CURVE,
-                    dashed: p > 0,
-                    vertices: false,
-                },
-                ..Look::line(colour(k), CURVE)
-            };
+            let label = plot.label(&same);
+            if plot.symbol.is_some() && !styles.iter().any(|(d, _)| *d == k) {
+                styles.push((k, label.clone()));
+            }
             let label = match plots.len() {
-                1 => plot.label(&same),
-                _ => format!("{}: {}", plot.id, plot.label(&same)),
+                1 => label,
+                _ => format!("{}: {label}", plot.id),
             };
             for (j, curve) in curves.into_iter().enumerate() {
                 let name = plot.functions.get(j).map_or("b", String::as_str);
-                let s = Series::new(format!("{name}, {label}"), curve, look);
-                series.push(if j == 0 { s.legend(label.clone()) } else { s });
+                let look = Look {
+                    opacity,
+                    ..Look::line(colour(j), width).dashed(dash(k))
+                };
+                drawn.push(Series::new(format!("{name}, {label}"), curve, look));
             }
         }
     }
+    for (k, label) in styles {
+        series.push(entry(&label, Look::line(GREY, CURVE).dashed(dash(k))));
+    }
+    if plots.len() > 1 {
+        for (p, plot) in plots.iter().enumerate() {
+            let (width, opacity) = stroke(p, plots.len());
+            let look = Look {
+                opacity,
+                ..Look::line(GREY, width)
+            };
+            series.push(entry(&plot.id, look));
+        }
+    }
+    series.extend(drawn);
     let all = || series.iter().flat_map(|s: &Series| s.points.iter());
     let x = (
         all().map(|p| p.0).fold(f64::INFINITY, f64::min),
@@ -103,6 +140,7 @@ fn picture(title: String, plots: &[&Plotted]) -> Result<Picture> {
         x,
         y,
         zero_line: true,
+        equal_aspect: false,
     };
     Picture::new(frame, series)
 }

@@ -12,22 +12,35 @@ pub struct Frame {
     pub y: (f64, f64),
     /// Draw the line `y = 0` (the point of positivity plots).
     pub zero_line: bool,
+    /// One data unit as long on both axes (curves, outlines): the ranges
+    /// are set for it ([`crate::style::equal_aspect`]) and the pgfplots axis
+    /// keeps it at any width.
+    pub equal_aspect: bool,
+}
+
+/// A dash pattern: `on` units drawn, then `off` units blank.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Dash {
+    pub on: f64,
+    pub off: f64,
 }
 
 /// How a series is drawn (sizes in units of [`crate::style::UNIT_MM`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Mark {
-    /// A polyline; `vertices` marks its points.
+    /// A polyline, solid or dashed; `vertices` marks its points.
     Line {
         width: f64,
-        dashed: bool,
+        dash: Option<Dash>,
         vertices: bool,
     },
     /// A filled dot at each point.
     Dots { radius: f64 },
     /// A cross at each point.
     Crosses,
-    /// The filled rectangle spanned by the two points of the series.
+    /// The filled rectangle spanned by the two points of the series
+    /// (opaque: adjacent cells are drawn overlapping by a hair, so that no
+    /// seam shows between them).
     Cell,
 }
 
@@ -47,10 +60,18 @@ impl Look {
             opacity: 1.0,
             mark: Mark::Line {
                 width,
-                dashed: false,
+                dash: None,
                 vertices: false,
             },
         }
+    }
+
+    /// The same look with the dash pattern `dash` (a line).
+    pub fn dashed(mut self, dash: Option<Dash>) -> Self {
+        if let Mark::Line { dash: d, .. } = &mut self.mark {
+            *d = dash;
+        }
+        self
     }
 
     /// An opaque mark `mark`.

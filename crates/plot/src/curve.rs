@@ -60,7 +60,7 @@ pub fn curve_svg(plot: &Plotted, control: &[(f64, f64)]) -> Result<Picture> {
     let polygon = Look {
         mark: Mark::Line {
             width: THIN,
-            dashed: false,
+            dash: None,
             vertices: true,
         },
         ..Look::line(GREY, THIN)
@@ -89,6 +89,7 @@ pub fn curve_svg(plot: &Plotted, control: &[(f64, f64)]) -> Result<Picture> {
         x,
         y,
         zero_line: false,
+        equal_aspect: true,
     };
     Picture::new(frame, series)
 }

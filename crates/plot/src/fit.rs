@@ -90,6 +90,7 @@ pub fn fit_svg(outline: &Outline, fit: &OutlineFit) -> Result<Picture> {
         x,
         y,
         zero_line: false,
+        equal_aspect: true,
     };
     Picture::new(frame, series)
 }

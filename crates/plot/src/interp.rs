@@ -6,7 +6,7 @@
 use crate::chart::{Frame, Look, Mark, Series};
 use crate::error::{PlotError, Result};
 use crate::picture::Picture;
-use crate::style::{BLACK, CURVE, colour, padded};
+use crate::style::{BLACK, CURVE, colour, dash, padded};
 
 /// One interpolant: its legend label and its pieces, each a sampled polyline.
 #[derive(Debug, Clone, PartialEq)]
@@ -18,8 +18,8 @@ pub struct Interpolant {
 /// `interpolants` over `data`, with the line `y = 0` (positivity is
 /// the point of thesis 4.3). Series: one curve per piece per interpolant,
 /// the data points; interpolants with the same pieces are drawn once,
-/// labelled `A = B`; the first solid, the others dashed (so that one
-/// over another stays visible).
+/// labelled `A = B`; the first solid, the others dashed, each its own
+/// pattern (so that one over another stays visible).
 pub fn interp_svg(
     title: &str,
     data: &[(f64, f64)],
@@ -51,14 +51,7 @@ pub fn interp_svg(
             let s = Series::new(
                 format!("{label}, piece {}", j + 1),
                 piece.iter().copied(),
-                Look {
-                    mark: Mark::Line {
-                        width: CURVE,
-                        dashed: k > 0,
-                        vertices: false,
-                    },
-                    ..Look::line(colour(k), CURVE)
-                },
+                Look::line(colour(k), CURVE).dashed(dash(k)),
             );
             series.push(if j == 0 { s.legend(label.clone()) } else { s });
         }
@@ -78,6 +71,7 @@ pub fn interp_svg(
         x,
         y,
         zero_line: true,
+        equal_aspect: false,
     };
     Picture::new(frame, series)
 }

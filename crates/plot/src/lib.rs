@@ -6,13 +6,16 @@
 //! control polygon for several parameter values (Figure 6.3), and fitted
 //! outlines over their data (Figures 6.5–6.7, 6.11–6.22), and piecewise
 //! interpolants with their data points (thesis 4.3), and the region of two
-//! shape parameters. Every picture has axes, axis labels, a title and a
-//! legend below the chart.
+//! shape parameters. Every picture has axes, axis labels, a title (left
+//! out with [`Picture::without_title`] where a caption says it) and a
+//! legend below the chart; functions are told apart by colour, parameter
+//! values by line style.
 //!
 //! Each function returns a [`Picture`]: a description (frame, series with
 //! their looks and legend entries) from which come the SVG (drawn with
-//! `plotters`, 160 mm wide, coordinates to 0.02 mm), the pgfplots code
-//! ([`Picture::pgf`]) and the CSV rows ([`Picture::rows`]).
+//! `plotters`, 160 mm wide, coordinates to 0.02 mm, serif text), the
+//! pgfplots code ([`Picture::pgf`]: a fragment to `\input`, as wide as
+//! asked) and the CSV rows ([`Picture::rows`]).
 
 pub mod basis;
 mod chart;
@@ -28,11 +31,12 @@ mod style;
 mod svg;
 
 pub use basis::{basis_svg, basis_versus_svg};
-pub use chart::{Frame, Look, Mark, Series};
+pub use chart::{Dash, Frame, Look, Mark, Series};
 pub use curve::curve_svg;
 pub use error::PlotError;
 pub use fit::fit_svg;
 pub use interp::{Interpolant, interp_svg};
+pub use pgf::PgfOptions;
 pub use picture::Picture;
 pub use plotted::Plotted;
 pub use region::{RegionCell, RegionKind, region_svg};

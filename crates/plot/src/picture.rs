@@ -41,6 +41,16 @@ impl Picture {
         Ok(Picture { frame, series, svg })
     }
 
+    /// The same picture without its title (a paper's caption says what it
+    /// shows): the SVG drawn again without the title's band.
+    pub fn without_title(self) -> Result<Picture> {
+        let frame = Frame {
+            title: String::new(),
+            ..self.frame
+        };
+        Picture::new(frame, self.series)
+    }
+
     /// The legend entries in order, each with the look of its series.
     pub fn legend(&self) -> impl Iterator<Item = (&str, &Look)> {
         self.series
@@ -74,6 +84,7 @@ mod tests {
             x: (0.0, 1.0),
             y: (-2.0, 1.0),
             zero_line: false,
+            equal_aspect: false,
         }
     }
 

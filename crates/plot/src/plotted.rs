@@ -65,14 +65,15 @@ impl Plotted {
         })
     }
 
-    /// The legend text of settings drawn together (`λ = 0, 1`), or the
+    /// The legend text of settings drawn together (`λ = −1, 0`: a real
+    /// minus sign), or the
     /// function names for a basis without parameters.
     pub fn label(&self, same: &[Vec<Affine>]) -> String {
         match &self.symbol {
             Some(p) if !same[0].is_empty() => {
                 let vals: Vec<String> = same
                     .iter()
-                    .map(|s| s[0].text(&[]).replace("pi", "π"))
+                    .map(|s| s[0].text(&[]).replace("pi", "π").replace('-', "−"))
                     .collect();
                 format!("{p} = {}", vals.join(", "))
             }

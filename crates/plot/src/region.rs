@@ -1,11 +1,14 @@
 //! The region of two shape parameters where a basis is nonnegative: the
 //! classified cells of a window of the parameter plane (certified inside,
-//! certified outside, undecided along the edge) with the printed box.
+//! certified outside, undecided along the edge) with the printed box. Each
+//! kind is drawn in one opaque colour, its cells overlapping by a hair
+//! ([`crate::style::CELL_OVERLAP`]): a set of cells reads as one area, with
+//! no seams between them.
 
 use crate::chart::{Frame, Look, Mark, Series};
 use crate::error::Result;
 use crate::picture::Picture;
-use crate::style::{BLACK, CURVE, colour};
+use crate::style::{BLACK, CURVE, colour, over_white};
 
 /// How a cell was classified.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -70,10 +73,8 @@ pub fn region_svg(
     // each cell as two points: its lower-left and upper-right corners
     let mut series = Vec::new();
     for (kind, rgb, opacity, label) in styles {
-        let look = Look {
-            opacity,
-            ..Look::marks(rgb, Mark::Cell)
-        };
+        // opaque, so overlapping neighbours leave no seam: the set as it is
+        let look = Look::marks(over_white(rgb, opacity), Mark::Cell);
         let count = cells.iter().filter(|c| c.kind == kind).count();
         for (k, c) in cells.iter().filter(|c| c.kind == kind).enumerate() {
             let s = Series::new(
@@ -108,6 +109,7 @@ pub fn region_svg(
         x,
         y,
         zero_line: false,
+        equal_aspect: false,
     };
     Picture::new(frame, series)
 }

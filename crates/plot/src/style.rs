@@ -1,10 +1,15 @@
 //! Shared look: the layout (a 160 mm wide figure in units of 0.2 mm),
-//! colours, the bounding box with a margin, equal scales, and the
-//! parameter values a plot varies.
+//! the font, colours and dash patterns, the bounding box with a margin,
+//! equal scales, and the parameter values a plot varies.
 
 use trig_core::{Affine, FamilyInfo};
 
+use crate::chart::Dash;
 use crate::error::{PlotError, Result};
+
+/// The font family of the SVG's text: serif, as a paper's text (the
+/// pgfplots code takes the document's own font).
+pub const FONT_FAMILY: &str = "serif";
 
 /// Millimetres per layout unit: the figure is [`WIDTH`] units = 160 mm wide.
 pub const UNIT_MM: f64 = 0.2;
@@ -44,13 +49,16 @@ pub const FONT_LEGEND: f64 = 14.0;
 pub const CURVE: f64 = 1.6;
 pub const THIN: f64 = 0.8;
 
-/// Legend lines up to this many characters go in two columns.
-const LEGEND_TWO_COLUMNS: usize = 42;
+/// Legend lines up to this many characters go in two columns: in the
+/// SVG (160 mm wide), and in the pgfplots code (a default article's
+/// `\linewidth`, 345 pt, in a footnote-size font).
+pub const SVG_LEGEND_TWO_COLUMNS: usize = 42;
+pub const PGF_LEGEND_TWO_COLUMNS: usize = 30;
 
-/// The number of legend columns for the legend `entries` (the same in the
-/// SVG and the pgfplots code).
-pub fn legend_columns<'a>(mut entries: impl Iterator<Item = &'a str>) -> usize {
-    if entries.all(|t| t.chars().count() <= LEGEND_TWO_COLUMNS) {
+/// The number of legend columns for the legend `entries`: two when every
+/// entry has at most `two_columns` characters.
+pub fn legend_columns<'a>(mut entries: impl Iterator<Item = &'a str>, two_columns: usize) -> usize {
+    if entries.all(|t| t.chars().count() <= two_columns) {
         2
     } else {
         1
@@ -77,6 +85,30 @@ const PALETTE: [(u8, u8, u8); 7] = [
 pub fn colour(k: usize) -> (u8, u8, u8) {
     PALETTE[k % PALETTE.len()]
 }
+
+/// `rgb` at `opacity` over white, as an opaque colour.
+pub fn over_white(rgb: (u8, u8, u8), opacity: f64) -> (u8, u8, u8) {
+    let mix = |c: u8| (f64::from(c) * opacity + 255.0 * (1.0 - opacity)).round() as u8;
+    (mix(rgb.0), mix(rgb.1), mix(rgb.2))
+}
+
+/// Dash patterns (units) after the solid line, cycled: dashed, dotted,
+/// long dashes, sparse dots.
+const DASHES: [Dash; 4] = [
+    Dash { on: 7.0, off: 4.0 },
+    Dash { on: 1.6, off: 3.2 },
+    Dash { on: 16.0, off: 5.0 },
+    Dash { on: 3.0, off: 8.0 },
+];
+
+/// The `k`-th line style: solid for `k = 0`, then the [`DASHES`] cycled.
+pub fn dash(k: usize) -> Option<Dash> {
+    k.checked_sub(1).map(|j| DASHES[j % DASHES.len()])
+}
+
+/// How far a cell of a region is drawn beyond its edges (units): adjacent
+/// opaque cells overlap by this hair, so no seam shows between them.
+pub const CELL_OVERLAP: f64 = 0.3;
 
 /// Largest coordinate magnitude a picture's axes can span: beyond it the
 /// axis arithmetic (widths, tick steps) leaves the range of f64.

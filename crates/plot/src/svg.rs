@@ -1,6 +1,7 @@
 //! The SVG of a [`Picture`](crate::Picture) description, drawn with
-//! `plotters`: the title, the chart, and the legend below the chart (never
-//! over the data).
+//! `plotters`: the title (none when it is empty: the caption of a paper
+//! says it), the chart, and the legend below the chart (never over the
+//! data); text in a serif font, negative numbers with a real minus sign.
 //!
 //! `plotters` writes whole-pixel coordinates, so everything is drawn at
 //! [`SCALE`] times the layout (fonts, strokes, margins scaled with it) and
@@ -16,8 +17,9 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use crate::chart::{Frame, Look, Mark, Series};
 use crate::error::{PlotError, Result, draw};
 use crate::style::{
-    CHART_HEIGHT, FONT_LABEL, FONT_LEGEND, FONT_TICK, FONT_TITLE, MARGIN, THIN, TITLE_HEIGHT,
-    UNIT_MM, WIDTH, X_LABEL_AREA, Y_LABEL_AREA, legend_columns,
+    CELL_OVERLAP, CHART_HEIGHT, FONT_FAMILY, FONT_LABEL, FONT_LEGEND, FONT_TICK, FONT_TITLE,
+    MARGIN, PLOT_AREA, SVG_LEGEND_TWO_COLUMNS, THIN, TITLE_HEIGHT, UNIT_MM, WIDTH, X_LABEL_AREA,
+    Y_LABEL_AREA, legend_columns,
 };
 
 /// Drawn pixels per layout unit.
@@ -36,7 +38,7 @@ fn px(units: f64) -> u32 {
 
 /// A font of `size` units as `plotters` wants it (it writes `size / 1.24`).
 fn font(size: f64) -> TextStyle<'static> {
-    TextStyle::from(("sans-serif", f64::from(px(size)) * 1.24).into_font())
+    TextStyle::from((FONT_FAMILY, f64::from(px(size)) * 1.24).into_font())
 }
 
 fn colour(look: &Look) -> RGBAColor {
@@ -49,28 +51,36 @@ pub fn render(frame: &Frame, series: &[Series]) -> Result<String> {
         .iter()
         .filter_map(|s| s.legend.as_deref().map(|t| (t, &s.look)))
         .collect();
-    let columns = legend_columns(entries.iter().map(|(t, _)| *t));
+    let columns = legend_columns(entries.iter().map(|(t, _)| *t), SVG_LEGEND_TWO_COLUMNS);
     let rows = entries.len().div_ceil(columns);
     let legend_height = if rows == 0 {
         0
     } else {
         rows as u32 * LEGEND_ROW + MARGIN
     };
-    let height = CHART_HEIGHT + legend_height;
+    // no title: no band for it
+    let title_height = if frame.title.is_empty() {
+        0
+    } else {
+        TITLE_HEIGHT
+    };
+    let height = CHART_HEIGHT - TITLE_HEIGHT + title_height + legend_height;
     let mut svg = String::new();
     {
         let root = SVGBackend::with_string(&mut svg, (px(WIDTH.into()), px(height.into())))
             .into_drawing_area();
         root.fill(&WHITE).map_err(draw)?;
-        let (top, rest) = root.split_vertically(px(TITLE_HEIGHT.into()));
+        let (top, rest) = root.split_vertically(px(title_height.into()));
         let (chart_area, legend_area) =
             rest.split_vertically(px(f64::from(CHART_HEIGHT - TITLE_HEIGHT)));
-        top.draw(&Text::new(
-            frame.title.as_str(),
-            (px(f64::from(WIDTH) / 2.0) as i32, px(10.0) as i32),
-            font(FONT_TITLE).pos(Pos::new(HPos::Center, VPos::Top)),
-        ))
-        .map_err(draw)?;
+        if title_height > 0 {
+            top.draw(&Text::new(
+                frame.title.as_str(),
+                (px(f64::from(WIDTH) / 2.0) as i32, px(10.0) as i32),
+                font(FONT_TITLE).pos(Pos::new(HPos::Center, VPos::Top)),
+            ))
+            .map_err(draw)?;
+        }
         chart(&chart_area, frame, series)?;
         legend(&legend_area, &entries, columns)?;
         root.present().map_err(draw)?;
@@ -96,6 +106,8 @@ fn chart(
         .y_desc(frame.y_label.as_str())
         .x_labels(8)
         .y_labels(8)
+        .x_label_formatter(&|v| tick(*v))
+        .y_label_formatter(&|v| tick(*v))
         .max_light_lines(0)
         .bold_line_style(BLACK.mix(0.12).stroke_width(px(THIN)))
         .axis_style(BLACK.stroke_width(px(THIN)))
@@ -118,13 +130,13 @@ fn chart(
         match s.look.mark {
             Mark::Line {
                 width,
-                dashed,
+                dash,
                 vertices,
             } => {
                 let style = c.stroke_width(px(width));
-                if dashed {
+                if let Some(d) = dash {
                     chart
-                        .draw_series(DashedLineSeries::new(points, px(6.0), px(4.0), style))
+                        .draw_series(DashedLineSeries::new(points, px(d.on), px(d.off), style))
                         .map_err(draw)?;
                 } else {
                     chart
@@ -166,13 +178,36 @@ fn chart(
                         s.label
                     )));
                 };
+                // a hair beyond its edges: no seam between neighbours
+                let (hx, hy) = (
+                    CELL_OVERLAP * (frame.x.1 - frame.x.0) / PLOT_AREA.0,
+                    CELL_OVERLAP * (frame.y.1 - frame.y.0) / PLOT_AREA.1,
+                );
+                let corners = [(a.0 - hx, a.1 - hy), (b.0 + hx, b.1 + hy)];
                 chart
-                    .draw_series(std::iter::once(Rectangle::new([a, b], c.filled())))
+                    .draw_series(std::iter::once(Rectangle::new(corners, c.filled())))
                     .map_err(draw)?;
             }
         }
     }
     Ok(())
+}
+
+/// A tick label: the shortest decimal of `v` (as `plotters` writes it),
+/// with a real minus sign.
+fn tick(v: f64) -> String {
+    let text = format!("{v:.prec$}", prec = decimals(v));
+    text.replace('-', "−")
+}
+
+/// Decimals enough for a tick value (at most 6, none trailing).
+fn decimals(v: f64) -> usize {
+    (0..=6)
+        .find(|&d| {
+            let scale = 10f64.powi(d as i32);
+            ((v * scale).round() - v * scale).abs() < 1e-6 * scale.max(1.0)
+        })
+        .unwrap_or(6)
 }
 
 /// The legend below the chart: `columns` columns, swatch and text.
@@ -194,15 +229,15 @@ fn legend(
         match look.mark {
             Mark::Line {
                 width,
-                dashed,
+                dash,
                 vertices,
             } => {
                 let style = c.stroke_width(px(width));
-                let swatch = if dashed {
+                let swatch = if let Some(d) = dash {
                     area.draw(&DashedPathElement::new(
                         [at(0.0, 0.0), at(f64::from(SWATCH) - 4.0, 0.0)],
-                        px(6.0),
-                        px(4.0),
+                        px(d.on),
+                        px(d.off),
                         style,
                     ))
                 } else {
@@ -260,4 +295,17 @@ fn paper_size(svg: &str, height: u32) -> Result<String> {
         mm(WIDTH),
         mm(height)
     ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tick_labels_have_a_real_minus_sign_and_few_decimals() {
+        assert_eq!(tick(-0.2), "−0.2");
+        assert_eq!(tick(1.0), "1");
+        assert_eq!(tick(-150.0), "−150");
+        assert_eq!(tick(0.125), "0.125");
+    }
 }

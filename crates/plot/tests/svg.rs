@@ -47,16 +47,52 @@ fn basis_plot_has_one_curve_per_function_and_value() {
     let values = [r("-2"), r("-1"), r("0"), r("1")];
     let picture =
         basis_svg(&Plotted::family(Family::ThesisCubic, &values, false, "basis").unwrap()).unwrap();
-    // the data beside the figure: one series per drawn curve
-    assert_eq!(picture.series.len(), 4 * 4);
-    assert!(picture.series.iter().any(|s| s.label == "b2, m = -1"));
+    // the data beside the figure: one series per drawn curve (the legend
+    // entries of the functions and values draw nothing)
+    let drawn = || picture.series.iter().filter(|s| !s.points.is_empty());
+    assert_eq!(drawn().count(), 4 * 4);
+    assert_eq!(picture.series.len(), 4 * 4 + 4 + 4);
     assert_eq!(picture.rows().len(), 4 * 4 * 201);
-    let svg = picture.svg;
+    // a colour per function, a line style per value (a real minus sign)
+    let look = |label: &str| {
+        picture
+            .series
+            .iter()
+            .find(|s| s.label == label)
+            .unwrap_or_else(|| panic!("{label}"))
+            .look
+    };
+    let dash = |label: &str| match look(label).mark {
+        trig_plot::Mark::Line { dash, .. } => dash,
+        _ => panic!("{label} is a line"),
+    };
+    assert_ne!(look("b0, m = −1").rgb, look("b1, m = −1").rgb);
+    assert_eq!(look("b0, m = −2").rgb, look("b0, m = 1").rgb);
+    assert_ne!(dash("b0, m = −2"), dash("b0, m = −1"));
+    assert_eq!(dash("b0, m = 0"), dash("b3, m = 0"));
+    let svg = picture.svg.clone();
+    // the first value solid: four whole polylines; the others in pieces
     let (curves, _, texts) = census(&svg);
-    assert_eq!(curves, 4 * 4);
-    for label in ["m = -2", "m = -1", "m = 0", "m = 1", "basis function value"] {
+    assert!(curves > 4 * 4, "{curves}");
+    let whole = roxmltree::Document::parse(&svg)
+        .unwrap()
+        .descendants()
+        .filter_map(|n| n.attribute("points"))
+        .filter(|p| p.split_whitespace().count() == 201)
+        .count();
+    assert_eq!(whole, 4);
+    for label in [
+        "b0",
+        "b3",
+        "m = −2",
+        "m = −1",
+        "m = 0",
+        "m = 1",
+        "basis function value",
+    ] {
         assert!(texts.iter().any(|t| t == label), "{label}: {texts:?}");
     }
+    assert!(svg.contains(r#"font-family="serif""#), "serif text");
     let svg = basis_svg(&Plotted::family(Family::Bernstein3, &[], false, "basis").unwrap())
         .unwrap()
         .svg;
@@ -174,7 +210,7 @@ fn the_legend_is_below_every_curve() {
         .flat_map(|p| p.split_whitespace().map(|xy| xy.split(',').nth(1).unwrap()))
         .map(|y| y.parse::<f64>().unwrap())
         .fold(f64::NEG_INFINITY, f64::max);
-    for label in ["m = -2", "m = 0", "m = 1"] {
+    for label in ["m = −2", "m = 0", "m = 1"] {
         let text = doc
             .descendants()
             .find(|n| n.has_tag_name("text") && n.text().map(str::trim) == Some(label))
@@ -193,21 +229,24 @@ fn a_listing_is_drawn_over_the_printed_basis() {
     let listing = Plotted::family(Family::HanListing, &values, false, "basis").unwrap();
     let han = Plotted::family(Family::Han, &values, false, "basis").unwrap();
     let picture = basis_versus_svg(&listing, &han).unwrap();
-    assert_eq!(picture.series.len(), 2 * 4 * 3);
+    assert_eq!(picture.series.len(), 2 * 4 * 3 + 4 + 3 + 2);
     let legend: Vec<&str> = picture.legend().map(|(t, _)| t).collect();
     assert_eq!(
         legend,
         [
-            "han-listing: λ = -1",
-            "han-listing: λ = 0",
-            "han-listing: λ = 1",
-            "han: λ = -1",
-            "han: λ = 0",
-            "han: λ = 1"
+            "b0",
+            "b1",
+            "b2",
+            "b3",
+            "λ = −1",
+            "λ = 0",
+            "λ = 1",
+            "han-listing",
+            "han"
         ]
     );
-    // the listing solid (whole polylines of every sample), the printed
-    // basis dashed (many short pieces)
+    // the first value solid (whole polylines of every sample) for both
+    // bases, the others dashed or dotted (many short pieces)
     let doc = roxmltree::Document::parse(&picture.svg).unwrap();
     let lengths: Vec<usize> = doc
         .descendants()
@@ -215,10 +254,10 @@ fn a_listing_is_drawn_over_the_printed_basis() {
         .filter_map(|n| n.attribute("points"))
         .map(|p| p.split_whitespace().count())
         .collect();
-    assert_eq!(lengths.iter().filter(|&&n| n == 201).count(), 4 * 3);
+    assert_eq!(lengths.iter().filter(|&&n| n == 201).count(), 4 * 2);
     assert!(lengths.iter().filter(|&&n| (2..201).contains(&n)).count() > 100);
     let (_, _, texts) = census(&picture.svg);
-    assert!(texts.iter().any(|t| t == "han: λ = 0"), "{texts:?}");
+    assert!(texts.iter().any(|t| t == "λ = 0"), "{texts:?}");
     // b2 differs (the listing's sin), b0 agrees
     let at = |label: &str| {
         &picture

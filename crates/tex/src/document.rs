@@ -30,6 +30,7 @@ pub const PREAMBLE: &str = r"\documentclass[a4paper,10pt]{article}
 \fi
 \usepackage{amsmath,amssymb,booktabs}
 \usepackage{array,longtable,graphicx}
+\usepackage{booktabs}
 \usepackage[margin=2cm]{geometry}
 \IfFileExists{pgfplots.sty}{\usepackage{pgfplots}\pgfplotsset{compat=1.16}}{}
 \IfFileExists{hyperref.sty}{\usepackage[hidelinks]{hyperref}}{}

@@ -57,56 +57,143 @@ pub fn number(text: &str) -> String {
     }
 }
 
-/// `\frac{a}{b}` as `(a)/(b)` (brackets left out around one symbol): a
-/// fraction cannot break across lines, its inline form breaks at the
-/// operators of its numerator.
-pub fn inline_fractions(latex: &str) -> String {
+/// The group `{…}` opened at byte `open` of `latex`: its content and the
+/// text after its closing brace.
+fn group(latex: &str, open: usize) -> Option<(&str, &str)> {
+    let mut depth = 0usize;
+    for (k, c) in latex[open..].char_indices() {
+        match c {
+            '{' => depth += 1,
+            '}' => {
+                depth -= 1;
+                if depth == 0 {
+                    return Some((&latex[open + 1..open + k], &latex[open + k + 1..]));
+                }
+            }
+            _ => {}
+        }
+    }
+    None
+}
+
+/// The approximate width of LaTeX math in ems of its font (Computer
+/// Modern, text style): letters and digits half an em, a binary operator
+/// or relation with its spacing over an em, scripts at 70 %, an inline
+/// fraction as wide as its wider part at 70 %. What a table needs to
+/// decide whether a row fits the line; it errs on the wide side.
+pub fn width(latex: &str) -> f64 {
+    const FRAC: &str = r"\frac{";
+    let mut w = 0.0;
+    let mut rest = latex;
+    while let Some(c) = rest.chars().next() {
+        if rest.starts_with(FRAC)
+            && let Some((num, after)) = group(rest, FRAC.len() - 1)
+            && let Some((den, after)) = after.starts_with('{').then(|| group(after, 0)).flatten()
+        {
+            w += 0.7 * width(num).max(width(den)) + 0.2;
+            rest = after;
+            continue;
+        }
+        if (c == '^' || c == '_')
+            && rest[1..].starts_with('{')
+            && let Some((script, after)) = group(rest, 1)
+        {
+            w += 0.7 * width(script);
+            rest = after;
+            continue;
+        }
+        if c == '\\' {
+            let name: String = rest[1..]
+                .chars()
+                .take_while(char::is_ascii_alphabetic)
+                .collect();
+            let len = 1 + name.len().max(1).min(rest.len() - 1);
+            w += match name.as_str() {
+                "" => 0.2,
+                "cdot" | "times" | "pm" | "mp" => 1.2,
+                "leq" | "geq" | "neq" | "to" | "mapsto" => 1.35,
+                "left" | "right" | "mathrm" | "text" | "operatorname" => 0.0,
+                _ => 0.6,
+            };
+            rest = &rest[len..];
+            continue;
+        }
+        w += match c {
+            ' ' | '{' | '}' => 0.0,
+            '+' | '-' => 1.25,
+            '=' | '<' | '>' => 1.35,
+            '(' | ')' | '[' | ']' | '/' | '|' => 0.45,
+            ',' | ';' => 0.45,
+            'A'..='Z' => 0.8,
+            _ => 0.55,
+        };
+        rest = &rest[c.len_utf8()..];
+    }
+    w
+}
+
+/// Table-cell math from an expression's LaTeX: a fraction stays
+/// `\frac{a}{b}` when it is at most `room` ems wide ([`width`]), a wider
+/// one is written inline as `(a)/(b)` so the line can break inside it;
+/// a fraction followed by a factor is set off by a thin space
+/// (`\frac{15}{8}\, m \pi^{6}`).
+pub fn cell_math(latex: &str, room: f64) -> String {
     const FRAC: &str = r"\frac{";
     let Some(at) = latex.find(FRAC) else {
         return latex.to_string();
     };
-    // the group opened at byte `open` (a `{`) and the rest after its `}`
-    let group = |open: usize| -> Option<(&str, &str)> {
-        let mut depth = 0usize;
-        for (k, c) in latex[open..].char_indices() {
-            match c {
-                '{' => depth += 1,
-                '}' => {
-                    depth -= 1;
-                    if depth == 0 {
-                        return Some((&latex[open + 1..open + k], &latex[open + k + 1..]));
-                    }
-                }
-                _ => {}
+    let parts = group(latex, at + FRAC.len() - 1).and_then(|(num, rest)| {
+        let (den, rest) = rest.starts_with('{').then(|| group(rest, 0)).flatten()?;
+        Some((num, den, rest))
+    });
+    let Some((num, den, rest)) = parts else {
+        return latex.to_string();
+    };
+    let fraction = if width(num).max(width(den)) * 0.7 <= room {
+        let tail = rest.trim_start();
+        let factor = tail.starts_with(|c: char| c.is_ascii_alphabetic() || c == '(')
+            || (tail.starts_with('\\') && !tail.starts_with(r"\cdot") && !tail.starts_with(r"\,"));
+        let space = if factor { r"\, " } else { "" };
+        format!(
+            r"\frac{{{}}}{{{}}}{space}",
+            cell_math(num, room),
+            cell_math(den, room)
+        )
+    } else {
+        let wrap = |s: &str| {
+            let s = cell_math(s, room);
+            if s.contains([' ', '+', '-']) {
+                format!("({s})")
+            } else {
+                s
             }
+        };
+        format!("{}/{}", wrap(num), wrap(den))
+    };
+    let rest = cell_math(rest, room);
+    let rest = if fraction.ends_with(' ') {
+        rest.trim_start().to_string()
+    } else {
+        rest
+    };
+    format!("{}{fraction}{rest}", &latex[..at])
+}
+
+/// Math in which a run of digits may break after every tenth digit that
+/// another follows (`\allowbreak`): a proved decimal of 60 digits is wider
+/// than a column.
+pub fn breakable_digits(latex: &str) -> String {
+    let mut out = String::new();
+    let mut run = 0usize;
+    let chars: Vec<char> = latex.chars().collect();
+    for (i, &c) in chars.iter().enumerate() {
+        out.push(c);
+        run = if c.is_ascii_digit() { run + 1 } else { 0 };
+        if run > 0 && run % 10 == 0 && chars.get(i + 1).is_some_and(char::is_ascii_digit) {
+            out.push_str(r"\allowbreak ");
         }
-        None
-    };
-    let Some((num, rest)) = group(at + FRAC.len() - 1) else {
-        return latex.to_string();
-    };
-    let Some((den, rest)) = rest
-        .starts_with('{')
-        .then(|| group(latex.len() - rest.len()))
-        .flatten()
-    else {
-        return latex.to_string();
-    };
-    let wrap = |s: &str| {
-        let s = inline_fractions(s);
-        if s.contains([' ', '+', '-']) {
-            format!("({s})")
-        } else {
-            s
-        }
-    };
-    format!(
-        "{}{}/{}{}",
-        &latex[..at],
-        wrap(num),
-        wrap(den),
-        inline_fractions(rest)
-    )
+    }
+    out
 }
 
 #[cfg(test)]
@@ -135,9 +222,37 @@ mod tests {
     }
 
     #[test]
+    fn table_cells_keep_fractions_that_fit() {
+        assert_eq!(
+            cell_math(r"\frac{15}{8} m \pi^{6}", 10.0),
+            r"\frac{15}{8}\, m \pi^{6}"
+        );
+        assert_eq!(cell_math(r"-\frac{1}{2}", 10.0), r"-\frac{1}{2}");
+        // a fraction wider than the room is written inline, its parts kept
+        let long = r"\frac{a + b + c + d + e + f}{2 \frac{1}{3}}";
+        assert_eq!(
+            cell_math(long, 3.0),
+            r"(a + b + c + d + e + f)/(2 \frac{1}{3})"
+        );
+        assert!(width("a + b") > width("ab"));
+        assert!(width(r"\frac{1}{2}") < width("1/2"));
+    }
+
+    #[test]
+    fn long_digit_runs_may_break() {
+        let digits = "1".repeat(25);
+        assert_eq!(
+            breakable_digits(&format!("-0.{digits}")),
+            format!(r"-0.{0}\allowbreak {0}\allowbreak 11111", "1".repeat(10))
+        );
+        assert_eq!(breakable_digits("12345 x_{10}"), "12345 x_{10}");
+        assert_eq!(breakable_digits(&"2".repeat(10)), "2".repeat(10));
+    }
+
+    #[test]
     fn fractions_inline() {
         assert_eq!(
-            inline_fractions(r"(\frac{-m w_{1} - 2}{w_{0}^{2}}) P_{0} + \frac{1}{2}"),
+            cell_math(r"(\frac{-m w_{1} - 2}{w_{0}^{2}}) P_{0} + \frac{1}{2}", 0.0),
             r"((-m w_{1} - 2)/w_{0}^{2}) P_{0} + 1/2"
         );
     }

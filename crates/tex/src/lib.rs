@@ -15,10 +15,13 @@
 //!   (`H_{2−i}(π/2 − u; β)`, `b0'(0) = 3/A`) into LaTeX math; [`inline_math`]
 //!   and [`fitted_math`] set a formula in text.
 //! - Expressions: [`expr`] spells names, powers, fractions and numbers.
-//! - Tables: [`LongTable`] with its [`Column`]s, [`column_name`].
-//! - Documents: [`PREAMBLE`], [`document`]; fragments for `\input`
-//!   ([`fragment`], needing only [`FRAGMENT_PACKAGES`]); [`comment`], [`align`];
-//!   [`compile`] runs `pdflatex` for the tests.
+//! - Tables: [`LongTable`] with its [`Column`]s, [`column_name`]; the
+//!   tables of values of `table --format tex`, [`value_tables`].
+//! - Documents: [`PREAMBLE`], [`document`]; the report as a fragment for
+//!   `\input` ([`fragment`], needing only [`FRAGMENT_PACKAGES`]); fragments
+//!   to `\input` and plain articles around them ([`input_note`],
+//!   [`article`]); [`comment`], [`align`]; [`compile`] runs `pdflatex` for
+//!   the tests.
 //!
 //! The output is ASCII and compiles with pdfLaTeX (and LuaLaTeX, XeLaTeX)
 //! using the packages of a basic TeX installation. The crate depends on
@@ -27,6 +30,7 @@
 mod compile;
 mod document;
 pub mod expr;
+mod fragment;
 pub mod marked;
 mod math;
 pub mod symbols;
@@ -37,8 +41,9 @@ pub use compile::{CompileLog, compile};
 pub use document::{
     FRAGMENT_PACKAGES, FRAGMENT_SETUP, PREAMBLE, align, comment, document, fragment,
 };
+pub use fragment::{article, input_note};
 pub use marked::{marked, plain};
 pub use math::{fitted_math, inline_math, math};
 pub use symbols::unmapped;
-pub use table::{Column, LongTable, column_name};
+pub use table::{Column, LongTable, TABLE_PACKAGES, ValueTable, column_name, value_tables};
 pub use text::{breakable, prose, text};

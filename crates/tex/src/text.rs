@@ -221,14 +221,21 @@ pub fn prose(line: &str) -> String {
         }
         let run = &words[start..i];
         if kinds[start..i].contains(&Token::Math) {
-            // trailing punctuation stays in the text
-            let formula = run.join(" ");
-            let body = formula.trim_end_matches([',', ';', ':', '.']);
-            out.push(format!(
-                "{}{}",
-                inline_breakable(&math(body)),
-                &formula[body.len()..]
-            ));
+            // punctuation ending the run, and a bracket it does not open,
+            // belong to the sentence, not the formula
+            let joined = run.join(" ");
+            let mut formula = joined.as_str();
+            loop {
+                let unopened = formula.ends_with(')')
+                    && formula.matches(')').count() > formula.matches('(').count();
+                if formula.ends_with([',', ';', ':', '.']) || unopened {
+                    formula = &formula[..formula.len() - 1];
+                } else {
+                    break;
+                }
+            }
+            let punctuation = &joined[formula.len()..];
+            out.push(format!("{}{punctuation}", inline_breakable(&math(formula))));
         } else {
             out.extend(run.iter().map(|w| text(w)));
         }
@@ -263,6 +270,11 @@ mod tests {
             r"$x^{2} + y^{23} \geq 0$ for all x"
         );
         assert_eq!(prose("the set {1, 2}"), r"the set \{1, 2\}");
+        assert_eq!(prose("in θ, exact"), r"in $\theta$, exact");
+        assert_eq!(
+            prose("(factor (π/2)^k), exact"),
+            r"(factor $(\frac{\pi}{2})^{k}$), exact"
+        );
         assert_eq!(prose("P_{i,j} x̄"), r"$P_{i,j} \bar{x}$");
         assert_eq!(math("(1 + z²)^(−3) F^(4)"), r"(1 + z^{2})^{(-3)} F^{(4)}");
         assert_eq!(prose("b_{j+2,i} of {a_b}"), r"$b_{j+2,i}$ of $\{a_{b}\}$");

@@ -12,8 +12,8 @@ use trig_core::End as SpecEnd;
 use trig_core::{Affine, Bound, Described, parse_exact, parse_point};
 use trig_interp::{DataSet, Scheme, Variant, f64_segments};
 use trig_plot::{
-    Interpolant, Picture, Plotted, RegionCell, RegionKind, basis_svg, basis_versus_svg, curve_svg,
-    fit_svg, interp_svg, region_svg,
+    Interpolant, PgfOptions, Picture, Plotted, RegionCell, RegionKind, basis_svg, basis_versus_svg,
+    curve_svg, fit_svg, interp_svg, region_svg,
 };
 use trig_specfile::Spec;
 use trig_verification::judge::region::{Axis, classify_window};
@@ -39,13 +39,15 @@ enum PlotKind {
         family: Option<String>,
         #[command(flatten)]
         values: Values,
-        /// Draw this family's functions too, dashed, at the same values
+        /// Draw this family's functions too, thin over the first's wide lines, at the same values
         /// (e.g. the printed formulas beside what a listing computes).
         #[arg(long, value_name = "FAMILY")]
         versus: Option<String>,
         /// SVG file to write (its pgfplots code NAME.tex and data NAME.csv beside it).
         #[arg(long)]
         output: PathBuf,
+        #[command(flatten)]
+        look: FigureArgs,
     },
     /// A curve with its control polygon for several parameter values (thesis Figure 6.3).
     Curve {
@@ -60,6 +62,8 @@ enum PlotKind {
         /// SVG file to write (its pgfplots code NAME.tex and data NAME.csv beside it).
         #[arg(long)]
         output: PathBuf,
+        #[command(flatten)]
+        look: FigureArgs,
     },
     /// A fitted outline over its data, before and (with --refine) after C¹ refinement.
     Fit {
@@ -74,6 +78,8 @@ enum PlotKind {
         /// SVG file to write (its pgfplots code NAME.tex and data NAME.csv beside it).
         #[arg(long)]
         output: PathBuf,
+        #[command(flatten)]
+        look: FigureArgs,
     },
     /// The region of two shape parameters where every function of a spec
     /// file's basis is nonnegative: certified cells inside and outside, the
@@ -85,6 +91,8 @@ enum PlotKind {
         /// SVG file to write (its pgfplots code NAME.tex and data NAME.csv beside it).
         #[arg(long)]
         output: PathBuf,
+        #[command(flatten)]
+        look: FigureArgs,
     },
     /// Positivity interpolants of thesis 4.3 with their data points.
     Interp {
@@ -97,7 +105,46 @@ enum PlotKind {
         /// SVG file to write (its pgfplots code NAME.tex and data NAME.csv beside it).
         #[arg(long)]
         output: PathBuf,
+        #[command(flatten)]
+        look: FigureArgs,
     },
+}
+
+/// How a figure is written, for every kind of plot.
+#[derive(Debug, Args)]
+struct FigureArgs {
+    /// Width of the pgfplots figure, a LaTeX length (tick and axis labels
+    /// included; the height follows).
+    #[arg(long, default_value = r"\linewidth", value_name = "LENGTH")]
+    width: String,
+    /// Leave out the title (the caption of a paper says what a figure shows).
+    #[arg(long)]
+    no_title: bool,
+    /// Write the pgfplots code as a whole LaTeX document instead of a
+    /// fragment to \input.
+    #[arg(long)]
+    standalone: bool,
+}
+
+impl FigureArgs {
+    /// The width, checked: a LaTeX length without braces or other
+    /// characters that would end the option list.
+    fn options(&self) -> Result<PgfOptions, CliError> {
+        let width = self.width.trim();
+        let valid = !width.is_empty()
+            && width
+                .chars()
+                .all(|c| c.is_ascii_alphanumeric() || matches!(c, '.' | '\\' | '-' | '*' | ' '));
+        if !valid {
+            return Err(CliError::Usage(format!(
+                "--width {width}: expected a LaTeX length such as \\linewidth, 0.8\\linewidth or 8cm"
+            )));
+        }
+        Ok(PgfOptions {
+            width: width.to_string(),
+            standalone: self.standalone,
+        })
+    }
 }
 
 #[derive(Debug, Args)]
@@ -213,7 +260,13 @@ fn plotted(family: Option<&str>, v: &Values, what: &str) -> Result<Plotted, CliE
 /// (`NAME.tex`, text mapped to LaTeX as in the report) and its data
 /// (`NAME.csv`: series, point, x, y), each atomically; the notes on
 /// standard error (standard output stays empty).
-fn write(output: &Path, picture: &Picture) -> CmdResult {
+fn write(output: &Path, picture: Picture, look: &FigureArgs) -> CmdResult {
+    let pgf_options = look.options()?;
+    let picture = if look.no_title {
+        picture.without_title().map_err(plot_err)?
+    } else {
+        picture
+    };
     let output = resolve(output)?;
     let output = output.as_path();
     if std::fs::metadata(output).is_ok_and(|m| !m.is_file()) {
@@ -234,7 +287,7 @@ fn write(output: &Path, picture: &Picture) -> CmdResult {
         &Picture::HEADER,
         rows.iter().map(|r| r.iter().map(String::as_str)),
     )?;
-    let pgf = picture.pgf();
+    let pgf = picture.pgf(&pgf_options);
     write_atomically(output, picture.svg.as_bytes())?;
     write_atomically(&tex, pgf.as_bytes())?;
     write_atomically(&data, csv.as_bytes())?;
@@ -266,6 +319,7 @@ pub fn run(args: &PlotArgs) -> CmdResult {
             values: v,
             versus,
             output,
+            look,
         } => {
             let plot = plotted(family.as_deref(), v, "basis")?;
             let picture = match versus {
@@ -281,13 +335,14 @@ pub fn run(args: &PlotArgs) -> CmdResult {
                     basis_versus_svg(&plot, &other)
                 }
             };
-            write(output, &picture.map_err(plot_err_hinted)?)
+            write(output, picture.map_err(plot_err_hinted)?, look)
         }
         PlotKind::Curve {
             family,
             values: v,
             control,
             output,
+            look,
         } => {
             let control_default = control.is_empty();
             let plot = plotted(family.as_deref(), v, "curve")?;
@@ -302,7 +357,8 @@ pub fn run(args: &PlotArgs) -> CmdResult {
             }
             write(
                 output,
-                &curve_svg(&plot, &control).map_err(plot_err_hinted)?,
+                curve_svg(&plot, &control).map_err(plot_err_hinted)?,
+                look,
             )
         }
         PlotKind::Fit {
@@ -310,6 +366,7 @@ pub fn run(args: &PlotArgs) -> CmdResult {
             optimise,
             setup,
             output,
+            look,
         } => {
             let family = family.as_deref().unwrap_or("all");
             if family == "all" && setup.spec.is_none() {
@@ -326,13 +383,18 @@ pub fn run(args: &PlotArgs) -> CmdResult {
             let method = methods
                 .first()
                 .ok_or_else(|| CliError::Usage("nothing fitted".into()))?;
-            write(output, &fit_svg(&outline, &method.fit).map_err(plot_err)?)
+            write(
+                output,
+                fit_svg(&outline, &method.fit).map_err(plot_err)?,
+                look,
+            )
         }
-        PlotKind::Region { spec, output } => write(output, &region(spec)?),
+        PlotKind::Region { spec, output, look } => write(output, region(spec)?, look),
         PlotKind::Interp {
             data,
             scheme,
             output,
+            look,
         } => {
             let set = DataSet::named(data).map_err(|e| CliError::Usage(e.to_string()))?;
             let scheme = match scheme {
@@ -359,7 +421,8 @@ pub fn run(args: &PlotArgs) -> CmdResult {
             let title = format!("{} — {scheme} scheme (thesis 4.3)", set.table.caption);
             write(
                 output,
-                &interp_svg(&title, &points, &curves).map_err(plot_err)?,
+                interp_svg(&title, &points, &curves).map_err(plot_err)?,
+                look,
             )
         }
     }

@@ -63,9 +63,13 @@ pub struct TableArgs {
     /// whose variable is `t`, with half angles too).
     #[arg(long, default_value = "angle", value_name = "WRT")]
     wrt: String,
-    /// Output format.
+    /// Output format (tex: a fragment to \input, needing only booktabs,
+    /// longtable and amsmath).
     #[arg(long, value_enum, default_value = "md")]
     format: TableFormat,
+    /// With --format tex: a whole LaTeX document instead of a fragment.
+    #[arg(long)]
+    standalone: bool,
     /// Table of the curve Σ b_i P_i (as combinations of the control points).
     #[arg(long)]
     curve: bool,
@@ -123,6 +127,11 @@ fn wrt_of(text: &str, family: &AnyBasis) -> Result<Wrt, CliError> {
 }
 
 pub fn run(args: &TableArgs) -> CmdResult {
+    if args.standalone && args.format != TableFormat::Tex {
+        return Err(CliError::Usage(
+            "--standalone writes a whole LaTeX document: it goes with --format tex".into(),
+        ));
+    }
     let family = AnyBasis::open(args.family.as_deref(), args.spec.as_deref())?;
     let wrt = wrt_of(&args.wrt, &family)?;
     let id = family.id();
@@ -177,7 +186,7 @@ pub fn run(args: &TableArgs) -> CmdResult {
         family.citation(),
         wrt.describe_on(&family.domain())
     );
-    render_blocks(&heading, &blocks, args.format)
+    render_blocks(&heading, &blocks, args.format, args.standalone)
 }
 
 /// The exact table: parameters (and `h`) as symbols, π symbolic; curve
