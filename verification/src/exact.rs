@@ -107,6 +107,14 @@ pub fn at_end(e: &Sym, end: End) -> Sym {
         .subs("t", &Sym::int(t))
 }
 
+/// The label of an identity's left side at a witness: the value of the
+/// expression checked (not a one-sided limit).
+pub const VALUE: &str = "value";
+
+/// The label of an identity's right side at a witness: the value the
+/// expression should have there.
+pub const TARGET: &str = "target";
+
 /// Decides `lhs = rhs` exactly: holds, or fails with the residual.
 pub fn identity(label: &str, lhs: &Sym, rhs: &Sym) -> Verdict {
     identities(vec![(label.to_string(), lhs.clone(), rhs.clone())])
@@ -114,7 +122,8 @@ pub fn identity(label: &str, lhs: &Sym, rhs: &Sym) -> Verdict {
 
 /// The evidence item of `lhs = rhs` about `label`: the residual exactly 0,
 /// or the residual `lhs − rhs` with a witness (a rational point where the
-/// two sides differ, both values exact).
+/// two sides differ, both values exact: [`VALUE`] and [`TARGET`], each
+/// with the expression it is the value of).
 pub fn identity_item(label: &str, lhs: &Sym, rhs: &Sym) -> Evidence {
     let residual = lhs.clone() - rhs;
     if residual.is_zero() {
@@ -122,8 +131,8 @@ pub fn identity_item(label: &str, lhs: &Sym, rhs: &Sym) -> Evidence {
     }
     Evidence::new(Kind::Identity, "")
         .about(label, Status::Fails)
-        .with("residual (left − right)", Expr::new(&residual))
-        .witnessed(witness::find(lhs, rhs, ("left", "right")))
+        .with("residual (value − target)", Expr::new(&residual))
+        .witnessed(witness::find(lhs, rhs, (VALUE, TARGET)))
 }
 
 /// The verdict on `lhs = rhs` with the residual as its only evidence.

@@ -184,6 +184,13 @@ fn reflection_counterexample(family: Family, param: (i64, i64), i: usize, j: usi
     let (a, b) = (value(family, &p, i, &x), value(family, &p, j, &y));
     let name = family.info().params[0].symbol;
     let f = family.info().functions;
+    // the two values as expressions of the exact basis, at their points
+    let param = Sym::var(family.info().params[0].name).to_sympy();
+    let functions = crate::exact::basis(family);
+    let of = |k: usize, x: &str| {
+        let f = functions[k].subs(family.info().params[0].name, &Sym::rational(p[0].clone()));
+        crate::numeric::at_sympy(&f, trig_core::Described::variable(&family), x)
+    };
     let status = if differ(&a, &b) {
         Status::Fails
     } else {
@@ -199,12 +206,12 @@ fn reflection_counterexample(family: Family, param: (i64, i64), i: usize, j: usi
             show(&b)
         ),
         &[
-            (name.to_string(), p[0].to_string()),
-            ("u".into(), "1/2".into()),
+            (name.to_string(), param.clone(), p[0].to_string()),
+            ("u".into(), "u".into(), "1/2".into()),
         ],
         [
-            (format!("{}(1/2)", f[i]), &a),
-            (format!("{}(π/2 − 1/2)", f[j]), &b),
+            (format!("{}(1/2)", f[i]), &a, of(i, "1/2")),
+            (format!("{}(π/2 − 1/2)", f[j]), &b, of(j, "pi/2 - (1/2)")),
         ],
     );
     Verdict::new(

@@ -280,6 +280,7 @@ fn certified(
                 let mut w = counterexample(&named, &z, &value, *trig);
                 let derivative = Rational::from(sign * &value);
                 w.values = vec![Value {
+                    of: None,
                     label: format!("{label}{on}"),
                     value: Expr::new(&Sym::rational(derivative)),
                 }];
