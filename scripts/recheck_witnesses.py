@@ -5,7 +5,8 @@ audit report alone (`trig-audit audit --format json`), with SymPy.
 No name mapping: each coordinate of a witness point names its SymPy
 `symbol` (the names the expressions' `sympy` forms use: `P0`, `lamda`,
 `theta`) and its value in SymPy syntax. A value that records the expression
-it is the value of (`of`) is re-computed by substituting the point; a
+it is the value of (`of`, or an expression of its item with the value's
+label) is re-computed by substituting the point; a
 witness whose item has a residual and two values is checked as
 residual(point) = first − second. Exact values must agree exactly, numeric
 ones to the digits shown. Not a project dependency (CI has no Python).
@@ -58,15 +59,18 @@ def check(item):
     subs = point_of(w)
     values = w["values"]
     checked = 0
+    # an expression of the item labelled as a value is that value's expression
+    labelled = {x["label"]: x["expr"] for x in item.get("exprs", [])}
     for v in values:
-        if "of" not in v:
+        of = v.get("of") or labelled.get(v["label"])
+        if of is None:
             continue
-        of = v["of"]
         e = parse(of["sympy"], of.get("symbols", []) + [str(s) for s in subs])
-        missing = e.free_symbols - set(subs)
+        got = sympy.simplify(e.subs(subs))
+        # symbols the point leaves free (control points) must be those of the value
+        missing = got.free_symbols - {sympy.Symbol(n) for n in v["value"].get("symbols", [])}
         if missing:
             return f"the point does not give {sorted(map(str, missing))}"
-        got = sympy.simplify(e.subs(subs))
         if not same(got, value_of(v["value"]), w["exact"]):
             return f"{v['label']}: substituted {got}, stated {v['value']['sympy']}"
         checked += 1

@@ -264,9 +264,23 @@ pub fn of_exprs(
     names: &[String],
     exprs: &[(&str, &Sym)],
 ) -> Option<Witness> {
+    // a variable the point leaves free (a control point) stays a symbol;
+    // `None` where a denominator vanishes
+    let value = |x: &Sym| {
+        let free = x
+            .variables()
+            .iter()
+            .any(|n| n != "pi" && !point.iter().any(|(m, _)| m == n));
+        if !free {
+            return at(x, point);
+        }
+        point.iter().try_fold(x.clone(), |acc, (n, q)| {
+            acc.try_subs(n, &Sym::rational(q.clone())).ok()
+        })
+    };
     let values: Option<Vec<Value>> = exprs
         .iter()
-        .map(|(label, x)| Some(Value::new(*label, Expr::new(&at(x, point)?)).of(x)))
+        .map(|(label, x)| Some(Value::new(*label, Expr::new(&value(x)?)).of(x)))
         .collect();
     Some(with_values(point, names, values?))
 }

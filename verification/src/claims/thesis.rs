@@ -316,20 +316,17 @@ fn t27() -> Verdict {
     };
     // at a parameter outside the range, the sum is 1 at every point
     let two = Rational::from(2);
-    let at = |x: &Sym| x.subs("m", &Sym::rational(two.clone()));
     let point = [
         ("m".to_string(), two.clone()),
         ("s".to_string(), Rational::from((3, 5))),
         ("c".to_string(), Rational::from((4, 5))),
     ];
-    let value = crate::witness::at(&at(&sum(&basis(Family::ThesisCubic))), &point);
-    let witness = value.map(|v| {
-        crate::witness::witness(
-            &point,
-            &["m".into(), "s".into(), "c".into()],
-            vec![("Σ b_i (claimed ≠ 1)", v)],
-        )
-    });
+    let total = sum(&basis(Family::ThesisCubic));
+    let witness = crate::witness::of_exprs(
+        &point,
+        &["m".into(), "s".into(), "c".into()],
+        &[("Σ b_i (claimed ≠ 1)", &total)],
+    );
     Verdict::new(
         status,
         crate::exact::IDENTITY,
@@ -430,14 +427,12 @@ fn t37() -> Verdict {
         ("c".to_string(), Rational::from((4, 5))),
     ];
     let curve = crate::exact::combination(&h, &points(3));
-    let f = point
-        .iter()
-        .fold(curve, |acc, (n, q)| acc.subs(n, &Sym::rational(q.clone())));
-    let witness = Some(crate::witness::witness(
+    // the control points stay symbols: F is P1 there, whatever they are
+    let witness = crate::witness::of_exprs(
         &point,
         &["beta".into(), "s".into(), "c".into()],
-        vec![("F (the same point P1 for every θ)", f)],
-    ));
+        &[("F (the same point P1 for every θ)", &curve)],
+    );
     evidence.push(
         Evidence::note(
             "with β = 0 the curve is F(u) = P1 for every u: a single point, not a straight line (3.2.3 says the same: \"H1(u) becomes identically equal to one\")",
