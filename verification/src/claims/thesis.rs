@@ -225,7 +225,10 @@ fn reflection_counterexample(family: Family, param: (i64, i64), i: usize, j: usi
 }
 
 fn t4() -> Verdict {
-    reflection_counterexample(Family::ThesisQuadratic, (1, 1), 0, 2)
+    crate::exact::defined_by(
+        reflection_counterexample(Family::ThesisQuadratic, (1, 1), 0, 2),
+        &Family::ThesisQuadratic,
+    )
 }
 
 fn t4b() -> Verdict {
@@ -276,7 +279,7 @@ fn t9() -> Verdict {
     let mut v = reflection_counterexample(Family::ThesisCubic, (0, 1), 0, 2);
     v.evidence
         .push("as printed the index 2 − i is also out of range for i = 3 (b_{−1} does not exist)");
-    v
+    crate::exact::defined_by(v, &Family::ThesisCubic)
 }
 
 fn t9b() -> Verdict {
@@ -399,7 +402,7 @@ fn t33() -> Verdict {
             .map(|i| format!("b{i}(1)"))
             .collect()
     };
-    identities(parts).with_correction(format!(
+    crate::exact::defined_by(identities(parts), &Family::ThesisCubic).with_correction(format!(
         "{} = 0 and {} = 1 (the computed values)",
         with(0).join(" = "),
         with(1).join(" = ")
@@ -538,7 +541,7 @@ fn t3() -> Verdict {
 }
 
 fn t8() -> Verdict {
-    Verdict::all(
+    let v = Verdict::all(
         crate::judge::certificate::CERTIFIED,
         vec![
             (
@@ -550,7 +553,8 @@ fn t8() -> Verdict {
                 monotone(&Family::ThesisCubic, 2, true, Some("m"), &m_range()),
             ),
         ],
-    )
+    );
+    crate::exact::defined_by(v, &Family::ThesisCubic)
 }
 
 fn t8a() -> Verdict {

@@ -157,7 +157,10 @@ fn exact_symmetry<B: ExactBasis>(
 pub fn reflection_symmetry<B: ExactBasis>(basis: &B, indices: Range<i64>) -> Verdict {
     let n = basis.function_names().len() as i64;
     let a = basis.domain().reflection();
-    exact_symmetry(basis, &a, (n - 1, ""), &param_symbols(basis), indices)
+    crate::exact::defined_by(
+        exact_symmetry(basis, &a, (n - 1, ""), &param_symbols(basis), indices),
+        basis,
+    )
 }
 
 /// The battery's symmetry: the reflection of the domain with the indices
@@ -220,7 +223,7 @@ pub fn symmetry_claim<B: ExactBasis>(basis: &B, s: &PrintedSymmetry<'_>) -> Verd
         v.evidence
             .insert(0, format!("parameters substituted: {}", s.params_text));
     }
-    v
+    crate::exact::defined_by(v, basis)
 }
 
 fn printed_reflection<B: ExactBasis>(basis: &B, s: &PrintedSymmetry<'_>) -> Verdict {
