@@ -178,3 +178,64 @@ fn no_correction_repeats_the_printed_statement() {
         }
     }
 }
+
+/// One naming scheme in the JSON report: every symbol of the expression a
+/// witness value records (`of`) is named by a coordinate of the point
+/// (`symbol`, with a SymPy `sympy` value) or left free in a symbolic value
+/// (control points kept as symbols), so a program substitutes the point
+/// with no mapping;
+/// a point in `s`, `c` gives `theta`.
+#[test]
+fn witness_points_name_the_symbols_of_their_expressions() {
+    let value = serde_json::to_value(report::json(outcomes())).expect("JSON");
+    let mut checked = 0;
+    for claim in value["claims"].as_array().expect("claims") {
+        for item in claim["evidence"].as_array().into_iter().flatten() {
+            let Some(w) = item.get("witness") else {
+                continue;
+            };
+            let point: Vec<&str> = w["point"]
+                .as_array()
+                .expect("a point")
+                .iter()
+                .filter(|a| a.get("sympy").is_some())
+                .filter_map(|a| a.get("symbol").and_then(|s| s.as_str()))
+                .collect();
+            let names: Vec<&str> = w["point"]
+                .as_array()
+                .expect("a point")
+                .iter()
+                .filter_map(|a| a["name"].as_str())
+                .collect();
+            if names.contains(&"s") || names.contains(&"c") {
+                assert!(
+                    point.contains(&"theta"),
+                    "{}: no θ beside s, c",
+                    claim["id"]
+                );
+            }
+            for v in w["values"].as_array().expect("values") {
+                let Some(of) = v.get("of") else {
+                    continue;
+                };
+                let kept: Vec<&str> = v["value"]["symbols"]
+                    .as_array()
+                    .into_iter()
+                    .flatten()
+                    .filter_map(|s| s.as_str())
+                    .collect();
+                for s in of["symbols"].as_array().into_iter().flatten() {
+                    let s = s.as_str().expect("a name");
+                    assert!(
+                        point.contains(&s) || !kept.is_empty(),
+                        "{}: `{s}` of {} is not named by the point {point:?}",
+                        claim["id"],
+                        of["sympy"]
+                    );
+                }
+                checked += 1;
+            }
+        }
+    }
+    assert!(checked > 100, "{checked} values with their expression");
+}
