@@ -44,7 +44,7 @@ fn thesis_c1_formula_and_its_singularity() {
         "different",
     ]);
     assert!(
-        out.contains("Q₁ = ((−m₁ − 2)/(m₂ + 2))·P₂ + ((m₁ + m₂ + 4)/(m₂ + 2))·P₃"),
+        out.contains("Q₁ = (−m₁ − 2)/(m₂ + 2)·P₂ + (m₁ + m₂ + 4)/(m₂ + 2)·P₃"),
         "{out}"
     );
     assert!(out.contains("singular where m₂ = −2"), "{out}");

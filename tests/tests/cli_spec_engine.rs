@@ -106,7 +106,10 @@ fn every_witness_is_a_real_point() {
     let cbs = example("c-bspline.toml");
     let (v, e) = claim(&cbs, "CBS-C3");
     assert_eq!(v, "fails", "{e}");
-    assert!(e.contains(r#""name":"α","value":"1/2·π""#), "{e}");
+    assert!(
+        e.contains(r#""name":"α","symbol":"alpha","sympy":"1/2*pi","value":"1/2·π""#),
+        "{e}"
+    );
     assert!(!e.contains(r#""name":"cos(alpha)""#), "{e}");
     // README B7 / C5: the plain symmetry of the exponential Bernstein
     // functions fails; at α = 1, t = 1/2 b0 = 0.241175365473302455…, b3(α −

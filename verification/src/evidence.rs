@@ -19,7 +19,7 @@ use std::ops::Deref;
 
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
-use trig_symbolic::{Style, Sym, sympy_symbols};
+use trig_symbolic::{Style, Sym, combine, sympy_symbols};
 
 use crate::status::Status;
 
@@ -187,55 +187,6 @@ impl Expr {
     }
 }
 
-/// `c₁·v₁ + c₂·v₂ − …` from printed coefficients and variables: a
-/// coefficient `1` is left out, `−1` becomes a sign, a coefficient of one
-/// term (or a product) needs no parentheses, a sum does.
-fn combine(parts: &[(String, String)], style: Style) -> String {
-    let mut out = String::new();
-    for (i, (c, v)) in parts.iter().enumerate() {
-        let (negative, body) = match c.strip_prefix(style.minus()) {
-            Some(rest) if !has_top_level_sum(rest, style) => (true, rest.to_string()),
-            _ => (false, c.clone()),
-        };
-        let term = if body == "1" {
-            v.clone()
-        } else if has_top_level_sum(&body, style) {
-            format!("({body}){}{v}", style.times())
-        } else {
-            format!("{body}{}{v}", style.times())
-        };
-        match (i, negative) {
-            (0, true) => out.push_str(style.minus()),
-            (0, false) => {}
-            (_, true) => {
-                out.push(' ');
-                out.push_str(style.minus());
-                out.push(' ');
-            }
-            (_, false) => out.push_str(" + "),
-        }
-        out.push_str(&term);
-    }
-    out
-}
-
-/// True when `text` has a `+` or `−` outside parentheses and braces (after
-/// a leading sign).
-fn has_top_level_sum(text: &str, style: Style) -> bool {
-    let minus = style.minus().chars().next().unwrap_or('-');
-    let mut depth = 0i32;
-    for (i, ch) in text.chars().enumerate() {
-        match ch {
-            '(' | '{' => depth += 1,
-            ')' | '}' => depth -= 1,
-            '+' if depth == 0 && i > 0 => return true,
-            c if c == minus && depth == 0 && i > 0 => return true,
-            _ => {}
-        }
-    }
-    false
-}
-
 fn symbols_of(x: &Sym) -> Vec<String> {
     let vars = x.variables();
     sympy_symbols(vars.iter().map(String::as_str))
@@ -251,15 +202,92 @@ pub struct Assignment {
     pub value: String,
     /// `name = value` in LaTeX math.
     pub latex: String,
+    /// The variable as the expressions' SymPy forms name it (`P0`,
+    /// `lamda`, `theta`): one of their `symbols`. Absent for `s`, `c`
+    /// (they are `sin(theta)`, `cos(theta)` there; `theta` is given too).
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub symbol: Option<String>,
+    /// The value in SymPy syntax (`3/5`, `pi/2`, `atan2(3, 4)`).
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub sympy: Option<String>,
+}
+
+impl Assignment {
+    /// The variable `var` (as the exact ring names it) set to `value`.
+    pub fn exact(var: &str, value: &Sym) -> Assignment {
+        let trig = var == "s" || var == "c";
+        Assignment {
+            name: Sym::var(var).to_unicode(),
+            value: value.to_unicode(),
+            latex: format!("{} = {}", Sym::var(var).to_latex(), value.to_latex()),
+            symbol: (!trig).then(|| Sym::var(var).to_sympy()),
+            sympy: Some(value.to_sympy()),
+        }
+    }
+
+    /// The angle `θ ∈ [0, π/2]` of a point `(s, c) = (sin θ, cos θ)` of the
+    /// unit circle, exactly, from the coordinates the point gives:
+    /// `atan2(s, c)`, `asin(s)` or `acos(c)` (`0`, `π/2` where that is what
+    /// it is).
+    pub fn angle(s: Option<&Sym>, c: Option<&Sym>) -> Option<Assignment> {
+        let is = |x: Option<&Sym>, v: i32| x.and_then(Sym::as_rational).is_some_and(|q| q == v);
+        let (unicode, sympy, latex) = if is(s, 0) || is(c, 1) {
+            ("0".to_string(), "0".to_string(), "0".to_string())
+        } else if is(s, 1) || is(c, 0) {
+            ("π/2".to_string(), "pi/2".to_string(), "\\pi/2".to_string())
+        } else {
+            let (f, args): (&str, Vec<&Sym>) = match (s, c) {
+                (Some(s), Some(c)) => ("atan2", vec![s, c]),
+                (Some(s), None) => ("asin", vec![s]),
+                (None, Some(c)) => ("acos", vec![c]),
+                (None, None) => return None,
+            };
+            let join =
+                |g: fn(&Sym) -> String| args.iter().map(|x| g(x)).collect::<Vec<_>>().join(", ");
+            (
+                format!("{f}({})", join(Sym::to_unicode)),
+                format!("{f}({})", join(Sym::to_sympy)),
+                format!("\\operatorname{{{f}}}({})", join(Sym::to_latex)),
+            )
+        };
+        Some(Assignment {
+            name: "θ".into(),
+            value: unicode,
+            latex: format!("\\theta = {latex}"),
+            symbol: Some("theta".into()),
+            sympy: Some(sympy),
+        })
+    }
 }
 
 /// A labelled value of a witness.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Value {
-    /// What the value is (`printed`, `computed`, `left side`, …).
+    /// What the value is (`value`, `target`, `printed`, `computed`, …).
     pub label: String,
     pub value: Expr,
+    /// The expression whose value at the point this is, when it is one
+    /// (substitute the point's `symbol = sympy` pairs into its SymPy form to re-check).
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub of: Option<Expr>,
+}
+
+impl Value {
+    /// A labelled value.
+    pub fn new(label: impl Into<String>, value: Expr) -> Value {
+        Value {
+            label: label.into(),
+            value,
+            of: None,
+        }
+    }
+
+    /// The same value, as the value of `expr` at the point.
+    pub fn of(mut self, expr: &Sym) -> Value {
+        self.of = Some(Expr::new(expr));
+        self
+    }
 }
 
 /// A point where a claim can be seen to fail by hand: every variable set to
@@ -318,7 +346,7 @@ pub struct Part {
 pub enum Kind {
     /// Prose: a definition, a convention, a reading, a conclusion.
     Note,
-    /// An identity decided exactly: its residual (left − right).
+    /// An identity decided exactly: its residual (value − target).
     Identity,
     /// A printed value against the computed one.
     Comparison,

@@ -72,6 +72,45 @@ pub fn basis_of<B: ExactBasis>(b: &B) -> Vec<Sym> {
     b.exact_functions()
 }
 
+/// The functions of `basis` as the audit encodes them, with where they are
+/// printed: one item a failing claim's entry carries, so that a reader
+/// re-checks its witness without opening the seed (every function exactly,
+/// in `s = sin θ`, `c = cos θ` or the polynomial variable; the JSON gives
+/// each in every form).
+pub fn definitions<B: ExactBasis>(basis: &B) -> Evidence {
+    let domain = basis.domain();
+    let angle = match basis.variable() {
+        Some(trig_core::Variable::UnitAngle) => {
+            format!("; s = sin θ, c = cos θ, θ = π{}/2", basis.variable_name())
+        }
+        Some(trig_core::Variable::Angle) => {
+            format!("; s = sin {0}, c = cos {0}", basis.variable_name())
+        }
+        _ if domain.is_trigonometric() => "; s = sin θ, c = cos θ".to_string(),
+        _ => String::new(),
+    };
+    let text = format!(
+        "the functions as encoded from {} ({}{angle})",
+        basis.citation(),
+        domain.to_string().replace(" in ", " ∈ ").replace("pi", "π")
+    );
+    basis
+        .function_names()
+        .iter()
+        .zip(basis.exact_functions())
+        .fold(Evidence::note(text), |item, (name, f)| {
+            item.with(name.clone(), Expr::new(&f))
+        })
+}
+
+/// `v` with the [`definitions`] of `basis` at the end when it does not hold.
+pub fn defined_by<B: ExactBasis>(mut v: Verdict, basis: &B) -> Verdict {
+    if v.status != Status::Holds {
+        v.evidence.push(definitions(basis));
+    }
+    v
+}
+
 /// The family's parameters as symbols.
 pub fn params(family: Family) -> Vec<Sym> {
     family
@@ -107,6 +146,14 @@ pub fn at_end(e: &Sym, end: End) -> Sym {
         .subs("t", &Sym::int(t))
 }
 
+/// The label of an identity's left side at a witness: the value of the
+/// expression checked (not a one-sided limit).
+pub const VALUE: &str = "value";
+
+/// The label of an identity's right side at a witness: the value the
+/// expression should have there.
+pub const TARGET: &str = "target";
+
 /// Decides `lhs = rhs` exactly: holds, or fails with the residual.
 pub fn identity(label: &str, lhs: &Sym, rhs: &Sym) -> Verdict {
     identities(vec![(label.to_string(), lhs.clone(), rhs.clone())])
@@ -114,7 +161,8 @@ pub fn identity(label: &str, lhs: &Sym, rhs: &Sym) -> Verdict {
 
 /// The evidence item of `lhs = rhs` about `label`: the residual exactly 0,
 /// or the residual `lhs − rhs` with a witness (a rational point where the
-/// two sides differ, both values exact).
+/// two sides differ, both values exact: [`VALUE`] and [`TARGET`], each
+/// with the expression it is the value of).
 pub fn identity_item(label: &str, lhs: &Sym, rhs: &Sym) -> Evidence {
     let residual = lhs.clone() - rhs;
     if residual.is_zero() {
@@ -122,8 +170,8 @@ pub fn identity_item(label: &str, lhs: &Sym, rhs: &Sym) -> Evidence {
     }
     Evidence::new(Kind::Identity, "")
         .about(label, Status::Fails)
-        .with("residual (left − right)", Expr::new(&residual))
-        .witnessed(witness::find(lhs, rhs, ("left", "right")))
+        .with("residual (value − target)", Expr::new(&residual))
+        .witnessed(witness::find(lhs, rhs, (VALUE, TARGET)))
 }
 
 /// The verdict on `lhs = rhs` with the residual as its only evidence.

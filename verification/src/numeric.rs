@@ -34,20 +34,24 @@ pub fn show(x: &Mpfr) -> String {
 }
 
 /// A numeric counterexample as evidence: `text` says what was evaluated;
-/// the witness gives the point (`name = value`, exact) and the two values
-/// at 30 significant digits (not exact: `exact` is false).
+/// the witness gives the point (`printed` name, SymPy `symbol`, exact
+/// `value`) and the two values at 30 significant digits (not exact:
+/// `exact` is false), each with the expression it is the value of, in
+/// SymPy syntax with the point's symbols free (see [`at_sympy`]).
 pub fn counterexample_item(
     text: String,
-    point: &[(String, String)],
-    values: [(String, &Mpfr); 2],
+    point: &[(String, String, String)],
+    values: [(String, &Mpfr, String); 2],
 ) -> Evidence {
     let witness = Witness {
         point: point
             .iter()
-            .map(|(n, v)| Assignment {
+            .map(|(n, symbol, v)| Assignment {
                 name: n.clone(),
                 value: v.clone(),
                 latex: format!("{} = {}", trig_tex::math(n), trig_tex::math(v)),
+                symbol: Some(symbol.clone()),
+                sympy: Some(v.clone()),
             })
             .collect(),
         note: Some(format!(
@@ -55,7 +59,8 @@ pub fn counterexample_item(
         )),
         values: values
             .into_iter()
-            .map(|(label, x)| Value {
+            .map(|(label, x, of)| Value {
+                of: Some(Expr::literal(&label, &of)),
                 label,
                 value: Expr::numeric(&show(x)),
             })
@@ -63,6 +68,34 @@ pub fn counterexample_item(
         exact: false,
     };
     Evidence::new(Kind::Numeric, text).witnessed(Some(witness))
+}
+
+/// `f` (exact, in the atoms `s`, `c`, `t`) at the value `x` of a basis's
+/// variable, in SymPy syntax (`x` in SymPy syntax too): `θ = πx/2` for a
+/// variable `u` of the unit angle, `θ = x` for an angle, `t = x` for a
+/// polynomial variable.
+pub fn at_sympy(f: &trig_symbolic::Sym, variable: Option<trig_core::Variable>, x: &str) -> String {
+    use trig_core::Variable;
+    match variable {
+        Some(Variable::Polynomial) => f
+            .to_sympy()
+            .split_inclusive(|c: char| !c.is_alphanumeric() && c != '_')
+            .map(|piece| {
+                let (word, rest) = piece.split_at(
+                    piece
+                        .trim_end_matches(|c: char| !c.is_alphanumeric() && c != '_')
+                        .len(),
+                );
+                if word == "t" {
+                    format!("({x}){rest}")
+                } else {
+                    piece.to_string()
+                }
+            })
+            .collect(),
+        Some(Variable::UnitAngle) => f.to_sympy().replace("theta", &format!("(pi/2*({x}))")),
+        _ => f.to_sympy().replace("theta", &format!("({x})")),
+    }
 }
 
 /// True when `|a − b|` exceeds `2⁻²⁰⁰`, far above the 256-bit rounding of

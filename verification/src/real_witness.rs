@@ -130,16 +130,18 @@ fn witness(
     let mut point: Vec<Assignment> = points
         .symbols
         .iter()
+        .zip(&points.domain.param_names)
         .zip(&d.params)
-        .map(|(symbol, v)| assignment(symbol, v))
+        .map(|((symbol, name), v)| assignment(symbol, name, v))
         .collect();
     if uses_x {
-        point.push(assignment(&points.domain.name, &d.x));
+        let x = &points.domain.name;
+        point.push(assignment(x, x, &d.x));
     }
     point.extend(
         fixed
             .iter()
-            .map(|(n, q)| assignment(&Sym::var(n).to_unicode(), &Sym::rational(q.clone()))),
+            .map(|(n, q)| Assignment::exact(n, &Sym::rational(q.clone()))),
     );
     let exact = matches!(d.left, RealValue::Exact(_)) && matches!(d.right, RealValue::Exact(_));
     let value = |v: &RealValue| match v {
@@ -162,10 +164,12 @@ fn witness(
         }),
         values: vec![
             Value {
+                of: None,
                 label: labels.0.to_string(),
                 value: value(&d.left),
             },
             Value {
+                of: None,
                 label: labels.1.to_string(),
                 value: value(&d.right),
             },
@@ -174,11 +178,14 @@ fn witness(
     }
 }
 
-fn assignment(name: &str, v: &Sym) -> Assignment {
+/// `printed = v`, the variable `name` of the expressions.
+fn assignment(printed: &str, name: &str, v: &Sym) -> Assignment {
     Assignment {
-        name: name.to_string(),
+        name: printed.to_string(),
         value: v.to_unicode(),
-        latex: format!("{} = {}", name, v.to_latex()),
+        latex: format!("{} = {}", printed, v.to_latex()),
+        symbol: Some(Sym::var(name).to_sympy()),
+        sympy: Some(v.to_sympy()),
     }
 }
 

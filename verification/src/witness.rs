@@ -180,11 +180,6 @@ pub fn at(x: &Sym, point: &[(String, Rational)]) -> Option<Sym> {
     x.eval(&Sym::one(), &value).ok()
 }
 
-/// The printed name of a variable (Unicode, as the expressions print it).
-fn shown(name: &str) -> String {
-    Sym::var(name).to_unicode()
-}
-
 /// The variables of `exprs` in witness order: parameters, then the atoms,
 /// then the other symbols.
 pub fn ordered_names<'a>(exprs: impl IntoIterator<Item = &'a Sym>) -> Vec<String> {
@@ -229,8 +224,7 @@ pub fn find(left: &Sym, right: &Sym, labels: (&str, &str)) -> Option<Witness> {
         _ => false,
     };
     let point = search(&names, &differ)?;
-    let (l, r) = (at(left, &point)?, at(right, &point)?);
-    Some(witness(&point, &names, vec![(labels.0, l), (labels.1, r)]))
+    of_exprs(&point, &names, &[(labels.0, left), (labels.1, right)])
 }
 
 /// True when valuing `names` one by one (as [`search`] does) names a real
@@ -252,6 +246,46 @@ pub fn witness(
     names: &[String],
     values: Vec<(&str, Sym)>,
 ) -> Witness {
+    with_values(
+        point,
+        names,
+        values
+            .into_iter()
+            .map(|(label, v)| Value::new(label, Expr::new(&v)))
+            .collect(),
+    )
+}
+
+/// A witness at `point` whose values are those of `exprs` there (each
+/// value records its expression, so a reader or a program re-checks it by
+/// substituting the point).
+pub fn of_exprs(
+    point: &[(String, Rational)],
+    names: &[String],
+    exprs: &[(&str, &Sym)],
+) -> Option<Witness> {
+    // a variable the point leaves free (a control point) stays a symbol;
+    // `None` where a denominator vanishes
+    let value = |x: &Sym| {
+        let free = x
+            .variables()
+            .iter()
+            .any(|n| n != "pi" && !point.iter().any(|(m, _)| m == n));
+        if !free {
+            return at(x, point);
+        }
+        point.iter().try_fold(x.clone(), |acc, (n, q)| {
+            acc.try_subs(n, &Sym::rational(q.clone())).ok()
+        })
+    };
+    let values: Option<Vec<Value>> = exprs
+        .iter()
+        .map(|(label, x)| Some(Value::new(*label, Expr::new(&value(x)?)).of(x)))
+        .collect();
+    Some(with_values(point, names, values?))
+}
+
+fn with_values(point: &[(String, Rational)], names: &[String], values: Vec<Value>) -> Witness {
     let trig = names.iter().any(|n| n == "s" || n == "c");
     let pi = names.iter().any(|n| n == "pi");
     let mut notes = Vec::new();
@@ -261,34 +295,29 @@ pub fn witness(
     if pi {
         notes.push("π kept as a symbol".to_string());
     }
-    Witness {
-        point: point
+    let mut coordinates: Vec<Assignment> = point
+        .iter()
+        .map(|(n, q)| Assignment::exact(n, &Sym::rational(q.clone())))
+        .collect();
+    // the angle θ of (s, c): the variable the SymPy forms are written in
+    let value = |n: &str| {
+        point
             .iter()
-            .map(|(n, q)| Assignment {
-                name: shown(n),
-                value: q.to_string(),
-                latex: format!(
-                    "{} = {}",
-                    Sym::var(n).to_latex(),
-                    Sym::rational(q.clone()).to_latex()
-                ),
-            })
-            .collect(),
+            .find(|(m, _)| m == n)
+            .map(|(_, q)| Sym::rational(q.clone()))
+    };
+    coordinates.extend(Assignment::angle(value("s").as_ref(), value("c").as_ref()));
+    Witness {
+        point: coordinates,
         note: (!notes.is_empty()).then(|| notes.join("; ")),
-        values: values
-            .into_iter()
-            .map(|(label, v)| Value {
-                label: label.to_string(),
-                value: Expr::new(&v),
-            })
-            .collect(),
+        values,
         exact: true,
     }
 }
 
 /// A witness for a residual alone (`residual ≠ 0`): its value at the point.
 pub fn of_residual(residual: &Sym) -> Option<Witness> {
-    find(residual, &Sym::zero(), ("left − right", "0")).map(|mut w| {
+    find(residual, &Sym::zero(), ("residual", "0")).map(|mut w| {
         w.values.truncate(1);
         w
     })

@@ -13,12 +13,12 @@ use trig_verification::report::{self, Entry, View};
 use trig_verification::{Outcome, Seed, Status, run};
 
 /// The whole audit, run once for the tests of this file.
-fn outcomes() -> &'static [Outcome] {
+pub(crate) fn outcomes() -> &'static [Outcome] {
     static ALL: OnceLock<Vec<Outcome>> = OnceLock::new();
     ALL.get_or_init(|| run(None, None))
 }
 
-fn entries() -> Vec<Entry> {
+pub(crate) fn entries() -> Vec<Entry> {
     report::entries(outcomes())
 }
 

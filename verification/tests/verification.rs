@@ -11,3 +11,4 @@ mod shape_effect;
 mod spec_audit;
 mod thesis_interp;
 mod total_positivity;
+mod witness_lines;

@@ -37,22 +37,12 @@ impl Cell for Sym {
         self.to_latex()
     }
     fn combination(&self, vars: &[String]) -> Rendered {
-        let Some(terms) = self.linear_in(vars) else {
+        if self.linear_in(vars).is_none() {
             return Rendered::of(self);
-        };
+        }
         let join = |style: Style| {
-            terms
-                .iter()
-                .map(|(v, coef)| {
-                    format!(
-                        "({}){}{}",
-                        style.sym(coef),
-                        style.times(),
-                        style.sym(&Sym::var(v))
-                    )
-                })
-                .collect::<Vec<_>>()
-                .join(" + ")
+            self.combination_in(vars, style)
+                .unwrap_or_else(|| style.sym(self))
         };
         Rendered {
             text: join(Style::Plain),

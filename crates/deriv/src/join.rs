@@ -320,7 +320,7 @@ pub fn solve_join_with<B: Basis>(
             return Err(JoinError::Inconsistent {
                 kind,
                 order,
-                residual: reduced.to_string(),
+                residual: reduced.to_unicode(),
             });
         };
         let pivot = reduced.diff(&names[index]);

@@ -59,6 +59,7 @@ pub mod var;
 
 pub use error::SymError;
 pub use factor::{Factored, FactoredQuotient};
+pub use linear::combine;
 pub use monomial::Monomial;
 pub use names::{NameClash, Names};
 pub use poly::Poly;

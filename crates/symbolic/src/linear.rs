@@ -1,6 +1,7 @@
 //! Reading a value as a linear combination `Σ cᵢ·vᵢ` of named variables
 //! (control points), for printing formulas the way papers print them.
 
+use crate::print::Style;
 use crate::sym::Sym;
 
 impl Sym {
@@ -19,18 +20,75 @@ impl Sym {
         (!terms.is_empty() && rest.is_zero()).then_some(terms)
     }
 
-    /// Unicode `(c₁)·v₁ + (c₂)·v₂ + …` when `self` is a combination of `vars`,
-    /// else the plain Unicode form.
+    /// Unicode `c₁·v₁ + c₂·v₂ − …` when `self` is a combination of `vars`
+    /// (see [`combine`]), else the plain Unicode form.
     pub fn to_combination(&self, vars: &[String]) -> String {
-        match self.linear_in(vars) {
-            Some(terms) => terms
-                .iter()
-                .map(|(v, c)| format!("({})·{}", c.to_unicode(), Sym::var(v).to_unicode()))
-                .collect::<Vec<_>>()
-                .join(" + "),
-            None => self.to_unicode(),
+        self.combination_in(vars, Style::Unicode)
+            .unwrap_or_else(|| self.to_unicode())
+    }
+
+    /// `self` as a combination of `vars` in `style` ([`combine`]), when it
+    /// is one.
+    pub fn combination_in(&self, vars: &[String], style: Style) -> Option<String> {
+        let terms = self.linear_in(vars)?;
+        let parts: Vec<(String, String)> = terms
+            .iter()
+            .map(|(v, c)| (style.sym(c), style.sym(&Sym::var(v))))
+            .collect();
+        Some(combine(&parts, style))
+    }
+}
+
+/// `c₁·v₁ + c₂·v₂ − …` from printed coefficients and variables: a
+/// coefficient `1` is left out, `−1` becomes a sign, a coefficient of one
+/// term (or a product) needs no parentheses, a sum does; a constant term
+/// (the variable `1`) is its coefficient.
+pub fn combine(parts: &[(String, String)], style: Style) -> String {
+    let mut out = String::new();
+    for (i, (c, v)) in parts.iter().enumerate() {
+        let (negative, body) = match c.strip_prefix(style.minus()) {
+            Some(rest) if !has_top_level_sum(rest, style) => (true, rest.to_string()),
+            _ => (false, c.clone()),
+        };
+        let term = if v == "1" {
+            body
+        } else if body == "1" {
+            v.clone()
+        } else if has_top_level_sum(&body, style) {
+            format!("({body}){}{v}", style.times())
+        } else {
+            format!("{body}{}{v}", style.times())
+        };
+        match (i, negative) {
+            (0, true) => out.push_str(style.minus()),
+            (0, false) => {}
+            (_, true) => {
+                out.push(' ');
+                out.push_str(style.minus());
+                out.push(' ');
+            }
+            (_, false) => out.push_str(" + "),
+        }
+        out.push_str(&term);
+    }
+    out
+}
+
+/// True when `text` has a `+` or `−` outside parentheses and braces (after
+/// a leading sign).
+fn has_top_level_sum(text: &str, style: Style) -> bool {
+    let minus = style.minus().chars().next().unwrap_or('-');
+    let mut depth = 0i32;
+    for (i, ch) in text.chars().enumerate() {
+        match ch {
+            '(' | '{' => depth += 1,
+            ')' | '}' => depth -= 1,
+            '+' if depth == 0 && i > 0 => return true,
+            c if c == minus && depth == 0 && i > 0 => return true,
+            _ => {}
         }
     }
+    false
 }
 
 #[cfg(test)]

@@ -128,9 +128,65 @@ pub(crate) fn unicode_name(n: &str) -> String {
     name(n, Style::Unicode)
 }
 
+/// An indexed name `X_k` (`k` an index letter and an offset, or digits):
+/// `y_i` is `y_i`, `y_i1` is `y_{i+1}`, `P_2` is `P_2`, `b1_2` is `b_{1,2}`
+/// — the subscript, in Unicode and LaTeX, as the documents write it.
+fn indexed(n: &str) -> Option<(&str, String)> {
+    let (base, index) = n.rsplit_once('_')?;
+    let letter = index.chars().next()?;
+    let offset = &index[letter.len_utf8()..];
+    let sub = if index.bytes().all(|b| b.is_ascii_digit()) {
+        index.to_string()
+    } else if ['i', 'j', 'k', 'n'].contains(&letter) && offset.bytes().all(|b| b.is_ascii_digit()) {
+        if offset.is_empty() {
+            letter.to_string()
+        } else {
+            format!("{letter}+{offset}")
+        }
+    } else {
+        return None;
+    };
+    let (prefix, digits) = split_digits(base);
+    if prefix.is_empty() || prefix.contains('_') {
+        return None;
+    }
+    let sub = if digits.is_empty() {
+        sub
+    } else {
+        format!("{digits},{sub}")
+    };
+    Some((prefix, sub))
+}
+
+/// A subscript in Unicode characters (digits, `i`, `j`, `k`, `n`, `+`, `,`).
+fn unicode_subscript(sub: &str) -> String {
+    sub.chars()
+        .map(|ch| match ch {
+            '0'..='9' => SUBSCRIPTS[ch as usize - '0' as usize],
+            'i' => 'ᵢ',
+            'j' => 'ⱼ',
+            'k' => 'ₖ',
+            'n' => 'ₙ',
+            '+' => '₊',
+            other => other,
+        })
+        .collect()
+}
+
 fn name(n: &str, style: Style) -> String {
     if style == Style::Sympy {
         return sympy_name(n);
+    }
+    if style != Style::Plain
+        && let Some((prefix, sub)) = indexed(n)
+    {
+        return match style {
+            Style::Unicode => {
+                let base = greek(prefix).map_or_else(|| prefix.to_string(), String::from);
+                format!("{base}{}", unicode_subscript(&sub))
+            }
+            _ => tex::name(prefix, &sub),
+        };
     }
     let (prefix, digits) = split_digits(n);
     if style == Style::Plain || prefix.is_empty() {
@@ -371,6 +427,26 @@ mod tests {
 
     fn forms(x: &Sym) -> [String; 3] {
         [x.to_string(), x.to_unicode(), x.to_latex()]
+    }
+
+    /// Indexed names print with their subscript as the documents write
+    /// it, never as an underscore before a subscript digit (`y_i₁`).
+    #[test]
+    fn indexed_names() {
+        for (name, unicode, latex) in [
+            ("y_i", "yᵢ", "y_{i}"),
+            ("y_i1", "yᵢ₊₁", "y_{i+1}"),
+            ("D_i2", "Dᵢ₊₂", "D_{i+2}"),
+            ("P_2", "P₂", "P_{2}"),
+            ("b1_2", "b₁,₂", "b_{1,2}"),
+            ("dt_i1", "dtᵢ₊₁", r"\mathrm{dt}_{i+1}"),
+            ("w1", "w₁", "w_{1}"),
+        ] {
+            assert_eq!(v(name).to_unicode(), unicode, "{name}");
+            assert_eq!(v(name).to_latex(), latex, "{name}");
+            assert_eq!(v(name).to_string(), name);
+            assert_eq!(v(name).to_sympy(), name);
+        }
     }
 
     #[test]

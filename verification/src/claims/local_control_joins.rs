@@ -13,7 +13,7 @@ use trig_symbolic::Sym;
 
 use super::local_control::{seed002_segment, thesis_tangents};
 use crate::evidence::{Evidence, Kind};
-use crate::exact::{IDENTITY, identities, identity_item, symbols};
+use crate::exact::{IDENTITY, TARGET, VALUE, identities, identity_item, symbols};
 use crate::status::Status;
 use crate::verdict::Verdict;
 use crate::witness;
@@ -38,13 +38,9 @@ fn one_item(label: &str, lhs: &Sym, rhs: &Sym, point: &[(&str, i64)]) -> Verdict
     let names: Vec<String> = point.iter().map(|(n, _)| n.clone()).collect();
     if item.status == Some(Status::Fails)
         && let (Some(l), Some(r)) = (witness::at(lhs, &point), witness::at(rhs, &point))
-        && !(l.clone() - &r).is_zero()
+        && !(l - &r).is_zero()
     {
-        item.witness = Some(witness::witness(
-            &point,
-            &names,
-            vec![("left", l), ("right", r)],
-        ));
+        item.witness = witness::of_exprs(&point, &names, &[(VALUE, lhs), (TARGET, rhs)]);
     }
     Verdict::new(
         item.status.unwrap_or(Status::NotCheckable),

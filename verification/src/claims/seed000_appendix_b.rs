@@ -83,9 +83,11 @@ fn conclusion() -> Verdict {
     let bx = ParamBox::closed(Rational::new(), Rational::from(4));
     for (name, g) in [("F1", &f[1]), ("F2", &f[2])] {
         let what = format!("uniform (Appendix A) middle piece {name} − 1/200 ≥ 0, ζ ∈ [0, 4]");
+        let shifted = g.clone() - &margin;
         let (status, line) = describe(
             &what,
-            &certify(&(g.clone() - &margin), true, Some("zeta"), &bx),
+            Some(&shifted),
+            &certify(&shifted, true, Some("zeta"), &bx),
             true,
             Some("zeta"),
         );
@@ -103,7 +105,8 @@ fn conclusion() -> Verdict {
         );
         let v = match f.bspline_piece(j, piece, &s, &c) {
             Ok(g) => {
-                let (status, line) = describe(&what, &certify(&g, true, None, &bx), true, None);
+                let (status, line) =
+                    describe(&what, Some(&g), &certify(&g, true, None, &bx), true, None);
                 Verdict::new(status, CERTIFIED, vec![line])
             }
             Err(e) => Verdict::new(

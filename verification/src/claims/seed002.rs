@@ -128,7 +128,7 @@ pub const CLAIMS: &[Claim] = &[
 
 fn d1() -> Verdict {
     identity(
-        "Σ b_i − 0",
+        "Σ b_i = 0",
         &sum(&basis(Family::Seed002Quartic)),
         &Sym::zero(),
     )
@@ -501,8 +501,15 @@ fn d11() -> Verdict {
     for (f, name) in b.iter().zip(names) {
         match fourier(f) {
             Ok(terms) => {
-                let expansion: Vec<String> =
-                    terms.iter().map(|(l, q)| format!("({q})·{l}")).collect();
+                // `c·l` with the sign in front, the constant term as `c`
+                let parts: Vec<(String, String)> = terms
+                    .iter()
+                    .map(|(l, q)| (Sym::rational(q.clone()).to_unicode(), l.clone()))
+                    .collect();
+                let expansion = [trig_symbolic::combine(
+                    &parts,
+                    trig_symbolic::Style::Unicode,
+                )];
                 let outside: Vec<String> = terms
                     .iter()
                     .filter(|(l, _)| !PRINTED_SPAN.contains(&l.as_str()))

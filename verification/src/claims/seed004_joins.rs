@@ -231,19 +231,17 @@ fn e17() -> Verdict {
         .witnessed(Some(Witness {
             point: pts
                 .iter()
-                .map(|(name, v)| Assignment {
-                    name: Sym::var(name).to_unicode(),
-                    value: v.to_string(),
-                    latex: format!("{} = {}", Sym::var(name).to_latex(), v.to_latex()),
-                })
+                .map(|(name, v)| Assignment::exact(name, v))
                 .collect(),
             note: Some("one coordinate; the printed conditions hold exactly there".into()),
             values: vec![
                 Value {
+                    of: None,
                     label: "R1(1)".into(),
                     value: Expr::new(&at(&r1[0])),
                 },
                 Value {
+                    of: None,
                     label: "R2(0)".into(),
                     value: Expr::new(&at(&r2[0])),
                 },

@@ -189,6 +189,13 @@ fn reflection_counterexample(family: Family, param: (i64, i64), i: usize, j: usi
     let (a, b) = (value(family, &p, i, &x), value(family, &p, j, &y));
     let name = family.info().params[0].symbol;
     let f = family.info().functions;
+    // the two values as expressions of the exact basis, at their points
+    let param = Sym::var(family.info().params[0].name).to_sympy();
+    let functions = crate::exact::basis(family);
+    let of = |k: usize, x: &str| {
+        let f = functions[k].subs(family.info().params[0].name, &Sym::rational(p[0].clone()));
+        crate::numeric::at_sympy(&f, trig_core::Described::variable(&family), x)
+    };
     let status = if differ(&a, &b) {
         Status::Fails
     } else {
@@ -204,12 +211,12 @@ fn reflection_counterexample(family: Family, param: (i64, i64), i: usize, j: usi
             show(&b)
         ),
         &[
-            (name.to_string(), p[0].to_string()),
-            ("u".into(), "1/2".into()),
+            (name.to_string(), param.clone(), p[0].to_string()),
+            ("u".into(), "u".into(), "1/2".into()),
         ],
         [
-            (format!("{}(1/2)", f[i]), &a),
-            (format!("{}(π/2 − 1/2)", f[j]), &b),
+            (format!("{}(1/2)", f[i]), &a, of(i, "1/2")),
+            (format!("{}(π/2 − 1/2)", f[j]), &b, of(j, "pi/2 - (1/2)")),
         ],
     );
     Verdict::new(
@@ -223,7 +230,10 @@ fn reflection_counterexample(family: Family, param: (i64, i64), i: usize, j: usi
 }
 
 fn t4() -> Verdict {
-    reflection_counterexample(Family::ThesisQuadratic, (1, 1), 0, 2)
+    crate::exact::defined_by(
+        reflection_counterexample(Family::ThesisQuadratic, (1, 1), 0, 2),
+        &Family::ThesisQuadratic,
+    )
 }
 
 fn t4b() -> Verdict {
@@ -274,7 +284,7 @@ fn t9() -> Verdict {
     let mut v = reflection_counterexample(Family::ThesisCubic, (0, 1), 0, 2);
     v.evidence
         .push("as printed the index 2 − i is also out of range for i = 3 (b_{−1} does not exist)");
-    v
+    crate::exact::defined_by(v, &Family::ThesisCubic)
 }
 
 fn t9b() -> Verdict {
@@ -314,20 +324,17 @@ fn t27() -> Verdict {
     };
     // at a parameter outside the range, the sum is 1 at every point
     let two = Rational::from(2);
-    let at = |x: &Sym| x.subs("m", &Sym::rational(two.clone()));
     let point = [
         ("m".to_string(), two.clone()),
         ("s".to_string(), Rational::from((3, 5))),
         ("c".to_string(), Rational::from((4, 5))),
     ];
-    let value = crate::witness::at(&at(&sum(&basis(Family::ThesisCubic))), &point);
-    let witness = value.map(|v| {
-        crate::witness::witness(
-            &point,
-            &["m".into(), "s".into(), "c".into()],
-            vec![("Σ b_i (claimed ≠ 1)", v)],
-        )
-    });
+    let total = sum(&basis(Family::ThesisCubic));
+    let witness = crate::witness::of_exprs(
+        &point,
+        &["m".into(), "s".into(), "c".into()],
+        &[("Σ b_i (claimed ≠ 1)", &total)],
+    );
     Verdict::new(
         status,
         crate::exact::IDENTITY,
@@ -400,7 +407,7 @@ fn t33() -> Verdict {
             .map(|i| format!("b{i}(1)"))
             .collect()
     };
-    identities(parts).with_correction(format!(
+    crate::exact::defined_by(identities(parts), &Family::ThesisCubic).with_correction(format!(
         "{} = 0 and {} = 1 (the computed values)",
         with(0).join(" = "),
         with(1).join(" = ")
@@ -428,14 +435,12 @@ fn t37() -> Verdict {
         ("c".to_string(), Rational::from((4, 5))),
     ];
     let curve = crate::exact::combination(&h, &points(3));
-    let f = point
-        .iter()
-        .fold(curve, |acc, (n, q)| acc.subs(n, &Sym::rational(q.clone())));
-    let witness = Some(crate::witness::witness(
+    // the control points stay symbols: F is P1 there, whatever they are
+    let witness = crate::witness::of_exprs(
         &point,
         &["beta".into(), "s".into(), "c".into()],
-        vec![("F (the same point P1 for every θ)", f)],
-    ));
+        &[("F (the same point P1 for every θ)", &curve)],
+    );
     evidence.push(
         Evidence::note(
             "with β = 0 the curve is F(u) = P1 for every u: a single point, not a straight line (3.2.3 says the same: \"H1(u) becomes identically equal to one\")",
@@ -541,7 +546,7 @@ fn t3() -> Verdict {
 }
 
 fn t8() -> Verdict {
-    Verdict::all(
+    let v = Verdict::all(
         crate::judge::certificate::CERTIFIED,
         vec![
             (
@@ -553,7 +558,8 @@ fn t8() -> Verdict {
                 monotone(&Family::ThesisCubic, 2, true, Some("m"), &m_range()),
             ),
         ],
-    )
+    );
+    crate::exact::defined_by(v, &Family::ThesisCubic)
 }
 
 fn t8a() -> Verdict {

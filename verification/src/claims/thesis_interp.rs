@@ -446,7 +446,7 @@ pub(super) fn positivity(name: &str, scheme: Scheme, variant: Variant) -> Verdic
                 let mut w = crate::witness::witness(
                     &[("z".into(), m.z.clone())],
                     &["z".into()],
-                    vec![("P ≤", Sym::rational(m.upper.clone()))],
+                    vec![("upper bound of P", Sym::rational(m.upper.clone()))],
                 );
                 w.note = Some(format!(
                     "{name} ({variant}), piece {}: z = tan(θ/2), x ≈ {:.6}; P evaluated exactly with π enclosed in [3.14159265358979323846264338327, …328], the bound rounded up",

@@ -161,13 +161,17 @@ fn peak(name: &str, scheme: Scheme, variant: Variant) -> Result<Verdict, String>
 
 fn bound_witness(lo: &Rational, hi: &Rational) -> Witness {
     let v = |label: &str, q: &Rational, up: bool| Value {
+        of: None,
         label: label.into(),
         value: Expr::decimal(q, &dec4(q, up)),
     };
     Witness {
         point: Vec::new(),
         note: Some("the certified maximum".into()),
-        values: vec![v("max P ≥", lo, false), v("max P ≤", hi, true)],
+        values: vec![
+            v("lower bound of max P", lo, false),
+            v("upper bound of max P", hi, true),
+        ],
         exact: true,
     }
 }
@@ -210,10 +214,12 @@ fn data_value(
         note: Some(format!("{} at x = {at}", data.table.caption)),
         values: vec![
             Value {
+                of: None,
                 label: "printed f".into(),
                 value: Expr::decimal(f, &decimal(f)),
             },
             Value {
+                of: None,
                 label: "on the zero axis".into(),
                 value: Expr::decimal(&text, &decimal(&text)),
             },

@@ -185,10 +185,12 @@ fn relation(what: &str, printed: &Num, computed: &Rational, allowance: Rational)
         note: None,
         values: vec![
             Value {
+                of: None,
                 label: "printed".into(),
                 value: Expr::decimal(&printed.value, &printed.text),
             },
             Value {
+                of: None,
                 label: "computed".into(),
                 value: Expr::decimal(computed, &decimal(computed)),
             },

@@ -155,6 +155,7 @@ fn list(segs: &[usize]) -> String {
 /// A two-value witness: `a` against `b`, exact.
 fn pair(note: String, a: (&str, &Rational), b: (&str, &Rational)) -> Option<Witness> {
     let value = |(label, v): (&str, &Rational)| Value {
+        of: None,
         label: label.into(),
         value: Expr::decimal(v, &decimal(v)),
     };

@@ -22,12 +22,14 @@ pub const MAXIMAL: &str = "certified: every end of the admissible set is a root 
 
 /// The witness of a counterexample: the parameters, `z = tan(θ/2)` with
 /// `s = sin θ`, `c = cos θ` (or `t`), and the exact value of the tested
-/// function there.
+/// function there (recorded with the function `f` when it is one, so it
+/// can be re-checked by substitution).
 pub fn counterexample(
     params: &[(&str, &Rational)],
     z: &Rational,
     value: &Rational,
     trig: bool,
+    f: Option<&trig_symbolic::Sym>,
 ) -> Witness {
     let mut point: Vec<(String, Rational)> = params
         .iter()
@@ -47,6 +49,7 @@ pub fn counterexample(
         &names,
         vec![("value", trig_symbolic::Sym::rational(value.clone()))],
     );
+    w.values[0].of = f.map(crate::evidence::Expr::new);
     if trig {
         w.note = Some(format!(
             "z = tan(θ/2), s = sin θ, c = cos θ; θ ≈ {:.6}",
@@ -59,6 +62,7 @@ pub fn counterexample(
 /// The evidence item of a certificate about `what`, with its status.
 pub fn describe(
     what: &str,
+    f: Option<&trig_symbolic::Sym>,
     cert: &Certificate,
     trig: bool,
     param: Option<&str>,
@@ -80,6 +84,7 @@ pub fn describe(
                 z,
                 value,
                 trig,
+                f,
             )),
         ),
         Certificate::Pole(why) => (
@@ -132,6 +137,7 @@ pub fn nonnegative_named(
     for (f, name) in fs.iter().zip(names) {
         let (s, line) = describe(
             &format!("{} ≥ 0", name.as_ref()),
+            Some(f),
             &certify(f, trig, param, bx),
             trig,
             param,
@@ -185,7 +191,7 @@ pub fn nonnegative_on_box_named(
                 (
                     Status::Fails,
                     "violated: negative at the witness point".to_string(),
-                    Some(counterexample(&named, &z, &value, trig)),
+                    Some(counterexample(&named, &z, &value, trig, Some(f))),
                 )
             }
             BoxCertificate::Pole(why) => (
@@ -377,6 +383,7 @@ pub fn maximal_against(
     evidence.push(format!("upper end: {}", show_end(&r.hi, name, trig)));
     let (cs, cline) = describe(
         "cross-check, every function ≥ 0 on the closed rational part of the interval",
+        None,
         &r.certificate,
         trig,
         Some(name),
@@ -433,6 +440,7 @@ pub fn on_published_range<B: ExactBasis>(basis: &B) -> Verdict {
     let cert = certify_all(&basis_of(basis), trig, &p.name, &bx);
     let (status, line) = describe(
         &format!("all functions, {} ∈ {}", p.symbol, p.range),
+        None,
         &cert,
         trig,
         Some(&p.name),
@@ -470,12 +478,15 @@ pub fn monotone_named(
 ) -> Verdict {
     let d = if trig { f.d_angle() } else { f.d_t() };
     let g = if increasing { d } else { -d };
+    // the variable of differentiation: the angle θ of s = sin θ, c = cos θ
+    // (θ = πu/2 for a variable u: the same sign), or t
+    let dx = if trig { "dθ" } else { "dt" };
     let what = if increasing {
-        format!("{name}' ≥ 0 ({name} increasing)")
+        format!("d{name}/{dx} ≥ 0 ({name} increasing)")
     } else {
-        format!("−{name}' ≥ 0 ({name} decreasing)")
+        format!("−d{name}/{dx} ≥ 0 ({name} decreasing)")
     };
-    let (status, line) = describe(&what, &certify(&g, trig, param, bx), trig, param);
+    let (status, line) = describe(&what, Some(&g), &certify(&g, trig, param, bx), trig, param);
     Verdict::new(status, CERTIFIED, vec![line])
 }
 

@@ -106,7 +106,7 @@ pub fn bspline_continuity<B: ExactBasis>(basis: &B, order: usize) -> Verdict {
             k.exceptions.retain(|e| p.range.contains(&e.value));
         }
     }
-    at_least(
+    let v = at_least(
         &format!(
             "the uniform B-spline of {n} pieces (piece k is function {} − k), unit knot spacing",
             n - 1
@@ -114,5 +114,6 @@ pub fn bspline_continuity<B: ExactBasis>(basis: &B, order: usize) -> Verdict {
         &knots,
         order,
         param,
-    )
+    );
+    crate::exact::defined_by(v, basis)
 }

@@ -8,7 +8,7 @@ use trig_specfile::Printed;
 use trig_symbolic::Sym;
 
 use crate::exact::ExactBasis;
-use crate::exact::{basis_of, identities};
+use crate::exact::{basis_of, defined_by, identities};
 use crate::judge::domain::{describe_wrt, end_text, param_symbols, value_at};
 use crate::status::Status;
 use crate::verdict::Verdict;
@@ -35,7 +35,7 @@ pub fn interpolation<B: ExactBasis>(basis: &B) -> Verdict {
             ));
         }
     }
-    identities(parts)
+    defined_by(identities(parts), basis)
 }
 
 /// Printed values at one end; a failure names the computed values as the
@@ -60,7 +60,7 @@ pub fn endpoint_values<B: ExactBasis>(basis: &B, end: End, values: &[Printed]) -
             )
         })
         .collect();
-    let v = identities(parts);
+    let v = defined_by(identities(parts), basis);
     if v.status == Status::Holds {
         return v;
     }
@@ -107,7 +107,7 @@ pub fn endpoint_derivative_values<B: ExactBasis>(
             )
         })
         .collect();
-    identities(parts)
+    defined_by(identities(parts), basis)
 }
 
 /// One exact derivative in the table's convention: `d/dθ` (`s ↦ c`,

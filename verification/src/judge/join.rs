@@ -417,7 +417,7 @@ fn describe(label: String, residuals: &[Sym], names: &[String]) -> Evidence {
         Evidence::new(Kind::Join, "").about(label, Status::Fails),
         |item, (k, r)| {
             item.with(
-                format!("residual (left − right) of order {k}"),
+                format!("residual of the order-{k} condition"),
                 Expr::combination(r, names),
             )
         },
@@ -560,9 +560,12 @@ fn decide<B: ExactBasis + Clone>(join: &PrintedJoin<B>, residuals: &Residuals<'_
             singular.join("; ")
         ));
         if v.correction.is_none() {
+            // the printed formulas hold wherever they are defined: the
+            // correction is the range, not the formula (repeating the
+            // derived formula would repeat the printed one)
             v = v.with_correction(format!(
-                "the join holds with {}",
-                join.derived(join.printed_wrt())
+                "the printed formulas hold wherever they are defined; exclude the poles {} from the printed ranges",
+                singular.join("; ")
             ));
         }
         v
@@ -760,7 +763,7 @@ mod tests {
         assert!(typo.correction.unwrap().contains("P₂"));
         let wrong = audit(&bernstein_c1(vec![Sym::int(3) * &p[3], -p[2].clone()]));
         assert_eq!(wrong.status, Status::Fails);
-        assert!(wrong.evidence[0].contains("order 1"));
+        assert!(wrong.evidence[0].contains("order-1 condition"));
         // printed P₅ = 3P₃ − P₂ against 2P₃ − P₂: differ where P₃ ≠ 0 (the
         // conventions of a polynomial basis: t and x, then the derivation)
         let w = wrong.evidence[2].witness.as_ref().expect("a witness");
@@ -788,7 +791,7 @@ mod tests {
         let v = audit_surface(&wrong, &Sym::var("m"));
         assert_eq!(v.status, Status::Fails);
         assert!(
-            v.evidence[0].contains("order 1 = (m + 2)·P₂"),
+            v.evidence[0].contains("order-1 condition = (m + 2)·P₂"),
             "{:?}",
             v.evidence
         );

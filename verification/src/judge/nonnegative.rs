@@ -134,11 +134,12 @@ pub fn nonnegative_claim<B: ExactBasis>(
     range: Option<&ParamRange>,
     maximal: bool,
 ) -> Verdict {
-    match (basis.parameters().len(), maximal) {
+    let v = match (basis.parameters().len(), maximal) {
         (1, true) => maximal_versus_published(basis, range),
         (0 | 1, _) => nonnegative_on(basis, range),
         _ => several(basis, maximal),
-    }
+    };
+    crate::exact::defined_by(v, basis)
 }
 
 /// The convex-hull property: unity and nonnegativity on the range.
@@ -237,7 +238,7 @@ pub fn monotone_claim<B: ExactBasis>(
             Err(parts) => Verdict::all(CERTIFIED, parts),
         }
     };
-    if let [m] = items {
+    let v = if let [m] = items {
         single(m)
     } else {
         Verdict::all(
@@ -247,7 +248,8 @@ pub fn monotone_claim<B: ExactBasis>(
                 .map(|m| (names[m.function].clone(), single(m)))
                 .collect(),
         )
-    }
+    };
+    crate::exact::defined_by(v, basis)
 }
 
 /// The parameter box of a basis without parameters: one point.

@@ -72,10 +72,12 @@ pub fn quoted_figure(subject: &str, quoted: &str, computed: &Rational, from: &st
         note: None,
         values: vec![
             Value {
+                of: None,
                 label: "quoted".into(),
                 value: Expr::decimal(&value, quoted),
             },
             Value {
+                of: None,
                 label: "recomputed".into(),
                 value: Expr::decimal(computed, &decimal(computed)),
             },
@@ -126,10 +128,12 @@ pub fn quoted_order(
         note: Some(format!("{n1} is printed before {n2}")),
         values: vec![
             Value {
+                of: None,
                 label: (*n1).into(),
                 value: Expr::decimal(v1, &decimal(v1)),
             },
             Value {
+                of: None,
                 label: (*n2).into(),
                 value: Expr::decimal(v2, &decimal(v2)),
             },

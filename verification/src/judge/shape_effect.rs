@@ -277,9 +277,10 @@ fn certified(
                     .zip(&params)
                     .map(|((n, _), v)| (*n, v))
                     .collect();
-                let mut w = counterexample(&named, &z, &value, *trig);
+                let mut w = counterexample(&named, &z, &value, *trig, None);
                 let derivative = Rational::from(sign * &value);
                 w.values = vec![Value {
+                    of: None,
                     label: format!("{label}{on}"),
                     value: Expr::new(&Sym::rational(derivative)),
                 }];

@@ -157,7 +157,10 @@ fn exact_symmetry<B: ExactBasis>(
 pub fn reflection_symmetry<B: ExactBasis>(basis: &B, indices: Range<i64>) -> Verdict {
     let n = basis.function_names().len() as i64;
     let a = basis.domain().reflection();
-    exact_symmetry(basis, &a, (n - 1, ""), &param_symbols(basis), indices)
+    crate::exact::defined_by(
+        exact_symmetry(basis, &a, (n - 1, ""), &param_symbols(basis), indices),
+        basis,
+    )
 }
 
 /// The battery's symmetry: the reflection of the domain with the indices
@@ -220,7 +223,7 @@ pub fn symmetry_claim<B: ExactBasis>(basis: &B, s: &PrintedSymmetry<'_>) -> Verd
         v.evidence
             .insert(0, format!("parameters substituted: {}", s.params_text));
     }
-    v
+    crate::exact::defined_by(v, basis)
 }
 
 fn printed_reflection<B: ExactBasis>(basis: &B, s: &PrintedSymmetry<'_>) -> Verdict {
@@ -289,12 +292,40 @@ fn printed_reflection<B: ExactBasis>(basis: &B, s: &PrintedSymmetry<'_>) -> Verd
         .zip(s.at)
         .map(|(p, q)| format!("{} = {q}, ", p.symbol))
         .collect::<String>();
-    let mut point: Vec<(String, String)> = parameters
+    let mut point: Vec<(String, String, String)> = parameters
         .iter()
         .zip(s.at)
-        .map(|(p, q)| (p.symbol.clone(), q.to_string()))
+        .map(|(p, q)| {
+            (
+                p.symbol.clone(),
+                Sym::var(&p.name).to_sympy(),
+                q.to_string(),
+            )
+        })
         .collect();
-    point.push((v.to_string(), mid.to_string()));
+    point.push((v.to_string(), v.to_string(), mid.to_string()));
+    // the two values as expressions: each function with its parameters set
+    // (the image's for the second), at its point of the variable
+    let functions = crate::exact::basis_of(basis);
+    let with_params = |f: &Sym, values: &[Rational]| {
+        parameters
+            .iter()
+            .zip(values)
+            .fold(f.clone(), |acc, (p, q)| {
+                acc.subs(&p.name, &Sym::rational(q.clone()))
+            })
+    };
+    let image_sympy = s.map_text.replace(v.as_str(), &format!("({mid})"));
+    let of_a = crate::numeric::at_sympy(
+        &with_params(&functions[i], s.at),
+        basis.variable(),
+        &mid.to_string(),
+    );
+    let of_b = crate::numeric::at_sympy(
+        &with_params(&functions[j], &image),
+        basis.variable(),
+        &image_sympy,
+    );
     let mut evidence = EvidenceList::from(vec![crate::numeric::counterexample_item(
         format!(
             "{shown_params}{v} = {mid}: {}({mid}) = {}, but {}({image_text}) = {}{outside}",
@@ -305,8 +336,8 @@ fn printed_reflection<B: ExactBasis>(basis: &B, s: &PrintedSymmetry<'_>) -> Verd
         ),
         &point,
         [
-            (format!("{}({mid})", names[i]), &a),
-            (format!("{}({image_text})", names[j]), &b),
+            (format!("{}({mid})", names[i]), &a, of_a),
+            (format!("{}({image_text})", names[j]), &b, of_b),
         ],
     )]);
     let a_refl = d.reflection();

@@ -4,7 +4,7 @@
 use trig_symbolic::Sym;
 
 use crate::exact::ExactBasis;
-use crate::exact::{basis_of, identity, sum};
+use crate::exact::{basis_of, defined_by, identity, sum};
 use crate::verdict::Verdict;
 
 /// `Σ b_i − 1` when the names share a prefix (`b0, b1, …`), else the sum
@@ -25,9 +25,12 @@ pub fn sum_label(names: &[String]) -> String {
 
 /// The functions of `basis` sum to 1 identically.
 pub fn unity<B: ExactBasis>(basis: &B) -> Verdict {
-    identity(
-        &sum_label(&basis.function_names()),
-        &sum(&basis_of(basis)),
-        &Sym::one(),
+    defined_by(
+        identity(
+            &sum_label(&basis.function_names()),
+            &sum(&basis_of(basis)),
+            &Sym::one(),
+        ),
+        basis,
     )
 }

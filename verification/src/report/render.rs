@@ -245,7 +245,8 @@ fn witness_line<F: Format>(f: &F, w: &Witness) -> String {
         if w.exact { "" } else { " (numeric)" }
     );
     match f.point(w) {
-        None if note.is_empty() => values,
+        // no variable: the values are numbers
+        None if note.is_empty() => format!("(no variable): {values}"),
         None => format!("{}: {values}", note.trim_start()),
         Some(point) => format!("at {point}{note}: {values}"),
     }

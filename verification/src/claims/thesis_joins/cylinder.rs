@@ -173,6 +173,7 @@ pub fn t26k() -> Verdict {
                     point: Vec::new(),
                     note: Some(format!("{name}, the listing's nets (m = 1)")),
                     values: vec![Value {
+                        of: None,
                         label: f.split(" = ").next().unwrap_or_default().to_string(),
                         value: Expr::literal(
                             &format!("({vector})"),
