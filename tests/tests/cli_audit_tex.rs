@@ -16,7 +16,8 @@ fn root() -> PathBuf {
 }
 
 /// Runs `trig-audit` in `dir`, asserting success.
-fn run_in(dir: &Path, args: &[&str]) {
+/// Runs `trig-audit` in `dir`; its standard output.
+fn run_in(dir: &Path, args: &[&str]) -> String {
     let out = Command::new(binary())
         .args(args)
         .current_dir(dir)
@@ -27,6 +28,7 @@ fn run_in(dir: &Path, args: &[&str]) {
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
+    String::from_utf8(out.stdout).expect("UTF-8 output")
 }
 
 #[test]
@@ -88,5 +90,34 @@ fn figures_are_included_relative_to_the_output_directory() {
     assert!(!tex.contains("\\input{"), "{tex}");
     let named = tex.replace("\\allowbreak{}", "");
     assert!(named.contains("docs/figures/audit-T7-thesis-cubic-outside-range.tex"));
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+#[test]
+fn markdown_links_figures_relative_to_the_output_directory() {
+    let out = std::env::temp_dir().join(format!("trig-audit-md-{}", std::process::id()));
+    let sub = out.join("paper");
+    std::fs::create_dir_all(&sub).unwrap();
+    let file = sub.join("report.md");
+    let file_arg = file.display().to_string();
+    run_in(&root(), &["audit", "--claim", "T7", "--output", &file_arg]);
+    let md = std::fs::read_to_string(&file).unwrap();
+    let link = md
+        .split("**Figure:** [")
+        .nth(1)
+        .and_then(|rest| rest.split("](").nth(1))
+        .and_then(|rest| rest.split(')').next())
+        .unwrap_or_else(|| panic!("a figure link: {md}"));
+    assert!(
+        !Path::new(link).is_absolute() && link.starts_with("../"),
+        "{link}"
+    );
+    assert!(sub.join(link).is_file(), "{link} from {}", sub.display());
+    // on standard output the link is from the current directory, as before
+    let stdout = run_in(&root(), &["audit", "--claim", "T7"]);
+    assert!(
+        stdout.contains("](docs/figures/audit-T7-thesis-cubic-outside-range.svg)"),
+        "{stdout}"
+    );
     let _ = std::fs::remove_dir_all(&out);
 }

@@ -4,6 +4,8 @@
 //! title (the caption says what each shows); the test
 //! `tests/tests/cli_figures.rs` checks that every file exists.
 
+use std::path::{Component, Path};
+
 /// A figure supporting the verdict of one claim: the SVG, with its
 /// pgfplots code (`.tex`) and its data (`.csv`) beside it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -67,4 +69,43 @@ impl Figure {
 /// The figure of a claim, if any.
 pub fn for_claim(id: &str) -> Option<&'static Figure> {
     FIGURES.iter().find(|f| f.claim == id)
+}
+
+/// `target` (a path from the current directory) relative to the directory
+/// `base`; `target` itself when the two have no common root.
+pub fn relative(target: &str, base: Option<&Path>) -> String {
+    let Some(base) = base else {
+        return target.to_string();
+    };
+    let (Ok(to), Ok(from)) = (Path::new(target).canonicalize(), base.canonicalize()) else {
+        return target.to_string();
+    };
+    let to: Vec<Component> = to.components().collect();
+    let from: Vec<Component> = from.components().collect();
+    let common = to.iter().zip(&from).take_while(|(a, b)| a == b).count();
+    if common == 0 {
+        return target.to_string();
+    }
+    let mut out: Vec<String> = vec!["..".to_string(); from.len() - common];
+    out.extend(
+        to[common..]
+            .iter()
+            .map(|c| c.as_os_str().to_string_lossy().into_owned()),
+    );
+    out.join("/")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn paths_are_relative_to_the_output_directory() {
+        let here = std::env::current_dir().unwrap();
+        let dir = here.join("src");
+        assert_eq!(relative("Cargo.toml", Some(&dir)), "../Cargo.toml");
+        assert_eq!(relative("src/lib.rs", Some(&here)), "src/lib.rs");
+        assert_eq!(relative("src/lib.rs", None), "src/lib.rs");
+        assert_eq!(relative("no/such/file", Some(&dir)), "no/such/file");
+    }
 }

@@ -10,7 +10,7 @@
 //! columns at fractions of the line width, so that they fit any page.
 
 use std::fmt::Write;
-use std::path::{Component, Path, PathBuf};
+use std::path::{Path, PathBuf};
 
 use trig_tex::marked::truncate;
 use trig_tex::{
@@ -20,7 +20,7 @@ use trig_tex::{
 use super::render::{Format, Tally, anchor, point_text, render};
 use super::{Document, Entry, View};
 use crate::evidence::{Part, Witness};
-use crate::figures::Figure;
+use crate::figures::{Figure, relative};
 use crate::status::Status;
 
 /// Expressions with more characters (Unicode form) are summarised.
@@ -75,30 +75,6 @@ fn figure_file(f: &Figure) -> Option<(String, bool)> {
     ]
     .into_iter()
     .find(|(path, _)| Path::new(path).is_file())
-}
-
-/// `target` (a path from the current directory) relative to the directory
-/// `base`; `target` itself when the two have no common root.
-fn relative(target: &str, base: Option<&Path>) -> String {
-    let Some(base) = base else {
-        return target.to_string();
-    };
-    let (Ok(to), Ok(from)) = (Path::new(target).canonicalize(), base.canonicalize()) else {
-        return target.to_string();
-    };
-    let to: Vec<Component> = to.components().collect();
-    let from: Vec<Component> = from.components().collect();
-    let common = to.iter().zip(&from).take_while(|(a, b)| a == b).count();
-    if common == 0 {
-        return target.to_string();
-    }
-    let mut out: Vec<String> = vec!["..".to_string(); from.len() - common];
-    out.extend(
-        to[common..]
-            .iter()
-            .map(|c| c.as_os_str().to_string_lossy().into_owned()),
-    );
-    out.join("/")
 }
 
 impl Format for Latex<'_> {
@@ -361,15 +337,5 @@ mod tests {
             tex.contains(r"reading of T4 (A45): $R''(\frac{\pi}{2}) = \tan \alpha$"),
             "{tex}"
         );
-    }
-
-    #[test]
-    fn paths_are_relative_to_the_output_directory() {
-        let here = std::env::current_dir().unwrap();
-        let dir = here.join("src");
-        assert_eq!(relative("Cargo.toml", Some(&dir)), "../Cargo.toml");
-        assert_eq!(relative("src/lib.rs", Some(&here)), "src/lib.rs");
-        assert_eq!(relative("src/lib.rs", None), "src/lib.rs");
-        assert_eq!(relative("no/such/file", Some(&dir)), "no/such/file");
     }
 }

@@ -6,13 +6,14 @@
 //! failing check shows its witness.
 
 use std::fmt::Write;
+use std::path::Path;
 
 use trig_tex::plain;
 
 use super::render::{Format, Tally, anchor, point_text, render};
 use super::{Document, Entry, View, short};
 use crate::evidence::{Part, Witness};
-use crate::figures::Figure;
+use crate::figures::{Figure, relative};
 use crate::status::Status;
 
 /// Expressions with more characters are summarised.
@@ -39,11 +40,25 @@ fn code(text: &str) -> String {
 /// (one line per claim), then one section per document and one entry per
 /// claim — or, with [`View::summary_only`], the summary and index alone.
 pub fn markdown_entries(entries: &[Entry], intro: &str, view: &View) -> String {
-    render(&Markdown, entries, intro, view)
+    markdown_entries_in(entries, intro, view, None)
+}
+
+/// [`markdown_entries`] for a report written in the directory `output_dir`:
+/// figures are linked by their path relative to it (`None`: the current
+/// directory, where the figures' paths start).
+pub fn markdown_entries_in(
+    entries: &[Entry],
+    intro: &str,
+    view: &View,
+    output_dir: Option<&Path>,
+) -> String {
+    render(&Markdown { output_dir }, entries, intro, view)
 }
 
 /// The Markdown format of the report.
-struct Markdown;
+struct Markdown<'a> {
+    output_dir: Option<&'a Path>,
+}
 
 /// A table row: `| a | b |`.
 fn row<T: std::fmt::Display>(cells: impl IntoIterator<Item = T>) -> String {
@@ -51,7 +66,7 @@ fn row<T: std::fmt::Display>(cells: impl IntoIterator<Item = T>) -> String {
     format!("| {} |", cells.join(" | "))
 }
 
-impl Format for Markdown {
+impl Format for Markdown<'_> {
     const LONG: usize = LONG;
     const EQUALS: &'static str = " = ";
     const DASH: &'static str = " — ";
@@ -102,7 +117,7 @@ impl Format for Markdown {
         format!(
             "[{}]({}) (drawn by `trig-audit {}`; data: `{}`; pgfplots: `{}`)",
             md_text(f.caption),
-            f.path,
+            relative(f.path, self.output_dir),
             f.command,
             f.data_path(),
             f.pgf_path()

@@ -26,7 +26,7 @@ use crate::verdict::Verdict;
 
 pub use json::{Report, SCHEMA_VERSION, json_entries, schema};
 pub use latex::{TexOptions, tex_entries};
-pub use markdown::markdown_entries;
+pub use markdown::{markdown_entries, markdown_entries_in};
 
 /// The opening sentence of the built-in report.
 pub const BUILTIN_INTRO: &str = "Every verdict below is computed by `trig-audit audit` from the formulas as printed in `shared/seeds/`; identities are decided exactly in the symbolic ring, counterexamples in 256-bit MPFR.";

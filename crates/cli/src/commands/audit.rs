@@ -135,8 +135,19 @@ pub fn run(args: &AuditArgs) -> CmdResult {
         summary_only: args.summary,
         verdicts: args.verdict.iter().map(|v| Status::from(*v)).collect(),
     };
+    // figures are linked by their path from where the report is written
+    let output_dir = args
+        .output
+        .as_deref()
+        .filter(|p| p.as_os_str() != "-")
+        .map(|p| match p.parent() {
+            Some(dir) if !dir.as_os_str().is_empty() => dir.to_path_buf(),
+            _ => PathBuf::from("."),
+        });
     let text = match args.format {
-        ReportFormat::Md => report::markdown_entries(&entries, &intro, &view),
+        ReportFormat::Md => {
+            report::markdown_entries_in(&entries, &intro, &view, output_dir.as_deref())
+        }
         ReportFormat::Json => {
             let mut s =
                 serde_json::to_string_pretty(&report::json_entries(&entries, &intro, &view))
@@ -145,15 +156,6 @@ pub fn run(args: &AuditArgs) -> CmdResult {
             s
         }
         ReportFormat::Tex => {
-            // figures are included by their path from where the report is written
-            let output_dir =
-                args.output
-                    .as_deref()
-                    .filter(|p| p.as_os_str() != "-")
-                    .map(|p| match p.parent() {
-                        Some(dir) if !dir.as_os_str().is_empty() => dir.to_path_buf(),
-                        _ => PathBuf::from("."),
-                    });
             let options = report::TexOptions {
                 standalone: args.standalone,
                 output_dir,
