@@ -1,7 +1,7 @@
 //! Reading a value as a linear combination `Σ cᵢ·vᵢ` of named variables
 //! (control points), for printing formulas the way papers print them.
 
-use crate::print::Style;
+use crate::print::{Style, push_sign};
 use crate::sym::Sym;
 
 impl Sym {
@@ -59,16 +59,7 @@ pub fn combine(parts: &[(String, String)], style: Style) -> String {
         } else {
             format!("{body}{}{v}", style.times())
         };
-        match (i, negative) {
-            (0, true) => out.push_str(style.minus()),
-            (0, false) => {}
-            (_, true) => {
-                out.push(' ');
-                out.push_str(style.minus());
-                out.push(' ');
-            }
-            (_, false) => out.push_str(" + "),
-        }
+        push_sign(&mut out, i == 0, negative, style);
         out.push_str(&term);
     }
     out

@@ -248,19 +248,25 @@ fn poly(p: &Poly, style: Style) -> String {
                 monomial(m, style)
             )
         };
-        match (i, negative) {
-            (0, true) => out.push_str(style.minus()),
-            (0, false) => {}
-            (_, true) => {
-                out.push(' ');
-                out.push_str(style.minus());
-                out.push(' ');
-            }
-            (_, false) => out.push_str(" + "),
-        }
+        push_sign(&mut out, i == 0, negative, style);
         out.push_str(&body);
     }
     out
+}
+
+/// The sign before a term of a sum: `−` (no space) or nothing before the
+/// first term, ` − ` or ` + ` before the others.
+pub(crate) fn push_sign(out: &mut String, first: bool, negative: bool, style: Style) {
+    match (first, negative) {
+        (true, true) => out.push_str(style.minus()),
+        (true, false) => {}
+        (false, true) => {
+            out.push(' ');
+            out.push_str(style.minus());
+            out.push(' ');
+        }
+        (false, false) => out.push_str(" + "),
+    }
 }
 
 fn sym(x: &Sym, style: Style) -> String {
