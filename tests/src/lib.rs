@@ -24,10 +24,16 @@ pub const FAMILIES: &[&str] = &[
     "bspline3",
 ];
 
-/// Path of the `trig-audit` binary in this workspace's target directory,
-/// built once (in the test profile, `debug` directory) if missing; the
-/// environment variable `TRIG_AUDIT_BIN` names another binary instead (to
-/// run a new test against an older build and see it fail).
+/// Path of the `trig-audit` binary of this workspace's test build: the
+/// binary `cargo test --workspace` links (the command-line crate has an
+/// integration test, so its binary is built with the test build's features).
+/// Found by running `cargo test --workspace --no-run` once: after
+/// `cargo test --workspace` (or `./run.sh test`) a no-op of a fraction of a
+/// second; after `cargo test -p trig-e2e` it builds the rest of the
+/// workspace's tests. A `cargo build -p trig-audit` would select other
+/// features and compile every crate again (70 s in a clean clone's CI run).
+/// The environment variable `TRIG_AUDIT_BIN` names another binary instead
+/// (to run a new test against an older build and see it fail).
 pub fn binary() -> PathBuf {
     static BIN: OnceLock<PathBuf> = OnceLock::new();
     BIN.get_or_init(|| {
@@ -41,23 +47,16 @@ pub fn binary() -> PathBuf {
         let target = std::env::var_os("CARGO_TARGET_DIR")
             .map(PathBuf::from)
             .unwrap_or_else(|| root.join("target"));
-        let status = Command::new(env!("CARGO"))
-            // the test profile: after `cargo test --workspace` (which
-            // builds the binary in that profile) this is a no-op
-            .args([
-                "build",
-                "--quiet",
-                "--profile",
-                "test",
-                "-p",
-                "trig-audit",
-                "--bin",
-                "trig-audit",
-            ])
+        let mut cargo = Command::new(env!("CARGO"));
+        cargo.args(["test", "--workspace", "--no-run", "--quiet"]);
+        if trig_core::mpfr::SYSTEM_LIBS {
+            cargo.args(["--features", "trig-core/system-gmp"]);
+        }
+        let status = cargo
             .current_dir(&root)
             .status()
-            .expect("run cargo build");
-        assert!(status.success(), "building trig-audit failed");
+            .expect("run cargo test --no-run");
+        assert!(status.success(), "building the workspace's tests failed");
         target.join("debug").join("trig-audit")
     })
     .clone()

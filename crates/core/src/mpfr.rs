@@ -16,6 +16,11 @@ use rug::float::Constant;
 
 use crate::scalar::{Real, Ring};
 
+/// Whether GMP and MPFR are the system's libraries (feature `system-gmp`)
+/// rather than built from source by `gmp-mpfr-sys`: a build made with the
+/// other setting compiles every crate above them again.
+pub const SYSTEM_LIBS: bool = cfg!(feature = "system-gmp");
+
 /// An MPFR number with its precision.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Mpfr(pub Float);
