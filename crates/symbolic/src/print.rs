@@ -27,7 +27,9 @@
 //! LaTeX pieces are the one LaTeX writer's ([`trig_tex::symbols::greek`],
 //! [`trig_tex::expr`]).
 
+use std::collections::HashMap;
 use std::fmt;
+use std::sync::{Mutex, OnceLock, PoisonError};
 
 use rug::{Integer, Rational};
 use trig_tex::expr as tex;
@@ -37,11 +39,11 @@ use crate::factor::FactoredQuotient;
 use crate::monomial::Monomial;
 use crate::poly::Poly;
 use crate::sym::Sym;
-use crate::var::split_digits;
+use crate::var::{Var, split_digits};
 
 /// The four text forms of an expression. The LaTeX pieces (names, powers,
 /// fractions) come from the one LaTeX writer, [`trig_tex::expr`].
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Style {
     /// Plain ASCII (`*`, `^`), as `Display` prints.
     Plain,
@@ -201,6 +203,21 @@ fn name(n: &str, style: Style) -> String {
     }
 }
 
+/// [`name`] of a variable, formed once per name and style: variables are
+/// interned for the life of the process (a bounded set, see [`Var`]), and
+/// so are their printed names.
+fn var_name(v: &Var, style: Style) -> &'static str {
+    type Names = Mutex<HashMap<(&'static str, Style), &'static str>>;
+    static NAMES: OnceLock<Names> = OnceLock::new();
+    let mut names = NAMES
+        .get_or_init(Default::default)
+        .lock()
+        .unwrap_or_else(PoisonError::into_inner);
+    names
+        .entry((v.name(), style))
+        .or_insert_with(|| Box::leak(name(v.name(), style).into_boxed_str()))
+}
+
 fn power(base: String, e: u32, style: Style) -> String {
     match (e, style) {
         (1, _) => base,
@@ -214,7 +231,7 @@ fn power(base: String, e: u32, style: Style) -> String {
 fn monomial(m: &Monomial, style: Style) -> String {
     let parts: Vec<String> = m
         .factors()
-        .map(|(v, e)| power(name(v.name(), style), e, style))
+        .map(|(v, e)| power(var_name(v, style).to_string(), e, style))
         .collect();
     parts.join(style.times())
 }
