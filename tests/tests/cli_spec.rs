@@ -135,6 +135,12 @@ fn bad_spec_files_are_one_line_errors_with_a_position() {
             "{HEADER}[[parameters]]\nname = \"m\"\nrange = \"[1, -2]\"\n[[functions]]\nname = \"b0\"\nformula = \"1\"\n"
         ),
     );
+    let unclosed = bad_file(
+        "unclosed.toml",
+        &format!(
+            "{HEADER}[[functions]]\nname = \"b0\"\nformula = \"1\"\n[[claims]]\nid = \"U\"\nsource = \"(1)\"\nstatement = \"⟪b0(t) = 1 for t ∈ [0, 1]\"\ncheck = \"unity\"\n"
+        ),
+    );
     let malformed = bad_file("malformed.toml", "id = \"x\"\ncitation = \n");
     let missing = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
         .join("no-such-spec.toml")
@@ -156,6 +162,10 @@ fn bad_spec_files_are_one_line_errors_with_a_position() {
         (
             &["audit", "--spec", &reversed],
             "reversed.toml:6:9: parameters.range: `[1, -2]`: the ends are reversed",
+        ),
+        (
+            &["audit", "--spec", &unclosed],
+            "unclosed.toml:10:13: claims.statement: math marks ⟪…⟫ (character positions counted from the statement's first): ⟪ at 0 is never closed",
         ),
         (
             &["audit", "--spec", &malformed],

@@ -189,6 +189,13 @@ fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
     if id.is_empty() {
         return src.invalid(c.id.span(), "claims.id", "expected a nonempty id".into());
     }
+    if let Err(e) = trig_tex::marked::check(c.statement.get_ref()) {
+        return src.invalid(
+            c.statement.span(),
+            "claims.statement",
+            format!("math marks ⟪…⟫ (character positions counted from the statement's first): {e}"),
+        );
+    }
     let check = match c.check.get_ref().trim() {
         "unity" => Check::Unity,
         "nonnegative" => Check::Nonnegative {
@@ -262,7 +269,7 @@ fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
     Ok(SpecClaim {
         id,
         source: c.source.clone(),
-        statement: c.statement.clone(),
+        statement: c.statement.get_ref().clone(),
         check,
     })
 }

@@ -51,7 +51,7 @@ pub struct RawFunction {
 pub struct RawClaim {
     pub id: Spanned<String>,
     pub source: String,
-    pub statement: String,
+    pub statement: Spanned<String>,
     pub check: Spanned<String>,
     pub range: Option<Spanned<String>>,
     pub maximal: Option<bool>,

@@ -5,8 +5,6 @@
 //! and JSON reports show), [`marked`] its LaTeX — formulas through the one
 //! math writer ([`crate::math`]), prose escaped ([`crate::text`]).
 
-use std::fmt;
-
 use crate::math::{inline_breakable, math};
 use crate::text::text;
 
@@ -16,30 +14,21 @@ pub const OPEN: char = '⟪';
 pub const CLOSE: char = '⟫';
 
 /// What is wrong with the markup of a text.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum MarkupError {
     /// A formula opened inside another, at this character index.
+    #[error("formula opened inside a formula at {0}")]
     Nested(usize),
     /// A close without an open, at this character index.
+    #[error("{CLOSE} without {OPEN} at {0}")]
     Unopened(usize),
     /// A formula opened at this character index is never closed.
+    #[error("{OPEN} at {0} is never closed")]
     Unclosed(usize),
     /// An empty formula at this character index.
+    #[error("empty formula at {0}")]
     Empty(usize),
 }
-
-impl fmt::Display for MarkupError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            MarkupError::Nested(i) => write!(f, "formula opened inside a formula at {i}"),
-            MarkupError::Unopened(i) => write!(f, "{CLOSE} without {OPEN} at {i}"),
-            MarkupError::Unclosed(i) => write!(f, "{OPEN} at {i} is never closed"),
-            MarkupError::Empty(i) => write!(f, "empty formula at {i}"),
-        }
-    }
-}
-
-impl std::error::Error for MarkupError {}
 
 /// The text as printed: the markup removed.
 pub fn plain(text: &str) -> String {
