@@ -113,6 +113,16 @@ fn markdown_links_figures_relative_to_the_output_directory() {
         "{link}"
     );
     assert!(sub.join(link).is_file(), "{link} from {}", sub.display());
+    // the figure's data and pgfplots code too
+    for (label, ext) in [("data: `", ".csv"), ("pgfplots: `", ".tex")] {
+        let path = md
+            .split(label)
+            .nth(1)
+            .and_then(|rest| rest.split('`').next())
+            .unwrap_or_else(|| panic!("{label}…`: {md}"));
+        assert!(path.starts_with("../") && path.ends_with(ext), "{path}");
+        assert!(sub.join(path).is_file(), "{path} from {}", sub.display());
+    }
     // on standard output the link is from the current directory, as before
     let stdout = run_in(&root(), &["audit", "--claim", "T7"]);
     assert!(

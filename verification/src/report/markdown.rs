@@ -119,8 +119,8 @@ impl Format for Markdown<'_> {
             md_text(f.caption),
             relative(f.path, self.output_dir),
             f.command,
-            f.data_path(),
-            f.pgf_path()
+            relative(&f.data_path(), self.output_dir),
+            relative(&f.pgf_path(), self.output_dir)
         )
     }
 
