@@ -28,7 +28,7 @@
 //! [`trig_tex::expr`]).
 
 use std::collections::HashMap;
-use std::fmt;
+use std::fmt::{self, Write as _};
 use std::sync::{Mutex, OnceLock, PoisonError};
 
 use rug::{Integer, Rational};
@@ -228,20 +228,22 @@ fn power(base: String, e: u32, style: Style) -> String {
     }
 }
 
-fn monomial(m: &Monomial, style: Style) -> String {
-    let parts: Vec<String> = m
-        .factors()
-        .map(|(v, e)| power(var_name(v, style).to_string(), e, style))
-        .collect();
-    parts.join(style.times())
-}
-
-/// A nonnegative rational coefficient.
-fn coefficient(q: &Rational, style: Style) -> String {
-    if style == Style::Latex && *q.denom() != 1 {
-        tex::frac(&q.numer().to_string(), &q.denom().to_string())
-    } else {
-        q.to_string()
+/// Writes the monomial `m` (not `1`) to `out`, factors joined by the
+/// style's product sign.
+fn push_monomial(out: &mut String, m: &Monomial, style: Style) {
+    for (i, (v, e)) in m.factors().enumerate() {
+        if i > 0 {
+            out.push_str(style.times());
+        }
+        out.push_str(var_name(v, style));
+        match (e, style) {
+            (1, _) => {}
+            // the exponent as `power` writes it after the base
+            (_, Style::Latex) => out.push_str(&tex::power("", e)),
+            _ => {
+                let _ = write!(out, "{}", power(String::new(), e, style));
+            }
+        }
     }
 }
 
@@ -251,22 +253,25 @@ fn poly(p: &Poly, style: Style) -> String {
     }
     let mut out = String::new();
     for (i, (m, q)) in p.terms().enumerate() {
-        let negative = *q < 0;
-        let a = Rational::from(q.abs_ref());
-        let body = if m.is_one() {
-            coefficient(&a, style)
-        } else if a == 1 {
-            monomial(m, style)
-        } else {
-            format!(
-                "{}{}{}",
-                coefficient(&a, style),
-                style.times(),
-                monomial(m, style)
-            )
-        };
-        push_sign(&mut out, i == 0, negative, style);
-        out.push_str(&body);
+        push_sign(&mut out, i == 0, *q < 0, style);
+        // |q|, its numerator borrowed (no copy)
+        let (num, den) = (q.numer().as_abs(), q.denom());
+        let unit = *num == 1 && *den == 1;
+        if m.is_one() || !unit {
+            if style == Style::Latex && *den != 1 {
+                out.push_str(&tex::frac(&num.to_string(), &den.to_string()));
+            } else if *den == 1 {
+                let _ = write!(out, "{}", *num);
+            } else {
+                let _ = write!(out, "{}/{den}", *num);
+            }
+        }
+        if !m.is_one() {
+            if !unit {
+                out.push_str(style.times());
+            }
+            push_monomial(&mut out, m, style);
+        }
     }
     out
 }
