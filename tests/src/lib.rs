@@ -44,9 +44,13 @@ pub fn binary() -> PathBuf {
             .parent()
             .expect("workspace root")
             .to_path_buf();
-        let target = std::env::var_os("CARGO_TARGET_DIR")
-            .map(PathBuf::from)
-            .unwrap_or_else(|| root.join("target"));
+        // a relative CARGO_TARGET_DIR is read from the workspace root, where
+        // the build below runs (`join` keeps an absolute one as it is)
+        let target = root.join(
+            std::env::var_os("CARGO_TARGET_DIR")
+                .map(PathBuf::from)
+                .unwrap_or_else(|| PathBuf::from("target")),
+        );
         let mut cargo = Command::new(env!("CARGO"));
         cargo.args(["test", "--workspace", "--no-run", "--quiet"]);
         if trig_core::mpfr::SYSTEM_LIBS {
