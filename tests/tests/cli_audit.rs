@@ -66,6 +66,15 @@ fn bad_audit_requests_fail_cleanly() {
     assert!(error_line(&["audit", "--claim", "Z99"]).contains("no claim"));
     let out = run(&["audit", "--output", "/nonexistent-dir/x.md"]);
     assert!(!out.status.success());
+    // refused before the claims are decided, with the write's own error
+    assert!(
+        error_line(&["audit", "--output", "/nonexistent-dir/x.md"])
+            .contains("cannot write /nonexistent-dir/x.md: entity not found")
+    );
+    assert!(
+        error_line(&["audit", "--output", "/etc/passwd/x.md"])
+            .contains("cannot write /etc/passwd/x.md: not a directory")
+    );
 }
 
 #[test]

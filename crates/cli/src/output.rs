@@ -24,14 +24,7 @@ const PREFIX: &str = ".trig-audit-";
 /// is written in place, a symbolic link written through).
 pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
     let path = &resolve(path)?;
-    // the kind only: tempfile's errors name the temporary file, not the target
-    let fail = |e: std::io::Error| {
-        CliError::Usage(format!(
-            "cannot write {}: {}",
-            path.display(),
-            std::io::Error::from(e.kind())
-        ))
-    };
+    let fail = |e: std::io::Error| cannot_write(path, e.kind());
     // a device, pipe or socket is written in place: renaming over it would
     // replace it (`--output /dev/full` must fail as the device fails, not
     // turn /dev/full into a regular file)
@@ -65,6 +58,36 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
     file.as_file().sync_all().map_err(fail)?;
     file.persist(path).map_err(|e| fail(e.error))?;
     Ok(())
+}
+
+/// The error of a write to `path` that failed with `kind` (the kind only:
+/// tempfile's errors name the temporary file, not the target).
+fn cannot_write(path: &Path, kind: std::io::ErrorKind) -> CliError {
+    CliError::Usage(format!(
+        "cannot write {}: {}",
+        path.display(),
+        std::io::Error::from(kind)
+    ))
+}
+
+/// Fails before any work when `path` cannot be written because its
+/// directory is missing or is not a directory, with the error the write
+/// would give (a long audit should not run first). Everything else is left
+/// to [`write_atomically`].
+pub fn check_directory(path: &Path) -> Result<(), CliError> {
+    let path = &resolve(path)?;
+    if std::fs::metadata(path).is_ok_and(|m| !m.is_file() && !m.is_dir()) {
+        return Ok(());
+    }
+    let dir = path
+        .parent()
+        .filter(|d| !d.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
+    match std::fs::metadata(dir) {
+        Ok(m) if m.is_dir() => Ok(()),
+        Ok(_) => Err(cannot_write(path, std::io::ErrorKind::NotADirectory)),
+        Err(e) => Err(cannot_write(path, e.kind())),
+    }
 }
 
 /// The file `path` names: `-` refused, a symbolic link followed to its

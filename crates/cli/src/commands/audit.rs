@@ -11,7 +11,7 @@ use trig_verification::report::{self, Entry, View};
 use trig_verification::{Seed, Status, run as run_audit, spec_audit};
 
 use super::{CliError, CmdResult};
-use crate::output::{write_atomically, wrote};
+use crate::output::{check_directory, write_atomically, wrote};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum ReportFormat {
@@ -84,6 +84,9 @@ fn time_limit(text: &str) -> Result<f64, String> {
 }
 
 pub fn run(args: &AuditArgs) -> CmdResult {
+    if let Some(path) = args.output.as_deref().filter(|p| p.as_os_str() != "-") {
+        check_directory(path)?;
+    }
     let (entries, intro) = match &args.spec {
         Some(path) => {
             let spec = Spec::from_file(path)
