@@ -12,8 +12,7 @@ residual(point) = first − second. Exact values must agree exactly, numeric
 ones to the digits shown. What the check states of the values (`stated`:
 the first against the second, or against 0 when there is one value; absent:
 they are equal; `differ`: the values in pairs, some pair differs) must be
-false at the point. Not a project dependency (CI has
-no Python).
+false at the point. Not a project dependency (CI has no Python).
 
 Usage: trig-audit audit --format json > report.json
        python3 scripts/recheck_witnesses.py report.json
@@ -57,9 +56,8 @@ def value_of(expr):
     return parse(text, expr.get("symbols", []))
 
 
-# the relation a witness's check states, first against second
+# the order a witness's check states, on first − second
 STATED = {
-    "equal": lambda d: d == 0,
     "less": lambda d: d < 0,
     "at-most": lambda d: d <= 0,
     "greater": lambda d: d > 0,
