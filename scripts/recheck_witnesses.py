@@ -9,7 +9,10 @@ it is the value of (`of`, or an expression of its item with the value's
 label) is re-computed by substituting the point; a
 witness whose item has a residual and two values is checked as
 residual(point) = first − second. Exact values must agree exactly, numeric
-ones to the digits shown. Not a project dependency (CI has no Python).
+ones to the digits shown. What the check states of the values (`stated`:
+the first against the second, or against 0 when there is one value; absent:
+they are equal; `differ`: the values in pairs, some pair differs) must be
+false at the point. Not a project dependency (CI has no Python).
 
 Usage: trig-audit audit --format json > report.json
        python3 scripts/recheck_witnesses.py report.json
@@ -53,6 +56,33 @@ def value_of(expr):
     return parse(text, expr.get("symbols", []))
 
 
+# the order a witness's check states, on first − second
+STATED = {
+    "less": lambda d: d < 0,
+    "at-most": lambda d: d <= 0,
+    "greater": lambda d: d > 0,
+    "at-least": lambda d: d >= 0,
+}
+
+
+def stated_fails(w):
+    """None when the stated relation is false at the point, else why not."""
+    stated = w.get("stated", "equal")
+    values = [value_of(v["value"]) for v in w["values"]]
+    if stated == "differ":  # pairs in order; every pair agrees at the point
+        pairs = list(zip(values[0::2], values[1::2]))
+        if len(values) % 2 or any(not same(a, b, w["exact"]) for a, b in pairs):
+            return "the stated difference holds at the point"
+        return None
+    if len(values) > 2:
+        return None if stated == "equal" else f"{stated} of {len(values)} values"
+    first, second = values[0], (values[1] if len(values) > 1 else sympy.Integer(0))
+    if stated == "equal":
+        return "the two values are equal" if len(values) == 2 and same(first, second, w["exact"]) else None
+    d = sympy.simplify(first - second) if w["exact"] else sympy.N(first - second, 40)
+    return f"the stated relation ({stated}) holds at the point" if bool(STATED[stated](d)) else None
+
+
 def check(item):
     """'ok', or why the witness cannot be re-checked / is wrong."""
     w = item["witness"]
@@ -75,9 +105,7 @@ def check(item):
             return f"{v['label']}: substituted {got}, stated {v['value']['sympy']}"
         checked += 1
     if checked:
-        if len(values) == 2 and same(value_of(values[0]["value"]), value_of(values[1]["value"]), w["exact"]):
-            return "the two values are equal"
-        return "ok"
+        return stated_fails(w) or "ok"
     residual = next((x for x in item.get("exprs", []) if "residual" in x["label"] or "jump" in x["label"]), None)
     if residual is None and len(item.get("exprs", [])) == 1 and len(values) == 1:
         residual = item["exprs"][0]

@@ -148,6 +148,61 @@ impl Expr {
         }
     }
 
+    /// `max(x₁, …, xₙ)` (or `min`) of the variables `vars`.
+    pub fn extreme(max: bool, vars: &[String]) -> Expr {
+        let list = |style: Style| {
+            vars.iter()
+                .map(|v| style.sym(&Sym::var(v)))
+                .collect::<Vec<_>>()
+                .join(", ")
+        };
+        let (f, latex, sympy) = if max {
+            ("max", "\\max", "Max")
+        } else {
+            ("min", "\\min", "Min")
+        };
+        Expr {
+            unicode: format!("{f}({})", list(Style::Unicode)),
+            latex: format!("{latex}({})", list(Style::Latex)),
+            sympy: format!("{sympy}({})", list(Style::Sympy)),
+            symbols: sympy_symbols(vars.iter().map(String::as_str)),
+            plain: format!("{f}({})", list(Style::Plain)),
+            terms: 1,
+            degree: 1,
+            factored: None,
+        }
+    }
+
+    /// `num/den^(p/q)` — a quotient by a rational power, which the exact
+    /// ring does not hold (a curvature `(x′y″ − y′x″)/(x′² + y′²)^{3/2}`).
+    pub fn over_power(num: &Sym, den: &Sym, (p, q): (u32, u32)) -> Expr {
+        let form = |style: Style, open: &str, close: &str| {
+            format!(
+                "({})/({}){open}{p}/{q}{close}",
+                style.sym(num),
+                style.sym(den)
+            )
+        };
+        let mut symbols = symbols_of(num);
+        symbols.extend(symbols_of(den));
+        symbols.sort();
+        symbols.dedup();
+        Expr {
+            unicode: form(Style::Unicode, "^(", ")"),
+            latex: format!(
+                "\\frac{{{}}}{{\\left({}\\right)^{{{p}/{q}}}}}",
+                num.to_latex(),
+                den.to_latex()
+            ),
+            sympy: form(Style::Sympy, "**(", ")"),
+            symbols,
+            plain: form(Style::Plain, "^(", ")"),
+            terms: num.numerator().len(),
+            degree: num.numerator().total_degree(),
+            factored: None,
+        }
+    }
+
     /// A decimal value from a numeric evaluation (not exact).
     pub fn numeric(text: &str) -> Expr {
         Expr {
@@ -225,6 +280,18 @@ impl Assignment {
         }
     }
 
+    /// The variable `var` set to a printed decimal: `text` as printed, its
+    /// exact value `q` in SymPy syntax (`n/d`).
+    pub fn printed(var: &str, q: &rug::Rational, text: &str) -> Assignment {
+        Assignment {
+            name: Sym::var(var).to_unicode(),
+            value: text.to_string(),
+            latex: format!("{} = {text}", Sym::var(var).to_latex()),
+            symbol: Some(Sym::var(var).to_sympy()),
+            sympy: Some(q.to_string()),
+        }
+    }
+
     /// The angle `θ ∈ [0, π/2]` of a point `(s, c) = (sin θ, cos θ)` of the
     /// unit circle, exactly, from the coordinates the point gives:
     /// `atan2(s, c)`, `asin(s)` or `acos(c)` (`0`, `π/2` where that is what
@@ -288,6 +355,33 @@ impl Value {
         self.of = Some(Expr::new(expr));
         self
     }
+
+    /// The same value, as the value of `expr` (given in its forms) at the point.
+    pub fn of_expr(mut self, expr: Expr) -> Value {
+        self.of = Some(expr);
+        self
+    }
+}
+
+/// What a check states of its witness values — the first against the
+/// second, or against `0` when there is one value — which is false at the
+/// witness point.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[serde(rename_all = "kebab-case")]
+pub enum Relation {
+    /// `first = second`.
+    Equal,
+    /// `first < second`.
+    Less,
+    /// `first ≤ second`.
+    AtMost,
+    /// `first > second`.
+    Greater,
+    /// `first ≥ second`.
+    AtLeast,
+    /// Some pair differs (the values paired in order: first with second,
+    /// third with fourth, …): false when every pair agrees.
+    Differ,
 }
 
 /// A point where a claim can be seen to fail by hand: every variable set to
@@ -304,6 +398,10 @@ pub struct Witness {
     /// (decimal values of a high-precision evaluation, differing far above
     /// their rounding).
     pub exact: bool,
+    /// What the check states of the values, when it is not that they are
+    /// equal (absent: `equal`, the values differ at the point).
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub stated: Option<Relation>,
 }
 
 impl Witness {

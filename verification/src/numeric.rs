@@ -66,6 +66,7 @@ pub fn counterexample_item(
             })
             .collect(),
         exact: false,
+        stated: None,
     };
     Evidence::new(Kind::Numeric, text).witnessed(Some(witness))
 }

@@ -175,6 +175,7 @@ fn witness(
             },
         ],
         exact,
+        stated: None,
     }
 }
 

@@ -312,6 +312,7 @@ fn with_values(point: &[(String, Rational)], names: &[String], values: Vec<Value
         note: (!notes.is_empty()).then(|| notes.join("; ")),
         values,
         exact: true,
+        stated: None,
     }
 }
 

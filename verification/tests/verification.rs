@@ -12,3 +12,4 @@ mod spec_audit;
 mod thesis_interp;
 mod total_positivity;
 mod witness_lines;
+mod witness_recheck;

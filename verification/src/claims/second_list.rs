@@ -174,14 +174,10 @@ fn t59() -> Verdict {
         .map(|(n, v)| (n.to_string(), rug::Rational::from(v)))
         .into();
     let names: Vec<String> = point.iter().map(|(n, _)| n.clone()).collect();
-    let value = |x: &Sym| witness::at(x, &point).unwrap_or_else(|| x.clone());
-    let shown = witness::witness(
+    let shown = witness::of_exprs(
         &point,
         &names,
-        vec![
-            ("∂S2/∂v(u, 0)", value(&d2[1])),
-            ("∂S1/∂v(u, 1)", value(&d1[1])),
-        ],
+        &[("∂S2/∂v(u, 0)", &d2[1]), ("∂S1/∂v(u, 1)", &d1[1])],
     );
     let a = Verdict::new(
         status_of(jump.is_zero() || !c0.is_zero()),
@@ -191,7 +187,7 @@ fn t59() -> Verdict {
             c0.to_unicode(),
             jump.to_unicode()
         ))
-        .witnessed((!jump.is_zero()).then_some(shown))],
+        .witnessed(shown.filter(|_| !jump.is_zero()))],
     );
     // (b), (c): a × w = b × w with a ≠ b: (5.18) fixes ∂S2/∂v only up to a
     // multiple of the common ∂S/∂u
@@ -442,14 +438,11 @@ fn e18() -> Verdict {
                 cosine.to_unicode(),
                 at_quarter.to_unicode()
             ))
-            .witnessed(Some(witness::witness(
+            .witnessed(witness::of_exprs(
                 &point,
                 &names,
-                vec![
-                    ("d⁵/dt⁵ Σ kᵢbᵢ", Sym::zero()),
-                    ("d⁵/dt⁵ cos t", at_quarter),
-                ],
-            ))),
+                &[("d⁵/dt⁵ Σ kᵢbᵢ", &Sym::zero()), ("d⁵/dt⁵ cos t", &cosine)],
+            )),
         );
     }
     v.evidence.push("paraboloids of revolution and cones are polynomial surfaces and can be EH surfaces; \"the surfaces of revolution\" in general (spheres, tori, cylinders) cannot");

@@ -235,18 +235,11 @@ fn e17() -> Verdict {
                 .collect(),
             note: Some("one coordinate; the printed conditions hold exactly there".into()),
             values: vec![
-                Value {
-                    of: None,
-                    label: "R1(1)".into(),
-                    value: Expr::new(&at(&r1[0])),
-                },
-                Value {
-                    of: None,
-                    label: "R2(0)".into(),
-                    value: Expr::new(&at(&r2[0])),
-                },
+                Value::new("R1(1)", Expr::new(&at(&r1[0]))).of(&r1[0]),
+                Value::new("R2(0)", Expr::new(&at(&r2[0]))).of(&r2[0]),
             ],
             exact: true,
+            stated: None,
         })),
     ]);
     let status = if all_zero && !gap.is_zero() {

@@ -11,7 +11,7 @@ use trig_specfile::Direction;
 use trig_symbolic::Sym;
 
 use crate::claim::{Claim, Seed};
-use crate::evidence::Evidence;
+use crate::evidence::{Evidence, Expr};
 use crate::exact::{IDENTITY, identity_item};
 use crate::judge::certificate::CERTIFIED;
 use crate::judge::nonnegative::convex_hull;
@@ -434,33 +434,53 @@ fn s5() -> Verdict {
 /// edge on the x-axis: `κ = y''/x'²` where `y' = 0` and `x' > 0`; `None`
 /// otherwise.
 fn start_curvature(jets: &[Vec<Sym>], weights: &[Rational], points: &[Point]) -> Option<Rational> {
-    let sum = |order: usize, coordinate: Option<usize>| -> Rational {
+    let weights: Vec<Sym> = weights.iter().map(|w| Sym::rational(w.clone())).collect();
+    let points: Vec<(Sym, Sym)> = points
+        .iter()
+        .map(|(x, y)| (Sym::rational(x.clone()), Sym::rational(y.clone())))
+        .collect();
+    let [x1, y1, _, y2] = start_derivatives(jets, &weights, &points).map(|d| d.as_rational());
+    let (x1, y1, y2) = (x1?, y1?, y2?);
+    (y1 == 0 && x1 > 0).then(|| y2 / x1.square())
+}
+
+/// `x′, y′, x″, y″` at the start of the rational curve `R = N/W`
+/// (`N = Σ wᵢbᵢPᵢ`, `W = Σ wᵢbᵢ`), from the basis jets there.
+fn start_derivatives(jets: &[Vec<Sym>], weights: &[Sym], points: &[(Sym, Sym)]) -> [Sym; 4] {
+    let sum = |order: usize, coordinate: Option<usize>| -> Sym {
         jets.iter()
             .zip(weights)
             .zip(points)
-            .map(|((jet, w), p)| {
-                let value = jet[order].as_rational().unwrap_or_default() * w.clone();
-                match coordinate {
+            .fold(Sym::zero(), |acc, ((jet, w), p)| {
+                let value = jet[order].clone() * w;
+                acc + &match coordinate {
                     None => value,
-                    Some(0) => value * p.0.clone(),
-                    Some(_) => value * p.1.clone(),
+                    Some(0) => value * &p.0,
+                    Some(_) => value * &p.1,
                 }
             })
-            .sum()
     };
     // R = N/W: R' = N'/W − NW'/W², R'' = N''/W − 2N'W'/W² − NW''/W² + 2NW'²/W³
     let (w0, w1, w2) = (sum(0, None), sum(1, None), sum(2, None));
-    let derivative = |k: usize| -> (Rational, Rational) {
+    let w0_2 = w0.clone() * &w0;
+    let derivative = |k: usize| -> (Sym, Sym) {
         let (n0, n1, n2) = (sum(0, Some(k)), sum(1, Some(k)), sum(2, Some(k)));
-        let first = n1.clone() / w0.clone() - n0.clone() * w1.clone() / w0.clone().square();
-        let second = n2 / w0.clone()
-            - Rational::from(2) * n1 * w1.clone() / w0.clone().square()
-            - n0.clone() * w2.clone() / w0.clone().square()
-            + Rational::from(2) * n0 * w1.clone().square() / w0.clone().square() / w0.clone();
+        let first = n1.clone() / &w0 - &(n0.clone() * &w1 / &w0_2);
+        let second = n2 / &w0 - &(Sym::int(2) * &n1 * &w1 / &w0_2) - &(n0.clone() * &w2 / &w0_2)
+            + &(Sym::int(2) * &n0 * &w1 * &w1 / &w0_2 / &w0);
         (first, second)
     };
-    let ((x1, _), (y1, y2)) = (derivative(0), derivative(1));
-    (y1 == 0 && x1 > 0).then(|| y2 / x1.square())
+    let ((x1, x2), (y1, y2)) = (derivative(0), derivative(1));
+    [x1, y1, x2, y2]
+}
+
+/// The curvature `(x′y″ − y′x″)/(x′² + y′²)^{3/2}` at the start of `R`
+/// (as [`start_derivatives`]), as a formula.
+fn curvature_formula(jets: &[Vec<Sym>], weights: &[Sym], points: &[(Sym, Sym)]) -> Expr {
+    let [x1, y1, x2, y2] = start_derivatives(jets, weights, points);
+    let num = x1.clone() * &y2 - &(y1.clone() * &x2);
+    let den = x1.clone() * &x1 + &(y1.clone() * &y1);
+    Expr::over_power(&num, &den, (3, 2))
 }
 
 /// The Bernstein polynomials of degree `n` in `t` with their first two
@@ -548,7 +568,7 @@ fn d15() -> Verdict {
         .chain([("w2".to_string(), q(2, 1))])
         .collect();
     let names: Vec<String> = point.iter().map(|(n, _)| n.clone()).collect();
-    let witness = crate::witness::witness(
+    let mut witness = crate::witness::witness(
         &point,
         &names,
         vec![
@@ -562,6 +582,29 @@ fn d15() -> Verdict {
             ),
         ],
     );
+    // each value as the curvature formula in the point's symbols (the
+    // polygon's first three points, w2; the later points do not enter)
+    let symbolic: Vec<(Sym, Sym)> = polygon
+        .iter()
+        .enumerate()
+        .map(|(i, (x, y))| {
+            if i < 3 {
+                (Sym::var(&format!("x{i}")), Sym::var(&format!("y{i}")))
+            } else {
+                (Sym::rational(x.clone()), Sym::rational(y.clone()))
+            }
+        })
+        .collect();
+    let mut w = vec![Sym::one(); 6];
+    w[2] = Sym::var("w2");
+    let formulas = [
+        curvature_formula(&rqtb, &w, &symbolic),
+        curvature_formula(&bernstein_jets(5), &vec![Sym::one(); 6], &symbolic),
+    ];
+    for (value, formula) in witness.values.iter_mut().zip(formulas) {
+        value.of = Some(formula);
+    }
+    witness.stated = Some(crate::evidence::Relation::AtMost);
     let item = Evidence::new(
         crate::evidence::Kind::Comparison,
         format!(

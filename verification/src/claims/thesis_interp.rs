@@ -10,15 +10,18 @@
 use rug::Rational;
 use trig_core::{Family, Ring};
 use trig_deriv::{End, Wrt, curve_endpoint_derivatives};
+use trig_interp::piece::derivatives_of;
 use trig_interp::scheme::{printed_c1, printed_c2_second, printed_g1, printed_g2_join};
 use trig_interp::{
-    DataSet, Interval, PieceMinimum, Scheme, Spline, Variant, build, certified_minimum, knot_jumps,
+    DataSet, Interval, KnotJump, PieceMinimum, Scheme, Spline, Variant, build, certified_minimum,
+    knot_jumps,
 };
 use trig_symbolic::Sym;
 
 use super::thesis::claim;
+use super::thesis_interp_point::piece_witness;
 use crate::claim::Claim;
-use crate::evidence::{Evidence, EvidenceList};
+use crate::evidence::{Assignment, Evidence, EvidenceList, Expr, Relation, Value, Witness};
 use crate::exact::{IDENTITY, identities};
 use crate::status::Status;
 use crate::verdict::Verdict;
@@ -223,6 +226,44 @@ fn approx(x: &Sym) -> String {
     }
 }
 
+/// The witness of a jump of order `r` at the knot `k`: the point sets the
+/// control points `Vᵢ, Wᵢ, Xᵢ, Yᵢ` of the two pieces (piece `i` on
+/// `[x_i, x_{i+1}]`), and each one-sided value records its formula — the
+/// `r`-th derivative in `x` of `Σ b_j(θ; m_i)·V_j` at the end of its piece,
+/// linear in the control points (`m_i`, `h_i` and `π` in its coefficients).
+fn knot_witness(spline: &Spline<Sym>, k: &KnotJump<Sym>, r: usize) -> Witness {
+    let primes = "'".repeat(r);
+    let x = k.x.to_string();
+    let mut point = vec![Assignment::exact("x", &Sym::rational(k.x.clone()))];
+    let mut values = Vec::new();
+    for (i, end, side, value) in [
+        (k.knot - 1, End::End, "⁻", &k.left[r]),
+        (k.knot, End::Start, "⁺", &k.right[r]),
+    ] {
+        let piece = &spline.pieces[i];
+        let names = ["V", "W", "X", "Y"].map(|l| format!("{l}{i}"));
+        let vars = names.clone().map(|n| Sym::var(&n));
+        let formula = derivatives_of(&vars, &piece.m, &piece.h, end, Wrt::X)[r].clone();
+        point.extend(
+            names
+                .iter()
+                .zip(&piece.points)
+                .map(|(n, v)| Assignment::exact(n, v)),
+        );
+        values.push(Value::new(format!("P{primes}({x}{side})"), Expr::new(value)).of(&formula));
+    }
+    Witness {
+        point,
+        note: Some(format!(
+            "{} ({}), the pieces on either side of the knot: Vᵢ, Wᵢ, Xᵢ, Yᵢ are the control points of piece i, from the data point i (counted from 0); π kept as a symbol",
+            spline.data.table.name, spline.variant
+        )),
+        values,
+        exact: true,
+        stated: None,
+    }
+}
+
 fn jump_lines(spline: &Spline<Sym>, orders: usize) -> (bool, Vec<Evidence>) {
     let mut ok = true;
     let lines = knot_jumps(spline)
@@ -238,23 +279,7 @@ fn jump_lines(spline: &Spline<Sym>, orders: usize) -> (bool, Vec<Evidence>) {
                 .take(orders)
                 .position(|j| !j.is_zero())
                 .filter(|_| !enough)
-                .map(|r| {
-                    let primes = "'".repeat(r);
-                    let x = k.x.to_string();
-                    let mut w = crate::witness::witness(
-                        &[("x".into(), k.x.clone())],
-                        &["x".into(), "pi".into()],
-                        vec![
-                            (&format!("P{primes}({x}⁻)"), k.left[r].clone()),
-                            (&format!("P{primes}({x}⁺)"), k.right[r].clone()),
-                        ],
-                    );
-                    w.note = Some(format!(
-                        "{} ({}), the pieces on either side of the knot; π kept as a symbol",
-                        spline.data.table.name, spline.variant
-                    ));
-                    w
-                });
+                .map(|r| knot_witness(spline, k, r));
             let jumps: Vec<String> = k
                 .jumps
                 .iter()
@@ -280,7 +305,11 @@ fn jump_lines(spline: &Spline<Sym>, orders: usize) -> (bool, Vec<Evidence>) {
     (ok, lines)
 }
 
-fn sym_spline(name: &str, scheme: Scheme, variant: Variant) -> Result<Spline<Sym>, String> {
+pub(super) fn sym_spline(
+    name: &str,
+    scheme: Scheme,
+    variant: Variant,
+) -> Result<Spline<Sym>, String> {
     let data = DataSet::named(name).map_err(|e| e.to_string())?;
     build(&data, scheme, variant, &Sym::zero()).map_err(|e| e.to_string())
 }
@@ -437,24 +466,24 @@ pub(super) fn positivity(name: &str, scheme: Scheme, variant: Variant) -> Verdic
             } else {
                 Status::NotCheckable
             };
+            // the exact interpolant (π symbolic), for the witnesses' formulas
+            let exact = sym_spline(name, scheme, variant);
             let evidence = minima.iter().map(|m| {
                 let item = Evidence::note(describe(name, variant, m));
                 if !m.negative() {
                     return item;
                 }
-                // the point where P is certified negative: its exact upper bound
-                let mut w = crate::witness::witness(
-                    &[("z".into(), m.z.clone())],
-                    &["z".into()],
-                    vec![("upper bound of P", Sym::rational(m.upper.clone()))],
-                );
-                w.note = Some(format!(
-                    "{name} ({variant}), piece {}: z = tan(θ/2), x ≈ {:.6}; P evaluated exactly with π enclosed in [3.14159265358979323846264338327, …328], the bound rounded up",
-                    m.piece + 1,
-                    m.x
-                ));
-                w.values[0].value = crate::evidence::Expr::decimal(&m.upper, &decimal(&m.upper, true));
-                item.witnessed(Some(w))
+                // a simple point near the certified minimum where P is exactly negative
+                let witness = exact.as_ref().ok().and_then(|spline| {
+                    piece_witness(
+                        spline,
+                        m.piece,
+                        &m.z,
+                        Relation::AtLeast,
+                        ("0", &Rational::new()),
+                    )
+                });
+                item.witnessed(witness)
             });
             Verdict::new(status, CERTIFIED, evidence)
         }

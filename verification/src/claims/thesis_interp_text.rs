@@ -13,10 +13,12 @@ use trig_interp::{
 };
 
 use super::thesis::claim;
-use super::thesis_interp::positivity;
+use super::thesis_interp::{positivity, sym_spline};
+use super::thesis_interp_point::piece_witness;
 use crate::claim::Claim;
-use crate::evidence::{Evidence, Expr, Kind, Value, Witness};
+use crate::evidence::{Evidence, Expr, Kind, Relation, Value, Witness};
 use crate::judge::quoted::decimal;
+use crate::judge::recomputed::{self, Cell, Recomputed};
 use crate::status::Status;
 use crate::verdict::Verdict;
 
@@ -51,8 +53,12 @@ fn dec4(q: &Rational, up: bool) -> String {
     decimal(&(k / Rational::from(10_000)))
 }
 
-/// Certified bounds `[lo, hi]` of the maximum of each piece of `spline`.
-fn piece_maxima(spline: &Spline<Interval>) -> Result<Vec<(Rational, Rational, f64)>, String> {
+/// Certified bounds `[lo, hi]` of the maximum of each piece of `spline`,
+/// where it is (`x`, and `z = tan(θ/2)` rational).
+type PieceMaximum = (Rational, Rational, f64, Rational);
+
+/// The certified maximum of each piece of `spline`.
+fn piece_maxima(spline: &Spline<Interval>) -> Result<Vec<PieceMaximum>, String> {
     let mut negated = spline.clone();
     for piece in &mut negated.pieces {
         piece.points = piece.points.clone().map(|v| -v);
@@ -61,7 +67,7 @@ fn piece_maxima(spline: &Spline<Interval>) -> Result<Vec<(Rational, Rational, f6
     minima
         .iter()
         .map(|m: &PieceMinimum| match &m.lower {
-            Some(l) => Ok((-m.upper.clone(), -l.clone(), m.x)),
+            Some(l) => Ok((-m.upper.clone(), -l.clone(), m.x, m.z.clone())),
             None => Err(format!(
                 "piece {}: the maximum is not certified ({})",
                 m.piece + 1,
@@ -77,7 +83,7 @@ fn peak(name: &str, scheme: Scheme, variant: Variant) -> Result<Verdict, String>
     let spline = build(&data, scheme, variant, &Interval::point(Rational::new()))
         .map_err(|e| e.to_string())?;
     let maxima = piece_maxima(&spline)?;
-    let (j, (lo, hi, x)) = maxima
+    let (j, (lo, hi, x, z)) = maxima
         .iter()
         .enumerate()
         .max_by(|a, b| a.1.0.cmp(&b.1.0))
@@ -85,7 +91,7 @@ fn peak(name: &str, scheme: Scheme, variant: Variant) -> Result<Verdict, String>
     let mut items: Vec<Evidence> = maxima
         .iter()
         .enumerate()
-        .map(|(i, (l, h, x))| {
+        .map(|(i, (l, h, x, _))| {
             Evidence::note(format!(
                 "piece {} [{}, {}]: max P ∈ [{}, {}] at x ≈ {x:.4}",
                 i + 1,
@@ -100,7 +106,7 @@ fn peak(name: &str, scheme: Scheme, variant: Variant) -> Result<Verdict, String>
     let alone = maxima
         .iter()
         .enumerate()
-        .all(|(i, (_, h, _))| i == j || h < lo);
+        .all(|(i, (_, h, _, _))| i == j || h < lo);
     let (a, b) = (&data.x[j], &data.x[j + 1]);
     let four_and_half = Rational::from((9, 2));
     let near = alone && (a.clone() + b) / 2u32 == four_and_half;
@@ -134,7 +140,20 @@ fn peak(name: &str, scheme: Scheme, variant: Variant) -> Result<Verdict, String>
             ),
         )
         .about("rises to about 55", status(about))
-        .witnessed((!about).then(|| bound_witness(lo, hi))),
+        .witnessed((!about).then(|| {
+            // above the range: a simple point where P is exactly ≥ 55.5
+            let exact = sym_spline(name, scheme, variant).ok();
+            let above = exact.as_ref().filter(|_| *lo >= high).and_then(|spline| {
+                piece_witness(
+                    spline,
+                    j,
+                    z,
+                    Relation::Less,
+                    ("upper end of about 55", &high),
+                )
+            });
+            above.unwrap_or_else(|| bound_witness(lo, hi))
+        })),
     );
     let above = (lo.to_f64() / 55.0 - 1.0) * 100.0;
     let loose = lo.clone() * 10u32 >= 55 * 9 && hi.clone() * 10u32 <= 55 * 11;
@@ -173,6 +192,7 @@ fn bound_witness(lo: &Rational, hi: &Rational) -> Witness {
             v("upper bound of max P", hi, true),
         ],
         exact: true,
+        stated: None,
     }
 }
 
@@ -209,22 +229,21 @@ fn data_value(
         ),
     )
     .about(subject, status(ok))
-    .witnessed((!ok).then(|| Witness {
-        point: Vec::new(),
-        note: Some(format!("{} at x = {at}", data.table.caption)),
-        values: vec![
-            Value {
-                of: None,
-                label: "printed f".into(),
-                value: Expr::decimal(f, &decimal(f)),
-            },
-            Value {
-                of: None,
-                label: "on the zero axis".into(),
-                value: Expr::decimal(&text, &decimal(&text)),
-            },
-        ],
-        exact: true,
+    .witnessed((!ok).then(|| {
+        // the printed cell f_i against the text's value
+        let cell = Cell::new(format!("f{i}"), &decimal(f), f);
+        recomputed::witness(
+            Some(format!(
+                "{} at x = {at}: f{i} is its f, row {}",
+                data.table.caption,
+                i + 1
+            )),
+            Relation::Equal,
+            &[
+                ("printed f", &Recomputed::cell(cell)),
+                ("on the zero axis", &Recomputed::from(text.clone())),
+            ],
+        )
     })))
 }
 
@@ -331,7 +350,7 @@ mod tests {
         .unwrap();
         let maxima = piece_maxima(&spline).unwrap();
         // every piece's maximum is at least its end values (the data)
-        for (i, (lo, hi, _)) in maxima.iter().enumerate() {
+        for (i, (lo, hi, _, _)) in maxima.iter().enumerate() {
             assert!(lo <= hi);
             assert!(*hi >= data.f[i] && *hi >= data.f[i + 1], "piece {i}");
         }

@@ -103,13 +103,13 @@ fn survey(data: &str) -> Verdict {
         quoted_figure(
             "\"29 reviewed papers\"",
             "29",
-            &Rational::from(n),
+            Rational::from(n),
             "rows of Table 1.1 other than the proposed spline",
         ),
         quoted_figure(
             "\"15 papers out of 29 papers extend their work to surface construction\"",
             "15",
-            &Rational::from(surfaces),
+            Rational::from(surfaces),
             "rows with Surface = Yes",
         ),
     ];

@@ -20,11 +20,13 @@ use std::fmt;
 
 use rug::ops::Pow;
 use rug::{Integer, Rational};
+use trig_symbolic::Sym;
 
 use crate::claim::{Claim, Seed};
 use crate::evidence::EvidenceList;
-use crate::evidence::{Evidence, Expr, Kind, Value, Witness};
+use crate::evidence::{Evidence, Kind, Relation};
 use crate::judge::quoted::decimal;
+use crate::judge::recomputed::{self, Cell, Recomputed};
 use crate::status::Status;
 use crate::verdict::Verdict;
 
@@ -161,15 +163,16 @@ pub(super) fn parse(data: &str) -> Result<Vec<Table>, DataError> {
     Ok(tables)
 }
 
-/// One relation `printed = computed` with its rounding allowance.
-fn relation(what: &str, printed: &Num, computed: &Rational, allowance: Rational) -> Check {
-    let diff = printed.value.clone() - computed;
+/// One relation `printed = computed` with its rounding allowance (the
+/// witness gives the cells `computed` is read from and its formula).
+fn relation(what: &str, printed: &Num, computed: Recomputed, allowance: Rational) -> Check {
+    let diff = printed.value.clone() - &computed.value;
     let ok = diff.clone().abs() <= allowance;
     let text = if ok {
         format!(
             "printed {}, computed {}, difference {} (within the printed rounding; allowance ±{})",
             printed.text,
-            decimal(computed),
+            decimal(&computed.value),
             decimal(&diff),
             decimal(&allowance)
         )
@@ -180,22 +183,18 @@ fn relation(what: &str, printed: &Num, computed: &Rational, allowance: Rational)
             decimal(&allowance)
         )
     };
-    let witness = (!ok).then(|| Witness {
-        point: Vec::new(),
-        note: None,
-        values: vec![
-            Value {
-                of: None,
-                label: "printed".into(),
-                value: Expr::decimal(&printed.value, &printed.text),
-            },
-            Value {
-                of: None,
-                label: "computed".into(),
-                value: Expr::decimal(computed, &decimal(computed)),
-            },
-        ],
-        exact: true,
+    let witness = (!ok).then(|| {
+        recomputed::witness(
+            None,
+            Relation::Equal,
+            &[
+                (
+                    "printed",
+                    &Recomputed::printed(&printed.text, &printed.value),
+                ),
+                ("computed", &computed),
+            ],
+        )
     });
     Check {
         ok,
@@ -214,6 +213,17 @@ struct Check {
 /// Segment-table columns: before total, after total, max, min, average.
 const COLUMNS: [&str; 5] = ["before total", "after total", "max", "min", "average"];
 
+/// The symbols naming the cells of each column in a witness (`before3`:
+/// the before total of segment 3; `before`: of the TOTAL row).
+pub(super) const SYMBOLS: [&str; 5] = ["before", "after", "max", "min", "ave"];
+
+impl Num {
+    /// This printed number as the cell `symbol` of a witness.
+    pub(super) fn cell(&self, symbol: impl Into<String>) -> Cell {
+        Cell::new(symbol, &self.text, &self.value)
+    }
+}
+
 pub(super) fn total_row(t: &Table) -> Result<&[Num], String> {
     t.rows
         .iter()
@@ -224,25 +234,32 @@ pub(super) fn total_row(t: &Table) -> Result<&[Num], String> {
 
 fn segment_checks(t: &Table) -> Result<Vec<Check>, String> {
     let total = total_row(t)?;
-    let segs: Vec<&[Num]> = t
+    let segs: Vec<(&str, &[Num])> = t
         .rows
         .iter()
         .filter(|(l, _)| l != "TOTAL")
-        .map(|(_, c)| c.as_slice())
+        .map(|(l, c)| (l.as_str(), c.as_slice()))
         .collect();
-    if segs.is_empty() || total.len() != 5 || segs.iter().any(|c| c.len() != 5) {
+    if segs.is_empty() || total.len() != 5 || segs.iter().any(|(_, c)| c.len() != 5) {
         return Err(format!("Table {}: every row needs 5 cells", t.number));
     }
     let n = Rational::from(segs.len());
-    let col = |k: usize| segs.iter().map(move |c| &c[k]);
+    let col = |k: usize| segs.iter().map(move |(_, c)| &c[k]);
+    let cells = |k: usize| -> Vec<Cell> {
+        segs.iter()
+            .map(|(l, c)| c[k].cell(format!("{}{l}", SYMBOLS[k])))
+            .collect()
+    };
+    let total_cell = |k: usize| Recomputed::cell(total[k].cell(SYMBOLS[k]));
+    let formula =
+        |r: Option<Recomputed>| r.ok_or_else(|| format!("Table {}: no segments", t.number));
     let allowances = |k: usize| col(k).fold(Rational::new(), |a, x| a + &x.allowance);
     let mut out = Vec::new();
     for (k, name) in COLUMNS.iter().enumerate().take(2) {
-        let sum = col(k).fold(Rational::new(), |a, x| a + &x.value);
         out.push(relation(
             &format!("TOTAL {name} = Σ of {} segments", segs.len()),
             &total[k],
-            &sum,
+            formula(Recomputed::sum(cells(k)))?,
             allowances(k) + &total[k].allowance,
         ));
     }
@@ -263,35 +280,38 @@ fn segment_checks(t: &Table) -> Result<Vec<Check>, String> {
                 if max { "max" } else { "min" }
             ),
             &total[k],
-            &e.value,
+            formula(Recomputed::extreme(cells(k), max))?,
             e.allowance.clone() + &total[k].allowance,
         ));
     }
-    let mean = col(4).fold(Rational::new(), |a, x| a + &x.value) / &n;
     out.push(relation(
         "TOTAL average = mean of the segment averages",
         &total[4],
-        &mean,
+        formula(Recomputed::mean(cells(4)))?,
         allowances(4) / &n + &total[4].allowance,
     ));
     for (key, v) in &t.texts {
+        // a TOTAL cell, or the increment after − before
+        let cell = |k: usize| Ok((total_cell(k), total[k].allowance.clone()));
         let (computed, allowance) = match key.as_str() {
-            "before" => (total[0].value.clone(), total[0].allowance.clone()),
-            "after" => (total[1].value.clone(), total[1].allowance.clone()),
-            "increment" => (
-                total[1].value.clone() - &total[0].value,
-                total[0].allowance.clone() + &total[1].allowance,
-            ),
-            "max" => (total[2].value.clone(), total[2].allowance.clone()),
-            "min" => (total[3].value.clone(), total[3].allowance.clone()),
-            "ave" => (total[4].value.clone(), total[4].allowance.clone()),
-            other => return Err(format!("Table {}: unknown text key {other}", t.number)),
-        };
+            "before" => cell(0),
+            "after" => cell(1),
+            "max" => cell(2),
+            "min" => cell(3),
+            "ave" => cell(4),
+            "increment" => {
+                let difference = Sym::var(SYMBOLS[1]) - &Sym::var(SYMBOLS[0]);
+                let cells = vec![total[0].cell(SYMBOLS[0]), total[1].cell(SYMBOLS[1])];
+                formula(Recomputed::of(&difference, cells))
+                    .map(|r| (r, total[0].allowance.clone() + &total[1].allowance))
+            }
+            other => Err(format!("Table {}: unknown text key {other}", t.number)),
+        }?;
         let what = match key.as_str() {
             "increment" => "text: increment = TOTAL after − TOTAL before".to_string(),
             k => format!("text: {k} = TOTAL row"),
         };
-        out.push(relation(&what, v, &computed, allowance + &v.allowance));
+        out.push(relation(&what, v, computed, allowance + &v.allowance));
     }
     Ok(out)
 }
@@ -333,7 +353,7 @@ fn summary_checks(t: &Table, tables: &[Table]) -> Result<Vec<Check>, String> {
                     SCHEMES[j], COLUMNS[k]
                 ),
                 &row[j],
-                &total[k].value,
+                Recomputed::cell(total[k].cell(SYMBOLS[k])),
                 row[j].allowance.clone() + &total[k].allowance,
             ));
         }
@@ -381,7 +401,7 @@ fn best_checks(t: &Table, tables: &[Table]) -> Result<Vec<Check>, String> {
                 summary.number, SCHEMES[j]
             ),
             ave,
-            &aves[j].value,
+            Recomputed::cell(aves[j].cell(SCHEMES[j])),
             ave.allowance.clone() + &aves[j].allowance,
         ));
         out.push(relation(
@@ -390,7 +410,7 @@ fn best_checks(t: &Table, tables: &[Table]) -> Result<Vec<Check>, String> {
                 summary.number, SCHEMES[j]
             ),
             bad,
-            &bads[j].value,
+            Recomputed::cell(bads[j].cell(SCHEMES[j])),
             Rational::new(),
         ));
     }

@@ -10,12 +10,14 @@
 //! is the exact recomputed value rounded to the quoted decimals.
 
 use rug::Rational;
+use trig_symbolic::Sym;
 
 use super::thesis::claim;
-use super::thesis_tables::{DATA, Num, SCHEMES, Table, parse, summary_row, total_row};
+use super::thesis_tables::{DATA, Num, SCHEMES, SYMBOLS, Table, parse, summary_row, total_row};
 use crate::claim::Claim;
-use crate::evidence::{Evidence, Expr, Kind, Value, Witness};
+use crate::evidence::{Evidence, Kind, Relation, Witness};
 use crate::judge::quoted::{QUOTED, decimal, quoted_figure, quoted_order};
+use crate::judge::recomputed::{self, Cell, Recomputed};
 use crate::status::Status;
 use crate::verdict::Verdict;
 
@@ -65,12 +67,25 @@ struct Segment<'a> {
 }
 
 impl Segment<'_> {
-    fn increase(&self) -> Rational {
-        self.cells[AFTER].value.clone() - &self.cells[BEFORE].value
+    /// The printed cell of `column` (the witness symbol `after3`, …).
+    fn cell(&self, column: usize) -> Cell {
+        self.cells[column].cell(format!("{}{}", SYMBOLS[column], self.number))
     }
-    fn ratio(&self) -> Option<Rational> {
-        (self.cells[BEFORE].value != 0)
-            .then(|| self.cells[AFTER].value.clone() / &self.cells[BEFORE].value)
+    /// `column` as it is printed.
+    fn printed(&self, column: usize) -> Recomputed {
+        Recomputed::cell(self.cell(column))
+    }
+    /// `after − before`.
+    fn increase(&self) -> Recomputed {
+        let (b, a) = (self.cell(BEFORE), self.cell(AFTER));
+        let formula = Sym::var(&a.symbol) - &Sym::var(&b.symbol);
+        Recomputed::of(&formula, vec![b, a]).expect("a difference of cells")
+    }
+    /// `after/before`, when `before ≠ 0`.
+    fn ratio(&self) -> Option<Recomputed> {
+        let (b, a) = (self.cell(BEFORE), self.cell(AFTER));
+        let formula = Sym::var(&a.symbol) / &Sym::var(&b.symbol);
+        Recomputed::of(&formula, vec![b, a])
     }
 }
 
@@ -152,19 +167,14 @@ fn list(segs: &[usize]) -> String {
         .join(", ")
 }
 
-/// A two-value witness: `a` against `b`, exact.
-fn pair(note: String, a: (&str, &Rational), b: (&str, &Rational)) -> Option<Witness> {
-    let value = |(label, v): (&str, &Rational)| Value {
-        of: None,
-        label: label.into(),
-        value: Expr::decimal(v, &decimal(v)),
-    };
-    Some(Witness {
-        point: Vec::new(),
-        note: Some(note),
-        values: vec![value(a), value(b)],
-        exact: true,
-    })
+/// A two-value witness: `stated` fails for `a` against `b`, exact.
+fn pair(
+    note: String,
+    stated: Relation,
+    a: (&str, &Recomputed),
+    b: (&str, &Recomputed),
+) -> Option<Witness> {
+    Some(recomputed::witness(Some(note), stated, &[a, b]))
 }
 
 fn status(ok: bool) -> Status {
@@ -176,9 +186,9 @@ fn status(ok: bool) -> Status {
 fn stands_out(
     segs: &[Segment],
     named: &[usize],
-    key: &dyn Fn(&Segment) -> Option<Rational>,
+    key: &dyn Fn(&Segment) -> Option<Recomputed>,
 ) -> Result<(bool, Option<Witness>, String), String> {
-    let keyed = |inside: bool| -> Result<Vec<(usize, Rational)>, String> {
+    let keyed = |inside: bool| -> Result<Vec<(usize, Recomputed)>, String> {
         segs.iter()
             .filter(|s| named.contains(&s.number) == inside)
             .map(|s| {
@@ -192,21 +202,26 @@ fn stands_out(
     if inside.len() != named.len() {
         return Err(format!("the table has no segment among {}", list(named)));
     }
-    let low = inside.iter().min_by(|a, b| a.1.cmp(&b.1)).expect("named");
-    let Some(high) = outside.iter().max_by(|a, b| a.1.cmp(&b.1)) else {
+    let low = inside
+        .iter()
+        .min_by(|a, b| a.1.value.cmp(&b.1.value))
+        .expect("named");
+    let Some(high) = outside.iter().max_by(|a, b| a.1.value.cmp(&b.1.value)) else {
         return Ok((true, None, "no other segment".into()));
     };
-    let ok = low.1 > high.1;
+    let ok = low.1.value > high.1.value;
     let text = format!(
         "lowest named: segment {} ({}); highest other: segment {} ({})",
         low.0,
-        decimal(&low.1),
+        decimal(&low.1.value),
         high.0,
-        decimal(&high.1)
+        decimal(&high.1.value)
     );
+    // stated: every other segment below every named one
     let witness = (!ok).then(|| {
         pair(
             format!("segment {} is not named, segment {} is", high.0, low.0),
+            Relation::Less,
             (&format!("segment {}", high.0), &high.1),
             (&format!("segment {}", low.0), &low.1),
         )
@@ -224,13 +239,12 @@ fn words_item(t: &Table, q: &Quote) -> Result<Evidence, String> {
             .about(subject.clone(), status(ok))
             .witnessed(witness)
     };
-    let after = |s: &Segment| Some(s.cells[AFTER].value.clone());
+    let after = |s: &Segment| Some(s.printed(AFTER));
     Ok(match &q.words {
         Words::Largest(named) => {
             let (ok, w, text) = stands_out(&segs, named, &after)?;
-            let (before_ok, _, _) = stands_out(&segs, named, &|s: &Segment| {
-                Some(s.cells[BEFORE].value.clone())
-            })?;
+            let (before_ok, _, _) =
+                stands_out(&segs, named, &|s: &Segment| Some(s.printed(BEFORE)))?;
             item(
                 ok,
                 &format!(
@@ -263,9 +277,9 @@ fn words_item(t: &Table, q: &Quote) -> Result<Evidence, String> {
             let bad = segs.iter().find(|s| {
                 named.contains(&s.number)
                     && if rise {
-                        s.increase() <= 0
+                        s.increase().value <= 0
                     } else {
-                        s.increase() != 0
+                        s.increase().value != 0
                     }
             });
             let text = match bad {
@@ -278,8 +292,13 @@ fn words_item(t: &Table, q: &Quote) -> Result<Evidence, String> {
             let w = bad.and_then(|s| {
                 pair(
                     format!("segment {}", s.number),
-                    ("before", &s.cells[BEFORE].value),
-                    ("after", &s.cells[AFTER].value),
+                    if rise {
+                        Relation::Less
+                    } else {
+                        Relation::Equal
+                    },
+                    ("before", &s.printed(BEFORE)),
+                    ("after", &s.printed(AFTER)),
                 )
             });
             let reading = if rise {
@@ -290,7 +309,7 @@ fn words_item(t: &Table, q: &Quote) -> Result<Evidence, String> {
             item(bad.is_none(), reading, text, w)
         }
         Words::MostIncreased => {
-            let k = segs.iter().filter(|s| s.increase() > 0).count();
+            let k = segs.iter().filter(|s| s.increase().value > 0).count();
             item(
                 2 * k > n,
                 "more than half of the segments have after > before",
@@ -317,43 +336,46 @@ fn words_item(t: &Table, q: &Quote) -> Result<Evidence, String> {
 fn figure_items(t: &Table) -> Result<Vec<Evidence>, String> {
     let total = total_row(t)?;
     let segs = segments(t)?;
-    let column = |k: usize| segs.iter().map(move |s| &s.cells[k].value);
+    let column = |k: usize| segs.iter().map(move |s| s.cell(k)).collect::<Vec<_>>();
+    let total_cell = |k: usize| Recomputed::cell(total[k].cell(SYMBOLS[k]));
+    let no_segments = || format!("Table {}: no segments", t.number);
     let mut out = Vec::new();
     for (key, v) in &t.texts {
-        let mut compare = |what: &str, r: Rational, from: &str| {
-            out.push(quoted_figure(what, &v.text, &r, from));
+        let mut compare = |what: &str, r: Recomputed, from: &str| {
+            out.push(quoted_figure(what, &v.text, r, from));
         };
         match key.as_str() {
-            "before" => compare(
-                "total error before",
-                total[BEFORE].value.clone(),
-                "TOTAL before",
-            ),
-            "after" => compare(
-                "total error after",
-                total[AFTER].value.clone(),
-                "TOTAL after",
-            ),
-            "increment" => compare(
-                "increase of the total error",
-                total[AFTER].value.clone() - &total[BEFORE].value,
-                "TOTAL after − TOTAL before",
-            ),
+            "before" => compare("total error before", total_cell(BEFORE), "TOTAL before"),
+            "after" => compare("total error after", total_cell(AFTER), "TOTAL after"),
+            "increment" => {
+                let formula = Sym::var(SYMBOLS[AFTER]) - &Sym::var(SYMBOLS[BEFORE]);
+                let cells = vec![
+                    total[BEFORE].cell(SYMBOLS[BEFORE]),
+                    total[AFTER].cell(SYMBOLS[AFTER]),
+                ];
+                compare(
+                    "increase of the total error",
+                    Recomputed::of(&formula, cells).ok_or_else(no_segments)?,
+                    "TOTAL after − TOTAL before",
+                )
+            }
             "max" => compare(
                 "maximum error",
-                column(MAX).max().cloned().ok_or("no segments")?,
+                Recomputed::extreme(column(MAX), true).ok_or_else(no_segments)?,
                 "max over the segments",
             ),
             "min" => compare(
                 "minimum error",
-                column(MIN).min().cloned().ok_or("no segments")?,
+                Recomputed::extreme(column(MIN), false).ok_or_else(no_segments)?,
                 "min over the segments",
             ),
             "ave" => {
-                compare("average error", total[AVE].value.clone(), "TOTAL average");
-                let mean =
-                    column(AVE).fold(Rational::new(), |a, x| a + x) / Rational::from(segs.len());
-                compare("average error", mean, "mean of the segment averages");
+                compare("average error", total_cell(AVE), "TOTAL average");
+                compare(
+                    "average error",
+                    Recomputed::mean(column(AVE)).ok_or_else(no_segments)?,
+                    "mean of the segment averages",
+                );
             }
             other => return Err(format!("Table {}: unknown text key {other}", t.number)),
         }
@@ -408,20 +430,27 @@ fn summary<'a>(tables: &'a [Table], letter: &str) -> Result<&'a Table, String> {
         .ok_or_else(|| format!("no summary table for {letter}"))
 }
 
-fn row_entries(t: &Table, row: &str) -> Result<Vec<(&'static str, Rational)>, String> {
+/// The cells of `row` of the summary table `t`, by scheme (the witness
+/// symbols `proposed`, `Majeed`, `Han`, `Usman`).
+fn row_entries(t: &Table, row: &str) -> Result<Vec<(&'static str, Recomputed)>, String> {
     let cells = summary_row(t, row)?;
     Ok(NAMES
         .iter()
         .copied()
-        .zip(cells.iter().map(|c| c.value.clone()))
+        .zip(
+            cells
+                .iter()
+                .zip(SCHEMES)
+                .map(|(c, symbol)| Recomputed::cell(c.cell(symbol))),
+        )
         .collect())
 }
 
 /// The scheme of least value in `row` of `t`.
-fn least(t: &Table, row: &str) -> Result<(&'static str, Rational), String> {
+fn least(t: &Table, row: &str) -> Result<(&'static str, Recomputed), String> {
     row_entries(t, row)?
         .into_iter()
-        .min_by(|a, b| a.1.cmp(&b.1))
+        .min_by(|a, b| a.1.value.cmp(&b.1.value))
         .ok_or_else(|| format!("Table {}: empty row {row}", t.number))
 }
 
@@ -454,7 +483,7 @@ fn t67() -> Verdict {
         for letter in ["Epsilon", "Delta", "ع"] {
             let t = summary(&tables, letter)?;
             let (best, v) = least(t, "Ave. Error")?;
-            let proposed = summary_row(t, "Ave. Error")?[0].value.clone();
+            let proposed = Recomputed::cell(summary_row(t, "Ave. Error")?[0].cell(SCHEMES[0]));
             let ok = best == "proposed";
             items.push(
                 Evidence::new(
@@ -462,8 +491,8 @@ fn t67() -> Verdict {
                     format!(
                         "smallest average error in Table {}: {best} ({}); proposed {}",
                         t.number,
-                        decimal(&v),
-                        decimal(&proposed)
+                        decimal(&v.value),
+                        decimal(&proposed.value)
                     ),
                 )
                 .about(format!("{letter}: proposed most precise"), status(ok))
@@ -472,6 +501,7 @@ fn t67() -> Verdict {
                 } else {
                     pair(
                         format!("Table {}, Ave. Error", t.number),
+                        Relation::AtLeast,
                         (best, &v),
                         ("proposed", &proposed),
                     )
@@ -556,13 +586,17 @@ fn t68() -> Verdict {
                 let k = ph.iter().filter(|x| **x).count();
                 let first = sp.iter().zip(&sh).zip(&ph).find(|(_, eq)| !**eq);
                 let witness = first.and_then(|((a, b), _)| {
+                    let cell = |s: &Segment, scheme: &str| {
+                        Recomputed::cell(s.cells[column].cell(format!("{scheme}{}", s.number)))
+                    };
                     pair(
                         format!("segment {}, {name} total error", a.number),
+                        Relation::Equal,
                         (
                             &format!("Table {} (proposed)", p.number),
-                            &a.cells[column].value,
+                            &cell(a, "proposed"),
                         ),
-                        (&format!("Table {} (Han)", h.number), &b.cells[column].value),
+                        (&format!("Table {} (Han)", h.number), &cell(b, "Han")),
                     )
                 });
                 let kmh = mh.iter().filter(|x| **x).count();
@@ -582,7 +616,7 @@ fn t68() -> Verdict {
                     items.push(quoted_figure(
                         "the claim's count: Epsilon Before segments with proposed ≠ Han and Majeed & Qayyum = Han",
                         T68_COUNT,
-                        &Rational::from(both),
+                        Rational::from(both),
                         &format!("count over the {n} segments"),
                     ));
                 }

@@ -17,6 +17,7 @@ pub mod local_control;
 pub mod maxima;
 pub mod nonnegative;
 pub mod quoted;
+pub mod recomputed;
 pub mod region;
 pub mod shape_effect;
 pub mod span;

@@ -12,7 +12,8 @@
 use rug::ops::Pow;
 use rug::{Integer, Rational};
 
-use crate::evidence::{Evidence, Expr, Kind, Value, Witness};
+use crate::evidence::{Evidence, Kind, Relation};
+use crate::judge::recomputed::{Recomputed, witness};
 use crate::status::Status;
 
 /// How a quoted figure is compared, as the report states it.
@@ -46,9 +47,16 @@ pub fn half_unit(text: &str) -> Rational {
 }
 
 /// The item deciding "the text's figure `quoted` is `computed`", where
-/// `from` says how `computed` was obtained from the tables. A quoted text
-/// that is not a decimal is a not-checkable item.
-pub fn quoted_figure(subject: &str, quoted: &str, computed: &Rational, from: &str) -> Evidence {
+/// `from` says how `computed` was obtained from the tables (its witness
+/// carries the cells and formula of `computed`). A quoted text that is not
+/// a decimal is a not-checkable item.
+pub fn quoted_figure(
+    subject: &str,
+    quoted: &str,
+    computed: impl Into<Recomputed>,
+    from: &str,
+) -> Evidence {
+    let computed = computed.into();
     let value = match trig_core::parse_exact(quoted) {
         Ok(v) => v,
         Err(e) => {
@@ -56,33 +64,26 @@ pub fn quoted_figure(subject: &str, quoted: &str, computed: &Rational, from: &st
                 .about(subject, Status::NotCheckable);
         }
     };
-    let diff = value.clone() - computed;
+    let diff = value.clone() - &computed.value;
     let ok = diff.clone().abs() <= half_unit(quoted);
     let text = format!(
         "quoted {quoted}; recomputed {from} = {} ({})",
-        decimal(computed),
+        decimal(&computed.value),
         if ok {
             "the quoted digits are its rounding".to_string()
         } else {
             format!("differs by {}", decimal(&diff))
         }
     );
-    let witness = (!ok).then(|| Witness {
-        point: Vec::new(),
-        note: None,
-        values: vec![
-            Value {
-                of: None,
-                label: "quoted".into(),
-                value: Expr::decimal(&value, quoted),
-            },
-            Value {
-                of: None,
-                label: "recomputed".into(),
-                value: Expr::decimal(computed, &decimal(computed)),
-            },
-        ],
-        exact: true,
+    let witness = (!ok).then(|| {
+        witness(
+            None,
+            Relation::Equal,
+            &[
+                ("quoted", &Recomputed::printed(quoted, &value)),
+                ("recomputed", &computed),
+            ],
+        )
     });
     Evidence::new(Kind::Comparison, text)
         .about(subject, if ok { Status::Holds } else { Status::Fails })
@@ -91,21 +92,22 @@ pub fn quoted_figure(subject: &str, quoted: &str, computed: &Rational, from: &st
 
 /// The item deciding "ordered by `what` (smallest first), the entries come
 /// in the order `printed`": `entries` are the names with their exact
-/// values. Fails at the first printed neighbour pair out of order.
+/// values (with the cells they are read from). Fails at the first printed
+/// neighbour pair out of order.
 pub fn quoted_order(
     subject: &str,
     what: &str,
-    entries: &[(&str, Rational)],
+    entries: &[(&str, Recomputed)],
     printed: &[&str],
 ) -> Evidence {
     let value = |name: &str| entries.iter().find(|(n, _)| *n == name).map(|(_, v)| v);
-    let mut sorted: Vec<&(&str, Rational)> = entries.iter().collect();
-    sorted.sort_by(|a, b| a.1.cmp(&b.1));
+    let mut sorted: Vec<&(&str, Recomputed)> = entries.iter().collect();
+    sorted.sort_by(|a, b| a.1.value.cmp(&b.1.value));
     let actual: Vec<String> = sorted
         .iter()
-        .map(|(n, v)| format!("{n} {}", decimal(v)))
+        .map(|(n, v)| format!("{n} {}", decimal(&v.value)))
         .collect();
-    let pairs: Option<Vec<(&str, &Rational, &str, &Rational)>> = printed
+    let pairs: Option<Vec<(&str, &Recomputed, &str, &Recomputed)>> = printed
         .windows(2)
         .map(|w| Some((w[0], value(w[0])?, w[1], value(w[1])?)))
         .collect();
@@ -117,28 +119,18 @@ pub fn quoted_order(
         ))
         .about(subject, Status::NotCheckable);
     };
-    let wrong = pairs.iter().find(|(_, a, _, b)| a >= b);
+    let wrong = pairs.iter().find(|(_, a, _, b)| a.value >= b.value);
     let text = format!(
         "printed order {}; by {what}, smallest first: {}",
         printed.join(" < "),
         actual.join(" < ")
     );
-    let witness = wrong.map(|(n1, v1, n2, v2)| Witness {
-        point: Vec::new(),
-        note: Some(format!("{n1} is printed before {n2}")),
-        values: vec![
-            Value {
-                of: None,
-                label: (*n1).into(),
-                value: Expr::decimal(v1, &decimal(v1)),
-            },
-            Value {
-                of: None,
-                label: (*n2).into(),
-                value: Expr::decimal(v2, &decimal(v2)),
-            },
-        ],
-        exact: true,
+    let witness = wrong.map(|(n1, v1, n2, v2)| {
+        witness(
+            Some(format!("{n1} is printed before {n2}")),
+            Relation::Less,
+            &[(n1, v1), (n2, v2)],
+        )
     });
     Evidence::new(Kind::Comparison, text)
         .about(
@@ -163,32 +155,32 @@ mod tests {
     #[test]
     fn a_quoted_figure_holds_exactly_when_it_is_the_rounding() {
         // 2680.111 quoted as 2680.11: its rounding
-        let e = quoted_figure("after", "2680.11", &q(2_680_111, 1000), "TOTAL");
+        let e = quoted_figure("after", "2680.11", q(2_680_111, 1000), "TOTAL");
         assert_eq!(e.status, Some(Status::Holds));
         // 794.3815 quoted as 794.3715
         let e = quoted_figure(
             "increment",
             "794.3715",
-            &q(7_943_815, 10_000),
+            q(7_943_815, 10_000),
             "after − before",
         );
         assert_eq!(e.status, Some(Status::Fails));
         assert!(e.text.contains("differs by -0.01"), "{}", e.text);
         assert!(e.witness.is_some());
         // 0.0005 away at 3 decimals is a tie: either neighbour
-        let e = quoted_figure("x", "1.000", &q(10_005, 10_000), "x");
+        let e = quoted_figure("x", "1.000", q(10_005, 10_000), "x");
         assert_eq!(e.status, Some(Status::Holds));
-        let e = quoted_figure("x", "1.001", &q(10_005, 10_000), "x");
+        let e = quoted_figure("x", "1.001", q(10_005, 10_000), "x");
         assert_eq!(e.status, Some(Status::Holds));
-        let e = quoted_figure("x", "1.002", &q(10_005, 10_000), "x");
+        let e = quoted_figure("x", "1.002", q(10_005, 10_000), "x");
         assert_eq!(e.status, Some(Status::Fails));
-        let e = quoted_figure("x", "one", &q(1, 1), "x");
+        let e = quoted_figure("x", "one", q(1, 1), "x");
         assert_eq!(e.status, Some(Status::NotCheckable));
     }
 
     #[test]
     fn an_order_holds_only_when_every_neighbour_pair_increases() {
-        let entries = [("a", q(1, 2)), ("b", q(3, 4)), ("c", q(1, 1))];
+        let entries = [("a", q(1, 2)), ("b", q(3, 4)), ("c", q(1, 1))].map(|(n, v)| (n, v.into()));
         let e = quoted_order("o", "v", &entries, &["a", "b", "c"]);
         assert_eq!(e.status, Some(Status::Holds));
         let e = quoted_order("o", "v", &entries, &["a", "c", "b"]);

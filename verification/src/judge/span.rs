@@ -212,30 +212,33 @@ fn curve_witness(
     solved: &Solved,
 ) -> Option<crate::evidence::Witness> {
     let half = rug::Rational::from((1, 2));
-    let at = |e: &Sym| e.subs("t", &Sym::rational(half.clone()));
     if b.iter()
         .any(|f| f.variables().iter().any(|v| v == "s" || v == "c"))
     {
         return None;
     }
-    let mut values = Vec::new();
     let labels: Vec<(String, String)> = targets
         .iter()
         .map(|(c, g)| (format!("{c} of Σ bᵢPᵢ"), format!("{c} = {g}")))
         .collect();
-    for (((_, g), (k, _)), (curve, target)) in targets.iter().zip(solved).zip(&labels) {
+    let mut exprs = Vec::new();
+    for ((_, g), (k, _)) in targets.iter().zip(solved) {
         let value = b
             .iter()
             .zip(k)
             .fold(Sym::zero(), |acc, (f, k)| acc + &(f.clone() * k));
-        values.push((curve.as_str(), at(&value)));
-        values.push((target.as_str(), at(g)));
+        exprs.push((value, g.clone()));
     }
-    Some(crate::witness::witness(
-        &[("t".to_string(), half)],
-        &["t".to_string()],
-        values,
-    ))
+    let values: Vec<(&str, &Sym)> = exprs
+        .iter()
+        .zip(&labels)
+        .flat_map(|((value, g), (curve, target))| [(curve.as_str(), value), (target.as_str(), g)])
+        .collect();
+    // each coordinate of the curve against the target's: the claim says
+    // they cannot agree; they do
+    let mut w = crate::witness::of_exprs(&[("t".to_string(), half)], &["t".to_string()], &values)?;
+    w.stated = Some(crate::evidence::Relation::Differ);
+    Some(w)
 }
 
 /// The curve `Σ bᵢPᵢ` with the printed points satisfies the printed

@@ -14,7 +14,7 @@ use crate::evidence::{Evidence, Witness};
 use crate::status::Status;
 
 /// The version of the report format (and of `docs/report.schema.json`).
-pub const SCHEMA_VERSION: &str = "2.0.0";
+pub const SCHEMA_VERSION: &str = "2.1.0";
 
 /// The name of the format.
 pub const SCHEMA_NAME: &str = "trig-audit-report";

@@ -15,7 +15,7 @@ use trig_symbolic::Sym;
 
 use super::{lin, n, v};
 use crate::claim::shared;
-use crate::evidence::{Evidence, EvidenceList, Expr, Value, Witness};
+use crate::evidence::{Evidence, EvidenceList, Witness};
 use crate::exact::{sum, symbols};
 use crate::judge::join::{Printed, PrintedJoin, audit_surface};
 use crate::status::Status;
@@ -108,9 +108,9 @@ fn listing_nets() -> Vec<([Point; 4], [Point; 4])> {
         .collect()
 }
 
-/// Residuals of C² across one seam, each row and coordinate, as text; empty
-/// when every residual vanishes.
-fn seam_failures(rows: &[([Point; 4], [Point; 4])], p_to_q: bool) -> Vec<(String, String)> {
+/// Residuals of C² across one seam, each row and coordinate, as text, with
+/// a witness; empty when every residual vanishes.
+fn seam_failures(rows: &[([Point; 4], [Point; 4])], p_to_q: bool) -> Vec<(String, Witness)> {
     let m = [n(1)];
     let setup = JoinSetup {
         basis: Family::ThesisCubic,
@@ -135,20 +135,54 @@ fn seam_failures(rows: &[([Point; 4], [Point; 4])], p_to_q: bool) -> Vec<(String
                 .iter()
                 .map(|r| r[order].to_string())
                 .collect();
-            if per_coordinate.iter().any(|r| !r[order].is_zero()) {
-                failures.push((
-                    format!(
-                        "row {r} (points {}…{}): order-{order} jump (second − first) = ({})",
-                        4 * r,
-                        4 * r + 3,
-                        vector.join(", ")
-                    ),
-                    vector.join(", "),
-                ));
+            if let Some(c) = per_coordinate.iter().position(|r| !r[order].is_zero()) {
+                let what = format!(
+                    "row {r} (points {}…{}): order-{order} jump (second − first)",
+                    4 * r,
+                    4 * r + 3
+                );
+                let witness = jump_witness(&setup, (first, second), (r, order, c), p_to_q, &what);
+                failures.push((format!("{what} = ({})", vector.join(", ")), witness));
             }
         }
     }
     failures
+}
+
+/// The witness of a jump of `order` in coordinate `c` of row `r`: the jump
+/// as a formula in the row's control points (`P4r…`, `Q4r…`, that
+/// coordinate), at the listing's values.
+fn jump_witness(
+    setup: &JoinSetup<'_, Family>,
+    (first, second): (&[Point; 4], &[Point; 4]),
+    (r, order, c): (usize, usize, usize),
+    p_to_q: bool,
+    what: &str,
+) -> Witness {
+    let (a, b) = if p_to_q { ("P", "Q") } else { ("Q", "P") };
+    let names = |x: &str| {
+        (0..4)
+            .map(|k| format!("{x}{}", 4 * r + k))
+            .collect::<Vec<_>>()
+    };
+    let (na, nb) = (names(a), names(b));
+    let vars = |ns: &[String]| ns.iter().map(|n| Sym::var(n)).collect::<Vec<_>>();
+    let formula = setup.residuals(JoinKind::C(2), &vars(&na), &vars(&nb))[order].clone();
+    let point: Vec<(String, rug::Rational)> = na
+        .iter()
+        .zip(first)
+        .chain(nb.iter().zip(second))
+        .map(|(n, p)| (n.clone(), p[c].as_rational().unwrap_or_default()))
+        .collect();
+    let names: Vec<String> = point.iter().map(|(n, _)| n.clone()).collect();
+    let coordinate = ["x", "y", "z"][c];
+    let label = format!("{what}, {coordinate}");
+    let mut w = crate::witness::of_exprs(&point, &names, &[(label.as_str(), &formula)])
+        .expect("integer nets: no denominator");
+    w.note = Some(format!(
+        "the {coordinate}-coordinates of row {r} of the listing's nets (m = 1), angle derivatives"
+    ));
+    w
 }
 
 /// The Appendix 1 cylinder: both seams, exactly, with the listing's numbers.
@@ -167,20 +201,12 @@ pub fn t26k() -> Verdict {
             if failures.is_empty() {
                 evidence.push(format!("{name}: C² holds exactly in every row"));
             }
-            for (k, (f, vector)) in failures.into_iter().enumerate() {
+            for (k, (f, witness)) in failures.into_iter().enumerate() {
                 // the first jump, exactly: the nets are integers
-                let witness = (k == 0).then(|| Witness {
-                    point: Vec::new(),
-                    note: Some(format!("{name}, the listing's nets (m = 1)")),
-                    values: vec![Value {
-                        of: None,
-                        label: f.split(" = ").next().unwrap_or_default().to_string(),
-                        value: Expr::literal(
-                            &format!("({vector})"),
-                            &format!("Matrix([{vector}])"),
-                        ),
-                    }],
-                    exact: true,
+                let witness = (k == 0).then(|| {
+                    let mut w = witness;
+                    w.note = w.note.map(|n| format!("{name}: {n}"));
+                    w
                 });
                 evidence.push(Evidence::note(format!("{name}: {f}")).witnessed(witness));
             }
