@@ -53,20 +53,30 @@ fn a_fragment_by_default_a_document_with_standalone() {
     );
 }
 
-#[test]
-fn figures_are_included_relative_to_the_output_directory() {
-    let out = std::env::temp_dir().join(format!("trig-audit-tex-{}", std::process::id()));
+/// T7's report (with the figure) written by `audit --output` to
+/// `report.EXT` in the subdirectory `paper` of a fresh temporary
+/// directory, run from the repository root: the temporary directory, the
+/// subdirectory and the report.
+fn written_in_subdirectory(ext: &str, format: &[&str]) -> (PathBuf, PathBuf, String) {
+    let out = std::env::temp_dir().join(format!("trig-audit-{ext}-{}", std::process::id()));
     let sub = out.join("paper");
     std::fs::create_dir_all(&sub).unwrap();
-    let file = sub.join("report.tex");
+    let file = sub.join(format!("report.{ext}"));
     let file_arg = file.display().to_string();
-    run_in(
-        &root(),
-        &[
-            "audit", "--claim", "T7", "--format", "tex", "--output", &file_arg,
-        ],
-    );
-    let tex = std::fs::read_to_string(&file).unwrap();
+    let args = [
+        &["audit", "--claim", "T7"],
+        format,
+        &["--output", &file_arg],
+    ]
+    .concat();
+    run_in(&root(), &args);
+    let text = std::fs::read_to_string(&file).unwrap();
+    (out, sub, text)
+}
+
+#[test]
+fn figures_are_included_relative_to_the_output_directory() {
+    let (out, sub, tex) = written_in_subdirectory("tex", &["--format", "tex"]);
     let included = tex
         .split("\\input{")
         .nth(1)
@@ -80,6 +90,8 @@ fn figures_are_included_relative_to_the_output_directory() {
         sub.display()
     );
     // run elsewhere, the figure file is not there: named, not included
+    let file = sub.join("report.tex");
+    let file_arg = file.display().to_string();
     run_in(
         &out,
         &[
@@ -95,13 +107,7 @@ fn figures_are_included_relative_to_the_output_directory() {
 
 #[test]
 fn markdown_links_figures_relative_to_the_output_directory() {
-    let out = std::env::temp_dir().join(format!("trig-audit-md-{}", std::process::id()));
-    let sub = out.join("paper");
-    std::fs::create_dir_all(&sub).unwrap();
-    let file = sub.join("report.md");
-    let file_arg = file.display().to_string();
-    run_in(&root(), &["audit", "--claim", "T7", "--output", &file_arg]);
-    let md = std::fs::read_to_string(&file).unwrap();
+    let (out, sub, md) = written_in_subdirectory("md", &[]);
     let link = md
         .split("**Figure:** [")
         .nth(1)

@@ -28,17 +28,14 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
     // a device, pipe or socket is written in place: renaming over it would
     // replace it (`--output /dev/full` must fail as the device fails, not
     // turn /dev/full into a regular file)
-    if std::fs::metadata(path).is_ok_and(|m| !m.is_file() && !m.is_dir()) {
+    if is_special(path) {
         return std::fs::OpenOptions::new()
             .write(true)
             .open(path)
             .and_then(|mut f| f.write_all(bytes).and_then(|()| f.flush()))
             .map_err(fail);
     }
-    let dir = path
-        .parent()
-        .filter(|d| !d.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
+    let dir = directory_of(path);
     remove_stale_temporaries(dir);
     let mut file = tempfile::Builder::new()
         .prefix(&format!("{PREFIX}{}-", std::process::id()))
@@ -60,6 +57,18 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
     Ok(())
 }
 
+/// True for a device, pipe or socket: written in place, never replaced.
+fn is_special(path: &Path) -> bool {
+    std::fs::metadata(path).is_ok_and(|m| !m.is_file() && !m.is_dir())
+}
+
+/// The directory a file `path` is written in (`.` for a bare name).
+fn directory_of(path: &Path) -> &Path {
+    path.parent()
+        .filter(|d| !d.as_os_str().is_empty())
+        .unwrap_or(Path::new("."))
+}
+
 /// The error of a write to `path` that failed with `kind` (the kind only:
 /// tempfile's errors name the temporary file, not the target).
 fn cannot_write(path: &Path, kind: std::io::ErrorKind) -> CliError {
@@ -76,14 +85,10 @@ fn cannot_write(path: &Path, kind: std::io::ErrorKind) -> CliError {
 /// to [`write_atomically`].
 pub fn check_directory(path: &Path) -> Result<(), CliError> {
     let path = &resolve(path)?;
-    if std::fs::metadata(path).is_ok_and(|m| !m.is_file() && !m.is_dir()) {
+    if is_special(path) {
         return Ok(());
     }
-    let dir = path
-        .parent()
-        .filter(|d| !d.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    match std::fs::metadata(dir) {
+    match std::fs::metadata(directory_of(path)) {
         Ok(m) if m.is_dir() => Ok(()),
         Ok(_) => Err(cannot_write(path, std::io::ErrorKind::NotADirectory)),
         Err(e) => Err(cannot_write(path, e.kind())),

@@ -236,14 +236,8 @@ fn push_monomial(out: &mut String, m: &Monomial, style: Style) {
             out.push_str(style.times());
         }
         out.push_str(var_name(v, style));
-        match (e, style) {
-            (1, _) => {}
-            // the exponent as `power` writes it after the base
-            (_, Style::Latex) => out.push_str(&tex::power("", e)),
-            _ => {
-                let _ = write!(out, "{}", power(String::new(), e, style));
-            }
-        }
+        // the exponent as `power` writes it after a base (nothing for 1)
+        out.push_str(&power(String::new(), e, style));
     }
 }
 
