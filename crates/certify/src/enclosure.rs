@@ -144,7 +144,7 @@ impl<'a> BoxAtoms<'a> {
     ) -> Option<TaylorModel> {
         let mut sum = self.tau.int(0);
         for (monomial, q) in p.terms() {
-            let mut term = self.tau.rational(q);
+            let mut term = self.tau.rational(&q.to_rational());
             for (v, e) in monomial.factors() {
                 term = term * &self.power(v.name(), e, powers)?;
             }

@@ -116,7 +116,7 @@ pub fn tensor(poly: &Poly, params: &[(&str, ParamBox)]) -> Result<Tensor, String
                 "{poly} depends on symbols other than z and the parameters"
             ));
         }
-        t.add(&alpha, q);
+        t.add(&alpha, &q.to_rational());
     }
     Ok(t)
 }

@@ -32,7 +32,7 @@ impl UPoly {
             if u64::from(e) != mono.degree() {
                 return None;
             }
-            coeffs[e as usize] += q;
+            coeffs[e as usize] += q.to_rational();
         }
         Some(UPoly::new(coeffs))
     }

@@ -50,7 +50,7 @@ pub(crate) fn bits(q: &Rational) -> u32 {
 fn coefficient_bits(x: &Sym) -> u32 {
     std::iter::once(x.numerator())
         .chain(x.denominator().keys())
-        .flat_map(|p| p.terms().map(|(_, q)| bits(q)))
+        .flat_map(|p| p.terms().map(|(_, q)| q.significant_bits()))
         .max()
         .unwrap_or(0)
 }

@@ -9,9 +9,9 @@
 use std::collections::BTreeSet;
 
 use rug::Rational;
-use rug::ops::Pow;
 use trig_core::Ring;
 
+use crate::coef::Coef;
 use crate::error::SymError;
 use crate::poly::Poly;
 use crate::residue::Residue;
@@ -20,7 +20,7 @@ use crate::var::Var;
 
 /// The operations evaluation needs, for ℚ and for any [`Ring`].
 trait Field: Clone {
-    fn constant(&self, q: &Rational) -> Self;
+    fn constant(&self, q: &Coef) -> Self;
     fn add(self, other: &Self) -> Self;
     fn mul(self, other: &Self) -> Self;
     fn div(self, other: &Self) -> Self;
@@ -28,32 +28,34 @@ trait Field: Clone {
     fn is_zero(&self) -> bool;
 }
 
-impl Field for Rational {
-    fn constant(&self, q: &Rational) -> Self {
+/// Exact rationals, inline while they are small ([`Coef`]).
+impl Field for Coef {
+    fn constant(&self, q: &Coef) -> Self {
         q.clone()
     }
     fn add(self, other: &Self) -> Self {
-        self + other
+        Coef::add(&self, other)
     }
     fn mul(self, other: &Self) -> Self {
-        self * other
+        Coef::mul(&self, other)
     }
     fn div(self, other: &Self) -> Self {
-        self / other
+        // evaluation divides only by denominators checked to be nonzero
+        self.checked_div(other).expect("a nonzero denominator")
     }
     fn pow(&self, n: u32) -> Self {
-        self.clone().pow(n)
+        Coef::pow(self, n)
     }
     fn is_zero(&self) -> bool {
-        *self == 0
+        Coef::is_zero(self)
     }
 }
 
 /// Residues modulo a prime ([`Residue`]); `None` where undefined (a
 /// denominator divisible by the prime), and undefined stays undefined.
 impl Field for Option<Residue> {
-    fn constant(&self, q: &Rational) -> Self {
-        Residue::of(q)
+    fn constant(&self, q: &Coef) -> Self {
+        Residue::of_coef(q)
     }
     fn add(self, other: &Self) -> Self {
         Some(self? + (*other)?)
@@ -77,8 +79,8 @@ impl Field for Option<Residue> {
 struct InRing<T>(T);
 
 impl<T: Ring> Field for InRing<T> {
-    fn constant(&self, q: &Rational) -> Self {
-        InRing(self.0.rational(q))
+    fn constant(&self, q: &Coef) -> Self {
+        InRing(self.0.rational(&q.to_rational()))
     }
     fn add(self, other: &Self) -> Self {
         InRing(self.0 + &other.0)
@@ -129,18 +131,17 @@ fn value<'a, F>(values: &'a Values<F>, v: &Var) -> &'a F {
 
 /// `p` at bound values (every variable of `p` is bound).
 fn eval_poly<F: Field>(p: &Poly, like: &F, values: &Values<F>) -> F {
-    p.terms()
-        .fold(like.constant(&Rational::new()), |acc, (m, q)| {
-            let term = m.factors().fold(like.constant(q), |t, (v, e)| {
-                t.mul(&value(values, v).pow(e))
-            });
-            acc.add(&term)
-        })
+    p.terms().fold(like.constant(&Coef::ZERO), |acc, (m, q)| {
+        let term = m.factors().fold(like.constant(q), |t, (v, e)| {
+            t.mul(&value(values, v).pow(e))
+        });
+        acc.add(&term)
+    })
 }
 
 /// `x` at bound values, checking every denominator factor.
 fn eval_sym<F: Field>(x: &Sym, like: &F, values: &Values<F>) -> Result<F, SymError> {
-    let mut den = like.constant(&Rational::from(1));
+    let mut den = like.constant(&Coef::ONE);
     for (f, e) in x.denominator() {
         let value = eval_poly(f, like, values);
         if value.is_zero() {
@@ -157,8 +158,8 @@ impl Poly {
         &self,
         assign: &dyn Fn(&str) -> Option<Rational>,
     ) -> Result<Rational, SymError> {
-        let values = bind(self.vars(), assign)?;
-        Ok(eval_poly(self, &Rational::new(), &values))
+        let values = bind(self.vars(), &|n: &str| assign(n).map(Coef::from))?;
+        Ok(eval_poly(self, &Coef::ZERO, &values).to_rational())
     }
 
     /// The value in the ring of `like` at the assigned values; coefficients
@@ -180,8 +181,8 @@ impl Sym {
         &self,
         assign: &dyn Fn(&str) -> Option<Rational>,
     ) -> Result<Rational, SymError> {
-        let values = bind(self.vars(), assign)?;
-        eval_sym(self, &Rational::new(), &values)
+        let values = bind(self.vars(), &|n: &str| assign(n).map(Coef::from))?;
+        eval_sym(self, &Coef::ZERO, &values).map(|x| x.to_rational())
     }
 
     /// The image modulo a prime ([`Residue`]) of the value at the assigned

@@ -41,6 +41,7 @@
 //! (plain, Unicode, LaTeX) complete the crate.
 
 mod calculus;
+pub mod coef;
 mod error;
 mod eval;
 pub mod factor;
@@ -57,6 +58,7 @@ mod roots;
 pub mod sym;
 pub mod var;
 
+pub use coef::Coef;
 pub use error::SymError;
 pub use factor::{Factored, FactoredQuotient};
 pub use linear::combine;

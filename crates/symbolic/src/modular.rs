@@ -49,7 +49,7 @@ fn image(p: &Poly, x: &str) -> Option<Vec<u64>> {
     let mut residues: Vec<(Var, u64)> = Vec::new();
     let mut out = vec![0u64; p.degree_in(x) as usize + 1];
     for (m, q) in p.terms() {
-        let mut value = Residue::of(q)?.value();
+        let mut value = Residue::of_coef(q)?.value();
         let mut power = 0;
         for (v, e) in m.factors() {
             if *v == main {

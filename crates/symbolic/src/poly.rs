@@ -15,6 +15,7 @@ use std::ops::{Add, Mul, Neg, Sub};
 
 use rug::{Integer, Rational};
 
+use crate::coef::Coef;
 use crate::monomial::Monomial;
 use crate::var::Var;
 
@@ -23,7 +24,7 @@ use crate::var::Var;
 /// factors) is structural and has no mathematical meaning.
 #[derive(Clone, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub struct Poly {
-    terms: BTreeMap<Monomial, Rational>,
+    terms: BTreeMap<Monomial, Coef>,
 }
 
 impl Poly {
@@ -34,7 +35,7 @@ impl Poly {
 
     /// The constant `1`.
     pub fn one() -> Poly {
-        Poly::constant(Rational::from(1))
+        Poly::coef_term(Monomial::one(), Coef::ONE)
     }
 
     /// The constant `q`.
@@ -44,16 +45,21 @@ impl Poly {
 
     /// The integer `n`.
     pub fn int(n: i64) -> Poly {
-        Poly::constant(Rational::from(n))
+        Poly::coef_term(Monomial::one(), Coef::int(n))
     }
 
     /// The variable `name`.
     pub fn var(name: &str) -> Poly {
-        Poly::term(Monomial::var(Var::new(name), 1), Rational::from(1))
+        Poly::coef_term(Monomial::var(Var::new(name), 1), Coef::ONE)
     }
 
     /// The single term `q·m` (reduced).
     pub fn term(m: Monomial, q: Rational) -> Poly {
+        Poly::coef_term(m, Coef::from(q))
+    }
+
+    /// The single term `q·m` (reduced).
+    pub(crate) fn coef_term(m: Monomial, q: Coef) -> Poly {
         let mut p = Poly::zero();
         p.add_term(m, q);
         p
@@ -73,7 +79,7 @@ impl Poly {
                 .iter()
                 .next()
                 .filter(|(m, _)| m.is_one())
-                .map(|(_, q)| q.clone()),
+                .map(|(_, q)| q.to_rational()),
             _ => None,
         }
     }
@@ -89,12 +95,12 @@ impl Poly {
     }
 
     /// The terms, greatest monomial first (the printing order).
-    pub fn terms(&self) -> impl DoubleEndedIterator<Item = (&Monomial, &Rational)> {
+    pub fn terms(&self) -> impl DoubleEndedIterator<Item = (&Monomial, &Coef)> {
         self.terms.iter().rev()
     }
 
     /// The greatest term.
-    pub fn leading_term(&self) -> Option<(&Monomial, &Rational)> {
+    pub fn leading_term(&self) -> Option<(&Monomial, &Coef)> {
         self.terms.last_key_value()
     }
 
@@ -139,8 +145,8 @@ impl Poly {
     /// Adds `q·m`, rewriting every power `vᵏ` (`k ≥ 2`) of a reduced atom
     /// by its square rule ([`Var::square`]): `sᵏ = s^(k mod 2)·(1 − c²)^⌊k/2⌋`
     /// for a sine atom with cosine partner `c`, `sqrt(p)ᵏ = sqrt(p)^(k mod 2)·p^⌊k/2⌋`.
-    pub(crate) fn add_term(&mut self, m: Monomial, q: Rational) {
-        if q == 0 {
+    pub(crate) fn add_term(&mut self, m: Monomial, q: Coef) {
+        if q.is_zero() {
             return;
         }
         let Some((v, k)) = m.factors().find(|(v, e)| *e >= 2 && v.is_reduced()) else {
@@ -153,15 +159,15 @@ impl Poly {
         let j = k / 2;
         match v.square().expect("a reduced atom has a square rule") {
             (None, p) => {
-                let coef = Rational::from(&q * &Integer::from(rug::ops::Pow::pow(&p, j)));
+                let coef = q.mul(&Coef::from(&Integer::from(rug::ops::Pow::pow(&p, j))));
                 self.add_term(base, coef);
             }
             (Some(cosine), _) => {
                 let mut binom = Integer::from(1);
                 for i in 0..=j {
-                    let mut coef = Rational::from(&q * &binom);
+                    let mut coef = q.mul(&Coef::from(&binom));
                     if i % 2 == 1 {
-                        coef = -coef;
+                        coef = coef.neg();
                     }
                     self.add_term(base.mul(&Monomial::var(cosine, 2 * i)), coef);
                     binom = binom * (j - i) / (i + 1);
@@ -170,12 +176,14 @@ impl Poly {
         }
     }
 
-    fn accumulate(&mut self, m: Monomial, q: Rational) {
+    fn accumulate(&mut self, m: Monomial, q: Coef) {
         match self.terms.entry(m) {
             Entry::Occupied(mut e) => {
-                *e.get_mut() += q;
-                if *e.get() == 0 {
+                let sum = e.get().add(&q);
+                if sum.is_zero() {
                     e.remove();
+                } else {
+                    *e.get_mut() = sum;
                 }
             }
             Entry::Vacant(e) => {
@@ -186,22 +194,27 @@ impl Poly {
 
     /// `q·self`.
     pub fn scale(&self, q: &Rational) -> Poly {
-        if *q == 0 {
+        self.scale_by(&Coef::from(q))
+    }
+
+    /// `q·self`.
+    pub(crate) fn scale_by(&self, q: &Coef) -> Poly {
+        if q.is_zero() {
             return Poly::zero();
         }
         Poly {
             terms: self
                 .terms
                 .iter()
-                .map(|(m, c)| (m.clone(), Rational::from(c * q)))
+                .map(|(m, c)| (m.clone(), c.mul(q)))
                 .collect(),
         }
     }
 
     /// `self + q·m·d` in place.
-    fn add_scaled(&mut self, d: &Poly, m: &Monomial, q: &Rational) {
+    fn add_scaled(&mut self, d: &Poly, m: &Monomial, q: &Coef) {
         for (md, cd) in &d.terms {
-            self.add_term(m.mul(md), Rational::from(q * cd));
+            self.add_term(m.mul(md), q.mul(cd));
         }
     }
 
@@ -280,8 +293,10 @@ impl Poly {
         let mut q = Poly::zero();
         while let Some((lm_r, lc_r)) = r.leading_term() {
             let m = lm_r.checked_div(lm_d)?;
-            let coef = Rational::from(lc_r / lc_d);
-            r.add_scaled(d, &m, &-coef.clone());
+            let coef = lc_r
+                .checked_div(lc_d)
+                .expect("a stored coefficient is nonzero");
+            r.add_scaled(d, &m, &coef.neg());
             q.add_term(m, coef);
         }
         Some(q)
@@ -293,8 +308,8 @@ impl Poly {
         let mut num = Integer::new();
         let mut den = Integer::from(1);
         for q in self.terms.values() {
-            num.gcd_mut(q.numer());
-            den.lcm_mut(q.denom());
+            num.gcd_mut(&q.numer());
+            den.lcm_mut(&q.denom());
         }
         Rational::from((num, den))
     }
@@ -311,7 +326,7 @@ impl Poly {
     /// coefficient (for zero: `(0, 0)`).
     pub fn canonical(&self) -> (Rational, Poly) {
         let mut u = self.content();
-        if self.leading_term().is_some_and(|(_, q)| *q < 0) {
+        if self.leading_term().is_some_and(|(_, q)| q.signum() < 0) {
             u = -u;
         }
         if u == 0 {
@@ -359,7 +374,7 @@ impl Poly {
             let (rest, e) = m.split(name);
             if e > 0 {
                 let m = rest.mul(&Monomial::var(v, e - 1));
-                out.add_term(m, Rational::from(q * e));
+                out.add_term(m, q.mul(&Coef::int(i64::from(e))));
             }
         }
         out
@@ -400,7 +415,7 @@ impl Sub<&Poly> for Poly {
     type Output = Poly;
     fn sub(mut self, rhs: &Poly) -> Poly {
         for (m, q) in &rhs.terms {
-            self.accumulate(m.clone(), -q.clone());
+            self.accumulate(m.clone(), q.neg());
         }
         self
     }
@@ -412,7 +427,7 @@ impl Mul<&Poly> for &Poly {
         let mut out = Poly::zero();
         for (ma, qa) in &self.terms {
             for (mb, qb) in &rhs.terms {
-                out.add_term(ma.mul(mb), Rational::from(qa * qb));
+                out.add_term(ma.mul(mb), qa.mul(qb));
             }
         }
         out
@@ -430,7 +445,7 @@ impl Neg for Poly {
     type Output = Poly;
     fn neg(mut self) -> Poly {
         for q in self.terms.values_mut() {
-            *q = -std::mem::take(q);
+            *q = q.neg();
         }
         self
     }

@@ -247,17 +247,14 @@ fn poly(p: &Poly, style: Style) -> String {
     }
     let mut out = String::new();
     for (i, (m, q)) in p.terms().enumerate() {
-        push_sign(&mut out, i == 0, *q < 0, style);
-        // |q|, its numerator borrowed (no copy)
-        let (num, den) = (q.numer().as_abs(), q.denom());
-        let unit = *num == 1 && *den == 1;
+        push_sign(&mut out, i == 0, q.signum() < 0, style);
+        let q = q.abs();
+        let unit = q == 1;
         if m.is_one() || !unit {
-            if style == Style::Latex && *den != 1 {
-                out.push_str(&tex::frac(&num.to_string(), &den.to_string()));
-            } else if *den == 1 {
-                let _ = write!(out, "{}", *num);
+            if style == Style::Latex && !q.is_integer() {
+                out.push_str(&tex::frac(&q.numer().to_string(), &q.denom().to_string()));
             } else {
-                let _ = write!(out, "{}/{den}", *num);
+                let _ = write!(out, "{q}");
             }
         }
         if !m.is_one() {
@@ -292,7 +289,7 @@ fn sym(x: &Sym, style: Style) -> String {
     let k = x
         .numerator()
         .terms()
-        .fold(Integer::from(1), |acc, (_, q)| acc.lcm(q.denom()));
+        .fold(Integer::from(1), |acc, (_, q)| acc.lcm(&q.denom()));
     let n = x.numerator().scale(&Rational::from(k.clone()));
     let mut items = Vec::new();
     if k != 1 {

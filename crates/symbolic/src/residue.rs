@@ -11,6 +11,8 @@ use std::ops::{Add, Mul, Neg, Sub};
 
 use rug::Rational;
 
+use crate::coef::Coef;
+
 /// The prime `2³¹ − 1`: products of residues fit in `u64`.
 pub(crate) const P: u64 = 2_147_483_647;
 
@@ -26,6 +28,22 @@ impl Residue {
             return Some(Residue(num));
         }
         let den = u64::from(q.denom().mod_u(P as u32));
+        if den == 0 {
+            return None;
+        }
+        Some(Residue(num * inverse(den) % P))
+    }
+
+    /// The image of a polynomial's coefficient (as [`Residue::of`]).
+    pub fn of_coef(q: &Coef) -> Option<Residue> {
+        let Some((n, d)) = q.small() else {
+            return Residue::of(&q.to_rational());
+        };
+        let num = n.rem_euclid(P as i64) as u64;
+        if d == 1 {
+            return Some(Residue(num));
+        }
+        let den = d % P;
         if den == 0 {
             return None;
         }

@@ -23,7 +23,7 @@ pub fn rational_roots(p: &Poly, var: &str) -> (Vec<Rational>, bool) {
     let mut groups: HashMap<Monomial, BTreeMap<u32, Rational>> = HashMap::new();
     for (m, q) in p.terms() {
         let (rest, e) = m.split(var);
-        *groups.entry(rest).or_default().entry(e).or_default() += q;
+        *groups.entry(rest).or_default().entry(e).or_default() += q.to_rational();
     }
     let Some(group) = groups.values().max_by_key(|g| g.len()) else {
         return (Vec::new(), true);

@@ -439,7 +439,7 @@ fn fourier_label(k: usize, sine: bool) -> String {
 fn coeff(p: &Poly, a: u32, b: u32) -> Rational {
     p.terms()
         .find(|(m, _)| m.exponent("s") == a && m.exponent("c") == b)
-        .map_or(Rational::new(), |(_, q)| q.clone())
+        .map_or(Rational::new(), |(_, q)| q.to_rational())
 }
 
 /// The exact Fourier expansion `Σ a_k cos kθ + b_k sin kθ` of a polynomial
