@@ -133,9 +133,24 @@ impl Coef {
         }
     }
 
+    /// `n/d` already in lowest terms (`d ≠ 0`).
+    fn from_reduced(n: i128, d: u128) -> Coef {
+        match (i64::try_from(n), u64::try_from(d)) {
+            (Ok(n), Ok(d)) if n != i64::MIN => Coef(Form::Small(n, d)),
+            _ => Coef(Form::Big(Rational::from((
+                Integer::from(n),
+                Integer::from(d),
+            )))),
+        }
+    }
+
     /// `a + b`.
     pub fn add(&self, other: &Coef) -> Coef {
         if let (Form::Small(a, b), Form::Small(c, d)) = (&self.0, &other.0) {
+            if *b == 1 && *d == 1 {
+                // integers: no gcd
+                return Coef::from_reduced(i128::from(*a) + i128::from(*c), 1);
+            }
             let (a, b, c, d) = (i128::from(*a), *b, i128::from(*c), *d);
             if b == d {
                 // |a + c| < 2⁶⁴
@@ -157,13 +172,17 @@ impl Coef {
     /// `a·b`.
     pub fn mul(&self, other: &Coef) -> Coef {
         if let (Form::Small(a, b), Form::Small(c, d)) = (&self.0, &other.0) {
+            if *a == 0 || *c == 0 {
+                return Coef::ZERO;
+            }
             // cross-cancel first: the product of reduced fractions
-            // (a/g₁)(c/g₂) / ((b/g₂)(d/g₁)) is reduced
-            let g1 = gcd(u128::from(a.unsigned_abs()), u128::from(*d)) as i128;
-            let g2 = gcd(u128::from(c.unsigned_abs()), u128::from(*b)) as i128;
-            let n = (i128::from(*a) / g1) * (i128::from(*c) / g2);
-            let den = (u128::from(*b) / g2 as u128) * (u128::from(*d) / g1 as u128);
-            return Coef::from_parts(n, den);
+            // (a/g₁)(c/g₂) / ((b/g₂)(d/g₁)) is reduced; g₁ divides a ≠ 0 and
+            // g₂ divides c ≠ 0, so both fit i64
+            let g1 = gcd64(a.unsigned_abs(), *d);
+            let g2 = gcd64(c.unsigned_abs(), *b);
+            let n = i128::from(a / g1 as i64) * i128::from(c / g2 as i64);
+            let den = u128::from(b / g2) * u128::from(d / g1);
+            return Coef::from_reduced(n, den);
         }
         Coef::from(self.to_rational() * other.to_rational())
     }

@@ -64,6 +64,14 @@ impl Monomial {
             .map_or(0, |(_, e)| *e)
     }
 
+    /// The exponent of the variable `v` (0 when absent).
+    pub fn exponent_of(&self, v: Var) -> u32 {
+        self.factors
+            .iter()
+            .find(|(w, _)| *w == v)
+            .map_or(0, |(_, e)| *e)
+    }
+
     /// The variables with their exponents, in the variable order.
     pub fn factors(&self) -> impl Iterator<Item = (&Var, u32)> {
         self.factors.iter().map(|(v, e)| (v, *e))
@@ -132,7 +140,7 @@ impl Monomial {
             .factors
             .iter()
             .filter_map(|(v, e)| {
-                let f = other.exponent(v.name());
+                let f = other.exponent_of(*v);
                 (f > 0).then(|| (*v, (*e).min(f)))
             })
             .collect();
@@ -151,12 +159,20 @@ impl Monomial {
 
     /// The monomial without the variable `name`, and the exponent it had.
     pub fn split(&self, name: &str) -> (Monomial, u32) {
+        match Var::find(name) {
+            Some(v) => self.split_off(v),
+            None => (self.clone(), 0),
+        }
+    }
+
+    /// The monomial without the variable `v`, and the exponent it had.
+    pub fn split_off(&self, v: Var) -> (Monomial, u32) {
         let mut e = 0;
         let factors = self
             .factors
             .iter()
-            .filter(|(v, k)| {
-                let hit = v.name() == name;
+            .filter(|(w, k)| {
+                let hit = *w == v;
                 if hit {
                     e = *k;
                 }

@@ -106,9 +106,14 @@ impl Poly {
 
     /// Degree in the variable `name`.
     pub fn degree_in(&self, name: &str) -> u32 {
+        Var::find(name).map_or(0, |v| self.degree_in_var(v))
+    }
+
+    /// Degree in the variable `v`.
+    fn degree_in_var(&self, v: Var) -> u32 {
         self.terms
             .keys()
-            .map(|m| m.exponent(name))
+            .map(|m| m.exponent_of(v))
             .max()
             .unwrap_or(0)
     }
@@ -154,7 +159,7 @@ impl Poly {
             return;
         };
         let v = *v;
-        let (rest, _) = m.split(v.name());
+        let (rest, _) = m.split_off(v);
         let base = rest.mul(&Monomial::var(v, k % 2));
         let j = k / 2;
         match v.square().expect("a reduced atom has a square rule") {
@@ -253,12 +258,17 @@ impl Poly {
         }
         // Degrees in variables other than s, c add up under multiplication
         // (the quotient ring is an integral domain, free over them).
+        let mut degrees: Vec<(Var, u32)> = Vec::new();
         for m in d.terms.keys() {
-            for (v, e) in m.factors() {
-                if !v.is_trig() && e > self.degree_in(v.name()) {
-                    return None;
+            for (v, e) in m.factors().filter(|(v, _)| !v.is_trig()) {
+                match degrees.iter_mut().find(|(w, _)| w == v) {
+                    Some((_, d)) => *d = (*d).max(e),
+                    None => degrees.push((*v, e)),
                 }
             }
+        }
+        if degrees.iter().any(|(v, e)| *e > self.degree_in_var(*v)) {
+            return None;
         }
         // Make the divisor free of every reduced atom (sine, radical)
         // through its conjugates (`d₀ + d₁s ↦ d₀ − d₁s`), multiplying `self`
@@ -339,9 +349,12 @@ impl Poly {
     /// The coefficients `[p₀, p₁, …]` of `self = Σ pᵢ·nameⁱ`, each free of
     /// `name` (`[0]` for the zero polynomial).
     pub fn coefficients_in(&self, name: &str) -> Vec<Poly> {
-        let mut out = vec![Poly::zero(); self.degree_in(name) as usize + 1];
+        let Some(v) = Var::find(name) else {
+            return vec![self.clone()];
+        };
+        let mut out = vec![Poly::zero(); self.degree_in_var(v) as usize + 1];
         for (m, q) in &self.terms {
-            let (rest, e) = m.split(name);
+            let (rest, e) = m.split_off(v);
             out[e as usize].add_term(rest, q.clone());
         }
         out
@@ -349,10 +362,13 @@ impl Poly {
 
     /// The polynomial with the variable `name` replaced by `value`.
     pub fn subs(&self, name: &str, value: &Poly) -> Poly {
+        let Some(v) = Var::find(name) else {
+            return self.clone();
+        };
         let mut powers = vec![Poly::one()];
         let mut out = Poly::zero();
         for (m, q) in &self.terms {
-            let (rest, e) = m.split(name);
+            let (rest, e) = m.split_off(v);
             while powers.len() <= e as usize {
                 let next = powers.last().map(|p| p * value).unwrap_or_default();
                 powers.push(next);
@@ -371,7 +387,7 @@ impl Poly {
         let v = Var::new(name);
         let mut out = Poly::zero();
         for (m, q) in &self.terms {
-            let (rest, e) = m.split(name);
+            let (rest, e) = m.split_off(v);
             if e > 0 {
                 let m = rest.mul(&Monomial::var(v, e - 1));
                 out.add_term(m, q.mul(&Coef::int(i64::from(e))));

@@ -7,6 +7,7 @@ use rug::{Integer, Rational};
 
 use crate::monomial::Monomial;
 use crate::poly::Poly;
+use crate::var::Var;
 
 /// Largest coefficient (in absolute value) whose divisors are enumerated.
 const DIVISOR_LIMIT: u64 = 1 << 40;
@@ -20,9 +21,12 @@ pub fn rational_roots(p: &Poly, var: &str) -> (Vec<Rational>, bool) {
     }
     // one coefficient group (fixed monomial in the other variables) gives a
     // univariate polynomial whose roots include every common root
+    let Some(v) = Var::find(var) else {
+        return (Vec::new(), true);
+    };
     let mut groups: HashMap<Monomial, BTreeMap<u32, Rational>> = HashMap::new();
     for (m, q) in p.terms() {
-        let (rest, e) = m.split(var);
+        let (rest, e) = m.split_off(v);
         *groups.entry(rest).or_default().entry(e).or_default() += q.to_rational();
     }
     let Some(group) = groups.values().max_by_key(|g| g.len()) else {

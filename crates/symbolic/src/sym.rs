@@ -237,9 +237,12 @@ fn subs_poly(p: &Poly, name: &str, value: &Sym) -> Sym {
     if value.den.is_empty() {
         return Sym::from_poly(p.subs(name, &value.num));
     }
+    let Some(v) = Var::find(name) else {
+        return Sym::from_poly(p.clone());
+    };
     let mut groups: BTreeMap<u32, Poly> = BTreeMap::new();
     for (m, q) in p.terms() {
-        let (rest, e) = m.split(name);
+        let (rest, e) = m.split_off(v);
         groups.entry(e).or_default().add_term(rest, q.clone());
     }
     groups.into_iter().fold(Sym::zero(), |acc, (e, g)| {

@@ -64,6 +64,24 @@ impl Class {
         }
     }
 
+    /// The position of the class in the variable order, as one number
+    /// (the derived order of `Class`: parameters by index, then the other
+    /// classes as declared).
+    fn rank(self) -> u32 {
+        let after = |k: u32| PARAMETERS.len() as u32 + k;
+        match self {
+            Class::Parameter(i) => i as u32,
+            Class::Pi => after(0),
+            Class::ParamSin => after(1),
+            Class::ParamCos => after(2),
+            Class::Radical => after(3),
+            Class::Sin => after(4),
+            Class::Cos => after(5),
+            Class::T => after(6),
+            Class::Other => after(7),
+        }
+    }
+
     /// True for the classes with several members, ordered by name.
     fn by_name(self) -> bool {
         matches!(
@@ -88,6 +106,8 @@ pub struct Var(&'static Interned);
 struct Interned {
     name: &'static str,
     class: Class,
+    /// `class.rank()`, computed once.
+    rank: u32,
     /// For names of a class ordered by name ([`Class::by_name`]) whose key
     /// decides [`natural`] order:
     /// the first 8 bytes of the name without its trailing digits (big
@@ -109,7 +129,12 @@ impl Interned {
                 head[..prefix.len()].copy_from_slice(prefix.as_bytes());
                 (u64::from_be_bytes(head), digits.parse::<u64>().unwrap_or(0))
             });
-        Interned { name, class, key }
+        Interned {
+            name,
+            class,
+            rank: class.rank(),
+            key,
+        }
     }
 }
 
@@ -130,6 +155,14 @@ impl Var {
         let record: &'static Interned = Box::leak(Box::new(Interned::new(name)));
         table.insert(name, record);
         Var(record)
+    }
+
+    /// The variable called `name` when it has been formed before (a name
+    /// never formed occurs in no polynomial); unlike [`Var::new`], nothing
+    /// is recorded.
+    pub fn find(name: &str) -> Option<Var> {
+        let table = table().lock().unwrap_or_else(PoisonError::into_inner);
+        table.get(name).map(|record| Var(record))
     }
 
     /// `sin θ`, the variable [`SIN`].
@@ -177,7 +210,7 @@ impl Var {
     /// ([`Var::square`]): sine atoms and radicals. Their degrees are not
     /// preserved by multiplication, and division clears them by conjugates.
     pub fn is_reduced(&self) -> bool {
-        self.is_sine() || self.0.class == Class::Radical
+        matches!(self.0.class, Class::Sin | Class::ParamSin | Class::Radical)
     }
 
     /// `v²` in lower terms when the normal form rewrites it: `1 − c²` for a
@@ -240,24 +273,23 @@ impl Hash for Var {
 }
 
 impl Ord for Var {
+    #[inline]
     fn cmp(&self, other: &Self) -> Ordering {
         let (a, b) = (self.0, other.0);
         if std::ptr::eq(a, b) {
             return Ordering::Equal;
         }
         // classes with one member compare equal; the others by name
-        a.class.cmp(&b.class).then_with(|| match a.class {
-            Class::Other | Class::ParamSin | Class::ParamCos | Class::Radical => {
-                match (a.key, b.key) {
-                    // Equal keys mean equal prefixes and trailing numbers,
-                    // i.e. names that differ only in leading zeros:
-                    // `natural` then compares the names.
-                    (Some(ka), Some(kb)) => ka.cmp(&kb).then_with(|| a.name.cmp(b.name)),
-                    _ => natural(a.name, b.name),
-                }
-            }
-            _ => Ordering::Equal,
-        })
+        match a.rank.cmp(&b.rank) {
+            Ordering::Equal if a.class.by_name() => match (a.key, b.key) {
+                // Equal keys mean equal prefixes and trailing numbers,
+                // i.e. names that differ only in leading zeros:
+                // `natural` then compares the names.
+                (Some(ka), Some(kb)) => ka.cmp(&kb).then_with(|| a.name.cmp(b.name)),
+                _ => natural(a.name, b.name),
+            },
+            order => order,
+        }
     }
 }
 
@@ -299,6 +331,23 @@ mod tests {
                 "m", "beta", "zeta", "pi", "s", "c", "t", "P2", "P10", "h1", "w0"
             ]
         );
+    }
+
+    #[test]
+    fn the_rank_orders_as_the_classes_do() {
+        let names = [
+            "m", "omega", "pi", "sin(a)", "cos(a)", "sqrt(2)", "s", "c", "t", "w0",
+        ];
+        let classes: Vec<Class> = names.iter().map(|n| Class::of(n)).collect();
+        for a in &classes {
+            for b in &classes {
+                assert_eq!(a.rank().cmp(&b.rank()), a.cmp(b), "{a:?} against {b:?}");
+            }
+        }
+        assert!(names.iter().all(|n| {
+            let v = Var::new(n);
+            v.is_reduced() == (v.is_sine() || Class::of(n) == Class::Radical)
+        }));
     }
 
     #[test]

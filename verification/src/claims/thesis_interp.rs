@@ -7,6 +7,8 @@
 //! positivity by a certified minimum per piece (Weierstrass substitution +
 //! Bernstein subdivision, [`crate::certify::nonneg::certify`]).
 
+use std::sync::OnceLock;
+
 use rug::Rational;
 use trig_core::{Family, Ring};
 use trig_deriv::{End, Wrt, curve_endpoint_derivatives};
@@ -20,9 +22,10 @@ use trig_symbolic::Sym;
 
 use super::thesis::claim;
 use super::thesis_interp_point::piece_witness;
-use crate::claim::Claim;
+use crate::claim::{Claim, shared};
 use crate::evidence::{Assignment, Evidence, EvidenceList, Expr, Relation, Value, Witness};
 use crate::exact::{IDENTITY, identities};
+use crate::memo::Memo;
 use crate::status::Status;
 use crate::verdict::Verdict;
 
@@ -452,8 +455,24 @@ pub fn describe(name: &str, variant: Variant, m: &PieceMinimum) -> String {
 const CERTIFIED: &str = "certified minimum per piece: control points enclosed for π ∈ [3.14159265358979323846264338327, …328], Weierstrass z = tan(θ/2) + exact Bernstein subdivision lower bound, exact value at a rational point as upper bound";
 
 /// The certified minima of the example `name` with `scheme`/`variant`, as a verdict.
+///
+/// Decided once per process for the same table, scheme and reading (T24
+/// quotes T24a–f, and T58 and the text claims ask again). The key is the
+/// table's name (the evidence names it) and every value read from it.
 pub(super) fn positivity(name: &str, scheme: Scheme, variant: Variant) -> Verdict {
-    let result = DataSet::named(name)
+    static DECIDED: Memo<Verdict> = Memo::new();
+    let data = DataSet::named(name);
+    let key = format!("{name} {data:?} {scheme:?} {variant:?}");
+    DECIDED.get_or_compute(key, || decide_positivity(name, data, scheme, variant))
+}
+
+fn decide_positivity(
+    name: &str,
+    data: Result<DataSet, trig_interp::InterpError>,
+    scheme: Scheme,
+    variant: Variant,
+) -> Verdict {
+    let result = data
         .and_then(|d| build(&d, scheme, variant, &Interval::point(Rational::new())))
         .and_then(|s| certified_minimum(&s, &crate::minimum::prove));
     match result {
@@ -467,22 +486,28 @@ pub(super) fn positivity(name: &str, scheme: Scheme, variant: Variant) -> Verdic
                 Status::NotCheckable
             };
             // the exact interpolant (π symbolic), for the witnesses' formulas
-            let exact = sym_spline(name, scheme, variant);
+            let exact = minima
+                .iter()
+                .any(PieceMinimum::negative)
+                .then(|| sym_spline(name, scheme, variant));
             let evidence = minima.iter().map(|m| {
                 let item = Evidence::note(describe(name, variant, m));
                 if !m.negative() {
                     return item;
                 }
                 // a simple point near the certified minimum where P is exactly negative
-                let witness = exact.as_ref().ok().and_then(|spline| {
-                    piece_witness(
-                        spline,
-                        m.piece,
-                        &m.z,
-                        Relation::AtLeast,
-                        ("0", &Rational::new()),
-                    )
-                });
+                let witness = exact
+                    .as_ref()
+                    .and_then(|e| e.as_ref().ok())
+                    .and_then(|spline| {
+                        piece_witness(
+                            spline,
+                            m.piece,
+                            &m.z,
+                            Relation::AtLeast,
+                            ("0", &Rational::new()),
+                        )
+                    });
                 item.witnessed(witness)
             });
             Verdict::new(status, CERTIFIED, evidence)
@@ -511,32 +536,32 @@ fn example(name: &str, scheme: Scheme) -> Verdict {
     v
 }
 
-fn t24a() -> Verdict {
-    example("thesis-table-4.1", Scheme::C1)
+/// T24a–f, each decided once per process ([`shared`]): T24 quotes them.
+macro_rules! example_claim {
+    ($name:ident, $table:literal, $scheme:expr) => {
+        fn $name() -> Verdict {
+            static VERDICT: OnceLock<Verdict> = OnceLock::new();
+            shared(&VERDICT, || example($table, $scheme))
+        }
+    };
 }
-fn t24b() -> Verdict {
-    example("thesis-table-4.2", Scheme::C2)
-}
-fn t24c() -> Verdict {
-    example("thesis-table-4.3", Scheme::G1)
-}
-fn t24d() -> Verdict {
-    example("thesis-table-4.4", Scheme::G2)
-}
-fn t24e() -> Verdict {
-    example("thesis-table-4.5", Scheme::G2)
-}
-fn t24f() -> Verdict {
-    example("thesis-table-4.6", Scheme::G1)
-}
+example_claim!(t24a, "thesis-table-4.1", Scheme::C1);
+example_claim!(t24b, "thesis-table-4.2", Scheme::C2);
+example_claim!(t24c, "thesis-table-4.3", Scheme::G1);
+example_claim!(t24d, "thesis-table-4.4", Scheme::G2);
+example_claim!(t24e, "thesis-table-4.5", Scheme::G2);
+example_claim!(t24f, "thesis-table-4.6", Scheme::G1);
 
 fn t24() -> Verdict {
-    let parts = [t24a, t24b, t24c, t24d, t24e, t24f]
+    // T24 is listed before its parts, which the other thread then takes in
+    // order: deciding them from the last meets it in the middle
+    let parts: Vec<(String, Verdict)> = [t24a, t24b, t24c, t24d, t24e, t24f]
         .iter()
         .zip(["T24a", "T24b", "T24c", "T24d", "T24e", "T24f"])
+        .rev()
         .map(|(f, id)| (id.to_string(), f()))
         .collect();
-    Verdict::umbrella(parts)
+    Verdict::umbrella(parts.into_iter().rev().collect())
 }
 
 #[cfg(test)]
