@@ -24,7 +24,8 @@
 //! for polynomials of at most [`FULL_LIMIT`] terms (gcds of large dense
 //! polynomials are costly); larger ones get steps 1–2.
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, HashMap};
+use std::sync::{Mutex, OnceLock, PoisonError};
 
 use rug::ops::Pow;
 use rug::{Integer, Rational};
@@ -82,7 +83,22 @@ pub struct FactoredQuotient {
 
 impl Poly {
     /// The display factorisation (see the [module documentation](self)).
+    ///
+    /// Computed once per process for each polynomial: the same denominators
+    /// and residuals are shown again and again. The key is the polynomial
+    /// itself (every term).
     pub fn factor(&self) -> Factored {
+        static FACTORED: OnceLock<Mutex<HashMap<Poly, Factored>>> = OnceLock::new();
+        let memo = FACTORED.get_or_init(Default::default);
+        let lock = || memo.lock().unwrap_or_else(PoisonError::into_inner);
+        if let Some(f) = lock().get(self) {
+            return f.clone();
+        }
+        let f = self.factor_once();
+        lock().entry(self.clone()).or_insert(f).clone()
+    }
+
+    fn factor_once(&self) -> Factored {
         let mut acc = Accumulator {
             unit: Rational::from(1),
             ..Accumulator::default()
