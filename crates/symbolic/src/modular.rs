@@ -15,7 +15,7 @@
 //! gcd decides.
 
 use crate::poly::Poly;
-use crate::var::Var;
+use crate::var::{COS, SIN, Var};
 
 use crate::residue::{P, Residue, inverse, pow};
 
@@ -39,6 +39,34 @@ pub fn coprime(f: &Poly, others: &[Poly]) -> bool {
             }
             g.len() == 1
         })
+}
+
+/// True when `f` is proved not to divide `n` in the quotient ring
+/// `A = ℚ[x₁, …][s, c]/(s² + c² − 1)` (both free of the other reduced atoms
+/// and of `sin(X)`, `cos(X)`); false means "not proved".
+///
+/// `φ` sends `s`, `c` to a point of the circle mod `p` (so it is a ring
+/// homomorphism of `A` with `p`-integral coefficients, `A_(p)`), a variable
+/// `x` of `f` other than `s`, `c` to itself and the others to integers.
+/// `A_(p)/pA_(p) = 𝔽_p[x₁, …][s, c]/(s² + c² − 1)` is a domain (the conic
+/// is irreducible for odd `p`), so `p` is prime in `A_(p)`. If `n = f·q`
+/// with `n`, `f` in `A_(p)` and `φ(f) ≠ 0` (so `p ∤ f`), then `q ∈ A_(p)`:
+/// writing `q = q'/pᵏ` with `p ∤ q'`, `k > 0` would give `p | f·q'`. Hence
+/// `φ(n) = φ(f)·φ(q)`, and a nonzero remainder of `φ(n)` by a nonconstant
+/// `φ(f)` in `𝔽_p[x]` proves `f ∤ n`.
+pub fn proves_not_divisor(f: &Poly, n: &Poly) -> bool {
+    let only_s_c = |v: &Var| !v.is_trig() || v.name() == SIN || v.name() == COS;
+    let (vars_f, vars_n) = (f.vars(), n.vars());
+    if !vars_f.iter().chain(&vars_n).all(only_s_c) {
+        return false;
+    }
+    let Some(x) = vars_f.iter().find(|v| !v.is_trig()).map(|v| v.name()) else {
+        return false;
+    };
+    let (Some(img_f), Some(img_n)) = (image(f, x), image(n, x)) else {
+        return false;
+    };
+    img_f.len() > 1 && remainder(img_n, &img_f) != [0]
 }
 
 /// `φ(p)` as a polynomial in `x` over `𝔽_p` (coefficients lowest first, no
@@ -73,12 +101,28 @@ fn image(p: &Poly, x: &str) -> Option<Vec<u64>> {
 }
 
 /// The integer a variable other than the main one is sent to: a fixed
-/// pseudo-random residue derived from its name (the same in every image).
+/// pseudo-random residue derived from its name (the same in every image);
+/// `s` and `c` go to a point of the circle `s² + c² = 1` mod `p`
+/// ([`circle`]), so that the image respects the relation.
 fn substitute(name: &str) -> u64 {
+    match name {
+        SIN => return circle().0,
+        COS => return circle().1,
+        _ => {}
+    }
     let hash = name.bytes().fold(0xcbf2_9ce4_8422_2325_u64, |h, b| {
         (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
     });
     2 + hash % (P - 3)
+}
+
+/// `(2k/(1 + k²), (1 − k²)/(1 + k²))` mod `p` for a fixed `k` (`1 + k²` is
+/// never `0`: `p ≡ 3 mod 4`, so `−1` is not a square).
+fn circle() -> (u64, u64) {
+    const K: u64 = 1_234_567;
+    let k2 = K * K % P;
+    let d = inverse((1 + k2) % P);
+    (2 * K % P * d % P, (1 + P - k2) % P * d % P)
 }
 
 fn trim(p: &mut Vec<u64>) {
@@ -150,6 +194,31 @@ mod tests {
         let others = [&common * &(&u - &n(3)), &common * &common];
         assert!(!coprime(&f, &others));
         assert!(!coprime(&(&l + &n(2)), &[&l.pow(2) - &n(4)]));
+    }
+
+    #[test]
+    fn the_circle_point_is_on_the_circle() {
+        let (s, c) = circle();
+        assert_eq!((s * s + c * c) % P, 1);
+    }
+
+    #[test]
+    fn non_divisors_are_proved_and_divisors_never_refused() {
+        let (w, z, s, c) = (v("w0"), v("zeta"), v("s"), v("c"));
+        // f = w·s + z·c + 1 divides f·(s − w) (reduced modulo s² + c² − 1)
+        let f = &(&(&w * &s) + &(&z * &c)) + &n(1);
+        let q = &s - &w;
+        let product = &f * &q;
+        assert!(!proves_not_divisor(&f, &product));
+        assert_eq!(product.exact_div(&f), Some(q.clone()));
+        // s² = (1 − c)(1 + c): w·(1 − c) divides w·s·s in the quotient ring
+        let g = &w * &(&n(1) - &c);
+        assert!(!proves_not_divisor(&g, &(&(&w * &s) * &s)));
+        // not a divisor: f against f·q + 1
+        assert!(proves_not_divisor(&f, &(&product + &n(1))));
+        // other reduced atoms are left to the exact division
+        let r = &v("sqrt(2)") + &w;
+        assert!(!proves_not_divisor(&r, &n(1)));
     }
 
     #[test]

@@ -273,6 +273,10 @@ impl Poly {
         // Make the divisor free of every reduced atom (sine, radical)
         // through its conjugates (`d₀ + d₁s ↦ d₀ − d₁s`), multiplying `self`
         // alike: `d·d̄` is even in the atom, so its normal form lacks it.
+        // That costs a product of `self`: a modular image may refuse first.
+        if !d.reduced_atoms().is_empty() && crate::modular::proves_not_divisor(d, self) {
+            return None;
+        }
         let (mut num, mut den) = (self.clone(), d.clone());
         while let Some(atom) = den.reduced_atoms().into_iter().next() {
             let conj = den.subs(atom.name(), &-Poly::var(atom.name()));
