@@ -9,11 +9,17 @@
 //! `deg_x G = deg_x φ(G) ≤ deg gcd(φ(f), φ(n₁), …)`. So when that univariate
 //! gcd is a constant for *every* variable `x` of `f`, `G` is free of all of
 //! them, and `G` divides `f`, so `G` is a constant: `f` and the `nᵢ` are
-//! coprime. This is a proof, not a heuristic; when an image is unlucky (a
+//! coprime. The `nᵢ` may involve `s` and `c`: they are sent to a point of
+//! the circle mod `p`, so `φ` is a homomorphism of the quotient ring
+//! `ℚ[…][s, c]/(s² + c² − 1)`, and a divisor of `nᵢ` there still maps to a
+//! divisor of `φ(nᵢ)` (the quotient is `p`-integral, see
+//! [`proves_not_divisor`]); any other reduced atom makes the answer "not
+//! proved". This is a proof, not a heuristic; when an image is unlucky (a
 //! leading coefficient or a denominator vanishes mod `p`, or the images share
 //! a factor by accident) the answer is only "not proved", and the exact
 //! gcd decides.
 
+use crate::gcd::is_trig;
 use crate::poly::Poly;
 use crate::var::{COS, SIN, Var};
 
@@ -22,6 +28,10 @@ use crate::residue::{P, Residue, inverse, pow};
 /// True when `f` and all `others` are proved to have no nonconstant common
 /// divisor (see the [module documentation](self)); false means "not proved".
 pub fn coprime(f: &Poly, others: &[Poly]) -> bool {
+    // `f` in ℚ[x₁, …] (a main variable `c` would leave `s` unpaired)
+    if is_trig(f) || !others.iter().all(|n| n.vars().iter().all(only_s_c)) {
+        return false;
+    }
     let vars = f.variables();
     !vars.is_empty()
         && vars.iter().all(|x| {
@@ -55,7 +65,6 @@ pub fn coprime(f: &Poly, others: &[Poly]) -> bool {
 /// `φ(n) = φ(f)·φ(q)`, and a nonzero remainder of `φ(n)` by a nonconstant
 /// `φ(f)` in `𝔽_p[x]` proves `f ∤ n`.
 pub fn proves_not_divisor(f: &Poly, n: &Poly) -> bool {
-    let only_s_c = |v: &Var| !v.is_trig() || v.name() == SIN || v.name() == COS;
     let (vars_f, vars_n) = (f.vars(), n.vars());
     if !vars_f.iter().chain(&vars_n).all(only_s_c) {
         return false;
@@ -67,6 +76,12 @@ pub fn proves_not_divisor(f: &Poly, n: &Poly) -> bool {
         return false;
     };
     img_f.len() > 1 && remainder(img_n, &img_f) != [0]
+}
+
+/// True for a variable that [`image`] maps respecting every relation:
+/// anything but a reduced atom or a `sin(X)`, `cos(X)`, except `s`, `c`.
+fn only_s_c(v: &Var) -> bool {
+    !v.is_trig() || v.name() == SIN || v.name() == COS
 }
 
 /// `φ(p)` as a polynomial in `x` over `𝔽_p` (coefficients lowest first, no
@@ -194,6 +209,19 @@ mod tests {
         let others = [&common * &(&u - &n(3)), &common * &common];
         assert!(!coprime(&f, &others));
         assert!(!coprime(&(&l + &n(2)), &[&l.pow(2) - &n(4)]));
+    }
+
+    #[test]
+    fn coprime_against_numerators_with_s_and_c() {
+        let (w, s, c) = (v("w0"), v("s"), v("c"));
+        let f = &w + &n(1);
+        assert!(coprime(&f, &[&(&w * &s) + &c]));
+        assert!(!coprime(&(&w - &n(2)), &[&(&w - &n(2)) * &s]));
+        assert!(!coprime(&f, &[&(&f * &s) * &s]));
+        // f with c: not proved (whatever the numerator)
+        assert!(!coprime(&(&w * &(&n(1) - &c)), &[&w + &n(3)]));
+        // other reduced atoms: not proved
+        assert!(!coprime(&f, &[&v("sqrt(2)") + &w]));
     }
 
     #[test]
