@@ -32,10 +32,11 @@ pub fn coprime(f: &Poly, others: &[Poly]) -> bool {
     if is_trig(f) || !others.iter().all(|n| n.vars().iter().all(only_s_c)) {
         return false;
     }
-    let vars = f.variables();
+    let vars = f.vars();
     !vars.is_empty()
-        && vars.iter().all(|x| {
-            let Some(mut g) = image(f, x).filter(|g| g.len() == f.degree_in(x) as usize + 1) else {
+        && vars.iter().all(|&x| {
+            let Some(mut g) = image(f, x).filter(|g| g.len() == f.degree_in_var(x) as usize + 1)
+            else {
                 return false;
             };
             for n in others {
@@ -69,7 +70,7 @@ pub fn proves_not_divisor(f: &Poly, n: &Poly) -> bool {
     if !vars_f.iter().chain(&vars_n).all(only_s_c) {
         return false;
     }
-    let Some(x) = vars_f.iter().find(|v| !v.is_trig()).map(|v| v.name()) else {
+    let Some(&x) = vars_f.iter().find(|v| !v.is_trig()) else {
         return false;
     };
     let (Some(img_f), Some(img_n)) = (image(f, x), image(n, x)) else {
@@ -81,16 +82,15 @@ pub fn proves_not_divisor(f: &Poly, n: &Poly) -> bool {
 /// True for a variable that [`image`] maps respecting every relation:
 /// anything but a reduced atom or a `sin(X)`, `cos(X)`, except `s`, `c`.
 fn only_s_c(v: &Var) -> bool {
-    !v.is_trig() || v.name() == SIN || v.name() == COS
+    !v.is_trig() || *v == Var::sin() || *v == Var::cos()
 }
 
 /// `φ(p)` as a polynomial in `x` over `𝔽_p` (coefficients lowest first, no
 /// trailing zeros), or `None` when a denominator vanishes mod `p`.
-fn image(p: &Poly, x: &str) -> Option<Vec<u64>> {
-    let main = Var::new(x);
+fn image(p: &Poly, main: Var) -> Option<Vec<u64>> {
     // the residue each other variable is sent to, computed once per image
     let mut residues: Vec<(Var, u64)> = Vec::new();
-    let mut out = vec![0u64; p.degree_in(x) as usize + 1];
+    let mut out = vec![0u64; p.degree_in_var(main) as usize + 1];
     for (m, q) in p.terms() {
         let mut value = Residue::of_coef(q)?.value();
         let mut power = 0;

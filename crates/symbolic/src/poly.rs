@@ -110,7 +110,7 @@ impl Poly {
     }
 
     /// Degree in the variable `v`.
-    fn degree_in_var(&self, v: Var) -> u32 {
+    pub(crate) fn degree_in_var(&self, v: Var) -> u32 {
         self.terms
             .keys()
             .map(|m| m.exponent_of(v))

@@ -9,7 +9,7 @@ use rug::Rational;
 use rug::ops::Pow;
 
 use crate::error::SymError;
-use crate::gcd::common_factor;
+use crate::gcd::{common_factor, is_trig};
 use crate::poly::Poly;
 use crate::var::{PI, Var};
 
@@ -313,6 +313,13 @@ fn cancel(mut num: Poly, den: BTreeMap<Poly, u32>) -> Sym {
     let mut out: BTreeMap<Poly, u32> = BTreeMap::new();
     let mut pending: Vec<(Poly, u32)> = den.into_iter().collect();
     while let Some((f, mut e)) = pending.pop() {
+        // Most factors share nothing with the numerator, and a modular
+        // image proves it at word cost (then neither an exact division nor
+        // a common factor exists).
+        if !is_trig(&f) && crate::modular::coprime(&f, std::slice::from_ref(&num)) {
+            *out.entry(f).or_insert(0) += e;
+            continue;
+        }
         while e > 0 {
             match num.exact_div(&f) {
                 Some(q) => {
