@@ -32,6 +32,7 @@ use rug::{Integer, Rational};
 
 use crate::gcd::{coefficients_over, gcd_free, is_trig, monomial_content, split_content};
 use crate::poly::Poly;
+use crate::residue::Residue;
 use crate::sym::Sym;
 
 /// Polynomials with more terms get only the content steps.
@@ -330,10 +331,27 @@ fn rational_root(p: &Poly, x: &str) -> Option<(Poly, Poly)> {
     let a0 = integer(coefficients.first()?)?;
     let an = integer(coefficients.last()?)?;
     let (d0, dn) = (divisors(&a0)?, divisors(&an)?);
+    // the coefficients modulo the prime: a candidate whose image is not a
+    // root of the image is not a root (reduction is a ring homomorphism)
+    let images: Option<Vec<Residue>> = coefficients
+        .iter()
+        .map(|c| c.as_constant().and_then(|q| Residue::of(&q)))
+        .collect();
+    let not_a_root = |root: &Rational| -> bool {
+        let (Some(images), Some(r)) = (&images, Residue::of(root)) else {
+            return false;
+        };
+        let mut high = images.iter().rev();
+        let lead = *high.next().expect("a nonconstant polynomial");
+        !high.fold(lead, |acc, c| acc * r + *c).is_zero()
+    };
     for a in &d0 {
         for b in &dn {
             for sign in [1, -1] {
                 let root = Rational::from((Integer::from(a * sign), b.clone()));
+                if not_a_root(&root) {
+                    continue;
+                }
                 let value = p.eval_rational(&|_| Some(root.clone())).ok()?;
                 if value == 0 {
                     let linear = Poly::constant(Rational::from(b.clone())) * &Poly::var(x)

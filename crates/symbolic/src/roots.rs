@@ -3,6 +3,7 @@
 
 use std::collections::{BTreeMap, HashMap};
 
+use rug::ops::Pow;
 use rug::{Integer, Rational};
 
 use crate::monomial::Monomial;
@@ -59,9 +60,16 @@ pub fn rational_roots(p: &Poly, var: &str) -> (Vec<Rational>, bool) {
     }
     candidates.sort();
     candidates.dedup();
+    // a root of `p` is a root of the group's polynomial, which is cheap to
+    // evaluate: only its roots are substituted into `p`
+    let group_value = |v: &Rational| -> Rational {
+        coeffs.iter().fold(Rational::new(), |acc, (e, c)| {
+            acc + Rational::from(c) * v.clone().pow(*e)
+        })
+    };
     let roots = candidates
         .into_iter()
-        .filter(|v| p.subs(var, &Poly::constant(v.clone())).is_zero())
+        .filter(|v| group_value(v) == 0 && p.subs(var, &Poly::constant(v.clone())).is_zero())
         .collect();
     (roots, ok1 && ok2)
 }
