@@ -178,8 +178,16 @@ impl Coef {
             // cross-cancel first: the product of reduced fractions
             // (a/g₁)(c/g₂) / ((b/g₂)(d/g₁)) is reduced; g₁ divides a ≠ 0 and
             // g₂ divides c ≠ 0, so both fit i64
-            let g1 = gcd64(a.unsigned_abs(), *d);
-            let g2 = gcd64(c.unsigned_abs(), *b);
+            let g1 = if *d == 1 {
+                1
+            } else {
+                gcd64(a.unsigned_abs(), *d)
+            };
+            let g2 = if *b == 1 {
+                1
+            } else {
+                gcd64(c.unsigned_abs(), *b)
+            };
             let n = i128::from(a / g1 as i64) * i128::from(c / g2 as i64);
             let den = u128::from(b / g2) * u128::from(d / g1);
             return Coef::from_reduced(n, den);
