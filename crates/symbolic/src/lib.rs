@@ -17,6 +17,9 @@
 //! polynomial: [`Sym::is_zero`] and [`Sym::equals`] are exact decisions,
 //! never numerical tests.
 //!
+//! Coefficients are rationals held in a machine word while numerator and
+//! denominator fit ([`Coef`]), as GMP rationals beyond.
+//!
 //! Denominators are kept factored, `D = Π fᵢ^eᵢ`, with primitive factors of
 //! positive leading coefficient; a factor is cancelled when it divides the
 //! numerator exactly ([`Poly::exact_div`]), and a factor free of `s`, `c`
