@@ -113,10 +113,14 @@ fn simpler(name: &str) -> &'static [(i64, i64)] {
 /// witness; `sin θ, cos θ` together to `0, 1` or `1, 0`), so that the values
 /// stay small enough to check by hand.
 pub fn search(names: &[String], differ: &dyn Fn(&Point) -> bool) -> Option<Point> {
-    let point = (0..ATTEMPTS)
+    first_point(names, differ).map(|point| search_from(point, differ))
+}
+
+/// [`search`]'s first point, before simplification.
+pub fn first_point(names: &[String], differ: &dyn Fn(&Point) -> bool) -> Option<Point> {
+    (0..ATTEMPTS)
         .map(|k| assignment(names, k))
-        .find(|p| differ(p))?;
-    Some(search_from(point, differ))
+        .find(|p| differ(p))
 }
 
 /// [`search`]'s simplification from a witness point already found.

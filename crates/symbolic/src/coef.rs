@@ -111,24 +111,17 @@ impl Coef {
     /// `n/d` reduced (`d ≠ 0`).
     fn from_parts(n: i128, d: u128) -> Coef {
         debug_assert!(d != 0);
-        let magnitude = n.unsigned_abs();
-        // in words when both fit (the usual case), else in 128 bits
-        let (magnitude, d) = match (u64::try_from(magnitude), u64::try_from(d)) {
-            (Ok(m), Ok(d)) => {
-                let g = gcd64(m, d);
-                (u128::from(m / g), u128::from(d / g))
-            }
-            _ => {
-                let g = gcd(magnitude, d);
-                (magnitude / g, d / g)
-            }
+        // in words when both fit (the usual case), else through GMP
+        let (Ok(m), Ok(d)) = (u64::try_from(n.unsigned_abs()), u64::try_from(d)) else {
+            return Coef::from(Rational::from((Integer::from(n), Integer::from(d))));
         };
-        match (i64::try_from(magnitude), u64::try_from(d)) {
-            (Ok(m), Ok(d)) => Coef(Form::Small(if n < 0 { -m } else { m }, d)),
-            _ => {
-                let magnitude = Integer::from(magnitude);
-                let numer = if n < 0 { -magnitude } else { magnitude };
-                Coef(Form::Big(Rational::from((numer, Integer::from(d)))))
+        let g = gcd64(m, d);
+        let (m, d) = (m / g, d / g);
+        match i64::try_from(m) {
+            Ok(m) => Coef(Form::Small(if n < 0 { -m } else { m }, d)),
+            Err(_) => {
+                let m = Integer::from(m);
+                Coef(Form::Big(Rational::from((if n < 0 { -m } else { m }, d))))
             }
         }
     }
@@ -217,17 +210,7 @@ impl Coef {
 
     /// `aⁿ`.
     pub fn pow(&self, n: u32) -> Coef {
-        let (mut result, mut base, mut e) = (Coef::ONE, self.clone(), n);
-        while e > 0 {
-            if e & 1 == 1 {
-                result = result.mul(&base);
-            }
-            e >>= 1;
-            if e > 0 {
-                base = base.mul(&base);
-            }
-        }
-        result
+        crate::power::by_squaring(self, n, Coef::ONE, Coef::mul)
     }
 
     /// `−a`.
@@ -249,26 +232,7 @@ impl Coef {
     }
 }
 
-/// `gcd(a, b)` (`gcd(0, b) = b`), binary, in words when both fit.
-fn gcd(a: u128, b: u128) -> u128 {
-    if let (Ok(a), Ok(b)) = (u64::try_from(a), u64::try_from(b)) {
-        return u128::from(gcd64(a, b));
-    }
-    if a == 0 || b == 0 {
-        return a | b;
-    }
-    let shift = (a | b).trailing_zeros();
-    let (mut a, mut b) = (a >> a.trailing_zeros(), b);
-    while b != 0 {
-        b >>= b.trailing_zeros();
-        if a > b {
-            std::mem::swap(&mut a, &mut b);
-        }
-        b -= a;
-    }
-    a << shift
-}
-
+/// `gcd(a, b)` (`gcd(0, b) = b`), binary.
 fn gcd64(a: u64, b: u64) -> u64 {
     if a == 0 || b == 0 {
         return a | b;

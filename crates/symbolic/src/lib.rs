@@ -54,6 +54,7 @@ mod modular;
 pub mod monomial;
 pub mod names;
 pub mod poly;
+mod power;
 mod print;
 pub mod residue;
 mod ring;

@@ -9,11 +9,13 @@
 //! `deg_x G = deg_x φ(G) ≤ deg gcd(φ(f), φ(n₁), …)`. So when that univariate
 //! gcd is a constant for *every* variable `x` of `f`, `G` is free of all of
 //! them, and `G` divides `f`, so `G` is a constant: `f` and the `nᵢ` are
-//! coprime. The `nᵢ` may involve `s` and `c`: they are sent to a point of
-//! the circle mod `p`, so `φ` is a homomorphism of the quotient ring
-//! `ℚ[…][s, c]/(s² + c² − 1)`, and a divisor of `nᵢ` there still maps to a
-//! divisor of `φ(nᵢ)` (the quotient is `p`-integral, see
-//! [`proves_not_divisor`]); any other reduced atom makes the answer "not
+//! coprime. (Scale `G` first to be `p`-primitive, so that `p ∤ G`; Gauss's
+//! lemma makes `f/G` and `nᵢ/G` `p`-integral, so `φ(G)` divides their
+//! images, and `φ(lc_x f) ≠ 0` keeps `deg_x φ(G) = deg_x G`.) The `nᵢ` may
+//! involve `s` and `c`: they are sent to a point of the circle mod `p`, so
+//! `φ` is a homomorphism of the quotient ring `ℚ[…][s, c]/(s² + c² − 1)`,
+//! in which `p` stays prime (see [`proves_not_divisor`]), and the same
+//! argument holds there; any other reduced atom makes the answer "not
 //! proved". This is a proof, not a heuristic; when an image is unlucky (a
 //! leading coefficient or a denominator vanishes mod `p`, or the images share
 //! a factor by accident) the answer is only "not proved", and the exact

@@ -225,19 +225,7 @@ impl Poly {
 
     /// `selfⁿ`.
     pub fn pow(&self, n: u32) -> Poly {
-        let mut result = Poly::one();
-        let mut base = self.clone();
-        let mut e = n;
-        while e > 0 {
-            if e & 1 == 1 {
-                result = &result * &base;
-            }
-            e >>= 1;
-            if e > 0 {
-                base = &base * &base;
-            }
-        }
-        result
+        crate::power::by_squaring(self, n, Poly::one(), |a, b| a * b)
     }
 
     /// The quotient `self / d` in the quotient ring, when it exists

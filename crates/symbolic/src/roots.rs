@@ -1,7 +1,7 @@
 //! Rational roots of a polynomial in one of its variables that make it
 //! vanish identically in the others (exceptional parameter values).
 
-use std::collections::{BTreeMap, HashMap};
+use std::collections::BTreeMap;
 
 use rug::ops::Pow;
 use rug::{Integer, Rational};
@@ -25,7 +25,9 @@ pub fn rational_roots(p: &Poly, var: &str) -> (Vec<Rational>, bool) {
     let Some(v) = Var::find(var) else {
         return (Vec::new(), true);
     };
-    let mut groups: HashMap<Monomial, BTreeMap<u32, Rational>> = HashMap::new();
+    // ordered, so that ties between groups of one size break the same way
+    // in every run
+    let mut groups: BTreeMap<Monomial, BTreeMap<u32, Rational>> = BTreeMap::new();
     for (m, q) in p.terms() {
         let (rest, e) = m.split_off(v);
         *groups.entry(rest).or_default().entry(e).or_default() += q.to_rational();

@@ -217,19 +217,7 @@ impl Sym {
 
 /// `xⁿ` by repeated squaring.
 fn pow(x: &Sym, n: u32) -> Sym {
-    let mut result = Sym::one();
-    let mut base = x.clone();
-    let mut e = n;
-    while e > 0 {
-        if e & 1 == 1 {
-            result = result.mul_ref(&base);
-        }
-        e >>= 1;
-        if e > 0 {
-            base = base.mul_ref(&base);
-        }
-    }
-    result
+    crate::power::by_squaring(x, n, Sym::one(), Sym::mul_ref)
 }
 
 /// The polynomial `p` with `name := value`.

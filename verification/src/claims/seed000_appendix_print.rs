@@ -178,17 +178,21 @@ fn simple_witness(printed: &Expression, computed: &Sym) -> Option<crate::Witness
         .map(|(n, _)| n.to_string())
         .collect();
     let pi = point_value("pi")?;
-    let differ = |p: &crate::witness::Point| {
+    // Images modulo a prime that differ prove a difference cheaply. Finding
+    // a first point falls back to the exact values when the images agree
+    // (a coincidence modulo the prime must not hide the witness); while
+    // simplifying it, equal images are taken as equal values (a coincidence
+    // only leaves the witness less simple).
+    let differ = |p: &crate::witness::Point, exact_when_equal: bool| {
         let value = |n: &str| -> Option<Rational> {
             if n == "pi" {
                 return Some(pi.clone());
             }
             p.iter().find(|(m, _)| m == n).map(|(_, q)| q.clone())
         };
-        // images modulo a prime that differ prove a difference cheaply;
-        // equal images are taken as equal values (the witness only stays
-        // less simple, in the rare case of a coincidence modulo the prime)
-        if let (Some(a), Some(b)) = (printed.at_mod(&value), computed.eval_mod(&value)) {
+        if let (Some(a), Some(b)) = (printed.at_mod(&value), computed.eval_mod(&value))
+            && (a != b || !exact_when_equal)
+        {
             return a != b;
         }
         matches!(
@@ -200,11 +204,12 @@ fn simple_witness(printed: &Expression, computed: &Sym) -> Option<crate::Witness
         .iter()
         .filter_map(|n| point_value(n).map(|q| (n.clone(), q)))
         .collect();
-    let point = if differ(&start) {
-        crate::witness::search_from(start, &differ)
+    let found = if differ(&start, true) {
+        start
     } else {
-        crate::witness::search(&names, &differ)?
+        crate::witness::first_point(&names, &|p| differ(p, true))?
     };
+    let point = crate::witness::search_from(found, &|p| differ(p, false));
     let symbolic = |n: &str| -> Option<Sym> {
         if n == "pi" {
             return Some(Sym::pi());
