@@ -9,11 +9,11 @@
 //! so two bases that share names but not formulas never share a result.
 
 use std::collections::HashMap;
-use std::sync::{Mutex, OnceLock};
+use std::sync::{Arc, Mutex, OnceLock};
 
 /// Results of one decision, by the text of its inputs.
 pub struct Memo<V> {
-    cell: OnceLock<Mutex<HashMap<String, V>>>,
+    cell: OnceLock<Mutex<HashMap<String, Arc<OnceLock<V>>>>>,
 }
 
 impl<V: Clone> Memo<V> {
@@ -24,16 +24,15 @@ impl<V: Clone> Memo<V> {
         }
     }
 
-    /// The result for `key`, computed by `work` the first time. The lock
-    /// is not held while `work` runs: two threads asking at once may both
-    /// compute (the same value); the first stored is kept.
+    /// The result for `key`, computed by `work` the first time. A second
+    /// caller with the same key waits for that computation instead of
+    /// repeating it (claims run in parallel, and an umbrella claim asks for
+    /// what its parts decide); the map itself is locked only to find the
+    /// key's cell, so other keys are computed meanwhile.
     pub fn get_or_compute(&self, key: String, work: impl FnOnce() -> V) -> V {
         let map = self.cell.get_or_init(|| Mutex::new(HashMap::new()));
-        if let Some(v) = lock(map).get(&key) {
-            return v.clone();
-        }
-        let v = work();
-        lock(map).entry(key).or_insert(v).clone()
+        let cell = Arc::clone(lock(map).entry(key).or_default());
+        cell.get_or_init(work).clone()
     }
 }
 
@@ -45,7 +44,9 @@ impl<V: Clone> Default for Memo<V> {
 
 /// The map, also after a panic in another thread (entries are only ever
 /// inserted whole, so a poisoned map is still consistent).
-fn lock<V>(map: &Mutex<HashMap<String, V>>) -> std::sync::MutexGuard<'_, HashMap<String, V>> {
+fn lock<V>(
+    map: &Mutex<HashMap<String, Arc<OnceLock<V>>>>,
+) -> std::sync::MutexGuard<'_, HashMap<String, Arc<OnceLock<V>>>> {
     map.lock()
         .unwrap_or_else(std::sync::PoisonError::into_inner)
 }

@@ -39,7 +39,7 @@ impl Coef {
 
     /// The integer `n`.
     pub fn int(n: i64) -> Coef {
-        Coef::from_parts(i128::from(n), 1)
+        Coef::from_reduced(i128::from(n), 1)
     }
 
     /// True for `0`.
@@ -116,14 +116,8 @@ impl Coef {
             return Coef::from(Rational::from((Integer::from(n), Integer::from(d))));
         };
         let g = gcd64(m, d);
-        let (m, d) = (m / g, d / g);
-        match i64::try_from(m) {
-            Ok(m) => Coef(Form::Small(if n < 0 { -m } else { m }, d)),
-            Err(_) => {
-                let m = Integer::from(m);
-                Coef(Form::Big(Rational::from((if n < 0 { -m } else { m }, d))))
-            }
-        }
+        let m = i128::from(m / g);
+        Coef::from_reduced(if n < 0 { -m } else { m }, u128::from(d / g))
     }
 
     /// `n/d` already in lowest terms (`d ≠ 0`).
@@ -249,42 +243,32 @@ fn gcd64(a: u64, b: u64) -> u64 {
     a << shift
 }
 
+/// `q`'s inline form, when it has one.
+fn inline(q: &Rational) -> Option<Form> {
+    match (q.numer().to_i64(), q.denom().to_u64()) {
+        (Some(n), Some(d)) if n != i64::MIN => Some(Form::Small(n, d)),
+        _ => None,
+    }
+}
+
 impl From<Rational> for Coef {
     fn from(q: Rational) -> Coef {
-        match (q.numer().to_i64(), q.denom().to_u64()) {
-            (Some(n), Some(d)) if n != i64::MIN => Coef(Form::Small(n, d)),
-            _ => Coef(Form::Big(q)),
-        }
+        Coef(inline(&q).unwrap_or(Form::Big(q)))
     }
 }
 
 impl From<&Rational> for Coef {
     fn from(q: &Rational) -> Coef {
-        match (q.numer().to_i64(), q.denom().to_u64()) {
-            (Some(n), Some(d)) if n != i64::MIN => Coef(Form::Small(n, d)),
-            _ => Coef(Form::Big(q.clone())),
-        }
+        Coef(inline(q).unwrap_or_else(|| Form::Big(q.clone())))
     }
 }
 
 impl From<&Integer> for Coef {
     fn from(n: &Integer) -> Coef {
         match n.to_i64() {
-            Some(n) if n != i64::MIN => Coef(Form::Small(n, 1)),
-            _ => Coef(Form::Big(Rational::from(n))),
+            Some(n) => Coef::from_reduced(i128::from(n), 1),
+            None => Coef(Form::Big(Rational::from(n))),
         }
-    }
-}
-
-impl From<i64> for Coef {
-    fn from(n: i64) -> Coef {
-        Coef::int(n)
-    }
-}
-
-impl From<&Coef> for Rational {
-    fn from(q: &Coef) -> Rational {
-        q.to_rational()
     }
 }
 

@@ -40,12 +40,6 @@ pub fn common_factor(num: &Poly, f: &Poly) -> Option<Poly> {
     if is_trig(f) || f.as_constant().is_some() {
         return None;
     }
-    // A common divisor of `f` and the coefficients divides `num` itself:
-    // its image in `𝔽_p[x]` (`s`, `c` on the circle) proves most pairs
-    // coprime before the coefficients are formed.
-    if crate::modular::coprime(f, std::slice::from_ref(num)) {
-        return None;
-    }
     let mut coefficients: Vec<Poly> = coefficients_over(num, &f.variables())
         .into_values()
         .collect();

@@ -23,31 +23,28 @@ pub struct Residue(u64);
 impl Residue {
     /// The image of `q`, or `None` when `p` divides its denominator.
     pub fn of(q: &Rational) -> Option<Residue> {
-        let num = u64::from(q.numer().mod_u(P as u32));
-        if *q.denom() == 1 {
-            return Some(Residue(num));
-        }
-        let den = u64::from(q.denom().mod_u(P as u32));
-        if den == 0 {
-            return None;
-        }
-        Some(Residue(num * inverse(den) % P))
+        Residue::fraction(
+            u64::from(q.numer().mod_u(P as u32)),
+            u64::from(q.denom().mod_u(P as u32)),
+        )
     }
 
     /// The image of a polynomial's coefficient (as [`Residue::of`]).
     pub fn of_coef(q: &Coef) -> Option<Residue> {
-        let Some((n, d)) = q.small() else {
-            return Residue::of(&q.to_rational());
-        };
-        let num = n.rem_euclid(P as i64) as u64;
-        if d == 1 {
-            return Some(Residue(num));
+        match q.small() {
+            Some((n, d)) => Residue::fraction(n.rem_euclid(P as i64) as u64, d % P),
+            None => Residue::of(&q.to_rational()),
         }
-        let den = d % P;
-        if den == 0 {
-            return None;
+    }
+
+    /// `num/den` from the residues of a numerator and a denominator
+    /// (`None` when the denominator's is `0`).
+    fn fraction(num: u64, den: u64) -> Option<Residue> {
+        match den {
+            0 => None,
+            1 => Some(Residue(num)),
+            _ => Some(Residue(num * inverse(den) % P)),
         }
-        Some(Residue(num * inverse(den) % P))
     }
 
     /// The representative in `0…p − 1`.

@@ -7,8 +7,6 @@
 //! positivity by a certified minimum per piece (Weierstrass substitution +
 //! Bernstein subdivision, [`crate::certify::nonneg::certify`]).
 
-use std::sync::OnceLock;
-
 use rug::Rational;
 use trig_core::{Family, Ring};
 use trig_deriv::{End, Wrt, curve_endpoint_derivatives};
@@ -22,7 +20,7 @@ use trig_symbolic::Sym;
 
 use super::thesis::claim;
 use super::thesis_interp_point::piece_witness;
-use crate::claim::{Claim, shared};
+use crate::claim::Claim;
 use crate::evidence::{Assignment, Evidence, EvidenceList, Expr, Relation, Value, Witness};
 use crate::exact::{IDENTITY, identities};
 use crate::memo::Memo;
@@ -536,21 +534,24 @@ fn example(name: &str, scheme: Scheme) -> Verdict {
     v
 }
 
-/// T24a–f, each decided once per process ([`shared`]): T24 quotes them.
-macro_rules! example_claim {
-    ($name:ident, $table:literal, $scheme:expr) => {
-        fn $name() -> Verdict {
-            static VERDICT: OnceLock<Verdict> = OnceLock::new();
-            shared(&VERDICT, || example($table, $scheme))
-        }
-    };
+fn t24a() -> Verdict {
+    example("thesis-table-4.1", Scheme::C1)
 }
-example_claim!(t24a, "thesis-table-4.1", Scheme::C1);
-example_claim!(t24b, "thesis-table-4.2", Scheme::C2);
-example_claim!(t24c, "thesis-table-4.3", Scheme::G1);
-example_claim!(t24d, "thesis-table-4.4", Scheme::G2);
-example_claim!(t24e, "thesis-table-4.5", Scheme::G2);
-example_claim!(t24f, "thesis-table-4.6", Scheme::G1);
+fn t24b() -> Verdict {
+    example("thesis-table-4.2", Scheme::C2)
+}
+fn t24c() -> Verdict {
+    example("thesis-table-4.3", Scheme::G1)
+}
+fn t24d() -> Verdict {
+    example("thesis-table-4.4", Scheme::G2)
+}
+fn t24e() -> Verdict {
+    example("thesis-table-4.5", Scheme::G2)
+}
+fn t24f() -> Verdict {
+    example("thesis-table-4.6", Scheme::G1)
+}
 
 fn t24() -> Verdict {
     // T24 is listed before its parts, which the other thread then takes in
