@@ -63,6 +63,14 @@ pub trait Ring:
     /// i.e. when dividing by it is undefined.
     fn is_zero(&self) -> bool;
 
+    /// True when `self` is known to be the ring's zero itself, so that
+    /// `self·x = 0` for every `x` (an evaluation may then skip a product
+    /// with it). Unlike [`Ring::is_zero`], never true for a jet whose
+    /// value alone is zero. `false` (not known) unless a backend says so.
+    fn is_exact_zero(&self) -> bool {
+        false
+    }
+
     /// `(sin self, cos self)` when the backend can form them: numerically
     /// (f64, MPFR, jets over them), or, in the exact ring, as the paired
     /// symbols `sin(p)`, `cos(p)` of a rational multiple of one parameter.

@@ -26,6 +26,9 @@ trait Field: Clone {
     fn div(self, other: &Self) -> Self;
     fn pow(&self, n: u32) -> Self;
     fn is_zero(&self) -> bool;
+    /// True when `self·x = 0` for every `x` of the field, so a term with
+    /// this factor can be skipped.
+    fn annihilates(&self) -> bool;
 }
 
 /// Exact rationals, inline while they are small ([`Coef`]).
@@ -49,6 +52,9 @@ impl Field for Coef {
     fn is_zero(&self) -> bool {
         Coef::is_zero(self)
     }
+    fn annihilates(&self) -> bool {
+        Coef::is_zero(self)
+    }
 }
 
 /// Residues modulo a prime ([`Residue`]); `None` where undefined (a
@@ -70,6 +76,12 @@ impl Field for Option<Residue> {
         self.map(|r| r.pow(n))
     }
     fn is_zero(&self) -> bool {
+        self.is_some_and(Residue::is_zero)
+    }
+    /// A variable sent to `0` makes its terms' images `0` even where a
+    /// coefficient's image is undefined: those terms are `0` in ℚ at the
+    /// point, so the value is the sum of the other terms.
+    fn annihilates(&self) -> bool {
         self.is_some_and(Residue::is_zero)
     }
 }
@@ -97,19 +109,29 @@ impl<T: Ring> Field for InRing<T> {
     fn is_zero(&self) -> bool {
         self.0.is_zero()
     }
+    fn annihilates(&self) -> bool {
+        self.0.is_exact_zero()
+    }
 }
 
-/// The value of each variable, looked up once.
-type Values<F> = Vec<(Var, F)>;
+/// The value of each variable, looked up once, and whether it annihilates
+/// ([`Field::annihilates`]).
+type Values<F> = Vec<(Var, F, bool)>;
 
 /// Looks up every variable once; the error names the first unbound one in
 /// name order.
-fn bind<F>(vars: Vec<Var>, assign: &dyn Fn(&str) -> Option<F>) -> Result<Values<F>, SymError> {
+fn bind<F: Field>(
+    vars: Vec<Var>,
+    assign: &dyn Fn(&str) -> Option<F>,
+) -> Result<Values<F>, SymError> {
     let mut values = Vec::with_capacity(vars.len());
     let mut unbound: BTreeSet<&str> = BTreeSet::new();
     for v in vars {
         match assign(v.name()) {
-            Some(x) => values.push((v, x)),
+            Some(x) => {
+                let zero = x.annihilates();
+                values.push((v, x, zero));
+            }
             None => {
                 unbound.insert(v.name());
             }
@@ -121,20 +143,26 @@ fn bind<F>(vars: Vec<Var>, assign: &dyn Fn(&str) -> Option<F>) -> Result<Values<
     }
 }
 
-fn value<'a, F>(values: &'a Values<F>, v: &Var) -> &'a F {
+fn value<'a, F>(values: &'a Values<F>, v: &Var) -> (&'a F, bool) {
     values
         .iter()
-        .find(|(w, _)| w == v)
-        .map(|(_, x)| x)
+        .find(|(w, ..)| w == v)
+        .map(|(_, x, zero)| (x, *zero))
         .expect("every variable is bound")
 }
 
-/// `p` at bound values (every variable of `p` is bound).
+/// `p` at bound values (every variable of `p` is bound); a term with a
+/// variable whose value annihilates is skipped.
 fn eval_poly<F: Field>(p: &Poly, like: &F, values: &Values<F>) -> F {
     p.terms().fold(like.constant(&Coef::ZERO), |acc, (m, q)| {
-        let term = m.factors().fold(like.constant(q), |t, (v, e)| {
-            t.mul(&value(values, v).pow(e))
-        });
+        let mut term = like.constant(q);
+        for (v, e) in m.factors() {
+            let (x, zero) = value(values, v);
+            if zero {
+                return acc;
+            }
+            term = term.mul(&x.pow(e));
+        }
         acc.add(&term)
     })
 }
@@ -245,6 +273,30 @@ mod tests {
         };
         assert_eq!(sample().eval_mod(&pole), None);
         assert_eq!(sample().eval_mod(&|_| None), None);
+    }
+
+    #[test]
+    fn terms_with_a_zero_factor_are_skipped_soundly() {
+        // m·x/p + 2y at m = 0: the first coefficient has no image mod p,
+        // but its term is 0 at the point, so the image is that of 2y
+        let p = Rational::from(crate::residue::P);
+        let x =
+            v("m") * &v("x") * &Sym::rational(Rational::from(1) / &p) + &(v("y") * &Sym::int(2));
+        let at = |m: i64| move |n: &str| Some(Rational::from(if n == "m" { m } else { 3 }));
+        assert_eq!(x.eval_mod(&at(0)), Residue::of(&Rational::from(6)));
+        assert_eq!(x.eval_mod(&at(1)), None);
+        // in the exact ring: an exact zero removes its terms, π stays
+        let y = v("m") * &v("pi") + &(v("pi") * &v("pi"));
+        let sym = |n: &str| match n {
+            "m" => Some(Sym::zero()),
+            _ => Some(Sym::pi()),
+        };
+        assert_eq!(y.eval(&Sym::one(), &sym), Ok(Sym::pi() * &Sym::pi()));
+        let sym1 = |n: &str| Some(if n == "m" { Sym::one() } else { Sym::pi() });
+        assert_eq!(
+            y.eval(&Sym::one(), &sym1),
+            Ok(Sym::pi() + &(Sym::pi() * &Sym::pi()))
+        );
     }
 
     #[test]

@@ -27,9 +27,7 @@
 //! LaTeX pieces are the one LaTeX writer's ([`trig_tex::symbols::greek`],
 //! [`trig_tex::expr`]).
 
-use std::collections::HashMap;
 use std::fmt::{self, Write as _};
-use std::sync::{Mutex, OnceLock, PoisonError};
 
 use rug::{Integer, Rational};
 use trig_tex::expr as tex;
@@ -203,19 +201,11 @@ fn name(n: &str, style: Style) -> String {
     }
 }
 
-/// [`name`] of a variable, formed once per name and style: variables are
-/// interned for the life of the process (a bounded set, see [`Var`]), and
-/// so are their printed names.
+/// [`name`] of a variable, formed once per variable and style (variables
+/// are interned for the life of the process, a bounded set, see [`Var`]).
 fn var_name(v: &Var, style: Style) -> &'static str {
-    type Names = Mutex<HashMap<(&'static str, Style), &'static str>>;
-    static NAMES: OnceLock<Names> = OnceLock::new();
-    let mut names = NAMES
-        .get_or_init(Default::default)
-        .lock()
-        .unwrap_or_else(PoisonError::into_inner);
-    names
-        .entry((v.name(), style))
-        .or_insert_with(|| Box::leak(name(v.name(), style).into_boxed_str()))
+    const _: () = assert!(Style::Sympy as usize + 1 == crate::var::PRINT_STYLES);
+    v.printed(style as usize, || name(v.name(), style))
 }
 
 fn power(base: String, e: u32, style: Style) -> String {

@@ -141,6 +141,10 @@ impl Ring for Sym {
         Sym::is_zero(self)
     }
 
+    fn is_exact_zero(&self) -> bool {
+        Sym::is_zero(self)
+    }
+
     /// Exact at multiples of π/12 (values in `ℚ(√2, √3)`); the paired symbols `sin(X)`, `cos(X)`
     /// for a rational multiple `X` of one parameter (independent of every
     /// other atom but for `sin² + cos² = 1`); `None` otherwise.

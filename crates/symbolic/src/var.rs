@@ -114,7 +114,13 @@ struct Interned {
     /// endian, zero padded) and the trailing number. `None` for a longer
     /// prefix, a prefix containing a NUL byte, or more than 19 digits.
     key: Option<(u64, u64)>,
+    /// The name as printed in each of the printer's styles, formed on first
+    /// use ([`Var::printed`]).
+    printed: [OnceLock<&'static str>; PRINT_STYLES],
 }
+
+/// How many printed forms a variable keeps ([`Var::printed`]).
+pub(crate) const PRINT_STYLES: usize = 4;
 
 impl Interned {
     fn new(name: &'static str) -> Interned {
@@ -134,6 +140,7 @@ impl Interned {
             class,
             rank: class.rank(),
             key,
+            printed: Default::default(),
         }
     }
 }
@@ -180,6 +187,12 @@ impl Var {
     /// The name.
     pub fn name(&self) -> &'static str {
         self.0.name
+    }
+
+    /// The name as printed in style number `style` (`< PRINT_STYLES`),
+    /// formed by `print` once for the life of the process, like the record.
+    pub(crate) fn printed(&self, style: usize, print: impl FnOnce() -> String) -> &'static str {
+        self.0.printed[style].get_or_init(|| Box::leak(print().into_boxed_str()))
     }
 
     /// True for the paired atoms `s`, `c` and `sin(X)`, `cos(X)`, whose
