@@ -270,12 +270,12 @@ pub fn curve_end(
 /// cancellations), so everything runs on polynomials over the common
 /// denominator: the `nᵢ` and `w` are first multiplied by the common multiple
 /// of their denominators (which leaves the `qᵢ` unchanged); then, with
-/// `W₀ = w(0)`, Leibniz's rule for `w · (1/w) = 1` gives
-/// `(1/w)⁽ᵏ⁾ = ρₖ / W₀^{k+1}`, `ρ₀ = 1`,
-/// `ρₖ = −Σ_{j=1..k} C(k,j) w⁽ʲ⁾ W₀^{j−1} ρ_{k−j}`, and Leibniz's rule for
-/// `nᵢ · (1/w)` gives `qᵢ⁽ᵏ⁾ = Σ_{j=0..k} C(k,j) nᵢ⁽ᵏ⁻ʲ⁾ σ_{k,j} / W₀^{k+1}`
-/// with `σ_{k,j} = C(k,j) W₀^{k−j} ρⱼ` free of the `nᵢ` (computed once);
-/// each `qᵢ⁽ᵏ⁾` is reduced once.
+/// `W₀ = w(0)` and `wⱼ = w⁽ʲ⁾(0)`, Leibniz's rule for `nᵢ = qᵢ · w` gives
+/// `qᵢ⁽ᵏ⁾ = (nᵢ⁽ᵏ⁾ − Σ_{j=1..k} C(k,j) wⱼ qᵢ⁽ᵏ⁻ʲ⁾) / W₀`, so
+/// `qᵢ⁽ᵏ⁾ = Pₖ / W₀^{k+1}` with the polynomials
+/// `Pₖ = nᵢ⁽ᵏ⁾ W₀ᵏ − Σ_{j=1..k} C(k,j) wⱼ P_{k−j} W₀^{j−1}`, formed by
+/// Horner's rule in `W₀` (every product has a factor as small as `W₀` or
+/// `wⱼ`); each `qᵢ⁽ᵏ⁾` is reduced once.
 ///
 /// # Panics
 /// If the lengths differ or `w(0) = 0`.
@@ -301,25 +301,6 @@ pub fn quotient_derivatives(numerators: &[&[Sym]], w: &[Sym]) -> Vec<Vec<Sym>> {
     let w = cleared(w);
     let binomial =
         |k: usize, j: usize| Sym::rational(Rational::from(Integer::from(k).binomial(j as u32)));
-    // W₀⁰ … W₀^{order−1}
-    let mut w0_pow = vec![Sym::one()];
-    for k in 1..order {
-        w0_pow.push(w0_pow[k - 1].clone() * &w[0]);
-    }
-    let mut rho = vec![Sym::one()];
-    for k in 1..order {
-        let rk = (1..=k).fold(Sym::zero(), |acc, j| {
-            acc - &(binomial(k, j) * &w[j] * &w0_pow[j - 1] * &rho[k - j])
-        });
-        rho.push(rk);
-    }
-    let sigma: Vec<Vec<Sym>> = (0..order)
-        .map(|k| {
-            (0..=k)
-                .map(|j| binomial(k, j) * &w0_pow[k - j] * &rho[j])
-                .collect()
-        })
-        .collect();
     let inv = Sym::one()
         .checked_div(&w[0])
         .expect("the denominator is nonzero at the point");
@@ -331,13 +312,18 @@ pub fn quotient_derivatives(numerators: &[&[Sym]], w: &[Sym]) -> Vec<Vec<Sym>> {
         .iter()
         .map(|n| {
             let n = cleared(n);
-            (0..order)
-                .map(|k| {
-                    let pk = (0..=k).fold(Sym::zero(), |acc, j| {
-                        acc + &(n[k - j].clone() * &sigma[k][j])
-                    });
-                    pk * &inv_pow[k]
-                })
+            let mut p: Vec<Sym> = Vec::with_capacity(order);
+            for k in 0..order {
+                // Horner in W₀: Pₖ = nₖ W₀ᵏ − Σⱼ C(k,j) wⱼ P_{k−j} W₀^{j−1}
+                let mut acc = n[k].clone();
+                for j in (1..=k).rev() {
+                    acc = acc * &w[0] - &(binomial(k, j) * &w[j] * &p[k - j]);
+                }
+                p.push(acc);
+            }
+            p.into_iter()
+                .zip(&inv_pow)
+                .map(|(pk, inv)| pk * inv)
                 .collect()
         })
         .collect()
