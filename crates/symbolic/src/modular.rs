@@ -30,28 +30,40 @@ use crate::residue::{P, Residue, inverse, pow};
 /// True when `f` and all `others` are proved to have no nonconstant common
 /// divisor (see the [module documentation](self)); false means "not proved".
 pub fn coprime(f: &Poly, others: &[Poly]) -> bool {
+    let mut images: Vec<Images> = others.iter().map(|_| Images::default()).collect();
+    let mut pairs: Vec<(&Poly, &mut Images)> = others.iter().zip(&mut images).collect();
+    coprime_to_images(f, &mut pairs)
+}
+
+/// [`coprime`] against polynomials given with their [`Images`], which keep
+/// every image formed for the next call.
+pub(crate) fn coprime_to_images(f: &Poly, others: &mut [(&Poly, &mut Images)]) -> bool {
     // `f` in ℚ[x₁, …] (a main variable `c` would leave `s` unpaired)
-    if is_trig(f) || !others.iter().all(|n| n.vars().iter().all(only_s_c)) {
+    if is_trig(f) {
         return false;
     }
     let vars = f.vars();
-    !vars.is_empty()
-        && vars.iter().all(|&x| {
-            let Some(mut g) = image(f, x).filter(|g| g.len() == f.degree_in_var(x) as usize + 1)
-            else {
+    if vars.is_empty() {
+        return false;
+    }
+    for (n, images) in others.iter_mut() {
+        images.form(n, &vars);
+    }
+    vars.iter().all(|&x| {
+        let Some(mut g) = image(f, x).filter(|g| g.len() == f.degree_in_var(x) as usize + 1) else {
+            return false;
+        };
+        for (_, images) in others.iter() {
+            let Some(img) = images.get(x) else {
                 return false;
             };
-            for n in others {
-                let Some(img) = image(n, x) else {
-                    return false;
-                };
-                g = gcd(g, img);
-                if g.len() == 1 {
-                    return true;
-                }
+            g = gcd(g, img.clone());
+            if g.len() == 1 {
+                return true;
             }
-            g.len() == 1
-        })
+        }
+        g.len() == 1
+    })
 }
 
 /// True when `f` is proved not to divide `n` in the quotient ring
@@ -68,8 +80,8 @@ pub fn coprime(f: &Poly, others: &[Poly]) -> bool {
 /// `φ(n) = φ(f)·φ(q)`, and a nonzero remainder of `φ(n)` by a nonconstant
 /// `φ(f)` in `𝔽_p[x]` proves `f ∤ n`.
 pub fn proves_not_divisor(f: &Poly, n: &Poly) -> bool {
-    let (vars_f, vars_n) = (f.vars(), n.vars());
-    if !vars_f.iter().chain(&vars_n).all(only_s_c) {
+    let vars_f = f.vars();
+    if !vars_f.iter().all(only_s_c) {
         return false;
     }
     let Some(&x) = vars_f.iter().find(|v| !v.is_trig()) else {
@@ -88,32 +100,99 @@ fn only_s_c(v: &Var) -> bool {
 }
 
 /// `φ(p)` as a polynomial in `x` over `𝔽_p` (coefficients lowest first, no
-/// trailing zeros), or `None` when a denominator vanishes mod `p`.
+/// trailing zeros), or `None` when a denominator vanishes mod `p` or `p`
+/// has a variable `φ` cannot map ([`only_s_c`]).
 fn image(p: &Poly, main: Var) -> Option<Vec<u64>> {
-    // the residue each other variable is sent to, computed once per image
+    let mut images = Images::default();
+    images.form(p, &[main]);
+    images.get(main).cloned()
+}
+
+/// The images `φ(p)` of one polynomial `p` for several main variables, each
+/// formed once, in one pass over the terms for all variables asked at once.
+/// The caller passes the same `p` to every [`Images::form`].
+#[derive(Debug, Default)]
+pub(crate) struct Images {
+    formed: Vec<(Var, Option<Vec<u64>>)>,
+}
+
+impl Images {
+    /// The image with main variable `x`, when formed ([`Images::form`]) and
+    /// defined.
+    fn get(&self, x: Var) -> Option<&Vec<u64>> {
+        self.formed
+            .iter()
+            .find(|(v, _)| *v == x)
+            .and_then(|(_, img)| img.as_ref())
+    }
+
+    /// Forms the image for every variable of `mains` not formed yet. A
+    /// term `q·Π vᵉ` adds `φ(q)·Π_{v ≠ x} φ(v)ᵉ` at the power `e_x` of `x`
+    /// to the image with main variable `x`; the factors of the variables
+    /// that are not asked for are multiplied once per term.
+    pub(crate) fn form(&mut self, p: &Poly, mains: &[Var]) {
+        let mains: Vec<Var> = mains
+            .iter()
+            .copied()
+            .filter(|x| self.formed.iter().all(|(v, _)| v != x))
+            .collect();
+        if mains.is_empty() {
+            return;
+        }
+        let images = images(p, &mains);
+        for (i, x) in mains.into_iter().enumerate() {
+            let img = images.as_ref().map(|all| {
+                let mut img = all[i].clone();
+                trim(&mut img);
+                img
+            });
+            self.formed.push((x, img));
+        }
+    }
+}
+
+/// The images of `p` with each of `mains` as main variable, untrimmed.
+fn images(p: &Poly, mains: &[Var]) -> Option<Vec<Vec<u64>>> {
+    let mut out: Vec<Vec<u64>> = mains
+        .iter()
+        .map(|&x| vec![0u64; p.degree_in_var(x) as usize + 1])
+        .collect();
+    // the residue each variable is sent to (when it is not the main one)
     let mut residues: Vec<(Var, u64)> = Vec::new();
-    let mut out = vec![0u64; p.degree_in_var(main) as usize + 1];
+    // per term: the exponent of each main variable, and the residue of
+    // each main variable's power
+    let mut at = vec![(0usize, 1u64); mains.len()];
     for (m, q) in p.terms() {
-        let mut value = Residue::of_coef(q)?.value();
-        let mut power = 0;
+        let mut base = Residue::of_coef(q)?.value();
+        at.fill((0, 1));
         for (v, e) in m.factors() {
-            if *v == main {
-                power = e as usize;
-            } else {
-                let r = match residues.iter().find(|(w, _)| w == v) {
-                    Some(&(_, r)) => r,
-                    None => {
-                        let r = substitute(v.name());
-                        residues.push((*v, r));
-                        r
+            let r = match residues.iter().find(|(w, _)| w == v) {
+                Some(&(_, r)) => r,
+                None => {
+                    if !only_s_c(v) {
+                        return None;
                     }
-                };
-                value = value * pow(r, u64::from(e)) % P;
+                    let r = substitute(v.name());
+                    residues.push((*v, r));
+                    r
+                }
+            };
+            let power = pow(r, u64::from(e));
+            match mains.iter().position(|x| x == v) {
+                Some(i) => at[i] = (e as usize, power),
+                None => base = base * power % P,
             }
         }
-        out[power] = (out[power] + value) % P;
+        for (i, img) in out.iter_mut().enumerate() {
+            let value = at
+                .iter()
+                .enumerate()
+                .filter(|(j, _)| *j != i)
+                .fold(base, |acc, (_, (_, power))| acc * power % P);
+            let k = at[i].0;
+            img[k] = (img[k] + value) % P;
+        }
     }
-    trim(&mut out);
     Some(out)
 }
 

@@ -10,6 +10,7 @@ use rug::ops::Pow;
 
 use crate::error::SymError;
 use crate::gcd::{common_factor, is_trig};
+use crate::modular::Images;
 use crate::poly::Poly;
 use crate::var::{PI, Var};
 
@@ -300,11 +301,19 @@ fn cancel(mut num: Poly, den: BTreeMap<Poly, u32>) -> Sym {
     }
     let mut out: BTreeMap<Poly, u32> = BTreeMap::new();
     let mut pending: Vec<(Poly, u32)> = den.into_iter().collect();
+    // the numerator's images for the variables of every factor, formed in
+    // one pass and kept until the numerator changes
+    let mut images = Images::default();
+    let mut vars = Vec::new();
+    for (f, _) in &pending {
+        f.collect_vars(&mut vars);
+    }
+    images.form(&num, &vars);
     while let Some((f, mut e)) = pending.pop() {
         // Most factors share nothing with the numerator, and a modular
         // image proves it at word cost (then neither an exact division nor
         // a common factor exists).
-        if !is_trig(&f) && crate::modular::coprime(&f, std::slice::from_ref(&num)) {
+        if !is_trig(&f) && crate::modular::coprime_to_images(&f, &mut [(&num, &mut images)]) {
             *out.entry(f).or_insert(0) += e;
             continue;
         }
@@ -312,6 +321,7 @@ fn cancel(mut num: Poly, den: BTreeMap<Poly, u32>) -> Sym {
             match num.exact_div(&f) {
                 Some(q) => {
                     num = q;
+                    images = Images::default();
                     e -= 1;
                 }
                 None => break,
@@ -325,6 +335,7 @@ fn cancel(mut num: Poly, den: BTreeMap<Poly, u32>) -> Sym {
             continue;
         };
         num = num.exact_div(&g).expect("a common factor divides");
+        images = Images::default();
         let (unit, rest) = f
             .exact_div(&g)
             .expect("a common factor divides")
