@@ -56,6 +56,7 @@ pub mod names;
 pub mod poly;
 mod power;
 mod print;
+mod rename;
 pub mod residue;
 mod ring;
 mod roots;

@@ -24,7 +24,9 @@ pub struct Monomial {
 }
 
 impl Monomial {
-    fn from_factors(factors: Vec<(Var, u32)>) -> Monomial {
+    /// The product of `factors`: variables sorted by the variable order,
+    /// distinct, exponents `≥ 1`.
+    pub(crate) fn from_factors(factors: Vec<(Var, u32)>) -> Monomial {
         let degree = factors.iter().map(|(_, e)| u64::from(*e)).sum();
         Monomial { factors, degree }
     }

@@ -84,6 +84,14 @@ impl Poly {
         }
     }
 
+    /// The polynomial with the given terms: distinct monomials, nonzero
+    /// coefficients, no power of a reduced atom above the first.
+    pub(crate) fn from_terms(terms: impl Iterator<Item = (Monomial, Coef)>) -> Poly {
+        Poly {
+            terms: terms.collect(),
+        }
+    }
+
     /// Number of terms.
     pub fn len(&self) -> usize {
         self.terms.len()

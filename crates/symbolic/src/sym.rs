@@ -35,6 +35,11 @@ pub struct Sym {
 }
 
 impl Sym {
+    /// `num / Π fᵉ` already in lowest terms, every factor canonical.
+    pub(crate) fn from_lowest_terms(num: Poly, den: BTreeMap<Poly, u32>) -> Sym {
+        Sym { num, den }
+    }
+
     /// The polynomial `p` (no denominator).
     pub fn from_poly(p: Poly) -> Sym {
         Sym {

@@ -456,13 +456,34 @@ pub fn audit_surface<B: ExactBasis + Clone>(join: &PrintedJoin<B>, u_param: &Sym
         .iter()
         .map(|f| f.subs(&params[0], u_param))
         .collect();
-    // the columns share the basis, its parameters and conventions
     let ends = join.ends();
-    let surface = |wrt: Wrt, printed: &[Printed]| -> Vec<Sym> {
-        let columns: Vec<Vec<Sym>> = (0..u_basis.len())
-            .map(|i| {
-                let column = rename_points(join, i);
-                column.residuals_in(&ends, wrt, &rename_printed(join, printed, i))
+    // Column `i` is the join of the points `Pⱼ` renamed `Pⱼ_i`: the same
+    // computation on other names, so its residuals are the shown ones
+    // renamed (a renaming commutes with every step, [`Sym::rename`]).
+    let names = join.names();
+    let columns: Vec<Vec<(String, String)>> = (0..u_basis.len())
+        .map(|i| {
+            names
+                .iter()
+                .map(|n| (n.clone(), format!("{n}_{i}")))
+                .collect()
+        })
+        .collect();
+    let surface = |shown: &[Sym]| -> Vec<Sym> {
+        let columns: Vec<Vec<Sym>> = columns
+            .iter()
+            .map(|pairs| {
+                let pairs: Vec<(&str, &str)> = pairs
+                    .iter()
+                    .map(|(a, b)| (a.as_str(), b.as_str()))
+                    .collect();
+                shown
+                    .iter()
+                    .map(|r| {
+                        r.rename(&pairs)
+                            .expect("the points are distinct plain variables")
+                    })
+                    .collect()
             })
             .collect();
         (0..=join.kind.order())
@@ -485,42 +506,11 @@ pub fn audit_surface<B: ExactBasis + Clone>(join: &PrintedJoin<B>, u_param: &Sym
     )
 }
 
-/// Column `i`: every point `Pⱼ` renamed `Pⱼ_i`.
-fn rename_points<B: ExactBasis + Clone>(join: &PrintedJoin<B>, i: usize) -> PrintedJoin<B> {
-    let rename =
-        |v: &[Sym]| -> Vec<Sym> { v.iter().map(|p| Sym::var(&format!("{p}_{i}"))).collect() };
-    PrintedJoin {
-        first: rename(&join.first),
-        second: rename(&join.second),
-        printed: Vec::new(),
-        ..join.clone()
-    }
-}
-
-fn rename_printed<B: ExactBasis + Clone>(
-    join: &PrintedJoin<B>,
-    printed: &[Printed],
-    i: usize,
-) -> Vec<Printed> {
-    let names = join.names();
-    printed
-        .iter()
-        .map(|p| {
-            let rename = |e: &Sym| {
-                names.iter().fold(e.clone(), |acc, n| {
-                    acc.subs(n, &Sym::var(&format!("{n}_{i}")))
-                })
-            };
-            Printed {
-                terms: p.terms.iter().map(rename).collect(),
-                ..p.clone()
-            }
-        })
-        .collect()
-}
-
 /// A residual function `(convention, printed) ↦ residuals`.
 type ResidualFn<'a> = &'a dyn Fn(Wrt, &[Printed]) -> Vec<Sym>;
+
+/// A surface's whole residual from one column's.
+type SurfaceFn<'a> = &'a dyn Fn(&[Sym]) -> Vec<Sym>;
 
 /// How a join's residuals are computed: those shown as evidence (a curve's;
 /// for a surface, one column's in the printed names), and a surface's
@@ -529,14 +519,14 @@ type ResidualFn<'a> = &'a dyn Fn(Wrt, &[Printed]) -> Vec<Sym>;
 /// linearly independent); it is the cheap screen, the surface's the proof.
 struct Residuals<'a> {
     shown: ResidualFn<'a>,
-    surface: Option<ResidualFn<'a>>,
+    surface: Option<SurfaceFn<'a>>,
 }
 
 impl Residuals<'_> {
     /// The residuals that decide, given the shown ones.
-    fn deciding(&self, wrt: Wrt, printed: &[Printed], shown: &[Sym]) -> Vec<Sym> {
+    fn deciding(&self, shown: &[Sym]) -> Vec<Sym> {
         match self.surface {
-            Some(surface) => surface(wrt, printed),
+            Some(surface) => surface(shown),
             None => shown.to_vec(),
         }
     }
@@ -586,7 +576,7 @@ fn decide_residuals<B: ExactBasis + Clone>(
     let mut holding = Vec::new();
     for wrt in &join.conventions {
         let shown = (residuals.shown)(*wrt, &join.printed);
-        let r = residuals.deciding(*wrt, &join.printed, &shown);
+        let r = residuals.deciding(&shown);
         if holds(&r) {
             holding.push(*wrt);
         }
@@ -658,7 +648,7 @@ fn sign_fix<B: ExactBasis + Clone>(
     let found = singles.chain(pairs).find(|chosen| {
         let printed = with(chosen);
         let shown = (residuals.shown)(wrt, &printed);
-        zero(&shown) && zero(&residuals.deciding(wrt, &printed, &shown))
+        zero(&shown) && zero(&residuals.deciding(&shown))
     })?;
     let terms: Vec<String> = found
         .iter()
