@@ -27,7 +27,9 @@
 //! LaTeX pieces are the one LaTeX writer's ([`trig_tex::symbols::greek`],
 //! [`trig_tex::expr`]).
 
+use std::borrow::Cow;
 use std::fmt::{self, Write as _};
+use std::sync::OnceLock;
 
 use rug::{Integer, Rational};
 use trig_tex::expr as tex;
@@ -218,6 +220,25 @@ fn power(base: String, e: u32, style: Style) -> String {
     }
 }
 
+/// The exponent `e` as [`power`] writes it after a base (nothing for 1),
+/// formed once per style for the exponents met in practice.
+fn exponent_suffix(e: u32, style: Style) -> Cow<'static, str> {
+    const FORMED: u32 = 64;
+    static SUFFIXES: OnceLock<Vec<[String; 4]>> = OnceLock::new();
+    if e >= FORMED {
+        return Cow::Owned(power(String::new(), e, style));
+    }
+    let table = SUFFIXES.get_or_init(|| {
+        (0..FORMED)
+            .map(|e| {
+                [Style::Plain, Style::Unicode, Style::Latex, Style::Sympy]
+                    .map(|style| power(String::new(), e, style))
+            })
+            .collect()
+    });
+    Cow::Borrowed(&table[e as usize][style as usize])
+}
+
 /// Writes the monomial `m` (not `1`) to `out`, factors joined by the
 /// style's product sign.
 fn push_monomial(out: &mut String, m: &Monomial, style: Style) {
@@ -226,8 +247,7 @@ fn push_monomial(out: &mut String, m: &Monomial, style: Style) {
             out.push_str(style.times());
         }
         out.push_str(var_name(v, style));
-        // the exponent as `power` writes it after a base (nothing for 1)
-        out.push_str(&power(String::new(), e, style));
+        out.push_str(&exponent_suffix(e, style));
     }
 }
 
