@@ -252,6 +252,21 @@ impl Poly {
         if self.is_zero() {
             return Some(Poly::zero());
         }
+        // By a term free of reduced atoms, term by term: the quotient ring
+        // is free over ℚ[x₁, …] with basis cⁱ, s·cⁱ, and multiplying by such
+        // a term creates no s², so it divides exactly when it divides every
+        // term (and the quotient keeps the order of the terms).
+        if let Some((m, q)) = d.terms.iter().next()
+            && d.len() == 1
+            && m.factors().all(|(v, _)| !v.is_reduced())
+        {
+            let terms: Option<Vec<(Monomial, Coef)>> = self
+                .terms
+                .iter()
+                .map(|(n, c)| Some((n.checked_div(m)?, c.checked_div(q)?)))
+                .collect();
+            return terms.map(|t| Poly::from_terms(t.into_iter()));
+        }
         // Degrees in variables other than s, c add up under multiplication
         // (the quotient ring is an integral domain, free over them).
         let mut degrees: Vec<(Var, u32)> = Vec::new();
@@ -525,6 +540,13 @@ mod tests {
         // s·c·(1+m) / (s·c)
         let sc = &v("s") * &v("c");
         assert_eq!((&sc * &a).exact_div(&sc), Some(a));
+        // by one term: term by term (c is not reduced), none when a term
+        // is not divisible
+        let t = q(3, 2) * &v("m") * &v("c");
+        let r = &v("m") * &(v("m") + &v("beta"));
+        assert_eq!((&t * &r).exact_div(&t), Some(r.clone()));
+        assert_eq!((&t * &r).exact_div(&v("m").pow(3)), None);
+        assert_eq!(s2.exact_div(&v("c")), None);
     }
 
     #[test]
