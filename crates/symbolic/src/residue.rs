@@ -21,6 +21,9 @@ pub(crate) const P: u64 = 2_147_483_647;
 pub struct Residue(u64);
 
 impl Residue {
+    /// Zero.
+    pub const ZERO: Residue = Residue(0);
+
     /// The image of `q`, or `None` when `p` divides its denominator.
     pub fn of(q: &Rational) -> Option<Residue> {
         Residue::fraction(

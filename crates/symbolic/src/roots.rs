@@ -8,6 +8,7 @@ use rug::{Integer, Rational};
 
 use crate::monomial::Monomial;
 use crate::poly::Poly;
+use crate::residue::Residue;
 use crate::var::Var;
 
 /// Largest coefficient (in absolute value) whose divisors are enumerated.
@@ -63,15 +64,34 @@ pub fn rational_roots(p: &Poly, var: &str) -> (Vec<Rational>, bool) {
     candidates.sort();
     candidates.dedup();
     // a root of `p` is a root of the group's polynomial, which is cheap to
-    // evaluate: only its roots are substituted into `p`
+    // evaluate: only its roots are substituted into `p`; and a root's image
+    // modulo a prime is a root of the image (a nonzero image proves a
+    // candidate is none, at word cost)
     let group_value = |v: &Rational| -> Rational {
         coeffs.iter().fold(Rational::new(), |acc, (e, c)| {
             acc + Rational::from(c) * v.clone().pow(*e)
         })
     };
+    let images: Option<Vec<(u32, Residue)>> = coeffs
+        .iter()
+        .map(|(e, c)| Some((*e, Residue::of(&Rational::from(c))?)))
+        .collect();
+    let image_vanishes = |v: &Rational| -> bool {
+        let (Some(images), Some(r)) = (&images, Residue::of(v)) else {
+            return true;
+        };
+        images
+            .iter()
+            .fold(Residue::ZERO, |acc, (e, c)| acc + *c * r.pow(*e))
+            .is_zero()
+    };
     let roots = candidates
         .into_iter()
-        .filter(|v| group_value(v) == 0 && p.subs(var, &Poly::constant(v.clone())).is_zero())
+        .filter(|v| {
+            image_vanishes(v)
+                && group_value(v) == 0
+                && p.subs(var, &Poly::constant(v.clone())).is_zero()
+        })
         .collect();
     (roots, ok1 && ok2)
 }
