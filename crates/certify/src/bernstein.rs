@@ -17,7 +17,7 @@
 //! Bernstein polynomial is positive off that face (`B₀ = (1 − y)ⁿ > 0` for
 //! `y < 1`, `Bₙ = yⁿ > 0` for `y > 0`).
 
-use rug::Rational;
+use rug::{Integer, Rational};
 
 /// Coefficients of a polynomial in `d` variables, indexed by exponent (or
 /// Bernstein index) tuples `α` with `αₖ ≤ degrees[k]`, stored flat with the
@@ -139,18 +139,28 @@ pub fn tensor_to_bernstein(a: &Tensor) -> Tensor {
     b
 }
 
-/// One de Casteljau split at 1/2 of a coefficient sequence.
+/// One de Casteljau split at 1/2 of a coefficient sequence, in integers:
+/// over the common denominator `L` of `c`, the sums of level `r` without
+/// the halvings are `2ʳ` times the midpoint values, so every output is one
+/// fraction `sum/(L·2ʳ)` and no intermediate sum needs reducing.
 fn split_seq(c: &[Rational]) -> (Vec<Rational>, Vec<Rational>) {
-    let mut work = c.to_vec();
+    let common = c.iter().fold(Integer::from(1), |acc, x| acc.lcm(x.denom()));
+    let mut work: Vec<Integer> = c
+        .iter()
+        .map(|x| x.numer() * Integer::from(&common / x.denom()))
+        .collect();
     let n = work.len();
     let mut left = Vec::with_capacity(n);
     let mut right = vec![Rational::new(); n];
+    let mut scale = common;
     for r in 0..n {
-        left.push(work[0].clone());
-        right[n - 1 - r] = work[n - 1 - r].clone();
+        left.push(Rational::from((work[0].clone(), scale.clone())));
+        right[n - 1 - r] = Rational::from((work[n - 1 - r].clone(), scale.clone()));
         for i in 0..n - 1 - r {
-            work[i] = (work[i].clone() + &work[i + 1]) / 2u32;
+            let next = work[i + 1].clone();
+            work[i] += next;
         }
+        scale <<= 1;
     }
     (left, right)
 }
@@ -354,6 +364,16 @@ mod tests {
             degrees: vec![a.len() - 1, a[0].len() - 1],
             coeffs: a.iter().flatten().cloned().collect(),
         }
+    }
+
+    #[test]
+    fn a_split_at_one_half_is_de_casteljau() {
+        // [a, b, c]: left [a, (a+b)/2, (a+2b+c)/4], right [(a+2b+c)/4, (b+c)/2, c]
+        let (a, b, c) = (q(1), r(1, 3), r(-2, 5));
+        let mid = (a.clone() + &b * q(2) + &c) / 4u32;
+        let (left, right) = split_seq(&[a.clone(), b.clone(), c.clone()]);
+        assert_eq!(left, [a.clone(), (a + &b) / 2u32, mid.clone()]);
+        assert_eq!(right, [mid, (b + &c) / 2u32, c]);
     }
 
     #[test]
