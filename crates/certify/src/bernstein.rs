@@ -21,11 +21,12 @@ use rug::{Integer, Rational};
 
 /// Coefficients of a polynomial in `d` variables, indexed by exponent (or
 /// Bernstein index) tuples `α` with `αₖ ≤ degrees[k]`, stored flat with the
-/// last variable fastest.
+/// last variable fastest: rationals, or the integer numerators of a
+/// subdivision over their common denominator.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Tensor {
+pub struct Tensor<C = Rational> {
     pub degrees: Vec<usize>,
-    pub coeffs: Vec<Rational>,
+    pub coeffs: Vec<C>,
 }
 
 impl Tensor {
@@ -38,6 +39,27 @@ impl Tensor {
         }
     }
 
+    /// Adds `q` to the coefficient of `alpha`.
+    pub fn add(&mut self, alpha: &[usize], q: &Rational) {
+        let i = self.position(alpha);
+        self.coeffs[i] += q;
+    }
+
+    /// Applies `f` to every fiber along `axis`, in place.
+    fn map_fibers(&mut self, axis: usize, f: impl Fn(&[Rational]) -> Vec<Rational>) {
+        let (stride, n) = (self.stride(axis), self.degrees[axis] + 1);
+        for start in self.fiber_starts(axis) {
+            let fiber: Vec<Rational> = (0..n)
+                .map(|k| self.coeffs[start + k * stride].clone())
+                .collect();
+            for (k, v) in f(&fiber).into_iter().enumerate() {
+                self.coeffs[start + k * stride] = v;
+            }
+        }
+    }
+}
+
+impl<C> Tensor<C> {
     /// Distance in the flat array between consecutive indices of `axis`.
     fn stride(&self, axis: usize) -> usize {
         self.degrees[axis + 1..].iter().map(|d| d + 1).product()
@@ -52,12 +74,6 @@ impl Tensor {
             .sum()
     }
 
-    /// Adds `q` to the coefficient of `alpha`.
-    pub fn add(&mut self, alpha: &[usize], q: &Rational) {
-        let i = self.position(alpha);
-        self.coeffs[i] += q;
-    }
-
     /// Start positions of every fiber along `axis` (all indices but `axis`
     /// free, `axis` index 0).
     fn fiber_starts(&self, axis: usize) -> Vec<usize> {
@@ -66,19 +82,6 @@ impl Tensor {
         (0..self.coeffs.len())
             .filter(|i| i % block < stride)
             .collect()
-    }
-
-    /// Applies `f` to every fiber along `axis`, in place.
-    fn map_fibers(&mut self, axis: usize, f: impl Fn(&[Rational]) -> Vec<Rational>) {
-        let (stride, n) = (self.stride(axis), self.degrees[axis] + 1);
-        for start in self.fiber_starts(axis) {
-            let fiber: Vec<Rational> = (0..n)
-                .map(|k| self.coeffs[start + k * stride].clone())
-                .collect();
-            for (k, v) in f(&fiber).into_iter().enumerate() {
-                self.coeffs[start + k * stride] = v;
-            }
-        }
     }
 }
 
@@ -139,41 +142,61 @@ pub fn tensor_to_bernstein(a: &Tensor) -> Tensor {
     b
 }
 
-/// One de Casteljau split at 1/2 of a coefficient sequence, in integers:
-/// over the common denominator `L` of `c`, the sums of level `r` without
-/// the halvings are `2ʳ` times the midpoint values, so every output is one
-/// fraction `sum/(L·2ʳ)` and no intermediate sum needs reducing.
-fn split_seq(c: &[Rational]) -> (Vec<Rational>, Vec<Rational>) {
-    let common = c.iter().fold(Integer::from(1), |acc, x| acc.lcm(x.denom()));
-    let mut work: Vec<Integer> = c
-        .iter()
-        .map(|x| x.numer() * Integer::from(&common / x.denom()))
-        .collect();
+/// One de Casteljau split at 1/2 of a sequence of integer numerators, all
+/// outputs over `2ⁿ⁻¹` times the input's denominator (`n` terms): the sums
+/// of level `r` without the halvings are `2ʳ` times the midpoint values,
+/// shifted up by the `n − 1 − r` halvings they lack.
+fn split_seq(c: &[Integer]) -> (Vec<Integer>, Vec<Integer>) {
+    let mut work = c.to_vec();
     let n = work.len();
     let mut left = Vec::with_capacity(n);
-    let mut right = vec![Rational::new(); n];
-    let mut scale = common;
+    let mut right = vec![Integer::new(); n];
     for r in 0..n {
-        left.push(Rational::from((work[0].clone(), scale.clone())));
-        right[n - 1 - r] = Rational::from((work[n - 1 - r].clone(), scale.clone()));
+        let lack = (n - 1 - r) as u32;
+        left.push(Integer::from(&work[0] << lack));
+        right[n - 1 - r] = Integer::from(&work[n - 1 - r] << lack);
         for i in 0..n - 1 - r {
             let next = work[i + 1].clone();
             work[i] += next;
         }
-        scale <<= 1;
     }
     (left, right)
 }
 
-/// Bernstein coefficients over a sub-box of `[0,1]^d`.
+/// Bernstein coefficients over a sub-box of `[0,1]^d`: integer numerators
+/// over one positive denominator (signs are the numerators' signs).
 #[derive(Debug, Clone)]
 struct Patch {
-    b: Tensor,
+    b: Tensor<Integer>,
+    den: Integer,
     cell: Vec<(Rational, Rational)>,
     depth: u32,
 }
 
 impl Patch {
+    /// The patch of rational Bernstein coefficients over the unit cube.
+    fn unit(b: &Tensor) -> Patch {
+        let den = b
+            .coeffs
+            .iter()
+            .fold(Integer::from(1), |acc, x| acc.lcm(x.denom()));
+        let coeffs = b
+            .coeffs
+            .iter()
+            .map(|x| x.numer() * Integer::from(&den / x.denom()))
+            .collect();
+        let unit = (Rational::new(), Rational::from(1));
+        Patch {
+            b: Tensor {
+                degrees: b.degrees.clone(),
+                coeffs,
+            },
+            den,
+            cell: vec![unit; b.degrees.len()],
+            depth: 0,
+        }
+    }
+
     /// Splits along the widest side among the variables of positive degree
     /// (the first such on ties).
     fn split(&self) -> (Patch, Patch) {
@@ -188,33 +211,32 @@ impl Patch {
         let (mut lo, mut hi) = (self.b.clone(), self.b.clone());
         let (stride, n) = (self.b.stride(axis), self.b.degrees[axis] + 1);
         for start in self.b.fiber_starts(axis) {
-            let fiber: Vec<Rational> = (0..n)
+            let fiber: Vec<Integer> = (0..n)
                 .map(|k| self.b.coeffs[start + k * stride].clone())
                 .collect();
             let (l, r) = split_seq(&fiber);
-            for k in 0..n {
-                lo.coeffs[start + k * stride] = l[k].clone();
-                hi.coeffs[start + k * stride] = r[k].clone();
+            for (k, (l, r)) in l.into_iter().zip(r).enumerate() {
+                lo.coeffs[start + k * stride] = l;
+                hi.coeffs[start + k * stride] = r;
             }
         }
+        let den = Integer::from(&self.den << (n - 1) as u32);
         let (a, c) = self.cell[axis].clone();
         let m = (a.clone() + &c) / 2u32;
         let mut lcell = self.cell.clone();
         lcell[axis] = (a, m.clone());
         let mut hcell = self.cell.clone();
         hcell[axis] = (m, c);
-        (
+        let patch = |b: Tensor<Integer>, cell| {
+            let (b, den) = without_common_twos(b, den.clone());
             Patch {
-                b: lo,
-                cell: lcell,
+                b,
+                den,
+                cell,
                 depth: self.depth + 1,
-            },
-            Patch {
-                b: hi,
-                cell: hcell,
-                depth: self.depth + 1,
-            },
-        )
+            }
+        };
+        (patch(lo, lcell), patch(hi, hcell))
     }
 
     /// Whether the corner coordinate of `axis` (upper when `upper`) lies on
@@ -255,7 +277,7 @@ impl Patch {
                         }
                     })
                     .collect();
-                (point, v.clone())
+                (point, Rational::from((v.clone(), self.den.clone())))
             })
         })
     }
@@ -292,6 +314,26 @@ impl Patch {
     }
 }
 
+/// `b/den` with the powers of two common to every numerator and the
+/// denominator divided out (the halvings of a subdivision would otherwise
+/// grow them by a factor per split).
+fn without_common_twos(mut b: Tensor<Integer>, mut den: Integer) -> (Tensor<Integer>, Integer) {
+    let twos = b
+        .coeffs
+        .iter()
+        .filter_map(|x| x.find_one(0))
+        .chain(den.find_one(0))
+        .min()
+        .unwrap_or(0);
+    if twos > 0 {
+        for x in &mut b.coeffs {
+            *x >>= twos;
+        }
+        den >>= twos;
+    }
+    (b, den)
+}
+
 /// Which faces of one axis of the unit cube are not part of the set: the
 /// face at infinity of a half-line, the face of an open range end.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
@@ -315,12 +357,7 @@ pub fn sign_on_unit_cube(
     let d = a.degrees.len();
     let mut excluded = excluded.to_vec();
     excluded.resize(d, Excluded::default());
-    let unit = (Rational::new(), Rational::from(1));
-    let mut stack = vec![Patch {
-        b: tensor_to_bernstein(a),
-        cell: vec![unit; d],
-        depth: 0,
-    }];
+    let mut stack = vec![Patch::unit(&tensor_to_bernstein(a))];
     let mut boxes = 0;
     let mut spent = 0u64;
     while let Some(p) = stack.pop() {
@@ -368,12 +405,19 @@ mod tests {
 
     #[test]
     fn a_split_at_one_half_is_de_casteljau() {
-        // [a, b, c]: left [a, (a+b)/2, (a+2b+c)/4], right [(a+2b+c)/4, (b+c)/2, c]
-        let (a, b, c) = (q(1), r(1, 3), r(-2, 5));
-        let mid = (a.clone() + &b * q(2) + &c) / 4u32;
-        let (left, right) = split_seq(&[a.clone(), b.clone(), c.clone()]);
-        assert_eq!(left, [a.clone(), (a + &b) / 2u32, mid.clone()]);
-        assert_eq!(right, [mid, (b + &c) / 2u32, c]);
+        // [a, b, c]: left [a, (a+b)/2, (a+2b+c)/4], right [(a+2b+c)/4,
+        // (b+c)/2, c], all over 4
+        let z = |n: i64| Integer::from(n);
+        let (left, right) = split_seq(&[z(8), z(3), z(-5)]);
+        assert_eq!(left, [z(32), z(22), z(9)]);
+        assert_eq!(right, [z(9), z(-4), z(-20)]);
+        // common powers of two come off the numerators and the denominator
+        let t = Tensor {
+            degrees: vec![2],
+            coeffs: vec![z(12), z(-4), z(0)],
+        };
+        let (t, den) = without_common_twos(t, z(8));
+        assert_eq!((t.coeffs, den), (vec![z(3), z(-1), z(0)], z(2)));
     }
 
     #[test]
