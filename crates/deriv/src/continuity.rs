@@ -264,6 +264,91 @@ pub fn curve_end(
     }
 }
 
+/// The jumps `right − left` of the derivatives of orders `0…MAX_ORDER` of
+/// a curve (as in [`curve_piece`]) at the knot between a segment with
+/// control points `left` (at its end) and one with `right` (at its start);
+/// `weights` are the two segments' weights of a rational curve
+/// ([`quotient_jumps`]).
+///
+/// # Panics
+/// As [`curve_end`].
+pub fn curve_jumps(
+    family: Family,
+    params: &[Sym],
+    (left, right): (&[Sym], &[Sym]),
+    weights: Option<(&[Sym], &[Sym])>,
+) -> Vec<Sym> {
+    let one = Sym::one();
+    let curve = |points: &[Sym], end: End| {
+        curve_endpoint_derivatives::<Sym, K>(family, params, points, None, end, Wrt::U, &one)
+    };
+    let Some((wl, wr)) = weights else {
+        let (l, r) = (curve(left, End::End), curve(right, End::Start));
+        return r.iter().zip(&l).map(|(r, l)| r.clone() - l).collect();
+    };
+    let weighted = |p: &[Sym], w: &[Sym]| -> Vec<Sym> {
+        assert_eq!(w.len(), p.len(), "one weight per control point");
+        p.iter().zip(w).map(|(p, wi)| p.clone() * wi).collect()
+    };
+    let (nl, nr) = (
+        curve(&weighted(left, wl), End::End),
+        curve(&weighted(right, wr), End::Start),
+    );
+    let (wl, wr) = (curve(wl, End::End), curve(wr, End::Start));
+    quotient_jumps((&nl, &wl), (&nr, &wr))
+}
+
+/// The jumps `Dₖ = qₖᴿ − qₖᴸ` of the derivatives of orders `0…` of a
+/// quotient `q = n/w` at a knot, from those of `n` and `w` on its two
+/// sides (`(n, w)` each), exactly. Leibniz's rule for `n = q·w` on each
+/// side gives, with `Δ = right − left`,
+/// `Dₖ·w₀ᴿ = Δnₖ − Σ_{j=1..k} C(k,j) D_{k−j} wⱼᴿ − Σ_{j=0..k} C(k,j) q_{k−j}ᴸ Δwⱼ`.
+/// So the left quotient is needed only to the order `K − 1 − j₀`, `j₀` the
+/// first order where `w` jumps, and where `n` and `w` join smoothly the
+/// jumps are formed from small terms, not as differences of large ones.
+///
+/// # Panics
+/// If the lengths differ or `w(0) = 0` on the right.
+pub fn quotient_jumps((nl, wl): (&[Sym], &[Sym]), (nr, wr): (&[Sym], &[Sym])) -> Vec<Sym> {
+    let order = wr.len();
+    assert!(
+        [nl.len(), wl.len(), nr.len()].iter().all(|n| *n == order),
+        "as many derivatives on each side"
+    );
+    let dn: Vec<Sym> = nr.iter().zip(nl).map(|(r, l)| r.clone() - l).collect();
+    let dw: Vec<Sym> = wr.iter().zip(wl).map(|(r, l)| r.clone() - l).collect();
+    let needed = dw
+        .iter()
+        .position(|d| !d.is_zero())
+        .map_or(0, |j0| order - j0);
+    let ql = if needed == 0 {
+        Vec::new()
+    } else {
+        quotient_derivatives(&[&nl[..needed]], &wl[..needed]).remove(0)
+    };
+    let binomial =
+        |k: usize, j: usize| Sym::rational(Rational::from(Integer::from(k).binomial(j as u32)));
+    let mut jumps: Vec<Sym> = Vec::with_capacity(order);
+    for k in 0..order {
+        let mut acc = dn[k].clone();
+        for j in 1..=k {
+            if !jumps[k - j].is_zero() && !wr[j].is_zero() {
+                acc = acc - &(binomial(k, j) * &jumps[k - j] * &wr[j]);
+            }
+        }
+        for j in 0..=k {
+            if !dw[j].is_zero() {
+                acc = acc - &(binomial(k, j) * &ql[k - j] * &dw[j]);
+            }
+        }
+        jumps.push(
+            acc.checked_div(&wr[0])
+                .expect("the denominator is nonzero at the point"),
+        );
+    }
+    jumps
+}
+
 /// The derivatives of orders `0…` of quotients `qᵢ = nᵢ / w` sharing their
 /// denominator, from those of the `nᵢ` and of `w`, exactly. Sums of
 /// rational functions are expensive in the ring (each seeks
@@ -425,6 +510,43 @@ mod tests {
         let mut bad = nd.clone();
         bad[2] = bad[2].clone() + &Sym::one();
         assert_ne!(quotient_derivatives(&[&bad], &wd)[0], want);
+    }
+
+    #[test]
+    fn quotient_jumps_are_the_differences_of_the_quotients() {
+        let (a, b, m) = (Sym::var("a"), Sym::var("b"), Sym::var("m"));
+        let (one, two) = (Sym::one(), Sym::int(2));
+        // left: n = a + b·x + x², w = 1 + m·x; right agrees to order 1 in w
+        // and order 0 in n, then jumps
+        let nl = [a.clone(), b.clone(), two.clone(), Sym::zero()];
+        let wl = [one.clone(), m.clone(), Sym::zero(), Sym::zero()];
+        let nr = [a.clone(), b.clone() + &one, m.clone(), a.clone() * &b];
+        let wr = [
+            one.clone(),
+            m.clone(),
+            a.clone(),
+            b.clone() / &(m.clone() + &two),
+        ];
+        let difference = |nl: &[Sym], wl: &[Sym], nr: &[Sym], wr: &[Sym]| -> Vec<Sym> {
+            let l = quotient_derivatives(&[nl], wl).remove(0);
+            let r = quotient_derivatives(&[nr], wr).remove(0);
+            r.iter().zip(&l).map(|(r, l)| r.clone() - l).collect()
+        };
+        let jumps = quotient_jumps((&nl, &wl), (&nr, &wr));
+        assert_eq!(jumps, difference(&nl, &wl, &nr, &wr));
+        assert!(jumps[0].is_zero() && !jumps[1].is_zero());
+        // the weight jumps at order 0 (the whole left quotient is needed)
+        let wr0 = [two.clone(), m.clone(), a.clone(), Sym::zero()];
+        assert_eq!(
+            quotient_jumps((&nl, &wl), (&nr, &wr0)),
+            difference(&nl, &wl, &nr, &wr0)
+        );
+        // no jump at all
+        assert!(
+            quotient_jumps((&nl, &wl), (&nl, &wl))
+                .iter()
+                .all(Sym::is_zero)
+        );
     }
 
     #[test]

@@ -16,7 +16,7 @@ use crate::judge::continuity::{METHOD, at_least, describe, knot_witness};
 use crate::status::Status;
 use crate::verdict::Verdict;
 use trig_deriv::continuity::{
-    self, KnotContinuity, curve_end, nonuniform_bspline, uniform_bspline,
+    self, KnotContinuity, curve_jumps, nonuniform_bspline, uniform_bspline,
 };
 
 pub const CLAIMS: &[Claim] = &[
@@ -420,23 +420,15 @@ fn uniform_basis() -> Vec<KnotContinuity> {
 pub(super) fn uniform_curve(rational: bool, spans: usize) -> Vec<KnotContinuity> {
     let p = symbols("P", spans + 3);
     let w = symbols("w", spans + 3);
-    let span_end = |i: usize, end: End| {
-        curve_end(
-            Family::Seed000Uniform,
-            &[zeta()],
-            &p[i..i + 4],
-            rational.then(|| &w[i..i + 4]),
-            end,
-        )
-    };
     (1..spans)
         .map(|knot| {
-            let (left, right) = (span_end(knot - 1, End::End), span_end(knot, End::Start));
-            let jumps = right
-                .iter()
-                .zip(&left)
-                .map(|(r, l)| r.clone() - l)
-                .collect();
+            let (left, right) = (knot - 1..knot + 3, knot..knot + 4);
+            let jumps = curve_jumps(
+                Family::Seed000Uniform,
+                &[zeta()],
+                (&p[left.clone()], &p[right.clone()]),
+                rational.then(|| (&w[left], &w[right])),
+            );
             continuity::classify(knot, jumps, Some("zeta"))
         })
         .collect()
