@@ -6,8 +6,6 @@
 //! (e.g. `s = 2k/(1+k²)`, `c = (1−k²)/(1+k²)`), and for any values when the
 //! expression contains neither.
 
-use std::collections::BTreeSet;
-
 use rug::Rational;
 use trig_core::Ring;
 
@@ -114,70 +112,92 @@ impl<T: Ring> Field for InRing<T> {
     }
 }
 
-/// The value of each variable, looked up once, and whether it annihilates
-/// ([`Field::annihilates`]).
-type Values<F> = Vec<(Var, F, bool)>;
+/// The values of the variables, each looked up once, when first met, with
+/// whether it annihilates ([`Field::annihilates`]).
+struct Values<'a, F> {
+    assign: &'a dyn Fn(&str) -> Option<F>,
+    bound: Vec<(Var, F, bool)>,
+}
 
-/// Looks up every variable once; the error names the first unbound one in
-/// name order.
-fn bind<F: Field>(
-    vars: Vec<Var>,
-    assign: &dyn Fn(&str) -> Option<F>,
-) -> Result<Values<F>, SymError> {
-    let mut values = Vec::with_capacity(vars.len());
-    let mut unbound: BTreeSet<&str> = BTreeSet::new();
-    for v in vars {
-        match assign(v.name()) {
-            Some(x) => {
-                let zero = x.annihilates();
-                values.push((v, x, zero));
-            }
-            None => {
-                unbound.insert(v.name());
-            }
+/// A variable without a value was met (its name).
+struct Unbound(&'static str);
+
+impl<'a, F: Field> Values<'a, F> {
+    fn new(assign: &'a dyn Fn(&str) -> Option<F>) -> Values<'a, F> {
+        Values {
+            assign,
+            bound: Vec::new(),
         }
     }
-    match unbound.first() {
-        Some(n) => Err(SymError::UnboundVariable((*n).to_string())),
-        None => Ok(values),
+
+    /// The value of `v` and whether it annihilates.
+    fn get(&mut self, v: &Var) -> Result<(&F, bool), Unbound> {
+        let i = match self.bound.iter().position(|(w, ..)| w == v) {
+            Some(i) => i,
+            None => {
+                let x = (self.assign)(v.name()).ok_or(Unbound(v.name()))?;
+                let zero = x.annihilates();
+                self.bound.push((*v, x, zero));
+                self.bound.len() - 1
+            }
+        };
+        let (_, x, zero) = &self.bound[i];
+        Ok((x, *zero))
     }
 }
 
-fn value<'a, F>(values: &'a Values<F>, v: &Var) -> (&'a F, bool) {
-    values
+/// The error for the first unbound variable of `vars` in name order (`met`
+/// was found unbound).
+fn unbound<F>(vars: Vec<Var>, assign: &dyn Fn(&str) -> Option<F>, met: Unbound) -> SymError {
+    let first = vars
         .iter()
-        .find(|(w, ..)| w == v)
-        .map(|(_, x, zero)| (x, *zero))
-        .expect("every variable is bound")
+        .map(Var::name)
+        .filter(|n| assign(n).is_none())
+        .min()
+        .unwrap_or(met.0);
+    SymError::UnboundVariable(first.to_string())
 }
 
-/// `p` at bound values (every variable of `p` is bound); a term with a
-/// variable whose value annihilates is skipped.
-fn eval_poly<F: Field>(p: &Poly, like: &F, values: &Values<F>) -> F {
-    p.terms().fold(like.constant(&Coef::ZERO), |acc, (m, q)| {
+/// `p` at the values; a term with a variable whose value annihilates is
+/// skipped (its other variables are still looked up, so that every
+/// variable of `p` is bound).
+fn eval_poly<F: Field>(p: &Poly, like: &F, values: &mut Values<F>) -> Result<F, Unbound> {
+    let mut acc = like.constant(&Coef::ZERO);
+    for (m, q) in p.terms() {
+        let mut zero = false;
+        for (v, _) in m.factors() {
+            zero |= values.get(v)?.1;
+        }
+        if zero {
+            continue;
+        }
         let mut term = like.constant(q);
         for (v, e) in m.factors() {
-            let (x, zero) = value(values, v);
-            if zero {
-                return acc;
-            }
-            term = term.mul(&x.pow(e));
+            term = term.mul(&values.get(v)?.0.pow(e));
         }
-        acc.add(&term)
-    })
+        acc = acc.add(&term);
+    }
+    Ok(acc)
 }
 
-/// `x` at bound values, checking every denominator factor.
-fn eval_sym<F: Field>(x: &Sym, like: &F, values: &Values<F>) -> Result<F, SymError> {
+/// `x` at the values: unbound variables first, then every denominator
+/// factor checked.
+fn eval_sym<F: Field>(x: &Sym, like: &F, values: &mut Values<F>) -> Result<F, SymError> {
+    let unbound = |values: &Values<F>, met| unbound(x.vars(), values.assign, met);
     let mut den = like.constant(&Coef::ONE);
+    let mut vanishing = None;
     for (f, e) in x.denominator() {
-        let value = eval_poly(f, like, values);
+        let value = eval_poly(f, like, values).map_err(|met| unbound(values, met))?;
         if value.is_zero() {
-            return Err(SymError::ZeroDenominator(f.to_string()));
+            vanishing.get_or_insert(f);
         }
         den = den.mul(&value.pow(*e));
     }
-    Ok(eval_poly(x.numerator(), like, values).div(&den))
+    let num = eval_poly(x.numerator(), like, values).map_err(|met| unbound(values, met))?;
+    match vanishing {
+        Some(f) => Err(SymError::ZeroDenominator(f.to_string())),
+        None => Ok(num.div(&den)),
+    }
 }
 
 impl Poly {
@@ -186,8 +206,10 @@ impl Poly {
         &self,
         assign: &dyn Fn(&str) -> Option<Rational>,
     ) -> Result<Rational, SymError> {
-        let values = bind(self.vars(), &|n: &str| assign(n).map(Coef::from))?;
-        Ok(eval_poly(self, &Coef::ZERO, &values).to_rational())
+        let assign = |n: &str| assign(n).map(Coef::from);
+        eval_poly(self, &Coef::ZERO, &mut Values::new(&assign))
+            .map(|x| x.to_rational())
+            .map_err(|met| unbound(self.vars(), &assign, met))
     }
 
     /// The value in the ring of `like` at the assigned values; coefficients
@@ -197,8 +219,10 @@ impl Poly {
         like: &T,
         assign: &dyn Fn(&str) -> Option<T>,
     ) -> Result<T, SymError> {
-        let values = bind(self.vars(), &|n: &str| assign(n).map(InRing))?;
-        Ok(eval_poly(self, &InRing(like.clone()), &values).0)
+        let assign = |n: &str| assign(n).map(InRing);
+        eval_poly(self, &InRing(like.clone()), &mut Values::new(&assign))
+            .map(|x| x.0)
+            .map_err(|met| unbound(self.vars(), &assign, met))
     }
 }
 
@@ -209,8 +233,8 @@ impl Sym {
         &self,
         assign: &dyn Fn(&str) -> Option<Rational>,
     ) -> Result<Rational, SymError> {
-        let values = bind(self.vars(), &|n: &str| assign(n).map(Coef::from))?;
-        eval_sym(self, &Coef::ZERO, &values).map(|x| x.to_rational())
+        let assign = |n: &str| assign(n).map(Coef::from);
+        eval_sym(self, &Coef::ZERO, &mut Values::new(&assign)).map(|x| x.to_rational())
     }
 
     /// The image modulo a prime ([`Residue`]) of the value at the assigned
@@ -219,8 +243,10 @@ impl Sym {
     /// prime, a denominator factor vanishing modulo it). Images that differ
     /// prove values that differ.
     pub fn eval_mod(&self, assign: &dyn Fn(&str) -> Option<Rational>) -> Option<Residue> {
-        let values = bind(self.vars(), &|n: &str| assign(n).map(|q| Residue::of(&q))).ok()?;
-        eval_sym(self, &None, &values).ok().flatten()
+        let assign = |n: &str| assign(n).map(|q| Residue::of(&q));
+        eval_sym(self, &None, &mut Values::new(&assign))
+            .ok()
+            .flatten()
     }
 
     /// The value in the ring of `like` (f64, MPFR, …) at the assigned
@@ -231,8 +257,8 @@ impl Sym {
         like: &T,
         assign: &dyn Fn(&str) -> Option<T>,
     ) -> Result<T, SymError> {
-        let values = bind(self.vars(), &|n: &str| assign(n).map(InRing))?;
-        eval_sym(self, &InRing(like.clone()), &values).map(|x| x.0)
+        let assign = |n: &str| assign(n).map(InRing);
+        eval_sym(self, &InRing(like.clone()), &mut Values::new(&assign)).map(|x| x.0)
     }
 }
 
@@ -285,6 +311,12 @@ mod tests {
         let at = |m: i64| move |n: &str| Some(Rational::from(if n == "m" { m } else { 3 }));
         assert_eq!(x.eval_mod(&at(0)), Residue::of(&Rational::from(6)));
         assert_eq!(x.eval_mod(&at(1)), None);
+        // a variable of a skipped term must still be bound
+        let zero_m = |n: &str| (n != "x").then(|| Rational::from(if n == "m" { 0 } else { 3 }));
+        assert_eq!(
+            x.eval_rational(&zero_m),
+            Err(SymError::UnboundVariable("x".into()))
+        );
         // in the exact ring: an exact zero removes its terms, π stays
         let y = v("m") * &v("pi") + &(v("pi") * &v("pi"));
         let sym = |n: &str| match n {
