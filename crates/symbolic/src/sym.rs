@@ -239,9 +239,28 @@ fn subs_poly(p: &Poly, name: &str, value: &Sym) -> Sym {
         let (rest, e) = m.split_off(v);
         groups.entry(e).or_default().add_term(rest, q.clone());
     }
-    groups.into_iter().fold(Sym::zero(), |acc, (e, g)| {
-        acc.add_signed(&Sym::from_poly(g).mul_ref(&pow(value, e)), false)
-    })
+    let top = groups.keys().next_back().copied().unwrap_or(0);
+    if top == 0 {
+        return Sym::from_poly(p.clone());
+    }
+    // value = a/b: p = Σ gₑ aᵉ b^{top−e} / b^top, the numerator by Horner's
+    // rule in a, and the fraction brought to lowest terms once
+    let b = value.denominator_poly();
+    let mut b_power = Poly::one();
+    let mut acc = Poly::zero();
+    for e in (0..=top).rev() {
+        acc = &acc * &value.num;
+        if let Some(g) = groups.get(&e) {
+            acc = acc + &(g * &b_power);
+        }
+        b_power = &b_power * &b;
+    }
+    let den = value
+        .den
+        .iter()
+        .map(|(f, k)| (f.clone(), k * top))
+        .collect();
+    cancel(acc, den)
 }
 
 /// The least common multiple of two factored denominators by exponents.
@@ -410,6 +429,30 @@ mod tests {
         assert_eq!(sum.denominator().len(), 1);
         assert_eq!(sum.denominator().get(d.numerator()), Some(&1));
         assert_eq!(sum.numerator(), (v("m") + &v("s")).numerator());
+    }
+
+    #[test]
+    fn substituting_a_fraction_equals_the_arithmetic() {
+        // p = 3x²y − x·s + 5 with x := (y + 1)/(y − 2)² and x := 2z/(1 + z²)
+        let (x, y, z) = (v("x"), v("y"), v("z"));
+        let p = Sym::int(3) * &x * &x * &y - &(x.clone() * &v("s")) + &Sym::int(5);
+        let at = |value: &Sym| {
+            Sym::int(3) * value * value * &y - &(value.clone() * &v("s")) + &Sym::int(5)
+        };
+        let y2 = y.clone() - &Sym::int(2);
+        for value in [
+            (y.clone() + &Sym::one()) / &(y2.clone() * &y2),
+            Sym::int(2) * &z / &(Sym::one() + &(z.clone() * &z)),
+        ] {
+            assert_eq!(p.subs("x", &value), at(&value));
+        }
+        // a denominator that cancels: x² − 1 at x := 1/y is (1 − y²)/y²
+        let q = x.clone() * &x - &Sym::one();
+        let value = Sym::one() / &y;
+        assert_eq!(
+            q.subs("x", &value),
+            (Sym::one() - &(y.clone() * &y)) / &(y.clone() * &y)
+        );
     }
 
     #[test]
