@@ -388,8 +388,8 @@ fn item8_a_time_limit_cuts_claims_off_but_never_changes_a_verdict() {
     let path = scratch(
         "slow-claim.toml",
         "id = \"slow-claim\"\ncitation = \"issue 22\"\nvariable = \"angle\"\n\
-         [[functions]]\nname = \"f\"\nformula = \"cos(8*t)^16\"\n\
-         [[functions]]\nname = \"g\"\nformula = \"1 - cos(8*t)^16\"\n",
+         [[functions]]\nname = \"f\"\nformula = \"cos(16*t)^8\"\n\
+         [[functions]]\nname = \"g\"\nformula = \"1 - cos(16*t)^8\"\n",
     );
     let verdicts = |limit: &str| {
         let report = json(&[
