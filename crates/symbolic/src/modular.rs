@@ -159,12 +159,11 @@ fn images(p: &Poly, mains: &[Var]) -> Option<Vec<Vec<u64>>> {
         .collect();
     // the residue each variable is sent to (when it is not the main one)
     let mut residues: Vec<(Var, u64)> = Vec::new();
-    // per term: the exponent of each main variable, and the residue of
-    // each main variable's power
-    let mut at = vec![(0usize, 1u64); mains.len()];
+    // per term: the main variables it has, with exponent and power residue
+    let mut present: Vec<(usize, usize, u64)> = Vec::new();
     for (m, q) in p.terms() {
         let mut base = Residue::of_coef(q)?.value();
-        at.fill((0, 1));
+        present.clear();
         for (v, e) in m.factors() {
             let r = match residues.iter().find(|(w, _)| w == v) {
                 Some(&(_, r)) => r,
@@ -179,17 +178,26 @@ fn images(p: &Poly, mains: &[Var]) -> Option<Vec<Vec<u64>>> {
             };
             let power = pow(r, u64::from(e));
             match mains.iter().position(|x| x == v) {
-                Some(i) => at[i] = (e as usize, power),
+                Some(i) => present.push((i, e as usize, power)),
                 None => base = base * power % P,
             }
         }
+        // the image for a main variable the term lacks gets the whole
+        // value at power 0; one it has, the value without its own factor
+        let whole = present
+            .iter()
+            .fold(base, |acc, (_, _, power)| acc * power % P);
         for (i, img) in out.iter_mut().enumerate() {
-            let value = at
-                .iter()
-                .enumerate()
-                .filter(|(j, _)| *j != i)
-                .fold(base, |acc, (_, (_, power))| acc * power % P);
-            let k = at[i].0;
+            let (k, value) = match present.iter().find(|(j, ..)| *j == i) {
+                None => (0, whole),
+                Some(&(_, k, _)) => (
+                    k,
+                    present
+                        .iter()
+                        .filter(|(j, ..)| *j != i)
+                        .fold(base, |acc, (_, _, power)| acc * power % P),
+                ),
+            };
             img[k] = (img[k] + value) % P;
         }
     }
