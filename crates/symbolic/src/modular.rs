@@ -139,7 +139,7 @@ impl Images {
         if mains.is_empty() {
             return;
         }
-        let images = images(p, &mains);
+        let images = images_of(p, &mains);
         for (i, x) in mains.into_iter().enumerate() {
             let img = images.as_ref().map(|all| {
                 let mut img = all[i].clone();
@@ -152,7 +152,7 @@ impl Images {
 }
 
 /// The images of `p` with each of `mains` as main variable, untrimmed.
-fn images(p: &Poly, mains: &[Var]) -> Option<Vec<Vec<u64>>> {
+fn images_of(p: &Poly, mains: &[Var]) -> Option<Vec<Vec<u64>>> {
     let mut out: Vec<Vec<u64>> = mains
         .iter()
         .map(|&x| vec![0u64; p.degree_in_var(x) as usize + 1])
