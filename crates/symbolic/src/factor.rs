@@ -27,12 +27,11 @@
 use std::collections::{BTreeMap, HashMap};
 use std::sync::{Mutex, OnceLock, PoisonError};
 
+use rug::Rational;
 use rug::ops::Pow;
-use rug::{Integer, Rational};
 
 use crate::gcd::{coefficients_over, gcd_free, is_trig, monomial_content, split_content};
 use crate::poly::Poly;
-use crate::residue::Residue;
 use crate::sym::Sym;
 
 /// Polynomials with more terms get only the content steps.
@@ -327,63 +326,20 @@ fn square_free(p: &Poly, x: &str) -> Vec<(Poly, u32)> {
 /// the linear factor `b·x − a` and the quotient.
 fn rational_root(p: &Poly, x: &str) -> Option<(Poly, Poly)> {
     let coefficients = p.coefficients_in(x);
-    let integer = |c: &Poly| c.as_constant().map(|q| q.numer().clone());
-    let a0 = integer(coefficients.first()?)?;
-    let an = integer(coefficients.last()?)?;
-    let (d0, dn) = (divisors(&a0)?, divisors(&an)?);
-    // the coefficients modulo the prime: a candidate whose image is not a
-    // root of the image is not a root (reduction is a ring homomorphism)
-    let images: Option<Vec<Residue>> = coefficients
-        .iter()
-        .map(|c| c.as_constant().and_then(|q| Residue::of(&q)))
-        .collect();
-    let not_a_root = |root: &Rational| -> bool {
-        let (Some(images), Some(r)) = (&images, Residue::of(root)) else {
-            return false;
-        };
-        let mut high = images.iter().rev();
-        let lead = *high.next().expect("a nonconstant polynomial");
-        !high.fold(lead, |acc, c| acc * r + *c).is_zero()
+    let small = |c: &Poly| {
+        c.as_constant()
+            .and_then(|q| q.numer().clone().abs().to_u64())
+            .is_some_and(|n| n != 0 && n <= ROOT_COEFFICIENT_LIMIT)
     };
-    for a in &d0 {
-        for b in &dn {
-            for sign in [1, -1] {
-                let root = Rational::from((Integer::from(a * sign), b.clone()));
-                if not_a_root(&root) {
-                    continue;
-                }
-                let value = p.eval_rational(&|_| Some(root.clone())).ok()?;
-                if value == 0 {
-                    let linear = Poly::constant(Rational::from(b.clone())) * &Poly::var(x)
-                        - &Poly::constant(Rational::from(a * sign));
-                    let rest = p.exact_div(&linear)?;
-                    return Some((linear, rest));
-                }
-            }
-        }
-    }
-    None
-}
-
-/// The positive divisors of `n ≠ 0`, when `|n|` is small enough to search.
-fn divisors(n: &Integer) -> Option<Vec<Integer>> {
-    let n = n.clone().abs().to_u64()?;
-    if n == 0 || n > ROOT_COEFFICIENT_LIMIT {
+    if !small(coefficients.first()?) || !small(coefficients.last()?) {
         return None;
     }
-    let mut out = Vec::new();
-    let mut d = 1;
-    while d * d <= n {
-        if n % d == 0 {
-            out.push(Integer::from(d));
-            if d * d != n {
-                out.push(Integer::from(n / d));
-            }
-        }
-        d += 1;
-    }
-    out.sort();
-    Some(out)
+    let (roots, _) = crate::roots::rational_roots(p, x);
+    let root = roots.first()?;
+    let linear = Poly::constant(Rational::from(root.denom().clone())) * &Poly::var(x)
+        - &Poly::constant(Rational::from(root.numer().clone()));
+    let rest = p.exact_div(&linear)?;
+    Some((linear, rest))
 }
 
 #[cfg(test)]
@@ -433,6 +389,16 @@ mod tests {
                 ("m + 2".to_string(), 2)
             ]
         );
+        // square-free: the linear factors come from the rational roots 1/2, −3
+        let q = &(&(&(&n(2) * &m) - &n(1)) * &(&m + &n(3))) * &(&m.pow(2) + &n(1));
+        let mut got: Vec<String> = q
+            .factor()
+            .factors
+            .iter()
+            .map(|(g, _)| g.to_string())
+            .collect();
+        got.sort();
+        assert_eq!(got, ["2*m - 1", "m + 3", "m^2 + 1"]);
     }
 
     #[test]
