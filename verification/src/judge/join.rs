@@ -25,6 +25,8 @@
 //! the whole residual as an identity in `u` (the evidence shows one column's
 //! residual, in the printed names).
 
+use std::collections::BTreeSet;
+
 use trig_core::{Domain, Variable};
 use trig_deriv::{
     EndDerivatives, JoinKind, JoinSetup, Wrt, rate, solve_join, solve_join_for, solve_join_with,
@@ -459,21 +461,29 @@ pub fn audit_surface<B: ExactBasis + Clone>(join: &PrintedJoin<B>, u_param: &Sym
     let ends = join.ends();
     // Column `i` is the join of the points `Pⱼ` renamed `Pⱼ_i`: the same
     // computation on other names, so its residuals are the shown ones
-    // renamed (a renaming commutes with every step, [`Sym::rename`]).
+    // renamed (a renaming commutes with every step, [`Sym::rename`]). The
+    // separator is lengthened until no new name is one the residuals have.
     let names = join.names();
-    let columns: Vec<Vec<(String, String)>> = (0..u_basis.len())
-        .map(|i| {
-            names
-                .iter()
-                .map(|n| (n.clone(), format!("{n}_{i}")))
-                .collect()
-        })
-        .collect();
     let surface = |shown: &[Sym]| -> Vec<Sym> {
+        let taken: BTreeSet<String> = shown.iter().flat_map(Sym::variables).collect();
+        let columns = 0..u_basis.len();
+        let separator = (1..)
+            .map(|k| "_".repeat(k))
+            .find(|sep| {
+                names.iter().all(|n| {
+                    columns
+                        .clone()
+                        .all(|i| !taken.contains(&format!("{n}{sep}{i}")))
+                })
+            })
+            .expect("a long enough separator is free");
         let columns: Vec<Vec<Sym>> = columns
-            .iter()
-            .map(|pairs| {
-                let pairs: Vec<(&str, &str)> = pairs
+            .map(|i| {
+                let renamed: Vec<(String, String)> = names
+                    .iter()
+                    .map(|n| (n.clone(), format!("{n}{separator}{i}")))
+                    .collect();
+                let pairs: Vec<(&str, &str)> = renamed
                     .iter()
                     .map(|(a, b)| (a.as_str(), b.as_str()))
                     .collect();
@@ -481,7 +491,7 @@ pub fn audit_surface<B: ExactBasis + Clone>(join: &PrintedJoin<B>, u_param: &Sym
                     .iter()
                     .map(|r| {
                         r.rename(&pairs)
-                            .expect("the points are distinct plain variables")
+                            .expect("control points are distinct plain variables")
                     })
                     .collect()
             })
@@ -787,5 +797,15 @@ mod tests {
         );
         let derived = v.evidence.iter().find(|e| e.kind == Kind::Derived).unwrap();
         assert!(derived.witness.is_some(), "{derived:?}");
+        // a printed symbol named like a point's column (P2_1, beside the
+        // point P2): the columns take a longer separator instead of clashing
+        let clash = PrintedJoin {
+            printed: vec![Printed::new(
+                1,
+                vec![Sym::int(2) * &p[3], -p[2].clone(), Sym::var("P2_1")],
+            )],
+            ..wrong.clone()
+        };
+        assert_eq!(audit_surface(&clash, &Sym::var("m")).status, Status::Fails);
     }
 }
