@@ -156,8 +156,8 @@ fn split_seq(c: &[Integer]) -> (Vec<Integer>, Vec<Integer>) {
         left.push(Integer::from(&work[0] << lack));
         right[n - 1 - r] = Integer::from(&work[n - 1 - r] << lack);
         for i in 0..n - 1 - r {
-            let next = work[i + 1].clone();
-            work[i] += next;
+            let (head, tail) = work.split_at_mut(i + 1);
+            head[i] += &tail[0];
         }
     }
     (left, right)

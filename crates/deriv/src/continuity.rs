@@ -250,18 +250,31 @@ pub fn curve_end(
     weights: Option<&[Sym]>,
     end: End,
 ) -> Vec<Sym> {
+    match polynomial_curves(family, params, points, weights, end) {
+        (curve, None) => curve,
+        (n, Some(w)) => quotient_derivatives(&[&n], &w).remove(0),
+    }
+}
+
+/// The derivatives at `end` of the polynomial curve `Σ bᵢPᵢ`, or of the
+/// numerator `Σ wᵢbᵢPᵢ` and the denominator `Σ wᵢbᵢ` of the rational one.
+fn polynomial_curves(
+    family: Family,
+    params: &[Sym],
+    points: &[Sym],
+    weights: Option<&[Sym]>,
+    end: End,
+) -> (Vec<Sym>, Option<Vec<Sym>>) {
     let one = Sym::one();
     let curve = |points: &[Sym]| {
         curve_endpoint_derivatives::<Sym, K>(family, params, points, None, end, Wrt::U, &one)
     };
-    match weights {
-        None => curve(points),
-        Some(w) => {
-            assert_eq!(w.len(), points.len(), "one weight per control point");
-            let weighted: Vec<Sym> = points.iter().zip(w).map(|(p, wi)| p.clone() * wi).collect();
-            quotient_derivatives(&[&curve(&weighted)], &curve(w)).remove(0)
-        }
-    }
+    let Some(w) = weights else {
+        return (curve(points), None);
+    };
+    assert_eq!(w.len(), points.len(), "one weight per control point");
+    let weighted: Vec<Sym> = points.iter().zip(w).map(|(p, wi)| p.clone() * wi).collect();
+    (curve(&weighted), Some(curve(w)))
 }
 
 /// The jumps `right − left` of the derivatives of orders `0…MAX_ORDER` of
@@ -278,24 +291,13 @@ pub fn curve_jumps(
     (left, right): (&[Sym], &[Sym]),
     weights: Option<(&[Sym], &[Sym])>,
 ) -> Vec<Sym> {
-    let one = Sym::one();
-    let curve = |points: &[Sym], end: End| {
-        curve_endpoint_derivatives::<Sym, K>(family, params, points, None, end, Wrt::U, &one)
-    };
-    let Some((wl, wr)) = weights else {
-        let (l, r) = (curve(left, End::End), curve(right, End::Start));
-        return r.iter().zip(&l).map(|(r, l)| r.clone() - l).collect();
-    };
-    let weighted = |p: &[Sym], w: &[Sym]| -> Vec<Sym> {
-        assert_eq!(w.len(), p.len(), "one weight per control point");
-        p.iter().zip(w).map(|(p, wi)| p.clone() * wi).collect()
-    };
-    let (nl, nr) = (
-        curve(&weighted(left, wl), End::End),
-        curve(&weighted(right, wr), End::Start),
-    );
-    let (wl, wr) = (curve(wl, End::End), curve(wr, End::Start));
-    quotient_jumps((&nl, &wl), (&nr, &wr))
+    let at = |points, weights, end| polynomial_curves(family, params, points, weights, end);
+    let (nl, wl) = at(left, weights.map(|w| w.0), End::End);
+    let (nr, wr) = at(right, weights.map(|w| w.1), End::Start);
+    match (wl, wr) {
+        (Some(wl), Some(wr)) => quotient_jumps((&nl, &wl), (&nr, &wr)),
+        _ => nr.iter().zip(&nl).map(|(r, l)| r.clone() - l).collect(),
+    }
 }
 
 /// The jumps `Dₖ = qₖᴿ − qₖᴸ` of the derivatives of orders `0…` of a
@@ -326,8 +328,6 @@ pub fn quotient_jumps((nl, wl): (&[Sym], &[Sym]), (nr, wr): (&[Sym], &[Sym])) ->
     } else {
         quotient_derivatives(&[&nl[..needed]], &wl[..needed]).remove(0)
     };
-    let binomial =
-        |k: usize, j: usize| Sym::rational(Rational::from(Integer::from(k).binomial(j as u32)));
     let mut jumps: Vec<Sym> = Vec::with_capacity(order);
     for k in 0..order {
         let mut acc = dn[k].clone();
@@ -384,8 +384,6 @@ pub fn quotient_derivatives(numerators: &[&[Sym]], w: &[Sym]) -> Vec<Vec<Sym>> {
     );
     let cleared = |x: &[Sym]| -> Vec<Sym> { x.iter().map(|v| v.clone() * &m).collect() };
     let w = cleared(w);
-    let binomial =
-        |k: usize, j: usize| Sym::rational(Rational::from(Integer::from(k).binomial(j as u32)));
     let inv = Sym::one()
         .checked_div(&w[0])
         .expect("the denominator is nonzero at the point");
@@ -412,6 +410,11 @@ pub fn quotient_derivatives(numerators: &[&[Sym]], w: &[Sym]) -> Vec<Vec<Sym>> {
                 .collect()
         })
         .collect()
+}
+
+/// `C(k, j)` in the exact ring.
+fn binomial(k: usize, j: usize) -> Sym {
+    Sym::rational(Rational::from(Integer::from(k).binomial(j as u32)))
 }
 
 /// The pieces of seed 000's B-spline basis function `F_j` of (1) with the

@@ -1,4 +1,4 @@
-//! Errors of exact evaluation, substitution and renaming.
+//! Errors of exact evaluation and substitution.
 
 use std::fmt;
 
@@ -9,9 +9,6 @@ pub enum SymError {
     UnboundVariable(String),
     /// A denominator factor (printed) vanishes at the given values.
     ZeroDenominator(String),
-    /// A renaming of variables that is not a plain one-to-one renaming
-    /// (why, in words).
-    Rename(String),
 }
 
 impl fmt::Display for SymError {
@@ -21,7 +18,6 @@ impl fmt::Display for SymError {
             SymError::ZeroDenominator(factor) => {
                 write!(f, "the denominator factor `{factor}` vanishes")
             }
-            SymError::Rename(why) => write!(f, "cannot rename: {why}"),
         }
     }
 }

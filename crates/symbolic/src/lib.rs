@@ -56,7 +56,6 @@ pub mod names;
 pub mod poly;
 mod power;
 mod print;
-mod rename;
 pub mod residue;
 mod ring;
 mod roots;

@@ -139,14 +139,14 @@ impl Images {
         if mains.is_empty() {
             return;
         }
-        let images = images_of(p, &mains);
-        for (i, x) in mains.into_iter().enumerate() {
-            let img = images.as_ref().map(|all| {
-                let mut img = all[i].clone();
-                trim(&mut img);
-                img
-            });
-            self.formed.push((x, img));
+        match images_of(p, &mains) {
+            Some(all) => self
+                .formed
+                .extend(mains.into_iter().zip(all).map(|(x, mut img)| {
+                    trim(&mut img);
+                    (x, Some(img))
+                })),
+            None => self.formed.extend(mains.into_iter().map(|x| (x, None))),
         }
     }
 }
@@ -157,7 +157,7 @@ fn images_of(p: &Poly, mains: &[Var]) -> Option<Vec<Vec<u64>>> {
         .iter()
         .map(|&x| vec![0u64; p.degree_in_var(x) as usize + 1])
         .collect();
-    // the residue each variable is sent to (when it is not the main one)
+    // the residue each variable is sent to (where it is not the main one)
     let mut residues: Vec<(Var, u64)> = Vec::new();
     // per term: the main variables it has, with exponent and power residue
     let mut present: Vec<(usize, usize, u64)> = Vec::new();

@@ -24,9 +24,7 @@ pub struct Monomial {
 }
 
 impl Monomial {
-    /// The product of `factors`: variables sorted by the variable order,
-    /// distinct, exponents `≥ 1`.
-    pub(crate) fn from_factors(factors: Vec<(Var, u32)>) -> Monomial {
+    fn from_factors(factors: Vec<(Var, u32)>) -> Monomial {
         let degree = factors.iter().map(|(_, e)| u64::from(*e)).sum();
         Monomial { factors, degree }
     }

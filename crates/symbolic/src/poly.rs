@@ -84,14 +84,6 @@ impl Poly {
         }
     }
 
-    /// The polynomial with the given terms: distinct monomials, nonzero
-    /// coefficients, no power of a reduced atom above the first.
-    pub(crate) fn from_terms(terms: impl Iterator<Item = (Monomial, Coef)>) -> Poly {
-        Poly {
-            terms: terms.collect(),
-        }
-    }
-
     /// Number of terms.
     pub fn len(&self) -> usize {
         self.terms.len()
@@ -260,12 +252,12 @@ impl Poly {
             && d.len() == 1
             && m.factors().all(|(v, _)| !v.is_reduced())
         {
-            let terms: Option<Vec<(Monomial, Coef)>> = self
+            return self
                 .terms
                 .iter()
                 .map(|(n, c)| Some((n.checked_div(m)?, c.checked_div(q)?)))
-                .collect();
-            return terms.map(|t| Poly::from_terms(t.into_iter()));
+                .collect::<Option<_>>()
+                .map(|terms| Poly { terms });
         }
         // Degrees in variables other than s, c add up under multiplication
         // (the quotient ring is an integral domain, free over them).

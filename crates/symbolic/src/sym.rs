@@ -35,11 +35,6 @@ pub struct Sym {
 }
 
 impl Sym {
-    /// `num / Π fᵉ` already in lowest terms, every factor canonical.
-    pub(crate) fn from_lowest_terms(num: Poly, den: BTreeMap<Poly, u32>) -> Sym {
-        Sym { num, den }
-    }
-
     /// The polynomial `p` (no denominator).
     pub fn from_poly(p: Poly) -> Sym {
         Sym {
@@ -231,15 +226,9 @@ fn subs_poly(p: &Poly, name: &str, value: &Sym) -> Sym {
     if value.den.is_empty() {
         return Sym::from_poly(p.subs(name, &value.num));
     }
-    let Some(v) = Var::find(name) else {
-        return Sym::from_poly(p.clone());
-    };
-    let mut groups: BTreeMap<u32, Poly> = BTreeMap::new();
-    for (m, q) in p.terms() {
-        let (rest, e) = m.split_off(v);
-        groups.entry(e).or_default().add_term(rest, q.clone());
-    }
-    let top = groups.keys().next_back().copied().unwrap_or(0);
+    // p = Σ gₑ xᵉ
+    let groups = p.coefficients_in(name);
+    let top = groups.len() - 1;
     if top == 0 {
         return Sym::from_poly(p.clone());
     }
@@ -248,17 +237,14 @@ fn subs_poly(p: &Poly, name: &str, value: &Sym) -> Sym {
     let b = value.denominator_poly();
     let mut b_power = Poly::one();
     let mut acc = Poly::zero();
-    for e in (0..=top).rev() {
-        acc = &acc * &value.num;
-        if let Some(g) = groups.get(&e) {
-            acc = acc + &(g * &b_power);
-        }
+    for g in groups.iter().rev() {
+        acc = &acc * &value.num + &(g * &b_power);
         b_power = &b_power * &b;
     }
     let den = value
         .den
         .iter()
-        .map(|(f, k)| (f.clone(), k * top))
+        .map(|(f, k)| (f.clone(), k * top as u32))
         .collect();
     cancel(acc, den)
 }

@@ -21,7 +21,7 @@ use trig_symbolic::Sym;
 use super::thesis::claim;
 use crate::claim::{Claim, shared};
 use crate::exact::{identities, symbols};
-use crate::judge::join::{Printed, PrintedJoin, audit, audit_surface};
+use crate::judge::join::{Printed, PrintedJoin, audit};
 use crate::status::Status;
 use crate::verdict::Verdict;
 
@@ -367,10 +367,10 @@ fn t19() -> Verdict {
 fn surface(kind: JoinKind, same: bool, printed: Vec<Printed>) -> Verdict {
     if same {
         let join = thesis_join(kind, true, printed);
-        return audit_surface(&join, &v("m"));
+        return audit(&join);
     }
     let join = thesis_join(kind, false, printed);
-    let mut verdict = audit_surface(&join, &v("m1"));
+    let mut verdict = audit(&join);
     let literal = PrintedJoin {
         first_params: vec![v("m2")],
         second_params: vec![v("m2")],

@@ -19,13 +19,15 @@
 //! fails, whatever the residuals.
 //!
 //! A surface join in one direction of two tensor patches with the same
-//! parameter across the boundary reduces column by column to the curve join:
-//! `∂ᵏS₂(u, 0) − target = Σᵢ Bᵢ(u; m₁)·rᵢ,ₖ` where `rᵢ,ₖ` is the curve residual of
-//! column `i`; [`audit_surface`] builds the columns symbolically and decides
-//! the whole residual as an identity in `u` (the evidence shows one column's
-//! residual, in the printed names).
-
-use std::collections::BTreeSet;
+//! parameter across the boundary is the curve join of one column:
+//! `∂ᵏS₂(u, 0) − target = Σᵢ Bᵢ(u)·rᵢ,ₖ`, where `rᵢ,ₖ` is the curve residual
+//! `rₖ` with the column's own control points `Pⱼ,ᵢ` in place of the `Pⱼ`.
+//! Write `rₖ = r⁰ₖ + r¹ₖ` (`r¹ₖ` the terms with a control point): the sum
+//! is `r⁰ₖ·Σᵢ Bᵢ + Σᵢ Bᵢ·r¹ₖ(Pⱼ,ᵢ)`, whose parts have disjoint monomials
+//! (no point, the points of column `i`), so it vanishes identically exactly
+//! when `r⁰ₖ = 0` and every `Bᵢ·r¹ₖ = 0` — that is, when `rₖ = 0`: the `Bᵢ`
+//! are linearly independent, so neither a `Bᵢ` nor their sum is zero, in
+//! an integral domain. So [`audit`] decides a surface join too.
 
 use trig_core::{Domain, Variable};
 use trig_deriv::{
@@ -36,7 +38,7 @@ use trig_symbolic::Sym;
 
 use crate::evidence::{Evidence, Expr, Kind};
 use crate::exact::ExactBasis;
-use crate::exact::{IDENTITY, basis_of, sum, symbols};
+use crate::exact::{IDENTITY, sum, symbols};
 use crate::judge::domain::{describe_wrt, param_symbols};
 use crate::status::Status;
 use crate::verdict::Verdict;
@@ -435,115 +437,18 @@ pub fn holds_as_printed<B: ExactBasis + Clone>(join: &PrintedJoin<B>) -> bool {
         .all(Sym::is_zero)
 }
 
-/// Decides a printed curve join.
+/// Decides a printed curve join, or a surface join by one column (see the
+/// [module documentation](self)).
 pub fn audit<B: ExactBasis + Clone>(join: &PrintedJoin<B>) -> Verdict {
     let ends = join.ends();
-    decide(
-        join,
-        &Residuals {
-            shown: &|wrt, printed| join.residuals_in(&ends, wrt, printed),
-            surface: None,
-        },
-    )
-}
-
-/// Decides a printed surface join across the boundary `v = 1 | v = 0` of two
-/// tensor patches `S = Σᵢ Σⱼ Bᵢ(u; u_param) Bⱼ(v; ·) Pᵢⱼ` with the same
-/// `u_param` on both sides: each column `i` gets its own points `Pⱼ_i`, the
-/// printed formulas apply column by column, and the cross-boundary residual
-/// `Σᵢ Bᵢ(u)·rᵢ` must vanish identically in `u`.
-pub fn audit_surface<B: ExactBasis + Clone>(join: &PrintedJoin<B>, u_param: &Sym) -> Verdict {
-    let params = join.basis.param_names();
-    let u_basis: Vec<Sym> = basis_of(&join.basis)
-        .iter()
-        .map(|f| f.subs(&params[0], u_param))
-        .collect();
-    let ends = join.ends();
-    // Column `i` is the join of the points `Pⱼ` renamed `Pⱼ_i`: the same
-    // computation on other names, so its residuals are the shown ones
-    // renamed (a renaming commutes with every step, [`Sym::rename`]). The
-    // separator is lengthened until no new name is one the residuals have.
-    let names = join.names();
-    let surface = |shown: &[Sym]| -> Vec<Sym> {
-        let taken: BTreeSet<String> = shown.iter().flat_map(Sym::variables).collect();
-        let columns = 0..u_basis.len();
-        let separator = (1..)
-            .map(|k| "_".repeat(k))
-            .find(|sep| {
-                names.iter().all(|n| {
-                    columns
-                        .clone()
-                        .all(|i| !taken.contains(&format!("{n}{sep}{i}")))
-                })
-            })
-            .expect("a long enough separator is free");
-        let columns: Vec<Vec<Sym>> = columns
-            .map(|i| {
-                let renamed: Vec<(String, String)> = names
-                    .iter()
-                    .map(|n| (n.clone(), format!("{n}{separator}{i}")))
-                    .collect();
-                let pairs: Vec<(&str, &str)> = renamed
-                    .iter()
-                    .map(|(a, b)| (a.as_str(), b.as_str()))
-                    .collect();
-                shown
-                    .iter()
-                    .map(|r| {
-                        r.rename(&pairs)
-                            .expect("control points are distinct plain variables")
-                    })
-                    .collect()
-            })
-            .collect();
-        (0..=join.kind.order())
-            .map(|k| {
-                sum(&columns
-                    .iter()
-                    .zip(&u_basis)
-                    .map(|(r, bi)| bi.clone() * &r[k])
-                    .collect::<Vec<_>>())
-            })
-            .collect()
-    };
-    decide(
-        join,
-        &Residuals {
-            // the residual of one column, in the printed names
-            shown: &|wrt, printed| join.residuals_in(&ends, wrt, printed),
-            surface: Some(&surface),
-        },
-    )
+    decide(join, &|wrt, printed| join.residuals_in(&ends, wrt, printed))
 }
 
 /// A residual function `(convention, printed) ↦ residuals`.
 type ResidualFn<'a> = &'a dyn Fn(Wrt, &[Printed]) -> Vec<Sym>;
 
-/// A surface's whole residual from one column's.
-type SurfaceFn<'a> = &'a dyn Fn(&[Sym]) -> Vec<Sym>;
-
-/// How a join's residuals are computed: those shown as evidence (a curve's;
-/// for a surface, one column's in the printed names), and a surface's
-/// whole residual, which decides. The column's vanishes exactly when every
-/// column's does, hence exactly when the surface's does (the `u`-basis is
-/// linearly independent); it is the cheap screen, the surface's the proof.
-struct Residuals<'a> {
-    shown: ResidualFn<'a>,
-    surface: Option<SurfaceFn<'a>>,
-}
-
-impl Residuals<'_> {
-    /// The residuals that decide, given the shown ones.
-    fn deciding(&self, shown: &[Sym]) -> Vec<Sym> {
-        match self.surface {
-            Some(surface) => surface(shown),
-            None => shown.to_vec(),
-        }
-    }
-}
-
-/// The verdict from the join's [`Residuals`].
-fn decide<B: ExactBasis + Clone>(join: &PrintedJoin<B>, residuals: &Residuals<'_>) -> Verdict {
+/// The verdict from the join's residuals.
+fn decide<B: ExactBasis + Clone>(join: &PrintedJoin<B>, residuals: ResidualFn<'_>) -> Verdict {
     let verdict = decide_residuals(join, residuals);
     let singular: Vec<String> = join
         .printed
@@ -576,7 +481,7 @@ fn decide<B: ExactBasis + Clone>(join: &PrintedJoin<B>, residuals: &Residuals<'_
 
 fn decide_residuals<B: ExactBasis + Clone>(
     join: &PrintedJoin<B>,
-    residuals: &Residuals<'_>,
+    residuals: ResidualFn<'_>,
 ) -> Verdict {
     let names = join.names();
     let domain = join.basis.domain();
@@ -585,12 +490,11 @@ fn decide_residuals<B: ExactBasis + Clone>(
     let mut evidence = Vec::new();
     let mut holding = Vec::new();
     for wrt in &join.conventions {
-        let shown = (residuals.shown)(*wrt, &join.printed);
-        let r = residuals.deciding(&shown);
+        let r = residuals(*wrt, &join.printed);
         if holds(&r) {
             holding.push(*wrt);
         }
-        evidence.push(describe(label(&domain, *wrt), &shown, &names));
+        evidence.push(describe(label(&domain, *wrt), &r, &names));
     }
     let printed_wrt = join.printed_wrt();
     if holding.contains(&printed_wrt) {
@@ -626,11 +530,10 @@ fn the(label: &str) -> String {
 /// The fewest sign flips — one term in one printed formula, else one term in
 /// each of two formulas (a sign typo per formula, as when a formula reuses
 /// an earlier one that has its own) — that make the printed formulas hold
-/// in the printed convention, described. Candidates are screened on the
-/// shown residual and confirmed on the deciding one ([`Residuals`]).
+/// in the printed convention, described.
 fn sign_fix<B: ExactBasis + Clone>(
     join: &PrintedJoin<B>,
-    residuals: &Residuals<'_>,
+    residuals: ResidualFn<'_>,
 ) -> Option<String> {
     let names = join.names();
     let wrt = join.printed_wrt();
@@ -655,11 +558,9 @@ fn sign_fix<B: ExactBasis + Clone>(
             .filter(move |g| g.0 != f.0)
             .map(move |g| vec![*f, *g])
     });
-    let found = singles.chain(pairs).find(|chosen| {
-        let printed = with(chosen);
-        let shown = (residuals.shown)(wrt, &printed);
-        zero(&shown) && zero(&residuals.deciding(&shown))
-    })?;
+    let found = singles
+        .chain(pairs)
+        .find(|chosen| zero(&residuals(wrt, &with(chosen))))?;
     let terms: Vec<String> = found
         .iter()
         .map(|&(i, k)| {
@@ -771,7 +672,7 @@ mod tests {
     }
 
     #[test]
-    fn a_surface_join_is_decided_as_an_identity_in_u() {
+    fn a_join_is_decided_by_its_residuals() {
         let p = symbols("P", 4);
         let join = PrintedJoin::new(
             Family::ThesisCubic,
@@ -783,12 +684,12 @@ mod tests {
             ),
             vec![Printed::new(1, vec![Sym::int(2) * &p[3], -p[2].clone()])],
         );
-        assert_eq!(audit_surface(&join, &Sym::var("m")).status, Status::Holds);
+        assert_eq!(audit(&join).status, Status::Holds);
         let wrong = PrintedJoin {
             printed: vec![Printed::new(1, vec![p[3].clone()])],
             ..join
         };
-        let v = audit_surface(&wrong, &Sym::var("m"));
+        let v = audit(&wrong);
         assert_eq!(v.status, Status::Fails);
         assert!(
             v.evidence[0].contains("order-1 condition = (m + 2)·P₂"),
@@ -797,15 +698,5 @@ mod tests {
         );
         let derived = v.evidence.iter().find(|e| e.kind == Kind::Derived).unwrap();
         assert!(derived.witness.is_some(), "{derived:?}");
-        // a printed symbol named like a point's column (P2_1, beside the
-        // point P2): the columns take a longer separator instead of clashing
-        let clash = PrintedJoin {
-            printed: vec![Printed::new(
-                1,
-                vec![Sym::int(2) * &p[3], -p[2].clone(), Sym::var("P2_1")],
-            )],
-            ..wrong.clone()
-        };
-        assert_eq!(audit_surface(&clash, &Sym::var("m")).status, Status::Fails);
     }
 }
