@@ -3,7 +3,7 @@
 
 use std::sync::OnceLock;
 
-use crate::verdict::Verdict;
+use trig_verdict::verdict::Verdict;
 
 /// The five source documents.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]

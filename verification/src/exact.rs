@@ -9,10 +9,10 @@ use trig_deriv::End;
 use trig_specfile::{AnyBasis, Spec};
 use trig_symbolic::{Sym, symbolic_atoms};
 
-use crate::evidence::{Evidence, Expr, Kind};
-use crate::status::Status;
-use crate::verdict::Verdict;
-use crate::witness;
+use trig_verdict::evidence::{Evidence, Expr, Kind};
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
+use trig_verdict::witness;
 
 /// How identities are decided, as the report states it.
 pub const IDENTITY: &str =

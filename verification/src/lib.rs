@@ -10,7 +10,6 @@ pub mod budget;
 pub mod certify;
 pub mod claim;
 mod claims;
-pub mod evidence;
 pub mod exact;
 pub mod figures;
 pub mod judge;
@@ -18,17 +17,11 @@ mod memo;
 pub mod minimum;
 pub mod numeric;
 pub mod parallel;
-pub mod real_witness;
 pub mod report;
 pub mod spec_audit;
-pub mod status;
-pub mod verdict;
-pub mod witness;
 
 pub use claim::{Claim, Seed};
-pub use evidence::{Evidence, EvidenceList, Expr, Witness};
-pub use status::Status;
-pub use verdict::Verdict;
+pub use trig_verdict::{Evidence, EvidenceList, Expr, Status, Verdict, Witness};
 
 /// Every claim the audit decides, in report order.
 pub fn all_claims() -> Vec<Claim> {

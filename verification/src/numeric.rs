@@ -5,7 +5,7 @@
 use rug::Rational;
 use trig_core::{Family, Mpfr, Real, Ring};
 
-use crate::evidence::{Assignment, Evidence, Expr, Kind, Value, Witness};
+use trig_verdict::evidence::{Assignment, Evidence, Expr, Kind, Value, Witness};
 
 /// Working precision of every counterexample.
 pub const PREC: u32 = 256;

@@ -6,7 +6,7 @@
 use std::path::PathBuf;
 
 use trig_specfile::Spec;
-use trig_verification::evidence::Witness;
+use trig_verification::Witness;
 use trig_verification::{Status, Verdict, spec_audit};
 
 /// An example spec file with one shape-effect claim appended, decided.

@@ -14,12 +14,12 @@ use trig_symbolic::Sym;
 use super::local_control_joins::{d17, t51, t54, t65};
 use super::seed002::rational_ends;
 use crate::claim::{Claim, Seed};
-use crate::evidence::Evidence;
 use crate::exact::{IDENTITY, basis, identities, symbols};
 use crate::judge::continuity::at_least;
 use crate::judge::local_control::{self, Control, Entry, compare};
-use crate::status::Status;
-use crate::verdict::Verdict;
+use trig_verdict::evidence::Evidence;
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 /// In report order (after each document's first-list claims).
 pub const CLAIMS: &[Claim] = &[

@@ -12,11 +12,11 @@ use trig_deriv::End;
 use trig_symbolic::Sym;
 
 use super::local_control::{seed002_segment, thesis_tangents};
-use crate::evidence::{Evidence, Kind};
 use crate::exact::{IDENTITY, TARGET, VALUE, identities, identity_item, symbols};
-use crate::status::Status;
-use crate::verdict::Verdict;
-use crate::witness;
+use trig_verdict::evidence::{Evidence, Kind};
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
+use trig_verdict::witness;
 
 /// `κ²` of a plane curve from its first and second derivative vectors:
 /// `(x'y'' − y'x'')² / (x'² + y'²)³`.

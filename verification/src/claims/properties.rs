@@ -11,8 +11,8 @@ use super::properties_formulas::{e19, e23, m21, t45, t63};
 use crate::claim::{Claim, Seed};
 use crate::exact::IDENTITY;
 use crate::judge::{endpoint, independence, nonnegative, span, unity};
-use crate::status::Status;
-use crate::verdict::Verdict;
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 /// In report order (after each document's first-list claims).
 pub const CLAIMS: &[Claim] = &[

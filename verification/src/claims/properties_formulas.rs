@@ -10,8 +10,8 @@ use trig_symbolic::Sym;
 
 use super::seed004::{hermite_segment, interpolation_conditions};
 use crate::exact::IDENTITY;
-use crate::status::Status;
-use crate::verdict::Verdict;
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 /// `t = (x − x_i)/h_i` on segment `i` (the reading of E1cb: the printed
 /// `t = (x_{i+1} − x_i)/h_i` is the constant 1).
@@ -119,13 +119,13 @@ pub(super) fn m21() -> Verdict {
         "not so: some ∂/∂H_j = 0"
     };
     v.evidence.push(
-        crate::evidence::Evidence::new(
-            crate::evidence::Kind::Comparison,
+        trig_verdict::evidence::Evidence::new(
+            trig_verdict::evidence::Kind::Comparison,
             format!(
                 "with control points: Σ w_j F_j H_j / Σ w_j F_j depends on every H_j ({shape})"
             ),
         )
-        .witnessed(crate::witness::find(
+        .witnessed(trig_verdict::witness::find(
             &printed,
             &curve,
             ("printed Y(n)", "Σ w_j F_j H_j / Σ w_j F_j"),

@@ -12,12 +12,12 @@ use trig_symbolic::Sym;
 
 use super::thesis_interp::{derivs, positivity};
 use crate::claim::{Claim, Seed};
-use crate::evidence::Evidence;
 use crate::exact::{IDENTITY, basis, identities, identity_item, sum, symbols};
 use crate::judge::{nonnegative, span};
-use crate::status::Status;
-use crate::verdict::Verdict;
-use crate::witness;
+use trig_verdict::evidence::Evidence;
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
+use trig_verdict::witness;
 
 /// In report order (after the other second-list claims of each document).
 pub const CLAIMS: &[Claim] = &[

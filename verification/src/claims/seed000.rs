@@ -12,9 +12,9 @@ use super::seed000_appendix_c::{NONUNIFORM_J, nonuniform_knots};
 use crate::claim::{Claim, Seed};
 use crate::exact::{IDENTITY, basis, identities, residual_verdict, sum};
 use crate::judge::certificate::nonnegative_on;
-use crate::status::Status;
-use crate::verdict::Verdict;
 use trig_certify::ParamBox;
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[
     Claim {

@@ -13,9 +13,9 @@ use crate::certify::nonneg::certify;
 use crate::claim::{Claim, Seed};
 use crate::exact::{IDENTITY, basis, symbols};
 use crate::judge::certificate::{CERTIFIED, describe};
-use crate::status::Status;
-use crate::verdict::Verdict;
 use trig_certify::{ParamBox, in_z};
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[Claim {
     id: "M11",

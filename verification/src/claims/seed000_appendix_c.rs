@@ -13,11 +13,11 @@ use super::seed000_appendix_print::{printed_part, zeta};
 use crate::claim::{Claim, Seed, shared};
 use crate::exact::{IDENTITY, symbols};
 use crate::judge::continuity::{METHOD, at_least, describe, knot_witness};
-use crate::status::Status;
-use crate::verdict::Verdict;
 use trig_deriv::continuity::{
     self, KnotContinuity, curve_jumps, nonuniform_bspline, uniform_bspline,
 };
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[
     Claim {
@@ -381,8 +381,9 @@ fn m9b() -> Verdict {
 /// generic ξ (then every ξ outside the finitely many exceptions is a
 /// counterexample); the exceptional values where C⁵ holds are listed.
 fn c5_except_one(label: &str, knots: &[KnotContinuity]) -> Verdict {
-    let mut evidence =
-        crate::evidence::EvidenceList::from(vec![format!("{label}: C^5 claimed for every ξ ≠ 1")]);
+    let mut evidence = trig_verdict::evidence::EvidenceList::from(vec![format!(
+        "{label}: C^5 claimed for every ξ ≠ 1"
+    )]);
     for k in knots.iter().filter(|k| !k.smoothness.is_at_least(5)) {
         let good: Vec<String> = k
             .exceptions
@@ -391,7 +392,7 @@ fn c5_except_one(label: &str, knots: &[KnotContinuity]) -> Verdict {
             .map(|e| e.value.to_string())
             .collect();
         evidence.push(
-            crate::evidence::Evidence::note(format!(
+            trig_verdict::evidence::Evidence::note(format!(
                 "knot {}: {} for every ξ except ξ ∈ {{{}}}, where it is C^5",
                 k.knot,
                 k.smoothness,

@@ -19,8 +19,8 @@ use trig_symbolic::Sym;
 use super::seed000_appendix_print::{Shorthand, printed_part, zeta};
 use crate::claim::{Claim, Seed};
 use crate::exact::{IDENTITY, symbols};
-use crate::verdict::Verdict;
 use trig_deriv::continuity::quotient_derivatives;
+use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[
     Claim {
@@ -626,7 +626,7 @@ fn m15() -> Verdict {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::status::Status;
+    use trig_verdict::status::Status;
 
     #[test]
     fn printed_values_that_are_right_hold_and_wrong_ones_fail() {

@@ -16,11 +16,11 @@ use rug::Rational;
 use trig_specfile::{Expression, FormulaError, Grammar};
 use trig_symbolic::Sym;
 
-use crate::evidence::{self, Evidence, Kind};
 use crate::exact::IDENTITY;
-use crate::status::Status;
-use crate::verdict::Verdict;
-use crate::witness::witness;
+use trig_verdict::evidence::{self, Evidence, Kind};
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
+use trig_verdict::witness::witness;
 
 /// `ζ` as the catalog names it.
 pub fn zeta() -> Sym {
@@ -137,7 +137,7 @@ pub fn compare(printed: &Expression, computed: &Sym) -> Verdict {
         let item = Evidence::new(Kind::Comparison, "")
             .with("computed", evidence::Expr::new(computed))
             .with("printed − computed", evidence::Expr::new(&residual))
-            .witnessed(crate::witness::of_residual(&residual));
+            .witnessed(trig_verdict::witness::of_residual(&residual));
         Verdict::new(Status::Fails, IDENTITY, [item])
     }
 }
@@ -166,7 +166,7 @@ pub fn printed_part(
 }
 
 /// A small witness of `printed ≠ computed`: the test point of [`POINT`]
-/// simplified variable by variable ([`crate::witness::search`], with `π`
+/// simplified variable by variable ([`trig_verdict::witness::search`], with `π`
 /// given its rational stand-in while searching: sides that differ there
 /// are different rational functions of `π`, so they differ at `π` too), the
 /// two values then shown with `π` as a symbol.
@@ -183,7 +183,7 @@ fn simple_witness(printed: &Expression, computed: &Sym) -> Option<crate::Witness
     // (a coincidence modulo the prime must not hide the witness); while
     // simplifying it, equal images are taken as equal values (a coincidence
     // only leaves the witness less simple).
-    let differ = |p: &crate::witness::Point, exact_when_equal: bool| {
+    let differ = |p: &trig_verdict::witness::Point, exact_when_equal: bool| {
         let value = |n: &str| -> Option<Rational> {
             if n == "pi" {
                 return Some(pi.clone());
@@ -200,16 +200,16 @@ fn simple_witness(printed: &Expression, computed: &Sym) -> Option<crate::Witness
             (Ok(a), Ok(b)) if a != b
         )
     };
-    let start: crate::witness::Point = names
+    let start: trig_verdict::witness::Point = names
         .iter()
         .filter_map(|n| point_value(n).map(|q| (n.clone(), q)))
         .collect();
     let found = if differ(&start, true) {
         start
     } else {
-        crate::witness::first_point(&names, &|p| differ(p, true))?
+        trig_verdict::witness::first_point(&names, &|p| differ(p, true))?
     };
-    let point = crate::witness::search_from(found, &|p| differ(p, false));
+    let point = trig_verdict::witness::search_from(found, &|p| differ(p, false));
     let symbolic = |n: &str| -> Option<Sym> {
         if n == "pi" {
             return Some(Sym::pi());

@@ -7,16 +7,16 @@ use trig_deriv::{End, Wrt, curve_endpoint_derivatives};
 use trig_symbolic::{Poly, Sym};
 
 use crate::claim::{Claim, Seed};
-use crate::evidence::EvidenceList;
 use crate::exact::{
     IDENTITY, basis, combination, identities, identity, linear_map_parts, reflect, sum, symbols,
 };
 use crate::judge::certificate::nonnegative_on;
 use crate::judge::maxima::exactly_one_maximum;
 use crate::judge::symmetry::reflection_symmetry;
-use crate::status::Status;
-use crate::verdict::Verdict;
 use trig_certify::ParamBox;
+use trig_verdict::evidence::EvidenceList;
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[
     Claim {

@@ -6,10 +6,10 @@ use trig_deriv::{Wrt, knot_derivatives};
 use trig_symbolic::Sym;
 
 use crate::claim::{Claim, Seed};
-use crate::evidence::EvidenceList;
 use crate::exact::IDENTITY;
-use crate::status::Status;
-use crate::verdict::Verdict;
+use trig_verdict::evidence::EvidenceList;
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[
     Claim {

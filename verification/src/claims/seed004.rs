@@ -13,9 +13,9 @@ use crate::exact::{
     IDENTITY, basis, combination, identities, identity, linear_map_parts, reflect, sum, symbols,
 };
 use crate::judge::symmetry::reflection_symmetry;
-use crate::status::Status;
-use crate::verdict::Verdict;
 use trig_certify::ParamBox;
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[
     Claim {

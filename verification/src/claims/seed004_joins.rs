@@ -15,11 +15,11 @@ use trig_deriv::{End, JoinKind, Wrt, curve_endpoint_derivatives};
 use trig_symbolic::Sym;
 
 use crate::claim::{Claim, Seed};
-use crate::evidence::{Assignment, Evidence, EvidenceList, Expr, Value, Witness};
 use crate::exact::{IDENTITY, symbols};
 use crate::judge::join::{Printed, PrintedJoin, audit};
-use crate::status::Status;
-use crate::verdict::Verdict;
+use trig_verdict::evidence::{Assignment, Evidence, EvidenceList, Expr, Value, Witness};
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[
     Claim {

@@ -11,15 +11,15 @@ use trig_specfile::Direction;
 use trig_symbolic::Sym;
 
 use crate::claim::{Claim, Seed};
-use crate::evidence::{Evidence, Expr};
 use crate::exact::{IDENTITY, identity_item};
 use crate::judge::certificate::CERTIFIED;
 use crate::judge::nonnegative::convex_hull;
 use crate::judge::shape_effect::{
     Move, Point, SHAPE, TOWARDS, moves, polygon_distances, shape_effect, weights_move,
 };
-use crate::status::Status;
-use crate::verdict::Verdict;
+use trig_verdict::evidence::{Evidence, Expr};
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 /// In report order (after the second list's other claims).
 pub const CLAIMS: &[Claim] = &[
@@ -568,7 +568,7 @@ fn d15() -> Verdict {
         .chain([("w2".to_string(), q(2, 1))])
         .collect();
     let names: Vec<String> = point.iter().map(|(n, _)| n.clone()).collect();
-    let mut witness = crate::witness::witness(
+    let mut witness = trig_verdict::witness::witness(
         &point,
         &names,
         vec![
@@ -604,9 +604,9 @@ fn d15() -> Verdict {
     for (value, formula) in witness.values.iter_mut().zip(formulas) {
         value.of = Some(formula);
     }
-    witness.stated = Some(crate::evidence::Relation::AtMost);
+    witness.stated = Some(trig_verdict::evidence::Relation::AtMost);
     let item = Evidence::new(
-        crate::evidence::Kind::Comparison,
+        trig_verdict::evidence::Kind::Comparison,
         format!(
             "exact curvatures at P0 (polygon (0,0), (1,0), (1,1), …; derivatives of (1) in θ, of the Bernstein polynomials in u, curvature being independent of the parameter): {}",
             shown.join("; ")

@@ -9,7 +9,6 @@ use trig_deriv::End;
 use trig_symbolic::Sym;
 
 use crate::claim::{Claim, Seed};
-use crate::evidence::Evidence;
 use crate::exact::{
     at_end, basis, combination, identities, identity, residual_verdict, sum, symbols,
 };
@@ -18,9 +17,10 @@ use crate::judge::certificate::{
 };
 use crate::judge::symmetry::reflection_symmetry;
 use crate::numeric::{counterexample_item, differ, half_pi_minus, point, show, value};
-use crate::status::Status;
-use crate::verdict::Verdict;
 use trig_certify::ParamBox;
+use trig_verdict::evidence::Evidence;
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 /// A claim of the thesis (seed 001); shared by the thesis claim files.
 pub(super) const fn claim(
@@ -330,7 +330,7 @@ fn t27() -> Verdict {
         ("c".to_string(), Rational::from((4, 5))),
     ];
     let total = sum(&basis(Family::ThesisCubic));
-    let witness = crate::witness::of_exprs(
+    let witness = trig_verdict::witness::of_exprs(
         &point,
         &["m".into(), "s".into(), "c".into()],
         &[("Σ b_i (claimed ≠ 1)", &total)],
@@ -436,7 +436,7 @@ fn t37() -> Verdict {
     ];
     let curve = crate::exact::combination(&h, &points(3));
     // the control points stay symbols: F is P1 there, whatever they are
-    let witness = crate::witness::of_exprs(
+    let witness = trig_verdict::witness::of_exprs(
         &point,
         &["beta".into(), "s".into(), "c".into()],
         &[("F (the same point P1 for every θ)", &curve)],

@@ -21,11 +21,11 @@ use trig_symbolic::Sym;
 use super::thesis::claim;
 use super::thesis_interp_point::piece_witness;
 use crate::claim::Claim;
-use crate::evidence::{Assignment, Evidence, EvidenceList, Expr, Relation, Value, Witness};
 use crate::exact::{IDENTITY, identities};
 use crate::memo::Memo;
-use crate::status::Status;
-use crate::verdict::Verdict;
+use trig_verdict::evidence::{Assignment, Evidence, EvidenceList, Expr, Relation, Value, Witness};
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[
     claim(

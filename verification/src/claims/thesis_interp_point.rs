@@ -15,7 +15,7 @@ use trig_interp::interval::{pi_hi, pi_lo};
 use trig_interp::{Interval, Spline};
 use trig_symbolic::{Sym, symbolic_atoms};
 
-use crate::evidence::{Assignment, Expr, Relation, Value, Witness};
+use trig_verdict::evidence::{Assignment, Expr, Relation, Value, Witness};
 
 /// `(s, c)` at `z = tan(θ/2)`.
 fn circle(z: &Rational) -> (Rational, Rational) {

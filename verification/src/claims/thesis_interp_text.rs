@@ -16,11 +16,11 @@ use super::thesis::claim;
 use super::thesis_interp::{positivity, sym_spline};
 use super::thesis_interp_point::piece_witness;
 use crate::claim::Claim;
-use crate::evidence::{Evidence, Expr, Kind, Relation, Value, Witness};
 use crate::judge::quoted::decimal;
 use crate::judge::recomputed::{self, Cell, Recomputed};
-use crate::status::Status;
-use crate::verdict::Verdict;
+use trig_verdict::evidence::{Evidence, Expr, Kind, Relation, Value, Witness};
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[
     claim(

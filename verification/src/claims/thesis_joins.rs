@@ -22,8 +22,8 @@ use super::thesis::claim;
 use crate::claim::{Claim, shared};
 use crate::exact::{identities, symbols};
 use crate::judge::join::{Printed, PrintedJoin, audit};
-use crate::status::Status;
-use crate::verdict::Verdict;
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 mod cylinder;
 

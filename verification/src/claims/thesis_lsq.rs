@@ -17,8 +17,8 @@ use trig_symbolic::Sym;
 use super::thesis::claim;
 use crate::claim::Claim;
 use crate::exact::{IDENTITY, identities};
-use crate::status::Status;
-use crate::verdict::Verdict;
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[claim(
     "T64",

@@ -14,11 +14,11 @@ use trig_core::Family;
 use trig_symbolic::Sym;
 
 use crate::claim::{Claim, Seed};
-use crate::evidence::Evidence;
 use crate::exact::basis;
-use crate::status::Status;
-use crate::verdict::Verdict;
-use crate::witness;
+use trig_verdict::evidence::Evidence;
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
+use trig_verdict::witness;
 
 pub const CLAIMS: &[Claim] = &[Claim {
     id: "T52",

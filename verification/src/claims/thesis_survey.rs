@@ -10,10 +10,10 @@ use rug::Rational;
 
 use super::thesis::claim;
 use crate::claim::Claim;
-use crate::evidence::{Evidence, Kind};
 use crate::judge::quoted::quoted_figure;
-use crate::status::Status;
-use crate::verdict::Verdict;
+use trig_verdict::evidence::{Evidence, Kind};
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[claim(
     "T69",

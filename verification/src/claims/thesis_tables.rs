@@ -23,12 +23,12 @@ use rug::{Integer, Rational};
 use trig_symbolic::Sym;
 
 use crate::claim::{Claim, Seed};
-use crate::evidence::EvidenceList;
-use crate::evidence::{Evidence, Kind, Relation};
 use crate::judge::quoted::decimal;
 use crate::judge::recomputed::{self, Cell, Recomputed};
-use crate::status::Status;
-use crate::verdict::Verdict;
+use trig_verdict::evidence::EvidenceList;
+use trig_verdict::evidence::{Evidence, Kind, Relation};
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[Claim {
     id: "T32",
@@ -442,7 +442,7 @@ fn table_verdict(t: &Table, tables: &[Table]) -> Verdict {
             } else {
                 format!(
                     "{} consistent",
-                    crate::report::plural(passed, "other relation", "other relations")
+                    trig_verdict::plural(passed, "other relation", "other relations")
                 )
             });
             Verdict::new(

@@ -15,11 +15,11 @@ use trig_symbolic::Sym;
 use super::thesis::claim;
 use super::thesis_tables::{DATA, Num, SCHEMES, SYMBOLS, Table, parse, summary_row, total_row};
 use crate::claim::Claim;
-use crate::evidence::{Evidence, Kind, Relation, Witness};
 use crate::judge::quoted::{QUOTED, decimal, quoted_figure, quoted_order};
 use crate::judge::recomputed::{self, Cell, Recomputed};
-use crate::status::Status;
-use crate::verdict::Verdict;
+use trig_verdict::evidence::{Evidence, Kind, Relation, Witness};
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[
     claim(

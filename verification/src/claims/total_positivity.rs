@@ -16,8 +16,8 @@ use crate::exact::{IDENTITY, identities, symbols};
 use crate::judge::certificate::CERTIFIED;
 use crate::judge::total_positivity::{CONSEQUENCES, normalized_totally_positive};
 use crate::judge::{endpoint, nonnegative, unity};
-use crate::status::Status;
-use crate::verdict::Verdict;
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 /// In report order (after the other second-list claims).
 pub const CLAIMS: &[Claim] = &[

@@ -16,7 +16,7 @@ use trig_certify::range::simplest_between;
 use trig_symbolic::Sym;
 
 use crate::exact::ExactBasis;
-use crate::status::Status;
+use trig_verdict::status::Status;
 
 /// The analytic engine, as the report states it.
 pub const ANALYTIC: &str = "the maximal interval by the analytic engine: a grid of certified point tests from a value inside the printed range and bisection bracket each end; an end is exact where the basis is undefined or its equation vanishes exactly, or where, at a stationary minimum of a trigonometric basis, eliminating the variable by resultants leaves exactly one root in the certified enclosure of the end, certified where a Krawczyk step proves the unique root of the equation of the end (the factor that changes sign, at the end of the domain or at a stationary minimum) and branch and bound proves that admissibility changes exactly there, a bracket otherwise; the part inside the ends is proved as a whole";

@@ -15,9 +15,9 @@ use super::analytic;
 use crate::exact::ExactBasis;
 use crate::exact::basis_of;
 use crate::memo::Memo;
-use crate::real_witness::context_key;
-use crate::status::Status;
-use crate::verdict::Verdict;
+use trig_verdict::real_witness::context_key;
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 /// How the interval method decides, as the report states it.
 pub const INTERVAL: &str = "certified: branch and bound over (variable, parameters) with Taylor models in 128-bit MPFR (a polynomial and a rigorous remainder) and interval arithmetic with outward rounding; products and quotients factor by factor (denominators of one strict sign); next to the domain's ends and the range ends by exact derivatives (a zero of order m on a face has the sign of the m-th derivative into the box; otherwise ≥ 0 on the face and a derivative ≥ 0 into the box); counterexamples are boxes where the value is certified negative";

@@ -6,13 +6,13 @@ use trig_certify::{Bound, ParamBox, describe_z};
 
 use crate::certify::nonneg::{BoxCertificate, Certificate, certify, certify_box};
 use crate::certify::range::{EndPoint, MaximalRange, Outside, certify_all, maximal_range};
-use crate::evidence::EvidenceList;
-use crate::evidence::{Evidence, Kind, Witness};
 use crate::exact::ExactBasis;
 use crate::exact::basis_of;
-use crate::status::Status;
-use crate::verdict::Verdict;
-use crate::witness::witness;
+use trig_verdict::evidence::EvidenceList;
+use trig_verdict::evidence::{Evidence, Kind, Witness};
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
+use trig_verdict::witness::witness;
 
 /// How nonnegativity is decided, as the report states it.
 pub const CERTIFIED: &str = "certified: Weierstrass z = tan(θ/2), exact Bernstein subdivision over (z, parameter) boxes in rational arithmetic (denominators proved of one sign first); counterexamples exact and re-evaluated";
@@ -49,7 +49,7 @@ pub fn counterexample(
         &names,
         vec![("value", trig_symbolic::Sym::rational(value.clone()))],
     );
-    w.values[0].of = f.map(crate::evidence::Expr::new);
+    w.values[0].of = f.map(trig_verdict::evidence::Expr::new);
     if trig {
         w.note = Some(format!(
             "z = tan(θ/2), s = sin θ, c = cos θ; θ ≈ {:.6}",
@@ -72,7 +72,7 @@ pub fn describe(
             Status::Holds,
             format!(
                 "certified on the whole domain ({} with all coefficients ≥ 0)",
-                crate::report::plural(*boxes, "Bernstein box", "Bernstein boxes")
+                trig_verdict::plural(*boxes, "Bernstein box", "Bernstein boxes")
             ),
             None,
         ),
@@ -177,7 +177,7 @@ pub fn nonnegative_on_box_named(
                 Status::Holds,
                 format!(
                     "certified on the whole domain and box ({} with all coefficients ≥ 0)",
-                    crate::report::plural(boxes, "Bernstein box", "Bernstein boxes")
+                    trig_verdict::plural(boxes, "Bernstein box", "Bernstein boxes")
                 ),
                 None,
             ),

@@ -8,11 +8,11 @@
 use trig_deriv::continuity::{KnotContinuity, achieved, continuity, uniform_bspline};
 use trig_symbolic::Sym;
 
-use crate::evidence::{Evidence, Expr, Kind, Witness};
 use crate::exact::ExactBasis;
 use crate::judge::domain::param_symbols;
-use crate::status::Status;
-use crate::verdict::Verdict;
+use trig_verdict::evidence::{Evidence, Expr, Kind, Witness};
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 /// How continuity is decided, as the report states it.
 pub const METHOD: &str = "exact one-sided derivatives of orders 0–6 (Taylor jets in the symbolic ring) at every knot; a jump is decided by the exact zero test; exceptional parameter values are the rational roots of the first nonzero jump's numerator";
@@ -25,7 +25,7 @@ pub fn knot_witness(k: &KnotContinuity) -> Option<Witness> {
         // A constant jump is its own witness (shown in the item).
         return None;
     }
-    let mut w = crate::witness::find(j, &Sym::zero(), (&format!("jump of order {r}"), "0"))?;
+    let mut w = trig_verdict::witness::find(j, &Sym::zero(), (&format!("jump of order {r}"), "0"))?;
     w.values.truncate(1);
     Some(w)
 }
@@ -60,7 +60,7 @@ pub fn describe(k: &KnotContinuity, param: Option<&str>) -> Evidence {
 /// order with its exceptional values (`param`, the one shape parameter),
 /// and a witness where it falls short; `label` names the function.
 pub fn at_least(label: &str, knots: &[KnotContinuity], r: usize, param: Option<&str>) -> Verdict {
-    let evidence: Vec<crate::evidence::Evidence> = knots
+    let evidence: Vec<trig_verdict::evidence::Evidence> = knots
         .iter()
         .map(|k| {
             let item = describe(k, param);

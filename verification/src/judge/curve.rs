@@ -7,8 +7,8 @@ use trig_symbolic::Sym;
 use crate::exact::ExactBasis;
 use crate::exact::{identities, symbols};
 use crate::judge::domain::{describe_wrt, end_text, param_symbols};
-use crate::status::Status;
-use crate::verdict::Verdict;
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 /// Jet length: derivative orders `0..K`.
 const K: usize = 8;

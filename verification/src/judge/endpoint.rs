@@ -10,8 +10,8 @@ use trig_symbolic::Sym;
 use crate::exact::ExactBasis;
 use crate::exact::{basis_of, defined_by, identities};
 use crate::judge::domain::{describe_wrt, end_text, param_symbols, value_at};
-use crate::status::Status;
-use crate::verdict::Verdict;
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 /// Jet length of printed derivatives: orders `0..K`.
 const K: usize = 8;

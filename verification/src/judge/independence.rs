@@ -18,9 +18,9 @@ use trig_symbolic::{Poly, Sym};
 
 use super::by_intervals::axes;
 use crate::exact::{ExactBasis, basis_of};
-use crate::status::Status;
-use crate::verdict::Verdict;
 use trig_symbolic::rational_roots;
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 /// How independence is decided, as the report states it.
 pub const METHOD: &str = "exact Wronskian in the symbolic ring; its coefficients in the independent monomials t^a·c^b·s^e (e ≤ 1) of the normal form; a coefficient certified nonzero on the range (interval branch and bound) proves independence, a rational parameter value where all vanish (exact) refutes it";

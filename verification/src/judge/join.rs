@@ -36,13 +36,13 @@ use trig_deriv::{
 };
 use trig_symbolic::Sym;
 
-use crate::evidence::{Evidence, Expr, Kind};
 use crate::exact::ExactBasis;
 use crate::exact::{IDENTITY, sum, symbols};
 use crate::judge::domain::{describe_wrt, param_symbols};
-use crate::status::Status;
-use crate::verdict::Verdict;
-use crate::witness;
+use trig_verdict::evidence::{Evidence, Expr, Kind};
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
+use trig_verdict::witness;
 
 /// How printed joins of the thesis basis are decided, as the report states
 /// it (other bases name their own conventions, [`PrintedJoin::method`]).

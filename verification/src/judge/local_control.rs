@@ -29,10 +29,10 @@ use std::collections::BTreeSet;
 use trig_certify::atoms::{d_param, param_atoms};
 use trig_symbolic::Sym;
 
-use crate::evidence::{Evidence, Expr, Kind};
 use crate::exact::{ExactBasis, basis_of};
-use crate::status::Status;
-use crate::verdict::Verdict;
+use trig_verdict::evidence::{Evidence, Expr, Kind};
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 /// How local control is decided, as the report states it.
 pub const METHOD: &str = "exact: the weight with which the control enters each segment (∂rᵢ/∂P_j = b_{j−i−f}, ∂rᵢ/∂p = (∂b_k/∂p)_k) decided ≡ 0 in the exact ring, or shown nonzero at an exact point (witness); the computed set of segments compared with the printed one";
@@ -96,7 +96,7 @@ fn enters(weights: &[(String, Sym)]) -> Enters {
         });
     }
     for (label, w) in &nonzero {
-        if let Some(point) = crate::witness::find(w, &Sym::zero(), (label, "0")) {
+        if let Some(point) = trig_verdict::witness::find(w, &Sym::zero(), (label, "0")) {
             let mut point = point;
             point.values.truncate(1);
             return Enters::Yes(

@@ -5,8 +5,8 @@ use trig_certify::maxima::profile;
 use trig_core::Described;
 use trig_symbolic::Sym;
 
-use crate::status::Status;
-use crate::verdict::Verdict;
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 /// How maxima are counted, as the report states it.
 pub const STURM: &str = "certified: sign changes of the derivative counted exactly — Weierstrass z = tan(θ/2) (or t), Sturm sequences over Q isolate every root of the numerator in (0, 1), signs evaluated exactly between roots";

@@ -19,8 +19,8 @@ use super::region::{self, Axis};
 use super::unity::unity;
 use crate::exact::ExactBasis;
 use crate::exact::basis_of;
-use crate::status::Status;
-use crate::verdict::Verdict;
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 /// The functions on the standard domain: `(trigonometric, functions,
 /// names)`, every function split into its pieces (named `b0 on θ ∈ …` when

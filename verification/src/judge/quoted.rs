@@ -12,9 +12,9 @@
 use rug::ops::Pow;
 use rug::{Integer, Rational};
 
-use crate::evidence::{Evidence, Kind, Relation};
 use crate::judge::recomputed::{Recomputed, witness};
-use crate::status::Status;
+use trig_verdict::evidence::{Evidence, Kind, Relation};
+use trig_verdict::status::Status;
 
 /// How a quoted figure is compared, as the report states it.
 pub const QUOTED: &str = "exact rational arithmetic on the printed decimals; a quoted figure with d decimals holds when it is the recomputed value rounded to d places (|quoted − recomputed| ≤ ½·10⁻ᵈ)";

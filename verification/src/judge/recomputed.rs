@@ -10,8 +10,8 @@
 use rug::Rational;
 use trig_symbolic::Sym;
 
-use crate::evidence::{Assignment, Expr, Relation, Value, Witness};
 use crate::judge::quoted::decimal;
+use trig_verdict::evidence::{Assignment, Expr, Relation, Value, Witness};
 
 /// A printed cell read by a formula: the symbol naming it, its printed
 /// text and exact value.
@@ -83,7 +83,7 @@ impl Recomputed {
             .iter()
             .map(|c| (c.symbol.clone(), c.value.clone()))
             .collect();
-        let value = crate::witness::at(formula, &point)?.as_rational()?;
+        let value = trig_verdict::witness::at(formula, &point)?.as_rational()?;
         Some(Recomputed {
             value,
             printed: None,

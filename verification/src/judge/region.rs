@@ -22,10 +22,10 @@ use trig_certify::region::{CellKind, Region, region};
 use trig_certify::{Bound, ParamBox};
 use trig_symbolic::Sym;
 
-use crate::evidence::EvidenceList;
 use crate::judge::certificate::{MAXIMAL, Published, maximal_against, nonnegative_on_box_named};
-use crate::status::Status;
-use crate::verdict::Verdict;
+use trig_verdict::evidence::EvidenceList;
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 /// One parameter of the claim: name, printed symbol, printed set, source.
 #[derive(Debug, Clone)]

@@ -35,10 +35,10 @@ use trig_symbolic::Sym;
 
 use super::by_intervals;
 use super::certificate::{CERTIFIED, counterexample};
-use crate::evidence::{Evidence, Expr, Kind, Value};
 use crate::exact::{ExactBasis, basis_of};
-use crate::status::Status;
-use crate::verdict::Verdict;
+use trig_verdict::evidence::{Evidence, Expr, Kind, Value};
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 /// How a shape effect is decided, as the report states it.
 pub const SHAPE: &str =
@@ -249,7 +249,7 @@ fn certified(
     chosen: &[(&Parameter, ParamRange)],
     label: &str,
     sign: &Rational,
-) -> (Status, String, Option<crate::evidence::Witness>) {
+) -> (Status, String, Option<trig_verdict::evidence::Witness>) {
     // only the parameters the derivative contains: a box of a parameter
     // that does not occur adds nothing to decide (and an open end of it
     // would hide every witness on its excluded faces)
@@ -308,7 +308,7 @@ fn certified(
         Status::Holds,
         format!(
             "certified on the whole domain and box ({})",
-            crate::report::plural(total, "Bernstein box", "Bernstein boxes")
+            trig_verdict::plural(total, "Bernstein box", "Bernstein boxes")
         ),
         None,
     )
@@ -321,7 +321,7 @@ fn by_interval_engine<B: ExactBasis>(
     tested: &str,
     g: &Sym,
     chosen: &[(&Parameter, ParamRange)],
-) -> (Status, String, Option<crate::evidence::Witness>) {
+) -> (Status, String, Option<trig_verdict::evidence::Witness>) {
     let axes: Option<Vec<Axis>> = chosen.iter().map(|(_, r)| Axis::from_range(r)).collect();
     let Some(axes) = axes else {
         return (

@@ -14,9 +14,9 @@ use trig_symbolic::Sym;
 
 use super::independence::coefficients;
 use crate::exact::{ExactBasis, basis_of};
-use crate::status::Status;
-use crate::verdict::Verdict;
 use trig_symbolic::rational_roots;
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 /// How the span is decided, as the report states it.
 pub const METHOD: &str = "exact: the coefficients of Σ kᵢbᵢ − g in the independent monomials t^a·c^b·s^e (e ≤ 1) of the ring's normal form, solved for the kᵢ by elimination over Q(parameters)";
@@ -194,8 +194,8 @@ pub fn reproduces<B: ExactBasis>(basis: &B, curve: &str, targets: &[(&str, Sym)]
     let mut v = Verdict::new(Status::Holds, METHOD, evidence);
     if let Some(w) = curve_witness(&b, targets, &solved) {
         v.evidence.push(
-            crate::evidence::Evidence::new(
-                crate::evidence::Kind::Identity,
+            trig_verdict::evidence::Evidence::new(
+                trig_verdict::evidence::Kind::Identity,
                 "the curve at one point, exactly",
             )
             .witnessed(Some(w)),
@@ -210,7 +210,7 @@ fn curve_witness(
     b: &[Sym],
     targets: &[(&str, Sym)],
     solved: &Solved,
-) -> Option<crate::evidence::Witness> {
+) -> Option<trig_verdict::evidence::Witness> {
     let half = rug::Rational::from((1, 2));
     if b.iter()
         .any(|f| f.variables().iter().any(|v| v == "s" || v == "c"))
@@ -236,8 +236,9 @@ fn curve_witness(
         .collect();
     // each coordinate of the curve against the target's: the claim says
     // they cannot agree; they do
-    let mut w = crate::witness::of_exprs(&[("t".to_string(), half)], &["t".to_string()], &values)?;
-    w.stated = Some(crate::evidence::Relation::Differ);
+    let mut w =
+        trig_verdict::witness::of_exprs(&[("t".to_string(), half)], &["t".to_string()], &values)?;
+    w.stated = Some(trig_verdict::evidence::Relation::Differ);
     Some(w)
 }
 

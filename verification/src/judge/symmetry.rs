@@ -10,13 +10,13 @@ use trig_core::basis::eval_at;
 use trig_core::{Affine, Mpfr, Real, Ring, Variable};
 use trig_symbolic::Sym;
 
-use crate::evidence::EvidenceList;
 use crate::exact::ExactBasis;
 use crate::exact::{IDENTITY, basis_of, identities};
 use crate::judge::domain::{param_symbols, pretty};
 use crate::numeric::{PREC, differ, show};
-use crate::status::Status;
-use crate::verdict::Verdict;
+use trig_verdict::evidence::EvidenceList;
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 /// A printed symmetry `bᵢ(x; p) = b_{offset−i}(A − x; σ(p))`.
 #[derive(Debug)]

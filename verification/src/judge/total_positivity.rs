@@ -20,11 +20,11 @@ use trig_symbolic::Sym;
 
 use super::nonnegative::pieces;
 use super::unity::unity;
-use crate::evidence::{Evidence, Kind};
 use crate::exact::ExactBasis;
-use crate::status::Status;
-use crate::verdict::Verdict;
-use crate::witness::witness;
+use trig_verdict::evidence::{Evidence, Kind};
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
+use trig_verdict::witness::witness;
 
 /// How total positivity is decided, as the report states it.
 pub const TOTALLY_POSITIVE: &str = "certified: totally positive factorisation — z = tan(θ/2) (or t) maps the domain increasingly onto [0, 1]; the numerators over their positive common denominator are written in the Bernstein basis of their degree (elevated up to 4 times); all minors of that coefficient matrix ≥ 0, exactly, prove total positivity (Cauchy–Binet with the totally positive Bernstein basis); with a parameter every minor is a polynomial in it and the set where all are ≥ 0 is decided exactly (Sturm sequences, algebraic ends); refutation: a collocation matrix at exact rational points with a negative minor";

@@ -5,7 +5,7 @@ use trig_symbolic::Sym;
 
 use crate::exact::ExactBasis;
 use crate::exact::{basis_of, defined_by, identity, sum};
-use crate::verdict::Verdict;
+use trig_verdict::verdict::Verdict;
 
 /// `Σ b_i − 1` when the names share a prefix (`b0, b1, …`), else the sum
 /// written out.

@@ -10,8 +10,8 @@ use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
 use super::{Entry, View, counts, sections};
-use crate::evidence::{Evidence, Witness};
-use crate::status::Status;
+use trig_verdict::evidence::{Evidence, Witness};
+use trig_verdict::status::Status;
 
 /// The version of the report format (and of `docs/report.schema.json`).
 pub const SCHEMA_VERSION: &str = "2.1.0";

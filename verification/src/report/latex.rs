@@ -19,9 +19,9 @@ use trig_tex::{
 
 use super::render::{Format, Tally, anchor, point_text, render};
 use super::{Document, Entry, View};
-use crate::evidence::{Part, Witness};
 use crate::figures::{Figure, relative};
-use crate::status::Status;
+use trig_verdict::evidence::{Part, Witness};
+use trig_verdict::status::Status;
 
 /// Expressions with more characters (Unicode form) are summarised.
 pub const LONG: usize = 160;

@@ -12,9 +12,9 @@ use trig_tex::plain;
 
 use super::render::{Format, Tally, anchor, point_text, render};
 use super::{Document, Entry, View, short};
-use crate::evidence::{Part, Witness};
 use crate::figures::{Figure, relative};
-use crate::status::Status;
+use trig_verdict::evidence::{Part, Witness};
+use trig_verdict::status::Status;
 
 /// Expressions with more characters are summarised.
 pub const LONG: usize = 120;

@@ -1,7 +1,7 @@
 //! The audit report: Markdown for people ([`markdown`]), LaTeX for papers
 //! ([`latex`]), JSON for machines ([`json`], with a versioned schema) — all
 //! rendered from the same entries and the same structured evidence
-//! ([`crate::evidence`]). The text formats are one traversal of the report
+//! ([`trig_verdict::evidence`]). The text formats are one traversal of the report
 //! (`render`) with a writer per format; the JSON is the entries through
 //! serde. Entries ([`Entry`]) are owned, so claims built at
 //! run time (from a spec file, see [`crate::spec_audit`]) report exactly
@@ -19,10 +19,10 @@ mod render;
 
 use crate::Outcome;
 use crate::claim::Seed;
-use crate::evidence::{Evidence, Witness};
 use crate::figures::{self, Figure};
-use crate::status::Status;
-use crate::verdict::Verdict;
+use trig_verdict::evidence::{Evidence, Witness};
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 pub use json::{Report, SCHEMA_VERSION, json_entries, schema};
 pub use latex::{TexOptions, tex_entries};
@@ -173,11 +173,6 @@ pub(crate) fn sections<'a>(entries: &[&'a Entry]) -> Vec<(&'a Document, Vec<&'a 
         .collect()
 }
 
-/// `n` with the noun in the singular or plural (`1 claim`, `2 claims`).
-pub fn plural(n: usize, singular: &str, plural: &str) -> String {
-    format!("{n} {}", if n == 1 { singular } else { plural })
-}
-
 /// A statement shortened to at most `max` characters for the index.
 pub(crate) fn short(text: &str, max: usize) -> String {
     if text.chars().count() <= max {
@@ -216,8 +211,8 @@ pub(crate) mod test_entries {
     //! Small entries for the renderers' unit tests.
 
     use super::*;
-    use crate::evidence::{Expr, Kind};
     use trig_symbolic::Sym;
+    use trig_verdict::evidence::{Expr, Kind};
 
     pub fn doc(id: &str, order: usize) -> Document {
         Document {
@@ -253,7 +248,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn views_filter_by_verdict_and_plurals_agree() {
+    fn views_filter_by_verdict() {
         let entries = [
             entry("A1", doc("b", 5), Status::Fails),
             entry("A2", doc("a", 1), Status::Holds),
@@ -269,8 +264,6 @@ mod tests {
             .collect();
         assert_eq!(ids, ["A1"]);
         assert!(view.note().unwrap().contains("fails"));
-        assert_eq!(plural(1, "claim", "claims"), "1 claim");
-        assert_eq!(plural(2, "claim", "claims"), "2 claims");
         assert_eq!(short("abcdef", 4), "abc…");
         let all: Vec<&Entry> = entries.iter().collect();
         let s = sections(&all);

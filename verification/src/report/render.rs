@@ -6,10 +6,12 @@
 //! says how each piece is written (Markdown in [`super::markdown`], LaTeX in
 //! [`super::latex`]). The JSON report is the same entries through serde.
 
-use super::{Document, Entry, View, counts, plural, sections};
-use crate::evidence::{Assignment, Evidence, Expr, Part, Witness};
+use trig_verdict::plural;
+
+use super::{Document, Entry, View, counts, sections};
 use crate::figures::Figure;
-use crate::status::Status;
+use trig_verdict::evidence::{Assignment, Evidence, Expr, Part, Witness};
+use trig_verdict::status::Status;
 
 /// The claims of a document (or of all) and how many have each status, in
 /// [`Status::ALL`] order.

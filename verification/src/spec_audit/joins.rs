@@ -10,7 +10,7 @@ use trig_symbolic::Sym;
 use crate::exact::symbols;
 use crate::judge::domain::param_symbols;
 use crate::judge::join::{Printed, PrintedJoin, audit, conventions};
-use crate::verdict::Verdict;
+use trig_verdict::verdict::Verdict;
 
 /// Printed join conditions, decided by the join judge as for the catalog:
 /// the printed convention, a sign typo, the other conventions of the

@@ -23,9 +23,9 @@ use crate::budget::{Stopped, bounded};
 use crate::judge;
 use crate::judge::endpoint::TABLE_ORDERS;
 use crate::judge::local_control::Control;
-use crate::real_witness::{RealPoints, with_real_points};
 use crate::report::{Document, Entry};
-use crate::verdict::Verdict;
+use trig_verdict::real_witness::{RealPoints, with_real_points};
+use trig_verdict::verdict::Verdict;
 
 /// The report document of a spec.
 pub fn document(spec: &Spec) -> Document {

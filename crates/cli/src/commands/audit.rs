@@ -173,7 +173,7 @@ pub fn run(args: &AuditArgs) -> CmdResult {
         Some(path) => {
             write_atomically(path, text.as_bytes())?;
             let shown = view.select(&entries).len();
-            wrote(path, &report::plural(shown, "claim", "claims"));
+            wrote(path, &trig_verdict::plural(shown, "claim", "claims"));
             Ok(String::new())
         }
     }

@@ -15,11 +15,11 @@ use trig_symbolic::Sym;
 
 use super::{lin, n, v};
 use crate::claim::shared;
-use crate::evidence::{Evidence, EvidenceList, Witness};
 use crate::exact::{sum, symbols};
 use crate::judge::join::{Printed, PrintedJoin, audit};
-use crate::status::Status;
-use crate::verdict::Verdict;
+use trig_verdict::evidence::{Evidence, EvidenceList, Witness};
+use trig_verdict::status::Status;
+use trig_verdict::verdict::Verdict;
 
 /// A seam from the end of `from` (points `from0…from3`) to the start of `to`.
 fn seam(from: &str, to: &str) -> PrintedJoin<Family> {
@@ -176,7 +176,7 @@ fn jump_witness(
     let names: Vec<String> = point.iter().map(|(n, _)| n.clone()).collect();
     let coordinate = ["x", "y", "z"][c];
     let label = format!("{what}, {coordinate}");
-    let mut w = crate::witness::of_exprs(&point, &names, &[(label.as_str(), &formula)])
+    let mut w = trig_verdict::witness::of_exprs(&point, &names, &[(label.as_str(), &formula)])
         .expect("integer nets: no denominator");
     w.note = Some(format!(
         "the {coordinate}-coordinates of row {r} of the listing's nets (m = 1), angle derivatives"

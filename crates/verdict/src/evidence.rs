@@ -1,5 +1,6 @@
 //! Evidence as data: what a verdict rests on, in a form the report renders
-//! to Markdown, LaTeX and JSON from one source ([`crate::report`]).
+//! to Markdown, LaTeX and JSON from one source (the report of
+//! `trig-verification`).
 //!
 //! An [`Evidence`] item says one thing: a prose note, an exact identity with
 //! its residual, a printed value against the computed one, a certificate, …

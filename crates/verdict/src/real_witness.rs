@@ -51,9 +51,10 @@ pub fn with_real_points<T>(points: RealPoints, f: impl FnOnce() -> T) -> T {
     out
 }
 
-/// The witness context of this thread as text (for [`crate::memo`] keys:
+/// The witness context of this thread as text (for the memo keys of
+/// `trig-verification`:
 /// a decision's witnesses depend on it).
-pub(crate) fn context_key() -> String {
+pub fn context_key() -> String {
     format!("{:?}", current())
 }
 
