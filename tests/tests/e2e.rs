@@ -1,5 +1,6 @@
 //! End-to-end tests of the command line and across crates: one binary, one module per area.
 
+mod audit;
 mod catalog_parity;
 mod cli_audit;
 mod cli_audit_tex;
@@ -18,3 +19,6 @@ mod cli_spec_features;
 mod cli_table;
 mod cli_witness_points;
 mod fuzz;
+mod latex_statements;
+mod witness_lines;
+mod witness_recheck;

@@ -10,6 +10,7 @@ pub mod budget;
 pub mod certify;
 pub mod claim;
 mod claims;
+pub mod entry;
 pub mod exact;
 pub mod figures;
 pub mod judge;
@@ -17,10 +18,10 @@ mod memo;
 pub mod minimum;
 pub mod numeric;
 pub mod parallel;
-pub mod report;
 pub mod spec_audit;
 
 pub use claim::{Claim, Seed};
+pub use entry::{Document, Entry};
 pub use trig_verdict::{Evidence, EvidenceList, Expr, Status, Verdict, Witness};
 
 /// Every claim the audit decides, in report order.

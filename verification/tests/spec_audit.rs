@@ -5,7 +5,7 @@
 use std::path::PathBuf;
 
 use trig_specfile::Spec;
-use trig_verification::report::Entry;
+use trig_verification::Entry;
 use trig_verification::{Status, run, spec_audit};
 
 fn example(name: &str) -> Spec {

@@ -1,9 +1,7 @@
 //! The audit's integration tests: one binary, one module per area.
 
-mod audit;
 mod certified;
 mod joins;
-mod latex_statements;
 mod local_control;
 mod seed000;
 mod seed002_004;
@@ -11,5 +9,3 @@ mod shape_effect;
 mod spec_audit;
 mod thesis_interp;
 mod total_positivity;
-mod witness_lines;
-mod witness_recheck;

@@ -20,10 +20,10 @@ use trig_deriv::Wrt;
 use trig_specfile::{Check, Spec, SpecClaim, Varied};
 
 use crate::budget::{Stopped, bounded};
+use crate::entry::{Document, Entry};
 use crate::judge;
 use crate::judge::endpoint::TABLE_ORDERS;
 use crate::judge::local_control::Control;
-use crate::report::{Document, Entry};
 use trig_verdict::real_witness::{RealPoints, with_real_points};
 use trig_verdict::verdict::Verdict;
 

@@ -5,9 +5,10 @@ use std::path::PathBuf;
 use std::time::Duration;
 
 use clap::{Args, ValueEnum};
+use trig_report::{self as report, View};
 use trig_specfile::Spec;
+use trig_verification::Entry;
 use trig_verification::budget::CLAIM_BUDGET;
-use trig_verification::report::{self, Entry, View};
 use trig_verification::{Seed, Status, run as run_audit, spec_audit};
 
 use super::{CliError, CmdResult};
@@ -192,5 +193,8 @@ fn builtin(args: &AuditArgs) -> Result<Vec<Entry>, CliError> {
                 })?,
         ),
     };
-    Ok(report::entries(&run_audit(seed, args.claim.as_deref())))
+    Ok(trig_verification::entry::entries(&run_audit(
+        seed,
+        args.claim.as_deref(),
+    )))
 }

@@ -5,9 +5,9 @@
 //! in a plain `article` and as a complete document — compiles without error
 //! or overfull box (when `pdflatex` is installed).
 
+use trig_report::{self as report, TexOptions, View};
 use trig_tex::marked::{CLOSE, OPEN, check};
 use trig_tex::{FRAGMENT_PACKAGES, compile, marked, plain};
-use trig_verification::report::{self, TexOptions, View};
 use trig_verification::{all_claims, run};
 
 /// The formulas of marked text.
@@ -106,7 +106,7 @@ fn every_statement_compiles() {
 
 #[test]
 fn the_report_compiles_as_a_fragment_in_a_plain_article_and_as_a_document() {
-    let entries = report::entries(&run(None, None));
+    let entries = trig_verification::entry::entries(&run(None, None));
     let tex = |standalone| {
         let options = TexOptions {
             standalone,

@@ -1,10 +1,12 @@
+//! # trig-report
+//!
 //! The audit report: Markdown for people ([`markdown`]), LaTeX for papers
 //! ([`latex`]), JSON for machines ([`json`], with a versioned schema) — all
 //! rendered from the same entries and the same structured evidence
-//! ([`trig_verdict::evidence`]). The text formats are one traversal of the report
-//! (`render`) with a writer per format; the JSON is the entries through
-//! serde. Entries ([`Entry`]) are owned, so claims built at
-//! run time (from a spec file, see [`crate::spec_audit`]) report exactly
+//! ([`trig_verdict::evidence`]). The text formats are one traversal of the
+//! report (`render`) with a writer per format; the JSON is the entries
+//! through serde. Entries ([`Entry`]) are owned, so claims built at run time
+//! (from a spec file, see [`trig_verification::spec_audit`]) report exactly
 //! like the built-in ones ([`Outcome`]).
 //!
 //! Every format has the same parts: a summary (counts by verdict and by
@@ -17,12 +19,9 @@ pub mod latex;
 pub mod markdown;
 mod render;
 
-use crate::Outcome;
-use crate::claim::Seed;
-use crate::figures::{self, Figure};
-use trig_verdict::evidence::{Evidence, Witness};
-use trig_verdict::status::Status;
-use trig_verdict::verdict::Verdict;
+use trig_verdict::Status;
+use trig_verification::entry::entries;
+use trig_verification::{Document, Entry, Outcome};
 
 pub use json::{Report, SCHEMA_VERSION, json_entries, schema};
 pub use latex::{TexOptions, tex_entries};
@@ -30,80 +29,6 @@ pub use markdown::{markdown_entries, markdown_entries_in};
 
 /// The opening sentence of the built-in report.
 pub const BUILTIN_INTRO: &str = "Every verdict below is computed by `trig-audit audit` from the formulas as printed in `shared/seeds/`; identities are decided exactly in the symbolic ring, counterexamples in 256-bit MPFR.";
-
-/// A document of the report: a seed of `shared/seeds/` or a spec file.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Document {
-    /// Section heading before the title (`Seed 001`, `Spec thesis-cubic`).
-    pub heading: String,
-    /// Short id (summary table, JSON `seed`).
-    pub id: String,
-    pub title: String,
-    /// File name (JSON `seed_file`).
-    pub file: String,
-    /// Where the document is, as the Markdown section states it.
-    pub location: String,
-    /// Sort key of the sections (seeds in [`Seed::ALL`] order first).
-    pub order: usize,
-}
-
-impl Document {
-    /// The document of a seed.
-    pub fn seed(seed: Seed) -> Document {
-        Document {
-            heading: format!("Seed {}", seed.id()),
-            id: seed.id().to_string(),
-            title: seed.title().to_string(),
-            file: seed.file().to_string(),
-            location: format!("shared/seeds/{}", seed.file()),
-            order: Seed::ALL.iter().position(|s| *s == seed).unwrap_or(0),
-        }
-    }
-}
-
-/// One claim of the report with its computed verdict.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Entry {
-    pub id: String,
-    pub document: Document,
-    /// Equation or section.
-    pub source: String,
-    /// The statement as printed, its formulas marked
-    /// ([`trig_tex::marked`]; [`trig_tex::plain`] is the text as printed).
-    pub statement: String,
-    pub verdict: Verdict,
-    /// A figure supporting the verdict ([`crate::figures`]).
-    pub figure: Option<&'static Figure>,
-}
-
-impl Entry {
-    /// The first witness of the evidence (the one the report shows beside
-    /// the verdict of a failing claim).
-    pub fn witness(&self) -> Option<(&Evidence, &Witness)> {
-        self.verdict
-            .evidence
-            .iter()
-            .find_map(|e| e.witness.as_ref().map(|w| (e, w)))
-    }
-}
-
-impl From<&Outcome> for Entry {
-    fn from(o: &Outcome) -> Entry {
-        Entry {
-            id: o.claim.id.to_string(),
-            document: Document::seed(o.claim.seed),
-            source: o.claim.source.to_string(),
-            statement: o.claim.statement.to_string(),
-            verdict: o.verdict.clone(),
-            figure: figures::for_claim(o.claim.id),
-        }
-    }
-}
-
-/// The entries of built-in outcomes.
-pub fn entries(outcomes: &[Outcome]) -> Vec<Entry> {
-    outcomes.iter().map(Entry::from).collect()
-}
 
 /// What a report shows: everything, or the short form (summary and index,
 /// no claim sections), optionally only some verdicts.
@@ -212,7 +137,8 @@ pub(crate) mod test_entries {
 
     use super::*;
     use trig_symbolic::Sym;
-    use trig_verdict::evidence::{Expr, Kind};
+    use trig_verdict::Verdict;
+    use trig_verdict::evidence::{Evidence, Expr, Kind};
 
     pub fn doc(id: &str, order: usize) -> Document {
         Document {

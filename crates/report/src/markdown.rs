@@ -12,9 +12,9 @@ use trig_tex::plain;
 
 use super::render::{Format, Tally, anchor, point_text, render};
 use super::{Document, Entry, View, short};
-use crate::figures::{Figure, relative};
 use trig_verdict::evidence::{Part, Witness};
 use trig_verdict::status::Status;
+use trig_verification::figures::{Figure, relative};
 
 /// Expressions with more characters are summarised.
 pub const LONG: usize = 120;

@@ -9,7 +9,8 @@
 use std::path::PathBuf;
 use std::sync::OnceLock;
 
-use trig_verification::report::{self, Entry, View};
+use trig_report::{self as report, View};
+use trig_verification::Entry;
 use trig_verification::{Outcome, Seed, Status, run};
 
 /// The whole audit, run once for the tests of this file.
@@ -19,7 +20,7 @@ pub(crate) fn outcomes() -> &'static [Outcome] {
 }
 
 pub(crate) fn entries() -> Vec<Entry> {
-    report::entries(outcomes())
+    trig_verification::entry::entries(outcomes())
 }
 
 fn check_seed(seed: Seed) {

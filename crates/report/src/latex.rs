@@ -19,9 +19,9 @@ use trig_tex::{
 
 use super::render::{Format, Tally, anchor, point_text, render};
 use super::{Document, Entry, View};
-use crate::figures::{Figure, relative};
 use trig_verdict::evidence::{Part, Witness};
 use trig_verdict::status::Status;
+use trig_verification::figures::{Figure, relative};
 
 /// Expressions with more characters (Unicode form) are summarised.
 pub const LONG: usize = 160;

@@ -11,7 +11,7 @@
 //! cannot pass by matching nothing.
 
 use regex::Regex;
-use trig_verification::report;
+use trig_report as report;
 
 use crate::audit::{entries, outcomes};
 

@@ -9,9 +9,9 @@
 use trig_verdict::plural;
 
 use super::{Document, Entry, View, counts, sections};
-use crate::figures::Figure;
 use trig_verdict::evidence::{Assignment, Evidence, Expr, Part, Witness};
 use trig_verdict::status::Status;
+use trig_verification::figures::Figure;
 
 /// The claims of a document (or of all) and how many have each status, in
 /// [`Status::ALL`] order.

@@ -7,7 +7,7 @@
 //! no formula) leaves the reader nothing to substitute into.
 
 use serde_json::Value;
-use trig_verification::report;
+use trig_report as report;
 
 use crate::audit::outcomes;
 

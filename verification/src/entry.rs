@@ -1,0 +1,84 @@
+//! One claim of the audit with its computed verdict, owned ([`Entry`]), in
+//! its document ([`Document`]): what the report renders. Built-in outcomes
+//! ([`Outcome`]) and the claims of a spec file ([`crate::spec_audit`]) give
+//! the same entries, so both report exactly alike.
+
+use trig_verdict::{Evidence, Verdict, Witness};
+
+use crate::Outcome;
+use crate::claim::Seed;
+use crate::figures::{self, Figure};
+
+/// A document of the report: a seed of `shared/seeds/` or a spec file.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Document {
+    /// Section heading before the title (`Seed 001`, `Spec thesis-cubic`).
+    pub heading: String,
+    /// Short id (summary table, JSON `seed`).
+    pub id: String,
+    pub title: String,
+    /// File name (JSON `seed_file`).
+    pub file: String,
+    /// Where the document is, as the Markdown section states it.
+    pub location: String,
+    /// Sort key of the sections (seeds in [`Seed::ALL`] order first).
+    pub order: usize,
+}
+
+impl Document {
+    /// The document of a seed.
+    pub fn seed(seed: Seed) -> Document {
+        Document {
+            heading: format!("Seed {}", seed.id()),
+            id: seed.id().to_string(),
+            title: seed.title().to_string(),
+            file: seed.file().to_string(),
+            location: format!("shared/seeds/{}", seed.file()),
+            order: Seed::ALL.iter().position(|s| *s == seed).unwrap_or(0),
+        }
+    }
+}
+
+/// One claim of the report with its computed verdict.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Entry {
+    pub id: String,
+    pub document: Document,
+    /// Equation or section.
+    pub source: String,
+    /// The statement as printed, its formulas marked
+    /// ([`trig_tex::marked`]; [`trig_tex::plain`] is the text as printed).
+    pub statement: String,
+    pub verdict: Verdict,
+    /// A figure supporting the verdict ([`crate::figures`]).
+    pub figure: Option<&'static Figure>,
+}
+
+impl Entry {
+    /// The first witness of the evidence (the one the report shows beside
+    /// the verdict of a failing claim).
+    pub fn witness(&self) -> Option<(&Evidence, &Witness)> {
+        self.verdict
+            .evidence
+            .iter()
+            .find_map(|e| e.witness.as_ref().map(|w| (e, w)))
+    }
+}
+
+impl From<&Outcome> for Entry {
+    fn from(o: &Outcome) -> Entry {
+        Entry {
+            id: o.claim.id.to_string(),
+            document: Document::seed(o.claim.seed),
+            source: o.claim.source.to_string(),
+            statement: o.claim.statement.to_string(),
+            verdict: o.verdict.clone(),
+            figure: figures::for_claim(o.claim.id),
+        }
+    }
+}
+
+/// The entries of built-in outcomes.
+pub fn entries(outcomes: &[Outcome]) -> Vec<Entry> {
+    outcomes.iter().map(Entry::from).collect()
+}
