@@ -30,7 +30,7 @@ use std::sync::{Mutex, OnceLock, PoisonError};
 use rug::Rational;
 use rug::ops::Pow;
 
-use crate::gcd::{coefficients_over, gcd_free, is_trig, monomial_content, split_content};
+use crate::gcd::{coefficients_over, gcd_free, monomial_content, split_content};
 use crate::poly::Poly;
 use crate::sym::Sym;
 
@@ -192,7 +192,7 @@ impl Accumulator {
             self.record(&p, e);
             return;
         }
-        if !is_trig(&p) {
+        if !p.is_trig() {
             self.split(&p, e);
             return;
         }

@@ -24,7 +24,7 @@ use crate::poly::Poly;
 /// leading coefficient; `gcd(0, 0) = 0`. `None` when either involves `s`
 /// or `c` (the quotient ring is not a unique factorisation domain).
 pub fn gcd(a: &Poly, b: &Poly) -> Option<Poly> {
-    if is_trig(a) || is_trig(b) {
+    if a.is_trig() || b.is_trig() {
         return None;
     }
     Some(gcd_free(a, b))
@@ -37,7 +37,7 @@ pub fn gcd(a: &Poly, b: &Poly) -> Option<Poly> {
 /// over which the monomials in the other variables (in normal form) are a
 /// free basis, so the common divisors are the same and the gcds stay small.
 pub fn common_factor(num: &Poly, f: &Poly) -> Option<Poly> {
-    if is_trig(f) || f.as_constant().is_some() {
+    if f.is_trig() || f.as_constant().is_some() {
         return None;
     }
     let mut coefficients: Vec<Poly> = coefficients_over(num, &f.variables())
@@ -55,11 +55,6 @@ pub fn common_factor(num: &Poly, f: &Poly) -> Option<Poly> {
         }
     }
     Some(g)
-}
-
-pub(crate) fn is_trig(p: &Poly) -> bool {
-    p.terms()
-        .any(|(m, _)| m.factors().any(|(v, _)| v.is_trig()))
 }
 
 /// The coefficients of `p` as a polynomial in the variables outside

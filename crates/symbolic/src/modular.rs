@@ -21,7 +21,6 @@
 //! a factor by accident) the answer is only "not proved", and the exact
 //! gcd decides.
 
-use crate::gcd::is_trig;
 use crate::poly::Poly;
 use crate::var::{COS, SIN, Var};
 
@@ -39,7 +38,7 @@ pub fn coprime(f: &Poly, others: &[Poly]) -> bool {
 /// every image formed for the next call.
 pub(crate) fn coprime_to_images(f: &Poly, others: &mut [(&Poly, &mut Images)]) -> bool {
     // `f` in ℚ[x₁, …] (a main variable `c` would leave `s` unpaired)
-    if is_trig(f) {
+    if f.is_trig() {
         return false;
     }
     let vars = f.vars();

@@ -9,7 +9,7 @@ use rug::Rational;
 use rug::ops::Pow;
 
 use crate::error::SymError;
-use crate::gcd::{common_factor, is_trig};
+use crate::gcd::common_factor;
 use crate::modular::Images;
 use crate::poly::Poly;
 use crate::var::{PI, Var};
@@ -323,7 +323,7 @@ fn cancel(mut num: Poly, den: BTreeMap<Poly, u32>) -> Sym {
         // Most factors share nothing with the numerator, and a modular
         // image proves it at word cost (then neither an exact division nor
         // a common factor exists).
-        if !is_trig(&f) && crate::modular::coprime_to_images(&f, &mut [(&num, &mut images)]) {
+        if !f.is_trig() && crate::modular::coprime_to_images(&f, &mut [(&num, &mut images)]) {
             *out.entry(f).or_insert(0) += e;
             continue;
         }

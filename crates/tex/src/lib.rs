@@ -33,6 +33,7 @@ pub mod expr;
 mod fragment;
 pub mod marked;
 mod math;
+mod prose;
 pub mod symbols;
 mod table;
 mod text;
@@ -44,6 +45,7 @@ pub use document::{
 pub use fragment::{article, input_note};
 pub use marked::{marked, plain};
 pub use math::{fitted_math, inline_math, math};
+pub use prose::prose;
 pub use symbols::unmapped;
 pub use table::{Column, LongTable, TABLE_PACKAGES, ValueTable, column_name, value_tables};
-pub use text::{breakable, prose, text};
+pub use text::{breakable, text};

@@ -10,7 +10,7 @@ use std::fmt;
 use crate::expr::{breakable_digits, cell_math, width};
 use crate::fragment::{article, input_note};
 use crate::math::inline_math;
-use crate::text::prose;
+use crate::prose::prose;
 
 /// A column of a table.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -2,17 +2,19 @@
 //! [`super::local_control`]): the thesis's G² condition against curvature
 //! (T51), its G² interpolation end conditions (T54), the control points
 //! its C¹ refinement moves (T65), and seed 002's open and closed
-//! interpolating splines (D17).
+//! interpolating splines (D17); with the two curves they share with the
+//! local-control claims (seed 002's segment (4), the thesis cubic's end
+//! tangents).
 
 use std::fmt;
 
 use rug::Rational;
-use trig_core::Ring;
-use trig_deriv::End;
+use trig_core::{Family, Ring};
+use trig_deriv::{End, Wrt, curve_endpoint_derivatives};
 use trig_symbolic::Sym;
 
-use super::local_control::{seed002_segment, thesis_tangents};
-use crate::exact::{IDENTITY, TARGET, VALUE, identities, identity_item, symbols};
+use super::seed002::rational_ends;
+use crate::exact::{IDENTITY, TARGET, VALUE, basis, identities, identity_item, symbols};
 use trig_verdict::evidence::{Evidence, Kind};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
@@ -420,9 +422,65 @@ pub(super) fn d17() -> Verdict {
     v
 }
 
+/// The rational curve (2) of seed 002 with the control points fixed by
+/// the end conditions (3) (reading D6b): `Q(t, α1, α2)` of (4) on the local
+/// points `V0 … V3` (one coordinate), the weights `w0 … w5` as symbols.
+/// `P0 = V1`, `P5 = V2`; `P1`, `P2` solve `R'(0)`, `R''(0)`, and `P4`, `P3`
+/// solve `R'(π/2)`, `R''(π/2)`, each linear in its point.
+pub(super) fn seed002_segment() -> Sym {
+    let v = symbols("V", 4);
+    let w = symbols("w", 6);
+    let mut p = symbols("P", 6);
+    let (a1, a2) = (Sym::var("alpha1"), Sym::var("alpha2"));
+    let two = Sym::int(2);
+    p[0] = v[1].clone();
+    p[5] = v[2].clone();
+    // (end, order, the unknown point, its right-hand side in (3))
+    let steps = [
+        (0, 1, 1, a1.clone() * &(v[2].clone() - &v[0])),
+        (
+            0,
+            2,
+            2,
+            a1 * &(v[0].clone() - &(two.clone() * &v[1]) + &v[2]),
+        ),
+        (1, 1, 4, a2.clone() * &(v[3].clone() - &v[1])),
+        (1, 2, 3, a2 * &(v[1].clone() - &(two * &v[2]) + &v[3])),
+    ];
+    for (end, order, k, rhs) in steps {
+        let (r0, r1) = rational_ends(&p, &w);
+        let lhs = if end == 0 { &r0[order] } else { &r1[order] };
+        let name = format!("P{k}");
+        let coefficient = lhs.diff(&name);
+        let rest = lhs.subs(&name, &Sym::zero());
+        p[k] = (rhs - &rest) / &coefficient;
+    }
+    let b = basis(Family::Seed002Quartic);
+    let num = (0..6).fold(Sym::zero(), |acc, k| acc + &(w[k].clone() * &b[k] * &p[k]));
+    let den = (0..6).fold(Sym::zero(), |acc, k| acc + &(w[k].clone() * &b[k]));
+    num / &den
+}
+
+/// The first derivatives in `u` of the thesis cubic at its ends, for the
+/// helpers of the join claims.
+pub(super) fn thesis_tangents(points: &[Sym], end: End) -> Sym {
+    let f = Family::ThesisCubic;
+    let params = crate::exact::params(f);
+    curve_endpoint_derivatives::<Sym, 2>(f, &params, points, None, end, Wrt::U, &Sym::one())[1]
+        .clone()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_seed002_segment_interpolates_its_middle_points() {
+        let q = seed002_segment();
+        let at = |s: i64, c: i64| q.subs("s", &Sym::int(s)).subs("c", &Sym::int(c));
+        assert_eq!(at(0, 1), Sym::var("V1"));
+        assert_eq!(at(1, 0), Sym::var("V2"));
+    }
 
     #[test]
     fn index_ranges_print_and_compare() {

@@ -16,7 +16,7 @@ use super::thesis::claim;
 use super::thesis_interp::{positivity, sym_spline};
 use super::thesis_interp_point::piece_witness;
 use crate::claim::Claim;
-use crate::judge::quoted::decimal;
+use crate::judge::recomputed::decimal;
 use crate::judge::recomputed::{self, Cell, Recomputed};
 use trig_verdict::evidence::{Evidence, Expr, Kind, Relation, Value, Witness};
 use trig_verdict::status::Status;

@@ -23,7 +23,7 @@ use rug::{Integer, Rational};
 use trig_symbolic::Sym;
 
 use crate::claim::{Claim, Seed};
-use crate::judge::quoted::decimal;
+use crate::judge::recomputed::decimal;
 use crate::judge::recomputed::{self, Cell, Recomputed};
 use trig_verdict::evidence::EvidenceList;
 use trig_verdict::evidence::{Evidence, Kind, Relation};

@@ -12,33 +12,12 @@
 use rug::ops::Pow;
 use rug::{Integer, Rational};
 
-use crate::judge::recomputed::{Recomputed, witness};
+use crate::judge::recomputed::{Recomputed, decimal, witness};
 use trig_verdict::evidence::{Evidence, Kind, Relation};
 use trig_verdict::status::Status;
 
 /// How a quoted figure is compared, as the report states it.
 pub const QUOTED: &str = "exact rational arithmetic on the printed decimals; a quoted figure with d decimals holds when it is the recomputed value rounded to d places (|quoted − recomputed| ≤ ½·10⁻ᵈ)";
-
-/// An exact rational as a decimal when it terminates, else as a fraction
-/// with a 6-digit approximation.
-pub fn decimal(q: &Rational) -> String {
-    for places in 0..=20u32 {
-        let scaled = q.clone() * Rational::from(Integer::from(10).pow(places));
-        if *scaled.denom() == 1 {
-            let n = scaled.numer().clone();
-            let digits = n.clone().abs().to_string();
-            let sign = if n < 0 { "-" } else { "" };
-            if places == 0 {
-                return format!("{sign}{digits}");
-            }
-            let p = places as usize;
-            let padded = format!("{digits:0>width$}", width = p + 1);
-            let (int, frac) = padded.split_at(padded.len() - p);
-            return format!("{sign}{int}.{frac}");
-        }
-    }
-    format!("{q} ≈ {:.6}", q.to_f64())
-}
 
 /// Half a unit in the last place of a printed decimal (`½·10⁻ᵈ`).
 pub fn half_unit(text: &str) -> Rational {
@@ -191,9 +170,7 @@ mod tests {
     }
 
     #[test]
-    fn decimals_print_exactly() {
-        assert_eq!(decimal(&q(-8023, 10000)), "-0.8023");
-        assert_eq!(decimal(&q(3, 1)), "3");
+    fn half_units_of_printed_decimals() {
         assert_eq!(half_unit("1.25"), q(1, 200));
         assert_eq!(half_unit("7"), q(1, 2));
     }

@@ -7,10 +7,10 @@
 //! in the witness point and the formula in each value's `of`, so the value
 //! is re-checked by substituting the point into the formula.
 
-use rug::Rational;
+use rug::ops::Pow;
+use rug::{Integer, Rational};
 use trig_symbolic::Sym;
 
-use crate::judge::quoted::decimal;
 use trig_verdict::evidence::{Assignment, Expr, Relation, Value, Witness};
 
 /// A printed cell read by a formula: the symbol naming it, its printed
@@ -160,12 +160,40 @@ pub fn witness(note: Option<String>, stated: Relation, values: &[(&str, &Recompu
     }
 }
 
+/// An exact rational as a decimal when it terminates, else as a fraction
+/// with a 6-digit approximation.
+pub fn decimal(q: &Rational) -> String {
+    for places in 0..=20u32 {
+        let scaled = q.clone() * Rational::from(Integer::from(10).pow(places));
+        if *scaled.denom() == 1 {
+            let n = scaled.numer().clone();
+            let digits = n.clone().abs().to_string();
+            let sign = if n < 0 { "-" } else { "" };
+            if places == 0 {
+                return format!("{sign}{digits}");
+            }
+            let p = places as usize;
+            let padded = format!("{digits:0>width$}", width = p + 1);
+            let (int, frac) = padded.split_at(padded.len() - p);
+            return format!("{sign}{int}.{frac}");
+        }
+    }
+    format!("{q} ≈ {:.6}", q.to_f64())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     fn q(n: i64, d: i64) -> Rational {
         Rational::from((n, d))
+    }
+
+    #[test]
+    fn decimals_print_exactly() {
+        assert_eq!(decimal(&q(-8023, 10000)), "-0.8023");
+        assert_eq!(decimal(&q(3, 1)), "3");
+        assert_eq!(decimal(&q(1, 3)), "1/3 ≈ 0.333333");
     }
 
     #[test]
