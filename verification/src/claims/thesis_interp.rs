@@ -8,6 +8,7 @@
 //! Bernstein subdivision, [`crate::certify::nonneg::certify`]).
 
 use rug::Rational;
+use trig_certify::algebraic::decimal;
 use trig_core::{Family, Ring};
 use trig_deriv::{End, Wrt, curve_endpoint_derivatives};
 use trig_interp::piece::derivatives_of;
@@ -425,21 +426,14 @@ fn sum_of_coefficients(e: &Sym, points: &[&str]) -> Sym {
         .fold(e.clone(), |acc, p| acc.subs(p, &Sym::one()))
 }
 
-/// `q` rounded down (`up = false`) or up to 6 decimals.
-fn decimal(q: &Rational, up: bool) -> String {
-    let scaled = q.clone() * Rational::from(1_000_000);
-    let k = if up { scaled.ceil() } else { scaled.floor() };
-    format!("{:.6}", k.to_f64() / 1e6)
-}
-
 /// Describes one piece's certified minimum.
 pub fn describe(name: &str, variant: Variant, m: &PieceMinimum) -> String {
     let bracket = match &m.lower {
-        Some(l) => format!("[{}, {}]", decimal(l, false), decimal(&m.upper, true)),
+        Some(l) => format!("[{}, {}]", decimal(l, 6, false), decimal(&m.upper, 6, true)),
         None => format!(
             "(undecided: {}) ≤ {}",
             m.undecided.as_deref().unwrap_or("?"),
-            decimal(&m.upper, true)
+            decimal(&m.upper, 6, true)
         ),
     };
     format!(

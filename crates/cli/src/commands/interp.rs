@@ -8,6 +8,7 @@ use std::fmt::Write;
 use clap::{Args, ValueEnum};
 use rug::Rational;
 use serde_json::json;
+use trig_certify::algebraic::decimal;
 use trig_interp::{
     DataSet, InterpError, Interval, KnotJump, PieceMinimum, Scheme, Spline, Variant, build,
     certified_minimum, knot_jumps,
@@ -59,13 +60,6 @@ fn approx(x: &Sym) -> f64 {
     .unwrap_or(f64::NAN)
 }
 
-/// `q` rounded outward to 6 decimals.
-fn decimal(q: &Rational, up: bool) -> String {
-    let scaled = q.clone() * Rational::from(1_000_000);
-    let k = if up { scaled.ceil() } else { scaled.floor() };
-    format!("{:.6}", k.to_f64() / 1e6)
-}
-
 fn factors(data: &DataSet, i: usize) -> String {
     data.params
         .iter()
@@ -83,8 +77,8 @@ fn bracket(m: &PieceMinimum) -> (String, String) {
     (
         m.lower
             .as_ref()
-            .map_or("undecided".to_string(), |l| decimal(l, false)),
-        decimal(&m.upper, true),
+            .map_or("undecided".to_string(), |l| decimal(l, 6, false)),
+        decimal(&m.upper, 6, true),
     )
 }
 
