@@ -170,6 +170,55 @@ fn uniform() -> &'static [Vec<Vec<Sym>>] {
 /// One printed entry: equation, function `i`, end (0 = `n_j^+`), order, text.
 type Entry = (&'static str, usize, usize, usize, String);
 
+/// The printed entries of Appendix E, claim by claim (the file's header
+/// says how they are written).
+const PRINTED: &str = include_str!("seed000_appendix_e.txt");
+
+/// The printed entries of `claim` in [`PRINTED`], abbreviations expanded.
+fn entries(claim: &str) -> Result<Vec<Entry>, String> {
+    entries_in(PRINTED, claim)
+}
+
+/// The printed entries of `claim` in `data` (written as [`PRINTED`]).
+fn entries_in(data: &'static str, claim: &str) -> Result<Vec<Entry>, String> {
+    let mut abbreviations: Vec<(String, &str)> = Vec::new();
+    let mut out = Vec::new();
+    let mut current = None;
+    for (n, line) in data.lines().enumerate() {
+        let bad = |what: &str| format!("seed000_appendix_e.txt line {}: {what}", n + 1);
+        let line = line.trim();
+        if line.is_empty() || line.starts_with('#') {
+            continue;
+        }
+        if let Some(id) = line.strip_prefix("== ") {
+            current = Some(id);
+        } else if let Some((name, text)) = line.split_once(" := ") {
+            abbreviations.push((format!("${name}"), text));
+        } else if current == Some(claim) {
+            let [eq, i, end, order, text] = line.splitn(5, " | ").collect::<Vec<_>>()[..] else {
+                return Err(bad("not `equation | i | end | order | formula`"));
+            };
+            let number = |f: &str| {
+                f.parse::<usize>()
+                    .map_err(|_| bad("i or order not a number"))
+            };
+            let end = match end {
+                "+" => 0,
+                "-" => 1,
+                _ => return Err(bad("end not + or -")),
+            };
+            let text = abbreviations
+                .iter()
+                .fold(text.to_string(), |t, (name, by)| t.replace(name, by));
+            out.push((eq, number(i)?, end, number(order)?, text));
+        }
+    }
+    if out.is_empty() {
+        return Err(format!("seed000_appendix_e.txt has no entries for {claim}"));
+    }
+    Ok(out)
+}
+
 /// The shorthands of Appendix E, substituted after reading a print.
 const SHORTHANDS: [Shorthand; 8] = [
     (
@@ -205,417 +254,40 @@ fn decide(entries: &[Entry], table: &[Vec<Vec<Sym>>], preamble: &str) -> Verdict
 const GENERAL: &str = "general coefficients as symbols: d = d_j, b_k = b_{j,k}, c_k = c_{j,k}, a = a_j; weights w0…w3, control points H0…H3, q = q_j; S = s(ξ); shorthands A, B, J, M, K, L, g(ξ), e(ξ) as defined in Appendix E; derivatives in n (factor (π/(2q_j))^k)";
 const UNIFORM: &str = "uniform case: Appendix A basis F_i = l_i/(6ζ²−6ζ+10); weights w0…w3, control points H0…H3, q = q_j; S = s(ξ); derivatives in n (factor (π/(2q_j))^k)";
 
-fn e(eq: &'static str, i: usize, end: usize, order: usize, text: impl Into<String>) -> Entry {
-    (eq, i, end, order, text.into())
+/// The claim's printed entries decided against `table`.
+fn printed(claim: &str, table: &[Vec<Vec<Sym>>], preamble: &str) -> Verdict {
+    match entries(claim) {
+        Ok(entries) => decide(&entries, table, preamble),
+        Err(e) => Verdict::not_checkable(e),
+    }
 }
 
-const DA: &str = "[S(w0 + w2) + 4(S + 1)w1]";
-const DB: &str = "[S(w1 + w3) + 4(S + 1)w2]";
-
 fn m7() -> Verdict {
-    let entries = [
-        e("(A36)", 0, 0, 0, format!("S w0 H0 / {DA}")),
-        e("(A37)", 1, 0, 0, format!("4(S + 1)w1 H1 / {DA}")),
-        e("(A38)", 2, 0, 0, format!("4(S + 1)w2 H2 / {DA}")),
-        e("(A39)", 3, 0, 0, "0"),
-        e("(A40)", 0, 1, 0, "0"),
-        e("(A41)", 1, 1, 0, format!("4(S + 1)w1 H1 / {DB}")),
-        e("(A42)", 2, 1, 0, format!("4(S + 1)w2 H2 / {DB}")),
-        e("(A43)", 3, 1, 0, format!("(S)w3 H3 / {DB}")),
-    ];
-    decide(&entries, uniform(), UNIFORM)
+    printed("M7", uniform(), UNIFORM)
 }
 
 fn m10() -> Verdict {
-    let entries = [
-        e(
-            "(A44)",
-            0,
-            0,
-            1,
-            format!("(-pi/(2q))(1 + 2S)[({DA} + S(-w0 + w2)) / {DA}^2] w0 H0"),
-        ),
-        e(
-            "(A45)",
-            1,
-            0,
-            1,
-            format!("(pi/2)[(1 + 2S)[-4(S + 1)(-w0 + w2)]w1 H1 / {DA}^2]"),
-        ),
-        e(
-            "(A46)",
-            2,
-            0,
-            1,
-            format!("(pi/(2q))(1 + 2S)[({DA} - S(-w0 + w2)) / {DA}^2] w2 H2"),
-        ),
-        // printed "Q_3(n_j^+) = 0" in the first-derivative list
-        e("(A47)", 3, 0, 1, "0"),
-        // printed "Q_0(n_{j+1}^-) = 0" in the first-derivative list
-        e("(A48)", 0, 1, 1, "0"),
-        e(
-            "(A49)",
-            1,
-            1,
-            1,
-            format!("(pi/(2q))(1 + 2S)[({DB} - S(-w1 + w3)) / {DB}^2] w1 H1"),
-        ),
-        e(
-            "(A50)",
-            2,
-            1,
-            1,
-            format!("(pi/2)[(1 + 2S)[-4(S + 1)(-w1 + w3)]w2 H2 / {DB}^2]"),
-        ),
-        e(
-            "(A51)",
-            3,
-            1,
-            1,
-            format!("(pi/(2q))(1 + 2S)[({DB} - S(-w1 + w3)) / {DB}^2] w3 H3"),
-        ),
-    ];
-    decide(&entries, uniform(), UNIFORM)
+    printed("M10", uniform(), UNIFORM)
 }
 
 fn m13() -> Verdict {
-    let p2 = "(pi/(2q))^2";
-    let entries = [
-        e(
-            "(A52)",
-            0,
-            0,
-            2,
-            format!(
-                "{p2} (2(S + 2))[({DA} - S[(2S - 5)(w0 - w2)]) / {DA}^2] w0 H0 + 2{p2} (1 + 2S)(-w0 + w2)[({DA} - S(-w0 + w2)) / {DA}^3] w0 H0"
-            ),
-        ),
-        e(
-            "(A53)",
-            1,
-            0,
-            2,
-            format!(
-                "{p2} (2(S + 2))[(-2{DA} - 4(S + 1)[(w0 - 2w1 + w2)]) / {DA}^2] w1 H1 - 2{p2} (1 + 2S)(-w0 + w2)[-4(S + 1)(-w0 + w2) / {DA}^3] w1 H1"
-            ),
-        ),
-        e(
-            "(A54)",
-            2,
-            0,
-            2,
-            format!(
-                "{p2} (2(S + 2))[({DA} - S[(w0 - 2w1 + w2)]) / {DA}^2] w2 H2 - 2{p2} (1 + 2S)(-w0 + w2)[{DA} / {DA}^3] w2 H2"
-            ),
-        ),
-        // printed "Q''_2(n_j^+) = 0" (label as printed; see M13b)
-        e("(A55)", 2, 0, 2, "0"),
-        e("(A56)", 0, 1, 2, "0"),
-        e(
-            "(A57)",
-            1,
-            1,
-            2,
-            format!(
-                "{p2} (2(S + 2))[({DB} - 4(S + 1)[(w1 - 2w2 + w3)]) / {DB}^2] w1 H1 - 2{p2} (1 + 2S)(-w1 + w3)[({DB} - [(-1 + 2S) - (S(-w1 + w3))]) / {DB}^3] w1 H1"
-            ),
-        ),
-        e(
-            "(A58)",
-            2,
-            1,
-            2,
-            format!(
-                "{p2} (2(S + 2))[(-2[S(w3 + w1) + 4(S + 1)w2] - 4(S + 1)[(w1 - 2w2 + w3)]) / {DB}^2] w2 H2 - 2{p2} (1 + 2S)(-w1 + w3)[[4(S + 1)(-w1 + w3)] / {DB}^3] w2 H2"
-            ),
-        ),
-        e(
-            "(A59)",
-            3,
-            1,
-            2,
-            format!(
-                "{p2} (2(S + 2))[({DB} - S[(2S - 5)(w1 + w3)]) / {DB}^2] w3 H3 + 2{p2} (1 + 2S)(-w1 + w3)[({DB} - S(-w1 + w3)) / {DB}^3] w3 H3"
-            ),
-        ),
-    ];
-    decide(&entries, uniform(), UNIFORM)
+    printed("M13", uniform(), UNIFORM)
 }
 
 fn m13b() -> Verdict {
-    decide(
-        &[e("(A55) read as Q''_3", 3, 0, 2, "0")],
-        uniform(),
-        UNIFORM,
-    )
-}
-
-const FA: &str = "(S d w0 + [S(b0 + b2) + 4(S + 1)b1]w1 + [S(c0 + c2) + 4(S + 1)c1]w2)";
-const FB: &str = "([S(b1 + b3) + 4(S + 1)b2]w1 + [S(c1 + c3) + 4(S + 1)c2]w2 + S a w3)";
-
-fn m12_entries() -> Vec<Entry> {
-    let p = "(pi/(2q))";
-    vec![
-        e("(A4)", 0, 0, 0, format!("S d w0 H0 / {FA}")),
-        e(
-            "(A5)",
-            1,
-            0,
-            0,
-            format!("(S(b0 + b2) + 4(S + 1)b1 w1 H1) / {FA}"),
-        ),
-        e(
-            "(A6)",
-            2,
-            0,
-            0,
-            format!("(S(c0 + c2) + 4(S + 1)c1 w2 H2) / {FA}"),
-        ),
-        e("(A7)", 3, 0, 0, "0"),
-        e("(A8)", 0, 1, 0, "0"),
-        e(
-            "(A9)",
-            1,
-            1,
-            0,
-            format!("[S(b1 + b3) + 4(S + 1)b2]w1 H1 / {FB}"),
-        ),
-        e(
-            "(A10)",
-            2,
-            1,
-            0,
-            format!("[S(c1 + c3) + 4(S + 1)c2]w2 H2 / {FB}"),
-        ),
-        e("(A11)", 3, 1, 0, format!("S a w3 H3 / {FB}")),
-        e(
-            "(A12)",
-            0,
-            0,
-            1,
-            "[-pi/(2q)](1 + 2S)[A + S(-d w0 + (b2 - b0)w1 + (c2 - c0)w2)] d w0 H0 / A^2",
-        ),
-        e(
-            "(A13)",
-            1,
-            0,
-            1,
-            format!(
-                "{p}(1 + 2S)[((b2 - b0)A - [S(b0 + b2) + 4(S + 1)b1]) / [-d w0 + (b2 - b0)w1 + (c2 - c0)w2]] w1 H1"
-            ),
-        ),
-        e(
-            "(A14)",
-            2,
-            0,
-            1,
-            format!(
-                "{p}(1 + 2S)[((c2 - c0)A - [S(c0 + c2) + 4(S + 1)c1]) / [-d w0 + (b2 - b0)w1 + (c2 - c0)w2]] w2 H2"
-            ),
-        ),
-        e("(A15)", 3, 0, 1, "0"),
-        e("(A16)", 0, 1, 1, "0"),
-        e(
-            "(A17)",
-            1,
-            1,
-            1,
-            format!(
-                "{p}(1 + 2S)[((b3 - b1)B - [S(b1 + b3) + 4(S + 1)b2]) / [(b3 - b1)w1 + (c3 - c1)w2 + a w3]] w1 H1"
-            ),
-        ),
-        e(
-            "(A18)",
-            2,
-            1,
-            1,
-            format!(
-                "{p}(1 + 2S)[((c3 - c1)B - [S(c1 + c3) + 4(S + 1)c2]) / [(b3 - b1)w1 + (c3 - c1)w2 + a w3]] w2 H2"
-            ),
-        ),
-        e(
-            "(A19)",
-            3,
-            1,
-            1,
-            "[pi/(2q)](1 + 2S)[B - S((b3 - b1)w1 + (c3 - c1)w2 + a w3)] a w3 H3 / B^2",
-        ),
-    ]
+    printed("M13b", uniform(), UNIFORM)
 }
 
 fn m12() -> Verdict {
-    decide(&m12_entries(), general_first(), GENERAL)
+    printed("M12", general_first(), GENERAL)
 }
 
 fn m12b() -> Verdict {
-    let p = "(pi/(2q))";
-    let entries = [
-        e(
-            "(A5) read",
-            1,
-            0,
-            0,
-            format!("[S(b0 + b2) + 4(S + 1)b1] w1 H1 / {FA}"),
-        ),
-        e(
-            "(A6) read",
-            2,
-            0,
-            0,
-            format!("[S(c0 + c2) + 4(S + 1)c1] w2 H2 / {FA}"),
-        ),
-        e(
-            "(A13) read",
-            1,
-            0,
-            1,
-            format!("{p}(1 + 2S)[((b2 - b0)A - [S(b0 + b2) + 4(S + 1)b1] M) / A^2] w1 H1"),
-        ),
-        e(
-            "(A14) read",
-            2,
-            0,
-            1,
-            format!("{p}(1 + 2S)[((c2 - c0)A - [S(c0 + c2) + 4(S + 1)c1] M) / A^2] w2 H2"),
-        ),
-        e(
-            "(A17) read",
-            1,
-            1,
-            1,
-            format!("{p}(1 + 2S)[((b3 - b1)B - [S(b1 + b3) + 4(S + 1)b2] L) / B^2] w1 H1"),
-        ),
-        e(
-            "(A18) read",
-            2,
-            1,
-            1,
-            format!("{p}(1 + 2S)[((c3 - c1)B - [S(c1 + c3) + 4(S + 1)c2] L) / B^2] w2 H2"),
-        ),
-    ];
-    decide(&entries, general_first(), GENERAL)
+    printed("M12b", general_first(), GENERAL)
 }
 
 fn m15() -> Verdict {
-    let p2 = "(pi/(2q))^2";
-    let p3 = "(pi/(2q))^3";
-    let entries = [
-        // "A^-" in the print read as "A −"
-        e(
-            "(A20)",
-            0,
-            0,
-            2,
-            format!(
-                "{p2}(2S + 2)[(A - [S(2S - 5)(d w0 + (b0 - b2)w1 + (c0 - c2)w2)]) / A^2] d w0 H0 + 2{p2}(1 + 2S)[[-d w0 + (b2 - b0)w1 + (c2 - c0)w2] / [A + [S(-d w0 + (b2 - b0)w1 + (c2 - c0)w2)]]] d w0 H0"
-            ),
-        ),
-        e(
-            "(A21)",
-            1,
-            0,
-            2,
-            format!(
-                "{p2}(2S + 2)[(A[b0 - 2b1 + b2] - J[S(b0 + b2) + 4(S + 1)b1]) / A^2] w1 H1 - 2{p2}(1 + 2S) M [A[(1 + 2S)(b2 - b0)] / [M[S(b0 + b2) + 4(S + 1)b1]]] w1 H1"
-            ),
-        ),
-        e(
-            "(A22)",
-            2,
-            0,
-            2,
-            format!(
-                "{p2}(2S + 2)[(A[c0 - 2c1 + c2] - [S(c0 + c2) + 4(S + 1)c1]J) / A^2] w2 H2 - 2{p2}(1 + 2S) M [A[(1 + 2S)(c2 - c0)] / [M[S(c0 + c2) + 4(S + 1)c1]]] w2 H2"
-            ),
-        ),
-        e("(A23)", 3, 0, 2, "0"),
-        e("(A24)", 0, 1, 2, "0"),
-        e(
-            "(A25)",
-            1,
-            1,
-            2,
-            format!(
-                "{p2}(2S + 2)[(B[b1 - 2b2 + b3] - K[S(b1 + b3) + 4(S + 1)b2]) / B^2] w1 H1 - 2{p2}(1 + 2S) L [B[(1 + 2S)(b3 - b1)] / [L[S(b1 + b3) + 4(S + 1)b2]]] w1 H1"
-            ),
-        ),
-        e(
-            "(A26)",
-            2,
-            1,
-            2,
-            format!(
-                "{p2}(2S + 2)[(B[c1 - 2c2 + c3] - K[S(c1 + c3) + 4(S + 1)c2]) / B^2] w2 H2 - 2{p2}(1 + 2S) L [B[(1 + 2S)(c3 - c1)] / [L[S(c1 + c3) + 4(S + 1)c2]]] w2 H2"
-            ),
-        ),
-        // "B^-" in the print read as "B −"
-        e(
-            "(A27)",
-            3,
-            1,
-            2,
-            format!(
-                "{p2}(2S + 2)[(B - [S(2S - 5)][(b1 - b3)w1 + (c1 - c3)w2 + a w3]) / B^2] a w3 H3 - 2{p2}(1 + 2S) L [(B - [S L]) / B^3] a w3 H3"
-            ),
-        ),
-        e(
-            "(A28)",
-            0,
-            0,
-            3,
-            format!(
-                "{p3} g d w0 H0 [([(S b2 + 2(S + 1)b1)w1 + (S c2 + 2(S + 1)c1)w2] + [4(2S + 1)(S + 2)[(b2 - b1)w1 + (c2 - c1)w2]]) / A^2 - 8{p3}(S)^2 d w0 H0 [((2 + 3S)M(b1 w1 + c1 w2) - 2J[(S b2 + 2(S + 1)b1)w1 + (S c2 + 2(S + 1)c1)w2]) / A^3] - 12{p3} e d w0 H0 [M[(S b2 + 2(S + 1)b1)w1 + (S c2 + 2(S + 1)c1)w2] / A^4]]"
-            ),
-        ),
-        e(
-            "(A29)",
-            1,
-            0,
-            3,
-            format!(
-                "{p3} d w0 w1 H1 [[(-2S b2 - 4(S + 1)b1)(2S - 5) - 4(2S + 1)(S + 2)((b2 - b1))] / A^2] - 2{p3}[(2M[A(b0 - 2b1 + b2) - (S(b0 + b2) + 4(S + 1)b1)J] - 2J[A(b2 - b0) - (S(b0 + b2) + 4(S + 1)b1)M]) / A^3] w1 H1 + 6{p3}(1 + 2S)^3 M^2 [[A(b2 - b0) - (S(b0 + b2) + 4(S + 1)b1)M] / A^3] w1 H1"
-            ),
-        ),
-        e(
-            "(A30)",
-            2,
-            0,
-            3,
-            format!(
-                "{p3} d w0 w2 H2 [[(-2S c2 - 4(S + 1)c1)(2S - 5) - 4(2S + 1)(S + 2)((c2 - c1))] / A^2] - 2{p3}[(2M[A(c0 - 2c1 + c2) - (S(c0 + c2) + 4(S + 1)c1)J] - 2J[A(c2 - c0) - (S(c0 + c2) + 4(S + 1)c1)M]) / A^3] w2 H2 + 6{p3}(1 + 2S)^3 M^2 [[A(c2 - c0) - (S(c0 + c2) + 4(S + 1)c1)M] / A^4] w2 H2"
-            ),
-        ),
-        e("(A31)", 3, 0, 3, "0"),
-        e("(A32)", 0, 1, 3, "0"),
-        e(
-            "(A33)",
-            1,
-            1,
-            3,
-            format!(
-                "{p3} a w3 w1 H1 [[(-2S b3 - 4(S + 1)b2)(2S - 5) + 4(2S + 1)(S + 2)((b1 - b2))] / B^2] - 2{p3}[(2L[B(b1 - 2b2 + b3) - (S(b1 + b3) + 4(S + 1)b2)K] - 2K[B(b3 - b1) - (S(b1 + b3) + 4(S + 1)b2)L]) / B^3] w1 H1 + 6{p3}(1 + 2S)^3 L^2 [[B(b3 - b1) - (S(b1 + b3) + 4(S + 1)b2)L] / B^4] w1 H1"
-            ),
-        ),
-        e(
-            "(A34)",
-            2,
-            1,
-            3,
-            format!(
-                "{p3} a w3 w2 H2 [[(-2S c3 - 4(S + 1)c2)(2S - 5) + 4(2S + 1)(S + 2)((c1 - c2))] / B^2] - 2{p3}[(2L[B(c1 - 2c2 + c3) - [(S(c1 + c3) + 4(S + 1)c2)K]] - 2K[B(c3 - c1) - (S(c1 + c3) + 4(S + 1)c2)L]) / B^3] w2 H2 + 6{p3}(1 + 2S)^3 L^2 [[B(c3 - c1) - (S(c1 + c3) + 4(S + 1)c2)L] / B^4] w2 H2"
-            ),
-        ),
-        e(
-            "(A35)",
-            3,
-            1,
-            3,
-            format!(
-                "{p3} g a w3 H3 [([(S b3 + 2(S + 1)b2)w1 + (S c3 + 2(S + 1)c2)w2] + [4(2S + 1)(S + 2)[(b3 - b2)w1 + (c3 - c2)w2]]) / B^2] - 8{p3}(S)^2 a w3 H3 [((2 + 3S)L(b2 w1 + c2 w2) - 2K[(S b3 + 2(S + 1)b2)w1 + (S c3 + 2(S + 1)c2)w2]) / B^3] - 12{p3} e a w3 H3 [L[(S b3 + 2(S + 1)b2)w1 + (S c3 + 2(S + 1)c2)w2] / B^4]"
-            ),
-        ),
-    ];
-    let mut v = decide(&entries, &general::<THIRD>(), GENERAL);
+    let mut v = printed("M15", &general::<THIRD>(), GENERAL);
     v.evidence.insert(
         1,
         "garbled print: \"A^-\" in (A20) and \"B^-\" in (A27) are read as \"A −\", \"B −\"; the outer bracket of (A28) encloses all three terms as printed; m(ξ)² is defined but never used",
@@ -627,6 +299,38 @@ fn m15() -> Verdict {
 mod tests {
     use super::*;
     use trig_verdict::status::Status;
+
+    #[test]
+    fn every_claim_has_its_printed_entries() {
+        let counts: Vec<usize> = CLAIMS
+            .iter()
+            .map(|c| entries(c.id).map_or(0, |e| e.len()))
+            .collect();
+        // (A36)–(A43), (A44)–(A51), (A52)–(A59), (A55) read, (A4)–(A19),
+        // six readings, (A20)–(A35)
+        assert_eq!(counts, [8, 8, 8, 1, 16, 6, 16]);
+        let m10 = entries("M10").unwrap();
+        assert_eq!(m10[0].0, "(A44)");
+        assert_eq!((m10[0].1, m10[0].2, m10[0].3), (0, 0, 1));
+        assert!(
+            m10[0].4.contains("[S(w0 + w2) + 4(S + 1)w1]"),
+            "$DA expanded"
+        );
+        assert!(!m10.iter().any(|e| e.4.contains('$')));
+    }
+
+    #[test]
+    fn malformed_entries_are_errors_not_panics() {
+        let err = |data: &'static str| entries_in(data, "X").unwrap_err();
+        assert!(err("== X\n(A1) | 0 | + | 0\n").contains("line 2"));
+        assert!(err("== X\n(A1) | 0 | x | 0 | 0\n").contains("end not + or -"));
+        assert!(err("== X\n(A1) | one | + | 0 | 0\n").contains("not a number"));
+        assert!(err("== Y\n(A1) | 0 | + | 0 | 0\n").contains("no entries for X"));
+        assert_eq!(
+            entries_in("D := [w]\n== X\n(A1) | 1 | - | 2 | $D/2\n", "X"),
+            Ok(vec![("(A1)", 1, 1, 2, "[w]/2".to_string())])
+        );
+    }
 
     #[test]
     fn printed_values_that_are_right_hold_and_wrong_ones_fail() {
