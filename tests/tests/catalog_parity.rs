@@ -5,7 +5,7 @@
 //! catalog path, exactly:
 //!
 //! * the functions: the spec's exact values against the family evaluated
-//!   in the exact ring (`trig_verification::exact::basis`);
+//!   in the exact ring (`trig_judge::exact::basis`);
 //! * the endpoint-derivative tables of orders 0–6 at both ends, in every
 //!   convention (angle, `u`, data abscissa `x` with the symbol `h`, the
 //!   basis variable), and for the families the catalog marks piecewise the
@@ -24,9 +24,9 @@ use std::path::PathBuf;
 
 use trig_core::{Basis, Described, FamilyInfo, catalog};
 use trig_deriv::{End, JoinKind, JoinSetup, Wrt, endpoint_derivatives, knot_derivatives};
+use trig_judge::exact;
 use trig_specfile::Spec;
 use trig_symbolic::Sym;
-use trig_verification::exact;
 
 /// Catalog entries written as no spec file, with the reason.
 const ABSENT: &[(&str, &str)] = &[
@@ -302,29 +302,28 @@ fn derived_join_formulas_are_equal() {
 /// families the catalog marks piecewise (function names as in [`RENAMED`]).
 #[test]
 fn judges_give_the_same_verdicts() {
-    use trig_verification::judge;
     for (family, spec) in pairs() {
         let id = family.info().id;
         let mut both: Vec<(&str, trig_verification::Verdict, trig_verification::Verdict)> = vec![
             (
                 "unity",
-                judge::unity::unity(&family),
-                judge::unity::unity(&spec),
+                trig_judge::unity::unity(&family),
+                trig_judge::unity::unity(&spec),
             ),
             (
                 "nonnegativity",
-                judge::nonnegative::nonnegativity(&family),
-                judge::nonnegative::nonnegativity(&spec),
+                trig_judge::nonnegative::nonnegativity(&family),
+                trig_judge::nonnegative::nonnegativity(&spec),
             ),
             (
                 "symmetry",
-                judge::symmetry::battery_symmetry(&family).1,
-                judge::symmetry::battery_symmetry(&spec).1,
+                trig_judge::symmetry::battery_symmetry(&family).1,
+                trig_judge::symmetry::battery_symmetry(&spec).1,
             ),
             (
                 "interpolation",
-                judge::endpoint::interpolation(&family),
-                judge::endpoint::interpolation(&spec),
+                trig_judge::endpoint::interpolation(&family),
+                trig_judge::endpoint::interpolation(&spec),
             ),
         ];
         for wrt in [Wrt::Angle, Wrt::Variable] {
@@ -333,23 +332,23 @@ fn judges_give_the_same_verdicts() {
             }
             both.push((
                 "derivative table",
-                judge::endpoint::derivative_table(&family, wrt),
-                judge::endpoint::derivative_table(&spec, wrt),
+                trig_judge::endpoint::derivative_table(&family, wrt),
+                trig_judge::endpoint::derivative_table(&spec, wrt),
             ));
         }
         for order in [1, 2] {
             both.push((
                 "derived join",
-                judge::join::derived_join(&family, order),
-                judge::join::derived_join(&spec, order),
+                trig_judge::join::derived_join(&family, order),
+                trig_judge::join::derived_join(&spec, order),
             ));
         }
         if family.piecewise() {
             for order in [1, 2, 3] {
                 both.push((
                     "continuity",
-                    judge::continuity::bspline_continuity(&family, order),
-                    judge::continuity::bspline_continuity(&spec, order),
+                    trig_judge::continuity::bspline_continuity(&family, order),
+                    trig_judge::continuity::bspline_continuity(&spec, order),
                 ));
             }
         }

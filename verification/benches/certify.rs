@@ -9,9 +9,9 @@ use std::path::PathBuf;
 use criterion::{Criterion, criterion_group, criterion_main};
 use trig_certify::ParamBox;
 use trig_certify::range::maximal_range;
+use trig_judge::region::{Axis, classify_window, maximal};
 use trig_specfile::Spec;
 use trig_symbolic::Sym;
-use trig_verification::judge::region::{Axis, classify_window, maximal};
 
 fn load(name: &str) -> Spec {
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))

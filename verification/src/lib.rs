@@ -1,22 +1,19 @@
 //! # trig-verification
 //!
 //! The audit: every claim of `shared/claims.md` as data ([`Claim`]: id,
-//! source, statement as printed, checker) and the checkers that decide them —
-//! identities exactly in the symbolic ring, with the exact residual or a
-//! 256-bit MPFR counterexample as evidence when a claim fails. A claim never
-//! carries its verdict: [`run`] computes every verdict.
+//! source, statement as printed, checker), each checker stating what is
+//! printed and calling the judges of `trig-judge` — identities exactly in
+//! the symbolic ring, with the exact residual or a 256-bit MPFR
+//! counterexample as evidence when a claim fails; and the claims of a spec
+//! file ([`spec_audit`]). A claim never carries its verdict: [`run`]
+//! computes every verdict, and `trig-report` renders them.
 
 pub mod budget;
-pub mod certify;
 pub mod claim;
 mod claims;
 pub mod entry;
-pub mod exact;
 pub mod figures;
-pub mod judge;
-mod memo;
 pub mod minimum;
-pub mod numeric;
 pub mod parallel;
 pub mod spec_audit;
 

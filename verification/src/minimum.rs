@@ -1,5 +1,5 @@
 //! The audit's nonnegativity prover (Weierstrass substitution + exact
-//! Bernstein subdivision, [`crate::certify::nonneg::certify`]) in the form
+//! Bernstein subdivision, [`trig_certify::nonneg::certify`]) in the form
 //! `trig_interp::certified_minimum` takes, so the interpolation claims and the
 //! `interp` command certify minima the same way.
 
@@ -7,8 +7,8 @@ use rug::Rational;
 use trig_interp::Proof;
 use trig_symbolic::Sym;
 
-use crate::certify::nonneg::{Certificate, certify};
 use trig_certify::ParamBox;
+use trig_certify::nonneg::{Certificate, certify};
 
 /// Proves `f(θ) ≥ 0` on `[0, π/2]` (no shape parameter), or finds where it
 /// is negative.

@@ -5,9 +5,9 @@
 use proptest::prelude::*;
 use rug::{Float, Rational};
 use trig_certify::ParamBox;
+use trig_certify::nonneg::{Certificate, certify};
 use trig_core::{Family, Mpfr, Real, Ring, Variable};
-use trig_verification::certify::nonneg::{Certificate, certify};
-use trig_verification::exact::basis;
+use trig_judge::exact::basis;
 
 const PREC: u32 = 256;
 

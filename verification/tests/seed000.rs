@@ -7,8 +7,8 @@ use trig_core::families::seed000_nonuniform::NonUniform;
 use trig_core::{Family, Mpfr, Ring};
 use trig_deriv::continuity::{self, Smoothness};
 use trig_deriv::family_derivatives;
+use trig_judge::numeric::{PREC, differ};
 use trig_symbolic::Sym;
-use trig_verification::numeric::{PREC, differ};
 use trig_verification::{Seed, run};
 
 fn mp(q: &Rational) -> Mpfr {

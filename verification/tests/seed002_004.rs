@@ -5,9 +5,9 @@ use proptest::prelude::*;
 use rug::{Float, Rational};
 use trig_certify::ParamBox;
 use trig_certify::maxima::{Maximum, profile};
+use trig_certify::nonneg::{BoxCertificate, certify_box};
 use trig_core::{Family, Mpfr, Real};
-use trig_verification::certify::nonneg::{BoxCertificate, certify_box};
-use trig_verification::exact::basis;
+use trig_judge::exact::basis;
 use trig_verification::{Status, Verdict, run};
 
 const PREC: u32 = 256;

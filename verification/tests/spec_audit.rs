@@ -139,8 +139,8 @@ fn a_printed_join_with_a_sign_typo_gets_the_catalog_verdict() {
 fn a_printed_join_in_another_convention_gets_the_catalog_verdict() {
     use trig_core::Family;
     use trig_deriv::{JoinKind, JoinSetup, Wrt, solve_join};
+    use trig_judge::join::{Printed, PrintedJoin, audit};
     use trig_symbolic::Sym;
-    use trig_verification::judge::join::{Printed, PrintedJoin, audit};
     let sym = |n: &str| Sym::var(n);
     let (p, q): (Vec<Sym>, Vec<Sym>) = (
         (0..4).map(|i| sym(&format!("P{i}"))).collect(),

@@ -12,9 +12,9 @@ use trig_symbolic::Sym;
 
 use super::local_control_joins::{d17, seed002_segment, t51, t54, t65};
 use crate::claim::{Claim, Seed};
-use crate::exact::{IDENTITY, basis, identities, symbols};
-use crate::judge::continuity::at_least;
-use crate::judge::local_control::{self, Control, Entry, compare};
+use trig_judge::continuity::at_least;
+use trig_judge::exact::{IDENTITY, basis, identities, symbols};
+use trig_judge::local_control::{self, Control, Entry, compare};
 use trig_verdict::evidence::Evidence;
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
@@ -183,7 +183,7 @@ fn d19() -> Verdict {
 /// (`d/du = (1/Δt_i) d/dt` on segment `i`).
 fn e24() -> Verdict {
     let f = Family::Eh;
-    let params = crate::exact::params(f);
+    let params = trig_judge::exact::params(f);
     let p = symbols("P", 5);
     let (dt0, dt1) = (Sym::var("dt_i"), Sym::var("dt_i1"));
     let left = curve_piece(f, &params, &p[0..4], None);
@@ -235,7 +235,7 @@ fn e24() -> Verdict {
     u_evidence.evidence.extend(u_jump.evidence.into_vec());
     u_evidence.status = Status::conjunction([u_evidence.status, u_jump.status]);
     Verdict::all(
-        format!("{}; {IDENTITY}", crate::judge::continuity::METHOD),
+        format!("{}; {IDENTITY}", trig_judge::continuity::METHOD),
         vec![
             ("C⁰: R_i(1) = P_{i−2} = R_{i+1}(0)".into(), values),
             ("R' matches in t (C¹ in t)".into(), t),

@@ -14,7 +14,7 @@ use trig_deriv::{End, Wrt, curve_endpoint_derivatives};
 use trig_symbolic::Sym;
 
 use super::seed002::rational_ends;
-use crate::exact::{IDENTITY, TARGET, VALUE, basis, identities, identity_item, symbols};
+use trig_judge::exact::{IDENTITY, TARGET, VALUE, basis, identities, identity_item, symbols};
 use trig_verdict::evidence::{Evidence, Kind};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
@@ -465,7 +465,7 @@ pub(super) fn seed002_segment() -> Sym {
 /// helpers of the join claims.
 pub(super) fn thesis_tangents(points: &[Sym], end: End) -> Sym {
     let f = Family::ThesisCubic;
-    let params = crate::exact::params(f);
+    let params = trig_judge::exact::params(f);
     curve_endpoint_derivatives::<Sym, 2>(f, &params, points, None, end, Wrt::U, &Sym::one())[1]
         .clone()
 }

@@ -9,8 +9,8 @@ use trig_symbolic::Sym;
 
 use super::properties_formulas::{e19, e23, m21, t45, t63};
 use crate::claim::{Claim, Seed};
-use crate::exact::IDENTITY;
-use crate::judge::{endpoint, independence, nonnegative, span, unity};
+use trig_judge::exact::IDENTITY;
+use trig_judge::{endpoint, independence, nonnegative, span, unity};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
@@ -234,13 +234,13 @@ fn s3() -> Verdict {
 /// The rational functions `Rⱼ = wⱼbⱼ / Σ wₖbₖ` of a basis with symbolic
 /// weights `w0, w1, …`.
 fn rational(family: Family) -> Vec<Sym> {
-    let b = crate::exact::basis(family);
+    let b = trig_judge::exact::basis(family);
     let weighted: Vec<Sym> = b
         .iter()
         .enumerate()
         .map(|(j, f)| Sym::var(&format!("w{j}")) * f)
         .collect();
-    let total = crate::exact::sum(&weighted);
+    let total = trig_judge::exact::sum(&weighted);
     weighted.iter().map(|f| f.clone() / &total).collect()
 }
 
@@ -270,9 +270,9 @@ fn m18() -> Verdict {
 
 /// `Σ Rⱼ = 1` identically for symbolic weights: affine invariance.
 fn m19() -> Verdict {
-    crate::exact::identity(
+    trig_judge::exact::identity(
         "Σ w_j F_j / Σ w_k F_k − 1 (weights symbolic)",
-        &crate::exact::sum(&rational(Family::Seed000Uniform)),
+        &trig_judge::exact::sum(&rational(Family::Seed000Uniform)),
         &Sym::one(),
     )
 }
@@ -290,11 +290,11 @@ fn d13() -> Verdict {
 
 /// The quadratic basis (3.1) at `β = 0`, exactly.
 fn t43() -> Verdict {
-    let at_zero: Vec<Sym> = crate::exact::basis(Family::ThesisQuadratic)
+    let at_zero: Vec<Sym> = trig_judge::exact::basis(Family::ThesisQuadratic)
         .iter()
         .map(|h| h.subs("beta", &Sym::zero()))
         .collect();
-    crate::exact::identities(
+    trig_judge::exact::identities(
         [("H0", 0), ("H1", 1), ("H2", 0)]
             .iter()
             .zip(at_zero)
@@ -319,9 +319,9 @@ fn t62() -> Verdict {
         .map(|(family, name, printed)| {
             let range = trig_core::ParamRange::parse(printed).expect("a valid range");
             let inside = range.contains(&value);
-            let mut v = crate::judge::certificate::nonnegative_on(
+            let mut v = trig_judge::certificate::nonnegative_on(
                 family,
-                &crate::exact::basis(*family),
+                &trig_judge::exact::basis(*family),
                 Some(name),
                 &trig_certify::ParamBox::closed(value.clone(), value.clone()),
             );
@@ -338,7 +338,7 @@ fn t62() -> Verdict {
             (format!("{} at {name} = 3/5", family.info().id), v)
         })
         .collect();
-    Verdict::all(crate::judge::certificate::CERTIFIED, parts)
+    Verdict::all(trig_judge::certificate::CERTIFIED, parts)
 }
 
 /// The Bézier properties of (3.7) on `m ∈ (−2, 1]`, each by its judge:
@@ -351,14 +351,14 @@ fn t49() -> Verdict {
     let tangents = [(End::Start, 0, 1, "Q'(0) along P1 − P0"), (End::End, 2, 3, "Q'(1) along P3 − P2")]
         .iter()
         .map(|(end, from, to, label)| {
-            let p = crate::exact::symbols("P", 4);
+            let p = trig_judge::exact::symbols("P", 4);
             let d: Vec<Sym> = endpoint_derivatives::<Sym, 2>(family, &[Sym::var("m")], *end, Wrt::Angle, &Sym::one())
                 .into_iter()
                 .map(|d| d[1].clone())
                 .collect();
-            let slope = crate::exact::combination(&d, &p);
+            let slope = trig_judge::exact::combination(&d, &p);
             let c = slope.diff(&format!("P{to}"));
-            let along = crate::exact::identity_item(
+            let along = trig_judge::exact::identity_item(
                 &format!("{label}: Q' − c·(P{to} − P{from}), c = ∂Q'/∂P{to}"),
                 &slope,
                 &(c.clone() * &(p[*to].clone() - &p[*from])),
@@ -395,7 +395,7 @@ fn t49() -> Verdict {
         "affine invariance (Σ b_i = 1)".into(),
         unity::unity(&family),
     ));
-    Verdict::all(crate::judge::certificate::CERTIFIED, parts)
+    Verdict::all(trig_judge::certificate::CERTIFIED, parts)
 }
 
 /// `Some(true)` when `c` (a polynomial in `var` of degree ≤ 1, free of other
@@ -438,7 +438,7 @@ fn positive_on(c: &Sym, var: &str, range: &trig_core::ParamRange) -> Option<bool
 /// `v`, `1 − v` with the same smoothness — `1` among them exactly when `0` is.
 fn m23() -> Verdict {
     let family = Family::Seed000Uniform;
-    let f = crate::exact::basis(family);
+    let f = trig_judge::exact::basis(family);
     let names = family.info().functions;
     let moves = f.iter().any(|fj| !fj.diff("zeta").is_zero());
     let changes = Verdict::new(
@@ -451,7 +451,7 @@ fn m23() -> Verdict {
         }],
     );
     let reflected = Sym::one() - &Sym::var("zeta");
-    let symmetric = crate::exact::identities(
+    let symmetric = trig_judge::exact::identities(
         f.iter()
             .zip(names)
             .map(|(fj, name)| {
@@ -503,7 +503,7 @@ fn m23() -> Verdict {
         } else {
             Status::Fails
         },
-        crate::judge::continuity::METHOD,
+        trig_judge::continuity::METHOD,
         lines,
     );
     pairs.evidence.insert(

@@ -9,7 +9,7 @@ use trig_deriv::{End, Wrt, endpoint_derivatives};
 use trig_symbolic::Sym;
 
 use super::seed004::{hermite_segment, interpolation_conditions};
-use crate::exact::IDENTITY;
+use trig_judge::exact::IDENTITY;
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
@@ -49,7 +49,7 @@ pub(super) fn e19() -> Verdict {
     let params = [Sym::var("lambda"), Sym::var("mu")];
     let mut parts = interpolation_conditions(Family::Eh, &params, &local_t(), &Sym::var("h_i"));
     parts.extend(c1_jumps(Family::Eh, &params, ("h_i", "h_i1")));
-    let mut v = crate::exact::identities(parts);
+    let mut v = trig_judge::exact::identities(parts);
     v.evidence.insert(
         0,
         "t = (x − x_i)/h_i, x_{i+1} = x_i + h_i; the next segment has t = (x − x_{i+1})/h_{i+1} and its own data y_{i+2}, d_{i+2}, h_{i+1}; λ, μ symbolic (every value)",
@@ -61,14 +61,14 @@ pub(super) fn e19() -> Verdict {
 /// the derivative jumps at `x_{i+1}` unless `h_{i+1} = h_i`; with `h_i d_{i+1}`
 /// (E1cb's correction) the spline is `C¹`.
 pub(super) fn e23() -> Verdict {
-    let printed = crate::exact::identities(c1_jumps(Family::Hermite, &[], ("h_i1", "h_i2")));
+    let printed = trig_judge::exact::identities(c1_jumps(Family::Hermite, &[], ("h_i1", "h_i2")));
     let note = "read as E1cb: t = (x − x_i)/h_i (the printed t = (x_{i+1} − x_i)/h_i is the constant 1, which makes H_i the constant y_{i+1}); x_{i+1} = x_i + h_i; segment i + 1 has t = (x − x_{i+1})/h_{i+1}";
     if printed.status == Status::Holds {
         let mut v = printed;
         v.evidence.insert(0, note);
         return v;
     }
-    let corrected = crate::exact::identities(c1_jumps(Family::Hermite, &[], ("h_i", "h_i1")));
+    let corrected = trig_judge::exact::identities(c1_jumps(Family::Hermite, &[], ("h_i", "h_i1")));
     let mut evidence = printed.evidence;
     evidence.insert(0, note.to_string());
     let status = if corrected.status == Status::Holds {
@@ -89,15 +89,15 @@ pub(super) fn e23() -> Verdict {
 /// wherever `Σ w_j F_j ≠ 0` — no control point enters; the curve with points
 /// `H_j` depends on each of them.
 pub(super) fn m21() -> Verdict {
-    let f = crate::exact::basis(Family::Seed000Uniform);
-    let w = crate::exact::symbols("w", f.len());
+    let f = trig_judge::exact::basis(Family::Seed000Uniform);
+    let w = trig_judge::exact::symbols("w", f.len());
     let weighted: Vec<Sym> = f.iter().zip(&w).map(|(fj, wj)| wj.clone() * fj).collect();
-    let total = crate::exact::sum(&weighted);
+    let total = trig_judge::exact::sum(&weighted);
     let printed = total.clone() / &total;
     let constant =
-        crate::exact::identity_item("Y(n) − 1 (weights symbolic)", &printed, &Sym::one());
-    let points = crate::exact::symbols("H", f.len());
-    let curve = crate::exact::combination(&weighted, &points) / &total;
+        trig_judge::exact::identity_item("Y(n) − 1 (weights symbolic)", &printed, &Sym::one());
+    let points = trig_judge::exact::symbols("H", f.len());
+    let curve = trig_judge::exact::combination(&weighted, &points) / &total;
     let moves = points.iter().all(|h| !curve.diff(&h.to_string()).is_zero());
     let is_one = constant.status == Some(Status::Holds);
     let mut v = Verdict::new(
@@ -145,7 +145,7 @@ pub(super) fn m21() -> Verdict {
 /// (a nonzero constant numerator) and `c → 0` as `β → ∞` (numerator of
 /// lower degree in `β` than the denominator).
 pub(super) fn t45() -> Verdict {
-    let p = crate::exact::symbols("P", 3);
+    let p = trig_judge::exact::symbols("P", 3);
     let beta = [Sym::var("beta")];
     let ends = [
         (
@@ -177,9 +177,9 @@ pub(super) fn t45() -> Verdict {
             .into_iter()
             .map(|d| d[0].clone())
             .collect();
-            let gap = crate::exact::combination(&values, &p) - &p[*end];
+            let gap = trig_judge::exact::combination(&values, &p) - &p[*end];
             let c = gap.diff("P1");
-            let shape = crate::exact::identity_item(
+            let shape = trig_judge::exact::identity_item(
                 &format!("{label} − c·({direction}), c = ∂/∂P1"),
                 &gap,
                 &(c.clone() * &(p[1].clone() - &p[*end])),
@@ -221,7 +221,7 @@ pub(super) fn t45() -> Verdict {
 pub(super) fn t63() -> Verdict {
     let (a, r) = (Sym::var("DP1"), Sym::var("R"));
     let total = a.clone() + &r;
-    let printed = crate::exact::identities(vec![
+    let printed = trig_judge::exact::identities(vec![
         (
             "printed t_1 = DP_1/(DP_1 + R), R = DP_2 + … + DP_N".into(),
             a.clone() / &total,
@@ -233,7 +233,7 @@ pub(super) fn t63() -> Verdict {
             Sym::one(),
         ),
     ]);
-    let usual = crate::exact::identities(vec![
+    let usual = trig_judge::exact::identities(vec![
         (
             "t_1 = (empty sum)/(DP_1 + R'), R' = DP_2 + … + DP_{N−1}".into(),
             Sym::zero() / &(a.clone() + &Sym::var("R'")),

@@ -12,8 +12,8 @@ use trig_symbolic::Sym;
 
 use super::thesis_interp::{derivs, positivity};
 use crate::claim::{Claim, Seed};
-use crate::exact::{IDENTITY, basis, identities, identity_item, sum, symbols};
-use crate::judge::{nonnegative, span};
+use trig_judge::exact::{IDENTITY, basis, identities, identity_item, sum, symbols};
+use trig_judge::{nonnegative, span};
 use trig_verdict::evidence::Evidence;
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;

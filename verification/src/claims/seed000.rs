@@ -10,9 +10,9 @@ use trig_symbolic::Sym;
 
 use super::seed000_appendix_c::{NONUNIFORM_J, nonuniform_knots};
 use crate::claim::{Claim, Seed};
-use crate::exact::{IDENTITY, basis, identities, residual_verdict, sum};
-use crate::judge::certificate::nonnegative_on;
 use trig_certify::ParamBox;
+use trig_judge::certificate::nonnegative_on;
+use trig_judge::exact::{IDENTITY, basis, identities, residual_verdict, sum};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 

@@ -9,11 +9,11 @@ use trig_symbolic::Sym;
 
 use super::seed000_appendix_c::{NONUNIFORM_J, nonuniform_knots};
 use super::seed000_appendix_print::{printed_part, zeta};
-use crate::certify::nonneg::certify;
 use crate::claim::{Claim, Seed};
-use crate::exact::{IDENTITY, basis, symbols};
-use crate::judge::certificate::{CERTIFIED, describe};
+use trig_certify::nonneg::certify;
 use trig_certify::{ParamBox, in_z};
+use trig_judge::certificate::{CERTIFIED, describe};
+use trig_judge::exact::{IDENTITY, basis, symbols};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 

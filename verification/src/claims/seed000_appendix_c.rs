@@ -11,11 +11,11 @@ use trig_symbolic::Sym;
 
 use super::seed000_appendix_print::{printed_part, zeta};
 use crate::claim::{Claim, Seed, shared};
-use crate::exact::{IDENTITY, symbols};
-use crate::judge::continuity::{METHOD, at_least, describe, knot_witness};
 use trig_deriv::continuity::{
     self, KnotContinuity, curve_jumps, nonuniform_bspline, uniform_bspline,
 };
+use trig_judge::continuity::{METHOD, at_least, describe, knot_witness};
+use trig_judge::exact::{IDENTITY, symbols};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 

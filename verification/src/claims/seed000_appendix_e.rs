@@ -18,8 +18,8 @@ use trig_symbolic::Sym;
 
 use super::seed000_appendix_print::{Shorthand, printed_part, zeta};
 use crate::claim::{Claim, Seed};
-use crate::exact::{IDENTITY, symbols};
 use trig_deriv::continuity::quotient_derivatives;
+use trig_judge::exact::{IDENTITY, symbols};
 use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[

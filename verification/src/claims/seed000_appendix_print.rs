@@ -16,7 +16,7 @@ use rug::Rational;
 use trig_specfile::{Expression, FormulaError, Grammar};
 use trig_symbolic::Sym;
 
-use crate::exact::IDENTITY;
+use trig_judge::exact::IDENTITY;
 use trig_verdict::evidence::{self, Evidence, Kind};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;

@@ -7,13 +7,13 @@ use trig_deriv::{End, Wrt, curve_endpoint_derivatives};
 use trig_symbolic::{Poly, Sym};
 
 use crate::claim::{Claim, Seed};
-use crate::exact::{
+use trig_certify::ParamBox;
+use trig_judge::certificate::nonnegative_on;
+use trig_judge::exact::{
     IDENTITY, basis, combination, identities, identity, linear_map_parts, reflect, sum, symbols,
 };
-use crate::judge::certificate::nonnegative_on;
-use crate::judge::maxima::exactly_one_maximum;
-use crate::judge::symmetry::reflection_symmetry;
-use trig_certify::ParamBox;
+use trig_judge::maxima::exactly_one_maximum;
+use trig_judge::symmetry::reflection_symmetry;
 use trig_verdict::evidence::EvidenceList;
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
@@ -409,7 +409,7 @@ fn d7() -> Verdict {
     evidence.extend(low.into_part("orders 0–2 of (8)"));
     evidence.push("order 3 of (8) is not checkable: (3) fixes only orders 0–2 at each end; Q_i''' at the ends depends on the blending functions Tb_i(t, α1, α2) of (5), whose printed fraction is unreadable in our copy (see D12), i.e. on the weights w_i and control points the construction actually uses");
     evidence.push("so F³ (a third-order connection relation) can be neither proved nor refuted; the readable part, (8) for k = 0, 1, 2, is G²/C²-type continuity in u and holds exactly");
-    Verdict::new(Status::NotCheckable, crate::exact::IDENTITY, evidence)
+    Verdict::new(Status::NotCheckable, trig_judge::exact::IDENTITY, evidence)
 }
 
 /// `cos kθ`, `sin kθ` for `k = 0…n` as polynomials in `s`, `c`:

@@ -6,7 +6,7 @@ use trig_deriv::{Wrt, knot_derivatives};
 use trig_symbolic::Sym;
 
 use crate::claim::{Claim, Seed};
-use crate::exact::IDENTITY;
+use trig_judge::exact::IDENTITY;
 use trig_verdict::evidence::EvidenceList;
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;

@@ -7,13 +7,13 @@ use trig_deriv::{End, Wrt, curve_endpoint_derivatives, endpoint_derivatives};
 use trig_symbolic::Sym;
 
 use crate::claim::{Claim, Seed};
-use crate::judge::certificate::{nonnegative_on, nonnegative_on_box};
+use trig_judge::certificate::{nonnegative_on, nonnegative_on_box};
 
-use crate::exact::{
+use trig_certify::ParamBox;
+use trig_judge::exact::{
     IDENTITY, basis, combination, identities, identity, linear_map_parts, reflect, sum, symbols,
 };
-use crate::judge::symmetry::reflection_symmetry;
-use trig_certify::ParamBox;
+use trig_judge::symmetry::reflection_symmetry;
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
@@ -164,7 +164,7 @@ fn eh_at(v: i64) -> Vec<Sym> {
 /// derivatives `(0,0), (0,0), (1,0), (0,1)` at `t = 0, 1`, for functions
 /// named `names`, parameters as symbols.
 fn terminal_parts(family: Family, names: [&str; 4]) -> Vec<(String, Sym, Sym)> {
-    let params = crate::exact::params(family);
+    let params = trig_judge::exact::params(family);
     let d = |end| endpoint_derivatives::<Sym, 2>(family, &params, end, Wrt::Angle, &Sym::one());
     let (d0, d1) = (d(End::Start), d(End::End));
     let mut parts = Vec::new();
@@ -429,7 +429,7 @@ fn e12() -> Verdict {
         let fs = eh_at(v);
         parts.push((
             format!("λ = μ = {v}: Σ b_i − 1"),
-            crate::exact::residual_verdict(&sum(&fs), &Sym::one()),
+            trig_judge::exact::residual_verdict(&sum(&fs), &Sym::one()),
         ));
         let zero = rug::Rational::new();
         parts.push((
@@ -442,7 +442,7 @@ fn e12() -> Verdict {
             ),
         ));
     }
-    Verdict::all(crate::judge::certificate::CERTIFIED, parts)
+    Verdict::all(trig_judge::certificate::CERTIFIED, parts)
 }
 
 /// `H(x) = α0(t)y_i + α1(t)y_{i+1} + β0(t)h_i d_i + β1(t)·hd·d_{i+1}` for a

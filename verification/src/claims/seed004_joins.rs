@@ -1,7 +1,7 @@
 //! Seed 004 (Dube & Mishra 2016), section V: the printed C⁰–C², G¹ and G²
 //! joins of two EH curves `R1 = Σ bᵢ(t; λ1, μ1) Pᵢ` (at `t = 1`) and
 //! `R2 = Σ bᵢ(t; λ2, μ2) Qᵢ` (at `t = 0`), stated for the join judge
-//! ([`crate::judge::join`]). The EH curve ends at `P1` with tangent `P3`
+//! ([`trig_judge::join`]). The EH curve ends at `P1` with tangent `P3`
 //! (its terminal properties are shown with each claim), so the printed
 //! `P3 = Q0` does not join the curves.
 //!
@@ -15,8 +15,8 @@ use trig_deriv::{End, JoinKind, Wrt, curve_endpoint_derivatives};
 use trig_symbolic::Sym;
 
 use crate::claim::{Claim, Seed};
-use crate::exact::{IDENTITY, symbols};
-use crate::judge::join::{Printed, PrintedJoin, audit};
+use trig_judge::exact::{IDENTITY, symbols};
+use trig_judge::join::{Printed, PrintedJoin, audit};
 use trig_verdict::evidence::{Assignment, Evidence, EvidenceList, Expr, Value, Witness};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;

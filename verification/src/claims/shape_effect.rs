@@ -1,7 +1,7 @@
 //! Claims of the second list of `shared/claims.md` about the effect of a
 //! shape parameter ("the curve approaches the control polygon as `m`
 //! increases"): each states what is printed and calls the shape-effect
-//! judge ([`crate::judge::shape_effect`]), which decides under the weakest
+//! judge ([`trig_judge::shape_effect`]), which decides under the weakest
 //! reasonable definition and states it; printed polygons give an explicit
 //! quantity beside the verdict.
 
@@ -11,10 +11,10 @@ use trig_specfile::Direction;
 use trig_symbolic::Sym;
 
 use crate::claim::{Claim, Seed};
-use crate::exact::{IDENTITY, identity_item};
-use crate::judge::certificate::CERTIFIED;
-use crate::judge::nonnegative::convex_hull;
-use crate::judge::shape_effect::{
+use trig_judge::certificate::CERTIFIED;
+use trig_judge::exact::{IDENTITY, identity_item};
+use trig_judge::nonnegative::convex_hull;
+use trig_judge::shape_effect::{
     Move, Point, SHAPE, TOWARDS, moves, polygon_distances, shape_effect, weights_move,
 };
 use trig_verdict::evidence::{Evidence, Expr};
@@ -300,7 +300,7 @@ fn e21() -> Verdict {
     };
     // along λ = λ0 + τ, μ = μ0 + τ the derivative is ∂/∂λ + ∂/∂μ: equal to
     // the derivative in one parameter when each bᵢ has only one of them
-    let b = crate::exact::basis(family);
+    let b = trig_judge::exact::basis(family);
     let separated = b
         .iter()
         .all(|f| f.diff("lambda").is_zero() || f.diff("mu").is_zero());
@@ -397,12 +397,12 @@ fn d21() -> Verdict {
 /// seed 003's own basis (2) and `κ(α)` of (9) are not legible here.
 fn s5() -> Verdict {
     let half = Sym::rational(q(1, 2));
-    let b: Vec<Sym> = crate::exact::basis(Family::BSpline3)
+    let b: Vec<Sym> = trig_judge::exact::basis(Family::BSpline3)
         .iter()
         .map(|f| f.subs("t", &half))
         .collect();
-    let p = crate::exact::symbols("p", 4);
-    let r = crate::exact::combination(&b, &p);
+    let p = trig_judge::exact::symbols("p", 4);
+    let r = trig_judge::exact::combination(&b, &p);
     let star = (p[1].clone() + &p[2]) * &half;
     let kappa = Sym::rational(q(1, 48));
     let item = identity_item(

@@ -9,15 +9,15 @@ use trig_deriv::End;
 use trig_symbolic::Sym;
 
 use crate::claim::{Claim, Seed};
-use crate::exact::{
-    at_end, basis, combination, identities, identity, residual_verdict, sum, symbols,
-};
-use crate::judge::certificate::{
+use trig_certify::ParamBox;
+use trig_judge::certificate::{
     maximal_versus_published, monotone, nonnegative_on, on_published_range,
 };
-use crate::judge::symmetry::reflection_symmetry;
-use crate::numeric::{counterexample_item, differ, half_pi_minus, point, show, value};
-use trig_certify::ParamBox;
+use trig_judge::exact::{
+    at_end, basis, combination, identities, identity, residual_verdict, sum, symbols,
+};
+use trig_judge::numeric::{counterexample_item, differ, half_pi_minus, point, show, value};
+use trig_judge::symmetry::reflection_symmetry;
 use trig_verdict::evidence::Evidence;
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
@@ -191,10 +191,10 @@ fn reflection_counterexample(family: Family, param: (i64, i64), i: usize, j: usi
     let f = family.info().functions;
     // the two values as expressions of the exact basis, at their points
     let param = Sym::var(family.info().params[0].name).to_sympy();
-    let functions = crate::exact::basis(family);
+    let functions = trig_judge::exact::basis(family);
     let of = |k: usize, x: &str| {
         let f = functions[k].subs(family.info().params[0].name, &Sym::rational(p[0].clone()));
-        crate::numeric::at_sympy(&f, trig_core::Described::variable(&family), x)
+        trig_judge::numeric::at_sympy(&f, trig_core::Described::variable(&family), x)
     };
     let status = if differ(&a, &b) {
         Status::Fails
@@ -230,7 +230,7 @@ fn reflection_counterexample(family: Family, param: (i64, i64), i: usize, j: usi
 }
 
 fn t4() -> Verdict {
-    crate::exact::defined_by(
+    trig_judge::exact::defined_by(
         reflection_counterexample(Family::ThesisQuadratic, (1, 1), 0, 2),
         &Family::ThesisQuadratic,
     )
@@ -284,7 +284,7 @@ fn t9() -> Verdict {
     let mut v = reflection_counterexample(Family::ThesisCubic, (0, 1), 0, 2);
     v.evidence
         .push("as printed the index 2 − i is also out of range for i = 3 (b_{−1} does not exist)");
-    crate::exact::defined_by(v, &Family::ThesisCubic)
+    trig_judge::exact::defined_by(v, &Family::ThesisCubic)
 }
 
 fn t9b() -> Verdict {
@@ -337,7 +337,7 @@ fn t27() -> Verdict {
     );
     Verdict::new(
         status,
-        crate::exact::IDENTITY,
+        trig_judge::exact::IDENTITY,
         [Evidence::note(format!("Σ b_i − 1 = {residual}, {reading}"))
             .witnessed(witness.filter(|_| status == Status::Fails))],
     )
@@ -407,7 +407,7 @@ fn t33() -> Verdict {
             .map(|i| format!("b{i}(1)"))
             .collect()
     };
-    crate::exact::defined_by(identities(parts), &Family::ThesisCubic).with_correction(format!(
+    trig_judge::exact::defined_by(identities(parts), &Family::ThesisCubic).with_correction(format!(
         "{} = 0 and {} = 1 (the computed values)",
         with(0).join(" = "),
         with(1).join(" = ")
@@ -434,7 +434,7 @@ fn t37() -> Verdict {
         ("s".to_string(), Rational::from((3, 5))),
         ("c".to_string(), Rational::from((4, 5))),
     ];
-    let curve = crate::exact::combination(&h, &points(3));
+    let curve = trig_judge::exact::combination(&h, &points(3));
     // the control points stay symbols: F is P1 there, whatever they are
     let witness = trig_verdict::witness::of_exprs(
         &point,
@@ -447,7 +447,7 @@ fn t37() -> Verdict {
         )
         .witnessed(witness.filter(|_| status == Status::Fails)),
     );
-    Verdict::new(status, crate::exact::IDENTITY, evidence)
+    Verdict::new(status, trig_judge::exact::IDENTITY, evidence)
 }
 
 fn t38() -> Verdict {
@@ -506,7 +506,7 @@ fn t29() -> Verdict {
         m.evidence.push(note);
         parts.push((format!("{id}: maximal range (evidence)"), m));
     }
-    Verdict::all(crate::judge::certificate::CERTIFIED, parts)
+    Verdict::all(trig_judge::certificate::CERTIFIED, parts)
 }
 
 fn beta_half_line() -> ParamBox {
@@ -519,7 +519,7 @@ fn m_range() -> ParamBox {
 
 fn t3() -> Verdict {
     Verdict::all(
-        crate::judge::certificate::CERTIFIED,
+        trig_judge::certificate::CERTIFIED,
         vec![
             (
                 "H0".into(),
@@ -547,7 +547,7 @@ fn t3() -> Verdict {
 
 fn t8() -> Verdict {
     let v = Verdict::all(
-        crate::judge::certificate::CERTIFIED,
+        trig_judge::certificate::CERTIFIED,
         vec![
             (
                 "b0".into(),
@@ -559,7 +559,7 @@ fn t8() -> Verdict {
             ),
         ],
     );
-    crate::exact::defined_by(v, &Family::ThesisCubic)
+    trig_judge::exact::defined_by(v, &Family::ThesisCubic)
 }
 
 fn t8a() -> Verdict {
@@ -602,14 +602,14 @@ fn t31() -> Verdict {
         .iter()
         .chain(&parts[4..6])
         .all(|(_, v)| v.status == Status::Holds);
-    let evidence = Verdict::all(crate::judge::certificate::CERTIFIED, parts).evidence;
+    let evidence = Verdict::all(trig_judge::certificate::CERTIFIED, parts).evidence;
     let mut v = Verdict::new(
         if formula {
             Status::Fails
         } else {
             Status::Holds
         },
-        crate::judge::certificate::CERTIFIED,
+        trig_judge::certificate::CERTIFIED,
         evidence,
     );
     v.evidence.push(

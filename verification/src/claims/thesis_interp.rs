@@ -5,7 +5,7 @@
 //! end conditions are decided exactly in the symbolic ring (derivatives in
 //! `x` from `trig_deriv`, π a symbol), knot continuity by exact jumps, and
 //! positivity by a certified minimum per piece (Weierstrass substitution +
-//! Bernstein subdivision, [`crate::certify::nonneg::certify`]).
+//! Bernstein subdivision, [`trig_certify::nonneg::certify`]).
 
 use rug::Rational;
 use trig_certify::algebraic::decimal;
@@ -22,8 +22,8 @@ use trig_symbolic::Sym;
 use super::thesis::claim;
 use super::thesis_interp_point::piece_witness;
 use crate::claim::Claim;
-use crate::exact::{IDENTITY, identities};
-use crate::memo::Memo;
+use trig_judge::exact::{IDENTITY, identities};
+use trig_judge::memo::Memo;
 use trig_verdict::evidence::{Assignment, Evidence, EvidenceList, Expr, Relation, Value, Witness};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;

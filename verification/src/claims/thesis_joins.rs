@@ -20,8 +20,8 @@ use trig_symbolic::Sym;
 
 use super::thesis::claim;
 use crate::claim::{Claim, shared};
-use crate::exact::{identities, symbols};
-use crate::judge::join::{Printed, PrintedJoin, audit};
+use trig_judge::exact::{identities, symbols};
+use trig_judge::join::{Printed, PrintedJoin, audit};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
@@ -376,7 +376,7 @@ fn surface(kind: JoinKind, same: bool, printed: Vec<Printed>) -> Verdict {
         second_params: vec![v("m2")],
         ..join.clone()
     };
-    let holds = crate::judge::join::holds_as_printed(&literal);
+    let holds = trig_judge::join::holds_as_printed(&literal);
     verdict.evidence.push(format!(
         "decided with the proofs' convention (5.20)–(5.22): cross-boundary parameter m₁ (= m₁*) for S₂ and m₂ for S₁; read literally, (5.11) gives both patches the cross-boundary parameter m₂ = m₂*, and under that reading the printed formula {} in the angle convention",
         if holds { "holds" } else { "fails" }
@@ -579,12 +579,12 @@ fn t11() -> Verdict {
     let vs = symbols("V", 4);
     for (end, d, printed) in [("0", &d0, &printed_start), ("1", &d1, &printed_end)] {
         for (order, primes) in [(1, "'"), (2, "''")] {
-            let computed = crate::exact::sum(
+            let computed = trig_judge::exact::sum(
                 &(0..4)
                     .map(|k| d[k][order].clone() * &vs[k])
                     .collect::<Vec<_>>(),
             );
-            let printed_sum = crate::exact::sum(
+            let printed_sum = trig_judge::exact::sum(
                 &(0..4)
                     .map(|k| printed[k][order - 1].clone() * &vs[k])
                     .collect::<Vec<_>>(),

@@ -16,7 +16,7 @@ use trig_symbolic::Sym;
 
 use super::thesis::claim;
 use crate::claim::Claim;
-use crate::exact::{IDENTITY, identities};
+use trig_judge::exact::{IDENTITY, identities};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 

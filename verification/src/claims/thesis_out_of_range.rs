@@ -14,7 +14,7 @@ use trig_core::Family;
 use trig_symbolic::Sym;
 
 use crate::claim::{Claim, Seed};
-use crate::exact::basis;
+use trig_judge::exact::basis;
 use trig_verdict::evidence::Evidence;
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;

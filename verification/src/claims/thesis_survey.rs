@@ -4,13 +4,13 @@
 //!
 //! The table is embedded as printed (`thesis_table_1_1.txt`); every count
 //! is taken from its rows, and each count the text quotes is judged by
-//! [`crate::judge::quoted`].
+//! [`trig_judge::quoted`].
 
 use rug::Rational;
 
 use super::thesis::claim;
 use crate::claim::Claim;
-use crate::judge::quoted::quoted_figure;
+use trig_judge::quoted::quoted_figure;
 use trig_verdict::evidence::{Evidence, Kind};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;

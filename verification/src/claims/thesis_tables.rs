@@ -23,8 +23,8 @@ use rug::{Integer, Rational};
 use trig_symbolic::Sym;
 
 use crate::claim::{Claim, Seed};
-use crate::judge::recomputed::decimal;
-use crate::judge::recomputed::{self, Cell, Recomputed};
+use trig_judge::recomputed::decimal;
+use trig_judge::recomputed::{self, Cell, Recomputed};
 use trig_verdict::evidence::EvidenceList;
 use trig_verdict::evidence::{Evidence, Kind, Relation};
 use trig_verdict::status::Status;

@@ -6,7 +6,7 @@
 //! The tables are those of claim T32 (`thesis_tables.txt`, each cell an
 //! exact rational read from its printed decimal); the statements in words
 //! are `thesis_text_quotes.txt`, each with the reading it is decided under.
-//! A quoted figure is judged by [`crate::judge::quoted`]: it holds when it
+//! A quoted figure is judged by [`trig_judge::quoted`]: it holds when it
 //! is the exact recomputed value rounded to the quoted decimals.
 
 use rug::Rational;
@@ -15,9 +15,9 @@ use trig_symbolic::Sym;
 use super::thesis::claim;
 use super::thesis_tables::{DATA, Num, SCHEMES, SYMBOLS, Table, parse, summary_row, total_row};
 use crate::claim::Claim;
-use crate::judge::quoted::{QUOTED, quoted_figure, quoted_order};
-use crate::judge::recomputed::decimal;
-use crate::judge::recomputed::{self, Cell, Recomputed};
+use trig_judge::quoted::{QUOTED, quoted_figure, quoted_order};
+use trig_judge::recomputed::decimal;
+use trig_judge::recomputed::{self, Cell, Recomputed};
 use trig_verdict::evidence::{Evidence, Kind, Relation, Witness};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;

@@ -1,6 +1,6 @@
 //! Claims of total positivity, variation diminishing and convexity
 //! preservation (second list of `shared/claims.md`), decided by the
-//! total-positivity judge ([`crate::judge::total_positivity`]) and, for
+//! total-positivity judge ([`trig_judge::total_positivity`]) and, for
 //! the Bézier-like properties, by the endpoint, convex-hull and unity
 //! judges.
 
@@ -12,10 +12,10 @@ use trig_core::{Family, ParamRange};
 use trig_symbolic::Sym;
 
 use crate::claim::{Claim, Seed};
-use crate::exact::{IDENTITY, identities, symbols};
-use crate::judge::certificate::CERTIFIED;
-use crate::judge::total_positivity::{CONSEQUENCES, normalized_totally_positive};
-use crate::judge::{endpoint, nonnegative, unity};
+use trig_judge::certificate::CERTIFIED;
+use trig_judge::exact::{IDENTITY, identities, symbols};
+use trig_judge::total_positivity::{CONSEQUENCES, normalized_totally_positive};
+use trig_judge::{endpoint, nonnegative, unity};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
@@ -174,7 +174,7 @@ fn t70_degree(n: i64) -> Verdict {
     let at = |f: &Sym, x: i64| f.subs("t", &Sym::int(x));
     let mut parts = vec![(
         "Σ B_{i,n} = 1".to_string(),
-        crate::exact::sum(&b),
+        trig_judge::exact::sum(&b),
         Sym::one(),
     )];
     for i in 0..=n {
@@ -196,7 +196,7 @@ fn t70_degree(n: i64) -> Verdict {
         ));
     }
     let p = symbols("P", n as usize + 1);
-    let curve = crate::exact::combination(&b, &p);
+    let curve = trig_judge::exact::combination(&b, &p);
     let (first, last) = (p[0].clone(), p[n as usize].clone());
     let slope = curve.d_t();
     parts.push(("B(0) = P0".into(), at(&curve, 0), first.clone()));

@@ -1,5 +1,5 @@
 //! Join claims of a spec file, stated for the join judge
-//! ([`crate::judge::join`]): the printed conditions as printed terms over
+//! ([`trig_judge::join`]): the printed conditions as printed terms over
 //! their denominators, in the file's convention, with equal or different
 //! parameters.
 
@@ -7,9 +7,9 @@ use trig_deriv::{JoinKind, Wrt};
 use trig_specfile::{Condition, Spec};
 use trig_symbolic::Sym;
 
-use crate::exact::symbols;
-use crate::judge::domain::param_symbols;
-use crate::judge::join::{Printed, PrintedJoin, audit, conventions};
+use trig_judge::domain::param_symbols;
+use trig_judge::exact::symbols;
+use trig_judge::join::{Printed, PrintedJoin, audit, conventions};
 use trig_verdict::verdict::Verdict;
 
 /// Printed join conditions, decided by the join judge as for the catalog:

@@ -21,9 +21,8 @@ use trig_specfile::{Check, Spec, SpecClaim, Varied};
 
 use crate::budget::{Stopped, bounded};
 use crate::entry::{Document, Entry};
-use crate::judge;
-use crate::judge::endpoint::TABLE_ORDERS;
-use crate::judge::local_control::Control;
+use trig_judge::endpoint::TABLE_ORDERS;
+use trig_judge::local_control::Control;
 use trig_verdict::real_witness::{RealPoints, with_real_points};
 use trig_verdict::verdict::Verdict;
 
@@ -62,7 +61,7 @@ pub fn audit(spec: &Spec) -> Vec<Entry> {
 fn real_points(spec: &Spec) -> RealPoints {
     RealPoints {
         domain: spec.domain.clone(),
-        axes: judge::by_intervals::axes(spec, None).0,
+        axes: trig_judge::by_intervals::axes(spec, None).0,
         symbols: spec.params.iter().map(|p| p.symbol.clone()).collect(),
     }
 }
@@ -137,7 +136,7 @@ pub fn audit_within(spec: &Spec, budget: Option<Duration>, only: Option<&str>) -
         "standard battery",
         format!(
             "partition of unity: {}",
-            judge::unity::sum_label(
+            trig_judge::unity::sum_label(
                 &spec
                     .functions
                     .iter()
@@ -145,30 +144,30 @@ pub fn audit_within(spec: &Spec, budget: Option<Duration>, only: Option<&str>) -
                     .collect::<Vec<_>>()
             )
         ),
-        plain(judge::unity::unity),
+        plain(trig_judge::unity::unity),
     );
     entry(
         "nonnegativity",
         "standard battery",
         format!("{names} ≥ 0 on the domain exactly for the declared parameter ranges"),
-        plain(judge::nonnegative::nonnegativity),
+        plain(trig_judge::nonnegative::nonnegativity),
     );
     entry(
         "symmetry",
         "standard battery",
         "symmetry of the functions".into(),
-        Box::new(|s: &Spec| judge::symmetry::battery_symmetry(s)),
+        Box::new(|s: &Spec| trig_judge::symmetry::battery_symmetry(s)),
     );
-    entry("interpolation", "standard battery", "endpoint interpolation: only the first function is nonzero at the start (value 1), only the last at the end (value 1)".into(), plain(judge::endpoint::interpolation));
+    entry("interpolation", "standard battery", "endpoint interpolation: only the first function is nonzero at the start (value 1), only the last at the end (value 1)".into(), plain(trig_judge::endpoint::interpolation));
     entry(
         "derivatives",
         "standard battery",
         format!(
             "exact endpoint derivatives of orders 0–{} {}, by jets and by symbolic differentiation",
             TABLE_ORDERS - 1,
-            judge::domain::describe_wrt(spec, table_wrt(spec))
+            trig_judge::domain::describe_wrt(spec, table_wrt(spec))
         ),
-        plain(|s| judge::endpoint::derivative_table(s, table_wrt(s))),
+        plain(|s| trig_judge::endpoint::derivative_table(s, table_wrt(s))),
     );
     for order in [1, 2] {
         entry(
@@ -177,7 +176,7 @@ pub fn audit_within(spec: &Spec, budget: Option<Duration>, only: Option<&str>) -
             format!(
                 "C{order} join of Σ b_i P_i (end) and Σ b_i Q_i (start): derived conditions on Q"
             ),
-            Box::new(move |s: &Spec| (String::new(), judge::join::derived_join(s, order))),
+            Box::new(move |s: &Spec| (String::new(), trig_judge::join::derived_join(s, order))),
         );
     }
     for c in &spec.claims {
@@ -205,11 +204,11 @@ fn decided<T>(result: Result<T, Stopped>, failed: impl FnOnce(Verdict) -> T) -> 
 /// The verdict of one claim of the file.
 pub fn decide(spec: &Spec, claim: &SpecClaim) -> Verdict {
     match &claim.check {
-        Check::Unity => judge::unity::unity(spec),
+        Check::Unity => trig_judge::unity::unity(spec),
         Check::Nonnegative { range, maximal } => {
-            judge::nonnegative::nonnegative_claim(spec, range.as_ref(), *maximal)
+            trig_judge::nonnegative::nonnegative_claim(spec, range.as_ref(), *maximal)
         }
-        Check::ConvexHull { range } => judge::nonnegative::convex_hull(spec, range.as_ref()),
+        Check::ConvexHull { range } => trig_judge::nonnegative::convex_hull(spec, range.as_ref()),
         Check::Conic {
             points,
             points_text,
@@ -217,7 +216,7 @@ pub fn decide(spec: &Spec, claim: &SpecClaim) -> Verdict {
             equation_text,
             singular,
         } => {
-            let mut v = judge::span::conic(spec, points, equation, equation_text);
+            let mut v = trig_judge::span::conic(spec, points, equation, equation_text);
             v.evidence.insert(
                 0,
                 format!("control points as printed: {}", points_text.join("; ")),
@@ -229,18 +228,18 @@ pub fn decide(spec: &Spec, claim: &SpecClaim) -> Verdict {
             }
             v
         }
-        Check::Independent { range } => judge::independence::independent(spec, range.as_ref()),
+        Check::Independent { range } => trig_judge::independence::independent(spec, range.as_ref()),
         Check::TotalPositivity { range } => {
-            judge::total_positivity::normalized_totally_positive(spec, range.as_ref())
+            trig_judge::total_positivity::normalized_totally_positive(spec, range.as_ref())
         }
         Check::Monotone { items, range } => {
-            judge::nonnegative::monotone_claim(spec, items, range.as_ref())
+            trig_judge::nonnegative::monotone_claim(spec, items, range.as_ref())
         }
         Check::ShapeEffect {
             parameter,
             direction,
             range,
-        } => judge::shape_effect::shape_effect(spec, parameter, *direction, range.as_ref()),
+        } => trig_judge::shape_effect::shape_effect(spec, parameter, *direction, range.as_ref()),
         Check::Symmetry {
             map_text,
             map,
@@ -249,9 +248,9 @@ pub fn decide(spec: &Spec, claim: &SpecClaim) -> Verdict {
             at,
             params,
             params_text,
-        } => judge::symmetry::symmetry_claim(
+        } => trig_judge::symmetry::symmetry_claim(
             spec,
-            &judge::symmetry::PrintedSymmetry {
+            &trig_judge::symmetry::PrintedSymmetry {
                 map_text,
                 map,
                 index_text,
@@ -262,21 +261,21 @@ pub fn decide(spec: &Spec, claim: &SpecClaim) -> Verdict {
             },
         ),
         Check::EndpointValues { end, values } => {
-            judge::endpoint::endpoint_values(spec, *end, values)
+            trig_judge::endpoint::endpoint_values(spec, *end, values)
         }
         Check::EndpointDerivatives {
             end,
             order,
             wrt,
             values,
-        } => judge::endpoint::endpoint_derivative_values(spec, *end, *order, *wrt, values),
+        } => trig_judge::endpoint::endpoint_derivative_values(spec, *end, *order, *wrt, values),
         Check::CurveDerivative {
             end,
             order,
             wrt,
             text,
             value,
-        } => judge::curve::curve_derivative(spec, *end, *order, *wrt, text, value),
+        } => trig_judge::curve::curve_derivative(spec, *end, *order, *wrt, text, value),
         Check::Join {
             kind,
             wrt,
@@ -284,7 +283,7 @@ pub fn decide(spec: &Spec, claim: &SpecClaim) -> Verdict {
             factors,
             conditions,
         } => joins::printed_join(spec, *kind, *wrt, *different, factors, conditions),
-        Check::Continuity { order } => judge::continuity::bspline_continuity(spec, *order),
+        Check::Continuity { order } => trig_judge::continuity::bspline_continuity(spec, *order),
         Check::LocalControl { varied, segments } => {
             let control = match varied {
                 Varied::Point => Control::Point,
@@ -297,7 +296,7 @@ pub fn decide(spec: &Spec, claim: &SpecClaim) -> Verdict {
                 },
                 Varied::Parameter { name, .. } => Control::CurveParameter { name: name.clone() },
             };
-            judge::local_control::local_control(spec, &control, 0, segments)
+            trig_judge::local_control::local_control(spec, &control, 0, segments)
         }
     }
 }

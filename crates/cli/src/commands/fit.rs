@@ -9,13 +9,13 @@ use std::path::PathBuf;
 use std::sync::Arc;
 
 use clap::{Args, ValueEnum};
+use trig_certify::range::EndPoint;
 use trig_core::{Described, End, Family};
 use trig_fit::optimise::search_between;
 use trig_fit::{
     Continuity, CornerRule, Corners, FitError, FitOptions, Metrics, NumericBasis, Outline,
     OutlineFit, Shape, Summary, THESIS_THRESHOLD, fit_outline,
 };
-use trig_verification::certify::range::EndPoint;
 
 use super::eval::param_pairs;
 use super::{CliError, CmdResult};
@@ -215,7 +215,7 @@ fn interval(subject: &AnyBasis, range: SearchRange) -> Result<(f64, f64, &'stati
         }
         (AnyBasis::Family(f), SearchRange::Certified) => *f,
     };
-    let (certified, _) = trig_verification::judge::certificate::maximal_versus_published(&family);
+    let (certified, _) = trig_judge::certificate::maximal_versus_published(&family);
     // the certified side of each end (an irrational end by the inner side
     // of its isolating interval)
     let end = |e: &EndPoint| match e {

@@ -11,12 +11,12 @@ use trig_certify::region::CellKind;
 use trig_core::End as SpecEnd;
 use trig_core::{Affine, Bound, Described, parse_exact, parse_point};
 use trig_interp::{DataSet, Scheme, Variant, f64_segments};
+use trig_judge::region::{Axis, classify_window};
 use trig_plot::{
     Interpolant, PgfOptions, Picture, Plotted, RegionCell, RegionKind, basis_svg, basis_versus_svg,
     curve_svg, fit_svg, interp_svg, region_svg,
 };
 use trig_specfile::Spec;
-use trig_verification::judge::region::{Axis, classify_window};
 
 use super::fit::{FitSetup, Runs, prepare};
 use super::{CliError, CmdResult, range_hint};
@@ -448,7 +448,7 @@ fn region(path: &Path) -> Result<Picture, CliError> {
         }
     }
     let axes = [axis(p), axis(q)];
-    let (trig, fs, names) = trig_verification::judge::nonnegative::pieces(&spec)
+    let (trig, fs, names) = trig_judge::nonnegative::pieces(&spec)
         .map_err(|why| CliError::Usage(format!("plot region: {why}")))?;
     let names: Vec<&str> = names.iter().map(String::as_str).collect();
     let reg = classify_window(&fs, &names, trig, &axes);

@@ -15,8 +15,8 @@ use trig_symbolic::Sym;
 
 use super::{lin, n, v};
 use crate::claim::shared;
-use crate::exact::{sum, symbols};
-use crate::judge::join::{Printed, PrintedJoin, audit};
+use trig_judge::exact::{sum, symbols};
+use trig_judge::join::{Printed, PrintedJoin, audit};
 use trig_verdict::evidence::{Evidence, EvidenceList, Witness};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
@@ -51,7 +51,7 @@ pub fn t26j() -> Verdict {
     static VERDICT: OnceLock<Verdict> = OnceLock::new();
     shared(&VERDICT, || {
         Verdict::all(
-            crate::judge::join::METHOD,
+            trig_judge::join::METHOD,
             vec![
                 (
                     "seam P → Q (Q0 = P3, Q1 = 2P3 − P2, Q2 = P1 − (4m+4)P2 + (4m+4)P3)".into(),

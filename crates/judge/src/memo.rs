@@ -36,6 +36,12 @@ impl<V: Clone> Memo<V> {
     }
 }
 
+impl<V> std::fmt::Debug for Memo<V> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Memo").finish_non_exhaustive()
+    }
+}
+
 impl<V: Clone> Default for Memo<V> {
     fn default() -> Self {
         Memo::new()

@@ -10,9 +10,9 @@ use trig_core::basis::eval_at;
 use trig_core::{Affine, Mpfr, Real, Ring, Variable};
 use trig_symbolic::Sym;
 
+use crate::domain::{param_symbols, pretty};
 use crate::exact::ExactBasis;
 use crate::exact::{IDENTITY, basis_of, identities};
-use crate::judge::domain::{param_symbols, pretty};
 use crate::numeric::{PREC, differ, show};
 use trig_verdict::evidence::EvidenceList;
 use trig_verdict::status::Status;

@@ -8,8 +8,8 @@
 use trig_deriv::continuity::{KnotContinuity, achieved, continuity, uniform_bspline};
 use trig_symbolic::Sym;
 
+use crate::domain::param_symbols;
 use crate::exact::ExactBasis;
-use crate::judge::domain::param_symbols;
 use trig_verdict::evidence::{Evidence, Expr, Kind, Witness};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;

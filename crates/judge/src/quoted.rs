@@ -12,7 +12,7 @@
 use rug::ops::Pow;
 use rug::{Integer, Rational};
 
-use crate::judge::recomputed::{Recomputed, decimal, witness};
+use crate::recomputed::{Recomputed, decimal, witness};
 use trig_verdict::evidence::{Evidence, Kind, Relation};
 use trig_verdict::status::Status;
 

@@ -22,7 +22,7 @@ use trig_certify::region::{CellKind, Region, region};
 use trig_certify::{Bound, ParamBox};
 use trig_symbolic::Sym;
 
-use crate::judge::certificate::{MAXIMAL, Published, maximal_against, nonnegative_on_box_named};
+use crate::certificate::{MAXIMAL, Published, maximal_against, nonnegative_on_box_named};
 use trig_verdict::evidence::EvidenceList;
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;

@@ -4,10 +4,10 @@
 use rug::Rational;
 use trig_certify::{Bound, ParamBox, describe_z};
 
-use crate::certify::nonneg::{BoxCertificate, Certificate, certify, certify_box};
-use crate::certify::range::{EndPoint, MaximalRange, Outside, certify_all, maximal_range};
 use crate::exact::ExactBasis;
 use crate::exact::basis_of;
+use trig_certify::nonneg::{BoxCertificate, Certificate, certify, certify_box};
+use trig_certify::range::{EndPoint, MaximalRange, Outside, certify_all, maximal_range};
 use trig_verdict::evidence::EvidenceList;
 use trig_verdict::evidence::{Evidence, Kind, Witness};
 use trig_verdict::status::Status;

@@ -7,9 +7,9 @@ use trig_deriv::{End, Wrt, endpoint_derivatives};
 use trig_specfile::Printed;
 use trig_symbolic::Sym;
 
+use crate::domain::{describe_wrt, end_text, param_symbols, value_at};
 use crate::exact::ExactBasis;
 use crate::exact::{basis_of, defined_by, identities};
-use crate::judge::domain::{describe_wrt, end_text, param_symbols, value_at};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 

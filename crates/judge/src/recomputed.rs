@@ -3,7 +3,7 @@
 //! printed decimal) and the formula in those symbols (`seg1 + … + seg11`,
 //! a mean, `max(…)`, `after4 − before4`, or one cell itself).
 //!
-//! Witnesses of the table judges ([`crate::judge::quoted`]) put the cells
+//! Witnesses of the table judges ([`crate::quoted`]) put the cells
 //! in the witness point and the formula in each value's `of`, so the value
 //! is re-checked by substituting the point into the formula.
 

@@ -36,9 +36,9 @@ use trig_deriv::{
 };
 use trig_symbolic::Sym;
 
+use crate::domain::{describe_wrt, param_symbols};
 use crate::exact::ExactBasis;
 use crate::exact::{IDENTITY, sum, symbols};
-use crate::judge::domain::{describe_wrt, param_symbols};
 use trig_verdict::evidence::{Evidence, Expr, Kind};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;

@@ -1,8 +1,15 @@
+//! # trig-judge
+//!
 //! The judges: each decides one kind of claim for any basis — a catalog
 //! family or a spec file alike ([`trig_core::Basis`]) — from the engines
 //! below it (the exact ring, jets, the join solver, the certifiers), and
-//! returns a [`crate::Verdict`] with its evidence. A claim (catalog or spec
-//! file) only states what is printed and calls a judge.
+//! returns a [`trig_verdict::Verdict`] with its evidence. A claim (catalog
+//! or spec file, in `trig-verification`) only states what is printed and
+//! calls a judge; nothing here knows what a claim is.
+//!
+//! Beside the judges, their shared tools: exact bases and identities
+//! ([`exact`]), MPFR counterexamples ([`numeric`]) and the per-process
+//! memo of work several claims ask for ([`memo`]).
 
 pub mod analytic;
 pub mod by_intervals;
@@ -11,11 +18,14 @@ pub mod continuity;
 pub mod curve;
 pub mod domain;
 pub mod endpoint;
+pub mod exact;
 pub mod independence;
 pub mod join;
 pub mod local_control;
 pub mod maxima;
+pub mod memo;
 pub mod nonnegative;
+pub mod numeric;
 pub mod quoted;
 pub mod recomputed;
 pub mod region;

@@ -4,9 +4,9 @@
 use trig_deriv::{End, Wrt, curve_endpoint_derivatives};
 use trig_symbolic::Sym;
 
+use crate::domain::{describe_wrt, end_text, param_symbols};
 use crate::exact::ExactBasis;
 use crate::exact::{identities, symbols};
-use crate::judge::domain::{describe_wrt, end_text, param_symbols};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
