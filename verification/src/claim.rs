@@ -65,7 +65,7 @@ pub struct Claim {
     pub source: &'static str,
     /// The statement as printed (short quotation), or for a `…b` claim the
     /// one obvious reading, labelled as such; its formulas marked `⟪…⟫`
-    /// ([`trig_tex::marked`]), so that the LaTeX report sets them in math
+    /// ([`trig_tex::marked`](mod@trig_tex::marked)), so that the LaTeX report sets them in math
     /// and the other reports show the text as printed ([`trig_tex::plain`]).
     pub statement: &'static str,
     /// The checker.

@@ -1,11 +1,11 @@
-//! The LaTeX report ([`Format`] for [`super::render`]): by default a
+//! The LaTeX report (the `Format` of the report traversal, `render`): by default a
 //! fragment to `\input` into a plain `article` that loads the standard
 //! packages [`trig_tex::FRAGMENT_PACKAGES`] (with `pgfplots` too, the
 //! figures are drawn); with [`TexOptions::standalone`] a complete document.
 //! Both compile with pdfLaTeX (and LuaLaTeX, XeLaTeX), written with the one
 //! LaTeX writer ([`trig_tex`]). Formulas are set in math mode (expressions
 //! from their LaTeX form, printed statements from their markup through
-//! [`trig_tex::marked`]); long expressions are summarised as in the
+//! [`trig_tex::marked`](mod@trig_tex::marked)); long expressions are summarised as in the
 //! Markdown report ([`LONG`]); tables (`booktabs` rules) wrap their text
 //! columns at fractions of the line width, so that they fit any page.
 

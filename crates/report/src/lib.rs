@@ -1,7 +1,7 @@
 //! # trig-report
 //!
-//! The audit report: Markdown for people ([`markdown`]), LaTeX for papers
-//! ([`latex`]), JSON for machines ([`json`], with a versioned schema) — all
+//! The audit report: Markdown for people ([`markdown`](mod@markdown)), LaTeX for papers
+//! ([`latex`]), JSON for machines ([`json`](mod@json), with a versioned schema) — all
 //! rendered from the same entries and the same structured evidence
 //! ([`trig_verdict::evidence`]). The text formats are one traversal of the
 //! report (`render`) with a writer per format; the JSON is the entries

@@ -1,4 +1,4 @@
-//! The Markdown report ([`Format`] for [`super::render`]): summary and
+//! The Markdown report (the `Format` of the report traversal, `render`): summary and
 //! index as tables, then one section per document and one entry per
 //! claim, evidence as a list nested by the parts of the claim. Expressions
 //! longer than [`LONG`] characters are summarised (degree, number of terms,

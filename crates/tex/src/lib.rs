@@ -6,7 +6,7 @@
 //! printer takes its pieces from [`expr`]) are all written with it.
 //!
 //! - Text: [`text`] escapes prose (the special characters, every Unicode
-//!   symbol the reports print mapped, [`symbols`]); [`marked`] sets text
+//!   symbol the reports print mapped, [`symbols`]); [`marked()`] sets text
 //!   with explicit math markup (`⟪…⟫`, how printed statements are stored;
 //!   [`plain`] is the text as printed); [`prose`] sets generated text
 //!   without markup, finding its formula-like runs; [`breakable`] lets a

@@ -1,5 +1,5 @@
 //! Prose with formulas for LaTeX ([`prose`]): text with markup is set as
-//! marked ([`crate::marked`]); generated text without markup (evidence
+//! marked ([`crate::marked`](mod@crate::marked)); generated text without markup (evidence
 //! lines, labels) has its formula-like runs (`H_{2−i}(π/2 − u; β)`) found by
 //! their look and set in math mode, the rest escaped ([`crate::text`]).
 
@@ -109,7 +109,7 @@ fn classify(word: &str) -> Token {
     Token::Text
 }
 
-/// Prose with formulas. Text with markup ([`crate::marked`]) is set as
+/// Prose with formulas. Text with markup ([`crate::marked`](mod@crate::marked)) is set as
 /// marked; generated text without markup (evidence lines, labels) has its
 /// formula-like runs found by their look: whitespace-separated runs of
 /// formula-like words (subscripts, superscripts, Unicode symbols, with the

@@ -210,7 +210,7 @@ pub fn ordered_names<'a>(exprs: impl IntoIterator<Item = &'a Sym>) -> Vec<String
 /// differ ([`search`]), with the two values, labelled `labels.0`, `labels.1`.
 /// `None` when the identity holds at every point tried (the residual is
 /// then zero or exceptional; the caller shows it without a witness), or
-/// when the variables are not independent ([`independent`]: a point valued
+/// when the variables are not independent (`independent`: a point valued
 /// one variable at a time would be no real point). While a spec decision
 /// runs, a real point ([`crate::real_witness`]).
 pub fn find(left: &Sym, right: &Sym, labels: (&str, &str)) -> Option<Witness> {
