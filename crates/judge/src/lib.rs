@@ -10,6 +10,15 @@
 //! Beside the judges, their shared tools: exact bases and identities
 //! ([`exact`]), MPFR counterexamples ([`numeric`]) and the per-process
 //! memo of work several claims ask for ([`memo`]).
+//!
+//! ```
+//! use trig_core::Family;
+//! use trig_judge::unity::unity;
+//! use trig_verdict::Status;
+//!
+//! // Σ bᵢ = 1 for the thesis's cubic basis (3.7), decided exactly
+//! assert_eq!(unity(&Family::ThesisCubic).status, Status::Holds);
+//! ```
 
 pub mod analytic;
 pub mod by_intervals;

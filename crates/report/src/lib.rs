@@ -13,6 +13,17 @@
 //! document), an index (one line per claim), then one section per document
 //! and one entry per claim. [`View`] selects the short form (summary and
 //! index only) and filters by verdict.
+//!
+//! ```
+//! use trig_report::{View, markdown_entries};
+//! use trig_verification::{entry::entries, run};
+//!
+//! // the thesis's partition of unity (3.1), decided and rendered
+//! let outcomes = run(None, Some("T1"));
+//! let md = markdown_entries(&entries(&outcomes), "One claim.", &View::default());
+//! assert!(md.starts_with("# trig-audit report"));
+//! assert!(md.contains("T1"));
+//! ```
 
 pub mod json;
 pub mod latex;
