@@ -191,7 +191,7 @@ fn the_published_schema_is_the_generated_one() {
     assert_eq!(
         published_schema(),
         generated,
-        "docs/report.schema.json is stale: regenerate it with TRIG_AUDIT_WRITE_SCHEMA=1 cargo test -p trig-verification --test verification the_published_schema"
+        "docs/report.schema.json is stale: regenerate it with TRIG_AUDIT_WRITE_SCHEMA=1 cargo test -p trig-e2e --test e2e the_published_schema"
     );
 }
 

@@ -3,7 +3,7 @@
 
 use std::sync::OnceLock;
 
-use trig_verdict::verdict::Verdict;
+use trig_verdict::{Evidence, Status, Verdict};
 
 /// The five source documents.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -65,8 +65,8 @@ pub struct Claim {
     pub source: &'static str,
     /// The statement as printed (short quotation), or for a `…b` claim the
     /// one obvious reading, labelled as such; its formulas marked `⟪…⟫`
-    /// ([`trig_tex::marked`](mod@trig_tex::marked)), so that the LaTeX report sets them in math
-    /// and the other reports show the text as printed ([`trig_tex::plain`]).
+    /// (`trig_tex::marked`), so that the LaTeX report sets them in math
+    /// and the other reports show the text as printed (`trig_tex::plain`).
     pub statement: &'static str,
     /// The checker.
     pub check: fn() -> Verdict,
@@ -78,4 +78,32 @@ pub struct Claim {
 /// parallel; a second caller waits for the first computation.
 pub(crate) fn shared(cell: &'static OnceLock<Verdict>, check: impl FnOnce() -> Verdict) -> Verdict {
     cell.get_or_init(check).clone()
+}
+
+/// How an umbrella claim is decided, as the report states it.
+const UMBRELLA: &str =
+    "umbrella: holds only if every part holds (each part is reported as its own claim)";
+
+/// An umbrella claim over separately reported claims (T24 over T24a–f):
+/// a conjunction whose evidence is one line per part with its verdict,
+/// and, for each part that does not hold, its first witness.
+pub(crate) fn umbrella(parts: Vec<(String, Verdict)>) -> Verdict {
+    let status = Status::conjunction(parts.iter().map(|(_, v)| v.status));
+    let mut evidence = Vec::new();
+    for (name, v) in parts {
+        let mut line = Evidence::note(format!("reported as claim {name}"));
+        line.subject = Some(name.clone());
+        line.status = Some(v.status);
+        evidence.push(line);
+        if v.status != Status::Holds
+            && let Some(w) = v
+                .evidence
+                .into_vec()
+                .into_iter()
+                .find(|e| e.witness.is_some())
+        {
+            evidence.push(w.in_part(name, v.status));
+        }
+    }
+    Verdict::new(status, UMBRELLA, evidence)
 }

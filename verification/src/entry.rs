@@ -47,7 +47,7 @@ pub struct Entry {
     /// Equation or section.
     pub source: String,
     /// The statement as printed, its formulas marked
-    /// ([`trig_tex::marked`](mod@trig_tex::marked); [`trig_tex::plain`] is the text as printed).
+    /// (`trig_tex::marked`; `trig_tex::plain` is the text as printed).
     pub statement: String,
     pub verdict: Verdict,
     /// A figure supporting the verdict ([`crate::figures`]).

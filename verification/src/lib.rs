@@ -19,7 +19,7 @@ pub mod spec_audit;
 
 pub use claim::{Claim, Seed};
 pub use entry::{Document, Entry};
-pub use trig_verdict::{Evidence, EvidenceList, Expr, Status, Verdict, Witness};
+pub use trig_verdict::{Status, Verdict, Witness};
 
 /// Every claim the audit decides, in report order.
 pub fn all_claims() -> Vec<Claim> {

@@ -1,6 +1,5 @@
 //! Evidence as data: what a verdict rests on, in a form the report renders
-//! to Markdown, LaTeX and JSON from one source (the report of
-//! `trig-verification`).
+//! to Markdown, LaTeX and JSON from one source (`trig-report`).
 //!
 //! An [`Evidence`] item says one thing: a prose note, an exact identity with
 //! its residual, a printed value against the computed one, a certificate, …

@@ -5,7 +5,7 @@
 //! exact expressions in every form a reader or a program needs ([`Expr`]),
 //! and, for a failing identity, a [`Witness`]: a rational (or real) point
 //! with both values exactly, found by [`witness`] (and [`real_witness`] for
-//! the dependent atoms of a spec basis). The judges of `trig-verification`
+//! the dependent atoms of a spec basis). The judges (`trig-judge`)
 //! return a [`Verdict`]; the report renders it. Nothing here knows what a
 //! claim is.
 //!

@@ -52,8 +52,7 @@ pub fn with_real_points<T>(points: RealPoints, f: impl FnOnce() -> T) -> T {
 }
 
 /// The witness context of this thread as text (for the memo keys of
-/// `trig-verification`:
-/// a decision's witnesses depend on it).
+/// `trig-judge`: a decision's witnesses depend on it).
 pub fn context_key() -> String {
     format!("{:?}", current())
 }

@@ -3,10 +3,6 @@
 use crate::evidence::{Evidence, EvidenceList};
 use crate::status::Status;
 
-/// How an umbrella claim is decided, as the report states it.
-pub const UMBRELLA: &str =
-    "umbrella: holds only if every part holds (each part is reported as its own claim)";
-
 /// A computed verdict: status, how it was decided, the evidence (exact
 /// residuals, values, counterexamples), and the correction where one holds.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -70,30 +66,6 @@ impl Verdict {
             .into_iter()
             .map(|e| e.in_part(name.to_string(), status))
             .collect()
-    }
-
-    /// An umbrella claim over separately reported claims (T24 over T24a–f):
-    /// a conjunction whose evidence is one line per part with its verdict,
-    /// and, for each part that does not hold, its first witness.
-    pub fn umbrella(parts: Vec<(String, Verdict)>) -> Self {
-        let status = Status::conjunction(parts.iter().map(|(_, v)| v.status));
-        let mut evidence = Vec::new();
-        for (name, v) in parts {
-            let mut line = Evidence::note(format!("reported as claim {name}"));
-            line.subject = Some(name.clone());
-            line.status = Some(v.status);
-            evidence.push(line);
-            if v.status != Status::Holds
-                && let Some(w) = v
-                    .evidence
-                    .into_vec()
-                    .into_iter()
-                    .find(|e| e.witness.is_some())
-            {
-                evidence.push(w.in_part(name, v.status));
-            }
-        }
-        Verdict::new(status, UMBRELLA, evidence)
     }
 
     /// Combines the verdicts of the parts of one claim (a conjunction): it

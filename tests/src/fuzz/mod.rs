@@ -10,6 +10,7 @@
 
 pub mod grammar;
 pub mod oracle;
+pub mod scratch;
 
 use std::path::PathBuf;
 use std::sync::mpsc;
@@ -124,7 +125,7 @@ pub fn campaign(
     heavy: bool,
 ) -> Stats {
     let scratch = scratch();
-    grammar::write_scratch(&scratch).expect("scratch directory");
+    scratch::write(&scratch).expect("scratch directory");
     let strategy = grammar::case(heavy, scratch.clone());
     let mut bytes = [0u8; 32];
     bytes[..8].copy_from_slice(&seed.to_le_bytes());

@@ -181,6 +181,7 @@ fn entries(claim: &str) -> Result<Vec<Entry>, String> {
 
 /// The printed entries of `claim` in `data` (written as [`PRINTED`]).
 fn entries_in(data: &'static str, claim: &str) -> Result<Vec<Entry>, String> {
+    // longest name first, so that `$FA` is never read as `$F` and an `A`
     let mut abbreviations: Vec<(String, &str)> = Vec::new();
     let mut out = Vec::new();
     let mut current = None;
@@ -191,11 +192,16 @@ fn entries_in(data: &'static str, claim: &str) -> Result<Vec<Entry>, String> {
             continue;
         }
         if let Some(id) = line.strip_prefix("== ") {
-            current = Some(id);
-        } else if let Some((name, text)) = line.split_once(" := ") {
-            abbreviations.push((format!("${name}"), text));
+            current = Some(id.trim());
+        } else if current.is_none() {
+            let Some((name, text)) = line.split_once(" := ") else {
+                return Err(bad("before the first `== CLAIM` only `NAME := text` lines"));
+            };
+            abbreviations.push((format!("${}", name.trim()), text.trim()));
+            abbreviations.sort_by_key(|(name, _)| std::cmp::Reverse(name.len()));
         } else if current == Some(claim) {
-            let [eq, i, end, order, text] = line.splitn(5, " | ").collect::<Vec<_>>()[..] else {
+            let fields: Vec<&str> = line.splitn(5, '|').map(str::trim).collect();
+            let [eq, i, end, order, text] = fields[..] else {
                 return Err(bad("not `equation | i | end | order | formula`"));
             };
             let number = |f: &str| {
@@ -210,6 +216,11 @@ fn entries_in(data: &'static str, claim: &str) -> Result<Vec<Entry>, String> {
             let text = abbreviations
                 .iter()
                 .fold(text.to_string(), |t, (name, by)| t.replace(name, by));
+            if text.contains('$') {
+                return Err(bad(
+                    "an abbreviation `$NAME` that no `NAME :=` line defines",
+                ));
+            }
             out.push((eq, number(i)?, end, number(order)?, text));
         }
     }
@@ -243,7 +254,15 @@ fn decide(entries: &[Entry], table: &[Vec<Vec<Sym>>], preamble: &str) -> Verdict
         .iter()
         .map(|(eq, i, end, order, text)| {
             let label = format!("{eq} Q_{i}{}({}) H_{i}", "'".repeat(*order), ends[*end]);
-            printed_part(label, text, &SHORTHANDS, &table[*end][*i][*order])
+            match table.get(*end).and_then(|f| f.get(*i)).and_then(|d| d.get(*order)) {
+                Some(computed) => printed_part(label, text, &SHORTHANDS, computed),
+                None => (
+                    label,
+                    Verdict::not_checkable(format!(
+                        "{eq}: no computed Q_{i} of order {order} (the table has functions 0–3 and the orders this claim prints)"
+                    )),
+                ),
+            }
         })
         .collect();
     let mut v = Verdict::all(IDENTITY, parts);
@@ -326,10 +345,32 @@ mod tests {
         assert!(err("== X\n(A1) | 0 | x | 0 | 0\n").contains("end not + or -"));
         assert!(err("== X\n(A1) | one | + | 0 | 0\n").contains("not a number"));
         assert!(err("== Y\n(A1) | 0 | + | 0 | 0\n").contains("no entries for X"));
+        assert!(err("(A1) | 0 | + | 0 | 0\n== X\n").contains("line 1"));
+        assert!(err("== X\n(A1) | 0 | + | 0 | $D\n").contains("no `NAME :=` line"));
+        // the longest name first; fields trimmed
+        assert_eq!(
+            entries_in(
+                "F := [f]\nFA := [fa]\n== X\n(A1)  | 1 |- | 2 | $FA $F\n",
+                "X"
+            ),
+            Ok(vec![("(A1)", 1, 1, 2, "[fa] [f]".to_string())])
+        );
         assert_eq!(
             entries_in("D := [w]\n== X\n(A1) | 1 | - | 2 | $D/2\n", "X"),
             Ok(vec![("(A1)", 1, 1, 2, "[w]/2".to_string())])
         );
+    }
+
+    #[test]
+    fn every_block_names_a_claim_of_this_file_and_fits_its_table() {
+        for line in PRINTED.lines() {
+            if let Some(id) = line.strip_prefix("== ") {
+                assert!(CLAIMS.iter().any(|c| c.id == id), "unknown claim {id}");
+            }
+        }
+        // an entry past the computed table is not checkable, not a panic
+        let v = decide(&[("(A0)", 4, 0, 0, "0".into())], uniform(), UNIFORM);
+        assert_eq!(v.status, Status::NotCheckable);
     }
 
     #[test]

@@ -21,7 +21,7 @@ use trig_symbolic::Sym;
 
 use super::thesis::claim;
 use super::thesis_interp_point::piece_witness;
-use crate::claim::Claim;
+use crate::claim::{Claim, umbrella};
 use trig_judge::exact::{IDENTITY, identities};
 use trig_judge::memo::Memo;
 use trig_verdict::evidence::{Assignment, Evidence, EvidenceList, Expr, Relation, Value, Witness};
@@ -556,7 +556,7 @@ fn t24() -> Verdict {
         .rev()
         .map(|(f, id)| (id.to_string(), f()))
         .collect();
-    Verdict::umbrella(parts.into_iter().rev().collect())
+    umbrella(parts.into_iter().rev().collect())
 }
 
 #[cfg(test)]

@@ -19,7 +19,7 @@ use trig_deriv::{End, JoinKind, Wrt, curve_endpoint_derivatives, endpoint_deriva
 use trig_symbolic::Sym;
 
 use super::thesis::claim;
-use crate::claim::{Claim, shared};
+use crate::claim::{Claim, shared, umbrella};
 use trig_judge::exact::{identities, symbols};
 use trig_judge::join::{Printed, PrintedJoin, audit};
 use trig_verdict::status::Status;
@@ -469,7 +469,7 @@ fn t26() -> Verdict {
         ("T26j", cylinder::t26j),
         ("T26k", cylinder::t26k),
     ];
-    Verdict::umbrella(
+    umbrella(
         parts
             .iter()
             .map(|(id, check)| (id.to_string(), check()))

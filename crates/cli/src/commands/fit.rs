@@ -55,7 +55,7 @@ pub enum SearchRange {
     /// The published range of the parameter.
     Published,
     /// The published range intersected with the certified maximal
-    /// nonnegativity interval (trig-verification).
+    /// nonnegativity interval (trig-judge).
     Certified,
 }
 

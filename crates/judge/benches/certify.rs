@@ -15,7 +15,7 @@ use trig_symbolic::Sym;
 
 fn load(name: &str) -> Spec {
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../examples")
+        .join("../../examples")
         .join(name);
     Spec::from_file(&path).expect("example spec")
 }
