@@ -118,13 +118,12 @@ pub fn piece_witness(
     Some(Witness {
         point,
         note: Some(format!(
-            "{} ({}), piece {}: P = Σ b_j(θ; m = {})·V_j with θ = π(x − {})/(2·{}), s = sin θ, c = cos θ; {} its control points; π kept as a symbol, the sign certified with π ∈ [3.14159265358979323846264338327, …328]",
+            "{} ({}), piece {}: P = Σ b_j(θ; m = {})·V_j with θ = {}, s = sin θ, c = cos θ; {} its control points; π kept as a symbol, the sign certified with π ∈ [3.14159265358979323846264338327, …328]",
             spline.data.table.name,
             spline.variant,
             i + 1,
             piece.m,
-            piece.x0,
-            piece.h,
+            angle(&piece.x0, &piece.h),
             names
                 .iter()
                 .map(|n| Sym::var(n).to_unicode())
@@ -137,9 +136,37 @@ pub fn piece_witness(
     })
 }
 
+/// The angle `θ = π(x − x₀)/(2h)` of a piece on `[x₀, x₀ + h]`, with `2h`
+/// evaluated and the shift's sign written out (`π(x − 1)/2`, `πx/3`,
+/// `π(x + 1/2)/(2/3)`).
+fn angle(x0: &Rational, h: &Rational) -> String {
+    let shift = match x0.cmp0() {
+        std::cmp::Ordering::Equal => "x".to_string(),
+        std::cmp::Ordering::Less => format!("(x + {})", Rational::from(-x0)),
+        std::cmp::Ordering::Greater => format!("(x − {x0})"),
+    };
+    let two_h = Rational::from(2 * h);
+    if two_h == 1 {
+        format!("π{shift}")
+    } else if *two_h.denom() == 1 {
+        format!("π{shift}/{two_h}")
+    } else {
+        format!("π{shift}/({two_h})")
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn angles_are_written_with_2h_evaluated() {
+        let q = |n: i64, d: i64| Rational::from((n, d));
+        assert_eq!(angle(&q(1, 1), &q(1, 1)), "π(x − 1)/2");
+        assert_eq!(angle(&q(0, 1), &q(3, 2)), "πx/3");
+        assert_eq!(angle(&q(-1, 2), &q(1, 3)), "π(x + 1/2)/(2/3)");
+        assert_eq!(angle(&q(4, 1), &q(1, 2)), "π(x − 4)");
+    }
 
     #[test]
     fn convergents_end_at_the_number_and_start_simple() {
