@@ -81,12 +81,26 @@ pub struct FactoredQuotient {
     pub trivial: bool,
 }
 
+/// How many factorisations a process keeps: the audit of the five
+/// documents asks for under 1000; past the bound the memo starts afresh, so
+/// a long-running front end stays bounded.
+pub const FACTOR_MEMO: usize = 2048;
+
+/// `f` as the factorisation of `p` in `memo` (the one already there if
+/// another thread was first), the memo emptied first when it holds `bound`.
+fn remember(memo: &mut HashMap<Poly, Factored>, p: &Poly, f: Factored, bound: usize) -> Factored {
+    if memo.len() >= bound && !memo.contains_key(p) {
+        memo.clear();
+    }
+    memo.entry(p.clone()).or_insert(f).clone()
+}
+
 impl Poly {
     /// The display factorisation (see the [module documentation](self)).
     ///
     /// Computed once per process for each polynomial: the same denominators
     /// and residuals are shown again and again. The key is the polynomial
-    /// itself (every term).
+    /// itself (every term); at most [`FACTOR_MEMO`] are kept.
     pub fn factor(&self) -> Factored {
         static FACTORED: OnceLock<Mutex<HashMap<Poly, Factored>>> = OnceLock::new();
         let memo = FACTORED.get_or_init(Default::default);
@@ -95,7 +109,7 @@ impl Poly {
             return f.clone();
         }
         let f = self.factor_once();
-        lock().entry(self.clone()).or_insert(f).clone()
+        remember(&mut lock(), self, f, FACTOR_MEMO)
     }
 
     fn factor_once(&self) -> Factored {
@@ -349,6 +363,22 @@ mod tests {
 
     fn v(n: &str) -> Poly {
         Poly::var(n)
+    }
+
+    #[test]
+    fn the_memo_stays_within_its_bound() {
+        let mut memo = HashMap::new();
+        for k in 0..10 {
+            let p = v("m") + &Poly::int(k);
+            let f = remember(&mut memo, &p, p.factor_once(), 4);
+            assert_eq!(f, p.factor_once());
+            assert!(memo.len() <= 4, "{} entries", memo.len());
+        }
+        // a polynomial already kept is found, not a reason to start afresh
+        let kept = memo.keys().next().unwrap().clone();
+        let before = memo.len();
+        remember(&mut memo, &kept, kept.factor_once(), before);
+        assert_eq!(memo.len(), before);
     }
 
     fn n(k: i64) -> Poly {
