@@ -2,7 +2,7 @@
 //!
 //! The scalar abstraction and the catalog of published spline bases with
 //! shape parameters, each formula written once and evaluated generically in
-//! f64, MPFR ([`Mpfr`]), Taylor jets (crate `trig-jet`) and the exact
+//! f64, MPFR ([`Mpfr`]), Taylor jets (crate `trig-deriv`) and the exact
 //! symbolic ring (crate `trig-symbolic`).
 //!
 //! Sources are the documents in `shared/seeds/`: the thesis on a G² cubic
