@@ -7,6 +7,7 @@
 
 use rug::Rational;
 use trig_core::{Described, Family, ParamRange, Ring};
+use trig_deriv::continuity::quotient_derivatives;
 use trig_specfile::Direction;
 use trig_symbolic::Sym;
 
@@ -460,18 +461,16 @@ fn start_derivatives(jets: &[Vec<Sym>], weights: &[Sym], points: &[(Sym, Sym)]) 
                 }
             })
     };
-    // R = N/W: R' = N'/W − NW'/W², R'' = N''/W − 2N'W'/W² − NW''/W² + 2NW'²/W³
-    let (w0, w1, w2) = (sum(0, None), sum(1, None), sum(2, None));
-    let w0_2 = w0.clone() * &w0;
-    let derivative = |k: usize| -> (Sym, Sym) {
-        let (n0, n1, n2) = (sum(0, Some(k)), sum(1, Some(k)), sum(2, Some(k)));
-        let first = n1.clone() / &w0 - &(n0.clone() * &w1 / &w0_2);
-        let second = n2 / &w0 - &(Sym::int(2) * &n1 * &w1 / &w0_2) - &(n0.clone() * &w2 / &w0_2)
-            + &(Sym::int(2) * &n0 * &w1 * &w1 / &w0_2 / &w0);
-        (first, second)
-    };
-    let ((x1, x2), (y1, y2)) = (derivative(0), derivative(1));
-    [x1, y1, x2, y2]
+    // R = N/W by the quotient rule of trig-deriv (Leibniz's rule for N = R·W)
+    let w: Vec<Sym> = (0..3).map(|k| sum(k, None)).collect();
+    let [x, y] = [0, 1].map(|c| (0..3).map(|k| sum(k, Some(c))).collect::<Vec<Sym>>());
+    let r = quotient_derivatives(&[&x, &y], &w);
+    [
+        r[0][1].clone(),
+        r[1][1].clone(),
+        r[0][2].clone(),
+        r[1][2].clone(),
+    ]
 }
 
 /// The curvature `(x′y″ − y′x″)/(x′² + y′²)^{3/2}` at the start of `R`
