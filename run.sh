@@ -4,7 +4,7 @@
 #                              ARGS go to `trig-audit audit`, e.g. --format json
 #                              --output report.json)
 #   ./run.sh test              the whole test suite (what CI runs)
-#   ./run.sh lint              rustfmt check and clippy with -D warnings
+#   ./run.sh lint              rustfmt check, clippy and rustdoc with -D warnings
 #   ./run.sh bench             criterion benchmarks (figures in BENCHMARKS.md)
 #   ./run.sh figures           redraw the figures the audit report links (docs/figures/)
 #
@@ -90,6 +90,7 @@ case "$cmd" in
   lint)
     cargo fmt --all --check
     cargo clippy --workspace --all-targets "${FEATURES[@]}" -- -D warnings
+    RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps "${FEATURES[@]}"
     ;;
   bench) cargo bench --workspace "${FEATURES[@]}" ;;
   figures) TRIG_AUDIT_REDRAW_FIGURES=1 cargo test -p trig-e2e --test e2e cli_figures "${FEATURES[@]}" ;;

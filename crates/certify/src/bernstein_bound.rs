@@ -10,8 +10,8 @@
 //! `bᵢ = Σⱼ Mᵢⱼ aⱼ` with `M = B·S`: `S` substitutes `u = 2v − 1`
 //! (`S_{mj} = C(j, m)·2ᵐ·(−1)^{j−m}`) and `B` is the power-to-Bernstein
 //! map on `[0, 1]` (`B_{im} = C(i, m)/C(d, m)`). The arithmetic is f64
-//! interval arithmetic with outward rounding ([`crate::rounding::up`],
-//! [`crate::rounding::down`]), so the bound is rigorous.
+//! interval arithmetic with outward rounding (`rounding::up`,
+//! `rounding::down`), so the bound is rigorous.
 
 use rug::Rational;
 use rug::float::Round;

@@ -19,7 +19,7 @@
 //! * terms of degree above `d` are dropped with `|cᵢcⱼuᵅ⁺ᵝ| ≤ |cᵢcⱼ|`;
 //! * `(P₁ + I₁)(P₂ + I₂) ⊂ P₁P₂ + [−(|P₁|r₂ + |P₂|r₁ + r₁r₂), …]` with
 //!   `|P| ≤ ‖P‖₁` on the unit box;
-//! * every bound is an f64 computed with upward rounding ([`up`]).
+//! * every bound is an f64 computed with upward rounding (`rounding::up`).
 //!
 //! Constants are made from an existing model ([`trig_core::Ring`]): the
 //! models of one box share their [`Space`]. Elementary functions of models

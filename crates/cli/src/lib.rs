@@ -82,7 +82,7 @@ pub enum Outcome {
 
 /// Longest error message, in characters: the head and the tail are kept.
 /// (Echoes of input are bounded where they are made, see
-/// [`trig_core::echo`]; this bounds everything else, e.g. a long formula
+/// [`trig_core::echo()`]; this bounds everything else, e.g. a long formula
 /// an exact computation derived.)
 pub const MAX_ERROR: usize = 10_000;
 

@@ -1,5 +1,5 @@
 //! The [`Basis`] abstraction: anything that evaluates a list of basis
-//! functions generically over a [`Ring`] — the catalog's [`Family`] or a
+//! functions generically over a [`Ring`] — the catalog's [`Family`](crate::Family) or a
 //! basis read from a spec file (crate `trig-specfile`). Derivative tables, jets
 //! and the audit's checkers take `impl Basis`, so a user-supplied basis runs
 //! through the same machinery as the catalog: one evaluator.
@@ -73,7 +73,7 @@ pub trait Described {
 /// exact ring).
 pub trait Basis: Described {
     /// Every function at the atoms `x` (`s = sin θ`, `c = cos θ`, `t`) with
-    /// parameters `p` in the order of [`Basis::param_names`].
+    /// parameters `p` in the order of [`Described::param_names`].
     ///
     /// # Panics
     /// May panic if `p` has the wrong length or the basis has no formulas;

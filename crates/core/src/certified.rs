@@ -218,7 +218,7 @@ fn bits_for(digits: usize) -> u32 {
 }
 
 /// Evaluates `f` at increasing precision until every value is
-/// [`resolved`] to `digits` (an enclosure of zero far below the largest
+/// `resolved` to `digits` (an enclosure of zero far below the largest
 /// value counts: for certified error bounds of f64 results, not for
 /// printed digits — see [`to_significant_digits`]), or [`MAX_BITS`] or the
 /// [`WORK_BUDGET`] is reached.

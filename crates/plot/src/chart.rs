@@ -13,7 +13,7 @@ pub struct Frame {
     /// Draw the line `y = 0` (the point of positivity plots).
     pub zero_line: bool,
     /// One data unit as long on both axes (curves, outlines): the ranges
-    /// are set for it ([`crate::style::equal_aspect`]) and the pgfplots axis
+    /// are set for it (`style::equal_aspect`) and the pgfplots axis
     /// keeps it at any width.
     pub equal_aspect: bool,
 }
@@ -25,7 +25,7 @@ pub struct Dash {
     pub off: f64,
 }
 
-/// How a series is drawn (sizes in units of [`crate::style::UNIT_MM`]).
+/// How a series is drawn (sizes in units of `style::UNIT_MM`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Mark {
     /// A polyline, solid or dashed; `vertices` marks its points.

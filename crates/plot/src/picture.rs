@@ -1,5 +1,5 @@
-//! A picture: the description of a chart ([`crate::chart`]) with its SVG
-//! ([`crate::svg`]); the pgfplots code ([`Picture::pgf`]) and the CSV rows
+//! A picture: the description of a chart (`chart`) with its SVG
+//! (`svg`); the pgfplots code ([`Picture::pgf`]) and the CSV rows
 //! ([`Picture::rows`]) are drawn from the same description.
 
 use crate::chart::{Frame, Look, Series};

@@ -2,7 +2,7 @@
 //! classified cells of a window of the parameter plane (certified inside,
 //! certified outside, undecided along the edge) with the printed box. Each
 //! kind is drawn in one opaque colour, its cells overlapping by a hair
-//! ([`crate::style::CELL_OVERLAP`]): a set of cells reads as one area, with
+//! (`style::CELL_OVERLAP`): a set of cells reads as one area, with
 //! no seams between them.
 
 use crate::chart::{Frame, Look, Mark, Series};

@@ -1,5 +1,5 @@
 //! The claims of a spec file as data: what is printed, decided later by a
-//! judge of the audit. Read from the file by [`crate::claims`].
+//! judge of the audit. Read from the file by `claims.rs`.
 
 use rug::Rational;
 use trig_core::{Affine, ParamRange};

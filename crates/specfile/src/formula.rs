@@ -1,4 +1,4 @@
-//! Formulas of spec files, lowered from their syntax tree ([`crate::ast`])
+//! Formulas of spec files, lowered from their syntax tree (`ast.rs`)
 //! into the exact ring [`Sym`] — so f64, MPFR, jets and the symbolic ring
 //! all evaluate the one lowered value, with no second evaluator.
 //!

@@ -1,6 +1,6 @@
 //! A validated spec: the basis (domain and atoms, parameters with exact
 //! ranges, definitions and functions as exact [`Sym`] values) and the
-//! claims to check ([`crate::claims`]).
+//! claims to check (`claims.rs`).
 
 use std::cell::RefCell;
 use std::collections::BTreeMap;

@@ -12,7 +12,7 @@
 //!
 //! Used by [`crate::Sym`] to keep fractions in lowest terms:
 //! `(m + 2)/(m² − 4) = 1/(m − 2)`. Most pairs are coprime, and a modular
-//! image proves that cheaply ([`crate::modular::coprime`]) before the exact
+//! image proves that cheaply (`modular::coprime`) before the exact
 //! remainder sequence runs.
 
 use std::collections::{BTreeMap, BTreeSet};

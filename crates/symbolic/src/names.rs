@@ -222,7 +222,7 @@ impl Names {
     }
 
     /// The `G¹`/`G²` factors: `α`, `β`, or the first pair of
-    /// [`FACTOR_PAIRS`] that reads like no reserved name.
+    /// `FACTOR_PAIRS` that reads like no reserved name.
     pub fn factors(&mut self) -> [Sym; 2] {
         let pair = self.first_free(
             FACTOR_PAIRS

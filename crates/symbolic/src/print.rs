@@ -51,7 +51,9 @@ pub enum Style {
     Unicode,
     /// LaTeX math (without `$`).
     Latex,
-    /// SymPy syntax (see the [module documentation](self)).
+    /// SymPy syntax: `**` for powers, `sin(theta)`, `cos(theta)` for the
+    /// atoms `s`, `c`, `lamda` for `lambda` (read it with the names of
+    /// [`sympy_symbols`] as symbols).
     Sympy,
 }
 
@@ -352,7 +354,9 @@ impl Poly {
         poly(self, Style::Latex)
     }
 
-    /// SymPy syntax (see the [module documentation](self)).
+    /// SymPy syntax: `**` for powers, `sin(theta)`, `cos(theta)` for the
+    /// atoms `s`, `c`, `lamda` for `lambda` (read it with the names of
+    /// [`sympy_symbols`] as symbols).
     pub fn to_sympy(&self) -> String {
         poly(self, Style::Sympy)
     }
@@ -375,7 +379,9 @@ impl Sym {
         sym(self, Style::Latex)
     }
 
-    /// SymPy syntax (see the [module documentation](self)).
+    /// SymPy syntax: `**` for powers, `sin(theta)`, `cos(theta)` for the
+    /// atoms `s`, `c`, `lamda` for `lambda` (read it with the names of
+    /// [`sympy_symbols`] as symbols).
     pub fn to_sympy(&self) -> String {
         sym(self, Style::Sympy)
     }

@@ -167,7 +167,7 @@ impl Ring for Sym {
         parameter_multiple(self).map(|x| Sym::var(&format!("exp({x})")))
     }
 
-    /// Exact square roots of rationals ([`exact_sqrt`]).
+    /// Exact square roots of rationals (`exact_sqrt`).
     fn try_sqrt(&self) -> Option<Sym> {
         exact_sqrt(&self.as_rational()?)
     }

@@ -15,7 +15,7 @@ const DIVISOR_LIMIT: u64 = 1 << 40;
 
 /// The rational roots `v` of `p` in `var` such that `p(var := v)` vanishes
 /// identically in the other variables, sorted; `false` when some candidate
-/// divisors were not enumerated (coefficient beyond [`DIVISOR_LIMIT`]).
+/// divisors were not enumerated (coefficient beyond `DIVISOR_LIMIT`).
 pub fn rational_roots(p: &Poly, var: &str) -> (Vec<Rational>, bool) {
     if p.is_zero() || p.degree_in(var) == 0 {
         return (Vec::new(), true);
