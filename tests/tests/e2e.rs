@@ -10,6 +10,7 @@ mod cli_figures;
 mod cli_fit_plot;
 mod cli_hostile;
 mod cli_hostile_round2;
+mod cli_hostile_round2_io;
 mod cli_interp;
 mod cli_join;
 mod cli_paste;
