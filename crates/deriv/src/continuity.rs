@@ -296,7 +296,7 @@ pub fn curve_jumps(
     let (nr, wr) = at(right, weights.map(|w| w.1), End::Start);
     match (wl, wr) {
         (Some(wl), Some(wr)) => quotient_jumps((&nl, &wl), (&nr, &wr)),
-        _ => nr.iter().zip(&nl).map(|(r, l)| r.clone() - l).collect(),
+        _ => differences(&nr, &nl),
     }
 }
 
@@ -317,8 +317,7 @@ pub fn quotient_jumps((nl, wl): (&[Sym], &[Sym]), (nr, wr): (&[Sym], &[Sym])) ->
         [nl.len(), wl.len(), nr.len()].iter().all(|n| *n == order),
         "as many derivatives on each side"
     );
-    let dn: Vec<Sym> = nr.iter().zip(nl).map(|(r, l)| r.clone() - l).collect();
-    let dw: Vec<Sym> = wr.iter().zip(wl).map(|(r, l)| r.clone() - l).collect();
+    let (dn, dw) = (differences(nr, nl), differences(wr, wl));
     let needed = dw
         .iter()
         .position(|d| !d.is_zero())
@@ -410,6 +409,11 @@ pub fn quotient_derivatives(numerators: &[&[Sym]], w: &[Sym]) -> Vec<Vec<Sym>> {
                 .collect()
         })
         .collect()
+}
+
+/// `right − left`, entry by entry.
+fn differences(right: &[Sym], left: &[Sym]) -> Vec<Sym> {
+    right.iter().zip(left).map(|(r, l)| r.clone() - l).collect()
 }
 
 /// `C(k, j)` in the exact ring.

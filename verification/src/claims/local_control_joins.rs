@@ -10,10 +10,11 @@ use std::fmt;
 
 use rug::Rational;
 use trig_core::{Family, Ring};
-use trig_deriv::{End, Wrt, curve_endpoint_derivatives};
+use trig_deriv::{End, Wrt};
 use trig_symbolic::Sym;
 
 use super::seed002::rational_ends;
+use super::thesis_interp::derivs;
 use trig_judge::exact::{IDENTITY, TARGET, VALUE, basis, identities, identity_item, symbols};
 use trig_verdict::evidence::{Evidence, Kind};
 use trig_verdict::status::Status;
@@ -464,10 +465,7 @@ pub(super) fn seed002_segment() -> Sym {
 /// The first derivatives in `u` of the thesis cubic at its ends, for the
 /// helpers of the join claims.
 pub(super) fn thesis_tangents(points: &[Sym], end: End) -> Sym {
-    let f = Family::ThesisCubic;
-    let params = trig_judge::exact::params(f);
-    curve_endpoint_derivatives::<Sym, 2>(f, &params, points, None, end, Wrt::U, &Sym::one())[1]
-        .clone()
+    derivs(points, &Sym::var("m"), end, Wrt::U, &Sym::one())[1].clone()
 }
 
 #[cfg(test)]
