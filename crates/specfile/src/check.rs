@@ -6,6 +6,8 @@ use trig_core::{Affine, ParamRange};
 use trig_deriv::{End, JoinKind, Wrt};
 use trig_symbolic::Sym;
 
+use crate::given::Given;
+
 /// A printed value `name = formula` of one function.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Printed {
@@ -168,4 +170,8 @@ pub struct SpecClaim {
     pub source: String,
     pub statement: String,
     pub check: Check,
+    /// Parameter values the claim fixes and ranges it narrows
+    /// (`at = { lambda = "0" }`, `range = "[0, 0]"`,
+    /// `ranges = { mu = "[0, 1]" }`): applied before deciding.
+    pub given: Given,
 }

@@ -9,6 +9,7 @@ use trig_symbolic::{Names, Sym};
 
 use crate::check::{Check, Condition, Direction, Monotone, Printed, SpecClaim, Varied};
 use crate::error::{Result, SpecError};
+use crate::given::{Fixed, Given};
 use crate::raw::RawClaim;
 use crate::source::Source;
 use crate::spec::{MAX_ORDER, Spec};
@@ -143,12 +144,140 @@ fn one_param_range(
         return src.invalid(
             r.span(),
             "claims.range",
-            "a range is only accepted for a basis with exactly one parameter".into(),
+            "`range` is the range of the only parameter: with several parameters give `ranges = { NAME = \"[a, b]\", … }` (a one-point range `[v, v]` or `at = { NAME = \"v\" }` fixes a value)".into(),
         );
     }
-    ParamRange::parse(r.get_ref())
-        .map(Some)
-        .or_else(|m| src.invalid(r.span(), "claims.range", m))
+    let range =
+        ParamRange::parse(r.get_ref()).or_else(|m| src.invalid(r.span(), "claims.range", m))?;
+    // a one-point range fixes the value ([`given`]): no range is left
+    Ok(point_of(&range).is_none().then_some(range))
+}
+
+/// `v` for the one-point range `[v, v]`, written as read.
+fn point_of(range: &ParamRange) -> Option<String> {
+    match (&range.lo, &range.hi) {
+        (trig_core::End::Closed(a), trig_core::End::Closed(b)) if a == b => {
+            let one = ParamRange {
+                lo: trig_core::End::Closed(a.clone()),
+                hi: trig_core::End::Closed(a.clone()),
+                pi: range.pi,
+            }
+            .to_string();
+            // `[v, v]` printed: the text of one end
+            one.trim_start_matches('[')
+                .split(',')
+                .next()
+                .map(|v| v.trim().to_string())
+        }
+        _ => None,
+    }
+}
+
+/// The checks that are decided over a range of the only parameter.
+const RANGED: [&str; 5] = [
+    "nonnegative",
+    "convex-hull",
+    "independent",
+    "total-positivity",
+    "monotone",
+];
+
+/// The parameter values a claim fixes and the ranges it narrows: `at`
+/// (except for `symmetry`, whose `at` places its numeric counterexample),
+/// a one-point `range` of the only parameter, `ranges` by name (a
+/// one-point one fixes the value).
+fn given(src: &Source<'_>, spec: &Spec, c: &RawClaim, kind: &str) -> Result<Given> {
+    let mut out = Given::default();
+    let param = |name: &str, span: std::ops::Range<usize>, field: &str| {
+        spec.params
+            .iter()
+            .find(|p| p.name == name.trim() || p.symbol == name.trim())
+            .map(|p| p.name.clone())
+            .ok_or_else(|| SpecError::Invalid {
+                at: src.at(span.start),
+                field: format!("claims.{field}"),
+                message: format!("`{}`: not a parameter of the basis", name.trim()),
+            })
+    };
+    let fix = |out: &mut Given,
+               name: String,
+               text: &str,
+               span: std::ops::Range<usize>,
+               field: &str|
+     -> Result<()> {
+        if out.fixed.iter().any(|f| f.name == name) {
+            return src.invalid(
+                span,
+                &format!("claims.{field}"),
+                format!("`{name}` is fixed twice"),
+            );
+        }
+        let value = spec
+            .parse_formula(text, &[])
+            .map_err(|e| SpecError::Invalid {
+                at: src.at(span.start),
+                field: format!("claims.{field}"),
+                message: format!("`{}`: {}", text.trim(), e.message),
+            })?;
+        if value
+            .variables()
+            .iter()
+            .any(|v| v != "pi" && !v.starts_with("sqrt("))
+        {
+            return src.invalid(
+                span,
+                &format!("claims.{field}"),
+                format!("`{}`: a fixed value is a number: rationals, pi and square roots (e.g. 0, 1/2, sqrt(2)/2, pi/3)", text.trim()),
+            );
+        }
+        out.fixed.push(Fixed {
+            name,
+            text: text.trim().to_string(),
+            value,
+        });
+        Ok(())
+    };
+    if kind != "symmetry" {
+        for (name, v) in c.at.iter().flatten() {
+            let name = param(name, v.span(), "at")?;
+            fix(&mut out, name, v.get_ref(), v.span(), "at")?;
+        }
+    }
+    if let Some(r) = c.range.as_ref().filter(|_| kind != "shape-effect") {
+        let [p] = spec.params.as_slice() else {
+            return one_param_range(src, spec, &c.range).map(|_| out);
+        };
+        let range =
+            ParamRange::parse(r.get_ref()).or_else(|m| src.invalid(r.span(), "claims.range", m))?;
+        match point_of(&range) {
+            Some(point) => fix(&mut out, p.name.clone(), &point, r.span(), "range")?,
+            None if !RANGED.contains(&kind) => {
+                return src.invalid(
+                    r.span(),
+                    "claims.range",
+                    format!("`{kind}` takes no range of values; a one-point range `[v, v]` fixes the value"),
+                );
+            }
+            None => {}
+        }
+    }
+    for (name, r) in c.ranges.iter().flatten() {
+        let name = param(name, r.span(), "ranges")?;
+        let range = ParamRange::parse(r.get_ref())
+            .or_else(|m| src.invalid(r.span(), "claims.ranges", m))?;
+        match point_of(&range) {
+            Some(point) => fix(&mut out, name, &point, r.span(), "ranges")?,
+            None if out.fixed.iter().any(|f| f.name == name) => {
+                return src.invalid(
+                    r.span(),
+                    "claims.ranges",
+                    format!("`{name}` is fixed and given a range"),
+                );
+            }
+            None => out.ranges.push((name, range)),
+        }
+    }
+    Ok(out)
 }
 
 fn order_field(src: &Source<'_>, c: &RawClaim, order: &Spanned<i64>) -> Result<usize> {
@@ -266,11 +395,38 @@ fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
             );
         }
     };
+    if let (Some(true), false) = (c.maximal, matches!(check, Check::Nonnegative { .. })) {
+        return src.invalid(
+            c.check.span(),
+            "claims.maximal",
+            format!(
+                "`maximal = true` asks for the maximal nonnegativity set; it is not decided for `{}` (the claim would be decided without it)",
+                c.check.get_ref().trim()
+            ),
+        );
+    }
+    let given = given(src, spec, c, c.check.get_ref().trim())?;
+    let varied = match &check {
+        Check::ShapeEffect { parameter, .. } => Some(parameter),
+        Check::LocalControl {
+            varied: Varied::Parameter { name, .. },
+            ..
+        } => Some(name),
+        _ => None,
+    };
+    if let Some(p) = varied.filter(|p| given.fixed.iter().any(|f| &f.name == *p)) {
+        return src.invalid(
+            c.check.span(),
+            "claims.at",
+            format!("the claim is about varying `{p}`, which it also fixes"),
+        );
+    }
     Ok(SpecClaim {
         id,
         source: c.source.clone(),
         statement: c.statement.get_ref().clone(),
         check,
+        given,
     })
 }
 

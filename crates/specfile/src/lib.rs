@@ -39,6 +39,7 @@ pub mod error;
 mod expression;
 pub mod formula;
 pub mod frequencies;
+pub mod given;
 mod load;
 mod names;
 pub mod nonvanishing;
@@ -51,6 +52,7 @@ pub use ast::Grammar;
 pub use check::{Check, Condition, Direction, Monotone, Printed, SpecClaim, Varied};
 pub use error::{FormulaError, Location, SpecError};
 pub use expression::Expression;
+pub use given::{Fixed, Given, GivenError};
 pub use spec::{Spec, SpecFunction};
 
 use rug::Rational;

@@ -54,6 +54,7 @@ pub struct RawClaim {
     pub statement: Spanned<String>,
     pub check: Spanned<String>,
     pub range: Option<Spanned<String>>,
+    pub ranges: Option<BTreeMap<String, Spanned<String>>>,
     pub maximal: Option<bool>,
     pub functions: Option<Vec<Spanned<String>>>,
     pub map: Option<Spanned<String>>,

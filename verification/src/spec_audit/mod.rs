@@ -72,9 +72,10 @@ type Decision<T> = Box<dyn FnOnce(&Spec) -> T + Send>;
 /// An audit whose decisions had a time limit.
 #[derive(Debug, Clone)]
 pub struct Audit {
-    /// The claims decided, with their verdicts.
+    /// The claims, with their verdicts; a claim the time limit cut off is
+    /// `not-checkable` with the limit as the reason.
     pub entries: Vec<Entry>,
-    /// The ids of the claims the time limit cut off (no verdict).
+    /// The ids of the claims the time limit cut off.
     pub cut_off: Vec<String>,
 }
 
@@ -119,7 +120,17 @@ pub fn audit_within(spec: &Spec, budget: Option<Duration>, only: Option<&str>) -
                     verdict,
                     figure: None,
                 }),
-                None => audit.cut_off.push(id.to_string()),
+                None => {
+                    audit.cut_off.push(id.to_string());
+                    audit.entries.push(Entry {
+                        id: id.to_string(),
+                        document: doc.clone(),
+                        source: source.to_string(),
+                        statement,
+                        verdict: Verdict::not_checkable(cut_off_reason(budget)),
+                        figure: None,
+                    });
+                }
             }
         };
     let plain = |f: fn(&Spec) -> Verdict| -> Decision<(String, Verdict)> {
@@ -191,6 +202,15 @@ pub fn audit_within(spec: &Spec, budget: Option<Duration>, only: Option<&str>) -
     audit
 }
 
+/// Why a claim cut off by the time limit has no decision: the limit, and
+/// that it is the one `not-checkable` that depends on the machine.
+fn cut_off_reason(budget: Option<Duration>) -> String {
+    format!(
+        "cut off by the time limit of {} s per claim (--time-limit): the decision did not finish in time on this machine, so it reached no verdict; a longer limit may decide it",
+        budget.map_or(0.0, |b| b.as_secs_f64())
+    )
+}
+
 /// The verdict of a decision that ran with a time limit: `None` when the
 /// limit cut it off, `not-checkable` when it could not run.
 fn decided<T>(result: Result<T, Stopped>, failed: impl FnOnce(Verdict) -> T) -> Option<T> {
@@ -201,9 +221,31 @@ fn decided<T>(result: Result<T, Stopped>, failed: impl FnOnce(Verdict) -> T) -> 
     }
 }
 
-/// The verdict of one claim of the file.
+/// The verdict of one claim of the file: the values it fixes substituted
+/// and the ranges it gives put in place first (`trig_specfile::Given`).
 pub fn decide(spec: &Spec, claim: &SpecClaim) -> Verdict {
-    match &claim.check {
+    if claim.given.is_empty() {
+        return decide_check(spec, &claim.check);
+    }
+    let given = claim.given.describe(spec);
+    match claim.given.apply(spec, &claim.check) {
+        Ok((fixed, check)) => {
+            let mut v = with_real_points(real_points(&fixed), || decide_check(&fixed, &check));
+            v.evidence.insert(
+                0,
+                format!(
+                    "decided at {given}, as the claim states: the values substituted into the formulas of the basis and of the claim before deciding"
+                ),
+            );
+            v
+        }
+        Err(e) => Verdict::not_checkable(format!("the claim fixes {given}, where {e}")),
+    }
+}
+
+/// The verdict of one check on the spec as it is.
+fn decide_check(spec: &Spec, check: &Check) -> Verdict {
+    match check {
         Check::Unity => trig_judge::unity::unity(spec),
         Check::Nonnegative { range, maximal } => {
             trig_judge::nonnegative::nonnegative_claim(spec, range.as_ref(), *maximal)

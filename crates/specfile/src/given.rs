@@ -1,0 +1,345 @@
+//! What a claim fixes of the parameters before it is decided: values
+//! (`at = { lambda = "0" }`, or a one-point range `range = "[0, 0]"`) and
+//! narrower ranges of the others (`range = { mu = "[0, 1]" }`).
+//!
+//! A fixed value is substituted into every formula of the basis and of the
+//! claim before any judge runs — identities, conics and inequalities alike
+//! — so "at λ = 0 the curve is an arc of a circle" is decided at `λ = 0`
+//! and never as if `λ` were free. The specialised basis has one parameter
+//! fewer: `λ` disappears from the functions, from the parameter atoms
+//! (`sin(λ/2)` at `λ = π` is `1`), and from the ends of the domain
+//! (`[0, α]` at `α = π/2` is `[0, π/2]`).
+
+use rug::Rational;
+use trig_core::{Affine, ParamRange, Ring};
+use trig_symbolic::Sym;
+
+use crate::check::{Check, Condition, Printed};
+use crate::spec::Spec;
+
+/// A parameter value fixed by a claim.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Fixed {
+    /// The parameter's ASCII name.
+    pub name: String,
+    /// The value as written (`0`, `sqrt(2)/2`, `pi/3`).
+    pub text: String,
+    /// Its exact value: a constant of the exact ring (rationals, `π`,
+    /// radicals).
+    pub value: Sym,
+}
+
+/// The parameter values and ranges a claim gives, in the file's terms.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Given {
+    /// Values substituted before deciding.
+    pub fixed: Vec<Fixed>,
+    /// Ranges replacing the declared ones for this claim (by parameter
+    /// name): the claim is about that box.
+    pub ranges: Vec<(String, ParamRange)>,
+}
+
+/// Why a claim's fixed values cannot be substituted.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum GivenError {
+    /// A denominator of a formula vanishes at the value.
+    #[error("{what} is undefined at {at}: its denominator {denominator} vanishes there")]
+    Undefined {
+        what: String,
+        at: String,
+        denominator: String,
+    },
+    /// A parameter atom or a domain end that the exact ring cannot hold at
+    /// the value.
+    #[error("{what} at {at} is not exact in the symbolic ring ({why})")]
+    NotExact {
+        what: String,
+        at: String,
+        why: String,
+    },
+}
+
+impl Given {
+    /// True when the claim fixes nothing and narrows nothing.
+    pub fn is_empty(&self) -> bool {
+        self.fixed.is_empty() && self.ranges.is_empty()
+    }
+
+    /// `λ = 0, μ ∈ [0, 1]` in the parameters' printed symbols.
+    pub fn describe(&self, spec: &Spec) -> String {
+        let symbol = |name: &str| {
+            spec.params
+                .iter()
+                .find(|p| p.name == name)
+                .map_or(name.to_string(), |p| p.symbol.clone())
+        };
+        self.fixed
+            .iter()
+            .map(|f| format!("{} = {}", symbol(&f.name), f.text))
+            .chain(
+                self.ranges
+                    .iter()
+                    .map(|(n, r)| format!("{} ∈ {r}", symbol(n))),
+            )
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+
+    /// The spec and the check with the given values substituted and the
+    /// given ranges in place of the declared ones.
+    pub fn apply(&self, spec: &Spec, check: &Check) -> Result<(Spec, Check), GivenError> {
+        let mut spec = spec.clone();
+        let mut check = check.clone();
+        for (name, range) in &self.ranges {
+            if let Some(p) = spec.params.iter_mut().find(|p| &p.name == name) {
+                p.range = range.clone();
+            }
+        }
+        for f in &self.fixed {
+            let at = format!(
+                "{} = {}",
+                spec.params
+                    .iter()
+                    .find(|p| p.name == f.name)
+                    .map_or(f.name.as_str(), |p| p.symbol.as_str()),
+                f.text
+            );
+            let Some(index) = spec.params.iter().position(|p| p.name == f.name) else {
+                continue;
+            };
+            let subst = Substitution::new(&spec, index, &f.value, &at)?;
+            check = subst.check(&check)?;
+            spec = subst.spec(&spec)?;
+        }
+        Ok((spec, check))
+    }
+}
+
+/// One parameter replaced by a value: in the formulas, in its atoms and
+/// in the domain.
+struct Substitution<'a> {
+    index: usize,
+    /// `(name, value)` pairs substituted in order: the parameter, then its
+    /// atoms; with `different` joins also `name1`, `name2`.
+    pairs: Vec<(String, Sym)>,
+    value: &'a Sym,
+    at: &'a str,
+}
+
+impl<'a> Substitution<'a> {
+    fn new(spec: &Spec, index: usize, value: &'a Sym, at: &'a str) -> Result<Self, GivenError> {
+        let name = spec.params[index].name.clone();
+        let mut pairs = vec![(name.clone(), value.clone())];
+        for segment in [1, 2] {
+            pairs.push((format!("{name}{segment}"), value.clone()));
+        }
+        for atom in trig_certify::atoms::param_atoms(&spec.domain) {
+            if atom.param != index {
+                continue;
+            }
+            let multiple = Sym::rational(atom.base.clone()) * value;
+            let not_exact = |why: &str| GivenError::NotExact {
+                what: format!("`{}`", atom.name),
+                at: at.to_string(),
+                why: why.to_string(),
+            };
+            let v = match atom.kind {
+                trig_certify::atoms::Kind::Exp => multiple
+                    .is_zero()
+                    .then(Sym::one)
+                    .ok_or_else(|| not_exact("exp of a nonzero constant"))?,
+                kind => {
+                    let (s, c) = multiple
+                        .try_sin_cos()
+                        .filter(|(s, c)| radicals_only(s) && radicals_only(c))
+                        .ok_or_else(|| {
+                            not_exact("sine and cosine are exact at multiples of π/12 only")
+                        })?;
+                    if kind == trig_certify::atoms::Kind::Sin {
+                        s
+                    } else {
+                        c
+                    }
+                }
+            };
+            pairs.push((atom.name, v));
+        }
+        Ok(Substitution {
+            index,
+            pairs,
+            value,
+            at,
+        })
+    }
+
+    fn sym(&self, x: &Sym, what: &str) -> Result<Sym, GivenError> {
+        let mut y = x.clone();
+        for (name, v) in &self.pairs {
+            if y.variables().contains(name) {
+                y = y.try_subs(name, v).map_err(|_| GivenError::Undefined {
+                    what: what.to_string(),
+                    at: self.at.to_string(),
+                    denominator: y.denominator_poly().to_string(),
+                })?;
+            }
+        }
+        Ok(y)
+    }
+
+    /// An end of the domain (or its angle rate) with the value put in.
+    fn affine(&self, a: &Affine, what: &str) -> Result<Affine, GivenError> {
+        let mut out = Affine {
+            constant: a.constant.clone(),
+            pi: a.pi.clone(),
+            params: Vec::new(),
+        };
+        for (i, q) in &a.params {
+            match i.cmp(&self.index) {
+                std::cmp::Ordering::Less => out.params.push((*i, q.clone())),
+                std::cmp::Ordering::Greater => out.params.push((i - 1, q.clone())),
+                std::cmp::Ordering::Equal => {
+                    let (c, p) = affine_of(self.value).ok_or_else(|| GivenError::NotExact {
+                        what: what.to_string(),
+                        at: self.at.to_string(),
+                        why: "a domain end takes rationals and rational multiples of π".into(),
+                    })?;
+                    out.constant += Rational::from(q * &c);
+                    out.pi += Rational::from(q * &p);
+                }
+            }
+        }
+        Ok(out)
+    }
+
+    fn spec(&self, spec: &Spec) -> Result<Spec, GivenError> {
+        let mut s = spec.clone();
+        for f in s.functions.iter_mut().chain(s.definitions.iter_mut()) {
+            f.value = self.sym(&f.value, &format!("`{}`", f.name))?;
+        }
+        let d = &mut s.domain;
+        d.start = self.affine(&spec.domain.start, "the start of the domain")?;
+        d.end = self.affine(&spec.domain.end, "the end of the domain")?;
+        if let Some(w) = &spec.domain.angle {
+            d.angle = Some(self.affine(w, "the angle rate")?);
+        }
+        let reindex = |list: &[(usize, Rational)]| -> Vec<(usize, Rational)> {
+            list.iter()
+                .filter(|(i, _)| *i != self.index)
+                .map(|(i, q)| (if *i > self.index { i - 1 } else { *i }, q.clone()))
+                .collect()
+        };
+        d.param_angles = reindex(&spec.domain.param_angles);
+        d.param_exps = reindex(&spec.domain.param_exps);
+        d.param_names.remove(self.index);
+        s.params.remove(self.index);
+        let symbols: Vec<Sym> = s.params.iter().map(|p| Sym::var(&p.name)).collect();
+        for (end, x) in [("start", &s.domain.start), ("end", &s.domain.end)] {
+            if s.domain.atoms_at(x, &Sym::one(), &symbols).is_none() {
+                return Err(GivenError::NotExact {
+                    what: format!("the atoms at the {end} of the domain"),
+                    at: self.at.to_string(),
+                    why: "sin/cos of a constant angle are exact at multiples of π/12 only".into(),
+                });
+            }
+        }
+        Ok(s)
+    }
+
+    fn printed(&self, values: &[Printed]) -> Result<Vec<Printed>, GivenError> {
+        values
+            .iter()
+            .map(|p| {
+                Ok(Printed {
+                    value: self.sym(&p.value, &format!("the printed `{}`", p.text))?,
+                    ..p.clone()
+                })
+            })
+            .collect()
+    }
+
+    fn condition(&self, c: &Condition) -> Result<Condition, GivenError> {
+        let what = format!("the printed condition `{}`", c.text);
+        Ok(Condition {
+            value: self.sym(&c.value, &what)?,
+            terms: c
+                .terms
+                .iter()
+                .map(|t| self.sym(t, &what))
+                .collect::<Result<_, _>>()?,
+            denominator: self.sym(&c.denominator, &what)?,
+            ..c.clone()
+        })
+    }
+
+    /// The check with the value put into its printed formulas; a range of
+    /// the fixed parameter (the one-point range that fixed it) is gone.
+    fn check(&self, check: &Check) -> Result<Check, GivenError> {
+        let mut c = check.clone();
+        match &mut c {
+            Check::Nonnegative { range, .. }
+            | Check::ConvexHull { range }
+            | Check::Independent { range }
+            | Check::TotalPositivity { range }
+            | Check::Monotone { range, .. } => *range = None,
+            Check::EndpointValues { values, .. } | Check::EndpointDerivatives { values, .. } => {
+                *values = self.printed(values)?;
+            }
+            Check::CurveDerivative { value, text, .. } => {
+                *value = self.sym(value, &format!("the printed `{text}`"))?;
+            }
+            Check::Join { conditions, .. } => {
+                *conditions = conditions
+                    .iter()
+                    .map(|k| self.condition(k))
+                    .collect::<Result<_, _>>()?;
+            }
+            Check::Conic {
+                points, equation, ..
+            } => {
+                for (x, y) in points.iter_mut() {
+                    *x = self.sym(x, "a printed control point")?;
+                    *y = self.sym(y, "a printed control point")?;
+                }
+                *equation = self.sym(equation, "the printed equation")?;
+            }
+            Check::Symmetry { at, params, .. } => {
+                if self.index < at.len() {
+                    at.remove(self.index);
+                }
+                if self.index < params.len() {
+                    params.remove(self.index);
+                }
+                for p in params.iter_mut() {
+                    *p = self.sym(p, "the printed exchange of parameters")?;
+                }
+            }
+            Check::Unity
+            | Check::ShapeEffect { .. }
+            | Check::Continuity { .. }
+            | Check::LocalControl { .. } => {}
+        }
+        Ok(c)
+    }
+}
+
+/// True when `x` is a constant of the ring whose only atoms are radicals.
+fn radicals_only(x: &Sym) -> bool {
+    x.variables().iter().all(|v| v.starts_with("sqrt("))
+}
+
+/// `(q₀, q_π)` when `x = q₀ + q_π·π`.
+pub(crate) fn affine_of(x: &Sym) -> Option<(Rational, Rational)> {
+    if !x.denominator().is_empty() || x.variables().iter().any(|v| v != "pi") {
+        return None;
+    }
+    let coefficients = x.numerator().coefficients_in("pi");
+    let at = |k: usize| {
+        coefficients
+            .get(k)
+            .map_or(Some(Rational::new()), |p| p.as_constant())
+    };
+    if coefficients.len() > 2 {
+        return None;
+    }
+    Some((at(0)?, at(1)?))
+}
