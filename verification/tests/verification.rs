@@ -6,6 +6,7 @@ mod joins;
 mod local_control;
 mod seed000;
 mod seed002_004;
+mod several_parameters;
 mod shape_effect;
 mod spec_audit;
 mod thesis_interp;

@@ -34,6 +34,7 @@ pub mod exp_half_line;
 pub mod factors;
 pub mod krawczyk;
 pub mod maxima;
+pub mod minors;
 pub mod nonneg;
 pub mod range;
 pub mod real_point;
@@ -44,6 +45,7 @@ pub mod standard;
 pub mod sturm;
 pub mod taylor;
 pub mod total_positivity;
+pub mod tp_box;
 pub mod tp_set;
 pub mod transcendental;
 

@@ -81,14 +81,13 @@ fn strip_one_plus_z2(f: &Poly) -> (u32, Poly) {
 
 /// The strict sign of a denominator factor `g(z, p)` on `[0, 1]` × the
 /// parameter set, or why it has none.
-fn factor_sign(g: &Poly, param: Option<(&str, &ParamBox)>) -> Result<i32, String> {
+fn factor_sign(g: &Poly, params: &[(&str, ParamBox)]) -> Result<i32, String> {
     if let Some(k) = g.as_constant() {
         return Ok(k.cmp0() as i32);
     }
-    let params: Vec<(&str, ParamBox)> = param.map(|(n, b)| (n, b.clone())).into_iter().collect();
     // in t: the engine maps t ↦ z itself
     let in_t = Sym::from_poly(g.subs("z", &Poly::var("t")));
-    definite_sign(&in_t, false, &params)
+    definite_sign(&in_t, false, params)
         .map_err(|why| format!("the denominator factor {g} has no fixed sign: {why}"))
 }
 
@@ -99,16 +98,46 @@ pub fn factorise(
     trigonometric: bool,
     param: Option<(&str, &ParamBox)>,
 ) -> Result<Factorisation, String> {
-    let zs: Vec<Sym> = fs.iter().map(|f| in_z(f, trigonometric)).collect();
+    let params: Vec<(&str, ParamBox)> = param.map(|(n, b)| (n, b.clone())).into_iter().collect();
     let name = param.map(|(n, _)| n);
+    let common = numerators(fs, trigonometric, &params)?;
+    let rows = common
+        .numerators
+        .iter()
+        .map(|n| bernstein_row(n, common.degree, name))
+        .collect::<Result<_, _>>()?;
+    Ok(Factorisation {
+        degree: common.degree,
+        rows,
+        common: common.text,
+    })
+}
+
+/// The numerators of the functions over their positive common factor in
+/// `z`, each with the sign that makes the factor positive.
+pub(crate) struct Numerators {
+    pub numerators: Vec<Poly>,
+    /// Their degree in `z`.
+    pub degree: usize,
+    /// The common factor, as text.
+    pub text: String,
+}
+
+/// [`Numerators`] of `fs` (in `s, c` or `t` and the `params`).
+pub(crate) fn numerators(
+    fs: &[Sym],
+    trigonometric: bool,
+    params: &[(&str, ParamBox)],
+) -> Result<Numerators, String> {
+    let zs: Vec<Sym> = fs.iter().map(|f| in_z(f, trigonometric)).collect();
     for (j, fz) in zs.iter().enumerate() {
         if let Some(other) = fz
             .variables()
             .into_iter()
-            .find(|v| v != "z" && Some(v.as_str()) != name)
+            .find(|v| v != "z" && !params.iter().any(|(n, _)| n == v))
         {
             return Err(format!(
-                "function {j} depends on `{other}` besides the variable and the parameter"
+                "function {j} depends on `{other}` besides the variable and the parameters"
             ));
         }
     }
@@ -121,7 +150,7 @@ pub fn factorise(
         for (factor, e) in fz.denominator() {
             let (k, rest) = strip_one_plus_z2(factor);
             own_zz += k * e;
-            let s = factor_sign(&rest, param)?;
+            let s = factor_sign(&rest, params)?;
             if e % 2 == 1 {
                 sign *= s;
             }
@@ -153,19 +182,15 @@ pub fn factorise(
         .map(|n| n.degree_in("z") as usize)
         .max()
         .unwrap_or(0);
-    let rows = numerators
-        .iter()
-        .map(|n| bernstein_row(n, degree, name))
-        .collect::<Result<_, _>>()?;
     let mut text: Vec<String> = Vec::new();
     if zz_power > 0 {
         text.push(format!("(1 + z²)^{zz_power}"));
     }
     text.extend(common.iter().map(|(g, e)| format!("|{g}|^{e}")));
-    Ok(Factorisation {
+    Ok(Numerators {
+        numerators,
         degree,
-        rows,
-        common: if text.is_empty() {
+        text: if text.is_empty() {
             "1".into()
         } else {
             text.join(" · ")

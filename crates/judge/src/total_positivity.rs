@@ -14,8 +14,9 @@
 
 use rug::Rational;
 use trig_certify::total_positivity::{NegativeMinor, TpCertificate, certify, refute};
+use trig_certify::tp_box::BoxOutcome;
 use trig_certify::{Bound, ParamBox};
-use trig_core::ParamRange;
+use trig_core::{ParamRange, Parameter};
 use trig_symbolic::Sym;
 
 use super::nonnegative::pieces;
@@ -69,11 +70,7 @@ pub fn totally_positive<B: ExactBasis>(basis: &B, range: Option<&ParamRange>) ->
     let (param, published) = match params.as_slice() {
         [] => (None, None),
         [p] => (Some(p), Some(range.unwrap_or(&p.range))),
-        _ => {
-            return Verdict::not_checkable(
-                "total positivity is certified for bases with at most one parameter",
-            );
-        }
+        _ => return several(basis, &fs, trig, &params),
     };
     let bx = published.map(ParamBox::from_range);
     let named = param.map(|p| p.name.as_str()).zip(bx.as_ref());
@@ -112,7 +109,12 @@ pub fn totally_positive<B: ExactBasis>(basis: &B, range: Option<&ParamRange>) ->
     for p in tries {
         let at = param.map(|q| q.name.as_str()).zip(p.as_ref());
         if let Some(neg) = refute(&fs, trig, at) {
-            evidence.push(refutation(basis, &neg, at, symbol, trig));
+            let shown: Vec<(String, String, Rational)> = param
+                .zip(p)
+                .map(|(q, v)| (q.name.clone(), q.symbol.clone(), v))
+                .into_iter()
+                .collect();
+            evidence.push(refutation(basis, &neg, &shown, trig));
             return Verdict::new(Status::Fails, TOTALLY_POSITIVE, evidence);
         }
     }
@@ -163,15 +165,12 @@ fn certificate_line(
 fn refutation<B: ExactBasis>(
     basis: &B,
     neg: &NegativeMinor,
-    at: Option<(&str, &Rational)>,
-    symbol: &str,
+    at: &[(String, String, Rational)],
     trig: bool,
 ) -> Evidence {
     let names = basis.function_names();
-    let mut point: Vec<(String, Rational)> = at
-        .map(|(n, p)| (n.to_string(), p.clone()))
-        .into_iter()
-        .collect();
+    let mut point: Vec<(String, Rational)> =
+        at.iter().map(|(n, _, p)| (n.clone(), p.clone())).collect();
     let var = if trig { "z" } else { "t" };
     for (k, z) in neg.points.iter().enumerate() {
         point.push((format!("{var}{}", k + 1), z.clone()));
@@ -210,7 +209,11 @@ fn refutation<B: ExactBasis>(
     }
     let order = neg.functions.len();
     let fns: Vec<&str> = neg.functions.iter().map(|j| names[*j].as_str()).collect();
-    let at_text = at.map_or(String::new(), |(_, p)| format!(" at {symbol} = {p}"));
+    let at_text = if at.is_empty() {
+        String::new()
+    } else {
+        format!(" at {}", equalities(at))
+    };
     Evidence::new(
         Kind::Certificate,
         format!(
@@ -226,4 +229,134 @@ fn refutation<B: ExactBasis>(
     )
     .about("total positivity", Status::Fails)
     .witnessed(Some(w))
+}
+
+/// `λ = 1, μ = 1/2`.
+fn equalities(at: &[(String, String, Rational)]) -> String {
+    at.iter()
+        .map(|(_, symbol, p)| format!("{symbol} = {p}"))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// Total positivity with two or more parameters: every minor of the
+/// factorisation, a polynomial in all of them, certified `≥ 0` on the box
+/// of their ranges ([`trig_certify::tp_box`]); where a minor is negative,
+/// a negative collocation minor at that parameter vector (or a corner of
+/// the box) refutes.
+fn several<B: ExactBasis>(basis: &B, fs: &[Sym], trig: bool, params: &[Parameter]) -> Verdict {
+    let boxes: Vec<(&str, ParamBox)> = params
+        .iter()
+        .map(|p| (p.name.as_str(), ParamBox::from_range(&p.range)))
+        .collect();
+    let cert = match trig_certify::tp_box::certify(fs, trig, &boxes) {
+        Ok(c) => c,
+        Err(why) => return Verdict::not_checkable(format!("no factorisation: {why}")),
+    };
+    let symbols: Vec<&str> = params.iter().map(|p| p.symbol.as_str()).collect();
+    let on_box = params
+        .iter()
+        .map(|p| format!("{} ∈ {}", p.symbol, p.range))
+        .collect::<Vec<_>>()
+        .join(", ");
+    let elevated = if cert.degree > cert.first_degree {
+        format!(", elevated to {}", cert.degree)
+    } else {
+        String::new()
+    };
+    let head = format!(
+        "numerators over the positive common factor {} in z = tan(θ/2) (or t): Bernstein degree {}{elevated}; coefficient matrix {} × {}; {} nonzero minors, each a polynomial in {}",
+        cert.common,
+        cert.first_degree,
+        cert.functions,
+        cert.degree + 1,
+        cert.minors,
+        symbols.join(", ")
+    );
+    let (rows, cols, point, value) = match cert.outcome {
+        BoxOutcome::Covers { boxes } => {
+            let line = Evidence::new(
+                Kind::Certificate,
+                format!("{head}: each certified ≥ 0 for {on_box} (exact Bernstein subdivision in the parameters, {boxes} boxes)"),
+            )
+            .about("total positivity", Status::Holds);
+            return Verdict::new(Status::Holds, TOTALLY_POSITIVE, vec![line]);
+        }
+        BoxOutcome::Undecided(why) => {
+            return Verdict::new(
+                Status::NotCheckable,
+                TOTALLY_POSITIVE,
+                vec![Evidence::note(format!("{head}: {why}"))],
+            );
+        }
+        BoxOutcome::Negative {
+            rows,
+            cols,
+            point,
+            value,
+        } => (rows, cols, point, value),
+    };
+    let at = |values: &[Rational]| -> Vec<(String, String, Rational)> {
+        params
+            .iter()
+            .zip(values)
+            .map(|(p, v)| (p.name.clone(), p.symbol.clone(), v.clone()))
+            .collect()
+    };
+    let mut evidence = vec![Evidence::note(format!(
+        "{head}: the minor of rows {rows:?} and columns {cols:?} is {value} < 0 at {} (exact), so the certificate does not reach the whole box {on_box}",
+        equalities(&at(&point))
+    ))];
+    // where the certificate fails, then the corners of the box
+    let mut tries = vec![point];
+    tries.extend(corners(params));
+    for values in tries {
+        let inside = params.iter().zip(&values).all(|(p, v)| p.range.contains(v));
+        if !inside {
+            continue;
+        }
+        let fixed: Vec<Sym> = fs
+            .iter()
+            .map(|f| {
+                params.iter().zip(&values).fold(f.clone(), |g, (p, v)| {
+                    g.subs(&p.name, &Sym::rational(v.clone()))
+                })
+            })
+            .collect();
+        if let Some(neg) = refute(&fixed, trig, None) {
+            evidence.push(refutation(basis, &neg, &at(&values), trig));
+            return Verdict::new(Status::Fails, TOTALLY_POSITIVE, evidence);
+        }
+    }
+    evidence.push(Evidence::note(
+        "no collocation matrix with a negative minor was found there or at the corners of the box (rational grids of [0, 1] in z): the certificate is sufficient, not necessary",
+    ));
+    Verdict::new(Status::NotCheckable, TOTALLY_POSITIVE, evidence)
+}
+
+/// The corners of the parameters' box at their closed finite ends.
+fn corners(params: &[Parameter]) -> Vec<Vec<Rational>> {
+    let ends = |p: &Parameter| -> Vec<Rational> {
+        if p.range.pi {
+            return Vec::new();
+        }
+        [&p.range.lo, &p.range.hi]
+            .into_iter()
+            .filter_map(|e| match e {
+                trig_core::End::Closed(q) => Some(q.clone()),
+                _ => None,
+            })
+            .collect()
+    };
+    params.iter().fold(vec![Vec::new()], |acc, p| {
+        acc.iter()
+            .flat_map(|prefix| {
+                ends(p).into_iter().map(move |v| {
+                    let mut next = prefix.clone();
+                    next.push(v);
+                    next
+                })
+            })
+            .collect()
+    })
 }

@@ -1,0 +1,184 @@
+//! Total positivity with two and three shape parameters, decided both
+//! ways on bases outside the catalog (expected results derived by hand
+//! below and independently in examples/independent/issue38-total-positivity.py).
+
+use trig_specfile::Spec;
+use trig_verification::{Status, Verdict, spec_audit};
+
+/// A polynomial spec on `[0, 1]` with the given parameters (`name range`)
+/// and functions, and one total-positivity claim.
+fn tp(params: &[(&str, &str)], functions: &[&str]) -> Verdict {
+    let mut text = "id = \"several\"\ncitation = \"test\"\nvariable = \"polynomial\"\n".to_string();
+    for (name, range) in params {
+        text.push_str(&format!(
+            "[[parameters]]\nname = \"{name}\"\nrange = \"{range}\"\n"
+        ));
+    }
+    for (i, f) in functions.iter().enumerate() {
+        text.push_str(&format!(
+            "[[functions]]\nname = \"b{i}\"\nformula = \"{f}\"\n"
+        ));
+    }
+    text.push_str(
+        "[[claims]]\nid = \"TP\"\nsource = \"test\"\nstatement = \"TP\"\ncheck = \"total-positivity\"\n",
+    );
+    let spec = Spec::from_str_named(&text, "several").unwrap_or_else(|e| panic!("{e}"));
+    spec_audit::decide(&spec, &spec.claims[0])
+}
+
+fn lines(v: &Verdict) -> String {
+    v.evidence
+        .clone()
+        .into_vec()
+        .iter()
+        .map(|e| e.line())
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+/// `b0 = B0 + a·B1`, `b1 = (1 − a − b)·B1`, `b2 = B2 + b·B1` (quadratic
+/// Bernstein `Bₖ`): coefficient matrix `[[1, a, 0], [0, 1 − a − b, 0],
+/// [0, b, 1]]`, whose minors `a`, `b`, `1 − a − b`, … are all `≥ 0` exactly
+/// on the triangle `a, b ≥ 0`, `a + b ≤ 1`; outside it `b1 < 0` (when
+/// `a + b > 1`) or `b0 < 0` near `t = 1` (when `a < 0`), so a `1 × 1`
+/// collocation minor is negative.
+const TRIANGLE: [&str; 3] = [
+    "(1 - t)^2 + 2*a*t*(1 - t)",
+    "2*(1 - a - b)*t*(1 - t)",
+    "t^2 + 2*b*t*(1 - t)",
+];
+
+#[test]
+fn two_parameters_both_ways() {
+    let v = tp(&[("a", "[0, 1/2]"), ("b", "[0, 1/2]")], &TRIANGLE);
+    assert_eq!(v.status, Status::Holds, "{}", lines(&v));
+    assert!(
+        lines(&v).contains("each a polynomial in a, b"),
+        "{}",
+        lines(&v)
+    );
+    let v = tp(&[("a", "[0, 1]"), ("b", "[0, 1]")], &TRIANGLE);
+    assert_eq!(v.status, Status::Fails, "{}", lines(&v));
+    assert!(
+        lines(&v).contains("not totally positive at a = "),
+        "{}",
+        lines(&v)
+    );
+    let v = tp(&[("a", "[-1/2, 0]"), ("b", "[0, 1/2]")], &TRIANGLE);
+    assert_eq!(v.status, Status::Fails, "{}", lines(&v));
+}
+
+/// The cubic version with three parameters: `b0 = B0 + a·B1`,
+/// `b1 = (1 − a)·B1 + g·B2`, `b2 = (1 − b − g)·B2`, `b3 = B3 + b·B2`; the
+/// coefficient matrix `[[1, a, 0, 0], [0, 1 − a, g, 0], [0, 0, 1 − b − g, 0],
+/// [0, 0, b, 1]]` has the minors `a`, `1 − a`, `b`, `g`, `1 − b − g`, `ag`,
+/// `(1 − a)b`, `(1 − a)(1 − b − g)`, …: all `≥ 0` for `a ∈ [0, 1]`,
+/// `b, g ∈ [0, 1/2]`; at `b = g = 1`, `b2 = −B2 < 0`.
+#[test]
+fn three_parameters_both_ways() {
+    let cubic = [
+        "(1 - t)^3 + 3*a*t*(1 - t)^2",
+        "3*(1 - a)*t*(1 - t)^2 + 3*g*t^2*(1 - t)",
+        "3*(1 - b - g)*t^2*(1 - t)",
+        "t^3 + 3*b*t^2*(1 - t)",
+    ];
+    let v = tp(
+        &[("a", "[0, 1]"), ("b", "[0, 1/2]"), ("g", "[0, 1/2]")],
+        &cubic,
+    );
+    assert_eq!(v.status, Status::Holds, "{}", lines(&v));
+    let v = tp(&[("a", "[0, 1]"), ("b", "[0, 1]"), ("g", "[0, 1]")], &cubic);
+    assert_eq!(v.status, Status::Fails, "{}", lines(&v));
+    assert!(
+        lines(&v).contains("not totally positive at a = "),
+        "{}",
+        lines(&v)
+    );
+}
+
+/// A spec text with one claim appended, decided.
+fn decide_text(text: &str, claim: &str) -> Verdict {
+    let spec = Spec::from_str_named(
+        &format!(
+            "{text}\n[[claims]]\nid = \"X\"\nsource = \"test\"\nstatement = \"test\"\n{claim}\n"
+        ),
+        "several",
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    spec_audit::decide(&spec, spec.claims.last().expect("claim"))
+}
+
+fn example(name: &str) -> String {
+    std::fs::read_to_string(
+        std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+            .join(format!("../examples/{name}.toml")),
+    )
+    .unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// Constructed in examples/independent/issue38.md, section 3, item 6:
+/// nonnegative on [0, 2]² (b0, b2 squares, b1 = t(1 − t)·Q with Q > 0) but
+/// totally positive exactly on [0, 1]²: at (λ, μ) = (2, 0) the 2×2
+/// collocation minor of (b0, b1) at t = 1/2 < 3/4 is det[[0, 3/4],
+/// [1/64, 27/64]] = −3/256.
+const NONNEGATIVE_NOT_TP: &str = "id = \"b6\"\ncitation = \"constructed\"\nvariable = \"polynomial\"\n\
+[[parameters]]\nname = \"lambda\"\nsymbol = \"λ\"\nrange = \"[0, 2]\"\n\
+[[parameters]]\nname = \"mu\"\nsymbol = \"μ\"\nrange = \"[0, 2]\"\n\
+[[functions]]\nname = \"b0\"\nformula = \"(1 - t)^2*(1 - lambda*t)^2\"\n\
+[[functions]]\nname = \"b1\"\nformula = \"1 - (1 - t)^2*(1 - lambda*t)^2 - t^2*(1 - mu*(1 - t))^2\"\n\
+[[functions]]\nname = \"b2\"\nformula = \"t^2*(1 - mu*(1 - t))^2\"\n";
+
+#[test]
+fn nonnegative_on_the_box_totally_positive_on_a_smaller_one() {
+    let v = decide_text(NONNEGATIVE_NOT_TP, "check = \"nonnegative\"");
+    assert_eq!(v.status, Status::Holds, "{}", lines(&v));
+    let v = decide_text(NONNEGATIVE_NOT_TP, "check = \"total-positivity\"");
+    assert_eq!(v.status, Status::Fails, "{}", lines(&v));
+    assert!(lines(&v).contains("is -3/256 < 0 (exact)"), "{}", lines(&v));
+    let v = decide_text(
+        NONNEGATIVE_NOT_TP,
+        "check = \"total-positivity\"\nranges = { lambda = \"[0, 1]\", mu = \"[0, 1]\" }",
+    );
+    assert_eq!(v.status, Status::Holds, "{}", lines(&v));
+}
+
+/// Han, Ma & Huang's trigonometric cubic (examples/han-ma-huang-cubic.toml)
+/// is totally positive on its whole box [−2, 1]² (issue38.md, section 3,
+/// item 3: all 192 minors of the degree-6 Bernstein form are ≥ 0).
+#[test]
+fn a_published_two_parameter_basis_is_totally_positive() {
+    let v = decide_text(
+        &example("han-ma-huang-cubic"),
+        "check = \"total-positivity\"",
+    );
+    assert_eq!(v.status, Status::Holds, "{}", lines(&v));
+    assert!(lines(&v).contains("192 nonzero minors"), "{}", lines(&v));
+}
+
+/// The generalized Bernstein basis of degree 3 with three parameters
+/// (Han, Ma & Huang, JCAM 217 (2008) 180–193; issue38.md): totally
+/// positive on its whole box (the coefficient matrix is bidiagonal with
+/// entries ≥ 0), and not on a box reaching λ2 = 31/10, where
+/// b1(31/32) = −31/10485760.
+#[test]
+fn a_published_three_parameter_basis_both_ways() {
+    let gb3 = |l2: &str| {
+        tp(
+            &[
+                ("lambda1", "[-3, 1]"),
+                ("lambda2", l2),
+                ("lambda3", "[-3, 1]"),
+            ],
+            &[
+                "(1 - t)^3*(1 - lambda1*t)",
+                "t*(1 - t)^2*(3 + lambda1 - lambda1*t - lambda2*t)",
+                "t^2*(1 - t)*(3 + lambda2 - lambda2*t + lambda3*t)",
+                "t^3*(1 - lambda3 + lambda3*t)",
+            ],
+        )
+    };
+    let v = gb3("[-3, 3]");
+    assert_eq!(v.status, Status::Holds, "{}", lines(&v));
+    let v = gb3("[-3, 31/10]");
+    assert_eq!(v.status, Status::Fails, "{}", lines(&v));
+}
