@@ -312,3 +312,55 @@ fn ranges_of_several_parameters() {
     );
     assert_status(&v, Status::Holds, "μ = 1");
 }
+
+/// A line of the parameter plane, as papers print it (`μ = λ`,
+/// `β = 3 − 3α`): the value is an expression in the other parameters,
+/// substituted before deciding. Han, Ma & Huang's cubic with the polygon
+/// (0, 0), (1/2, 0), (1, 1), (1, 1) traces the parabola Y = X² exactly
+/// for λ = 0 and every μ (Y = sin²t, X = sin t); on the diagonal μ = λ only
+/// at λ = 0 (examples/independent/issue38.md: at (1, any μ) and
+/// (sin t, cos t) = (3/5, 4/5) the residual is −936/15625). On the
+/// diagonal of [−2, 1]² the basis is nonnegative; on the line μ = λ − 2 it
+/// is not (μ < −2 there for λ < 0).
+#[test]
+fn lines_of_the_parameter_plane() {
+    let parabola = "values = [\"P0 = (0, 0)\", \"P1 = (1/2, 0)\", \"P2 = (1, 1)\", \"P3 = (1, 1)\"]\nvalue = \"Y - X^2\"";
+    let v = decide(
+        "han-ma-huang-cubic",
+        "conic",
+        &format!("{parabola}\nat = {{ lambda = \"0\" }}"),
+    );
+    assert_status(&v, Status::Holds, "decided at λ = 0");
+    let v = decide(
+        "han-ma-huang-cubic",
+        "conic",
+        &format!("{parabola}\nat = {{ mu = \"lambda\" }}"),
+    );
+    assert_status(&v, Status::Fails, "decided at μ = lambda");
+    let v = decide(
+        "han-ma-huang-cubic",
+        "nonnegative",
+        "at = { mu = \"lambda\" }",
+    );
+    assert_eq!(v.status, Status::Holds, "{v:?}");
+    let v = decide(
+        "han-ma-huang-cubic",
+        "nonnegative",
+        "at = { mu = \"lambda - 2\" }",
+    );
+    assert_eq!(v.status, Status::Fails, "{v:?}");
+    // fixed one after the other: λ = 0, then μ = 1 − λ = 1
+    let v = decide(
+        "han-ma-huang-cubic",
+        "conic",
+        &format!("{parabola}\nat = {{ lambda = \"0\", mu = \"1 - lambda\" }}"),
+    );
+    assert_status(&v, Status::Holds, "μ = 1 - lambda");
+    // values that refer to each other in a circle fix nothing
+    let v = decide(
+        "han-ma-huang-cubic",
+        "unity",
+        "at = { lambda = \"mu\", mu = \"lambda\" }",
+    );
+    assert_status(&v, Status::NotCheckable, "in a circle");
+}

@@ -219,15 +219,18 @@ fn given(src: &Source<'_>, spec: &Spec, c: &RawClaim, kind: &str) -> Result<Give
                 field: format!("claims.{field}"),
                 message: format!("`{}`: {}", text.trim(), e.message),
             })?;
+        // a number, or (a line of the parameter plane) an expression in the
+        // other parameters: `beta = "3 - 3*alpha"`
+        let other = |v: &String| spec.params.iter().any(|p| p.name == *v && p.name != name);
         if value
             .variables()
             .iter()
-            .any(|v| v != "pi" && !v.starts_with("sqrt("))
+            .any(|v| v != "pi" && !v.starts_with("sqrt(") && !other(v))
         {
             return src.invalid(
                 span,
                 &format!("claims.{field}"),
-                format!("`{}`: a fixed value is a number: rationals, pi and square roots (e.g. 0, 1/2, sqrt(2)/2, pi/3)", text.trim()),
+                format!("`{}`: a fixed value is a number (rationals, pi and square roots: 0, 1/2, sqrt(2)/2, pi/3) or an expression in the other parameters (3 - 3*alpha)", text.trim()),
             );
         }
         out.fixed.push(Fixed {

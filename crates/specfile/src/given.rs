@@ -12,7 +12,7 @@
 
 use rug::Rational;
 use trig_core::{Affine, ParamRange, Ring};
-use trig_symbolic::Sym;
+use trig_symbolic::{Poly, Sym};
 
 use crate::check::{Check, Condition, Printed};
 use crate::spec::Spec;
@@ -95,7 +95,25 @@ impl Given {
                 p.range = range.clone();
             }
         }
+        let mut earlier: Vec<(String, Sym)> = Vec::new();
         for f in &self.fixed {
+            // a value in other parameters sees the values fixed before it
+            let mut value = f.value.clone();
+            for (name, v) in &earlier {
+                value = value.try_subs(name, v).map_err(|_| GivenError::Undefined {
+                    what: format!("the value `{}` of `{}`", f.text, f.name),
+                    at: format!("{name} = {v}"),
+                    denominator: f.value.denominator_poly().to_string(),
+                })?;
+            }
+            if value.variables().contains(&f.name) {
+                return Err(GivenError::NotExact {
+                    what: format!("`{}`", f.name),
+                    at: format!("{} = {}", f.name, f.text),
+                    why: "the values fixed refer to each other in a circle".into(),
+                });
+            }
+            earlier.push((f.name.clone(), value.clone()));
             let at = format!(
                 "{} = {}",
                 spec.params
@@ -107,7 +125,7 @@ impl Given {
             let Some(index) = spec.params.iter().position(|p| p.name == f.name) else {
                 continue;
             };
-            let subst = Substitution::new(&spec, index, &f.value, &at)?;
+            let subst = Substitution::new(&spec, index, &value, &at)?;
             check = subst.check(&check)?;
             spec = subst.spec(&spec)?;
         }
@@ -119,6 +137,8 @@ impl Given {
 /// in the domain.
 struct Substitution<'a> {
     index: usize,
+    /// The parameters' names before the substitution, by index.
+    names: Vec<String>,
     /// `(name, value)` pairs substituted in order: the parameter, then its
     /// atoms; with `different` joins also `name1`, `name2`.
     pairs: Vec<(String, Sym)>,
@@ -166,6 +186,7 @@ impl<'a> Substitution<'a> {
         }
         Ok(Substitution {
             index,
+            names: spec.params.iter().map(|p| p.name.clone()).collect(),
             pairs,
             value,
             at,
@@ -198,16 +219,27 @@ impl<'a> Substitution<'a> {
                 std::cmp::Ordering::Less => out.params.push((*i, q.clone())),
                 std::cmp::Ordering::Greater => out.params.push((i - 1, q.clone())),
                 std::cmp::Ordering::Equal => {
-                    let (c, p) = affine_of(self.value).ok_or_else(|| GivenError::NotExact {
-                        what: what.to_string(),
-                        at: self.at.to_string(),
-                        why: "a domain end takes rationals and rational multiples of π".into(),
-                    })?;
-                    out.constant += Rational::from(q * &c);
-                    out.pi += Rational::from(q * &p);
+                    let v =
+                        affine_of(self.value, &self.names).ok_or_else(|| GivenError::NotExact {
+                            what: what.to_string(),
+                            at: self.at.to_string(),
+                            why: "a domain end is linear in π and the parameters".into(),
+                        })?;
+                    let v = v.scale(q);
+                    out.constant += v.constant;
+                    out.pi += v.pi;
+                    for (j, c) in v.params {
+                        let j = if j > self.index { j - 1 } else { j };
+                        match out.params.iter_mut().find(|(k, _)| *k == j) {
+                            Some((_, d)) => *d += c,
+                            None => out.params.push((j, c)),
+                        }
+                    }
                 }
             }
         }
+        out.params.retain(|(_, c)| *c != 0);
+        out.params.sort_by_key(|(k, _)| *k);
         Ok(out)
     }
 
@@ -327,19 +359,26 @@ fn radicals_only(x: &Sym) -> bool {
     x.variables().iter().all(|v| v.starts_with("sqrt("))
 }
 
-/// `(q₀, q_π)` when `x = q₀ + q_π·π`.
-pub(crate) fn affine_of(x: &Sym) -> Option<(Rational, Rational)> {
-    if !x.denominator().is_empty() || x.variables().iter().any(|v| v != "pi") {
+/// `x` as `q₀ + q_π·π + Σ qᵢ·pᵢ` (the parameters `names`, by index) when
+/// it is linear in π and the parameters.
+fn affine_of(x: &Sym, names: &[String]) -> Option<Affine> {
+    if !x.denominator().is_empty() || x.numerator().total_degree() > 1 {
         return None;
     }
-    let coefficients = x.numerator().coefficients_in("pi");
-    let at = |k: usize| {
-        coefficients
-            .get(k)
-            .map_or(Some(Rational::new()), |p| p.as_constant())
-    };
-    if coefficients.len() > 2 {
-        return None;
+    let mut out = Affine::default();
+    for v in x.variables() {
+        let coefficient = x.numerator().coefficients_in(&v).get(1)?.as_constant()?;
+        if v == "pi" {
+            out.pi = coefficient;
+        } else {
+            let i = names.iter().position(|n| *n == v)?;
+            out.params.push((i, coefficient));
+        }
     }
-    Some((at(0)?, at(1)?))
+    let rest = x
+        .variables()
+        .iter()
+        .fold(x.numerator().clone(), |p, v| p.subs(v, &Poly::zero()));
+    out.constant = rest.as_constant()?;
+    Some(out)
 }
