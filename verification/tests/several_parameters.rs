@@ -182,3 +182,47 @@ fn a_published_three_parameter_basis_both_ways() {
     let v = gb3("[-3, 31/10]");
     assert_eq!(v.status, Status::Fails, "{}", lines(&v));
 }
+
+/// A region printed as inequalities — the triangle `a, b ≥ 0`,
+/// `a + b ≤ 1` — is stated with an end linear in the other parameter
+/// (`ranges = { a = "[0, 1]", b = "[0, 1 - a]" }`) and decided as
+/// `b = (1 − a)·b′`, `b′ ∈ [0, 1]`: the triangle basis is totally positive
+/// on exactly that triangle, and not on the larger one `b ≤ 1 − a/2`
+/// (at `a = 1`, `b = 1/2`: `b1 = −B1 < 0`).
+#[test]
+fn a_triangle_of_parameters() {
+    let text = "id = \"tri\"\ncitation = \"test\"\nvariable = \"polynomial\"\n\
+[[parameters]]\nname = \"a\"\nrange = \"[0, 1]\"\n[[parameters]]\nname = \"b\"\nrange = \"[0, 1]\"\n"
+        .to_string()
+        + &TRIANGLE
+            .iter()
+            .enumerate()
+            .map(|(i, f)| format!("[[functions]]\nname = \"b{i}\"\nformula = \"{f}\"\n"))
+            .collect::<String>();
+    let v = decide_text(
+        &text,
+        "check = \"total-positivity\"\nranges = { a = \"[0, 1]\", b = \"[0, 1 - a]\" }",
+    );
+    assert_eq!(v.status, Status::Holds, "{}", lines(&v));
+    assert!(
+        lines(&v).contains("b ∈ [0, 1 - a] (written b = lo + b_u·(hi − lo)"),
+        "{}",
+        lines(&v)
+    );
+    let v = decide_text(
+        &text,
+        "check = \"total-positivity\"\nranges = { b = \"[0, 1 - a/2]\" }",
+    );
+    assert_eq!(v.status, Status::Fails, "{}", lines(&v));
+    let v = decide_text(
+        &text,
+        "check = \"nonnegative\"\nranges = { b = \"[0, 1 - a]\" }",
+    );
+    assert_eq!(v.status, Status::Holds, "{}", lines(&v));
+    // an upper end below the lower one somewhere is refused with the reason
+    let v = decide_text(
+        &text,
+        "check = \"unity\"\nranges = { b = \"[0, a - 1/2]\" }",
+    );
+    assert_eq!(v.status, Status::NotCheckable, "{}", lines(&v));
+}

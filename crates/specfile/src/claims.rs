@@ -9,7 +9,7 @@ use trig_symbolic::{Names, Sym};
 
 use crate::check::{Check, Condition, Direction, Monotone, Printed, SpecClaim, Varied};
 use crate::error::{Result, SpecError};
-use crate::given::{Fixed, Given};
+use crate::given::{Between, Fixed, Given};
 use crate::raw::RawClaim;
 use crate::source::Source;
 use crate::spec::{MAX_ORDER, Spec};
@@ -173,6 +173,23 @@ fn point_of(range: &ParamRange) -> Option<String> {
     }
 }
 
+/// `[lo, hi]` with ends written in the other parameters (closed ends).
+fn between(spec: &Spec, name: &str, text: &str) -> Option<Between> {
+    let inner = text.trim().strip_prefix('[')?.strip_suffix(']')?;
+    let (a, b) = inner.split_once(',')?;
+    let end = |e: &str| -> Option<Sym> {
+        let v = spec.parse_formula(e, &[]).ok()?;
+        let other = |v: &String| spec.params.iter().any(|p| p.name == *v && p.name != name);
+        v.variables().iter().all(other).then_some(v)
+    };
+    Some(Between {
+        name: name.to_string(),
+        text: text.trim().to_string(),
+        lo: end(a)?,
+        hi: end(b)?,
+    })
+}
+
 /// The checks that are decided over a range of the only parameter.
 const RANGED: [&str; 5] = [
     "nonnegative",
@@ -266,8 +283,24 @@ fn given(src: &Source<'_>, spec: &Spec, c: &RawClaim, kind: &str) -> Result<Give
     }
     for (name, r) in c.ranges.iter().flatten() {
         let name = param(name, r.span(), "ranges")?;
-        let range = ParamRange::parse(r.get_ref())
-            .or_else(|m| src.invalid(r.span(), "claims.ranges", m))?;
+        let range = match ParamRange::parse(r.get_ref()) {
+            Ok(range) => range,
+            Err(m) => match between(spec, &name, r.get_ref()) {
+                Some(b) => {
+                    out.between.push(b);
+                    continue;
+                }
+                None => {
+                    return src.invalid(
+                        r.span(),
+                        "claims.ranges",
+                        format!(
+                            "{m}; or ends linear in the other parameters, e.g. [0, 4 - lambda]"
+                        ),
+                    );
+                }
+            },
+        };
         match point_of(&range) {
             Some(point) => fix(&mut out, name, &point, r.span(), "ranges")?,
             None if out.fixed.iter().any(|f| f.name == name) => {

@@ -37,6 +37,23 @@ pub struct Given {
     /// Ranges replacing the declared ones for this claim (by parameter
     /// name): the claim is about that box.
     pub ranges: Vec<(String, ParamRange)>,
+    /// Ranges whose ends are linear in other parameters (a triangle
+    /// `λ ∈ [0, 4]`, `μ ∈ [0, 4 − λ]`).
+    pub between: Vec<Between>,
+}
+
+/// A parameter between two ends linear in the others: `μ ∈ [lo, hi]`.
+/// Decided as `μ = lo + μ′·(hi − lo)` with a new parameter `μ′ ∈ [0, 1]`
+/// (named `{name}_u`): a polynomial change of parameters whose image is
+/// exactly the region, so every exact and certified judge keeps its
+/// meaning, and a witness names `μ′`, from which `μ` is one line away.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Between {
+    pub name: String,
+    /// The range as written (`[0, 4 - lambda]`).
+    pub text: String,
+    pub lo: Sym,
+    pub hi: Sym,
 }
 
 /// Why a claim's fixed values cannot be substituted.
@@ -62,7 +79,7 @@ pub enum GivenError {
 impl Given {
     /// True when the claim fixes nothing and narrows nothing.
     pub fn is_empty(&self) -> bool {
-        self.fixed.is_empty() && self.ranges.is_empty()
+        self.fixed.is_empty() && self.ranges.is_empty() && self.between.is_empty()
     }
 
     /// `λ = 0, μ ∈ [0, 1]` in the parameters' printed symbols.
@@ -81,6 +98,16 @@ impl Given {
                     .iter()
                     .map(|(n, r)| format!("{} ∈ {r}", symbol(n))),
             )
+            .chain(self.between.iter().map(|b| {
+                format!(
+                    "{} ∈ {} (written {} = lo + {}·(hi − lo), {} ∈ [0, 1])",
+                    symbol(&b.name),
+                    b.text,
+                    symbol(&b.name),
+                    b.fraction(),
+                    b.fraction()
+                )
+            }))
             .collect::<Vec<_>>()
             .join(", ")
     }
@@ -129,7 +156,107 @@ impl Given {
             check = subst.check(&check)?;
             spec = subst.spec(&spec)?;
         }
+        for b in &self.between {
+            let at = format!("{} ∈ {}", b.name, b.text);
+            let (mut lo, mut hi) = (b.lo.clone(), b.hi.clone());
+            for (name, v) in &earlier {
+                let undefined = |_| GivenError::Undefined {
+                    what: format!("the range {at}"),
+                    at: format!("{name} = {v}"),
+                    denominator: String::new(),
+                };
+                lo = lo.try_subs(name, v).map_err(undefined)?;
+                hi = hi.try_subs(name, v).map_err(undefined)?;
+            }
+            let Some(index) = spec.params.iter().position(|p| p.name == b.name) else {
+                continue;
+            };
+            b.ordered(&spec, &lo, &hi, &at)?;
+            let fraction = b.fraction();
+            if spec.params.iter().any(|p| p.name == fraction) {
+                return Err(GivenError::NotExact {
+                    what: format!("the new parameter `{fraction}`"),
+                    at,
+                    why: "a parameter of the basis has that name".into(),
+                });
+            }
+            let value = lo.clone() + &(Sym::var(&fraction) * &(hi - &lo));
+            let subst = Substitution::new(&spec, index, &value, &at)?;
+            check = subst.check(&check)?;
+            if let Check::Symmetry { at, params, .. } = &mut check {
+                at.push(Rational::from((1, 2)));
+                params.push(Sym::var(&fraction));
+            }
+            let symbol = spec.params[index].symbol.clone();
+            spec = subst.spec(&spec)?;
+            spec.params.push(trig_core::Parameter {
+                name: fraction.clone(),
+                symbol: format!("{symbol}′"),
+                range: ParamRange {
+                    lo: trig_core::End::Closed(Rational::new()),
+                    hi: trig_core::End::Closed(Rational::from(1)),
+                    pi: false,
+                },
+                source: format!(
+                    "{symbol} = lo + {symbol}′·(hi − lo) for the claim's range {symbol} ∈ {}",
+                    b.text
+                ),
+            });
+            spec.domain.param_names.push(fraction);
+        }
         Ok((spec, check))
+    }
+}
+
+impl Between {
+    /// The name of the parameter that replaces it: `mu_u`.
+    pub fn fraction(&self) -> String {
+        format!("{}_u", self.name)
+    }
+
+    /// `lo ≤ hi` over the other parameters' ranges: both ends linear, the
+    /// difference `≥ 0` at every corner of their box (finite ends).
+    fn ordered(&self, spec: &Spec, lo: &Sym, hi: &Sym, at: &str) -> Result<(), GivenError> {
+        let names: Vec<String> = spec.params.iter().map(|p| p.name.clone()).collect();
+        let refuse = |why: &str| GivenError::NotExact {
+            what: format!("the range {at}"),
+            at: at.to_string(),
+            why: why.to_string(),
+        };
+        let gap = affine_of(&(hi.clone() - lo), &names)
+            .filter(|g| g.pi == 0)
+            .ok_or_else(|| refuse("its ends are linear in the other parameters"))?;
+        let mut corners = vec![gap.constant.clone()];
+        for (i, q) in &gap.params {
+            let r = &spec.params[*i].range;
+            let (Some(a), Some(b)) = (r.lo.value(), r.hi.value()) else {
+                return Err(refuse("the parameters its ends use have finite ranges"));
+            };
+            if r.pi
+                || *i
+                    == names
+                        .iter()
+                        .position(|n| *n == self.name)
+                        .unwrap_or(usize::MAX)
+            {
+                return Err(refuse("its ends use other parameters with rational ranges"));
+            }
+            corners = corners
+                .iter()
+                .flat_map(|c| {
+                    [
+                        c.clone() + Rational::from(q * a),
+                        c.clone() + Rational::from(q * b),
+                    ]
+                })
+                .collect();
+        }
+        if corners.iter().any(|c| *c < 0) {
+            return Err(refuse(
+                "its lower end exceeds its upper end somewhere in the box",
+            ));
+        }
+        Ok(())
     }
 }
 

@@ -52,7 +52,7 @@ pub use ast::Grammar;
 pub use check::{Check, Condition, Direction, Monotone, Printed, SpecClaim, Varied};
 pub use error::{FormulaError, Location, SpecError};
 pub use expression::Expression;
-pub use given::{Fixed, Given, GivenError};
+pub use given::{Between, Fixed, Given, GivenError};
 pub use spec::{Spec, SpecFunction};
 
 use rug::Rational;
