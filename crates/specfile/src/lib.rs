@@ -40,6 +40,7 @@ mod expression;
 pub mod formula;
 pub mod frequencies;
 pub mod given;
+mod given_read;
 mod load;
 mod names;
 pub mod nonvanishing;

@@ -1,0 +1,197 @@
+//! Reading what a claim fixes of the parameters and the ranges it gives
+//! (`at`, a one-point `range`, `ranges`, ends linear in other parameters)
+//! into a [`Given`], applied before deciding ([`crate::given`]).
+
+use toml::Spanned;
+use trig_core::ParamRange;
+use trig_symbolic::Sym;
+
+use crate::error::{Result, SpecError};
+use crate::given::{Between, Fixed, Given};
+use crate::raw::RawClaim;
+use crate::source::Source;
+use crate::spec::Spec;
+
+/// The `range` of a check decided over a range of the only parameter
+/// (`None` when a one-point range fixes its value instead).
+pub(crate) fn one_param_range(
+    src: &Source<'_>,
+    spec: &Spec,
+    range: &Option<Spanned<String>>,
+) -> Result<Option<ParamRange>> {
+    let Some(r) = range else { return Ok(None) };
+    if spec.params.len() != 1 {
+        return src.invalid(
+            r.span(),
+            "claims.range",
+            "`range` is the range of the only parameter: with several parameters give `ranges = { NAME = \"[a, b]\", … }` (a one-point range `[v, v]` or `at = { NAME = \"v\" }` fixes a value)".into(),
+        );
+    }
+    let range =
+        ParamRange::parse(r.get_ref()).or_else(|m| src.invalid(r.span(), "claims.range", m))?;
+    // a one-point range fixes the value ([`given`]): no range is left
+    Ok(point_of(&range).is_none().then_some(range))
+}
+
+/// `v` for the one-point range `[v, v]`, written as read.
+fn point_of(range: &ParamRange) -> Option<String> {
+    match (&range.lo, &range.hi) {
+        (trig_core::End::Closed(a), trig_core::End::Closed(b)) if a == b => {
+            let one = ParamRange {
+                lo: trig_core::End::Closed(a.clone()),
+                hi: trig_core::End::Closed(a.clone()),
+                pi: range.pi,
+            }
+            .to_string();
+            // `[v, v]` printed: the text of one end
+            one.trim_start_matches('[')
+                .split(',')
+                .next()
+                .map(|v| v.trim().to_string())
+        }
+        _ => None,
+    }
+}
+
+/// `[lo, hi]` with ends written in the other parameters (closed ends).
+fn between(spec: &Spec, name: &str, text: &str) -> Option<Between> {
+    let inner = text.trim().strip_prefix('[')?.strip_suffix(']')?;
+    let (a, b) = inner.split_once(',')?;
+    let end = |e: &str| -> Option<Sym> {
+        let v = spec.parse_formula(e, &[]).ok()?;
+        let other = |v: &String| spec.params.iter().any(|p| p.name == *v && p.name != name);
+        v.variables().iter().all(other).then_some(v)
+    };
+    Some(Between {
+        name: name.to_string(),
+        text: text.trim().to_string(),
+        lo: end(a)?,
+        hi: end(b)?,
+    })
+}
+
+/// The checks that are decided over a range of the only parameter.
+const RANGED: [&str; 5] = [
+    "nonnegative",
+    "convex-hull",
+    "independent",
+    "total-positivity",
+    "monotone",
+];
+
+/// The parameter values a claim fixes and the ranges it narrows: `at`
+/// (except for `symmetry`, whose `at` places its numeric counterexample),
+/// a one-point `range` of the only parameter, `ranges` by name (a
+/// one-point one fixes the value).
+pub(crate) fn given(src: &Source<'_>, spec: &Spec, c: &RawClaim, kind: &str) -> Result<Given> {
+    let mut out = Given::default();
+    let param = |name: &str, span: std::ops::Range<usize>, field: &str| {
+        spec.params
+            .iter()
+            .find(|p| p.name == name.trim() || p.symbol == name.trim())
+            .map(|p| p.name.clone())
+            .ok_or_else(|| SpecError::Invalid {
+                at: src.at(span.start),
+                field: format!("claims.{field}"),
+                message: format!("`{}`: not a parameter of the basis", name.trim()),
+            })
+    };
+    let fix = |out: &mut Given,
+               name: String,
+               text: &str,
+               span: std::ops::Range<usize>,
+               field: &str|
+     -> Result<()> {
+        if out.fixed.iter().any(|f| f.name == name) {
+            return src.invalid(
+                span,
+                &format!("claims.{field}"),
+                format!("`{name}` is fixed twice"),
+            );
+        }
+        let value = spec
+            .parse_formula(text, &[])
+            .map_err(|e| SpecError::Invalid {
+                at: src.at(span.start),
+                field: format!("claims.{field}"),
+                message: format!("`{}`: {}", text.trim(), e.message),
+            })?;
+        // a number, or (a line of the parameter plane) an expression in the
+        // other parameters: `beta = "3 - 3*alpha"`
+        let other = |v: &String| spec.params.iter().any(|p| p.name == *v && p.name != name);
+        if value
+            .variables()
+            .iter()
+            .any(|v| v != "pi" && !v.starts_with("sqrt(") && !other(v))
+        {
+            return src.invalid(
+                span,
+                &format!("claims.{field}"),
+                format!("`{}`: a fixed value is a number (rationals, pi and square roots: 0, 1/2, sqrt(2)/2, pi/3) or an expression in the other parameters (3 - 3*alpha)", text.trim()),
+            );
+        }
+        out.fixed.push(Fixed {
+            name,
+            text: text.trim().to_string(),
+            value,
+        });
+        Ok(())
+    };
+    if kind != "symmetry" {
+        for (name, v) in c.at.iter().flatten() {
+            let name = param(name, v.span(), "at")?;
+            fix(&mut out, name, v.get_ref(), v.span(), "at")?;
+        }
+    }
+    if let Some(r) = c.range.as_ref().filter(|_| kind != "shape-effect") {
+        let [p] = spec.params.as_slice() else {
+            return one_param_range(src, spec, &c.range).map(|_| out);
+        };
+        let range =
+            ParamRange::parse(r.get_ref()).or_else(|m| src.invalid(r.span(), "claims.range", m))?;
+        match point_of(&range) {
+            Some(point) => fix(&mut out, p.name.clone(), &point, r.span(), "range")?,
+            None if !RANGED.contains(&kind) => {
+                return src.invalid(
+                    r.span(),
+                    "claims.range",
+                    format!("`{kind}` takes no range of values; a one-point range `[v, v]` fixes the value"),
+                );
+            }
+            None => {}
+        }
+    }
+    for (name, r) in c.ranges.iter().flatten() {
+        let name = param(name, r.span(), "ranges")?;
+        let range = match ParamRange::parse(r.get_ref()) {
+            Ok(range) => range,
+            Err(m) => match between(spec, &name, r.get_ref()) {
+                Some(b) => {
+                    out.between.push(b);
+                    continue;
+                }
+                None => {
+                    return src.invalid(
+                        r.span(),
+                        "claims.ranges",
+                        format!(
+                            "{m}; or ends linear in the other parameters, e.g. [0, 4 - lambda]"
+                        ),
+                    );
+                }
+            },
+        };
+        match point_of(&range) {
+            Some(point) => fix(&mut out, name, &point, r.span(), "ranges")?,
+            None if out.fixed.iter().any(|f| f.name == name) => {
+                return src.invalid(
+                    r.span(),
+                    "claims.ranges",
+                    format!("`{name}` is fixed and given a range"),
+                );
+            }
+            None => out.ranges.push((name, range)),
+        }
+    }
+    Ok(out)
+}
