@@ -37,6 +37,65 @@ use crate::tp_set::{NonnegativeSet, nonnegative_set};
 /// Degree elevations tried after the degree of the numerators.
 pub const MAX_ELEVATION: usize = 4;
 
+/// Most minor positions `Σₖ C(rows, k)·C(cols, k) = C(rows + cols, rows) − 1`
+/// the enumeration of all minors visits (a 10 × 10 matrix has 184 755).
+pub const MAX_MINORS: u64 = 1_000_000;
+
+/// Most rows and columns of a matrix whose minors are enumerated (index
+/// sets are bit masks of one word).
+pub const MAX_SIDE: usize = 31;
+
+/// Why the certificate was not formed.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum TpError {
+    /// The functions are not written over one Bernstein basis (the reason).
+    Factorisation(String),
+    /// The coefficient matrix is too large for the enumeration of its
+    /// minors ([`MAX_SIDE`], [`MAX_MINORS`]).
+    TooLarge {
+        rows: usize,
+        cols: usize,
+        /// `C(rows + cols, rows) − 1`, when it fits a word.
+        minors: Option<u64>,
+    },
+}
+
+impl std::fmt::Display for TpError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            TpError::Factorisation(why) => f.write_str(why),
+            TpError::TooLarge { rows, cols, minors } => {
+                let count = minors.map_or_else(|| "more than 2^64".into(), |m| m.to_string());
+                write!(
+                    f,
+                    "the coefficient matrix is {rows} × {cols}: {count} minor positions, beyond the limit of the enumeration of all minors (at most {MAX_SIDE} rows and columns and {MAX_MINORS} minors)"
+                )
+            }
+        }
+    }
+}
+
+impl std::error::Error for TpError {}
+
+/// `C(n, k)`, when it fits a word.
+fn binomial(n: usize, k: usize) -> Option<u64> {
+    let k = k.min(n - k);
+    (0..k).try_fold(1u64, |acc, i| {
+        let next = u128::from(acc) * (n - i) as u128 / (i + 1) as u128;
+        u64::try_from(next).ok()
+    })
+}
+
+/// The enumeration of the minors of a `rows × cols` matrix is within the
+/// limits.
+fn within_limits(rows: usize, cols: usize) -> Result<(), TpError> {
+    let minors = binomial(rows + cols, rows).map(|c| c - 1);
+    if rows > MAX_SIDE || cols > MAX_SIDE || minors.is_none_or(|m| m > MAX_MINORS) {
+        return Err(TpError::TooLarge { rows, cols, minors });
+    }
+    Ok(())
+}
+
 /// The numerators' Bernstein coefficient matrix `C` (rows: functions,
 /// columns: Bernstein index), each entry a polynomial in the parameter
 /// (a constant without one).
@@ -238,11 +297,22 @@ impl Factorisation {
     }
 }
 
-/// The sets of `k` indices out of `n`, as bit masks, in lexicographic order.
+/// The sets of `k ≥ 1` indices out of `n ≤ 31`, as bit masks, in
+/// increasing order (Gosper's next subset of the same size).
 fn subsets(n: usize, k: usize) -> Vec<u32> {
-    (0u32..(1 << n))
-        .filter(|m| m.count_ones() as usize == k)
-        .collect()
+    let mut out = Vec::new();
+    if k == 0 || k > n {
+        return out;
+    }
+    let end = 1u64 << n;
+    let mut m: u64 = (1 << k) - 1;
+    while m < end {
+        out.push(m as u32);
+        let low = m & m.wrapping_neg();
+        let ripple = m + low;
+        m = (((ripple ^ m) >> 2) / low) | ripple;
+    }
+    out
 }
 
 fn indices(mask: u32) -> Vec<usize> {
@@ -250,11 +320,12 @@ fn indices(mask: u32) -> Vec<usize> {
 }
 
 /// Every nonzero minor of `m` (any order), by Laplace expansion along the
-/// last row of each minor from the minors one order lower.
-pub fn minors(m: &[Vec<UPoly>]) -> Vec<Minor> {
+/// last row of each minor from the minors one order lower; an error beyond
+/// the limits of the enumeration ([`MAX_SIDE`], [`MAX_MINORS`]).
+pub fn minors(m: &[Vec<UPoly>]) -> Result<Vec<Minor>, TpError> {
     let rows = m.len();
     let cols = m.first().map_or(0, Vec::len);
-    assert!(rows < 32 && cols < 32, "at most 31 rows and columns");
+    within_limits(rows, cols)?;
     let mut out = Vec::new();
     let mut previous: HashMap<(u32, u32), UPoly> = HashMap::new();
     for k in 1..=rows.min(cols) {
@@ -294,7 +365,7 @@ pub fn minors(m: &[Vec<UPoly>]) -> Vec<Minor> {
         }
         previous = level;
     }
-    out
+    Ok(out)
 }
 
 /// A refutation: points `z₀ < ⋯` (or `t`), the functions' indices, and the
@@ -336,7 +407,11 @@ pub fn negative_collocation_minor(fzs: &[Sym], extra: &[Rational]) -> Option<Neg
             })
             .collect();
         let table = table?;
-        let Some(negative) = minors(&table)
+        // a grid too large for the enumeration is not searched
+        let Ok(all) = minors(&table) else {
+            continue;
+        };
+        let Some(negative) = all
             .into_iter()
             .filter(|m| m.value.leading() < 0)
             .min_by_key(|m| m.rows.len())
@@ -409,42 +484,51 @@ pub struct TpCertificate {
 impl TpCertificate {
     /// The parameter values of `bx` where every minor of this certificate
     /// (at its degree, no further elevation) is `≥ 0`.
-    pub fn set_within(&self, bx: &ParamBox) -> NonnegativeSet {
-        let values: Vec<UPoly> = minors(&self.factorisation.rows)
+    pub fn set_within(&self, bx: &ParamBox) -> Result<NonnegativeSet, TpError> {
+        let values: Vec<UPoly> = minors(&self.factorisation.rows)?
             .into_iter()
             .map(|m| m.value)
             .collect();
-        nonnegative_set(&values, bx)
+        Ok(nonnegative_set(&values, bx))
     }
 }
 
 /// The certificate of [`factorise`] with up to [`MAX_ELEVATION`] degree
-/// elevations, stopping as soon as all minors are `≥ 0` on the whole set.
+/// elevations, stopping as soon as all minors are `≥ 0` on the whole set
+/// (or when an elevation would pass the limits of the enumeration: the
+/// last degree within them is kept).
 pub fn certify(
     fs: &[Sym],
     trigonometric: bool,
     param: Option<(&str, &ParamBox)>,
-) -> Result<TpCertificate, String> {
+) -> Result<TpCertificate, TpError> {
     let whole = ParamBox {
         lo: crate::domain::Bound::Infinite,
         hi: crate::domain::Bound::Infinite,
     };
     let bx = param.map_or(&whole, |(_, b)| b);
-    let mut f = factorise(fs, trigonometric, param)?;
+    let mut f = factorise(fs, trigonometric, param).map_err(TpError::Factorisation)?;
     let first_degree = f.degree;
+    let mut last: Option<TpCertificate> = None;
     loop {
-        let ms = minors(&f.rows);
+        let ms = match minors(&f.rows) {
+            Ok(ms) => ms,
+            Err(too_large) => return last.ok_or(too_large),
+        };
         let values: Vec<UPoly> = ms.iter().map(|m| m.value.clone()).collect();
         let set = nonnegative_set(&values, bx);
-        if set.covers || f.degree >= first_degree + MAX_ELEVATION {
-            return Ok(TpCertificate {
-                first_degree,
-                factorisation: f,
-                minors: ms.len(),
-                set,
-            });
+        let done = set.covers || f.degree >= first_degree + MAX_ELEVATION;
+        let cert = TpCertificate {
+            first_degree,
+            factorisation: f,
+            minors: ms.len(),
+            set,
+        };
+        if done {
+            return Ok(cert);
         }
-        f = f.elevate();
+        f = cert.factorisation.elevate();
+        last = Some(cert);
     }
 }
 
@@ -542,7 +626,7 @@ mod tests {
             t.clone() * &t * &(one.clone() - &(k * &(one.clone() - &t) * &(one - &t))),
         ];
         let bx = ParamBox::closed(q(-4, 5), q(24, 5));
-        let at_four = minors(&factorise(&fs, false, Some(("lambda", &bx))).unwrap().rows);
+        let at_four = minors(&factorise(&fs, false, Some(("lambda", &bx))).unwrap().rows).unwrap();
         let values: Vec<UPoly> = at_four.iter().map(|m| m.value.clone()).collect();
         let set4 = nonnegative_set(&values, &bx);
         assert_eq!(set4.pieces.len(), 2, "{}", set4.describe("λ"));
@@ -562,7 +646,7 @@ mod tests {
             .iter()
             .map(|r| r.iter().map(|x| UPoly::new(vec![x.clone()])).collect())
             .collect();
-        for minor in minors(&as_poly) {
+        for minor in minors(&as_poly).unwrap() {
             let sub: Vec<Vec<Rational>> = minor
                 .rows
                 .iter()
@@ -570,5 +654,59 @@ mod tests {
                 .collect();
             assert_eq!(minor.value.leading(), determinant(&sub));
         }
+    }
+
+    #[test]
+    fn subsets_come_in_increasing_order_of_their_masks() {
+        for (n, k) in [(5, 2), (6, 3), (4, 4), (7, 1)] {
+            let slow: Vec<u32> = (0u32..(1 << n))
+                .filter(|m| m.count_ones() as usize == k)
+                .collect();
+            assert_eq!(subsets(n, k), slow, "{n}, {k}");
+        }
+    }
+
+    #[test]
+    fn a_matrix_beyond_the_enumeration_is_a_typed_error() {
+        let row = |n: usize| vec![UPoly::new(vec![q(1, 1)]); n];
+        let wide: Vec<Vec<UPoly>> = (0..3).map(|_| row(41)).collect();
+        let err = minors(&wide).unwrap_err();
+        assert!(matches!(
+            err,
+            TpError::TooLarge {
+                rows: 3,
+                cols: 41,
+                ..
+            }
+        ));
+        assert!(
+            err.to_string().contains("at most 31 rows and columns"),
+            "{err}"
+        );
+        let square: Vec<Vec<UPoly>> = (0..12).map(|_| row(12)).collect();
+        assert!(matches!(
+            minors(&square),
+            Err(TpError::TooLarge {
+                minors: Some(2_704_155),
+                ..
+            })
+        ));
+        // the squared-sine Bernstein basis of degree 10: 11 functions of
+        // degree 40 in z, refused with the reason instead of a panic
+        let (s, c) = (v("s"), v("c"));
+        let fs: Vec<Sym> = (0..=10u32)
+            .map(|i| {
+                (0..2 * i).fold(Sym::one(), |acc, _| acc * &s)
+                    * &(0..2 * (10 - i)).fold(Sym::one(), |acc, _| acc * &c)
+            })
+            .collect();
+        assert!(matches!(
+            certify(&fs, true, None),
+            Err(TpError::TooLarge {
+                rows: 11,
+                cols: 41,
+                ..
+            })
+        ));
     }
 }

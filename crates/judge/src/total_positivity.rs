@@ -13,7 +13,7 @@
 //! "Totally positive bases for shape preserving curve design", 1993).
 
 use rug::Rational;
-use trig_certify::total_positivity::{NegativeMinor, TpCertificate, certify, refute};
+use trig_certify::total_positivity::{NegativeMinor, TpCertificate, TpError, certify, refute};
 use trig_certify::{Bound, ParamBox};
 use trig_core::ParamRange;
 use trig_symbolic::Sym;
@@ -79,7 +79,14 @@ pub fn totally_positive<B: ExactBasis>(basis: &B, range: Option<&ParamRange>) ->
     let named = param.map(|p| p.name.as_str()).zip(bx.as_ref());
     let cert = match certify(&fs, trig, named) {
         Ok(c) => c,
-        Err(why) => return Verdict::not_checkable(format!("no factorisation: {why}")),
+        Err(TpError::Factorisation(why)) => {
+            return Verdict::not_checkable(format!("no factorisation: {why}"));
+        }
+        Err(too_large @ TpError::TooLarge { .. }) => {
+            return Verdict::not_checkable(format!(
+                "the totally positive factorisation checks every minor of its coefficient matrix, and {too_large}; the bidiagonal factorisation (Neville elimination) that would not enumerate them is not implemented"
+            ));
+        }
     };
     let symbol = param.map_or("p", |p| p.symbol.as_str());
     let mut evidence = vec![certificate_line(&cert, symbol, published)];
@@ -89,11 +96,16 @@ pub fn totally_positive<B: ExactBasis>(basis: &B, range: Option<&ParamRange>) ->
             lo: Bound::Infinite,
             hi: Bound::Infinite,
         };
-        evidence.push(Evidence::note(format!(
-            "on the whole line the minors of this certificate (degree {}) are all ≥ 0 exactly for {symbol} ∈ {}; the range decided is {b}",
-            cert.factorisation.degree,
-            cert.set_within(&whole).describe(symbol)
-        )));
+        match cert.set_within(&whole) {
+            Ok(set) => evidence.push(Evidence::note(format!(
+                "on the whole line the minors of this certificate (degree {}) are all ≥ 0 exactly for {symbol} ∈ {}; the range decided is {b}",
+                cert.factorisation.degree,
+                set.describe(symbol)
+            ))),
+            Err(why) => evidence.push(Evidence::note(format!(
+                "the minors of this certificate on the whole line: {why}"
+            ))),
+        }
     }
     if cert.set.covers {
         return Verdict::new(Status::Holds, TOTALLY_POSITIVE, evidence);
@@ -226,4 +238,34 @@ fn refutation<B: ExactBasis>(
     )
     .about("total positivity", Status::Fails)
     .witnessed(Some(w))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use trig_specfile::Spec;
+
+    /// `C(n, i) sin²ⁱt cos²⁽ⁿ⁻ⁱ⁾t` on `[0, π/2]`.
+    fn sin2_bernstein(n: u64) -> Spec {
+        let mut text = String::from("id = \"sin2\"\ncitation = \"test\"\nvariable = \"angle\"\n");
+        let mut binomial = 1u64;
+        for i in 0..=n {
+            text.push_str(&format!(
+                "[[functions]]\nname = \"b{i}\"\nformula = \"{binomial}*sin(t)^{}*cos(t)^{}\"\n",
+                2 * i,
+                2 * (n - i)
+            ));
+            binomial = binomial * (n - i) / (i + 1);
+        }
+        Spec::from_str_named(&text, "sin2").unwrap_or_else(|e| panic!("{e}"))
+    }
+
+    #[test]
+    fn a_basis_beyond_the_enumeration_of_minors_is_not_checkable_with_the_limit() {
+        let v = totally_positive(&sin2_bernstein(10), None);
+        assert_eq!(v.status, Status::NotCheckable);
+        let text = format!("{:?}", v.evidence);
+        assert!(text.contains("11 × 41"), "{text}");
+        assert!(text.contains("at most 31 rows and columns"), "{text}");
+    }
 }
