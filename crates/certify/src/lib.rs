@@ -34,6 +34,7 @@ pub mod exp_half_line;
 pub mod factors;
 pub mod krawczyk;
 pub mod maxima;
+pub mod neville;
 pub mod nonneg;
 pub mod range;
 pub mod real_point;

@@ -30,6 +30,7 @@ use trig_symbolic::{Poly, Sym};
 
 use crate::bernstein::power_to_bernstein;
 use crate::domain::{ParamBox, in_z};
+use crate::neville::Bidiagonal;
 use crate::nonneg::{Certificate, definite_sign};
 use crate::sturm::UPoly;
 use crate::tp_set::{NonnegativeSet, nonnegative_set};
@@ -479,6 +480,10 @@ pub struct TpCertificate {
     pub minors: usize,
     /// Inside the given parameter set (the whole line without a parameter).
     pub set: NonnegativeSet,
+    /// Without a parameter, beyond the enumeration of minors: the
+    /// bidiagonal factorisation (Neville elimination, every factor `≥ 0`)
+    /// that proved the matrix totally positive instead ([`crate::neville`]).
+    pub neville: Option<Bidiagonal>,
 }
 
 impl TpCertificate {
@@ -513,6 +518,9 @@ pub fn certify(
     loop {
         let ms = match minors(&f.rows) {
             Ok(ms) => ms,
+            Err(too_large) if param.is_none() => {
+                return by_neville(f, first_degree, bx).or(last).ok_or(too_large);
+            }
             Err(too_large) => return last.ok_or(too_large),
         };
         let values: Vec<UPoly> = ms.iter().map(|m| m.value.clone()).collect();
@@ -523,12 +531,47 @@ pub fn certify(
             factorisation: f,
             minors: ms.len(),
             set,
+            neville: None,
         };
         if done {
             return Ok(cert);
         }
         f = cert.factorisation.elevate();
         last = Some(cert);
+    }
+}
+
+/// Without a parameter: the bidiagonal factorisation of the coefficient
+/// matrix at its degree or one of the next elevations up to
+/// [`MAX_ELEVATION`] in all, when one has every factor `≥ 0`.
+fn by_neville(mut f: Factorisation, first_degree: usize, bx: &ParamBox) -> Option<TpCertificate> {
+    loop {
+        let rational: Option<Vec<Vec<Rational>>> = f
+            .rows
+            .iter()
+            .map(|row| {
+                row.iter()
+                    .map(|u| match u.coeffs() {
+                        [] => Some(Rational::new()),
+                        [a] => Some(a.clone()),
+                        _ => None,
+                    })
+                    .collect()
+            })
+            .collect();
+        if let Some(b) = crate::neville::totally_positive(&rational?) {
+            return Some(TpCertificate {
+                first_degree,
+                factorisation: f,
+                minors: 0,
+                set: nonnegative_set(&[], bx),
+                neville: Some(b),
+            });
+        }
+        if f.degree >= first_degree + MAX_ELEVATION {
+            return None;
+        }
+        f = f.elevate();
     }
 }
 
@@ -667,7 +710,7 @@ mod tests {
     }
 
     #[test]
-    fn a_matrix_beyond_the_enumeration_is_a_typed_error() {
+    fn beyond_the_enumeration_a_typed_error_or_neville_elimination() {
         let row = |n: usize| vec![UPoly::new(vec![q(1, 1)]); n];
         let wide: Vec<Vec<UPoly>> = (0..3).map(|_| row(41)).collect();
         let err = minors(&wide).unwrap_err();
@@ -692,7 +735,7 @@ mod tests {
             })
         ));
         // the squared-sine Bernstein basis of degree 10: 11 functions of
-        // degree 40 in z, refused with the reason instead of a panic
+        // degree 40 in z
         let (s, c) = (v("s"), v("c"));
         let fs: Vec<Sym> = (0..=10u32)
             .map(|i| {
@@ -700,8 +743,18 @@ mod tests {
                     * &(0..2 * (10 - i)).fold(Sym::one(), |acc, _| acc * &c)
             })
             .collect();
+        // its matrix (11 × 41) is beyond the enumeration, and Neville
+        // elimination proves it totally positive
+        let cert = certify(&fs, true, None).unwrap();
+        assert_eq!(cert.factorisation.rows.len(), 11);
+        assert!(cert.set.covers && cert.minors == 0);
+        assert_eq!(cert.neville.map(|b| b.pivots), Some(11));
+        // with a parameter the enumeration's limit is the answer
+        let mut with_parameter = fs.clone();
+        with_parameter[0] = with_parameter[0].clone() * &(Sym::one() + &v("lambda"));
+        let bx = ParamBox::closed(q(0, 1), q(1, 1));
         assert!(matches!(
-            certify(&fs, true, None),
+            certify(&with_parameter, true, Some(("lambda", &bx))),
             Err(TpError::TooLarge {
                 rows: 11,
                 cols: 41,

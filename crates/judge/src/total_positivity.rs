@@ -147,12 +147,18 @@ fn certificate_line(
         String::new()
     };
     let n = f.rows.len();
+    let checked = match cert.neville {
+        Some(b) => format!(
+            "too large to enumerate its minors, it is the product of bidiagonal factors found by Neville elimination without row exchanges (Gasca & Peña), its {} multipliers and {} pivots all > 0 exactly, so it is totally positive",
+            b.multipliers, b.pivots
+        ),
+        None => format!("{} nonzero minors checked exactly", cert.minors),
+    };
     let text = format!(
-        "numerators over the positive common factor {} in z = tan(θ/2) (or t): Bernstein degree {}{elevated}; coefficient matrix {n} × {}; {} nonzero minors checked exactly",
+        "numerators over the positive common factor {} in z = tan(θ/2) (or t): Bernstein degree {}{elevated}; coefficient matrix {n} × {}; {checked}",
         f.common,
         cert.first_degree,
         f.degree + 1,
-        cert.minors,
     );
     let text = match published {
         Some(r) => format!(
@@ -245,13 +251,24 @@ mod tests {
     use super::*;
     use trig_specfile::Spec;
 
-    /// `C(n, i) sin²ⁱt cos²⁽ⁿ⁻ⁱ⁾t` on `[0, π/2]`.
-    fn sin2_bernstein(n: u64) -> Spec {
+    /// `C(n, i) sin²ⁱt cos²⁽ⁿ⁻ⁱ⁾t` on `[0, π/2]`; with `lambda`, the first
+    /// function times `1 + λ`, `λ ∈ [0, 1]`.
+    fn sin2_bernstein(n: u64, lambda: bool) -> Spec {
         let mut text = String::from("id = \"sin2\"\ncitation = \"test\"\nvariable = \"angle\"\n");
+        if lambda {
+            text.push_str(
+                "[[parameters]]\nname = \"lambda\"\nrange = \"[0, 1]\"\nsource = \"test\"\n",
+            );
+        }
         let mut binomial = 1u64;
         for i in 0..=n {
+            let scale = if lambda && i == 0 {
+                "(1 + lambda)*"
+            } else {
+                ""
+            };
             text.push_str(&format!(
-                "[[functions]]\nname = \"b{i}\"\nformula = \"{binomial}*sin(t)^{}*cos(t)^{}\"\n",
+                "[[functions]]\nname = \"b{i}\"\nformula = \"{scale}{binomial}*sin(t)^{}*cos(t)^{}\"\n",
                 2 * i,
                 2 * (n - i)
             ));
@@ -261,8 +278,19 @@ mod tests {
     }
 
     #[test]
-    fn a_basis_beyond_the_enumeration_of_minors_is_not_checkable_with_the_limit() {
-        let v = totally_positive(&sin2_bernstein(10), None);
+    fn beyond_the_enumeration_of_minors_neville_elimination_decides() {
+        let start = std::time::Instant::now();
+        let v = totally_positive(&sin2_bernstein(10, false), None);
+        println!("sin² Bernstein n = 10: {:?}", start.elapsed());
+        assert_eq!(v.status, Status::Holds, "{:?}", v.evidence);
+        let text = format!("{:?}", v.evidence);
+        assert!(text.contains("11 × 41"), "{text}");
+        assert!(text.contains("Neville elimination"), "{text}");
+    }
+
+    #[test]
+    fn with_a_parameter_the_limit_is_a_not_checkable_that_names_it() {
+        let v = totally_positive(&sin2_bernstein(10, true), None);
         assert_eq!(v.status, Status::NotCheckable);
         let text = format!("{:?}", v.evidence);
         assert!(text.contains("11 × 41"), "{text}");
