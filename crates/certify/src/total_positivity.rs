@@ -42,6 +42,10 @@ pub const MAX_ELEVATION: usize = 4;
 /// the enumeration of all minors visits (a 10 × 10 matrix has 184 755).
 pub const MAX_MINORS: u64 = 1_000_000;
 
+/// Without a parameter, matrices with more minor positions than this are
+/// tried by Neville elimination before their minors are enumerated.
+pub const PREFER_NEVILLE: u64 = 100_000;
+
 /// Most rows and columns of a matrix whose minors are enumerated (index
 /// sets are bit masks of one word).
 pub const MAX_SIDE: usize = 31;
@@ -516,6 +520,16 @@ pub fn certify(
     let first_degree = f.degree;
     let mut last: Option<TpCertificate> = None;
     loop {
+        // without a parameter, a large matrix is tried by Neville
+        // elimination first (milliseconds where the minors take seconds)
+        let rows = f.rows.len();
+        let positions = binomial(rows + f.degree + 1, rows);
+        if param.is_none()
+            && positions.is_none_or(|p| p > PREFER_NEVILLE)
+            && let Some(cert) = by_neville(f.clone(), first_degree, bx)
+        {
+            return Ok(cert);
+        }
         let ms = match minors(&f.rows) {
             Ok(ms) => ms,
             Err(too_large) if param.is_none() => {
