@@ -17,7 +17,9 @@
 //! - a rational parameter value where the whole numerator vanishes (found
 //!   among the rational roots, checked exactly) refutes it.
 
+mod at_root;
 pub mod matrix;
+mod one_parameter;
 mod rank;
 
 pub use rank::RANK;
@@ -207,7 +209,7 @@ pub fn by_rank<B: ExactBasis>(
         return Ok(rank::constant_minor(&ctx, &e));
     }
     if params.len() == 1
-        && let Some(v) = rank::one_parameter(&ctx, &e)
+        && let Some(v) = one_parameter::one_parameter(&ctx, &e)
     {
         return Ok(v);
     }

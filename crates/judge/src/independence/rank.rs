@@ -18,7 +18,6 @@
 use rug::Rational;
 use trig_certify::atoms::{ParamAtom, param_atoms, value};
 use trig_certify::branch::{self, Axis, Outcome};
-use trig_certify::sturm::UPoly;
 use trig_core::{Domain, End, ParamRange, Parameter};
 use trig_symbolic::{Poly, Style, Sym, combine, rational_roots, symbolic_atoms};
 
@@ -31,8 +30,6 @@ pub const RANK: &str = "exact rank: the functions over one common denominator, t
 
 /// Most points of the range where the rank is computed exactly.
 const MAX_POINTS: usize = 256;
-/// Most maximal minors tried against one irrational root of the gcd.
-const MAX_MINORS: usize = 64;
 /// Longest expression printed whole.
 const SHOWN: usize = 240;
 
@@ -50,10 +47,19 @@ pub(super) struct Context<'a> {
     pub matrix: Coefficients,
 }
 
+/// Why the rank was not computed at a point.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Skip {
+    /// A function is undefined there (a denominator vanishes).
+    Undefined,
+    /// An atom of a parameter is not exact there (`sin 1/2`).
+    Inexact,
+}
+
 /// A rank at an exact parameter point.
-struct AtPoint {
-    rank: usize,
-    pivots: Vec<usize>,
+pub(super) struct AtPoint {
+    pub rank: usize,
+    pub pivots: Vec<usize>,
     /// A dependence relation of the functions there, verified exactly.
     relation: Option<String>,
 }
@@ -95,7 +101,7 @@ fn value_text(q: &Rational, pi: bool) -> String {
 }
 
 impl Context<'_> {
-    fn header(&self) -> String {
+    pub(super) fn header(&self) -> String {
         format!(
             "coefficient matrix of {} over their common denominator in the {} monomials t^a·c^b·s^e (e ≤ 1) of their numerators ({} × {})",
             self.names.join(", "),
@@ -131,25 +137,35 @@ impl Context<'_> {
     }
 
     /// `f` at the parameter values `point` (atoms of the parameters exact
-    /// there), or `None` when not exact or undefined.
-    fn at(&self, f: &Sym, point: &[Sym], atoms: &[ParamAtom]) -> Option<Sym> {
+    /// there).
+    fn at(&self, f: &Sym, point: &[Sym], atoms: &[ParamAtom]) -> Result<Sym, Skip> {
         let symbols = symbolic_atoms();
         let mut g = f.clone();
         for a in atoms {
             if g.variables().contains(&a.name) {
-                let v = value(&a.name, &self.domain, &symbols, point, atoms)?;
-                g = g.try_subs(&a.name, &v).ok()?;
+                let v =
+                    value(&a.name, &self.domain, &symbols, point, atoms).ok_or(Skip::Inexact)?;
+                g = g.try_subs(&a.name, &v).map_err(|_| Skip::Undefined)?;
             }
         }
         for (p, v) in self.params.iter().zip(point) {
-            g = g.try_subs(&p.name, v).ok()?;
+            g = g.try_subs(&p.name, v).map_err(|_| Skip::Undefined)?;
         }
-        Some(g)
+        Ok(g)
     }
 
-    /// The rank at an exact point, with the relation where it drops;
-    /// `None` when a function is undefined there or an atom not exact.
-    fn rank_at(&self, point: &[Rational]) -> Option<AtPoint> {
+    /// A polynomial entry at the point (a polynomial again).
+    fn entry_at(&self, e: &Poly, point: &[Sym], atoms: &[ParamAtom]) -> Result<Poly, Skip> {
+        let v = self.at(&Sym::from_poly(e.clone()), point, atoms)?;
+        if v.denominator().is_empty() {
+            Ok(v.numerator().clone())
+        } else {
+            Err(Skip::Inexact)
+        }
+    }
+
+    /// The rank at an exact point, with the relation where it drops.
+    pub(super) fn rank_at(&self, point: &[Rational]) -> Result<AtPoint, Skip> {
         let values: Vec<Sym> = point
             .iter()
             .enumerate()
@@ -160,36 +176,30 @@ impl Context<'_> {
             .fs
             .iter()
             .map(|f| self.at(f, &values, &atoms))
-            .collect::<Option<_>>()?;
+            .collect::<Result<_, _>>()?;
         let rows: Vec<Vec<Poly>> = self
             .matrix
             .rows
             .iter()
             .map(|row| {
                 row.iter()
-                    .map(|e| {
-                        let v = self.at(&Sym::from_poly(e.clone()), &values, &atoms)?;
-                        v.denominator().is_empty().then(|| v.numerator().clone())
-                    })
-                    .collect::<Option<Vec<Poly>>>()
+                    .map(|e| self.entry_at(e, &values, &atoms))
+                    .collect::<Result<Vec<Poly>, Skip>>()
             })
-            .collect::<Option<_>>()?;
-        let e = echelon_poly(&rows).ok()?;
+            .collect::<Result<_, _>>()?;
+        let e = echelon_poly(&rows).map_err(|_| Skip::Inexact)?;
         let relation = if e.rank < self.names.len() {
             let scales: Vec<Poly> = self
                 .matrix
                 .scales
                 .iter()
-                .map(|s| {
-                    let v = self.at(&Sym::from_poly(s.clone()), &values, &atoms)?;
-                    v.denominator().is_empty().then(|| v.numerator().clone())
-                })
-                .collect::<Option<_>>()?;
-            Some(self.relation(&e, &scales, &fs)?)
+                .map(|s| self.entry_at(s, &values, &atoms))
+                .collect::<Result<_, _>>()?;
+            self.relation(&e, &scales, &fs)
         } else {
             None
         };
-        Some(AtPoint {
+        Ok(AtPoint {
             rank: e.rank,
             pivots: e.pivots,
             relation,
@@ -294,7 +304,7 @@ pub(super) fn short_rank(ctx: &Context<'_>, e: &Echelon<Poly>) -> Verdict {
 }
 
 /// The refutation at `point` where the rank drops.
-fn dropped(ctx: &Context<'_>, point: &[Rational], at: &AtPoint, how: &str) -> Verdict {
+pub(super) fn dropped(ctx: &Context<'_>, point: &[Rational], at: &AtPoint, how: &str) -> Verdict {
     let n = ctx.names.len();
     let mut evidence = vec![format!(
         "{}: rank {n} over Q(parameters), but at {}{how} the rank is {} < {n} (exact): the functions are linearly dependent at {}",
@@ -315,7 +325,7 @@ fn dropped(ctx: &Context<'_>, point: &[Rational], at: &AtPoint, how: &str) -> Ve
 const CLOSED_END: &str = ", a closed end of the range,";
 
 /// Where `q` lies in `r`: at a closed end, or inside.
-fn where_in(q: &Rational, r: &ParamRange) -> &'static str {
+pub(super) fn where_in(q: &Rational, r: &ParamRange) -> &'static str {
     let at = |e: &End| matches!(e, End::Closed(v) if v == q);
     if at(&r.lo) || at(&r.hi) {
         CLOSED_END
@@ -342,160 +352,6 @@ pub(super) fn constant_minor(ctx: &Context<'_>, e: &Echelon<Poly>) -> Verdict {
             shown(&e.minor)
         )],
     )
-}
-
-/// One parameter, every entry a polynomial in it: the gcd of maximal
-/// minors and its real roots in the range decide exactly. `None` when the
-/// minors are not polynomials in the parameter alone.
-pub(super) fn one_parameter(ctx: &Context<'_>, e: &Echelon<Poly>) -> Option<Verdict> {
-    let (p, r) = (&ctx.params[0], &ctx.ranges[0]);
-    if r.pi {
-        return None;
-    }
-    // every entry a polynomial in the parameter alone: the rank at a
-    // rational value is then always exact (a point where it is not
-    // computed is one where the basis is undefined)
-    let alone = |q: &Poly| q.variables().iter().all(|v| *v == p.name);
-    let in_basis = |f: &Sym| {
-        f.variables()
-            .iter()
-            .all(|v| *v == p.name || super::VARIABLE_ATOMS.contains(&v.as_str()))
-    };
-    if !ctx.matrix.rows.iter().flatten().all(alone)
-        || !ctx.matrix.scales.iter().all(alone)
-        || !ctx.fs.iter().all(in_basis)
-    {
-        return None;
-    }
-    let n = ctx.names.len();
-    let m = ctx.matrix.columns.len();
-    let mut g = UPoly::from_poly(&e.minor, &p.name)?.integer_primitive();
-    let mut used = 1usize;
-    let mut tried: Vec<Vec<usize>> = vec![e.pivots.clone()];
-    let mut undefined: Vec<Rational> = Vec::new();
-    let minor_of = |cols: &[usize]| -> Option<UPoly> {
-        let d = minor_on(&ctx.matrix.rows, cols).ok()?;
-        UPoly::from_poly(&d, &p.name)
-    };
-    for _ in 0..(4 * n + 16) {
-        // rational roots first, decided by the rank there
-        let mut rational: Vec<Rational> = rational_roots(&to_poly(&g, &p.name), &p.name).0;
-        // the closed ends themselves (whatever the search for rational
-        // roots could enumerate)
-        for end in [&r.lo, &r.hi] {
-            if let End::Closed(v) = end
-                && g.sign_at(v) == 0
-            {
-                rational.push(v.clone());
-            }
-        }
-        rational.retain(|v| r.contains(v) && !undefined.contains(v));
-        let bound = g.root_bound() + Rational::from(1);
-        let lo = r.lo.value().cloned().unwrap_or_else(|| -bound.clone());
-        let hi = r.hi.value().cloned().unwrap_or(bound);
-        let mut roots: Vec<(Rational, Rational)> =
-            rational.into_iter().map(|v| (v.clone(), v)).collect();
-        if roots.is_empty() && lo < hi {
-            roots.extend(g.isolate(&lo, &hi).into_iter().filter(|(a, b)| {
-                !undefined
-                    .iter()
-                    .any(|u| (a == b && a == u) || (a < u && u < b))
-            }));
-        }
-        let Some((a, b)) = roots.first().cloned() else {
-            let mut evidence = vec![format!(
-                "{}: rank {n} over Q({}); the gcd of {used} maximal minor{} is {} (exact), with no root in the range {r} (Sturm sequences): a maximal minor is nonzero at every {} there, so the functions are linearly independent",
-                ctx.header(),
-                p.symbol,
-                if used == 1 { "" } else { "s" },
-                g.display(&p.name),
-                p.symbol
-            )];
-            if !undefined.is_empty() {
-                evidence.push(format!(
-                    "the basis is undefined at {} = {} (a denominator vanishes), which is left out",
-                    p.symbol,
-                    undefined
-                        .iter()
-                        .map(Rational::to_string)
-                        .collect::<Vec<_>>()
-                        .join(", ")
-                ));
-            }
-            return Some(Verdict::new(Status::Holds, RANK, evidence));
-        };
-        if a == b {
-            let point = [a.clone()];
-            let Some(at) = ctx.rank_at(&point) else {
-                undefined.push(a);
-                continue;
-            };
-            if at.rank < n {
-                return Some(dropped(ctx, &point, &at, where_in(&a, r)));
-            }
-            let minor = minor_of(&at.pivots)?;
-            tried.push(at.pivots.clone());
-            used += 1;
-            g = g.gcd(&minor).integer_primitive();
-            continue;
-        }
-        // an irrational root in (a, b): a minor that does not vanish there
-        let mut found = false;
-        for cols in one_column_swaps(&e.pivots, m).take(MAX_MINORS) {
-            if tried.contains(&cols) {
-                continue;
-            }
-            tried.push(cols.clone());
-            let Some(minor) = minor_of(&cols) else {
-                continue;
-            };
-            if minor.is_zero() {
-                continue;
-            }
-            used += 1;
-            let h = g.gcd(&minor).integer_primitive();
-            if h.count_roots(&a, &b) == 0 {
-                g = h;
-                found = true;
-                break;
-            }
-        }
-        if !found {
-            return Some(Verdict::not_checkable(format!(
-                "{}: rank {n} over Q({}); the {used} maximal minors computed share the factor {} with a root in ({a}, {b}), an irrational value of {}: the rank there is not decided",
-                ctx.header(),
-                p.symbol,
-                g.display(&p.name),
-                p.symbol
-            )));
-        }
-    }
-    Some(Verdict::not_checkable(format!(
-        "{}: the gcd of the maximal minors did not settle",
-        ctx.header()
-    )))
-}
-
-/// The univariate `g` as a polynomial in `name`.
-fn to_poly(g: &UPoly, name: &str) -> Poly {
-    g.coeffs()
-        .iter()
-        .enumerate()
-        .fold(Poly::zero(), |acc, (i, a)| {
-            acc + &(Poly::var(name).pow(i as u32).scale(a))
-        })
-}
-
-/// Column sets that differ from `pivots` in one column.
-fn one_column_swaps(pivots: &[usize], m: usize) -> impl Iterator<Item = Vec<usize>> + '_ {
-    (0..pivots.len()).flat_map(move |k| {
-        (0..m).filter(|j| !pivots.contains(j)).map(move |j| {
-            let mut cols = pivots.to_vec();
-            cols[k] = j;
-            cols.sort_unstable();
-            cols
-        })
-    })
 }
 
 /// Candidate values of parameter `i`: its closed ends, the rational roots
@@ -551,7 +407,7 @@ pub(super) fn general(ctx: &Context<'_>, e: &Echelon<Poly>) -> Verdict {
     let mut others: Vec<Vec<usize>> = Vec::new();
     let mut decided = 0;
     for point in grid(&lists) {
-        let Some(at) = ctx.rank_at(&point) else {
+        let Ok(at) = ctx.rank_at(&point) else {
             continue;
         };
         decided += 1;

@@ -285,3 +285,27 @@ fn other_atoms_fall_back_to_the_wronskian_and_say_why_beyond_it() {
         text(&w)
     );
 }
+
+#[test]
+fn one_parameter_at_an_irrational_value_is_decided_exactly() {
+    // at λ = √2: b2 = t = b1
+    let fails = spec(
+        "polynomial",
+        &[("lambda", "[0, 2]")],
+        &fns(&["1 - t", "t", "(lambda^2 - 2)*t^2 + t"]),
+    );
+    let v = independent(&fails, None);
+    assert_eq!(v.status, Status::Fails, "{}", text(&v));
+    let t = text(&v);
+    assert!(t.contains("lambda^2 - 2"), "{t}");
+    assert!(t.contains("b1 − b2 ≡ 0"), "{t}");
+    // the pivot minor vanishes at √2, the rank there is full all the same
+    let holds = spec(
+        "polynomial",
+        &[("lambda", "[0, 2]")],
+        &fns(&["1", "(lambda^2 - 2)*t + t^2", "t^2 + t^3"]),
+    );
+    let w = independent(&holds, None);
+    assert_eq!(w.status, Status::Holds, "{}", text(&w));
+    println!("{}\n{}", text(&v), text(&w));
+}
