@@ -110,26 +110,9 @@ pub enum SignNd {
 /// of `examples/` takes fewer than 100,000.
 pub const MAX_COEFFICIENT_WORK: u64 = 50_000_000;
 
-fn binomial(n: usize, k: usize) -> Rational {
-    Rational::from(rug::Integer::from(rug::Integer::binomial_u(
-        n as u32, k as u32,
-    )))
-}
-
 /// One variable: `b_k = Σ_{i≤k} C(k,i)/C(n,i) · a_i`.
 pub fn power_to_bernstein(a: &[Rational]) -> Vec<Rational> {
-    let n = a.len() - 1;
-    (0..=n)
-        .map(|k| {
-            let mut sum = Rational::new();
-            for (i, ai) in a.iter().enumerate().take(k + 1) {
-                if *ai != 0 {
-                    sum += binomial(k, i) / binomial(n, i) * ai;
-                }
-            }
-            sum
-        })
-        .collect()
+    crate::minors::power_to_bernstein(a, a.len() - 1)
 }
 
 /// Tensor Bernstein coefficients on `[0,1]^d` from power coefficients (the

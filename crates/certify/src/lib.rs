@@ -35,6 +35,7 @@ pub mod factors;
 pub mod krawczyk;
 pub mod maxima;
 pub mod minors;
+pub mod neville;
 pub mod nonneg;
 pub mod range;
 pub mod real_point;

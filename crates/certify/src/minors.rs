@@ -42,6 +42,27 @@ impl Entry for UPoly {
     }
 }
 
+impl Entry for Rational {
+    fn zero() -> Self {
+        Rational::new()
+    }
+    fn is_zero(&self) -> bool {
+        *self == 0
+    }
+    fn times(&self, other: &Self) -> Self {
+        Rational::from(self * other)
+    }
+    fn plus(&self, other: &Self) -> Self {
+        Rational::from(self + other)
+    }
+    fn minus(&self, other: &Self) -> Self {
+        Rational::from(self - other)
+    }
+    fn scaled(&self, q: &Rational) -> Self {
+        Rational::from(self * q)
+    }
+}
+
 impl Entry for Poly {
     fn zero() -> Self {
         Poly::zero()
@@ -63,23 +84,44 @@ impl Entry for Poly {
     }
 }
 
-/// Most rows and columns whose minors are enumerated (subsets are bit
-/// masks of a `u32`).
+/// Most rows and columns of a matrix whose minors are enumerated (index
+/// sets are bit masks of one word).
 pub const MAX_SIDE: usize = 31;
 
-/// Most nonzero minors kept: past it the enumeration stops with
-/// [`TooLarge`] instead of exhausting memory (`C(2n, n)` grows fast).
-pub const MAX_MINORS: usize = 200_000;
+/// Most minor positions `Σₖ C(rows, k)·C(cols, k) = C(rows + cols, rows) − 1`
+/// the enumeration of all minors visits (a 10 × 10 matrix has 184 755).
+pub const MAX_MINORS: u64 = 1_000_000;
 
-/// Why the minors of a matrix were not enumerated.
+/// A matrix too large for the enumeration of its minors.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-pub enum TooLarge {
-    #[error(
-        "the matrix is {rows} × {cols}; minors are enumerated for at most {MAX_SIDE} rows and columns"
-    )]
-    Side { rows: usize, cols: usize },
-    #[error("the matrix has more than {MAX_MINORS} nonzero minors")]
-    Count,
+#[error(
+    "the coefficient matrix is {rows} × {cols}: {} minor positions, beyond the limit of the enumeration of all minors (at most {MAX_SIDE} rows and columns and {MAX_MINORS} minors)",
+    minors.map_or_else(|| "more than 2^64".to_string(), |m| m.to_string())
+)]
+pub struct TooLarge {
+    pub rows: usize,
+    pub cols: usize,
+    /// `C(rows + cols, rows) − 1`, when it fits a word.
+    pub minors: Option<u64>,
+}
+
+/// `C(n, k)`, when it fits a word.
+pub fn binomial(n: usize, k: usize) -> Option<u64> {
+    let k = k.min(n - k);
+    (0..k).try_fold(1u64, |acc, i| {
+        let next = u128::from(acc) * (n - i) as u128 / (i + 1) as u128;
+        u64::try_from(next).ok()
+    })
+}
+
+/// The enumeration of the minors of a `rows × cols` matrix is within the
+/// limits.
+pub fn within_limits(rows: usize, cols: usize) -> Result<(), TooLarge> {
+    let minors = binomial(rows + cols, rows).map(|c| c - 1);
+    if rows > MAX_SIDE || cols > MAX_SIDE || minors.is_none_or(|m| m > MAX_MINORS) {
+        return Err(TooLarge { rows, cols, minors });
+    }
+    Ok(())
 }
 
 /// One minor: its row and column indices and its value.
@@ -90,24 +132,35 @@ pub struct MinorOf<E> {
     pub value: E,
 }
 
-/// The sets of `k` indices out of `n`, as bit masks, in lexicographic order.
+/// The sets of `k ≥ 1` indices out of `n ≤ 31`, as bit masks, in
+/// increasing order (Gosper's next subset of the same size).
 fn subsets(n: usize, k: usize) -> Vec<u32> {
-    (0u32..(1 << n))
-        .filter(|m| m.count_ones() as usize == k)
-        .collect()
+    let mut out = Vec::new();
+    if k == 0 || k > n {
+        return out;
+    }
+    let end = 1u64 << n;
+    let mut m: u64 = (1 << k) - 1;
+    while m < end {
+        out.push(m as u32);
+        let low = m & m.wrapping_neg();
+        let ripple = m + low;
+        m = (((ripple ^ m) >> 2) / low) | ripple;
+    }
+    out
 }
 
 fn indices(mask: u32) -> Vec<usize> {
     (0..32).filter(|i| mask & (1 << i) != 0).collect()
 }
 
-/// Every nonzero minor of `m` (any order).
+/// Every nonzero minor of `m` (any order), by Laplace expansion along the
+/// last row of each minor from the minors one order lower; an error beyond
+/// the limits of the enumeration ([`MAX_SIDE`], [`MAX_MINORS`]).
 pub fn all_minors<E: Entry>(m: &[Vec<E>]) -> Result<Vec<MinorOf<E>>, TooLarge> {
     let rows = m.len();
     let cols = m.first().map_or(0, Vec::len);
-    if rows > MAX_SIDE || cols > MAX_SIDE {
-        return Err(TooLarge::Side { rows, cols });
-    }
+    within_limits(rows, cols)?;
     let mut out = Vec::new();
     let mut previous: HashMap<(u32, u32), E> = HashMap::new();
     for k in 1..=rows.min(cols) {
@@ -134,9 +187,6 @@ pub fn all_minors<E: Entry>(m: &[Vec<E>]) -> Result<Vec<MinorOf<E>>, TooLarge> {
                     })
                 };
                 if !value.is_zero() {
-                    if out.len() >= MAX_MINORS {
-                        return Err(TooLarge::Count);
-                    }
                     out.push(MinorOf {
                         rows: ri.clone(),
                         cols: ci,
@@ -149,6 +199,29 @@ pub fn all_minors<E: Entry>(m: &[Vec<E>]) -> Result<Vec<MinorOf<E>>, TooLarge> {
         previous = level;
     }
     Ok(out)
+}
+
+/// The Bernstein coefficients of degree `d ≥ deg` of `Σ aᵢ zⁱ`:
+/// `b_k = Σ_{i ≤ k} C(k, i)/C(d, i)·aᵢ` (entries of any kind: the change of
+/// basis is linear).
+pub fn power_to_bernstein<E: Entry>(a: &[E], d: usize) -> Vec<E> {
+    let ratio = |k: usize, i: usize| -> Rational {
+        let c = |n: usize, k: usize| {
+            Rational::from(rug::Integer::from(rug::Integer::binomial_u(
+                n as u32, k as u32,
+            )))
+        };
+        c(k, i) / c(d, i)
+    };
+    (0..=d)
+        .map(|k| {
+            a.iter()
+                .enumerate()
+                .take(k + 1)
+                .filter(|(_, ai)| !ai.is_zero())
+                .fold(E::zero(), |acc, (i, ai)| acc.plus(&ai.scaled(&ratio(k, i))))
+        })
+        .collect()
 }
 
 /// One degree elevation of Bernstein coefficient rows of degree `d`:
@@ -197,8 +270,22 @@ mod tests {
         let m = vec![vec![UPoly::new(vec![q(1)]); 32]; 2];
         assert_eq!(
             all_minors(&m).unwrap_err(),
-            TooLarge::Side { rows: 2, cols: 32 }
+            TooLarge {
+                rows: 2,
+                cols: 32,
+                minors: Some(560)
+            }
         );
+    }
+
+    #[test]
+    fn subsets_come_in_increasing_order_of_their_masks() {
+        for (n, k) in [(5, 2), (6, 3), (4, 4), (7, 1)] {
+            let slow: Vec<u32> = (0u32..(1 << n))
+                .filter(|m| m.count_ones() as usize == k)
+                .collect();
+            assert_eq!(subsets(n, k), slow, "{n}, {k}");
+        }
     }
 
     #[test]

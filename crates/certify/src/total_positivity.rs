@@ -25,17 +25,41 @@
 //! negative minor (a `1×1` minor is a negative value).
 
 use rug::Rational;
-use std::collections::HashMap;
 use trig_symbolic::{Poly, Sym};
 
-use crate::bernstein::power_to_bernstein;
 use crate::domain::{ParamBox, in_z};
+use crate::minors::{MinorOf, TooLarge, all_minors, binomial, elevate_rows, power_to_bernstein};
+use crate::neville::Bidiagonal;
 use crate::nonneg::{Certificate, definite_sign};
 use crate::sturm::UPoly;
 use crate::tp_set::{NonnegativeSet, nonnegative_set};
 
 /// Degree elevations tried after the degree of the numerators.
 pub const MAX_ELEVATION: usize = 4;
+
+/// Most minor positions `Σₖ C(rows, k)·C(cols, k) = C(rows + cols, rows) − 1`
+/// the enumeration of all minors visits (a 10 × 10 matrix has 184 755).
+pub const MAX_MINORS: u64 = 1_000_000;
+
+/// Without a parameter, matrices with more minor positions than this are
+/// tried by Neville elimination before their minors are enumerated.
+pub const PREFER_NEVILLE: u64 = 100_000;
+
+/// Most rows and columns of a matrix whose minors are enumerated (index
+/// sets are bit masks of one word).
+pub const MAX_SIDE: usize = 31;
+
+/// Why the certificate was not formed.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum TpError {
+    /// The functions are not written over one Bernstein basis (the reason).
+    #[error("{0}")]
+    Factorisation(String),
+    /// The coefficient matrix is too large for the enumeration of its
+    /// minors ([`crate::minors::MAX_SIDE`], [`crate::minors::MAX_MINORS`]).
+    #[error(transparent)]
+    TooLarge(#[from] TooLarge),
+}
 
 /// The numerators' Bernstein coefficient matrix `C` (rows: functions,
 /// columns: Bernstein index), each entry a polynomial in the parameter
@@ -51,12 +75,7 @@ pub struct Factorisation {
 }
 
 /// One minor of a matrix: its row and column indices and its value.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Minor {
-    pub rows: Vec<usize>,
-    pub cols: Vec<usize>,
-    pub value: UPoly,
-}
+pub type Minor = MinorOf<UPoly>;
 
 /// The positive common factor `1 + z²` of the Weierstrass substitution.
 fn one_plus_z2() -> Poly {
@@ -211,115 +230,24 @@ fn bernstein_row(n: &Poly, d: usize, param: Option<&str>) -> Result<Vec<UPoly>, 
         .ok_or_else(|| format!("a coefficient {c} depends on more than the parameter"))
     };
     let powers: Vec<UPoly> = by_z.iter().map(in_p).collect::<Result<_, _>>()?;
-    let p_degree = powers.iter().map(|u| u.coeffs().len()).max().unwrap_or(0);
-    let mut out = vec![UPoly::new(vec![]); d + 1];
-    for e in 0..p_degree {
-        let seq: Vec<Rational> = (0..=d)
-            .map(|k| {
-                powers
-                    .get(k)
-                    .and_then(|u| u.coeffs().get(e).cloned())
-                    .unwrap_or_default()
-            })
-            .collect();
-        for (k, b) in power_to_bernstein(&seq).into_iter().enumerate() {
-            let mut mono = vec![Rational::new(); e + 1];
-            mono[e] = b;
-            out[k] = out[k].add(&UPoly::new(mono));
-        }
-    }
-    Ok(out)
+    Ok(power_to_bernstein(&powers, d))
 }
 
 impl Factorisation {
-    /// One degree elevation: `c'_k = k/(d+1)·c_{k−1} + (1 − k/(d+1))·c_k`.
+    /// One degree elevation ([`elevate_rows`]).
     pub fn elevate(&self) -> Factorisation {
-        let d1 = self.degree + 1;
-        let scale = |u: &UPoly, q: Rational| u.mul(&UPoly::new(vec![q]));
-        let rows = self
-            .rows
-            .iter()
-            .map(|row| {
-                (0..=d1)
-                    .map(|k| {
-                        let left = match k {
-                            0 => UPoly::new(vec![]),
-                            _ => scale(&row[k - 1], Rational::from((k as u32, d1 as u32))),
-                        };
-                        let right = match row.get(k) {
-                            Some(c) => scale(c, Rational::from(((d1 - k) as u32, d1 as u32))),
-                            None => UPoly::new(vec![]),
-                        };
-                        left.add(&right)
-                    })
-                    .collect()
-            })
-            .collect();
         Factorisation {
-            degree: d1,
-            rows,
+            degree: self.degree + 1,
+            rows: elevate_rows(&self.rows, self.degree),
             common: self.common.clone(),
         }
     }
 }
 
-/// The sets of `k` indices out of `n`, as bit masks, in lexicographic order.
-fn subsets(n: usize, k: usize) -> Vec<u32> {
-    (0u32..(1 << n))
-        .filter(|m| m.count_ones() as usize == k)
-        .collect()
-}
-
-fn indices(mask: u32) -> Vec<usize> {
-    (0..32).filter(|i| mask & (1 << i) != 0).collect()
-}
-
-/// Every nonzero minor of `m` (any order), by Laplace expansion along the
-/// last row of each minor from the minors one order lower.
-pub fn minors(m: &[Vec<UPoly>]) -> Vec<Minor> {
-    let rows = m.len();
-    let cols = m.first().map_or(0, Vec::len);
-    assert!(rows < 32 && cols < 32, "at most 31 rows and columns");
-    let mut out = Vec::new();
-    let mut previous: HashMap<(u32, u32), UPoly> = HashMap::new();
-    for k in 1..=rows.min(cols) {
-        let mut level = HashMap::new();
-        for r in subsets(rows, k) {
-            let ri = indices(r);
-            let last = ri[k - 1];
-            let rest = r & !(1 << last);
-            for c in subsets(cols, k) {
-                let ci = indices(c);
-                let value = if k == 1 {
-                    m[last][ci[0]].clone()
-                } else {
-                    ci.iter()
-                        .enumerate()
-                        .fold(UPoly::new(vec![]), |acc, (t, &j)| {
-                            let Some(sub) = previous.get(&(rest, c & !(1 << j))) else {
-                                return acc;
-                            };
-                            let term = m[last][j].mul(sub);
-                            if (k - 1 + t) % 2 == 0 {
-                                acc.add(&term)
-                            } else {
-                                acc.sub(&term)
-                            }
-                        })
-                };
-                if !value.is_zero() {
-                    out.push(Minor {
-                        rows: ri.clone(),
-                        cols: ci,
-                        value: value.clone(),
-                    });
-                    level.insert((r, c), value);
-                }
-            }
-        }
-        previous = level;
-    }
-    out
+/// Every nonzero minor of `m` (any order), within the limits of the
+/// enumeration ([`crate::minors::all_minors`]).
+pub fn minors(m: &[Vec<UPoly>]) -> Result<Vec<Minor>, TpError> {
+    Ok(all_minors(m)?)
 }
 
 /// A refutation: points `z₀ < ⋯` (or `t`), the functions' indices, and the
@@ -361,7 +289,11 @@ pub fn negative_collocation_minor(fzs: &[Sym], extra: &[Rational]) -> Option<Neg
             })
             .collect();
         let table = table?;
-        let Some(negative) = minors(&table)
+        // a grid too large for the enumeration is not searched
+        let Ok(all) = minors(&table) else {
+            continue;
+        };
+        let Some(negative) = all
             .into_iter()
             .filter(|m| m.value.leading() < 0)
             .min_by_key(|m| m.rows.len())
@@ -429,45 +361,106 @@ pub struct TpCertificate {
     pub minors: usize,
     /// Inside the given parameter set (the whole line without a parameter).
     pub set: NonnegativeSet,
+    /// Without a parameter, beyond the enumeration of minors: the
+    /// bidiagonal factorisation (Neville elimination, every factor `≥ 0`)
+    /// that proved the matrix totally positive instead ([`crate::neville`]).
+    pub neville: Option<Bidiagonal>,
 }
 
 impl TpCertificate {
     /// The parameter values of `bx` where every minor of this certificate
     /// (at its degree, no further elevation) is `≥ 0`.
-    pub fn set_within(&self, bx: &ParamBox) -> NonnegativeSet {
-        let values: Vec<UPoly> = minors(&self.factorisation.rows)
+    pub fn set_within(&self, bx: &ParamBox) -> Result<NonnegativeSet, TpError> {
+        let values: Vec<UPoly> = minors(&self.factorisation.rows)?
             .into_iter()
             .map(|m| m.value)
             .collect();
-        nonnegative_set(&values, bx)
+        Ok(nonnegative_set(&values, bx))
     }
 }
 
 /// The certificate of [`factorise`] with up to [`MAX_ELEVATION`] degree
-/// elevations, stopping as soon as all minors are `≥ 0` on the whole set.
+/// elevations, stopping as soon as all minors are `≥ 0` on the whole set
+/// (or when an elevation would pass the limits of the enumeration: the
+/// last degree within them is kept).
 pub fn certify(
     fs: &[Sym],
     trigonometric: bool,
     param: Option<(&str, &ParamBox)>,
-) -> Result<TpCertificate, String> {
+) -> Result<TpCertificate, TpError> {
     let whole = ParamBox {
         lo: crate::domain::Bound::Infinite,
         hi: crate::domain::Bound::Infinite,
     };
     let bx = param.map_or(&whole, |(_, b)| b);
-    let mut f = factorise(fs, trigonometric, param)?;
+    let mut f = factorise(fs, trigonometric, param).map_err(TpError::Factorisation)?;
     let first_degree = f.degree;
+    let mut last: Option<TpCertificate> = None;
     loop {
-        let ms = minors(&f.rows);
+        // without a parameter, a large matrix is tried by Neville
+        // elimination first (milliseconds where the minors take seconds)
+        let rows = f.rows.len();
+        let positions = binomial(rows + f.degree + 1, rows);
+        if param.is_none()
+            && positions.is_none_or(|p| p > PREFER_NEVILLE)
+            && let Some(cert) = by_neville(f.clone(), first_degree, bx)
+        {
+            return Ok(cert);
+        }
+        let ms = match minors(&f.rows) {
+            Ok(ms) => ms,
+            Err(too_large) if param.is_none() => {
+                return by_neville(f, first_degree, bx).or(last).ok_or(too_large);
+            }
+            Err(too_large) => return last.ok_or(too_large),
+        };
         let values: Vec<UPoly> = ms.iter().map(|m| m.value.clone()).collect();
         let set = nonnegative_set(&values, bx);
-        if set.covers || f.degree >= first_degree + MAX_ELEVATION {
-            return Ok(TpCertificate {
+        let done = set.covers || f.degree >= first_degree + MAX_ELEVATION;
+        let cert = TpCertificate {
+            first_degree,
+            factorisation: f,
+            minors: ms.len(),
+            set,
+            neville: None,
+        };
+        if done {
+            return Ok(cert);
+        }
+        f = cert.factorisation.elevate();
+        last = Some(cert);
+    }
+}
+
+/// Without a parameter: the bidiagonal factorisation of the coefficient
+/// matrix at its degree or one of the next elevations up to
+/// [`MAX_ELEVATION`] in all, when one has every factor `≥ 0`.
+fn by_neville(mut f: Factorisation, first_degree: usize, bx: &ParamBox) -> Option<TpCertificate> {
+    loop {
+        let rational: Option<Vec<Vec<Rational>>> = f
+            .rows
+            .iter()
+            .map(|row| {
+                row.iter()
+                    .map(|u| match u.coeffs() {
+                        [] => Some(Rational::new()),
+                        [a] => Some(a.clone()),
+                        _ => None,
+                    })
+                    .collect()
+            })
+            .collect();
+        if let Some(b) = crate::neville::totally_positive(&rational?) {
+            return Some(TpCertificate {
                 first_degree,
                 factorisation: f,
-                minors: ms.len(),
-                set,
+                minors: 0,
+                set: nonnegative_set(&[], bx),
+                neville: Some(b),
             });
+        }
+        if f.degree >= first_degree + MAX_ELEVATION {
+            return None;
         }
         f = f.elevate();
     }
@@ -567,7 +560,7 @@ mod tests {
             t.clone() * &t * &(one.clone() - &(k * &(one.clone() - &t) * &(one - &t))),
         ];
         let bx = ParamBox::closed(q(-4, 5), q(24, 5));
-        let at_four = minors(&factorise(&fs, false, Some(("lambda", &bx))).unwrap().rows);
+        let at_four = minors(&factorise(&fs, false, Some(("lambda", &bx))).unwrap().rows).unwrap();
         let values: Vec<UPoly> = at_four.iter().map(|m| m.value.clone()).collect();
         let set4 = nonnegative_set(&values, &bx);
         assert_eq!(set4.pieces.len(), 2, "{}", set4.describe("λ"));
@@ -587,7 +580,7 @@ mod tests {
             .iter()
             .map(|r| r.iter().map(|x| UPoly::new(vec![x.clone()])).collect())
             .collect();
-        for minor in minors(&as_poly) {
+        for minor in minors(&as_poly).unwrap() {
             let sub: Vec<Vec<Rational>> = minor
                 .rows
                 .iter()
@@ -595,5 +588,59 @@ mod tests {
                 .collect();
             assert_eq!(minor.value.leading(), determinant(&sub));
         }
+    }
+
+    #[test]
+    fn beyond_the_enumeration_a_typed_error_or_neville_elimination() {
+        let row = |n: usize| vec![UPoly::new(vec![q(1, 1)]); n];
+        let wide: Vec<Vec<UPoly>> = (0..3).map(|_| row(41)).collect();
+        let err = minors(&wide).unwrap_err();
+        assert!(matches!(
+            err,
+            TpError::TooLarge(TooLarge {
+                rows: 3,
+                cols: 41,
+                ..
+            })
+        ));
+        assert!(
+            err.to_string().contains("at most 31 rows and columns"),
+            "{err}"
+        );
+        let square: Vec<Vec<UPoly>> = (0..12).map(|_| row(12)).collect();
+        assert!(matches!(
+            minors(&square),
+            Err(TpError::TooLarge(TooLarge {
+                minors: Some(2_704_155),
+                ..
+            }))
+        ));
+        // the squared-sine Bernstein basis of degree 10: 11 functions of
+        // degree 40 in z
+        let (s, c) = (v("s"), v("c"));
+        let fs: Vec<Sym> = (0..=10u32)
+            .map(|i| {
+                (0..2 * i).fold(Sym::one(), |acc, _| acc * &s)
+                    * &(0..2 * (10 - i)).fold(Sym::one(), |acc, _| acc * &c)
+            })
+            .collect();
+        // its matrix (11 × 41) is beyond the enumeration, and Neville
+        // elimination proves it totally positive
+        let cert = certify(&fs, true, None).unwrap();
+        assert_eq!(cert.factorisation.rows.len(), 11);
+        assert!(cert.set.covers && cert.minors == 0);
+        assert_eq!(cert.neville.map(|b| b.pivots), Some(11));
+        // with a parameter the enumeration's limit is the answer
+        let mut with_parameter = fs.clone();
+        with_parameter[0] = with_parameter[0].clone() * &(Sym::one() + &v("lambda"));
+        let bx = ParamBox::closed(q(0, 1), q(1, 1));
+        assert!(matches!(
+            certify(&with_parameter, true, Some(("lambda", &bx))),
+            Err(TpError::TooLarge(TooLarge {
+                rows: 11,
+                cols: 41,
+                ..
+            }))
+        ));
     }
 }

@@ -16,7 +16,7 @@ use rug::Rational;
 use trig_symbolic::{Poly, Sym};
 
 use crate::domain::ParamBox;
-use crate::minors::{all_minors, elevate_rows};
+use crate::minors::{all_minors, elevate_rows, power_to_bernstein};
 use crate::nonneg::{BoxCertificate, certify_box};
 use crate::total_positivity::{MAX_ELEVATION, numerators};
 
@@ -54,24 +54,9 @@ pub struct BoxTpCertificate {
 }
 
 /// Bernstein coefficients of degree `d` of `n(z, p)`, each a polynomial in
-/// the parameters: `b_k = Σ_{i ≤ k} C(k, i)/C(d, i)·a_i` for the power
-/// coefficients `a_i`.
+/// the parameters.
 fn bernstein_row(n: &Poly, d: usize) -> Vec<Poly> {
-    let a = n.coefficients_in("z");
-    let binomial = |n: usize, k: usize| -> Rational {
-        (0..k).fold(Rational::from(1), |acc, i| {
-            acc * Rational::from(((n - i) as u64, (i + 1) as u64))
-        })
-    };
-    (0..=d)
-        .map(|k| {
-            (0..=k.min(a.len().saturating_sub(1)))
-                .filter(|i| !a[*i].is_zero())
-                .fold(Poly::zero(), |acc, i| {
-                    acc + &a[i].scale(&(binomial(k, i) / binomial(d, i)))
-                })
-        })
-        .collect()
+    power_to_bernstein(&n.coefficients_in("z"), d)
 }
 
 /// Decides every minor of the factorisation of `fs` on the product of

@@ -13,7 +13,7 @@
 //! "Totally positive bases for shape preserving curve design", 1993).
 
 use rug::Rational;
-use trig_certify::total_positivity::{NegativeMinor, TpCertificate, certify, refute};
+use trig_certify::total_positivity::{NegativeMinor, TpCertificate, TpError, certify, refute};
 use trig_certify::tp_box::BoxOutcome;
 use trig_certify::{Bound, ParamBox};
 use trig_core::{ParamRange, Parameter};
@@ -76,7 +76,14 @@ pub fn totally_positive<B: ExactBasis>(basis: &B, range: Option<&ParamRange>) ->
     let named = param.map(|p| p.name.as_str()).zip(bx.as_ref());
     let cert = match certify(&fs, trig, named) {
         Ok(c) => c,
-        Err(why) => return Verdict::not_checkable(format!("no factorisation: {why}")),
+        Err(TpError::Factorisation(why)) => {
+            return Verdict::not_checkable(format!("no factorisation: {why}"));
+        }
+        Err(TpError::TooLarge(too_large)) => {
+            return Verdict::not_checkable(format!(
+                "the totally positive factorisation checks every minor of its coefficient matrix, and {too_large}; with a parameter the bidiagonal factorisation (Neville elimination), which would not enumerate them, is not implemented (without parameters it decides)"
+            ));
+        }
     };
     let symbol = param.map_or("p", |p| p.symbol.as_str());
     let mut evidence = vec![certificate_line(&cert, symbol, published)];
@@ -86,11 +93,16 @@ pub fn totally_positive<B: ExactBasis>(basis: &B, range: Option<&ParamRange>) ->
             lo: Bound::Infinite,
             hi: Bound::Infinite,
         };
-        evidence.push(Evidence::note(format!(
-            "on the whole line the minors of this certificate (degree {}) are all ≥ 0 exactly for {symbol} ∈ {}; the range decided is {b}",
-            cert.factorisation.degree,
-            cert.set_within(&whole).describe(symbol)
-        )));
+        match cert.set_within(&whole) {
+            Ok(set) => evidence.push(Evidence::note(format!(
+                "on the whole line the minors of this certificate (degree {}) are all ≥ 0 exactly for {symbol} ∈ {}; the range decided is {b}",
+                cert.factorisation.degree,
+                set.describe(symbol)
+            ))),
+            Err(why) => evidence.push(Evidence::note(format!(
+                "the minors of this certificate on the whole line: {why}"
+            ))),
+        }
     }
     if cert.set.covers {
         return Verdict::new(Status::Holds, TOTALLY_POSITIVE, evidence);
@@ -137,12 +149,18 @@ fn certificate_line(
         String::new()
     };
     let n = f.rows.len();
+    let checked = match cert.neville {
+        Some(b) => format!(
+            "too large to enumerate its minors, it is the product of bidiagonal factors found by Neville elimination without row exchanges (Gasca & Peña), its {} multipliers and {} pivots all > 0 exactly, so it is totally positive",
+            b.multipliers, b.pivots
+        ),
+        None => format!("{} nonzero minors checked exactly", cert.minors),
+    };
     let text = format!(
-        "numerators over the positive common factor {} in z = tan(θ/2) (or t): Bernstein degree {}{elevated}; coefficient matrix {n} × {}; {} nonzero minors checked exactly",
+        "numerators over the positive common factor {} in z = tan(θ/2) (or t): Bernstein degree {}{elevated}; coefficient matrix {n} × {}; {checked}",
         f.common,
         cert.first_degree,
         f.degree + 1,
-        cert.minors,
     );
     let text = match published {
         Some(r) => format!(
@@ -359,4 +377,56 @@ fn corners(params: &[Parameter]) -> Vec<Vec<Rational>> {
             })
             .collect()
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use trig_specfile::Spec;
+
+    /// `C(n, i) sin²ⁱt cos²⁽ⁿ⁻ⁱ⁾t` on `[0, π/2]`; with `lambda`, the first
+    /// function times `1 + λ`, `λ ∈ [0, 1]`.
+    fn sin2_bernstein(n: u64, lambda: bool) -> Spec {
+        let mut text = String::from("id = \"sin2\"\ncitation = \"test\"\nvariable = \"angle\"\n");
+        if lambda {
+            text.push_str(
+                "[[parameters]]\nname = \"lambda\"\nrange = \"[0, 1]\"\nsource = \"test\"\n",
+            );
+        }
+        let mut binomial = 1u64;
+        for i in 0..=n {
+            let scale = if lambda && i == 0 {
+                "(1 + lambda)*"
+            } else {
+                ""
+            };
+            text.push_str(&format!(
+                "[[functions]]\nname = \"b{i}\"\nformula = \"{scale}{binomial}*sin(t)^{}*cos(t)^{}\"\n",
+                2 * i,
+                2 * (n - i)
+            ));
+            binomial = binomial * (n - i) / (i + 1);
+        }
+        Spec::from_str_named(&text, "sin2").unwrap_or_else(|e| panic!("{e}"))
+    }
+
+    #[test]
+    fn beyond_the_enumeration_of_minors_neville_elimination_decides() {
+        let start = std::time::Instant::now();
+        let v = totally_positive(&sin2_bernstein(10, false), None);
+        println!("sin² Bernstein n = 10: {:?}", start.elapsed());
+        assert_eq!(v.status, Status::Holds, "{:?}", v.evidence);
+        let text = format!("{:?}", v.evidence);
+        assert!(text.contains("11 × 41"), "{text}");
+        assert!(text.contains("Neville elimination"), "{text}");
+    }
+
+    #[test]
+    fn with_a_parameter_the_limit_is_a_not_checkable_that_names_it() {
+        let v = totally_positive(&sin2_bernstein(10, true), None);
+        assert_eq!(v.status, Status::NotCheckable);
+        let text = format!("{:?}", v.evidence);
+        assert!(text.contains("11 × 41"), "{text}");
+        assert!(text.contains("at most 31 rows and columns"), "{text}");
+    }
 }

@@ -159,9 +159,11 @@ pub const CLAIMS: &[Claim] = &[
 ];
 
 /// Every `m`: the judge's exact decision does not depend on a range when
-/// the Wronskian's coefficients have no common factor.
+/// the Wronskian's coefficients have no common factor. The printed claims
+/// of the documents keep the Wronskian's evidence (the rank judge agrees:
+/// its tests).
 fn t50() -> Verdict {
-    independence::independent(&Family::ThesisCubic, None)
+    independence::by_wronskian(&Family::ThesisCubic, None)
 }
 
 /// Unity and nonnegativity of the segment functions on the published
@@ -183,7 +185,7 @@ fn m17() -> Verdict {
 }
 
 fn d18() -> Verdict {
-    independence::independent(&Family::Seed002Quartic, None)
+    independence::by_wronskian(&Family::Seed002Quartic, None)
 }
 
 /// A claim that a basis cannot trace a curve, decided by the span judge:
