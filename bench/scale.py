@@ -2,7 +2,7 @@
 """Cost of a spec audit against the number of functions and of parameters.
 
 Writes spec files into a temporary folder and times `trig-audit audit --spec
-FILE --summary` (the standard battery plus the claims `independent`,
+FILE --format json` (the standard battery plus the claims `independent`,
 `total-positivity` and `convex-hull`), the median of three runs, wall time.
 The bases:
 
@@ -17,6 +17,7 @@ Usage (from the checkout, after a build): python3 bench/scale.py
 each audit's verdict counts.
 """
 
+import json
 import statistics
 import subprocess
 import sys
@@ -72,13 +73,11 @@ def main():
             times, out = [], ""
             for _ in range(3):
                 start = time.perf_counter()
-                out = subprocess.run([BINARY, "audit", "--spec", str(path), "--summary",
+                out = subprocess.run([BINARY, "audit", "--spec", str(path), "--format", "json",
                                       "--time-limit", "60"], capture_output=True, text=True,
                                      check=True).stdout
                 times.append(time.perf_counter() - start)
-            verdicts = [line.split("|")[2].strip() for line in out.splitlines()
-                        if line.startswith("| ") and line.count("|") >= 6 and "standard" in line
-                        or any(line.startswith(f"| {c} |") for c, _ in CLAIMS)]
+            verdicts = [c["verdict"] for c in json.loads(out)["claims"]]
             counts = {v: verdicts.count(v) for v in sorted(set(verdicts))}
             shown = ", ".join(f"{n} {v}" for v, n in counts.items())
             print(f"| {label} | {params} | {statistics.median(times):.2f} s | {shown} |")

@@ -8,6 +8,7 @@ mod seed000;
 mod seed002_004;
 mod several_parameters;
 mod shape_effect;
+mod size;
 mod spec_audit;
 mod thesis_interp;
 mod total_positivity;

@@ -269,7 +269,11 @@ fn several<B: ExactBasis>(basis: &B, fs: &[Sym], trig: bool, params: &[Parameter
         .collect();
     let cert = match trig_certify::tp_box::certify(fs, trig, &boxes) {
         Ok(c) => c,
-        Err(why) => return Verdict::not_checkable(format!("no factorisation: {why}")),
+        Err(why) => {
+            return Verdict::not_checkable(format!(
+                "no totally positive factorisation was formed: {why}"
+            ));
+        }
     };
     let symbols: Vec<&str> = params.iter().map(|p| p.symbol.as_str()).collect();
     let on_box = params
