@@ -7,16 +7,9 @@
 
 use std::path::PathBuf;
 
+use crate::common::example_with;
 use trig_specfile::Spec;
 use trig_verification::{Status, spec_audit};
-
-fn example_with(name: &str, claims: &str) -> Spec {
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../examples")
-        .join(format!("{name}.toml"));
-    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{e}"));
-    Spec::from_str_named(&format!("{text}\n{claims}"), name).unwrap_or_else(|e| panic!("{e}"))
-}
 
 /// The verdict of the one claim `body` (the fields after `check`) added to
 /// the example `name`.

@@ -3,6 +3,8 @@
 //! below and independently in examples/independent/issue38-total-positivity.py).
 
 use trig_specfile::Spec;
+
+use crate::common::{evidence_lines, example_text};
 use trig_verification::{Status, Verdict, spec_audit};
 
 /// A polynomial spec on `[0, 1]` with the given parameters (`name range`)
@@ -26,16 +28,6 @@ fn tp(params: &[(&str, &str)], functions: &[&str]) -> Verdict {
     spec_audit::decide(&spec, &spec.claims[0])
 }
 
-fn lines(v: &Verdict) -> String {
-    v.evidence
-        .clone()
-        .into_vec()
-        .iter()
-        .map(|e| e.line())
-        .collect::<Vec<_>>()
-        .join("\n")
-}
-
 /// `b0 = B0 + a·B1`, `b1 = (1 − a − b)·B1`, `b2 = B2 + b·B1` (quadratic
 /// Bernstein `Bₖ`): coefficient matrix `[[1, a, 0], [0, 1 − a − b, 0],
 /// [0, b, 1]]`, whose minors `a`, `b`, `1 − a − b`, … are all `≥ 0` exactly
@@ -51,21 +43,21 @@ const TRIANGLE: [&str; 3] = [
 #[test]
 fn two_parameters_both_ways() {
     let v = tp(&[("a", "[0, 1/2]"), ("b", "[0, 1/2]")], &TRIANGLE);
-    assert_eq!(v.status, Status::Holds, "{}", lines(&v));
+    assert_eq!(v.status, Status::Holds, "{}", evidence_lines(&v));
     assert!(
-        lines(&v).contains("each a polynomial in a, b"),
+        evidence_lines(&v).contains("each a polynomial in a, b"),
         "{}",
-        lines(&v)
+        evidence_lines(&v)
     );
     let v = tp(&[("a", "[0, 1]"), ("b", "[0, 1]")], &TRIANGLE);
-    assert_eq!(v.status, Status::Fails, "{}", lines(&v));
+    assert_eq!(v.status, Status::Fails, "{}", evidence_lines(&v));
     assert!(
-        lines(&v).contains("not totally positive at a = "),
+        evidence_lines(&v).contains("not totally positive at a = "),
         "{}",
-        lines(&v)
+        evidence_lines(&v)
     );
     let v = tp(&[("a", "[-1/2, 0]"), ("b", "[0, 1/2]")], &TRIANGLE);
-    assert_eq!(v.status, Status::Fails, "{}", lines(&v));
+    assert_eq!(v.status, Status::Fails, "{}", evidence_lines(&v));
 }
 
 /// The cubic version with three parameters: `b0 = B0 + a·B1`,
@@ -86,13 +78,13 @@ fn three_parameters_both_ways() {
         &[("a", "[0, 1]"), ("b", "[0, 1/2]"), ("g", "[0, 1/2]")],
         &cubic,
     );
-    assert_eq!(v.status, Status::Holds, "{}", lines(&v));
+    assert_eq!(v.status, Status::Holds, "{}", evidence_lines(&v));
     let v = tp(&[("a", "[0, 1]"), ("b", "[0, 1]"), ("g", "[0, 1]")], &cubic);
-    assert_eq!(v.status, Status::Fails, "{}", lines(&v));
+    assert_eq!(v.status, Status::Fails, "{}", evidence_lines(&v));
     assert!(
-        lines(&v).contains("not totally positive at a = "),
+        evidence_lines(&v).contains("not totally positive at a = "),
         "{}",
-        lines(&v)
+        evidence_lines(&v)
     );
 }
 
@@ -106,14 +98,6 @@ fn decide_text(text: &str, claim: &str) -> Verdict {
     )
     .unwrap_or_else(|e| panic!("{e}"));
     spec_audit::decide(&spec, spec.claims.last().expect("claim"))
-}
-
-fn example(name: &str) -> String {
-    std::fs::read_to_string(
-        std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-            .join(format!("../examples/{name}.toml")),
-    )
-    .unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// Constructed in examples/independent/issue38.md, section 3, item 6:
@@ -131,15 +115,19 @@ const NONNEGATIVE_NOT_TP: &str = "id = \"b6\"\ncitation = \"constructed\"\nvaria
 #[test]
 fn nonnegative_on_the_box_totally_positive_on_a_smaller_one() {
     let v = decide_text(NONNEGATIVE_NOT_TP, "check = \"nonnegative\"");
-    assert_eq!(v.status, Status::Holds, "{}", lines(&v));
+    assert_eq!(v.status, Status::Holds, "{}", evidence_lines(&v));
     let v = decide_text(NONNEGATIVE_NOT_TP, "check = \"total-positivity\"");
-    assert_eq!(v.status, Status::Fails, "{}", lines(&v));
-    assert!(lines(&v).contains("is -3/256 < 0 (exact)"), "{}", lines(&v));
+    assert_eq!(v.status, Status::Fails, "{}", evidence_lines(&v));
+    assert!(
+        evidence_lines(&v).contains("is -3/256 < 0 (exact)"),
+        "{}",
+        evidence_lines(&v)
+    );
     let v = decide_text(
         NONNEGATIVE_NOT_TP,
         "check = \"total-positivity\"\nranges = { lambda = \"[0, 1]\", mu = \"[0, 1]\" }",
     );
-    assert_eq!(v.status, Status::Holds, "{}", lines(&v));
+    assert_eq!(v.status, Status::Holds, "{}", evidence_lines(&v));
 }
 
 /// Han, Ma & Huang's trigonometric cubic (examples/han-ma-huang-cubic.toml)
@@ -148,11 +136,15 @@ fn nonnegative_on_the_box_totally_positive_on_a_smaller_one() {
 #[test]
 fn a_published_two_parameter_basis_is_totally_positive() {
     let v = decide_text(
-        &example("han-ma-huang-cubic"),
+        &example_text("han-ma-huang-cubic"),
         "check = \"total-positivity\"",
     );
-    assert_eq!(v.status, Status::Holds, "{}", lines(&v));
-    assert!(lines(&v).contains("192 nonzero minors"), "{}", lines(&v));
+    assert_eq!(v.status, Status::Holds, "{}", evidence_lines(&v));
+    assert!(
+        evidence_lines(&v).contains("192 nonzero minors"),
+        "{}",
+        evidence_lines(&v)
+    );
 }
 
 /// The generalized Bernstein basis of degree 3 with three parameters
@@ -178,9 +170,9 @@ fn a_published_three_parameter_basis_both_ways() {
         )
     };
     let v = gb3("[-3, 3]");
-    assert_eq!(v.status, Status::Holds, "{}", lines(&v));
+    assert_eq!(v.status, Status::Holds, "{}", evidence_lines(&v));
     let v = gb3("[-3, 31/10]");
-    assert_eq!(v.status, Status::Fails, "{}", lines(&v));
+    assert_eq!(v.status, Status::Fails, "{}", evidence_lines(&v));
 }
 
 /// A region printed as inequalities — the triangle `a, b ≥ 0`,
@@ -203,26 +195,26 @@ fn a_triangle_of_parameters() {
         &text,
         "check = \"total-positivity\"\nranges = { a = \"[0, 1]\", b = \"[0, 1 - a]\" }",
     );
-    assert_eq!(v.status, Status::Holds, "{}", lines(&v));
+    assert_eq!(v.status, Status::Holds, "{}", evidence_lines(&v));
     assert!(
-        lines(&v).contains("b ∈ [0, 1 - a] (written b = lo + b_u·(hi − lo)"),
+        evidence_lines(&v).contains("b ∈ [0, 1 - a] (written b = lo + b_u·(hi − lo)"),
         "{}",
-        lines(&v)
+        evidence_lines(&v)
     );
     let v = decide_text(
         &text,
         "check = \"total-positivity\"\nranges = { b = \"[0, 1 - a/2]\" }",
     );
-    assert_eq!(v.status, Status::Fails, "{}", lines(&v));
+    assert_eq!(v.status, Status::Fails, "{}", evidence_lines(&v));
     let v = decide_text(
         &text,
         "check = \"nonnegative\"\nranges = { b = \"[0, 1 - a]\" }",
     );
-    assert_eq!(v.status, Status::Holds, "{}", lines(&v));
+    assert_eq!(v.status, Status::Holds, "{}", evidence_lines(&v));
     // an upper end below the lower one somewhere is refused with the reason
     let v = decide_text(
         &text,
         "check = \"unity\"\nranges = { b = \"[0, a - 1/2]\" }",
     );
-    assert_eq!(v.status, Status::NotCheckable, "{}", lines(&v));
+    assert_eq!(v.status, Status::NotCheckable, "{}", evidence_lines(&v));
 }

@@ -4,6 +4,8 @@
 
 use std::path::PathBuf;
 
+use crate::common::example_with;
+
 use trig_specfile::Spec;
 use trig_verification::Entry;
 use trig_verification::{Status, run, spec_audit};
@@ -188,13 +190,6 @@ fn a_printed_join_in_another_convention_gets_the_catalog_verdict() {
 }
 
 /// An example spec file with one more claim appended.
-fn example_with(name: &str, claims: &str) -> Spec {
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../examples")
-        .join(format!("{name}.toml"));
-    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{e}"));
-    Spec::from_str_named(&format!("{text}\n{claims}"), name).unwrap_or_else(|e| panic!("{e}"))
-}
 
 /// `check = "independent"` both ways, on bases outside the catalog, with
 /// the results derived independently in examples/independent/README.md,

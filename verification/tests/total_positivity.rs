@@ -8,6 +8,8 @@
 
 use std::path::PathBuf;
 
+use crate::common::evidence_lines;
+
 use rug::Rational;
 use trig_specfile::Spec;
 use trig_verification::{Status, Verdict, run, spec_audit};
@@ -27,16 +29,6 @@ fn decide(name: &str, range: Option<&str>) -> Verdict {
     spec_audit::decide(&spec, &spec.claims[spec.claims.len() - 1])
 }
 
-fn text(v: &Verdict) -> String {
-    v.evidence
-        .clone()
-        .into_vec()
-        .iter()
-        .map(|e| e.line())
-        .collect::<Vec<_>>()
-        .join("\n")
-}
-
 #[test]
 fn han_and_yan_liang_are_totally_positive_on_their_ranges() {
     for (name, set) in [
@@ -44,9 +36,17 @@ fn han_and_yan_liang_are_totally_positive_on_their_ranges() {
         ("yan-liang-cubic", "λ ∈ [-3, 1]"),
     ] {
         let v = decide(name, None);
-        assert_eq!(v.status, Status::Holds, "{name}: {}", text(&v));
-        assert!(text(&v).contains(set), "{name}: {}", text(&v));
-        assert!(text(&v).contains("convexity preservation"), "{}", text(&v));
+        assert_eq!(v.status, Status::Holds, "{name}: {}", evidence_lines(&v));
+        assert!(
+            evidence_lines(&v).contains(set),
+            "{name}: {}",
+            evidence_lines(&v)
+        );
+        assert!(
+            evidence_lines(&v).contains("convexity preservation"),
+            "{}",
+            evidence_lines(&v)
+        );
     }
 }
 
@@ -55,11 +55,11 @@ fn han_and_yan_liang_are_totally_positive_on_their_ranges() {
 fn beyond_the_nonnegativity_range_total_positivity_fails() {
     for name in ["han-quadratic", "yan-liang-cubic"] {
         let v = decide(name, Some("[-1, 2]"));
-        assert_eq!(v.status, Status::Fails, "{name}: {}", text(&v));
+        assert_eq!(v.status, Status::Fails, "{name}: {}", evidence_lines(&v));
         assert!(
-            text(&v).contains("not totally positive at λ ="),
+            evidence_lines(&v).contains("not totally positive at λ ="),
             "{}",
-            text(&v)
+            evidence_lines(&v)
         );
     }
 }
@@ -70,10 +70,10 @@ fn beyond_the_nonnegativity_range_total_positivity_fails() {
 #[test]
 fn squares_han_is_totally_positive_only_on_minus_one_to_one() {
     let inside = decide("squares-han", None);
-    assert_eq!(inside.status, Status::Holds, "{}", text(&inside));
+    assert_eq!(inside.status, Status::Holds, "{}", evidence_lines(&inside));
     let v = decide("squares-han", Some("[-1, 9/2]"));
-    assert_eq!(v.status, Status::Fails, "{}", text(&v));
-    let all = text(&v);
+    assert_eq!(v.status, Status::Fails, "{}", evidence_lines(&v));
+    let all = evidence_lines(&v);
     assert!(all.contains("all ≥ 0 exactly for λ ∈ [-1, 1]"), "{all}");
     let witness = v
         .evidence

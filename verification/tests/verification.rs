@@ -1,6 +1,7 @@
 //! The audit's integration tests: one binary, one module per area.
 
 mod certified;
+mod common;
 mod fixed_values;
 mod joins;
 mod local_control;

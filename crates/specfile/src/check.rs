@@ -6,8 +6,6 @@ use trig_core::{Affine, ParamRange};
 use trig_deriv::{End, JoinKind, Wrt};
 use trig_symbolic::Sym;
 
-use crate::given::Given;
-
 /// A printed value `name = formula` of one function.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Printed {
@@ -174,4 +172,43 @@ pub struct SpecClaim {
     /// (`at = { lambda = "0" }`, `range = "[0, 0]"`,
     /// `ranges = { mu = "[0, 1]" }`): applied before deciding.
     pub given: Given,
+}
+
+/// A parameter value fixed by a claim.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Fixed {
+    /// The parameter's ASCII name.
+    pub name: String,
+    /// The value as written (`0`, `sqrt(2)/2`, `pi/3`).
+    pub text: String,
+    /// Its exact value: a constant of the exact ring (rationals, `π`,
+    /// radicals).
+    pub value: Sym,
+}
+
+/// The parameter values and ranges a claim gives, in the file's terms.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Given {
+    /// Values substituted before deciding.
+    pub fixed: Vec<Fixed>,
+    /// Ranges replacing the declared ones for this claim (by parameter
+    /// name): the claim is about that box.
+    pub ranges: Vec<(String, ParamRange)>,
+    /// Ranges whose ends are linear in other parameters (a triangle
+    /// `λ ∈ [0, 4]`, `μ ∈ [0, 4 − λ]`).
+    pub between: Vec<Between>,
+}
+
+/// A parameter between two ends linear in the others: `μ ∈ [lo, hi]`.
+/// Decided as `μ = lo + μ′·(hi − lo)` with a new parameter `μ′ ∈ [0, 1]`
+/// (named `{name}_u`): a polynomial change of parameters whose image is
+/// exactly the region, so every exact and certified judge keeps its
+/// meaning, and a witness names `μ′`, from which `μ` is one line away.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Between {
+    pub name: String,
+    /// The range as written (`[0, 4 - lambda]`).
+    pub text: String,
+    pub lo: Sym,
+    pub hi: Sym,
 }

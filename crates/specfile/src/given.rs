@@ -14,47 +14,8 @@ use rug::Rational;
 use trig_core::{Affine, ParamRange, Ring};
 use trig_symbolic::{Poly, Sym};
 
-use crate::check::{Check, Condition, Printed};
+use crate::check::{Between, Check, Condition, Given, Printed};
 use crate::spec::Spec;
-
-/// A parameter value fixed by a claim.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Fixed {
-    /// The parameter's ASCII name.
-    pub name: String,
-    /// The value as written (`0`, `sqrt(2)/2`, `pi/3`).
-    pub text: String,
-    /// Its exact value: a constant of the exact ring (rationals, `π`,
-    /// radicals).
-    pub value: Sym,
-}
-
-/// The parameter values and ranges a claim gives, in the file's terms.
-#[derive(Debug, Clone, PartialEq, Default)]
-pub struct Given {
-    /// Values substituted before deciding.
-    pub fixed: Vec<Fixed>,
-    /// Ranges replacing the declared ones for this claim (by parameter
-    /// name): the claim is about that box.
-    pub ranges: Vec<(String, ParamRange)>,
-    /// Ranges whose ends are linear in other parameters (a triangle
-    /// `λ ∈ [0, 4]`, `μ ∈ [0, 4 − λ]`).
-    pub between: Vec<Between>,
-}
-
-/// A parameter between two ends linear in the others: `μ ∈ [lo, hi]`.
-/// Decided as `μ = lo + μ′·(hi − lo)` with a new parameter `μ′ ∈ [0, 1]`
-/// (named `{name}_u`): a polynomial change of parameters whose image is
-/// exactly the region, so every exact and certified judge keeps its
-/// meaning, and a witness names `μ′`, from which `μ` is one line away.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Between {
-    pub name: String,
-    /// The range as written (`[0, 4 - lambda]`).
-    pub text: String,
-    pub lo: Sym,
-    pub hi: Sym,
-}
 
 /// Why a claim's fixed values cannot be substituted.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]

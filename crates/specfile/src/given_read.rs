@@ -6,8 +6,8 @@ use toml::Spanned;
 use trig_core::ParamRange;
 use trig_symbolic::Sym;
 
+use crate::check::{Between, Fixed, Given};
 use crate::error::{Result, SpecError};
-use crate::given::{Between, Fixed, Given};
 use crate::raw::RawClaim;
 use crate::source::Source;
 use crate::spec::Spec;

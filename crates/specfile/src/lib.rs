@@ -50,10 +50,11 @@ pub mod spec;
 
 pub use any::{AnyBasis, OpenError};
 pub use ast::Grammar;
+pub use check::{Between, Fixed, Given};
 pub use check::{Check, Condition, Direction, Monotone, Printed, SpecClaim, Varied};
 pub use error::{FormulaError, Location, SpecError};
 pub use expression::Expression;
-pub use given::{Between, Fixed, Given, GivenError};
+pub use given::GivenError;
 pub use spec::{Spec, SpecFunction};
 
 use rug::Rational;
