@@ -189,8 +189,6 @@ fn a_printed_join_in_another_convention_gets_the_catalog_verdict() {
     assert_eq!(s.correction.as_deref(), Some(correction.as_str()));
 }
 
-/// An example spec file with one more claim appended.
-
 /// `check = "independent"` both ways, on bases outside the catalog, with
 /// the results derived independently in examples/independent/README.md,
 /// Part D(b): Yan & Liang's cubic is dependent at λ = −3 (b1 ≡ b2), Han's
