@@ -247,3 +247,27 @@ fn conic_arcs_are_decided_both_ways() {
     assert_eq!(v.status, Status::Fails, "{v:?}");
     assert!(format!("{v:?}").contains("392/625"), "{v:?}");
 }
+
+/// `maximal = true` on the convex hull: with the partition of unity the
+/// property holds for every control polygon exactly where the functions
+/// are nonnegative, so the maximal set is the nonnegativity set — Han's
+/// quadratic on exactly [−1, 1] (holds), the squared Han basis on
+/// [−1, 2 + 2√2], not [−1, 1] (fails; examples/independent/, C7).
+#[test]
+fn the_maximal_convex_hull_set() {
+    let claim = "[[claims]]\nid = \"HULL\"\nsource = \"test\"\nstatement = \"convex hull exactly for the range\"\ncheck = \"convex-hull\"\nmaximal = true\n";
+    for (name, status) in [
+        ("han-quadratic", Status::Holds),
+        ("squares-han", Status::Fails),
+    ] {
+        let spec = example_with(name, claim);
+        let v = spec_audit::decide(&spec, spec.claims.last().expect("claim"));
+        assert_eq!(v.status, status, "{name}: {v:?}");
+    }
+    let spec = example_with("squares-han", claim);
+    let v = spec_audit::decide(&spec, spec.claims.last().expect("claim"));
+    assert!(
+        format!("{v:?}").contains("lambda^2 - 4*lambda - 4"),
+        "{v:?}"
+    );
+}

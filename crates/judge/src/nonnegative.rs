@@ -144,13 +144,26 @@ pub fn nonnegative_claim<B: ExactBasis>(
 
 /// The convex-hull property: unity and nonnegativity on the range.
 pub fn convex_hull<B: ExactBasis>(basis: &B, range: Option<&ParamRange>) -> Verdict {
+    convex_hull_claim(basis, range, false)
+}
+
+/// [`convex_hull`], with `maximal` the claim that the range is the maximal
+/// one: with the partition of unity, the convex-hull property of every
+/// control polygon holds exactly where the functions are nonnegative (a
+/// negative `bᵢ(x)` puts the curve of `Pᵢ = 1`, the others `0`, outside
+/// `[0, 1]`), so the maximal set is the maximal nonnegativity set.
+pub fn convex_hull_claim<B: ExactBasis>(
+    basis: &B,
+    range: Option<&ParamRange>,
+    maximal: bool,
+) -> Verdict {
     let mut v = Verdict::all(
         CERTIFIED,
         vec![
             ("partition of unity".into(), unity(basis)),
             (
                 "nonnegativity".into(),
-                nonnegative_claim(basis, range, false),
+                nonnegative_claim(basis, range, maximal),
             ),
         ],
     );

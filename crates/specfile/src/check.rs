@@ -112,7 +112,12 @@ pub enum Check {
     },
     /// Unity and nonnegativity on the range: the convex-hull property of
     /// every curve `Σ bᵢPᵢ` (the standard sufficient condition).
-    ConvexHull { range: Option<ParamRange> },
+    ConvexHull {
+        range: Option<ParamRange>,
+        /// The range is the maximal one (with unity, the maximal
+        /// nonnegativity set).
+        maximal: bool,
+    },
     /// The curve `Σ bᵢPᵢ` with the printed control points (coordinates may
     /// depend on the parameters) satisfies the printed implicit equation
     /// in `X`, `Y` identically (a circle `X² + Y² − 1`, an ellipse, a

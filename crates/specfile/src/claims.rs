@@ -187,6 +187,7 @@ fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
         },
         "convex-hull" => Check::ConvexHull {
             range: one_param_range(src, spec, &c.range)?,
+            maximal: c.maximal.unwrap_or(false),
         },
         "conic" => conic(src, spec, c)?,
         "independent" => Check::Independent {
@@ -249,12 +250,13 @@ fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
             );
         }
     };
-    if let (Some(true), false) = (c.maximal, matches!(check, Check::Nonnegative { .. })) {
+    let with_maximal = matches!(check, Check::Nonnegative { .. } | Check::ConvexHull { .. });
+    if let (Some(true), false) = (c.maximal, with_maximal) {
         return src.invalid(
             c.check.span(),
             "claims.maximal",
             format!(
-                "`maximal = true` asks for the maximal nonnegativity set; it is not decided for `{}` (the claim would be decided without it)",
+                "`maximal = true` asks for the maximal set of nonnegativity or of the convex-hull property; it is not decided for `{}` (the claim would be decided without it)",
                 c.check.get_ref().trim()
             ),
         );

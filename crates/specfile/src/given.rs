@@ -397,7 +397,7 @@ impl<'a> Substitution<'a> {
         let mut c = check.clone();
         match &mut c {
             Check::Nonnegative { range, .. }
-            | Check::ConvexHull { range }
+            | Check::ConvexHull { range, .. }
             | Check::Independent { range }
             | Check::TotalPositivity { range }
             | Check::Monotone { range, .. } => *range = None,

@@ -250,7 +250,9 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
         Check::Nonnegative { range, maximal } => {
             trig_judge::nonnegative::nonnegative_claim(spec, range.as_ref(), *maximal)
         }
-        Check::ConvexHull { range } => trig_judge::nonnegative::convex_hull(spec, range.as_ref()),
+        Check::ConvexHull { range, maximal } => {
+            trig_judge::nonnegative::convex_hull_claim(spec, range.as_ref(), *maximal)
+        }
         Check::Conic {
             points,
             points_text,
