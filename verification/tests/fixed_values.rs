@@ -357,3 +357,63 @@ fn lines_of_the_parameter_plane() {
     );
     assert_status(&v, Status::NotCheckable, "in a circle");
 }
+
+/// A join of two segments with their own parameters (`different = true`):
+/// fixing `λ` fixes both segments' copies `λ1`, `λ2`. Han, Ma & Huang's C¹
+/// condition `Q1 = P3 + (μ1 + 2)/(λ2 + 2)·(P3 − P2)` (singular at
+/// λ2 = −2 on the closed box) at λ = 0 is `Q1 = P3 + (μ1 + 2)/2·(P3 − P2)`;
+/// at λ = μ = 0 it is `Q1 = 2P3 − P2`, and `Q1 = 3P3 − 2P2` is wrong.
+#[test]
+fn a_join_of_segments_with_their_own_parameters_at_a_fixed_value() {
+    let join = |q1: &str, at: &str| {
+        decide(
+            "han-ma-huang-cubic",
+            "join",
+            &format!(
+                "join = \"C1\"\nwrt = \"t\"\ndifferent = true\nconditions = [\"Q0 = P3\", \"Q1 = {q1}\"]\nat = {{ {at} }}"
+            ),
+        )
+    };
+    let v = join("P3 + (mu1 + 2)/(lambda2 + 2)*(P3 - P2)", "lambda = \"0\"");
+    assert_eq!(v.status, Status::Holds, "{v:?}");
+    let v = join("2*P3 - P2", "lambda = \"0\", mu = \"0\"");
+    assert_eq!(v.status, Status::Holds, "{v:?}");
+    let v = join("3*P3 - 2*P2", "lambda = \"0\", mu = \"0\"");
+    assert_eq!(v.status, Status::Fails, "{v:?}");
+}
+
+/// Fixing `m` leaves a parameter `m1` alone (only a join of segments with
+/// their own parameters has copies `m1`, `m2`): `b1 = m1·t` sums to 1 with
+/// `b0 = 1 − t` at m1 = 1, whatever m is fixed to.
+#[test]
+fn fixing_a_parameter_leaves_one_with_a_longer_name_alone() {
+    let spec = Spec::from_str_named(
+        "id = \"names\"\ncitation = \"test\"\nvariable = \"polynomial\"\n[[parameters]]\nname = \"m\"\nrange = \"[0, 2]\"\n[[parameters]]\nname = \"m1\"\nrange = \"[0, 2]\"\n[[functions]]\nname = \"b0\"\nformula = \"1 - t + (m - 1)*0\"\n[[functions]]\nname = \"b1\"\nformula = \"m1*t\"\n[[claims]]\nid = \"U\"\nsource = \"t\"\nstatement = \"t\"\ncheck = \"unity\"\nat = { m = \"1\" }\n[[claims]]\nid = \"U1\"\nsource = \"t\"\nstatement = \"t\"\ncheck = \"unity\"\nat = { m = \"1\", m1 = \"1\" }\n",
+        "names",
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(
+        spec_audit::decide(&spec, &spec.claims[0]).status,
+        Status::Fails
+    );
+    assert_eq!(
+        spec_audit::decide(&spec, &spec.claims[1]).status,
+        Status::Holds
+    );
+}
+
+/// A claim's own box that leaves out the pole of a printed join formula
+/// decides the formula where it is defined: Han, Ma & Huang's C¹ condition
+/// divides by λ2 + 2, which vanishes only at λ = −2, outside [0, 1].
+#[test]
+fn a_box_without_the_pole_of_a_printed_formula() {
+    let claim = "join = \"C1\"\nwrt = \"t\"\ndifferent = true\nconditions = [\"Q0 = P3\", \"Q1 = P3 + (mu1 + 2)/(lambda2 + 2)*(P3 - P2)\"]";
+    let v = decide("han-ma-huang-cubic", "join", claim);
+    assert_eq!(v.status, Status::Fails, "{v:?}");
+    let v = decide(
+        "han-ma-huang-cubic",
+        "join",
+        &format!("{claim}\nranges = {{ lambda = \"[0, 1]\" }}"),
+    );
+    assert_eq!(v.status, Status::Holds, "{v:?}");
+}

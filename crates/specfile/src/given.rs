@@ -78,6 +78,13 @@ impl Given {
     pub fn apply(&self, spec: &Spec, check: &Check) -> Result<(Spec, Check), GivenError> {
         let mut spec = spec.clone();
         let mut check = check.clone();
+        let segments = matches!(
+            check,
+            Check::Join {
+                different: true,
+                ..
+            }
+        );
         for (name, range) in &self.ranges {
             if let Some(p) = spec.params.iter_mut().find(|p| &p.name == name) {
                 p.range = range.clone();
@@ -113,7 +120,7 @@ impl Given {
             let Some(index) = spec.params.iter().position(|p| p.name == f.name) else {
                 continue;
             };
-            let subst = Substitution::new(&spec, index, &value, &at)?;
+            let subst = Substitution::new(&spec, index, &value, &at, segments)?;
             check = subst.check(&check)?;
             spec = subst.spec(&spec)?;
         }
@@ -142,7 +149,7 @@ impl Given {
                 });
             }
             let value = lo.clone() + &(Sym::var(&fraction) * &(hi - &lo));
-            let subst = Substitution::new(&spec, index, &value, &at)?;
+            let subst = Substitution::new(&spec, index, &value, &at, segments)?;
             check = subst.check(&check)?;
             if let Check::Symmetry { at, params, .. } = &mut check {
                 at.push(Rational::from((1, 2)));
@@ -165,7 +172,53 @@ impl Given {
             });
             spec.domain.param_names.push(fraction);
         }
+        singular_again(&spec, &mut check);
         Ok((spec, check))
+    }
+}
+
+/// The divisions of the printed formulas that may vanish, found again on
+/// the specialised basis and the claim's ranges: the notes read with the
+/// printed claim spoke of the declared ones (a pole at `λ2 = −2` is gone at
+/// `λ = 0`, and outside a claim's box `λ ∈ [0, 1]`).
+fn singular_again(spec: &Spec, check: &mut Check) {
+    let mut ranges = spec.ranges();
+    if matches!(
+        check,
+        Check::Join {
+            different: true,
+            ..
+        }
+    ) {
+        for k in [1, 2] {
+            for p in &spec.params {
+                ranges.push((format!("{}{k}", p.name), p.range.clone()));
+            }
+        }
+    }
+    let divisions = |v: &Sym| -> Vec<String> {
+        v.denominator()
+            .keys()
+            .filter_map(|f| {
+                crate::nonvanishing::check(&Sym::from_poly(f.clone()), &spec.domain, &ranges).err()
+            })
+            .collect()
+    };
+    match check {
+        Check::Join { conditions, .. } => {
+            for c in conditions.iter_mut() {
+                c.singular = divisions(&c.value);
+            }
+        }
+        Check::Conic {
+            points, singular, ..
+        } => {
+            *singular = points
+                .iter()
+                .flat_map(|(x, y)| divisions(x).into_iter().chain(divisions(y)))
+                .collect();
+        }
+        _ => {}
     }
 }
 
@@ -235,11 +288,25 @@ struct Substitution<'a> {
 }
 
 impl<'a> Substitution<'a> {
-    fn new(spec: &Spec, index: usize, value: &'a Sym, at: &'a str) -> Result<Self, GivenError> {
+    /// With `segments` (a join whose segments have their own parameters
+    /// `p1`, `p2`) the copies `name1`, `name2` take the value too, each with
+    /// the other parameters of its own segment.
+    fn new(
+        spec: &Spec,
+        index: usize,
+        value: &'a Sym,
+        at: &'a str,
+        segments: bool,
+    ) -> Result<Self, GivenError> {
         let name = spec.params[index].name.clone();
         let mut pairs = vec![(name.clone(), value.clone())];
-        for segment in [1, 2] {
-            pairs.push((format!("{name}{segment}"), value.clone()));
+        if segments {
+            for segment in [1, 2] {
+                let own = spec.params.iter().fold(value.clone(), |v, p| {
+                    v.subs(&p.name, &Sym::var(&format!("{}{segment}", p.name)))
+                });
+                pairs.push((format!("{name}{segment}"), own));
+            }
         }
         for atom in trig_certify::atoms::param_atoms(&spec.domain) {
             if atom.param != index {
