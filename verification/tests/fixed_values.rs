@@ -417,3 +417,41 @@ fn a_box_without_the_pole_of_a_printed_formula() {
     );
     assert_eq!(v.status, Status::Holds, "{v:?}");
 }
+
+/// A conic claim for some, or for no, value of the parameter
+/// (`for = "some value"`, `"no value"`), decided exactly from the common
+/// zeros of the residual's coefficients (examples/independent/issue38.md):
+/// Han's quadratic with the polygon (1, 0), (1, 1), (0, 1) is on the unit
+/// circle exactly at λ = 0 and on the line X + Y = 1 exactly at λ = −1; the
+/// rational quadratic is the unit circle exactly at w = √2/2, irrational;
+/// a residual in the sine of a parameter (the C-Bézier quadratic) is
+/// `not-checkable` with the reason.
+#[test]
+fn conics_for_some_value_and_for_no_value() {
+    let circle = format!("{QUARTER}\nvalue = \"X^2 + Y^2 - 1\"");
+    let line = format!("{QUARTER}\nvalue = \"X + Y - 1\"");
+    let decide_for = |name: &str, conic: &str, quantifier: &str| {
+        decide(name, "conic", &format!("{conic}\nfor = \"{quantifier}\""))
+    };
+    let v = decide_for("han-quadratic", &circle, "some value");
+    assert_status(&v, Status::Holds, "exactly for λ = 0 in the range");
+    let v = decide_for("han-quadratic", &circle, "no value");
+    assert_status(&v, Status::Fails, "exactly for λ = 0 in the range");
+    let v = decide_for("han-quadratic", &line, "some value");
+    assert_status(&v, Status::Holds, "exactly for λ = -1 in the range");
+    // away from −1 the line is never reached
+    let v = decide(
+        "han-quadratic",
+        "conic",
+        &format!("{line}\nfor = \"no value\"\nrange = \"[0, 1]\""),
+    );
+    assert_status(&v, Status::Holds, "for no parameter value in the range");
+    let v = decide_for("rational-quadratic", &circle, "some value");
+    assert_status(
+        &v,
+        Status::Holds,
+        "the root of 2*w^2 - 1 = 0 in [0.707106781186, 0.707106781187] (minimal polynomial)",
+    );
+    let v = decide_for("c-bezier-quadratic", &circle, "no value");
+    assert_status(&v, Status::NotCheckable, "`cos(alpha)`");
+}

@@ -42,7 +42,7 @@ const MAX_FUNCTIONS: usize = 6;
 
 /// The atoms of the variable whose monomials are independent in the
 /// normal form of the exact ring.
-pub(super) const VARIABLE_ATOMS: [&str; 3] = ["s", "c", "t"];
+pub(crate) const VARIABLE_ATOMS: [&str; 3] = ["s", "c", "t"];
 
 /// One derivative in the variable of the basis (`d/dθ` for formulas in
 /// `s`, `c` alone: a constant factor per row does not change `W ≡ 0`).
@@ -94,7 +94,7 @@ pub fn wronskian<B: ExactBasis>(basis: &B) -> Sym {
 }
 
 /// The coefficients of `p` in the monomials of the variable's atoms.
-pub(super) fn coefficients(p: &Poly) -> Vec<Poly> {
+pub(crate) fn coefficients(p: &Poly) -> Vec<Poly> {
     let mut out = vec![p.clone()];
     for atom in VARIABLE_ATOMS {
         out = out

@@ -251,6 +251,15 @@ pub fn conic<B: ExactBasis>(
     equation: &Sym,
     equation_text: &str,
 ) -> Verdict {
+    let residual = conic_residual(basis, points, equation);
+    let mut v = crate::exact::identity(&conic_label(equation_text), &residual, &Sym::zero());
+    v.method = "exact: the printed equation with X, Y replaced by the coordinates of Σ bᵢPᵢ, decided in the symbolic ring".into();
+    v
+}
+
+/// The printed equation at `(X, Y) = Σ bᵢPᵢ`: zero exactly where the curve
+/// lies on the conic.
+pub fn conic_residual<B: ExactBasis>(basis: &B, points: &[(Sym, Sym)], equation: &Sym) -> Sym {
     let b = basis_of(basis);
     let along = |pick: fn(&(Sym, Sym)) -> &Sym| {
         b.iter()
@@ -258,9 +267,10 @@ pub fn conic<B: ExactBasis>(
             .fold(Sym::zero(), |acc, (f, p)| acc + &(f.clone() * pick(p)))
     };
     let (x, y) = (along(|p| &p.0), along(|p| &p.1));
-    let residual = equation.subs("X", &x).subs("Y", &y);
-    let label = format!("{equation_text} at (X, Y) = Σ bᵢPᵢ");
-    let mut v = crate::exact::identity(&label, &residual, &Sym::zero());
-    v.method = "exact: the printed equation with X, Y replaced by the coordinates of Σ bᵢPᵢ, decided in the symbolic ring".into();
-    v
+    equation.subs("X", &x).subs("Y", &y)
+}
+
+/// How a conic's residual is named in the evidence.
+pub fn conic_label(equation_text: &str) -> String {
+    format!("{equation_text} at (X, Y) = Σ bᵢPᵢ")
 }

@@ -131,6 +131,9 @@ pub enum Check {
         equation_text: String,
         /// Divisions of the printed points that vanish inside the ranges.
         singular: Vec<String>,
+        /// For some or for no parameter value (`for = "some value"`,
+        /// `"no value"`); for every value without it.
+        quantifier: Option<Quantifier>,
     },
     /// The functions are linearly independent for every parameter value of
     /// the range (the declared ranges without one).
@@ -154,6 +157,15 @@ pub enum Check {
     /// the varied control enters exactly the printed segments `j + o`,
     /// `o ∈ segments`.
     LocalControl { varied: Varied, segments: Vec<i64> },
+}
+
+/// How a printed identity is quantified over the parameter values.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Quantifier {
+    /// "for some value of λ".
+    Some,
+    /// "for no value of λ".
+    No,
 }
 
 /// What a local-control claim varies.

@@ -7,7 +7,7 @@ use trig_core::{Affine, parse_exact};
 use trig_deriv::{End, JoinKind, Wrt};
 use trig_symbolic::{Names, Sym};
 
-use crate::check::{Check, Condition, Direction, Monotone, Printed, SpecClaim, Varied};
+use crate::check::{Check, Condition, Direction, Monotone, Printed, Quantifier, SpecClaim, Varied};
 use crate::error::{Result, SpecError};
 use crate::given_read::{given, one_param_range};
 use crate::raw::RawClaim;
@@ -261,6 +261,16 @@ fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
             ),
         );
     }
+    if let (Some(q), false) = (&c.quantifier, matches!(check, Check::Conic { .. })) {
+        return src.invalid(
+            q.span(),
+            "claims.for",
+            format!(
+                "`for` (some value, no value) is decided for `conic` claims, not for `{}`",
+                c.check.get_ref().trim()
+            ),
+        );
+    }
     let given = given(src, spec, c, c.check.get_ref().trim())?;
     let varied = match &check {
         Check::ShapeEffect { parameter, .. } => Some(parameter),
@@ -409,12 +419,28 @@ fn conic(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check> {
     let item = need(src, c, &c.value, "value")?;
     let extra = ["X".to_string(), "Y".to_string()];
     let equation = formula_in(src, spec, item, "", item.get_ref(), &extra)?;
+    let quantifier = match &c.quantifier {
+        None => None,
+        Some(q) => match q.get_ref().trim() {
+            "every value" => None,
+            "some value" => Some(Quantifier::Some),
+            "no value" => Some(Quantifier::No),
+            other => {
+                return src.invalid(
+                    q.span(),
+                    "claims.for",
+                    format!("`{other}`: expected `every value`, `some value` or `no value`"),
+                );
+            }
+        },
+    };
     Ok(Check::Conic {
         points,
         points_text,
         equation,
         equation_text: item.get_ref().trim().to_string(),
         singular,
+        quantifier,
     })
 }
 

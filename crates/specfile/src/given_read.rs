@@ -151,11 +151,13 @@ pub(crate) fn given(src: &Source<'_>, spec: &Spec, c: &RawClaim, kind: &str) -> 
             ParamRange::parse(r.get_ref()).or_else(|m| src.invalid(r.span(), "claims.range", m))?;
         match point_of(&range) {
             Some(point) => fix(&mut out, p.name.clone(), &point, r.span(), "range")?,
+            // a quantified claim (`for = "some value"`) is about its range
+            None if c.quantifier.is_some() => out.ranges.push((p.name.clone(), range)),
             None if !RANGED.contains(&kind) => {
                 return src.invalid(
                     r.span(),
                     "claims.range",
-                    format!("`{kind}` takes no range of values; a one-point range `[v, v]` fixes the value"),
+                    format!("`{kind}` takes no range of values (but with `for = \"some value\"` or `\"no value\"`); a one-point range `[v, v]` fixes the value"),
                 );
             }
             None => {}

@@ -51,7 +51,7 @@ pub mod spec;
 pub use any::{AnyBasis, OpenError};
 pub use ast::Grammar;
 pub use check::{Between, Fixed, Given};
-pub use check::{Check, Condition, Direction, Monotone, Printed, SpecClaim, Varied};
+pub use check::{Check, Condition, Direction, Monotone, Printed, Quantifier, SpecClaim, Varied};
 pub use error::{FormulaError, Location, SpecError};
 pub use expression::Expression;
 pub use given::GivenError;

@@ -74,4 +74,7 @@ pub struct RawClaim {
     pub control: Option<Spanned<String>>,
     pub scope: Option<Spanned<String>>,
     pub segments: Option<Vec<i64>>,
+    /// `for = "some value"` or `"no value"`.
+    #[serde(rename = "for")]
+    pub quantifier: Option<Spanned<String>>,
 }

@@ -259,8 +259,17 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
             equation,
             equation_text,
             singular,
+            quantifier,
         } => {
-            let mut v = trig_judge::span::conic(spec, points, equation, equation_text);
+            let mut v = match quantifier {
+                None => trig_judge::span::conic(spec, points, equation, equation_text),
+                Some(q) => trig_judge::exceptional::quantified(
+                    spec,
+                    &trig_judge::span::conic_label(equation_text),
+                    &trig_judge::span::conic_residual(spec, points, equation),
+                    *q,
+                ),
+            };
             v.evidence.insert(
                 0,
                 format!("control points as printed: {}", points_text.join("; ")),
