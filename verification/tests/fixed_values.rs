@@ -278,6 +278,13 @@ fn fixed_values_that_cannot_be_taken() {
         )
         .contains("not decided for `total-positivity`")
     );
+    assert!(
+        err(
+            "han-quadratic",
+            "check = \"nonnegative\"\nmaximal = true\nrange = \"[1, 1]\""
+        )
+        .contains("no range is left to be maximal")
+    );
     let spec = Spec::from_str_named(
         "id = \"pole\"\ncitation = \"test\"\nvariable = \"polynomial\"\n[[parameters]]\nname = \"m\"\nrange = \"[0, 1]\"\n[[functions]]\nname = \"b0\"\nformula = \"(1 - t)/(m + 2)\"\n[[functions]]\nname = \"b1\"\nformula = \"1 - b0\"\n[[claims]]\nid = \"U\"\nsource = \"t\"\nstatement = \"t\"\ncheck = \"unity\"\nat = { m = \"-2\" }\n",
         "pole",

@@ -272,6 +272,14 @@ fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
         );
     }
     let given = given(src, spec, c, c.check.get_ref().trim())?;
+    if c.maximal == Some(true) && !spec.params.is_empty() && given.fixed.len() == spec.params.len()
+    {
+        return src.invalid(
+            c.check.span(),
+            "claims.maximal",
+            "`maximal = true` with every parameter fixed: no range is left to be maximal (drop `maximal`, or leave a parameter free)".into(),
+        );
+    }
     let varied = match &check {
         Check::ShapeEffect { parameter, .. } => Some(parameter),
         Check::LocalControl {
