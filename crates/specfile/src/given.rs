@@ -1,6 +1,8 @@
 //! What a claim fixes of the parameters before it is decided: values
-//! (`at = { lambda = "0" }`, or a one-point range `range = "[0, 0]"`) and
-//! narrower ranges of the others (`range = { mu = "[0, 1]" }`).
+//! (`at = { lambda = "0" }`, or a one-point range `range = "[0, 0]"`),
+//! lines (`at = { mu = "lambda" }`), its own ranges of the others
+//! (`ranges = { mu = "[0, 1]" }`) and regions bounded by lines
+//! (`ranges = { mu = "[0, 4 - lambda]" }`, [`Between`]).
 //!
 //! A fixed value is substituted into every formula of the basis and of the
 //! claim before any judge runs — identities, conics and inequalities alike
