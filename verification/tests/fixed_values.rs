@@ -269,14 +269,11 @@ fn fixed_values_that_cannot_be_taken() {
         )
         .contains("also fixes")
     );
-    // `maximal` is decided for nonnegativity only: elsewhere it is refused,
-    // never silently ignored
+    // `maximal` is decided for nonnegativity, the convex hull and total
+    // positivity: elsewhere it is refused, never silently ignored
     assert!(
-        err(
-            "han-quadratic",
-            "check = \"total-positivity\"\nmaximal = true"
-        )
-        .contains("not decided for `total-positivity`")
+        err("han-quadratic", "check = \"independent\"\nmaximal = true")
+            .contains("not decided for `independent`")
     );
     assert!(
         err(

@@ -112,3 +112,43 @@ fn catalog_claims_of_total_positivity() {
     }
     assert_eq!(status("S4"), Status::NotCheckable);
 }
+
+/// `maximal = true` on total positivity (one parameter): Han's quadratic
+/// is totally positive on [−1, 1] and nonnegative exactly there, so the
+/// range is exactly the maximal set; on the narrower [−1, 1/2] the
+/// certificate proves total positivity beyond 1/2 (fails); the squared Han
+/// basis is totally positive on [−1, 1] but nonnegative up to 2 + 2√2, so
+/// the end 1 is only bracketed (not-checkable, called a bracket).
+#[test]
+fn the_maximal_set_of_total_positivity() {
+    let claim = |range: &str| {
+        format!(
+            "[[claims]]\nid = \"TPMAX\"\nsource = \"test\"\nstatement = \"TP exactly\"\ncheck = \"total-positivity\"\nmaximal = true\n{range}"
+        )
+    };
+    let decide_in = |name: &str, range: &str| {
+        let spec = crate::common::example_with(name, &claim(range));
+        spec_audit::decide(&spec, spec.claims.last().expect("claim"))
+    };
+    let v = decide_in("han-quadratic", "");
+    assert_eq!(v.status, Status::Holds, "{}", evidence_lines(&v));
+    assert!(
+        evidence_lines(&v).contains("exactly the maximal set"),
+        "{}",
+        evidence_lines(&v)
+    );
+    let v = decide_in("han-quadratic", "range = \"[-1, 1/2]\"");
+    assert_eq!(v.status, Status::Fails, "{}", evidence_lines(&v));
+    assert!(
+        evidence_lines(&v).contains("outside the printed range, the basis is totally positive too"),
+        "{}",
+        evidence_lines(&v)
+    );
+    let v = decide_in("squares-han", "");
+    assert_eq!(v.status, Status::NotCheckable, "{}", evidence_lines(&v));
+    assert!(
+        evidence_lines(&v).contains("(a bracket)"),
+        "{}",
+        evidence_lines(&v)
+    );
+}

@@ -43,4 +43,5 @@ pub mod shape_effect;
 pub mod span;
 pub mod symmetry;
 pub mod total_positivity;
+pub mod tp_maximal;
 pub mod unity;

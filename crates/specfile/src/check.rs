@@ -149,7 +149,11 @@ pub enum Check {
     /// The basis is normalized totally positive (hence variation
     /// diminishing) for every parameter value of the range (the declared
     /// one unless given).
-    TotalPositivity { range: Option<ParamRange> },
+    TotalPositivity {
+        range: Option<ParamRange>,
+        /// The range is the maximal set of total positivity.
+        maximal: bool,
+    },
     /// The uniform B-spline assembled from the `n` functions (piece `k` is
     /// function `n − 1 − k`) is `Cᵏ` at its knots.
     Continuity { order: usize },

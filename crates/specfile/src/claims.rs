@@ -195,6 +195,7 @@ fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
         },
         "total-positivity" => Check::TotalPositivity {
             range: one_param_range(src, spec, &c.range)?,
+            maximal: c.maximal.unwrap_or(false),
         },
         "monotone" => monotone(src, spec, c)?,
         "shape-effect" => shape_effect(src, spec, c)?,
@@ -250,13 +251,16 @@ fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
             );
         }
     };
-    let with_maximal = matches!(check, Check::Nonnegative { .. } | Check::ConvexHull { .. });
+    let with_maximal = matches!(
+        check,
+        Check::Nonnegative { .. } | Check::ConvexHull { .. } | Check::TotalPositivity { .. }
+    );
     if let (Some(true), false) = (c.maximal, with_maximal) {
         return src.invalid(
             c.check.span(),
             "claims.maximal",
             format!(
-                "`maximal = true` asks for the maximal set of nonnegativity or of the convex-hull property; it is not decided for `{}` (the claim would be decided without it)",
+                "`maximal = true` asks for the maximal set of nonnegativity, of the convex-hull property or of total positivity; it is not decided for `{}` (the claim would be decided without it)",
                 c.check.get_ref().trim()
             ),
         );

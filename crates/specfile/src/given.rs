@@ -468,7 +468,7 @@ impl<'a> Substitution<'a> {
             Check::Nonnegative { range, .. }
             | Check::ConvexHull { range, .. }
             | Check::Independent { range }
-            | Check::TotalPositivity { range }
+            | Check::TotalPositivity { range, .. }
             | Check::Monotone { range, .. } => *range = None,
             Check::EndpointValues { values, .. } | Check::EndpointDerivatives { values, .. } => {
                 *values = self.printed(values)?;

@@ -282,9 +282,14 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
             v
         }
         Check::Independent { range } => trig_judge::independence::independent(spec, range.as_ref()),
-        Check::TotalPositivity { range } => {
-            trig_judge::total_positivity::normalized_totally_positive(spec, range.as_ref())
-        }
+        Check::TotalPositivity {
+            range,
+            maximal: false,
+        } => trig_judge::total_positivity::normalized_totally_positive(spec, range.as_ref()),
+        Check::TotalPositivity {
+            range,
+            maximal: true,
+        } => trig_judge::tp_maximal::maximal_totally_positive(spec, range.as_ref()),
         Check::Monotone { items, range } => {
             trig_judge::nonnegative::monotone_claim(spec, items, range.as_ref())
         }
