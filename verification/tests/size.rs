@@ -60,3 +60,37 @@ fn bernstein_bases_of_degree_3_to_20_hold_every_property() {
         }
     }
 }
+
+/// A big basis that is not totally positive: the Bernstein basis of degree
+/// 12 with b1 and b2 exchanged (the 2 × 2 minor of (b1, b2) at two points
+/// is negative). Its coefficient matrix is a permutation: no bidiagonal
+/// factorisation exists and the enumeration of minors is past its limit,
+/// yet a negative collocation minor refutes, exactly.
+#[test]
+fn a_big_basis_that_is_not_totally_positive_is_refuted() {
+    let n = 12;
+    let mut text = "id = \"swapped\"\ncitation = \"test\"\nvariable = \"polynomial\"\n".to_string();
+    let order: Vec<u64> = (0..=n)
+        .map(|i| match i {
+            1 => 2,
+            2 => 1,
+            i => i,
+        })
+        .collect();
+    for (k, i) in order.into_iter().enumerate() {
+        text.push_str(&format!(
+            "[[functions]]\nname = \"b{k}\"\nformula = \"{}*t^{i}*(1 - t)^{}\"\n",
+            binomial(n, i),
+            n - i
+        ));
+    }
+    text.push_str("[[claims]]\nid = \"TP\"\nsource = \"test\"\nstatement = \"TP\"\ncheck = \"total-positivity\"\n");
+    let spec = Spec::from_str_named(&text, "swapped").unwrap_or_else(|e| panic!("{e}"));
+    let v = spec_audit::decide(&spec, &spec.claims[0]);
+    assert_eq!(v.status, Status::Fails, "{:?}", v.evidence);
+    assert!(
+        format!("{:?}", v.evidence).contains("minor of the collocation matrix"),
+        "{:?}",
+        v.evidence
+    );
+}

@@ -80,9 +80,23 @@ pub fn totally_positive<B: ExactBasis>(basis: &B, range: Option<&ParamRange>) ->
             return Verdict::not_checkable(format!("no factorisation: {why}"));
         }
         Err(TpError::TooLarge(too_large)) => {
-            return Verdict::not_checkable(format!(
-                "the totally positive factorisation checks every minor of its coefficient matrix, and {too_large}; with a parameter the bidiagonal factorisation (Neville elimination), which would not enumerate them, is not implemented (without parameters it decides)"
-            ));
+            let why = match param {
+                Some(_) => format!(
+                    "the totally positive factorisation checks every minor of its coefficient matrix, and {too_large}; with a parameter the bidiagonal factorisation (Neville elimination), which would not enumerate them, is not implemented"
+                ),
+                None => format!(
+                    "the bidiagonal factorisation (Neville elimination) of the coefficient matrix was not found, and {too_large}"
+                ),
+            };
+            // a negative collocation minor still refutes (without a
+            // parameter: at the basis itself)
+            if param.is_none() {
+                if let Some(neg) = refute(&fs, trig, None) {
+                    let evidence = vec![Evidence::note(why), refutation(basis, &neg, &[], trig)];
+                    return Verdict::new(Status::Fails, TOTALLY_POSITIVE, evidence);
+                }
+            }
+            return Verdict::not_checkable(why);
         }
     };
     let symbol = param.map_or("p", |p| p.symbol.as_str());

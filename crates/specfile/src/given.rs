@@ -37,6 +37,10 @@ pub enum GivenError {
         at: String,
         why: String,
     },
+    /// What the claim gives cannot be taken as given (values that refer
+    /// to each other, a region whose ends are not ordered).
+    #[error("{what}: {why}")]
+    Refused { what: String, why: String },
 }
 
 impl Given {
@@ -104,9 +108,8 @@ impl Given {
                 })?;
             }
             if value.variables().contains(&f.name) {
-                return Err(GivenError::NotExact {
-                    what: format!("`{}`", f.name),
-                    at: format!("{} = {}", f.name, f.text),
+                return Err(GivenError::Refused {
+                    what: format!("{} = {}", f.name, f.text),
                     why: "the values fixed refer to each other in a circle".into(),
                 });
             }
@@ -144,9 +147,8 @@ impl Given {
             b.ordered(&spec, &lo, &hi, &at)?;
             let fraction = b.fraction();
             if spec.params.iter().any(|p| p.name == fraction) {
-                return Err(GivenError::NotExact {
-                    what: format!("the new parameter `{fraction}`"),
-                    at,
+                return Err(GivenError::Refused {
+                    what: format!("the new parameter `{fraction}` for {at}"),
                     why: "a parameter of the basis has that name".into(),
                 });
             }
@@ -234,19 +236,20 @@ impl Between {
     /// difference `≥ 0` at every corner of their box (finite ends).
     fn ordered(&self, spec: &Spec, lo: &Sym, hi: &Sym, at: &str) -> Result<(), GivenError> {
         let names: Vec<String> = spec.params.iter().map(|p| p.name.clone()).collect();
-        let refuse = |why: &str| GivenError::NotExact {
+        let refuse = |why: &str| GivenError::Refused {
             what: format!("the range {at}"),
-            at: at.to_string(),
             why: why.to_string(),
         };
         let gap = affine_of(&(hi.clone() - lo), &names)
             .filter(|g| g.pi == 0)
-            .ok_or_else(|| refuse("its ends are linear in the other parameters"))?;
+            .ok_or_else(|| refuse("its ends must be linear in the other parameters"))?;
         let mut corners = vec![gap.constant.clone()];
         for (i, q) in &gap.params {
             let r = &spec.params[*i].range;
             let (Some(a), Some(b)) = (r.lo.value(), r.hi.value()) else {
-                return Err(refuse("the parameters its ends use have finite ranges"));
+                return Err(refuse(
+                    "its ends may use only parameters with finite ranges",
+                ));
             };
             if r.pi
                 || *i
@@ -255,7 +258,9 @@ impl Between {
                         .position(|n| *n == self.name)
                         .unwrap_or(usize::MAX)
             {
-                return Err(refuse("its ends use other parameters with rational ranges"));
+                return Err(refuse(
+                    "its ends may use only other parameters with rational ranges",
+                ));
             }
             corners = corners
                 .iter()

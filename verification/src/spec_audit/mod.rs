@@ -234,7 +234,12 @@ pub fn decide(spec: &Spec, claim: &SpecClaim) -> Verdict {
             v.evidence.insert(
                 0,
                 format!(
-                    "decided at {given}, as the claim states: the values substituted into the formulas of the basis and of the claim before deciding"
+                    "decided at {given}, as the claim states: {}",
+                    if claim.given.fixed.is_empty() && claim.given.between.is_empty() {
+                        "these ranges in place of the declared ones"
+                    } else {
+                        "the values substituted into the formulas of the basis and of the claim before deciding"
+                    }
                 ),
             );
             v
