@@ -271,3 +271,23 @@ fn the_maximal_convex_hull_set() {
         "{v:?}"
     );
 }
+
+/// A function negative on several quarter turns of its domain is certified
+/// piece by piece, each piece rotated to `[0, π/2]`: a witness on a piece
+/// is in the piece's own angle `φ = θ − kπ/2`, and says so (it read as
+/// `θ = 0`, a point outside the piece, where the function is 0, not −2).
+#[test]
+fn a_witness_on_a_quarter_turn_names_its_own_angle() {
+    let spec = Spec::from_str_named(
+        "id = \"qt\"\ncitation = \"test\"\nvariable = \"t\"\ndomain = \"[0, 3*pi/2]\"\n[[functions]]\nname = \"b0\"\nformula = \"1 + sin(t)\"\n[[functions]]\nname = \"b1\"\nformula = \"-sin(t) + cos(t) - 1\"\n[[functions]]\nname = \"b2\"\nformula = \"1 - cos(t)\"\n",
+        "qt",
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let entries = spec_audit::audit(&spec);
+    let v = &entry(&entries, "nonnegativity").verdict;
+    assert_eq!(v.status, Status::Fails);
+    let text = format!("{:?}", v.evidence);
+    assert!(text.contains("φ = θ − π/2 ∈ [0, π/2]"), "{text}");
+    assert!(text.contains("name: \"φ\""), "{text}");
+    assert!(!text.contains("c = cos θ; θ ≈ 0.000000"), "{text}");
+}

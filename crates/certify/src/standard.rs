@@ -26,6 +26,38 @@ pub struct Standard {
     /// Where each piece lies in the original domain (`θ ∈ [π/2, π]`);
     /// empty strings when there is one piece with the identity map.
     pub labels: Vec<String>,
+    /// How each piece's own variable maps to the original one.
+    pub maps: Vec<PieceMap>,
+}
+
+/// How a piece's own variable (the one its formula, and a witness found on
+/// it, is written in) maps to the basis variable.
+#[derive(Debug, Clone, PartialEq)]
+pub enum PieceMap {
+    /// The piece is the function itself.
+    Identity,
+    /// `θ = kπ/2 + φ`, the piece written in `s = sin φ`, `c = cos φ`.
+    Quarter(i64),
+    /// `t = a + (b − a)τ`, the piece written in `τ` (printed `t`).
+    Affine { a: Rational, b: Rational },
+}
+
+impl PieceMap {
+    /// How a witness point on the piece reads in the basis variable, for
+    /// a note (`None` for the identity).
+    pub fn note(&self) -> Option<String> {
+        match self {
+            PieceMap::Identity | PieceMap::Quarter(0) => None,
+            PieceMap::Quarter(k) => Some(format!(
+                "the point is in the piece's own angle φ = θ − {0} ∈ [0, π/2] (its formula rotated exactly): z = tan(φ/2), s = sin φ, c = cos φ, and θ = {0} + φ",
+                half_pi(*k)
+            )),
+            PieceMap::Affine { a, b } => Some(format!(
+                "the point is in the piece's own variable τ ∈ [0, 1], printed t: the basis variable is {a} + {}·τ",
+                Rational::from(b - a)
+            )),
+        }
+    }
 }
 
 /// `(s, c) ↦ (sin(kπ/2 + φ), cos(kπ/2 + φ))` in the atoms of `φ`.
@@ -73,6 +105,7 @@ pub fn standardize(f: &Sym, domain: &Domain) -> Result<Standard, String> {
             trigonometric: true,
             pieces,
             labels,
+            maps: (ka..kb).map(PieceMap::Quarter).collect(),
         });
     }
     if !vars.contains("t") {
@@ -80,6 +113,7 @@ pub fn standardize(f: &Sym, domain: &Domain) -> Result<Standard, String> {
             trigonometric: domain.is_trigonometric(),
             pieces: vec![f.clone()],
             labels: vec![String::new()],
+            maps: vec![PieceMap::Identity],
         });
     }
     let (Some(a), Some(b)) = (domain.start.as_rational(), domain.end.as_rational()) else {
@@ -98,6 +132,14 @@ pub fn standardize(f: &Sym, domain: &Domain) -> Result<Standard, String> {
             String::new()
         } else {
             format!("t = {a} + {}τ", Rational::from(b - a))
+        }],
+        maps: vec![if identity {
+            PieceMap::Identity
+        } else {
+            PieceMap::Affine {
+                a: a.clone(),
+                b: b.clone(),
+            }
         }],
     })
 }

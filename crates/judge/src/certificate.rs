@@ -2,6 +2,7 @@
 //! and maximal parameter ranges.
 
 use rug::Rational;
+use trig_certify::standard::PieceMap;
 use trig_certify::{Bound, ParamBox, describe_z};
 
 use crate::exact::ExactBasis;
@@ -120,7 +121,14 @@ pub fn nonnegative_on<B: ExactBasis>(
     param: Option<&str>,
     bx: &ParamBox,
 ) -> Verdict {
-    nonnegative_named(trigonometric(basis), fs, &basis.function_names(), param, bx)
+    nonnegative_named(
+        trigonometric(basis),
+        fs,
+        &basis.function_names(),
+        param,
+        bx,
+        &[],
+    )
 }
 
 /// The same for functions given with their names (any basis, a spec file's
@@ -131,17 +139,36 @@ pub fn nonnegative_named(
     names: &[impl AsRef<str>],
     param: Option<&str>,
     bx: &ParamBox,
+    maps: &[PieceMap],
 ) -> Verdict {
     let mut status = Status::Holds;
     let mut evidence = EvidenceList::default();
-    for (f, name) in fs.iter().zip(names) {
-        let (s, line) = describe(
+    for (i, (f, name)) in fs.iter().zip(names).enumerate() {
+        let (s, mut line) = describe(
             &format!("{} ≥ 0", name.as_ref()),
             Some(f),
             &certify(f, trig, param, bx),
             trig,
             param,
         );
+        // a witness on a piece is in the piece's own variable: say so (the
+        // recorded formula is the piece's, so the point re-checks as is)
+        if let (Some(w), Some(note)) = (line.witness.as_mut(), maps.get(i).and_then(PieceMap::note))
+        {
+            if matches!(maps.get(i), Some(PieceMap::Quarter(_))) {
+                for a in w.point.iter_mut().filter(|a| a.name == "θ") {
+                    a.name = "φ".into();
+                    a.latex = a.latex.replacen("\\theta", "\\varphi", 1);
+                }
+            }
+            w.note = Some(match &w.note {
+                Some(old) => format!(
+                    "{note}; {}",
+                    old.replace("z = tan(θ/2), s = sin θ, c = cos θ; θ ≈", "φ ≈")
+                ),
+                None => note,
+            });
+        }
         status = Status::conjunction([status, s]);
         evidence.push(line);
     }

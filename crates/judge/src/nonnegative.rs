@@ -6,6 +6,7 @@
 //! engine ([`super::by_intervals`]) otherwise.
 
 use rug::Rational;
+use trig_certify::standard::PieceMap;
 use trig_certify::{ParamBox, standardize};
 use trig_core::ParamRange;
 use trig_specfile::Monotone;
@@ -53,16 +54,33 @@ pub fn pieces<B: ExactBasis>(basis: &B) -> Result<(bool, Vec<Sym>, Vec<String>),
     Ok((trig.unwrap_or(false), fs, names))
 }
 
+/// How each piece of [`pieces`] maps to the basis variable, in the same
+/// order (a witness on a piece is in the piece's own variable).
+fn piece_maps<B: ExactBasis>(basis: &B) -> Vec<PieceMap> {
+    let domain = basis.domain();
+    basis_of(basis)
+        .iter()
+        .flat_map(|f| standardize(f, &domain).map_or_else(|_| Vec::new(), |st| st.maps))
+        .collect()
+}
+
 /// Every function `≥ 0` for the parameters in `range` (one parameter;
 /// the declared ranges otherwise): exact Bernstein subdivision on the
 /// standard pieces, the interval engine for other bases.
 fn nonnegative_on<B: ExactBasis>(basis: &B, range: Option<&ParamRange>) -> Verdict {
     match pieces(basis) {
         Ok((trig, fs, names)) => match basis.parameters().as_slice() {
-            [] => nonnegative_named(trig, &fs, &names, None, &point_box()),
+            [] => nonnegative_named(trig, &fs, &names, None, &point_box(), &piece_maps(basis)),
             [p] => {
                 let r = range.unwrap_or(&p.range);
-                nonnegative_named(trig, &fs, &names, Some(&p.name), &ParamBox::from_range(r))
+                nonnegative_named(
+                    trig,
+                    &fs,
+                    &names,
+                    Some(&p.name),
+                    &ParamBox::from_range(r),
+                    &piece_maps(basis),
+                )
             }
             _ => several(basis, false),
         },
