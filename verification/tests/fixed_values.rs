@@ -459,3 +459,14 @@ fn conics_for_some_value_and_for_no_value() {
     let v = decide_for("c-bezier-quadratic", &circle, "no value");
     assert_status(&v, Status::NotCheckable, "`cos(alpha)`");
 }
+
+/// A value with π where the parameter is a coefficient (Han's quadratic at
+/// λ = π/3 and π/4) leaves π in the formulas: the interval engine decides
+/// (b0 = (1 − sin t)(1 − λ sin t) < 0 near t = π/2 exactly when λ > 1).
+#[test]
+fn pi_as_a_coefficient_goes_to_the_interval_engine() {
+    let v = decide("han-quadratic", "nonnegative", "at = { lambda = \"pi/3\" }");
+    assert_status(&v, Status::Fails, "the interval engine decides");
+    let v = decide("han-quadratic", "nonnegative", "at = { lambda = \"pi/4\" }");
+    assert_status(&v, Status::Holds, "the interval engine decides");
+}

@@ -76,9 +76,12 @@ fn rotate(f: &Sym, k: i64) -> Sym {
 /// The standard pieces of `f` on `domain`, or why there are none.
 pub fn standardize(f: &Sym, domain: &Domain) -> Result<Standard, String> {
     let vars = f.variables();
-    if let Some(v) = vars.iter().find(|v| v.as_str() == "E" || v.contains('(')) {
+    if let Some(v) = vars
+        .iter()
+        .find(|v| v.as_str() == "E" || v.as_str() == "pi" || v.contains('('))
+    {
         return Err(format!(
-            "`{v}` occurs: not a polynomial in sin, cos or the variable"
+            "`{v}` occurs: not a polynomial in sin, cos or the variable with rational coefficients"
         ));
     }
     let trig = vars.contains("s") || vars.contains("c");
