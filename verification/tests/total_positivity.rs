@@ -117,8 +117,13 @@ fn catalog_claims_of_total_positivity() {
 /// is totally positive on [−1, 1] and nonnegative exactly there, so the
 /// range is exactly the maximal set; on the narrower [−1, 1/2] the
 /// certificate proves total positivity beyond 1/2 (fails); the squared Han
-/// basis is totally positive on [−1, 1] but nonnegative up to 2 + 2√2, so
-/// the end 1 is only bracketed (not-checkable, called a bracket).
+/// basis is totally positive on [−1, 1] but nonnegative up to 2 + 2√2: its
+/// maximal set of total positivity is exactly [−1, 1], strictly smaller
+/// (examples/independent/, Part D(d)) — beyond 1, b0 = (1 − s)²(1 − λs)²
+/// vanishes inside the domain and rises again, which a variation
+/// diminishing basis with b0 = 1 at the start cannot do; on [−1, 1/2] the
+/// certificate reaches beyond the printed end, and [−1, 2] is not totally
+/// positive (both fail).
 #[test]
 fn the_maximal_set_of_total_positivity() {
     let claim = |range: &str| {
@@ -145,10 +150,12 @@ fn the_maximal_set_of_total_positivity() {
         evidence_lines(&v)
     );
     let v = decide_in("squares-han", "");
-    assert_eq!(v.status, Status::NotCheckable, "{}", evidence_lines(&v));
-    assert!(
-        evidence_lines(&v).contains("(a bracket)"),
-        "{}",
-        evidence_lines(&v)
-    );
+    assert_eq!(v.status, Status::Holds, "{}", evidence_lines(&v));
+    for end in ["the end 1 is exact", "the end -1 is exact"] {
+        assert!(evidence_lines(&v).contains(end), "{}", evidence_lines(&v));
+    }
+    for range in ["range = \"[-1, 1/2]\"", "range = \"[-1, 2]\""] {
+        let v = decide_in("squares-han", range);
+        assert_eq!(v.status, Status::Fails, "{range}: {}", evidence_lines(&v));
+    }
 }

@@ -6,25 +6,36 @@
 //! ([`crate::total_positivity`]). Nonnegativity is necessary for total
 //! positivity (the `1 × 1` minors), so where the printed range is exactly
 //! the maximal nonnegativity set, it is exactly the maximal set of total
-//! positivity too (**exact**). Otherwise, beyond each end of the range: a
-//! rational value where the certificate proves total positivity refutes
-//! maximality (exact witness); a value where a collocation minor is
-//! negative bounds the end (a **bracket**, called so: `not-checkable`).
+//! positivity too (**exact**). Otherwise each end of the range is
+//! compared with the exact end of a set of necessary conditions decided by
+//! the range engine (nonnegativity and, for a basis interpolating its ends,
+//! `b₀` non-increasing and `bₙ` non-decreasing — variation diminishing):
+//! an end where they stop holding is exact (the squared Han basis:
+//! totally positive exactly on `[−1, 1]`, nonnegative up to `2 + 2√2`).
+//! Beyond any other end, a rational value where the certificate proves
+//! total positivity refutes maximality (exact witness), and a value where a
+//! collocation minor is negative bounds the end (a **bracket**, called so:
+//! `not-checkable`).
 
 use rug::Rational;
 use trig_certify::ParamBox;
 use trig_certify::total_positivity::{certify, refute};
 use trig_core::{End, ParamRange};
 
+use trig_certify::range::{EndPoint, MaximalRange, Outside, maximal_range};
+use trig_certify::standardize;
+use trig_symbolic::Sym;
+
 use super::nonnegative::{nonnegative_claim, pieces};
 use super::total_positivity::normalized_totally_positive;
 use crate::exact::ExactBasis;
+use crate::exact::basis_of;
 use trig_verdict::evidence::Evidence;
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
 /// How the maximal set is decided, as the report states it.
-pub const METHOD: &str = "total positivity on the printed range by the totally positive factorisation; nonnegativity, necessary for it, exactly on the range (the maximal nonnegativity interval) makes the range exactly maximal; beyond an end, a value where the certificate proves total positivity refutes maximality, a negative collocation minor bounds the end (a bracket)";
+pub const METHOD: &str = "total positivity on the printed range by the totally positive factorisation; an end where necessary conditions (nonnegativity; b0 non-increasing and bn non-decreasing for a basis interpolating its ends: variation diminishing) stop holding, decided exactly by the range engine, is exact; beyond another end, a value where the certificate proves total positivity refutes maximality, a negative collocation minor bounds the end (a bracket)";
 
 /// The distances beyond an end that are tried: 1, 1/4, …, 1/256.
 const STEPS: u32 = 5;
@@ -71,6 +82,10 @@ pub fn maximal_totally_positive<B: ExactBasis>(basis: &B, range: Option<&ParamRa
         "normalized totally positive on the printed range {} ∈ {printed} (proved, see the claim without maximal); the range is not exactly the maximal nonnegativity interval, so its ends are decided by total positivity itself",
         p.symbol
     ))];
+    let necessary = necessary_set(basis, &p.name, &printed);
+    if let Some(note) = &necessary.1 {
+        evidence.push(Evidence::note(note.clone()));
+    }
     let mut bracketed = false;
     for (end, outward) in [(&printed.lo, -1), (&printed.hi, 1)] {
         let e = match (end, printed.pi) {
@@ -84,6 +99,26 @@ pub fn maximal_totally_positive<B: ExactBasis>(basis: &B, range: Option<&ParamRa
             }
             (End::Closed(e) | End::Open(e), false) => e.clone(),
         };
+        let necessary_end = if outward < 0 {
+            necessary.0.as_ref().map(|r| &r.lo)
+        } else {
+            necessary.0.as_ref().map(|r| &r.hi)
+        };
+        if let Some(EndPoint::Exact {
+            value,
+            closed,
+            outside,
+            ..
+        }) = necessary_end
+        {
+            if value.rational.as_ref() == Some(&e) && *closed == matches!(end, End::Closed(_)) {
+                evidence.push(Evidence::note(format!(
+                    "the end {e} is exact: just beyond it a necessary condition of normalized total positivity fails ({}; exact end of that condition's set, found by its boundary polynomials)",
+                    describe_outside(outside, &p.symbol)
+                )));
+                continue;
+            }
+        }
         // an open end itself, then values at 1, 1/4, … beyond it
         let mut tries: Vec<Rational> = Vec::new();
         if matches!(end, End::Open(_)) {
@@ -132,3 +167,74 @@ pub fn maximal_totally_positive<B: ExactBasis>(basis: &B, range: Option<&ParamRa
 /// A short name of the certificate's method for the notes.
 const TOTALLY_POSITIVE_SHORT: &str =
     "the totally positive factorisation is sufficient, not necessary";
+
+/// The maximal interval, around a point of the printed range, of the
+/// necessary conditions of normalized total positivity that the range
+/// engine decides exactly: every function `≥ 0` (the `1 × 1` minors) and,
+/// when `b₀` is `1` at the start of the domain and `bₙ` at its end, `b₀`
+/// non-increasing and `bₙ` non-decreasing (a normalized totally positive
+/// basis is variation diminishing, so `b₀ − κ`, whose coefficients
+/// `(1 − κ, −κ, …, −κ)` change sign once, changes sign at most once for
+/// every `κ ∈ (0, 1)`; with `b₀(a) = 1` a rise of `b₀` would make two).
+/// With a note saying which conditions were used.
+fn necessary_set<B: ExactBasis>(
+    basis: &B,
+    param: &str,
+    printed: &ParamRange,
+) -> (Option<MaximalRange>, Option<String>) {
+    let Ok((trig, mut fs, mut names)) = pieces(basis) else {
+        return (None, None);
+    };
+    if printed.pi {
+        return (None, None);
+    }
+    let domain = basis.domain();
+    let values = basis_of(basis);
+    let (Some(first), Some(last)) = (values.first(), values.last()) else {
+        return (None, None);
+    };
+    let (Ok(b0), Ok(bn)) = (standardize(first, &domain), standardize(last, &domain)) else {
+        return (None, None);
+    };
+    let at = |f: &Sym, s: i64, c: i64, t: i64| {
+        f.subs("s", &Sym::int(s))
+            .subs("c", &Sym::int(c))
+            .subs("t", &Sym::int(t))
+    };
+    let one = Sym::one();
+    let interpolates = b0
+        .pieces
+        .first()
+        .is_some_and(|f| at(f, 0, 1, 0).equals(&one))
+        && bn
+            .pieces
+            .last()
+            .is_some_and(|f| at(f, 1, 0, 1).equals(&one));
+    let derivative = |f: &Sym| if trig { f.d_angle() } else { f.d_t() };
+    let mut used = "every function ≥ 0".to_string();
+    if interpolates {
+        fs.extend(b0.pieces.iter().map(|f| -derivative(f)));
+        names.extend(b0.pieces.iter().map(|_| "−b0′".to_string()));
+        fs.extend(bn.pieces.iter().map(derivative));
+        names.extend(bn.pieces.iter().map(|_| "bn′".to_string()));
+        used.push_str(", b0 non-increasing and bn non-decreasing (b0 = 1 at the start, bn = 1 at the end: a normalized totally positive basis is variation diminishing)");
+    }
+    let names: Vec<&str> = names.iter().map(String::as_str).collect();
+    let start = printed.interior_point();
+    let r = maximal_range(&fs, &names, trig, param, &start);
+    (
+        Some(r),
+        Some(format!("necessary conditions used for the ends: {used}")),
+    )
+}
+
+/// The inadmissible value beyond an end, in words.
+fn describe_outside(o: &Outside, symbol: &str) -> String {
+    match o {
+        Outside::Counterexample(p, _, v) => {
+            format!("at {symbol} = {p} a condition's value is {v} < 0")
+        }
+        Outside::Pole(p, why) => format!("at {symbol} = {p}: {why}"),
+        Outside::Undecided(p) => format!("at {symbol} = {p}"),
+    }
+}
