@@ -233,6 +233,14 @@ fn slow_certificates_are_cut_off_by_the_time_limit() {
     }
 }
 
+/// `--time-limit` belongs to `--spec`: without it the option was silently
+/// ignored (the audit of the five documents is bounded by counted budgets).
+#[test]
+fn a_time_limit_without_a_spec_is_a_usage_error() {
+    let err = usage_error(&["audit", "--time-limit", "2"]);
+    assert!(err.contains("--time-limit applies to --spec"), "{err}");
+}
+
 #[test]
 fn domain_checks_use_the_exact_input_and_echo_it_as_read() {
     let e = error_line(&[

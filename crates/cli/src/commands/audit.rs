@@ -67,12 +67,13 @@ pub struct AuditArgs {
     /// With --format tex: a complete document (preamble and all) instead of a fragment to \input into an article loading amsmath, amssymb, booktabs, longtable, array, graphicx.
     #[arg(long)]
     standalone: bool,
-    /// With --spec: seconds each claim's decision may take (0.1 to 3600);
+    /// With --spec: seconds each claim's decision may take (0.1 to 3600,
+    /// default 10);
     /// a decision that runs over is cut off: an entry `not-checkable` naming
     /// the limit (every other verdict comes from counted budgets, the same
     /// anywhere).
-    #[arg(long, default_value_t = CLAIM_BUDGET.as_secs_f64(), value_parser = time_limit)]
-    time_limit: f64,
+    #[arg(long, value_parser = time_limit)]
+    time_limit: Option<f64>,
 }
 
 /// A time limit in seconds, from 0.1 to 3600.
@@ -93,7 +94,8 @@ pub fn run(args: &AuditArgs) -> CmdResult {
         Some(path) => {
             let spec = Spec::from_file(path)
                 .map_err(|e| CliError::Usage(e.to_string().replace('\n', " ")))?;
-            let budget = Duration::from_secs_f64(args.time_limit);
+            let limit = args.time_limit.unwrap_or(CLAIM_BUDGET.as_secs_f64());
+            let budget = Duration::from_secs_f64(limit);
             let chosen = |id: &str| {
                 args.claim
                     .as_deref()
@@ -110,11 +112,16 @@ pub fn run(args: &AuditArgs) -> CmdResult {
             if !cut_off.is_empty() {
                 intro.push_str(&format!(
                     " Cut off by the time limit of {} s per claim, and so not-checkable (a longer --time-limit may decide them): {}. Every other verdict below is the one any machine computes.",
-                    args.time_limit,
+                    limit,
                     cut_off.join(", ")
                 ));
             }
             (entries, intro)
+        }
+        None if args.time_limit.is_some() => {
+            return Err(CliError::Usage(
+                "--time-limit applies to --spec: the audit of the five documents is bounded by counted budgets, not by time".into(),
+            ));
         }
         None => (builtin(args)?, report::BUILTIN_INTRO.to_string()),
     };
