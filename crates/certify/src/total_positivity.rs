@@ -466,19 +466,17 @@ fn by_neville(mut f: Factorisation, first_degree: usize, bx: &ParamBox) -> Optio
     }
 }
 
-/// A negative collocation minor of `fs` at the parameter value `p` (none
-/// without a parameter): first a negative value (a `1×1` minor) found by
-/// the nonnegativity certifier, then grids of rational points.
-pub fn refute(
-    fs: &[Sym],
-    trigonometric: bool,
-    param: Option<(&str, &Rational)>,
-) -> Option<NegativeMinor> {
+/// A negative collocation minor of `fs` at the parameter values `at`
+/// (`(name, value)` for every parameter; none without parameters): first a
+/// negative value (a `1×1` minor) found by the nonnegativity certifier,
+/// then grids of rational points.
+pub fn refute(fs: &[Sym], trigonometric: bool, at: &[(&str, &Rational)]) -> Option<NegativeMinor> {
     let fixed: Vec<Sym> = fs
         .iter()
-        .map(|f| match param {
-            Some((name, p)) => f.subs(name, &Sym::rational(p.clone())),
-            None => f.clone(),
+        .map(|f| {
+            at.iter().fold(f.clone(), |g, (name, p)| {
+                g.subs(name, &Sym::rational((*p).clone()))
+            })
         })
         .collect();
     let mut extra = Vec::new();
@@ -539,12 +537,12 @@ mod tests {
         assert_eq!(cert.first_degree, 8);
         assert_eq!(cert.set.describe("λ"), "[-1, 1]");
         // nonnegative at 5/4, yet a collocation minor is negative
-        let neg = refute(&squares_han(), true, Some(("lambda", &q(5, 4)))).unwrap();
+        let neg = refute(&squares_han(), true, &[("lambda", &q(5, 4))]).unwrap();
         assert!(neg.minor < 0);
         assert_eq!(determinant(&neg.values), neg.minor);
         assert!(neg.points.windows(2).all(|w| w[0] < w[1]));
         // and none inside the certified set
-        assert!(refute(&squares_han(), true, Some(("lambda", &q(1, 2)))).is_none());
+        assert!(refute(&squares_han(), true, &[("lambda", &q(1, 2))]).is_none());
     }
 
     #[test]

@@ -222,22 +222,28 @@ impl ParamRange {
     }
 }
 
+impl ParamRange {
+    /// The value `q` of an end as the range prints it: `q`, or for a range
+    /// in multiples of π `pi`, `pi/2`, `3*pi/4`.
+    pub fn end_text(&self, q: &Rational) -> String {
+        if !self.pi || *q == 0 {
+            q.to_string()
+        } else if *q == 1 {
+            "pi".into()
+        } else if *q.numer() == 1 {
+            format!("pi/{}", q.denom())
+        } else if *q.denom() == 1 {
+            format!("{}*pi", q.numer())
+        } else {
+            format!("{}*pi/{}", q.numer(), q.denom())
+        }
+    }
+}
+
 /// Printed as `[-2, 1]`, `(1/2, 2]`, `[0, +inf)`, `(0, pi)`.
 impl fmt::Display for ParamRange {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let v = |q: &Rational| {
-            if !self.pi || *q == 0 {
-                q.to_string()
-            } else if *q == 1 {
-                "pi".into()
-            } else if *q.numer() == 1 {
-                format!("pi/{}", q.denom())
-            } else if *q.denom() == 1 {
-                format!("{}*pi", q.numer())
-            } else {
-                format!("{}*pi/{}", q.numer(), q.denom())
-            }
-        };
+        let v = |q: &Rational| self.end_text(q);
         match &self.lo {
             End::Closed(q) => write!(f, "[{}", v(q))?,
             End::Open(q) => write!(f, "({}", v(q))?,

@@ -241,7 +241,7 @@ pub fn nonnegative_on_box_named(
 }
 
 /// Why a parameter value is outside, as the report shows it.
-fn show_outside(o: &Outside, param: &str, trig: bool) -> String {
+pub(crate) fn show_outside(o: &Outside, param: &str, trig: bool) -> String {
     match o {
         Outside::Counterexample(p, z, v) => format!(
             "counterexample {param} = {p}, {}: value {v} (exact)",

@@ -91,7 +91,7 @@ pub fn totally_positive<B: ExactBasis>(basis: &B, range: Option<&ParamRange>) ->
             // a negative collocation minor still refutes (without a
             // parameter: at the basis itself)
             if param.is_none() {
-                if let Some(neg) = refute(&fs, trig, None) {
+                if let Some(neg) = refute(&fs, trig, &[]) {
                     let evidence = vec![Evidence::note(why), refutation(basis, &neg, &[], trig)];
                     return Verdict::new(Status::Fails, TOTALLY_POSITIVE, evidence);
                 }
@@ -133,8 +133,12 @@ pub fn totally_positive<B: ExactBasis>(basis: &B, range: Option<&ParamRange>) ->
         None => vec![None],
     };
     for p in tries {
-        let at = param.map(|q| q.name.as_str()).zip(p.as_ref());
-        if let Some(neg) = refute(&fs, trig, at) {
+        let at: Vec<(&str, &Rational)> = param
+            .map(|q| q.name.as_str())
+            .zip(p.as_ref())
+            .into_iter()
+            .collect();
+        if let Some(neg) = refute(&fs, trig, &at) {
             let shown: Vec<(String, String, Rational)> = param
                 .zip(p)
                 .map(|(q, v)| (q.name.clone(), q.symbol.clone(), v))
@@ -157,12 +161,6 @@ fn certificate_line(
     published: Option<&ParamRange>,
 ) -> Evidence {
     let f = &cert.factorisation;
-    let elevated = if f.degree > cert.first_degree {
-        format!(", elevated to {}", f.degree)
-    } else {
-        String::new()
-    };
-    let n = f.rows.len();
     let checked = match cert.neville {
         Some(b) => format!(
             "too large to enumerate its minors, it is the product of bidiagonal factors found by Neville elimination without row exchanges (Gasca & Peña), its {} multipliers and {} pivots all > 0 exactly, so it is totally positive",
@@ -171,10 +169,8 @@ fn certificate_line(
         None => format!("{} nonzero minors checked exactly", cert.minors),
     };
     let text = format!(
-        "numerators over the positive common factor {} in z = tan(θ/2) (or t): Bernstein degree {}{elevated}; coefficient matrix {n} × {}; {checked}",
-        f.common,
-        cert.first_degree,
-        f.degree + 1,
+        "{}; {checked}",
+        factorisation_text(&f.common, cert.first_degree, f.degree, f.rows.len())
     );
     let text = match published {
         Some(r) => format!(
@@ -263,6 +259,20 @@ fn refutation<B: ExactBasis>(
     .witnessed(Some(w))
 }
 
+/// The factorisation in words: the common factor, the Bernstein degree
+/// (and the degree it was elevated to), the size of the matrix.
+fn factorisation_text(common: &str, first_degree: usize, degree: usize, rows: usize) -> String {
+    let elevated = if degree > first_degree {
+        format!(", elevated to {degree}")
+    } else {
+        String::new()
+    };
+    format!(
+        "numerators over the positive common factor {common} in z = tan(θ/2) (or t): Bernstein degree {first_degree}{elevated}; coefficient matrix {rows} × {}",
+        degree + 1
+    )
+}
+
 /// `λ = 1, μ = 1/2`.
 fn equalities(at: &[(String, String, Rational)]) -> String {
     at.iter()
@@ -295,17 +305,9 @@ fn several<B: ExactBasis>(basis: &B, fs: &[Sym], trig: bool, params: &[Parameter
         .map(|p| format!("{} ∈ {}", p.symbol, p.range))
         .collect::<Vec<_>>()
         .join(", ");
-    let elevated = if cert.degree > cert.first_degree {
-        format!(", elevated to {}", cert.degree)
-    } else {
-        String::new()
-    };
     let head = format!(
-        "numerators over the positive common factor {} in z = tan(θ/2) (or t): Bernstein degree {}{elevated}; coefficient matrix {} × {}; {} nonzero minors, each a polynomial in {}",
-        cert.common,
-        cert.first_degree,
-        cert.functions,
-        cert.degree + 1,
+        "{}; {} nonzero minors, each a polynomial in {}",
+        factorisation_text(&cert.common, cert.first_degree, cert.degree, cert.functions),
         cert.minors,
         symbols.join(", ")
     );
@@ -351,15 +353,12 @@ fn several<B: ExactBasis>(basis: &B, fs: &[Sym], trig: bool, params: &[Parameter
         if !inside {
             continue;
         }
-        let fixed: Vec<Sym> = fs
+        let named: Vec<(&str, &Rational)> = params
             .iter()
-            .map(|f| {
-                params.iter().zip(&values).fold(f.clone(), |g, (p, v)| {
-                    g.subs(&p.name, &Sym::rational(v.clone()))
-                })
-            })
+            .map(|p| p.name.as_str())
+            .zip(&values)
             .collect();
-        if let Some(neg) = refute(&fixed, trig, None) {
+        if let Some(neg) = refute(fs, trig, &named) {
             evidence.push(refutation(basis, &neg, &at(&values), trig));
             return Verdict::new(Status::Fails, TOTALLY_POSITIVE, evidence);
         }

@@ -22,10 +22,11 @@ use trig_certify::ParamBox;
 use trig_certify::total_positivity::{certify, refute};
 use trig_core::{End, ParamRange};
 
-use trig_certify::range::{EndPoint, MaximalRange, Outside, maximal_range};
+use trig_certify::range::{EndPoint, MaximalRange, maximal_range};
 use trig_certify::standardize;
 use trig_symbolic::Sym;
 
+use super::certificate::show_outside;
 use super::nonnegative::{nonnegative_claim, pieces};
 use super::total_positivity::normalized_totally_positive;
 use crate::exact::ExactBasis;
@@ -114,7 +115,7 @@ pub fn maximal_totally_positive<B: ExactBasis>(basis: &B, range: Option<&ParamRa
             if value.rational.as_ref() == Some(&e) && *closed == matches!(end, End::Closed(_)) {
                 evidence.push(Evidence::note(format!(
                     "the end {e} is exact: just beyond it a necessary condition of normalized total positivity fails ({}; exact end of that condition's set, found by its boundary polynomials)",
-                    describe_outside(outside, &p.symbol)
+                    show_outside(outside, &p.symbol, trig)
                 )));
                 continue;
             }
@@ -129,7 +130,7 @@ pub fn maximal_totally_positive<B: ExactBasis>(basis: &B, range: Option<&ParamRa
         for q in tries {
             // a refutation is cheap; the certificate at a value only where
             // none is found
-            if refute(&fs, trig, Some((p.name.as_str(), &q))).is_some() {
+            if refute(&fs, trig, &[(p.name.as_str(), &q)]).is_some() {
                 refuted = Some(q);
                 continue;
             }
@@ -226,15 +227,4 @@ fn necessary_set<B: ExactBasis>(
         Some(r),
         Some(format!("necessary conditions used for the ends: {used}")),
     )
-}
-
-/// The inadmissible value beyond an end, in words.
-fn describe_outside(o: &Outside, symbol: &str) -> String {
-    match o {
-        Outside::Counterexample(p, _, v) => {
-            format!("at {symbol} = {p} a condition's value is {v} < 0")
-        }
-        Outside::Pole(p, why) => format!("at {symbol} = {p}: {why}"),
-        Outside::Undecided(p) => format!("at {symbol} = {p}"),
-    }
 }

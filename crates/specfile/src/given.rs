@@ -251,15 +251,10 @@ impl Between {
                     "its ends may use only parameters with finite ranges",
                 ));
             };
-            if r.pi
-                || *i
-                    == names
-                        .iter()
-                        .position(|n| *n == self.name)
-                        .unwrap_or(usize::MAX)
-            {
+            // (the ends name only other parameters: read so)
+            if r.pi {
                 return Err(refuse(
-                    "its ends may use only other parameters with rational ranges",
+                    "its ends may use only parameters with rational ranges",
                 ));
             }
             corners = corners

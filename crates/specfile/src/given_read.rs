@@ -36,19 +36,7 @@ pub(crate) fn one_param_range(
 /// `v` for the one-point range `[v, v]`, written as read.
 fn point_of(range: &ParamRange) -> Option<String> {
     match (&range.lo, &range.hi) {
-        (trig_core::End::Closed(a), trig_core::End::Closed(b)) if a == b => {
-            let one = ParamRange {
-                lo: trig_core::End::Closed(a.clone()),
-                hi: trig_core::End::Closed(a.clone()),
-                pi: range.pi,
-            }
-            .to_string();
-            // `[v, v]` printed: the text of one end
-            one.trim_start_matches('[')
-                .split(',')
-                .next()
-                .map(|v| v.trim().to_string())
-        }
+        (trig_core::End::Closed(a), trig_core::End::Closed(b)) if a == b => Some(range.end_text(a)),
         _ => None,
     }
 }
