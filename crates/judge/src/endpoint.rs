@@ -10,6 +10,7 @@ use trig_symbolic::Sym;
 use crate::domain::{describe_wrt, end_text, param_symbols, value_at};
 use crate::exact::ExactBasis;
 use crate::exact::{basis_of, defined_by, identities};
+use trig_verdict::evidence::{Evidence, Expr};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
@@ -122,6 +123,17 @@ fn derive<B: ExactBasis>(basis: &B, wrt: Wrt, f: &Sym) -> Sym {
 /// The standard derivative table, computed twice: by Taylor jets seeded
 /// with the exact end atoms, and by repeated exact differentiation
 /// evaluated at the end. Holds when they agree.
+/// The `k`-th derivative of the function `name` at `at`, as a label:
+/// `b0(0)`, `b0′(0)`, `b0″(0)`, then `b0^(3)(0)`.
+fn derivative_label(name: &str, k: usize, at: &str) -> String {
+    match k {
+        0 => format!("{name}({at})"),
+        1 => format!("{name}′({at})"),
+        2 => format!("{name}″({at})"),
+        _ => format!("{name}^({k})({at})"),
+    }
+}
+
 pub fn derivative_table<B: ExactBasis>(basis: &B, wrt: Wrt) -> Verdict {
     let names = basis.function_names();
     let mut parts = Vec::new();
@@ -151,26 +163,25 @@ pub fn derivative_table<B: ExactBasis>(basis: &B, wrt: Wrt) -> Verdict {
                 }
                 d = derive(basis, wrt, &d);
             }
-            table.push(format!(
-                "{} at {}: {}",
-                names[i],
-                end_text(basis, end),
+            let at = end_text(basis, end);
+            table.push(
                 jets[i]
                     .iter()
-                    .map(ToString::to_string)
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            ));
+                    .enumerate()
+                    .fold(Evidence::note(""), |row, (k, jet)| {
+                        row.with(derivative_label(&names[i], k, &at), Expr::new(jet))
+                    }),
+            );
         }
     }
     let method =
         "exact: Taylor jets over the symbolic ring, cross-checked by symbolic differentiation";
     if parts.is_empty() {
-        let mut evidence = vec![format!(
+        let mut evidence = vec![Evidence::note(format!(
             "orders 0–{} {}; jets and symbolic differentiation agree exactly",
             TABLE_ORDERS - 1,
             describe_wrt(basis, wrt)
-        )];
+        ))];
         evidence.extend(table);
         Verdict::new(Status::Holds, method, evidence)
     } else {

@@ -581,20 +581,24 @@ fn forced_lines<B: ExactBasis>(
     basis: &B,
     s: &JoinSetup<'_, &B>,
     kind: JoinKind,
-) -> Result<Vec<String>, String> {
+) -> Result<Vec<Evidence>, String> {
     let n = basis.function_names().len();
     let (p, q) = (symbols("P", n), symbols("Q", n));
+    let points: Vec<String> = p.iter().map(ToString::to_string).collect();
     let join = solve_join(s, kind, &p, &q).map_err(|e| e.to_string())?;
     Ok(join
         .forced
         .iter()
-        .map(|f| {
-            let mut line = format!("Q{} = {}", f.index, f.value);
+        .flat_map(|f| {
+            let name = Sym::var(&format!("Q{}", f.index)).to_unicode();
             let singular = vanishing(&f.pivot);
-            if !singular.is_empty() {
-                line.push_str(&format!(" (singular where {})", singular.join(", ")));
-            }
-            line
+            let note = (!singular.is_empty()).then(|| {
+                Evidence::note(format!("{name} is singular where {}", singular.join(", ")))
+            });
+            std::iter::once(
+                Evidence::new(Kind::Derived, "").with(name, Expr::combination(&f.value, &points)),
+            )
+            .chain(note)
         })
         .collect())
 }
@@ -622,7 +626,7 @@ pub fn derived_join<B: ExactBasis>(basis: &B, order: usize) -> Verdict {
     );
     match forced_lines(basis, &s, JoinKind::C(order as u8)) {
         Ok(lines) => {
-            let mut evidence = vec![head];
+            let mut evidence = vec![Evidence::note(head)];
             evidence.extend(lines);
             Verdict::new(Status::Holds, IDENTITY, evidence)
         }

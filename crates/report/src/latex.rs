@@ -14,7 +14,8 @@ use std::path::{Path, PathBuf};
 
 use trig_tex::marked::truncate;
 use trig_tex::{
-    Column, LongTable, breakable, document, fitted_math, fragment, inline_math, marked, prose, text,
+    Column, LongTable, breakable, code, document, fitted_math, fragment, inline_math, marked,
+    prose, text,
 };
 
 use super::render::{Format, Tally, anchor, point_text, render};
@@ -49,15 +50,36 @@ struct Latex<'a> {
     options: &'a TexOptions,
 }
 
-/// A column of a table `fraction` of the line wide (its padding included).
-macro_rules! share {
-    ($fraction:literal) => {
-        Column::Wrap(concat!(
-            r"\dimexpr ",
-            $fraction,
-            r"\linewidth-2\tabcolsep\relax"
-        ))
+/// The shares (percent of the line) of the index's columns — claim,
+/// verdict, document, source, printed: 10, 17, 9, 20, 44, with the claim
+/// and document columns widened to their longest unbreakable piece (a word
+/// or the part of an id between hyphens, set at `\small`) at the cost of
+/// the printed statement, then of the source.
+fn index_shares(entries: &[&Entry]) -> [u8; 5] {
+    // an upper bound of a `\small` Computer Modern character (about 4.7 pt)
+    // over the text width of an `article` (345 pt), padding 12 pt, percent
+    let need = |pieces: &mut dyn Iterator<Item = &str>| -> u8 {
+        let longest = pieces
+            .flat_map(|t| t.split([' ', '-']))
+            .map(|w| w.chars().count())
+            .max()
+            .unwrap_or(0);
+        u8::try_from((longest * 500 + 1200).div_ceil(345)).unwrap_or(u8::MAX)
     };
+    let mut shares = [10, 17, 9, 20, 44];
+    shares[0] = shares[0].max(need(&mut entries.iter().map(|e| e.id.as_str())).min(30));
+    shares[2] = shares[2].max(need(&mut entries.iter().map(|e| e.document.id.as_str())).min(20));
+    let mut over = shares
+        .iter()
+        .map(|&s| u32::from(s))
+        .sum::<u32>()
+        .saturating_sub(100);
+    for (k, least) in [(4, 24), (3, 14)] {
+        let take = over.min(u32::from(shares[k] - least));
+        shares[k] -= take as u8;
+        over -= take;
+    }
+    shares
 }
 
 /// The file a figure is drawn in, as LaTeX includes it: a PDF or PNG beside
@@ -197,13 +219,7 @@ impl Format for Latex<'_> {
 
     fn index(&self, out: &mut String, entries: &[&Entry], linked: bool) {
         let _ = writeln!(out, "\\subsection*{{Index}}\n");
-        let columns = vec![
-            share!("0.10"),
-            share!("0.17"),
-            share!("0.09"),
-            share!("0.20"),
-            share!("0.44"),
-        ];
+        let columns = index_shares(entries).map(Column::Share).to_vec();
         let head = ["claim", "verdict", "doc.", "source", "printed"].map(String::from);
         let mut table = LongTable::new(columns, "One line per claim".into(), head.to_vec())
             .unnumbered()
@@ -236,10 +252,10 @@ impl Format for Latex<'_> {
     fn section(&self, out: &mut String, doc: &Document) {
         let _ = writeln!(
             out,
-            "\\subsection*{{{} --- {}}}\n\nSource: \\texttt{{{}}}\n",
+            "\\subsection*{{{} --- {}}}\n\nSource: {}\n",
             text(&doc.heading),
             prose(&doc.title),
-            text(&doc.location)
+            code(&doc.location)
         );
     }
 

@@ -181,6 +181,12 @@ fn name(n: &str, style: Style) -> String {
     if style == Style::Sympy {
         return sympy_name(n);
     }
+    // the ring's root atoms: `sqrt(2)` is `\sqrt{2}` in LaTeX
+    if style == Style::Latex
+        && let Some(radicand) = n.strip_prefix("sqrt(").and_then(|r| r.strip_suffix(')'))
+    {
+        return format!("\\sqrt{{{radicand}}}");
+    }
     if style != Style::Plain
         && let Some((prefix, sub)) = indexed(n)
     {
@@ -466,6 +472,13 @@ mod tests {
 
     /// Indexed names print with their subscript as the documents write
     /// it, never as an underscore before a subscript digit (`y_i₁`).
+    #[test]
+    fn roots_are_radicals_in_latex() {
+        let r = &v("sqrt(2)") * &v("lambda");
+        assert_eq!(r.to_latex(), r"\lambda \sqrt{2}");
+        assert_eq!(r.to_string(), "sqrt(2)*lambda");
+    }
+
     #[test]
     fn indexed_names() {
         for (name, unicode, latex) in [

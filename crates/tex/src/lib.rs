@@ -48,4 +48,4 @@ pub use math::{fitted_math, inline_math, math};
 pub use prose::prose;
 pub use symbols::unmapped;
 pub use table::{Column, LongTable, TABLE_PACKAGES, ValueTable, column_name, value_tables};
-pub use text::{breakable, text};
+pub use text::{breakable, code, text};

@@ -6,7 +6,7 @@
 //! math writer ([`crate::math`]), prose escaped ([`crate::text`]).
 
 use crate::math::{inline_breakable, math};
-use crate::text::text;
+use crate::text::{code, text};
 
 /// Opens a formula in marked text (never in a seed).
 pub const OPEN: char = '⟪';
@@ -102,13 +102,7 @@ pub fn marked(line: &str) -> String {
 fn prose_run(run: &str) -> String {
     run.split('`')
         .enumerate()
-        .map(|(i, part)| {
-            if i % 2 == 1 {
-                format!(r"\texttt{{{}}}", text(part))
-            } else {
-                text(part)
-            }
-        })
+        .map(|(i, part)| if i % 2 == 1 { code(part) } else { text(part) })
         .collect()
 }
 

@@ -81,6 +81,11 @@ fn piece(tex: impl Into<String>, kind: Kind) -> Piece {
     }
 }
 
+/// Whether `ch` is a Greek letter (`α`–`ω`, `Α`–`Ω`).
+fn greek_letter(ch: char) -> bool {
+    matches!(ch, 'α'..='ω' | 'Α'..='Ω' | 'ϵ' | 'ϑ' | 'ϕ')
+}
+
 /// The pieces of `chars`; `top` is false inside a script group (where a
 /// letter's digits are not its index).
 fn pieces(chars: &[char], top: bool) -> Vec<Piece> {
@@ -193,6 +198,16 @@ fn pieces(chars: &[char], top: bool) -> Vec<Piece> {
                     Kind::Other
                 };
                 out.push(piece(atom(ch), kind));
+                // a Greek letter's trailing digits are its index (`λ1`, `α0`)
+                let digits = chars[i + 1..]
+                    .iter()
+                    .take_while(|c| c.is_ascii_digit())
+                    .count();
+                if top && kind == Kind::Atom && greek_letter(ch) && digits > 0 {
+                    let index: String = chars[i + 1..=i + digits].iter().collect();
+                    out.push(piece(format!("_{{{index}}}"), Kind::Sub));
+                    i += digits;
+                }
             }
         }
         i += 1;
@@ -385,6 +400,14 @@ mod tests {
         assert_eq!(math("P1 − P0"), "P_{1} - P_{0}");
         assert_eq!(math("R''(0)"), "R''(0)");
         assert_eq!(math("b0′(0) = 1"), "b_{0}'(0) = 1");
+        assert_eq!(
+            math("(μ1 + 2)/(λ2 + 2)"),
+            r"(\mu_{1} + 2)/(\lambda_{2} + 2)"
+        );
+        assert_eq!(
+            math("α0(0) = α1′(1), 2α"),
+            r"\alpha_{0}(0) = \alpha_{1}'(1), 2\alpha"
+        );
         assert_eq!(math("tan α + cos(x)"), r"\tan \alpha + \cos(x)");
         assert_eq!(math("sinh t"), r"\sinh t");
         assert_eq!(math("sgn x"), r"\operatorname{sgn} x");

@@ -6,7 +6,7 @@
 use crate::marked::{CLOSE, OPEN, marked};
 use crate::math::{inline_breakable, math};
 use crate::symbols::is_mathy;
-use crate::text::text;
+use crate::text::{code, text};
 
 /// Words that stay text even between formulas.
 const WORDS: &[&str] = &[
@@ -125,13 +125,11 @@ pub fn prose(line: &str) -> String {
         return line
             .split('`')
             .enumerate()
-            .map(|(i, part)| {
-                if i % 2 == 1 {
-                    format!(r"\texttt{{{}}}", text(part))
-                } else {
-                    prose(part)
-                }
-            })
+            .map(
+                |(i, part)| {
+                    if i % 2 == 1 { code(part) } else { prose(part) }
+                },
+            )
             .collect();
     }
     let words: Vec<&str> = line.split(' ').collect();

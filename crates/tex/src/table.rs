@@ -26,6 +26,10 @@ pub enum Column {
     /// `\raggedright\let\\\tabularnewline`, what `\arraybackslash` does:
     /// `\\` still ends the row).
     Wrap(&'static str),
+    /// [`Column::Wrap`] at this percentage of the line width, its padding
+    /// included (`\dimexpr 0.25\linewidth-2\tabcolsep\relax`): the shares
+    /// of a table's columns add up to 100.
+    Share(u8),
 }
 
 /// What opens a cell of a wrapping column in a table without `array`: in
@@ -39,11 +43,27 @@ impl Column {
         match self {
             Column::Left => "l".into(),
             Column::Right => "r".into(),
-            Column::Wrap(width) if array => {
-                format!(r">{{\raggedright\arraybackslash}}p{{{width}}}")
-            }
-            Column::Wrap(width) => format!("p{{{width}}}"),
+            Column::Wrap(width) => wrap_spec(width, array),
+            Column::Share(percent) => wrap_spec(
+                &format!(r"\dimexpr 0.{percent:02}\linewidth-2\tabcolsep\relax"),
+                array,
+            ),
         }
+    }
+
+    /// Whether the column wraps its text.
+    fn wraps(&self) -> bool {
+        matches!(self, Column::Wrap(_) | Column::Share(_))
+    }
+}
+
+/// A wrapping column of `width`: with `array` ragged right by its column
+/// type, else a plain `p` column (its cells opened by [`RAGGED_CELL`]).
+fn wrap_spec(width: &str, array: bool) -> String {
+    if array {
+        format!(r">{{\raggedright\arraybackslash}}p{{{width}}}")
+    } else {
+        format!("p{{{width}}}")
     }
 }
 
@@ -117,8 +137,8 @@ impl LongTable {
             .zip(self.columns.iter().chain(std::iter::repeat(&Column::Left)))
             .enumerate()
             .map(|(k, (cell, column))| match column {
-                Column::Wrap(_) if !self.array && k == last => format!("{RAGGED_LAST_CELL}{cell}"),
-                Column::Wrap(_) if !self.array => format!("{RAGGED_CELL}{cell}"),
+                c if c.wraps() && !self.array && k == last => format!("{RAGGED_LAST_CELL}{cell}"),
+                c if c.wraps() && !self.array => format!("{RAGGED_CELL}{cell}"),
                 _ => cell.clone(),
             })
             .collect();

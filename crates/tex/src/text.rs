@@ -59,6 +59,21 @@ pub fn breakable(line: &str) -> String {
     out
 }
 
+/// A code span (a command, a file name) in typewriter: breakable after
+/// `/`, `-` and the like when longer than [`CODE_UNBROKEN`] characters (a
+/// path of any length fits the line), else kept on one line.
+pub fn code(span: &str) -> String {
+    if span.chars().count() > CODE_UNBROKEN {
+        format!(r"\texttt{{{}}}", breakable(span))
+    } else {
+        format!(r"\texttt{{{}}}", text(span))
+    }
+}
+
+/// The longest code span [`code`] keeps unbroken: 48 typewriter characters
+/// (about 250 pt at 10 pt) always fit the text width of an `article`.
+pub const CODE_UNBROKEN: usize = 48;
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -79,5 +94,12 @@ mod tests {
     fn unknown_characters_are_marked() {
         assert_eq!(text("☃"), "[U+2603]");
         assert_eq!(breakable("a/b"), r"a/\allowbreak{}b");
+        assert_eq!(code("a/b"), r"\texttt{a/b}");
+        let long = "/a/very/long/checkout/of/the/project/examples/basis.toml";
+        assert!(
+            code(long).contains(r"/\allowbreak{}examples"),
+            "{}",
+            code(long)
+        );
     }
 }

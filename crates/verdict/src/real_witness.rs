@@ -184,7 +184,7 @@ fn assignment(printed: &str, name: &str, v: &Sym) -> Assignment {
     Assignment {
         name: printed.to_string(),
         value: v.to_unicode(),
-        latex: format!("{} = {}", printed, v.to_latex()),
+        latex: format!("{} = {}", trig_tex::math(printed), v.to_latex()),
         symbol: Some(Sym::var(name).to_sympy()),
         sympy: Some(v.to_sympy()),
     }
