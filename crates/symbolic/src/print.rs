@@ -476,7 +476,7 @@ mod tests {
     fn roots_are_radicals_in_latex() {
         let r = &v("sqrt(2)") * &v("lambda");
         assert_eq!(r.to_latex(), r"\lambda \sqrt{2}");
-        assert_eq!(r.to_string(), "sqrt(2)*lambda");
+        assert_eq!(r.to_string(), "lambda*sqrt(2)");
     }
 
     #[test]
