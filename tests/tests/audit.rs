@@ -129,6 +129,7 @@ fn summary_and_verdict_filter() {
     let view = View {
         summary_only: true,
         verdicts: vec![Status::Fails],
+        ..View::default()
     };
     let md = report::markdown_entries(&entries, report::BUILTIN_INTRO, &view);
     let fails = entries
@@ -213,6 +214,7 @@ fn the_json_report_validates_against_the_published_schema() {
     let view = View {
         summary_only: true,
         verdicts: vec![Status::HoldsAfterCorrection],
+        ..View::default()
     };
     let short = serde_json::to_value(report::json_entries(
         &entries(),

@@ -23,6 +23,9 @@ pub struct Document {
     pub location: String,
     /// Sort key of the sections (seeds in [`Seed::ALL`] order first).
     pub order: usize,
+    /// The tool's own checks of a basis (a spec's standard battery), not
+    /// claims the document makes: reported apart, with their own counts.
+    pub battery: bool,
 }
 
 impl Document {
@@ -35,6 +38,7 @@ impl Document {
             file: seed.file().to_string(),
             location: format!("shared/seeds/{}", seed.file()),
             order: Seed::ALL.iter().position(|s| *s == seed).unwrap_or(0),
+            battery: false,
         }
     }
 }

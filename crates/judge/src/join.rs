@@ -114,6 +114,11 @@ pub struct PrintedJoin<B> {
     pub factors: [Sym; 2],
     /// The conventions tried, the printed one first ([`conventions`]).
     pub conventions: Vec<Wrt>,
+    /// The printed convention is the one the claim declares (a spec's
+    /// `wrt`): the claim is judged in it alone, the others are shown for
+    /// information. Without it (a document that does not say), a formula
+    /// that holds in another convention holds after that correction.
+    pub declared: bool,
     /// Lines stated before the evidence (the printed conditions, which
     /// parameters each segment has).
     pub notes: Vec<String>,
@@ -170,6 +175,7 @@ impl<B: ExactBasis + Clone> PrintedJoin<B> {
             printed,
             factors,
             conventions,
+            declared: false,
             notes: Vec::new(),
         }
     }
@@ -428,6 +434,26 @@ fn describe(label: String, residuals: &[Sym], names: &[String]) -> Evidence {
     )
 }
 
+/// An item of a convention the claim does not declare, for information:
+/// no status, prefixed with what it is.
+fn information(mut item: Evidence, declared: &str) -> Evidence {
+    let convention = item.subject.take().unwrap_or_default();
+    let outcome = match item.status.take() {
+        Some(Status::Holds) => "would hold",
+        _ => "would not hold",
+    };
+    item.kind = Kind::Note;
+    item.text = format!(
+        "for information, not a verdict (the claim declares {declared}): with derivatives in {convention} the printed formulas {outcome}{}",
+        if item.text.is_empty() || item.exprs.is_empty() {
+            String::new()
+        } else {
+            format!("; {}", item.text)
+        }
+    );
+    item
+}
+
 /// True when the printed formulas of a curve join hold in the printed
 /// convention (the column test of a surface join with the same `u`-basis
 /// on both patches).
@@ -458,24 +484,51 @@ fn decide<B: ExactBasis + Clone>(join: &PrintedJoin<B>, residuals: ResidualFn<'_
     let mut v = if singular.is_empty() {
         verdict
     } else {
-        let mut v = verdict;
-        v.status = Status::Fails;
-        v.evidence.push(format!(
-            "the printed formulas are singular inside the printed ranges, where they give no join: {}",
-            singular.join("; ")
-        ));
-        if v.correction.is_none() {
-            // the printed formulas hold wherever they are defined: the
-            // correction is the range, not the formula (repeating the
-            // derived formula would repeat the printed one)
-            v = v.with_correction(format!(
-                "the printed formulas hold wherever they are defined; exclude the poles {} from the printed ranges",
-                singular.join("; ")
-            ));
-        }
-        v
+        exceptional(join, verdict, &singular)
     };
     v.evidence.prepend(join.notes.clone());
+    v
+}
+
+/// A verdict whose printed formulas divide by zero inside the printed
+/// ranges (at `singular`). Formulas that hold identically equal the derived
+/// ones as rational functions: where the derived formulas are singular too,
+/// no join of general control points exists there and the claim `holds`
+/// with those exceptional values named; where only the print divides by
+/// zero, it holds after excluding them from the ranges. A claim that fails
+/// (or holds after another correction) keeps its status, the poles named.
+fn exceptional<B: ExactBasis + Clone>(
+    join: &PrintedJoin<B>,
+    mut v: Verdict,
+    singular: &[String],
+) -> Verdict {
+    let poles = singular.join("; ");
+    if v.status != Status::Holds {
+        v.evidence.push(format!(
+            "the printed formulas are singular inside the printed ranges, where they give no join: {poles}"
+        ));
+        return v;
+    }
+    let derived: Vec<String> = join
+        .derived_points(join.printed_wrt())
+        .unwrap_or_default()
+        .into_iter()
+        .flat_map(|(_, _, s)| s)
+        .collect();
+    if derived.is_empty() {
+        v.evidence.push(format!(
+            "the printed formulas are singular inside the printed ranges, where the derived ones are not: {poles}"
+        ));
+        v.status = Status::HoldsAfterCorrection;
+        return v.with_correction(format!(
+            "the printed formulas hold wherever they are defined; exclude the poles {poles} from the printed ranges (or cancel the vanishing factor)"
+        ));
+    }
+    v.evidence.push(format!(
+        "exceptional values: the printed formulas hold wherever they are defined; they divide by zero inside the printed ranges at {poles}, where the derived formulas are singular too ({}): no {} join of general control points exists there",
+        derived.join("; "),
+        join.kind
+    ));
     v
 }
 
@@ -489,14 +542,22 @@ fn decide_residuals<B: ExactBasis + Clone>(
     let holds = |r: &[Sym]| r.iter().all(Sym::is_zero);
     let mut evidence = Vec::new();
     let mut holding = Vec::new();
+    let printed_wrt = join.printed_wrt();
     for wrt in &join.conventions {
         let r = residuals(*wrt, &join.printed);
         if holds(&r) {
             holding.push(*wrt);
         }
-        evidence.push(describe(label(&domain, *wrt), &r, &names));
+        let item = describe(label(&domain, *wrt), &r, &names);
+        evidence.push(if join.declared && *wrt != printed_wrt {
+            information(item, &label(&domain, printed_wrt))
+        } else {
+            item
+        });
     }
-    let printed_wrt = join.printed_wrt();
+    if join.declared {
+        holding.retain(|w| *w == printed_wrt);
+    }
     if holding.contains(&printed_wrt) {
         return Verdict::new(Status::Holds, method, evidence);
     }

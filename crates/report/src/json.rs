@@ -9,12 +9,13 @@
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
+use super::render::claims_only;
 use super::{Entry, View, counts, sections};
 use trig_verdict::evidence::{Evidence, Witness};
 use trig_verdict::status::Status;
 
 /// The version of the report format (and of `docs/report.schema.json`).
-pub const SCHEMA_VERSION: &str = "2.1.0";
+pub const SCHEMA_VERSION: &str = "2.2.0";
 
 /// The name of the format.
 pub const SCHEMA_NAME: &str = "trig-audit-report";
@@ -58,6 +59,10 @@ pub struct DocumentSummary {
     pub file: String,
     pub claims: usize,
     pub counts: Counts,
+    /// True for a spec's standard battery: the tool's own checks of the
+    /// basis, not claims of the document, counted apart (not in `summary`).
+    #[serde(skip_serializing_if = "std::ops::Not::not", default)]
+    pub battery: bool,
 }
 
 /// One claim with its verdict and evidence.
@@ -105,7 +110,8 @@ pub struct Report {
     /// The program that wrote the report.
     pub generator: String,
     pub intro: String,
-    /// Counts over every claim audited (not only those shown).
+    /// Counts over every claim audited (not only those shown), without the
+    /// checks of a standard battery (their counts are in `documents`).
     pub summary: Counts,
     pub documents: Vec<DocumentSummary>,
     /// The verdicts shown, when the report is filtered (`--verdict`).
@@ -124,7 +130,7 @@ pub fn json_entries(entries: &[Entry], intro: &str, view: &View) -> Report {
         schema_version: SCHEMA_VERSION.to_string(),
         generator: format!("trig-audit {}", env!("CARGO_PKG_VERSION")),
         intro: intro.to_string(),
-        summary: Counts::of(entries.iter()),
+        summary: Counts::of(claims_only(&all).into_iter()),
         documents: sections(&all)
             .into_iter()
             .map(|(d, of_doc)| DocumentSummary {
@@ -134,6 +140,7 @@ pub fn json_entries(entries: &[Entry], intro: &str, view: &View) -> Report {
                 file: d.file.clone(),
                 claims: of_doc.len(),
                 counts: Counts::of(of_doc.iter().copied()),
+                battery: d.battery,
             })
             .collect(),
         only: (!view.verdicts.is_empty()).then(|| view.verdicts.clone()),

@@ -18,7 +18,7 @@ use trig_tex::{
     prose, text,
 };
 
-use super::render::{Format, Tally, anchor, point_text, render};
+use super::render::{Format, Tally, anchor, battery_label, point_text, render};
 use super::{Document, Entry, View};
 use trig_verdict::evidence::{Part, Witness};
 use trig_verdict::status::Status;
@@ -210,10 +210,13 @@ impl Format for Latex<'_> {
                 .chain(t.by_status.iter().map(usize::to_string))
                 .collect()
         };
-        for (doc, t) in documents {
+        for (doc, t) in documents.iter().filter(|(d, _)| !d.battery) {
             table.row(cells(text(&doc.id), t));
         }
         table.foot(cells(self.strong("all"), all));
+        for (doc, t) in documents.iter().filter(|(d, _)| d.battery) {
+            table.foot(cells(text(&battery_label(doc)), t));
+        }
         let _ = writeln!(out, "{table}");
     }
 

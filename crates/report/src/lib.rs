@@ -49,6 +49,9 @@ pub struct View {
     pub summary_only: bool,
     /// Only claims with one of these verdicts (all when empty).
     pub verdicts: Vec<Status>,
+    /// A standard battery by its counts only: its checks are left out of
+    /// the index and the sections (`--battery summary`).
+    pub battery_counts_only: bool,
 }
 
 impl View {
@@ -57,6 +60,7 @@ impl View {
         entries
             .iter()
             .filter(|e| self.verdicts.is_empty() || self.verdicts.contains(&e.verdict.status))
+            .filter(|e| !(self.battery_counts_only && e.document.battery))
             .collect()
     }
 
@@ -159,6 +163,7 @@ pub(crate) mod test_entries {
             file: "f".into(),
             location: "f".into(),
             order,
+            battery: false,
         }
     }
 
@@ -193,6 +198,7 @@ mod tests {
         let view = View {
             summary_only: false,
             verdicts: vec![Status::Fails],
+            ..View::default()
         };
         let ids: Vec<&str> = view
             .select(&entries)
@@ -205,5 +211,41 @@ mod tests {
         let all: Vec<&Entry> = entries.iter().collect();
         let s = sections(&all);
         assert_eq!(s[0].0.id, "a", "sections follow the document order");
+    }
+
+    #[test]
+    fn a_battery_is_counted_apart_and_can_be_left_to_its_counts() {
+        let battery = Document {
+            battery: true,
+            ..doc("s battery", 2)
+        };
+        let entries = [
+            entry("C1", doc("s", 1), Status::Holds),
+            entry("symmetry", battery.clone(), Status::Fails),
+            entry("unity", battery, Status::Holds),
+        ];
+        let md = markdown_entries(&entries, "intro", &View::default());
+        assert!(md.contains("| **all** | 1 | 1 | 0 | 0 | 0 |"), "{md}");
+        assert!(
+            md.contains("| s battery (apart, not in all) | 2 | 1 | 1 | 0 | 0 |"),
+            "{md}"
+        );
+        assert!(md.contains("symmetry — fails"), "the battery in full: {md}");
+        let json = json_entries(&entries, "intro", &View::default());
+        assert_eq!((json.summary.holds, json.summary.fails), (1, 0));
+        assert!(json.documents.iter().any(|d| d.battery && d.claims == 2));
+        let counts_only = View {
+            battery_counts_only: true,
+            ..View::default()
+        };
+        let ids: Vec<&str> = counts_only
+            .select(&entries)
+            .iter()
+            .map(|e| e.id.as_str())
+            .collect();
+        assert_eq!(ids, ["C1"]);
+        let md = markdown_entries(&entries, "intro", &counts_only);
+        assert!(!md.contains("symmetry"), "{md}");
+        assert!(md.contains("(apart, not in all) | 2 |"), "{md}");
     }
 }

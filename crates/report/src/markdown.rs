@@ -10,7 +10,7 @@ use std::path::Path;
 
 use trig_tex::plain;
 
-use super::render::{Format, Tally, anchor, point_text, render};
+use super::render::{Format, Tally, anchor, battery_label, point_text, render};
 use super::{Document, Entry, View, short};
 use trig_verdict::evidence::{Part, Witness};
 use trig_verdict::status::Status;
@@ -140,18 +140,19 @@ impl Format for Markdown<'_> {
         let labels = Status::ALL.map(|s| s.label());
         let _ = writeln!(out, "{}", row(["document", "claims"].iter().chain(&labels)));
         let _ = writeln!(out, "|---|---|{}", "---|".repeat(Status::ALL.len()));
-        for (doc, t) in documents {
-            let counts = t.by_status.iter().map(usize::to_string);
-            let line = row([doc.id.clone(), t.claims.to_string()]
+        let line = |first: String, t: &Tally| {
+            row([first, t.claims.to_string()]
                 .into_iter()
-                .chain(counts));
-            let _ = writeln!(out, "{line}");
+                .chain(t.by_status.iter().map(usize::to_string)))
+        };
+        for (doc, t) in documents.iter().filter(|(d, _)| !d.battery) {
+            let _ = writeln!(out, "{}", line(doc.id.clone(), t));
         }
-        let counts = all.by_status.iter().map(usize::to_string);
-        let line = row(["**all**".to_string(), all.claims.to_string()]
-            .into_iter()
-            .chain(counts));
-        let _ = writeln!(out, "{line}\n");
+        let _ = writeln!(out, "{}", line("**all**".to_string(), all));
+        for (doc, t) in documents.iter().filter(|(d, _)| d.battery) {
+            let _ = writeln!(out, "{}", line(md_text(&battery_label(doc)), t));
+        }
+        out.push('\n');
     }
 
     fn index(&self, out: &mut String, entries: &[&Entry], linked: bool) {
@@ -260,7 +261,7 @@ mod tests {
             "intro",
             &View {
                 summary_only: true,
-                verdicts: vec![],
+                ..View::default()
             },
         );
         assert!(!short.contains("## Spec"), "{short}");

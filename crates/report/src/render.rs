@@ -71,7 +71,8 @@ pub(crate) trait Format {
 
     /// The title and opening paragraph (and what the view leaves out).
     fn start(&self, out: &mut String, intro: &str, note: Option<&str>);
-    /// The summary: a line per document, then all.
+    /// The summary: a line per document, then all (the documents' claims,
+    /// without the battery), then a line per battery ([`Document::battery`]).
     fn summary(&self, out: &mut String, documents: &[(&Document, Tally)], all: &Tally);
     /// The index: a line per claim, linked to its entry when `linked`.
     fn index(&self, out: &mut String, entries: &[&Entry], linked: bool);
@@ -107,7 +108,7 @@ pub(crate) fn render<F: Format>(f: &F, entries: &[Entry], intro: &str, view: &Vi
         .into_iter()
         .map(|(d, of_doc)| (d, Tally::of(&of_doc)))
         .collect();
-    f.summary(&mut out, &documents, &Tally::of(&all));
+    f.summary(&mut out, &documents, &Tally::of(&claims_only(&all)));
     f.index(&mut out, &shown, !view.summary_only);
     if !view.summary_only {
         let methods = methods(&shown);
@@ -125,6 +126,22 @@ pub(crate) fn render<F: Format>(f: &F, entries: &[Entry], intro: &str, view: &Vi
         }
     }
     f.finish(out)
+}
+
+/// The claims of the documents, without the checks of a battery (counted
+/// apart).
+pub(crate) fn claims_only<'a>(entries: &[&'a Entry]) -> Vec<&'a Entry> {
+    entries
+        .iter()
+        .copied()
+        .filter(|e| !e.document.battery)
+        .collect()
+}
+
+/// What a summary row of a battery is called: its document, and that it
+/// is not in the total.
+pub(crate) fn battery_label(doc: &Document) -> String {
+    format!("{} (apart, not in all)", doc.id)
 }
 
 /// One claim: source, printed statement, method, correction, the witness

@@ -56,6 +56,7 @@ pub fn printed_join(
     let mut join = PrintedJoin::new(spec, kind, (first, second), (p, q), printed);
     join.factors = [Sym::var(&factors[0]), Sym::var(&factors[1])];
     join.conventions = conventions(spec, wrt);
+    join.declared = true;
     join.notes = notes;
     audit(&join)
 }

@@ -26,7 +26,7 @@ use trig_judge::local_control::Control;
 use trig_verdict::real_witness::{RealPoints, with_real_points};
 use trig_verdict::verdict::Verdict;
 
-/// The report document of a spec.
+/// The report document of a spec: the claims its file lists.
 pub fn document(spec: &Spec) -> Document {
     Document {
         heading: format!("Spec {}", spec.id),
@@ -38,21 +38,42 @@ pub fn document(spec: &Spec) -> Document {
         },
         file: spec.file.clone(),
         location: spec.file.clone(),
-        order: usize::MAX,
+        order: usize::MAX - 1,
+        battery: false,
     }
 }
 
-/// The opening sentence of a spec report.
-pub fn intro(spec: &Spec) -> String {
-    format!(
-        "Every verdict below is computed by `trig-audit audit --spec {}` from the formulas of the spec file; identities are decided exactly in the symbolic ring, inequalities by certified Bernstein subdivision, counterexamples in 256-bit MPFR.",
-        spec.file
-    )
+/// The report document of a spec's standard battery: the tool's own
+/// checks of the basis, after the file's claims and counted apart.
+pub fn battery_document(spec: &Spec) -> Document {
+    Document {
+        heading: format!("Standard battery of {}", spec.id),
+        id: format!("{} battery", spec.id),
+        title: "checks the tool runs on every basis, not claims of the paper (counted apart)"
+            .into(),
+        file: spec.file.clone(),
+        location: spec.file.clone(),
+        order: usize::MAX,
+        battery: true,
+    }
 }
 
-/// The standard battery, then the file's claims.
+/// The opening sentences of a spec report (`battery`: the standard
+/// battery was run).
+pub fn intro(spec: &Spec, battery: bool) -> String {
+    let mut intro = format!(
+        "Every verdict below is computed by `trig-audit audit --spec {}` from the formulas of the spec file; identities are decided exactly in the symbolic ring, inequalities by certified Bernstein subdivision, counterexamples in 256-bit MPFR.",
+        spec.file
+    );
+    if battery {
+        intro.push_str(" The standard battery (the tool's own checks of every basis, not claims of the file) is counted apart: the total (all) counts the file's claims only.");
+    }
+    intro
+}
+
+/// The file's claims, then the standard battery.
 pub fn audit(spec: &Spec) -> Vec<Entry> {
-    audit_within(spec, None, None).entries
+    audit_within(spec, None, None, true).entries
 }
 
 /// The real points of the basis for its witnesses: the domain and the
@@ -83,9 +104,15 @@ pub struct Audit {
 /// runs over gets no verdict and is listed in [`Audit::cut_off`] (see
 /// [`crate::budget`]), so every verdict printed is the one any machine
 /// computes. With `only`, just the entry of that id (case-insensitive) is
-/// decided — the others are not computed at all.
-pub fn audit_within(spec: &Spec, budget: Option<Duration>, only: Option<&str>) -> Audit {
-    let doc = document(spec);
+/// decided — the others are not computed at all. Without `battery`, the
+/// standard battery is not run.
+pub fn audit_within(
+    spec: &Spec,
+    budget: Option<Duration>,
+    only: Option<&str>,
+    battery: bool,
+) -> Audit {
+    let (paper, checks) = (document(spec), battery_document(spec));
     let shared = Arc::new(spec.clone());
     let wanted = |id: &str| only.is_none_or(|c| id.eq_ignore_ascii_case(c));
     // every witness at a real point of the basis, within the budget
@@ -106,33 +133,36 @@ pub fn audit_within(spec: &Spec, budget: Option<Duration>, only: Option<&str>) -
     };
     // an entry whose statement the decision may state (symmetry names the
     // exchange it found); `statement` is used when it does not
-    let mut entry =
-        |id: &str, source: &str, statement: String, decide: Decision<(String, Verdict)>| {
-            if !wanted(id) {
-                return;
-            }
-            match run(decide) {
-                Some((stated, verdict)) => audit.entries.push(Entry {
+    let mut entry = |doc: &Document,
+                     id: &str,
+                     source: &str,
+                     statement: String,
+                     decide: Decision<(String, Verdict)>| {
+        if !wanted(id) || (doc.battery && !battery) {
+            return;
+        }
+        match run(decide) {
+            Some((stated, verdict)) => audit.entries.push(Entry {
+                id: id.to_string(),
+                document: doc.clone(),
+                source: source.to_string(),
+                statement: if stated.is_empty() { statement } else { stated },
+                verdict,
+                figure: None,
+            }),
+            None => {
+                audit.cut_off.push(id.to_string());
+                audit.entries.push(Entry {
                     id: id.to_string(),
                     document: doc.clone(),
                     source: source.to_string(),
-                    statement: if stated.is_empty() { statement } else { stated },
-                    verdict,
+                    statement,
+                    verdict: Verdict::not_checkable(cut_off_reason(budget)),
                     figure: None,
-                }),
-                None => {
-                    audit.cut_off.push(id.to_string());
-                    audit.entries.push(Entry {
-                        id: id.to_string(),
-                        document: doc.clone(),
-                        source: source.to_string(),
-                        statement,
-                        verdict: Verdict::not_checkable(cut_off_reason(budget)),
-                        figure: None,
-                    });
-                }
+                });
             }
-        };
+        }
+    };
     let plain = |f: fn(&Spec) -> Verdict| -> Decision<(String, Verdict)> {
         Box::new(move |s: &Spec| (String::new(), f(s)))
     };
@@ -143,8 +173,9 @@ pub fn audit_within(spec: &Spec, budget: Option<Duration>, only: Option<&str>) -
         .collect::<Vec<_>>()
         .join(", ");
     entry(
+        &checks,
         "unity",
-        "standard battery",
+        BATTERY,
         format!(
             "partition of unity: {}",
             trig_judge::unity::sum_label(
@@ -158,21 +189,24 @@ pub fn audit_within(spec: &Spec, budget: Option<Duration>, only: Option<&str>) -
         plain(trig_judge::unity::unity),
     );
     entry(
+        &checks,
         "nonnegativity",
-        "standard battery",
+        BATTERY,
         format!("{names} ≥ 0 on the domain exactly for the declared parameter ranges"),
         plain(trig_judge::nonnegative::nonnegativity),
     );
     entry(
+        &checks,
         "symmetry",
-        "standard battery",
+        BATTERY,
         "symmetry of the functions".into(),
         Box::new(|s: &Spec| trig_judge::symmetry::battery_symmetry(s)),
     );
-    entry("interpolation", "standard battery", "endpoint interpolation: only the first function is nonzero at the start (value 1), only the last at the end (value 1)".into(), plain(trig_judge::endpoint::interpolation));
+    entry(&checks, "interpolation", BATTERY, "endpoint interpolation: only the first function is nonzero at the start (value 1), only the last at the end (value 1)".into(), plain(trig_judge::endpoint::interpolation));
     entry(
+        &checks,
         "derivatives",
-        "standard battery",
+        BATTERY,
         format!(
             "exact endpoint derivatives of orders 0–{} {}, by jets and by symbolic differentiation",
             TABLE_ORDERS - 1,
@@ -182,8 +216,9 @@ pub fn audit_within(spec: &Spec, budget: Option<Duration>, only: Option<&str>) -
     );
     for order in [1, 2] {
         entry(
+            &checks,
             &format!("join-C{order}"),
-            "standard battery",
+            BATTERY,
             format!(
                 "C{order} join of Σ b_i P_i (end) and Σ b_i Q_i (start): derived conditions on Q"
             ),
@@ -193,14 +228,20 @@ pub fn audit_within(spec: &Spec, budget: Option<Duration>, only: Option<&str>) -
     for c in &spec.claims {
         let claim = c.clone();
         entry(
+            &paper,
             &c.id,
             &c.source,
             c.statement.clone(),
             Box::new(move |s: &Spec| (String::new(), decide(s, &claim))),
         );
     }
+    // the file's claims first, the battery after them
+    audit.entries.sort_by_key(|e| e.document.battery);
     audit
 }
+
+/// The source of the standard battery's entries.
+const BATTERY: &str = "standard battery";
 
 /// Why a claim cut off by the time limit has no decision: the limit, and
 /// that it is the one `not-checkable` that depends on the machine.

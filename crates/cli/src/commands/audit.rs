@@ -21,6 +21,17 @@ pub enum ReportFormat {
     Tex,
 }
 
+/// How a spec audit reports its standard battery (`--battery`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum BatteryArg {
+    /// Not run: the file's claims only.
+    None,
+    /// Run and counted (its own line of the summary), not listed.
+    Summary,
+    /// Run, counted apart and reported in full after the file's claims.
+    Full,
+}
+
 /// A verdict to show (`--verdict`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum VerdictArg {
@@ -74,6 +85,11 @@ pub struct AuditArgs {
     /// anywhere).
     #[arg(long, value_parser = time_limit)]
     time_limit: Option<f64>,
+    /// With --spec: the standard battery (the tool's own checks of every
+    /// basis, not claims of the file), always counted apart from the file's
+    /// claims: not run, its counts only, or in full (default).
+    #[arg(long, value_enum)]
+    battery: Option<BatteryArg>,
 }
 
 /// A time limit in seconds, from 0.1 to 3600.
@@ -101,14 +117,20 @@ pub fn run(args: &AuditArgs) -> CmdResult {
                     .as_deref()
                     .is_none_or(|c| id.eq_ignore_ascii_case(c))
             };
-            let audit = spec_audit::audit_within(&spec, Some(budget), args.claim.as_deref());
+            let battery = args.battery.unwrap_or(BatteryArg::Full);
+            let audit = spec_audit::audit_within(
+                &spec,
+                Some(budget),
+                args.claim.as_deref(),
+                battery != BatteryArg::None,
+            );
             let entries: Vec<Entry> = audit
                 .entries
                 .into_iter()
                 .filter(|e| chosen(&e.id))
                 .collect();
             let cut_off: Vec<String> = audit.cut_off.into_iter().filter(|id| chosen(id)).collect();
-            let mut intro = spec_audit::intro(&spec);
+            let mut intro = spec_audit::intro(&spec, battery != BatteryArg::None);
             if !cut_off.is_empty() {
                 intro.push_str(&format!(
                     " Cut off by the time limit of {} s per claim, and so not-checkable (a longer --time-limit may decide them): {}. Every other verdict below is the one any machine computes.",
@@ -121,6 +143,11 @@ pub fn run(args: &AuditArgs) -> CmdResult {
         None if args.time_limit.is_some() => {
             return Err(CliError::Usage(
                 "--time-limit applies to --spec: the audit of the five documents is bounded by counted budgets, not by time".into(),
+            ));
+        }
+        None if args.battery.is_some() => {
+            return Err(CliError::Usage(
+                "--battery applies to --spec: the five documents have no standard battery, only their claims".into(),
             ));
         }
         None => (builtin(args)?, report::BUILTIN_INTRO.to_string()),
@@ -139,6 +166,7 @@ pub fn run(args: &AuditArgs) -> CmdResult {
     let view = View {
         summary_only: args.summary,
         verdicts: args.verdict.iter().map(|v| Status::from(*v)).collect(),
+        battery_counts_only: args.battery == Some(BatteryArg::Summary),
     };
     // figures are linked by their path from where the report is written
     let output_dir = args
