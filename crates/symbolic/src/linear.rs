@@ -39,6 +39,137 @@ impl Sym {
     }
 }
 
+impl Sym {
+    /// `self` as a combination of `vars` in `style`, one term per line, as
+    /// a long formula is set in a paper: `c₁·v₁`, then `+ c₂·v₂`, `− c₃·v₃`;
+    /// each coefficient collected by the symbols `by` it is polynomial in
+    /// (the `G` factors `α`, `β`: `c = Σ cₘ·m` over their monomials `m`) and
+    /// each part factored where that is not longer. `None` when `self` is
+    /// not such a combination.
+    pub fn combination_lines(
+        &self,
+        vars: &[String],
+        by: &[String],
+        style: Style,
+    ) -> Option<Vec<String>> {
+        let terms = self.linear_in(vars)?;
+        Some(
+            terms
+                .iter()
+                .enumerate()
+                .map(|(i, (v, c))| {
+                    let point = style.sym(&Sym::var(v));
+                    let term = match by_factors(c, by, style) {
+                        Some(k) => combine(&[(k, point)], style),
+                        None => shortest_term(c, &point, style),
+                    };
+                    if i == 0 {
+                        return term;
+                    }
+                    match term.strip_prefix(style.minus()) {
+                        Some(rest) => format!("{} {rest}", style.minus()),
+                        None => format!("+ {term}"),
+                    }
+                })
+                .collect(),
+        )
+    }
+}
+
+/// `x` in `style` as a factor of a product, factored where that is not
+/// longer (a sum counted with the parentheses it needs there).
+fn shortest(x: &Sym, style: Style) -> String {
+    let expanded = style.sym(x);
+    let f = x.factored();
+    if f.trivial {
+        return expanded;
+    }
+    let factored = style.factored(&f);
+    let width = |t: &str| t.chars().count() + 2 * usize::from(has_top_level_sum(t, style));
+    if width(&factored) <= width(&expanded) {
+        factored
+    } else {
+        expanded
+    }
+}
+
+/// The term `c·point` in `style`, its coefficient factored where the term
+/// is not longer for it (a factored coefficient needs no parentheses).
+fn shortest_term(c: &Sym, point: &str, style: Style) -> String {
+    let expanded = combine(&[(style.sym(c), point.to_string())], style);
+    let f = c.factored();
+    if f.trivial {
+        return expanded;
+    }
+    let factored = combine(&[(style.factored(&f), point.to_string())], style);
+    if factored.chars().count() <= expanded.chars().count() {
+        factored
+    } else {
+        expanded
+    }
+}
+
+/// A coefficient in `style` collected by the monomials of `by`, when it is
+/// a polynomial of more than one of them (`−(2·(μ₁ + 1)·α² + (μ₁ + 2)/2·β)`,
+/// a common sign taken out, each part [`shortest`]).
+fn by_factors(c: &Sym, by: &[String], style: Style) -> Option<String> {
+    let parts = collected(c, by);
+    if parts.len() < 2 {
+        return None;
+    }
+    // a common sign is taken out when it leaves fewer minus signs in each part
+    let minuses = |x: &Sym| shortest(x, style).matches(style.minus()).count();
+    let negative = parts.iter().all(|(_, k)| minuses(&-k.clone()) < minuses(k));
+    let sign = if negative { Sym::int(-1) } else { Sym::one() };
+    let printed: Vec<(String, String)> = parts
+        .iter()
+        .map(|(m, k)| (shortest(&(k.clone() * &sign), style), style.sym(m)))
+        .collect();
+    let sum = combine(&printed, style);
+    Some(if negative {
+        format!("{}({sum})", style.minus())
+    } else {
+        sum
+    })
+}
+
+/// `c = Σ cₘ·m` over the monomials `m` of the symbols `by` (each `cₘ` free
+/// of them), highest degree first; one part `(1, c)` when `c` is not a
+/// polynomial in them (a denominator depends on one).
+fn collected(c: &Sym, by: &[String]) -> Vec<(Sym, Sym)> {
+    let mut parts = vec![(Sym::one(), c.clone())];
+    for v in by {
+        if c.denominator_poly().degree_in(v) > 0 {
+            return vec![(Sym::one(), c.clone())];
+        }
+        let mut next = Vec::new();
+        for (m, k) in parts {
+            let mut d = k;
+            let mut factorial = Sym::one();
+            let degree = d.numerator().degree_in(v);
+            let mut powers = Vec::new();
+            for e in 0..=degree {
+                if e > 0 {
+                    d = d.diff(v);
+                    factorial = factorial * &Sym::int(i64::from(e));
+                }
+                let at_zero = d.subs(v, &Sym::zero()) / &factorial;
+                if !at_zero.is_zero() {
+                    let mut power = m.clone();
+                    for _ in 0..e {
+                        power = power * &Sym::var(v);
+                    }
+                    powers.push((power, at_zero));
+                }
+            }
+            powers.reverse();
+            next.extend(powers);
+        }
+        parts = next;
+    }
+    parts
+}
+
 /// `c₁·v₁ + c₂·v₂ − …` from printed coefficients and variables: a
 /// coefficient `1` is left out, `−1` becomes a sign, a coefficient of one
 /// term (or a product) needs no parentheses, a sum does; a constant term
@@ -85,6 +216,38 @@ fn has_top_level_sum(text: &str, style: Style) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn long_combinations_one_term_per_line_coefficients_factored() {
+        let v = |n: &str| Sym::var(n);
+        let a = v("alpha");
+        // (2α² + 4α)·P1 − P2: the coefficient factored as 2α(α + 2)
+        let x = (Sym::int(2) * &a * &a + &(Sym::int(4) * &a)) * &v("P1") - &v("P2");
+        let lines = x
+            .combination_lines(&names(&["P1", "P2"]), &[], Style::Unicode)
+            .unwrap();
+        assert_eq!(lines, ["2·α·(α + 2)·P₁", "− P₂"]);
+        assert!(
+            v("alpha")
+                .combination_lines(&names(&["P1"]), &[], Style::Unicode)
+                .is_none()
+        );
+        // collected by the factors: −(4(λ + 2)(μ + 1)α² + (λ + 2)(μ + 2)β)/(2(λ + 2))
+        let (l, m, b) = (v("lambda"), v("mu"), v("beta"));
+        let two = Sym::int(2);
+        let c = -(Sym::int(4) * &(l.clone() + &two) * &(m.clone() + &Sym::one()) * &a * &a
+            + &((l.clone() + &two) * &(m.clone() + &two) * &b))
+            / &(two.clone() * &(l + &two));
+        let x = c * &v("P2") + &v("P3");
+        let lines = x
+            .combination_lines(
+                &names(&["P2", "P3"]),
+                &names(&["alpha", "beta"]),
+                Style::Unicode,
+            )
+            .unwrap();
+        assert_eq!(lines[0], "−((2·μ + 2)·α² + (1/2·μ + 1)·β)·P₂", "{lines:?}");
+    }
 
     fn names(v: &[&str]) -> Vec<String> {
         v.iter().map(|s| s.to_string()).collect()

@@ -5,7 +5,7 @@ use clap::{Args, ValueEnum};
 use serde_json::json;
 use trig_core::Described;
 use trig_deriv::{JoinKind, JoinSetup, Wrt, solve_join, vanishing};
-use trig_symbolic::Sym;
+use trig_symbolic::{Style, Sym};
 
 use super::table::WrtArg;
 use super::{CliError, CmdResult};
@@ -202,12 +202,36 @@ fn header(s: &Solved) -> Vec<String> {
     ]
 }
 
+/// Formulas with more characters (Unicode, on one line) are set one
+/// control point per line, each coefficient factored (`Sym::combination_lines`).
+const LONG_FORMULA: usize = 100;
+
+/// The lines of a forced point's formula in `style`: one line, or one term
+/// per line when the formula is longer than [`LONG_FORMULA`].
+fn formula_lines(value: &Sym, s: &Solved, style: Style) -> Vec<String> {
+    let names = &s.names;
+    let one = value.combination(names);
+    let factors: Vec<String> = s.factors.iter().map(ToString::to_string).collect();
+    if one.unicode.chars().count() > LONG_FORMULA
+        && let Some(lines) = value.combination_lines(names, &factors, style)
+    {
+        return lines;
+    }
+    vec![match style {
+        Style::Latex => one.latex,
+        Style::Plain => one.text,
+        _ => one.unicode,
+    }]
+}
+
 fn text(s: &Solved) -> String {
     let mut out = header(s).join("\n");
     out.push_str("\n\nforced control points:\n");
     for (point, value, singular) in &s.forced {
-        let formula = value.combination(&s.names).unicode;
-        out.push_str(&format!("  {} = {formula}\n", point.to_unicode()));
+        let name = point.to_unicode();
+        let indent = " ".repeat(name.chars().count() + 3);
+        let formula = formula_lines(value, s, Style::Unicode).join(&format!("\n  {indent}"));
+        out.push_str(&format!("  {name} = {formula}\n"));
         if !singular.is_empty() {
             out.push_str(&format!("    singular where {}\n", singular.join(", ")));
         }
@@ -220,7 +244,10 @@ fn tex(s: &Solved) -> String {
     let equations: Vec<(String, String)> = s
         .forced
         .iter()
-        .map(|(point, value, _)| (point.to_latex(), value.combination(&s.names).latex))
+        .map(|(point, value, _)| {
+            let lines = formula_lines(value, s, Style::Latex);
+            (point.to_latex(), lines.join(" \\\\\n&\\quad "))
+        })
         .collect();
     out.push_str(&trig_tex::align(&equations));
     for (point, _, singular) in &s.forced {
@@ -247,6 +274,8 @@ fn json_value(s: &Solved) -> serde_json::Value {
             "point": point.to_string(),
             "formula": value.to_string(),
             "latex": value.combination(&s.names).latex,
+            "lines": formula_lines(value, s, Style::Unicode),
+            "latex_lines": formula_lines(value, s, Style::Latex),
             "singular_where": singular,
         })).collect::<Vec<_>>(),
     })
