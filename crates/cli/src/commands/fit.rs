@@ -245,8 +245,10 @@ fn interval(subject: &AnyBasis, range: SearchRange) -> Result<(f64, f64, &'stati
 pub struct Method {
     pub label: String,
     pub setting: String,
-    /// The printed symbol of the one shape parameter, if any.
+    /// The printed symbol of the first shape parameter, if any.
     pub symbol: Option<String>,
+    /// The printed symbols of every shape parameter, in order.
+    pub symbols: Vec<String>,
     pub fit: OutlineFit,
 }
 
@@ -326,6 +328,7 @@ pub fn prepare(
     for subject in selected {
         let params = parameters(&subject);
         let symbol = params.first().map(|(_, s, _)| s.clone());
+        let symbols: Vec<String> = params.iter().map(|(_, s, _)| s.clone()).collect();
         let basis: Arc<dyn NumericBasis> = Arc::new(subject.clone());
         let optimise = runs != Runs::Fixed && params.len() == 1;
         if runs != Runs::Optimised || !optimise {
@@ -344,6 +347,7 @@ pub fn prepare(
                     setting
                 },
                 symbol: symbol.clone(),
+                symbols: symbols.clone(),
                 fit: fit_outline(&outline, basis.clone(), &options(Shape::Fixed(fixed)))
                     .map_err(fit_err)?,
             });
@@ -357,6 +361,7 @@ pub fn prepare(
                     symbol.clone().unwrap_or_default()
                 ),
                 symbol,
+                symbols,
                 fit: fit_outline(&outline, basis, &options(Shape::Optimise { lo, hi }))
                     .map_err(fit_err)?,
             });
