@@ -200,3 +200,128 @@ fn a_missing_choice_unknown_names_and_values_outside_are_usage_errors() {
     assert!(tex.contains(r"at $\mu = 2$}"), "{tex}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `fit --optimise` on a basis with two parameters searches the one
+/// `--vary` names (or the one `--param` leaves free), the other held at
+/// its `--param` value in every segment; `plot fit` says so in its title.
+#[test]
+fn fit_optimises_the_varied_parameter_with_the_others_fixed() {
+    let spec = example("han-ma-huang-cubic.toml");
+    let glyph = format!("{}/../data/glyphs/epsilon.csv", env!("CARGO_MANIFEST_DIR"));
+    let json = trig_e2e::stdout_ok(&[
+        "fit",
+        "--spec",
+        &spec,
+        "--glyph",
+        &glyph,
+        "--param",
+        "lambda=0",
+        "--param",
+        "mu=1/2",
+        "--vary",
+        "mu",
+        "--optimise",
+        "--format",
+        "json",
+    ]);
+    let v: serde_json::Value = serde_json::from_str(&json).expect("JSON");
+    let methods = v["methods"].as_array().expect("methods");
+    assert_eq!(methods.len(), 2, "the fixed fit and the optimised one");
+    let params = |m: &serde_json::Value| -> Vec<(f64, f64)> {
+        m["fit"]["segments"]
+            .as_array()
+            .expect("segments")
+            .iter()
+            .map(|s| {
+                let p = s["params"].as_array().expect("params");
+                (p[0].as_f64().expect("λ"), p[1].as_f64().expect("μ"))
+            })
+            .collect()
+    };
+    assert!(params(&methods[0]).iter().all(|&p| p == (0.0, 0.5)));
+    let searched = params(&methods[1]);
+    assert!(
+        searched
+            .iter()
+            .all(|&(l, m)| l == 0.0 && (-2.0..=1.0).contains(&m))
+    );
+    assert!(searched.iter().any(|&(_, m)| m != 0.5), "{searched:?}");
+    let setting = methods[1]["setting"].as_str().expect("setting");
+    assert!(setting.starts_with("μ optimised in [-2, 1]") && setting.ends_with("λ = 0"));
+    // the free parameter is searched without --vary; none free is an error
+    let dir = scratch("fit");
+    let (_, tex) = draw(
+        &dir,
+        "fit",
+        &[
+            "fit",
+            "--spec",
+            &spec,
+            "--glyph",
+            &glyph,
+            "--param",
+            "mu=1/2",
+            "--optimise",
+        ],
+    );
+    assert!(
+        tex.contains(r"($\lambda$ optimised per segment, $\mu = 0.5$, "),
+        "{tex}"
+    );
+    let out = dir.join("x.svg").display().to_string();
+    assert_errors(&[
+        (
+            &[
+                "plot",
+                "fit",
+                "--spec",
+                &spec,
+                "--glyph",
+                &glyph,
+                "--optimise",
+                "--output",
+                &out,
+            ],
+            "has 2 (λ, μ): fix all but one with --param NAME=VALUE (--vary NAME",
+        ),
+        (
+            &[
+                "fit", "--spec", &spec, "--glyph", &glyph, "--param", "lambda=0", "--vary", "mu",
+            ],
+            "--vary chooses the parameter --optimise searches",
+        ),
+        (
+            &[
+                "plot",
+                "fit",
+                "--spec",
+                &spec,
+                "--glyph",
+                &glyph,
+                "--vary",
+                "nu",
+                "--optimise",
+                "--output",
+                &out,
+            ],
+            "no parameter `nu`",
+        ),
+        (
+            &[
+                "plot",
+                "fit",
+                "--spec",
+                &spec,
+                "--glyph",
+                &glyph,
+                "--param",
+                "lambda=2",
+                "--optimise",
+                "--output",
+                &out,
+            ],
+            "outside the published range",
+        ),
+    ]);
+    let _ = std::fs::remove_dir_all(&dir);
+}

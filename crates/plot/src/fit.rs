@@ -15,9 +15,15 @@ const SAMPLES: usize = 60;
 /// `fit` over the data of `outline`: the data points, the C⁰ fit,
 /// the refined fit if there is one, and the breakpoints.
 /// Series: data points, one curve per segment per stage, breakpoints.
-/// `symbols` are the printed symbols of the basis's parameters: the title
-/// states their fixed values (`⟪λ = 0⟫, ⟪μ = 0.5⟫`).
-pub fn fit_svg(outline: &Outline, fit: &OutlineFit, symbols: &[String]) -> Result<Picture> {
+/// `symbols` are the printed symbols of the basis's parameters, `searched`
+/// the one an optimised fit searched: the title names it and states the
+/// fixed values of the others (`⟪λ⟫ optimised per segment, ⟪μ = 0.5⟫`).
+pub fn fit_svg(
+    outline: &Outline,
+    fit: &OutlineFit,
+    symbols: &[String],
+    searched: Option<usize>,
+) -> Result<Picture> {
     let stages: Vec<(bool, String)> =
         std::iter::once((false, "C0 fit (least squares per segment)".to_string()))
             .chain(fit.after.map(|_| {
@@ -73,19 +79,27 @@ pub fn fit_svg(outline: &Outline, fit: &OutlineFit, symbols: &[String]) -> Resul
             .legend("breakpoints (segment ends, interpolated)"),
     );
     let fixed: Vec<String> = match fit.segments.first() {
-        Some(s) if !fit.optimised => symbols
+        Some(s) => symbols
             .iter()
             .zip(&s.params)
-            .map(|(p, v)| formula(&format!("{p} = {}", v.to_string().replace('-', "−"))))
+            .enumerate()
+            .filter(|(k, _)| !fit.optimised || Some(*k) != searched)
+            .map(|(_, (p, v))| formula(&format!("{p} = {}", v.to_string().replace('-', "−"))))
             .collect(),
-        _ => Vec::new(),
+        None => Vec::new(),
     };
-    let params = if fit.optimised {
-        "shape parameter optimised per segment".to_string()
-    } else if fixed.is_empty() {
+    let mut params = Vec::new();
+    if fit.optimised {
+        params.push(match searched.and_then(|k| symbols.get(k)) {
+            Some(p) => format!("{} optimised per segment", formula(p)),
+            None => "shape parameter optimised per segment".to_string(),
+        });
+    }
+    params.extend(fixed);
+    let params = if params.is_empty() {
         "no parameter".to_string()
     } else {
-        fixed.join(", ")
+        params.join(", ")
     };
     let frame = Frame {
         title: format!(

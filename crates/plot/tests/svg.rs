@@ -143,7 +143,9 @@ fn fit_plot_has_data_and_every_segment_of_both_stages() {
         shape: Shape::Fixed(vec![0.6]),
     };
     let fit = fit_outline(&outline, Arc::new(Family::ThesisCubic), &options).unwrap();
-    let svg = fit_svg(&outline, &fit, &["m".to_string()]).unwrap().svg;
+    let svg = fit_svg(&outline, &fit, &["m".to_string()], None)
+        .unwrap()
+        .svg;
     let (curves, markers, texts) = census(&svg);
     assert_eq!(curves, 2 * fit.segments.len());
     assert_eq!(

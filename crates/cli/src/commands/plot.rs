@@ -331,9 +331,14 @@ pub fn run(args: &PlotArgs) -> CmdResult {
             let method = methods
                 .first()
                 .ok_or_else(|| CliError::Usage("nothing fitted".into()))?;
+            let searched = method
+                .fit
+                .optimised
+                .then(|| method.shown.as_ref().map(|(k, _)| *k))
+                .flatten();
             write(
                 output,
-                fit_svg(&outline, &method.fit, &method.symbols).map_err(plot_err)?,
+                fit_svg(&outline, &method.fit, &method.symbols, searched).map_err(plot_err)?,
                 look,
             )
         }
