@@ -12,7 +12,7 @@ use std::process::Command;
 use trig_e2e::{error_line, example, stdout_ok, written};
 
 /// A scratch directory of this test process.
-fn scratch(name: &str) -> PathBuf {
+pub(crate) fn scratch(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("trig-audit-paste-{}-{name}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("scratch directory");
     dir
@@ -27,7 +27,7 @@ fn article(preamble: &str, body: &str) -> String {
 
 /// Compiles `tex` when pdflatex (and pgfplots, for `figure`) is on the
 /// machine: no error, no overfull box, at least one page.
-fn compiles_cleanly(tex: &str, name: &str, figure: bool) {
+pub(crate) fn compiles_cleanly(tex: &str, name: &str, figure: bool) {
     let pgfplots = Command::new("kpsewhich")
         .arg("pgfplots.sty")
         .output()
@@ -101,7 +101,7 @@ fn table_fragments_fit_a_plain_article() {
 }
 
 /// Draws `plot ARGS` into `dir/name.svg` and returns (SVG, pgfplots code).
-fn draw(dir: &Path, name: &str, args: &[&str]) -> (String, String) {
+pub(crate) fn draw(dir: &Path, name: &str, args: &[&str]) -> (String, String) {
     let svg = dir.join(format!("{name}.svg"));
     let path = svg.display().to_string();
     let out = written(&[&["plot"], args, &["--output", &path]].concat());
@@ -126,10 +126,21 @@ fn figure_fragments_take_a_width_a_title_or_none_and_a_real_minus() {
         tex.contains("width={\\linewidth-") && tex.contains("title={"),
         "{tex}"
     );
-    // the legend's −2 with a minus sign (math), not a hyphen
-    assert!(tex.contains("\\addlegendentry{m = $-$2}"), "{tex}");
-    assert!(!tex.contains("= -2"), "{tex}");
-    assert!(svg.contains("m = −2") && svg.contains("font-family=\"serif\""));
+    // the legend in math (−2 with a minus sign, not a hyphen), the
+    // function names with their indices; the SVG in Unicode
+    assert!(tex.contains("\\addlegendentry{$m = -2$}"), "{tex}");
+    assert!(tex.contains("\\addlegendentry{$b_{0}$}"), "{tex}");
+    assert!(!tex.contains("{m = -2}") && !tex.contains("{b0}"), "{tex}");
+    // a short title: the basis's, not its citation (a comment beside it)
+    assert!(
+        tex.contains("title={cubic trigonometric basis $b_{i}(u;\\allowbreak m)$},"),
+        "{tex}"
+    );
+    assert!(
+        tex.contains("% source: seed 001 (thesis), (3.7)\n"),
+        "{tex}"
+    );
+    assert!(svg.contains("m = −2") && svg.contains("b₀") && svg.contains("font-family=\"serif\""));
     let (svg, tex) = draw(
         &dir,
         "narrow",
@@ -140,7 +151,7 @@ fn figure_fragments_take_a_width_a_title_or_none_and_a_real_minus() {
         "{tex}"
     );
     assert!(
-        !svg.contains("thesis-cubic: b0"),
+        !svg.contains("cubic trigonometric basis"),
         "the SVG without its title"
     );
     let (_, tex) = draw(&dir, "whole", &[&basis[..], &["--standalone"]].concat());

@@ -353,7 +353,7 @@ fn fit_takes_a_spec_file() {
 
 /// The (x, y) columns of a figure's data file, of the series whose label
 /// starts with `series` (every series for "").
-fn figure_points(path: &std::path::Path, series: &str) -> Vec<(f64, f64)> {
+pub(crate) fn figure_points(path: &std::path::Path, series: &str) -> Vec<(f64, f64)> {
     std::fs::read_to_string(path.with_extension("csv"))
         .expect("the figure's data")
         .lines()

@@ -14,6 +14,7 @@ mod cli_hostile_round2_io;
 mod cli_interp;
 mod cli_join;
 mod cli_paste;
+mod cli_plot_params;
 mod cli_spec;
 mod cli_spec_engine;
 mod cli_spec_features;

@@ -39,7 +39,11 @@ fn fit_all(outlines: &[Outline], optimise: bool) -> f64 {
             let shape = match (optimise, info.params.first()) {
                 (true, Some(spec)) => {
                     let (lo, hi) = search_interval(&spec.range).expect("bounded range");
-                    Shape::Optimise { lo, hi }
+                    Shape::Optimise {
+                        lo,
+                        hi,
+                        fixed: vec![],
+                    }
                 }
                 (_, Some(_)) => Shape::Fixed(vec![0.6]),
                 (_, None) => Shape::Fixed(vec![]),

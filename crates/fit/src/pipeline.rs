@@ -26,9 +26,14 @@ pub const MIN_SEGMENT_POINTS: usize = 4;
 pub enum Shape {
     /// The same parameters for every segment (the thesis: 0.6).
     Fixed(Vec<f64>),
-    /// The one shape parameter is chosen per segment by golden-section
-    /// search on `[lo, hi]` ([`crate::optimise`]).
-    Optimise { lo: f64, hi: f64 },
+    /// One shape parameter is chosen per segment by golden-section search
+    /// on `[lo, hi]` ([`crate::optimise`]), the others at the values
+    /// `fixed` (by index; none for a basis with one parameter).
+    Optimise {
+        lo: f64,
+        hi: f64,
+        fixed: Vec<(usize, f64)>,
+    },
 }
 
 /// Options of [`fit_outline`].
@@ -127,24 +132,44 @@ pub fn fit_outline(
         let what = format!("segment {}", k + 1);
         let basis = match &options.shape {
             Shape::Fixed(p) => SegmentBasis::new(family.clone(), p)?,
-            Shape::Optimise { lo, hi } => {
+            Shape::Optimise { lo, hi, fixed } => {
                 let (_, n) = family.counts();
-                if n != 1 {
+                let free: Vec<usize> = (0..n)
+                    .filter(|k| !fixed.iter().any(|(j, _)| j == k))
+                    .collect();
+                let [index] = free[..] else {
                     return Err(FitError::Option(format!(
-                        "`{}` has {n} shape parameters; optimisation needs exactly one",
-                        family.basis_id()
+                        "`{}` has {n} shape parameters; optimisation searches one, the others fixed ({} fixed)",
+                        family.basis_id(),
+                        fixed.len()
+                    )));
+                };
+                if fixed.len() + 1 != n {
+                    return Err(FitError::Option(format!(
+                        "`{}` has {n} shape parameters; {} fixed values given",
+                        family.basis_id(),
+                        fixed.len()
                     )));
                 }
+                // every parameter: the fixed values, `p` at the searched one
+                let with = |p: f64| {
+                    let mut all = vec![p; n];
+                    for (j, v) in fixed {
+                        all[*j] = *v;
+                    }
+                    all[index] = p;
+                    all
+                };
                 let (p, _) = golden_section(
                     |p| {
-                        let b = SegmentBasis::new(family.clone(), &[p])?;
+                        let b = SegmentBasis::new(family.clone(), &with(p))?;
                         let c = fit_segment(&b, points, t, &what)?;
                         Ok(squared_errors(&b, &c, points, t).iter().sum())
                     },
                     *lo,
                     *hi,
                 )?;
-                SegmentBasis::new(family.clone(), &[p])?
+                SegmentBasis::new(family.clone(), &with(p))?
             }
         };
         controls.push(fit_segment(&basis, points, t, &what)?);

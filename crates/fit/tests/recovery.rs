@@ -190,7 +190,14 @@ fn optimised_parameters_beat_the_interval_ends() {
         let best = fit_outline(
             &outline,
             Arc::new(family),
-            &options(Shape::Optimise { lo, hi }, None),
+            &options(
+                Shape::Optimise {
+                    lo,
+                    hi,
+                    fixed: vec![],
+                },
+                None,
+            ),
         )
         .unwrap();
         for end in [lo, hi] {

@@ -6,8 +6,9 @@ use trig_core::Affine;
 use crate::chart::{Frame, Look, Series};
 use crate::error::{PlotError, Result};
 use crate::picture::Picture;
-use crate::plotted::Plotted;
+use crate::plotted::{Plotted, formula};
 use crate::style::{CURVE, GREY, colour, dash, padded};
+use trig_tex::plain;
 
 /// The curves of one setting, one per function.
 type Curves = Vec<Vec<(f64, f64)>>;
@@ -22,13 +23,7 @@ const SAMPLES: usize = 201;
 /// drawn once, labelled with every value (`λ = 0, 1`). The legend lists
 /// the functions by colour, then the settings by line style.
 pub fn basis_svg(plot: &Plotted) -> Result<Picture> {
-    let title = format!(
-        "{}: {} — {}",
-        plot.id,
-        plot.functions.join(", "),
-        plot.citation
-    );
-    picture(title, &[plot])
+    picture(plot.heading(&plot.name), &[plot])
 }
 
 /// `plot` (wide and light) and `versus` (thin) over each other, the same
@@ -46,12 +41,7 @@ pub fn basis_versus_svg(plot: &Plotted, versus: &Plotted) -> Result<Picture> {
             plot.id, versus.id
         )));
     }
-    let title = format!(
-        "{} (wide) versus {} (thin): {}",
-        plot.id,
-        versus.id,
-        plot.functions.join(", ")
-    );
+    let title = plot.heading(&format!("{} (wide) versus {} (thin)", plot.id, versus.id));
     picture(title, &[plot, versus])
 }
 
@@ -68,13 +58,14 @@ fn stroke(p: usize, plots: usize) -> (f64, f64) {
 /// The picture of `plots` (see [`basis_svg`], [`basis_versus_svg`]).
 fn picture(title: String, plots: &[&Plotted]) -> Result<Picture> {
     // the legend first: functions by colour, settings by line style, plots by width
-    let entry =
-        |label: &str, look: Look| Series::new(format!("legend: {label}"), [], look).legend(label);
+    let entry = |label: &str, look: Look| {
+        Series::new(format!("legend: {}", plain(label)), [], look).legend(label)
+    };
     let mut series: Vec<Series> = plots[0]
         .functions
         .iter()
         .enumerate()
-        .map(|(j, name)| entry(name, Look::line(colour(j), CURVE)))
+        .map(|(j, name)| entry(&formula(name), Look::line(colour(j), CURVE)))
         .collect();
     let mut drawn: Vec<Series> = Vec::new();
     let mut styles: Vec<(usize, String)> = Vec::new();
@@ -96,7 +87,7 @@ fn picture(title: String, plots: &[&Plotted]) -> Result<Picture> {
         let (width, opacity) = stroke(p, plots.len());
         for (k, same, curves) in groups {
             let label = plot.label(&same);
-            if plot.symbol.is_some() && !styles.iter().any(|(d, _)| *d == k) {
+            if plot.varied.is_some() && !styles.iter().any(|(d, _)| *d == k) {
                 styles.push((k, label.clone()));
             }
             let label = match plots.len() {
@@ -109,7 +100,7 @@ fn picture(title: String, plots: &[&Plotted]) -> Result<Picture> {
                     opacity,
                     ..Look::line(colour(j), width).dashed(dash(k))
                 };
-                drawn.push(Series::new(format!("{name}, {label}"), curve, look));
+                drawn.push(Series::new(plain(&format!("{name}, {label}")), curve, look));
             }
         }
     }
@@ -137,6 +128,7 @@ fn picture(title: String, plots: &[&Plotted]) -> Result<Picture> {
         title,
         x_label: plots[0].variable.clone(),
         y_label: "basis function value".into(),
+        caption: plots[0].citation.clone(),
         x,
         y,
         zero_line: true,

@@ -1,6 +1,9 @@
 //! A chart as data: its frame (title, axis labels, ranges) and its
 //! series, each with its look and legend entry — what every output
-//! format (SVG, pgfplots, CSV) draws from.
+//! format (SVG, pgfplots, CSV) draws from. The title, the axis labels and
+//! the legend entries are marked text (`⟪…⟫` around formulas,
+//! [`trig_tex::marked()`]): set in math by the pgfplots code, in Unicode by
+//! the SVG; a series' own label (the CSV's) is plain text.
 
 /// The frame of a picture: title, axis labels and the ranges shown.
 #[derive(Debug, Clone, PartialEq)]
@@ -8,6 +11,9 @@ pub struct Frame {
     pub title: String,
     pub x_label: String,
     pub y_label: String,
+    /// What a caption may say beside the title (the source of a basis):
+    /// written as a comment of the pgfplots code.
+    pub caption: String,
     pub x: (f64, f64),
     pub y: (f64, f64),
     /// Draw the line `y = 0` (the point of positivity plots).

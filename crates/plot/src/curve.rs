@@ -5,8 +5,9 @@
 use crate::chart::{Frame, Look, Mark, Series};
 use crate::error::{PlotError, Result};
 use crate::picture::Picture;
-use crate::plotted::Plotted;
+use crate::plotted::{Plotted, formula};
 use crate::style::{CURVE, GREY, THIN, colour, equal_aspect, padded};
+use trig_tex::plain;
 
 /// Points per curve.
 const SAMPLES: usize = 201;
@@ -67,25 +68,22 @@ pub fn curve_svg(plot: &Plotted, control: &[(f64, f64)]) -> Result<Picture> {
     };
     let mut series = vec![
         Series::new("control polygon", control.iter().copied(), polygon).legend(format!(
-            "control polygon V0…V{}",
-            control.len().saturating_sub(1)
+            "control polygon {}",
+            formula(&format!("V0…V{}", control.len().saturating_sub(1)))
         )),
     ];
     for (k, (s, pts)) in curves.into_iter().enumerate() {
-        let label = if s.is_empty() {
-            plot.id.clone()
-        } else {
-            plot.label(std::slice::from_ref(&s))
+        let label = match plot.varied {
+            None => plot.id.clone(),
+            Some(_) => plot.label(std::slice::from_ref(&s)),
         };
-        series.push(Series::new(label.clone(), pts, Look::line(colour(k), CURVE)).legend(label));
+        series.push(Series::new(plain(&label), pts, Look::line(colour(k), CURVE)).legend(label));
     }
     let frame = Frame {
-        title: format!(
-            "{} curve with its control polygon — {}",
-            plot.id, plot.citation
-        ),
+        title: plot.heading(&format!("{}: curve and control polygon", plot.name)),
         x_label: "x".into(),
         y_label: "y".into(),
+        caption: plot.citation.clone(),
         x,
         y,
         zero_line: false,

@@ -14,6 +14,18 @@ pub enum PlotError {
     /// Bad input to a plot (no parameter values, non-finite data, …).
     #[error("cannot plot: {0}")]
     Input(String),
+    /// Several parameters are free and none is chosen to vary.
+    #[error(
+        "`{id}` has {} free parameters ({}); {what} plots vary one: fix the others with --param NAME=VALUE (e.g. --param {}=…), or choose the varied one with --vary NAME and fix the rest",
+        free.len(),
+        free.join(", "),
+        free.last().map_or("", String::as_str)
+    )]
+    Vary {
+        id: String,
+        what: String,
+        free: Vec<String>,
+    },
     /// The drawing backend failed.
     #[error("drawing failed: {0}")]
     Draw(String),

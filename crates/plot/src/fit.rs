@@ -6,6 +6,7 @@ use trig_fit::{Outline, OutlineFit};
 use crate::chart::{Frame, Look, Mark, Series};
 use crate::error::Result;
 use crate::picture::Picture;
+use crate::plotted::formula;
 use crate::style::{BLACK, CURVE, LIGHT_GREY, colour, equal_aspect, padded};
 
 /// Points drawn per fitted segment.
@@ -14,7 +15,15 @@ const SAMPLES: usize = 60;
 /// `fit` over the data of `outline`: the data points, the C⁰ fit,
 /// the refined fit if there is one, and the breakpoints.
 /// Series: data points, one curve per segment per stage, breakpoints.
-pub fn fit_svg(outline: &Outline, fit: &OutlineFit) -> Result<Picture> {
+/// `symbols` are the printed symbols of the basis's parameters, `searched`
+/// the one an optimised fit searched: the title names it and states the
+/// fixed values of the others (`⟪λ⟫ optimised per segment, ⟪μ = 0.5⟫`).
+pub fn fit_svg(
+    outline: &Outline,
+    fit: &OutlineFit,
+    symbols: &[String],
+    searched: Option<usize>,
+) -> Result<Picture> {
     let stages: Vec<(bool, String)> =
         std::iter::once((false, "C0 fit (least squares per segment)".to_string()))
             .chain(fit.after.map(|_| {
@@ -69,13 +78,28 @@ pub fn fit_svg(outline: &Outline, fit: &OutlineFit) -> Result<Picture> {
         Series::new("breakpoints", breaks, Look::marks(BLACK, Mark::Crosses))
             .legend("breakpoints (segment ends, interpolated)"),
     );
-    let params = if fit.optimised {
-        "shape parameter optimised per segment".to_string()
+    let fixed: Vec<String> = match fit.segments.first() {
+        Some(s) => symbols
+            .iter()
+            .zip(&s.params)
+            .enumerate()
+            .filter(|(k, _)| !fit.optimised || Some(*k) != searched)
+            .map(|(_, (p, v))| formula(&format!("{p} = {}", v.to_string().replace('-', "−"))))
+            .collect(),
+        None => Vec::new(),
+    };
+    let mut params = Vec::new();
+    if fit.optimised {
+        params.push(match searched.and_then(|k| symbols.get(k)) {
+            Some(p) => format!("{} optimised per segment", formula(p)),
+            None => "shape parameter optimised per segment".to_string(),
+        });
+    }
+    params.extend(fixed);
+    let params = if params.is_empty() {
+        "no parameter".to_string()
     } else {
-        match fit.segments.first().and_then(|s| s.params.first()) {
-            Some(p) => format!("parameter {p}"),
-            None => "no parameter".to_string(),
-        }
+        params.join(", ")
     };
     let frame = Frame {
         title: format!(
@@ -87,6 +111,7 @@ pub fn fit_svg(outline: &Outline, fit: &OutlineFit) -> Result<Picture> {
         ),
         x_label: "x (px, 512 px per em)".into(),
         y_label: "y (px)".into(),
+        caption: String::new(),
         x,
         y,
         zero_line: false,

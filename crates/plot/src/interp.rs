@@ -68,6 +68,7 @@ pub fn interp_svg(
         title: title.into(),
         x_label: "x".into(),
         y_label: "y = P(x)".into(),
+        caption: String::new(),
         x,
         y,
         zero_line: true,

@@ -38,5 +38,5 @@ pub use fit::fit_svg;
 pub use interp::{Interpolant, interp_svg};
 pub use pgf::PgfOptions;
 pub use picture::Picture;
-pub use plotted::Plotted;
+pub use plotted::{Choice, Plotted};
 pub use region::{RegionCell, RegionKind, region_svg};

@@ -6,12 +6,13 @@
 //! and axis labels included), its height in the SVG's proportion, and an
 //! equal-aspect frame keeps one data unit as long on both axes
 //! (`axis equal image`). Text (title, axis labels, legend entries) is
-//! written by the one LaTeX writer, [`trig_tex`] (a minus sign as math);
+//! marked text written by the one LaTeX writer ([`trig_tex::marked()`]:
+//! formulas in math, a minus sign as math);
 //! tick labels are pgfplots' own, in math.
 
 use std::fmt::Write;
 
-use trig_tex::{article, comment, input_note, text};
+use trig_tex::{article, comment, input_note, labelled, marked, plain, text};
 
 use crate::chart::{Look, Mark};
 use crate::picture::Picture;
@@ -117,26 +118,33 @@ impl Picture {
         let what = if f.title.is_empty() {
             "trig-audit plot".to_string()
         } else {
-            format!("{} (trig-audit plot)", text(&f.title))
+            format!("{} (trig-audit plot)", text(&plain(&f.title)))
         };
         let mut out = input_note(
             &format!("{what}; the data is in the CSV file of the same name"),
             &PACKAGES,
             &SETUP,
         );
+        if !f.caption.is_empty() {
+            out.push_str(&comment(&format!("source: {}", text(&plain(&f.caption)))));
+        }
         out.push_str("\\begin{tikzpicture}\n\\begin{axis}[\n");
         // column-major as in the SVG: transposed, `legend columns` counts rows
-        let columns = legend_columns(self.legend().map(|(t, _)| t), PGF_LEGEND_TWO_COLUMNS);
+        let plain_entries: Vec<String> = self.legend().map(|(t, _)| plain(t)).collect();
+        let columns = legend_columns(
+            plain_entries.iter().map(String::as_str),
+            PGF_LEGEND_TWO_COLUMNS,
+        );
         let rows = self.legend().count().div_ceil(columns).max(1);
         let width = &options_of.width;
         let ratio = PLOT_AREA.1 / PLOT_AREA.0;
         let mut lines = Vec::new();
         if !f.title.is_empty() {
-            lines.push(format!("title={{{}}},", text(&f.title)));
+            lines.push(format!("title={{{}}},", labelled(&f.title)));
         }
         lines.extend([
-            format!("xlabel={{{}}},", text(&f.x_label)),
-            format!("ylabel={{{}}},", text(&f.y_label)),
+            format!("xlabel={{{}}},", marked(&f.x_label)),
+            format!("ylabel={{{}}},", marked(&f.y_label)),
             format!("xmin={}, xmax={},", num(f.x.0), num(f.x.1)),
             format!("ymin={}, ymax={},", num(f.y.0), num(f.y.1)),
             // the axis alone, its labels beside it within the width
@@ -168,7 +176,7 @@ impl Picture {
                 out,
                 "\\addlegendimage{{{}}}\n\\addlegendentry{{{}}}",
                 options(look),
-                text(entry)
+                marked(entry)
             );
         }
         if f.zero_line {
@@ -252,6 +260,7 @@ mod tests {
                 title: "T & λ".into(),
                 x_label: "x".into(),
                 y_label: "y".into(),
+                caption: String::new(),
                 x: (0.0, 2.0),
                 y: (-1.0, 1.0),
                 zero_line: true,
@@ -296,6 +305,7 @@ mod tests {
             title: String::new(),
             x_label: "x".into(),
             y_label: "y".into(),
+            caption: String::new(),
             x: (0.0, 1.0),
             y: (0.0, 1.0),
             zero_line: false,

@@ -81,6 +81,7 @@ mod tests {
             title: "t".into(),
             x_label: "x".into(),
             y_label: "y".into(),
+            caption: String::new(),
             x: (0.0, 1.0),
             y: (-2.0, 1.0),
             zero_line: false,

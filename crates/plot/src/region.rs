@@ -8,6 +8,7 @@
 use crate::chart::{Frame, Look, Mark, Series};
 use crate::error::Result;
 use crate::picture::Picture;
+use crate::plotted::formula;
 use crate::style::{BLACK, CURVE, colour, over_white};
 
 /// How a cell was classified.
@@ -104,8 +105,9 @@ pub fn region_svg(
     }
     let frame = Frame {
         title: title.into(),
-        x_label: axes.0.into(),
-        y_label: axes.1.into(),
+        x_label: formula(axes.0),
+        y_label: formula(axes.1),
+        caption: String::new(),
         x,
         y,
         zero_line: false,

@@ -1,11 +1,8 @@
 //! Shared look: the layout (a 160 mm wide figure in units of 0.2 mm),
 //! the font, colours and dash patterns, the bounding box with a margin,
-//! equal scales, and the parameter values a plot varies.
-
-use trig_core::{Affine, FamilyInfo};
+//! equal scales.
 
 use crate::chart::Dash;
-use crate::error::{PlotError, Result};
 
 /// The font family of the SVG's text: serif, as a paper's text (the
 /// pgfplots code takes the document's own font).
@@ -141,22 +138,4 @@ pub fn equal_aspect(x: (f64, f64), y: (f64, f64)) -> ((f64, f64), (f64, f64)) {
     let (cx, cy) = (x.0 / 2.0 + x.1 / 2.0, y.0 / 2.0 + y.1 / 2.0);
     let (hx, hy) = (per_px * area.0, per_px * area.1);
     ((cx - hx, cx + hx), (cy - hy, cy + hy))
-}
-
-/// The parameter settings a plot of `info` draws, one per value in `values`
-/// (one empty setting for a family without parameters); `what` names the
-/// plot in the error for families with several parameters.
-pub fn settings(info: &FamilyInfo, values: &[Affine], what: &str) -> Result<Vec<Vec<Affine>>> {
-    match info.params.len() {
-        0 => Ok(vec![vec![]]),
-        1 if !values.is_empty() => Ok(values.iter().map(|v| vec![v.clone()]).collect()),
-        1 => Err(PlotError::Input(format!(
-            "give at least one value of {}",
-            info.params[0].name
-        ))),
-        n => Err(PlotError::Input(format!(
-            "`{}` has {n} parameters; {what} plots vary one",
-            info.id
-        ))),
-    }
 }

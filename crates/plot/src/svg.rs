@@ -1,7 +1,8 @@
 //! The SVG of a [`Picture`](crate::Picture) description, drawn with
 //! `plotters`: the title (none when it is empty: the caption of a paper
 //! says it), the chart, and the legend below the chart (never over the
-//! data); text in a serif font, negative numbers with a real minus sign.
+//! data); text in a serif font (its formulas in Unicode, indices as
+//! subscripts), negative numbers with a real minus sign.
 //!
 //! `plotters` writes whole-pixel coordinates, so everything is drawn at
 //! [`SCALE`] times the layout (fonts, strokes, margins scaled with it) and
@@ -21,6 +22,7 @@ use crate::style::{
     MARGIN, PLOT_AREA, SVG_LEGEND_TWO_COLUMNS, THIN, TITLE_HEIGHT, UNIT_MM, WIDTH, X_LABEL_AREA,
     Y_LABEL_AREA, legend_columns,
 };
+use trig_tex::unicode;
 
 /// Drawn pixels per layout unit.
 pub const SCALE: u32 = 10;
@@ -47,11 +49,21 @@ fn colour(look: &Look) -> RGBAColor {
 
 /// Draws `frame` and `series`; returns the SVG text.
 pub fn render(frame: &Frame, series: &[Series]) -> Result<String> {
-    let entries: Vec<(&str, &Look)> = series
+    // the marked text in Unicode (`⟪b0⟫` → `b₀`)
+    let entries: Vec<(String, &Look)> = series
         .iter()
-        .filter_map(|s| s.legend.as_deref().map(|t| (t, &s.look)))
+        .filter_map(|s| s.legend.as_deref().map(|t| (unicode(t), &s.look)))
         .collect();
-    let columns = legend_columns(entries.iter().map(|(t, _)| *t), SVG_LEGEND_TWO_COLUMNS);
+    let columns = legend_columns(
+        entries.iter().map(|(t, _)| t.as_str()),
+        SVG_LEGEND_TWO_COLUMNS,
+    );
+    let frame = &Frame {
+        title: unicode(&frame.title),
+        x_label: unicode(&frame.x_label),
+        y_label: unicode(&frame.y_label),
+        ..frame.clone()
+    };
     let rows = entries.len().div_ceil(columns);
     let legend_height = if rows == 0 {
         0
@@ -213,7 +225,7 @@ fn decimals(v: f64) -> usize {
 /// The legend below the chart: `columns` columns, swatch and text.
 fn legend(
     area: &DrawingArea<SVGBackend<'_>, Shift>,
-    entries: &[(&str, &Look)],
+    entries: &[(String, &Look)],
     columns: usize,
 ) -> Result<()> {
     let left = MARGIN + Y_LABEL_AREA;
@@ -266,7 +278,7 @@ fn legend(
                 .map_err(draw)?,
         }
         area.draw(&Text::new(
-            *text,
+            text.as_str(),
             at(f64::from(SWATCH), 0.0),
             font(FONT_LEGEND).pos(Pos::new(HPos::Left, VPos::Center)),
         ))

@@ -9,7 +9,7 @@ use std::path::PathBuf;
 use trig_core::{Affine, Family};
 use trig_fit::{Continuity, CornerRule, Corners, FitOptions, Outline, Shape, fit_outline};
 use trig_plot::{
-    Interpolant, Plotted, basis_svg, basis_versus_svg, curve_svg, fit_svg, interp_svg,
+    Choice, Interpolant, Plotted, basis_svg, basis_versus_svg, curve_svg, fit_svg, interp_svg,
 };
 
 /// Parses `svg` and returns (curves, markers, texts): polylines of at least
@@ -38,6 +38,15 @@ fn census(svg: &str) -> (usize, usize, Vec<String>) {
     (curves, markers, texts)
 }
 
+/// A catalog family for the values `values` of its one parameter.
+fn plotted(family: Family, values: &[Affine], what: &str) -> trig_plot::error::Result<Plotted> {
+    let choice = Choice {
+        values: values.to_vec(),
+        ..Choice::default()
+    };
+    Plotted::new(family, &choice, what)
+}
+
 fn r(s: &str) -> Affine {
     Affine::rational(s.parse().unwrap())
 }
@@ -45,8 +54,7 @@ fn r(s: &str) -> Affine {
 #[test]
 fn basis_plot_has_one_curve_per_function_and_value() {
     let values = [r("-2"), r("-1"), r("0"), r("1")];
-    let picture =
-        basis_svg(&Plotted::family(Family::ThesisCubic, &values, false, "basis").unwrap()).unwrap();
+    let picture = basis_svg(&plotted(Family::ThesisCubic, &values, "basis").unwrap()).unwrap();
     // the data beside the figure: one series per drawn curve (the legend
     // entries of the functions and values draw nothing)
     let drawn = || picture.series.iter().filter(|s| !s.points.is_empty());
@@ -81,9 +89,11 @@ fn basis_plot_has_one_curve_per_function_and_value() {
         .filter(|p| p.split_whitespace().count() == 201)
         .count();
     assert_eq!(whole, 4);
+    // the functions' indices as subscripts, the variable's domain
     for label in [
-        "b0",
-        "b3",
+        "b₀",
+        "b₃",
+        "u ∈ [0, 1] (angle θ = πu/2)",
         "m = −2",
         "m = −1",
         "m = 0",
@@ -93,19 +103,19 @@ fn basis_plot_has_one_curve_per_function_and_value() {
         assert!(texts.iter().any(|t| t == label), "{label}: {texts:?}");
     }
     assert!(svg.contains(r#"font-family="serif""#), "serif text");
-    let svg = basis_svg(&Plotted::family(Family::Bernstein3, &[], false, "basis").unwrap())
+    let svg = basis_svg(&plotted(Family::Bernstein3, &[], "basis").unwrap())
         .unwrap()
         .svg;
     assert_eq!(census(&svg).0, 4);
     // outside the published range without permission: refused
-    assert!(Plotted::family(Family::ThesisCubic, &[r("2")], false, "basis").is_err());
+    assert!(plotted(Family::ThesisCubic, &[r("2")], "basis").is_err());
 }
 
 #[test]
 fn curve_plot_has_polygon_and_one_curve_per_value() {
     let control = [(0.0, 0.0), (1.0, 2.0), (3.0, 2.0), (4.0, 0.0)];
     let svg = curve_svg(
-        &Plotted::family(Family::Han, &[r("-1"), r("0"), r("1")], false, "curve").unwrap(),
+        &plotted(Family::Han, &[r("-1"), r("0"), r("1")], "curve").unwrap(),
         &control,
     )
     .unwrap()
@@ -114,10 +124,10 @@ fn curve_plot_has_polygon_and_one_curve_per_value() {
     assert_eq!(curves, 3 + 1, "three curves and the control polygon");
     assert_eq!(markers, 4 + 1, "the control points and the legend swatch");
     assert!(
-        texts.iter().any(|t| t == "control polygon V0…V3"),
+        texts.iter().any(|t| t == "control polygon V₀…V₃"),
         "{texts:?}"
     );
-    let han = Plotted::family(Family::Han, &[r("0")], false, "curve").unwrap();
+    let han = plotted(Family::Han, &[r("0")], "curve").unwrap();
     assert!(curve_svg(&han, &control[..3]).is_err());
 }
 
@@ -133,7 +143,9 @@ fn fit_plot_has_data_and_every_segment_of_both_stages() {
         shape: Shape::Fixed(vec![0.6]),
     };
     let fit = fit_outline(&outline, Arc::new(Family::ThesisCubic), &options).unwrap();
-    let svg = fit_svg(&outline, &fit).unwrap().svg;
+    let svg = fit_svg(&outline, &fit, &["m".to_string()], None)
+        .unwrap()
+        .svg;
     let (curves, markers, texts) = census(&svg);
     assert_eq!(curves, 2 * fit.segments.len());
     assert_eq!(
@@ -179,7 +191,7 @@ fn root_size(svg: &str) -> ((String, String), (f64, f64)) {
 
 #[test]
 fn figures_are_paper_sized_and_drawn_finer_than_a_pixel() {
-    let plot = Plotted::family(Family::Han, &[r("0")], false, "basis").unwrap();
+    let plot = plotted(Family::Han, &[r("0")], "basis").unwrap();
     let svg = basis_svg(&plot).unwrap().svg;
     let ((w, h), (vw, vh)) = root_size(&svg);
     assert_eq!(w, "160mm");
@@ -199,7 +211,7 @@ fn figures_are_paper_sized_and_drawn_finer_than_a_pixel() {
 #[test]
 fn the_legend_is_below_every_curve() {
     let values = [r("-2"), r("0"), r("1")];
-    let plot = Plotted::family(Family::ThesisCubic, &values, false, "basis").unwrap();
+    let plot = plotted(Family::ThesisCubic, &values, "basis").unwrap();
     let svg = basis_svg(&plot).unwrap().svg;
     let doc = roxmltree::Document::parse(&svg).unwrap();
     let lowest_curve = doc
@@ -226,21 +238,22 @@ fn the_legend_is_below_every_curve() {
 #[test]
 fn a_listing_is_drawn_over_the_printed_basis() {
     let values = [r("-1"), r("0"), r("1")];
-    let listing = Plotted::family(Family::HanListing, &values, false, "basis").unwrap();
-    let han = Plotted::family(Family::Han, &values, false, "basis").unwrap();
+    let listing = plotted(Family::HanListing, &values, "basis").unwrap();
+    let han = plotted(Family::Han, &values, "basis").unwrap();
     let picture = basis_versus_svg(&listing, &han).unwrap();
     assert_eq!(picture.series.len(), 2 * 4 * 3 + 4 + 3 + 2);
+    // marked text: the formulas set in math (pgfplots) or Unicode (SVG)
     let legend: Vec<&str> = picture.legend().map(|(t, _)| t).collect();
     assert_eq!(
         legend,
         [
-            "b0",
-            "b1",
-            "b2",
-            "b3",
-            "λ = −1",
-            "λ = 0",
-            "λ = 1",
+            "⟪b0⟫",
+            "⟪b1⟫",
+            "⟪b2⟫",
+            "⟪b3⟫",
+            "⟪λ = −1⟫",
+            "⟪λ = 0⟫",
+            "⟪λ = 1⟫",
             "han-listing",
             "han"
         ]
@@ -270,6 +283,6 @@ fn a_listing_is_drawn_over_the_printed_basis() {
     assert_eq!(at("b0, han-listing: λ = 1"), at("b0, han: λ = 1"));
     assert_ne!(at("b2, han-listing: λ = 1"), at("b2, han: λ = 1"));
     // different values: refused
-    let other = Plotted::family(Family::Han, &values[..2], false, "basis").unwrap();
+    let other = plotted(Family::Han, &values[..2], "basis").unwrap();
     assert!(basis_versus_svg(&listing, &other).is_err());
 }

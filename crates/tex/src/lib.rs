@@ -8,8 +8,10 @@
 //! - Text: [`text`] escapes prose (the special characters, every Unicode
 //!   symbol the reports print mapped, [`symbols`]); [`marked()`] sets text
 //!   with explicit math markup (`⟪…⟫`, how printed statements are stored;
-//!   [`plain`] is the text as printed); [`prose`] sets generated text
-//!   without markup, finding its formula-like runs; [`breakable`] lets a
+//!   [`plain`] is the text as printed, [`unicode`] as a reader without LaTeX
+//!   sees it); [`prose`] sets generated text
+//!   without markup, finding its formula-like runs ([`labelled`]: marked
+//!   text whose prose may hold such runs, a figure's heading); [`breakable`] lets a
 //!   long path or printed formula break.
 //! - Math: [`math`], the one math writer, turns Unicode formula text
 //!   (`H_{2−i}(π/2 − u; β)`, `b0'(0) = 3/A`) into LaTeX math; [`inline_math`]
@@ -43,9 +45,9 @@ pub use document::{
     FRAGMENT_PACKAGES, FRAGMENT_SETUP, PREAMBLE, align, comment, document, fragment,
 };
 pub use fragment::{article, input_note};
-pub use marked::{marked, plain};
+pub use marked::{marked, plain, unicode};
 pub use math::{fitted_math, inline_math, math};
-pub use prose::prose;
+pub use prose::{labelled, prose};
 pub use symbols::unmapped;
 pub use table::{Column, LongTable, TABLE_PACKAGES, ValueTable, column_name, value_tables};
 pub use text::{breakable, code, text};

@@ -5,7 +5,7 @@
 //! and JSON reports show), [`marked`] its LaTeX — formulas through the one
 //! math writer ([`crate::math`]), prose escaped ([`crate::text`]).
 
-use crate::math::{inline_breakable, math};
+use crate::math::{inline_breakable, math, unicode as unicode_formula};
 use crate::text::{code, text};
 
 /// Opens a formula in marked text (never in a seed).
@@ -35,6 +35,16 @@ pub fn plain(text: &str) -> String {
     text.chars().filter(|c| *c != OPEN && *c != CLOSE).collect()
 }
 
+/// The text as a reader without LaTeX sees it (an SVG's text): the markup
+/// removed, each formula's indices as Unicode subscripts (`⟪b0⟫` → `b₀`,
+/// `⟪beta_1⟫` → `β₁`); the prose as printed.
+pub fn unicode(text: &str) -> String {
+    runs(text)
+        .into_iter()
+        .map(|(formula, run)| if formula { unicode_formula(&run) } else { run })
+        .collect()
+}
+
 /// Checks the markup: formulas balanced, not nested, not empty.
 pub fn check(text: &str) -> Result<(), MarkupError> {
     let mut open: Option<usize> = None;
@@ -62,7 +72,7 @@ pub fn check(text: &str) -> Result<(), MarkupError> {
 
 /// The runs of marked text: `(is_formula, text)`. A formula left open runs
 /// to the end; a stray close is dropped.
-fn runs(text: &str) -> Vec<(bool, String)> {
+pub(crate) fn runs(text: &str) -> Vec<(bool, String)> {
     let mut out: Vec<(bool, String)> = vec![(false, String::new())];
     for ch in text.chars() {
         let inside = out.last().is_some_and(|r| r.0);
@@ -149,6 +159,15 @@ mod tests {
             "b0'(0) = 1 for m ∈ [−2, 1]"
         );
         assert_eq!(plain("no math"), "no math");
+    }
+
+    #[test]
+    fn unicode_text_has_subscripts_in_formulas_only() {
+        assert_eq!(
+            unicode("⟪b0⟫ at ⟪μ = 1/2⟫, seed000"),
+            "b₀ at μ = 1/2, seed000"
+        );
+        assert_eq!(unicode("no math"), "no math");
     }
 
     #[test]

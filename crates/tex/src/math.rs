@@ -49,6 +49,69 @@ pub fn math(text: &str) -> String {
     join(&pieces)
 }
 
+/// A formula (as [`math`] reads it) in Unicode for a reader without LaTeX
+/// (an SVG's text): a letter's trailing digits and `_{…}` or `_x` as
+/// subscripts (`b0` → `b₀`, `P_{12}` → `P₁₂`) where every character has a
+/// subscript form, a Greek name as its letter (`beta` → `β`); the rest as
+/// written.
+pub(crate) fn unicode(text: &str) -> String {
+    let chars: Vec<char> = text.chars().collect();
+    let sub = |run: &[char]| -> Option<String> {
+        let mapped: Option<String> = run
+            .iter()
+            .map(|c| {
+                SUB.iter()
+                    .find(|(_, s)| s.len() == c.len_utf8() && s.starts_with(*c))
+                    .map(|(u, _)| *u)
+            })
+            .collect();
+        mapped.filter(|m| !m.is_empty())
+    };
+    let mut out = String::new();
+    let mut i = 0;
+    while i < chars.len() {
+        let ch = chars[i];
+        if ch.is_ascii_alphabetic() {
+            let start = i;
+            while i < chars.len() && chars[i].is_ascii_alphabetic() {
+                i += 1;
+            }
+            let word: String = chars[start..i].iter().collect();
+            match greek(&word) {
+                Some(letter) => out.push(letter),
+                None => out.push_str(&word),
+            }
+            let digits = i;
+            while i < chars.len() && chars[i].is_ascii_digit() {
+                i += 1;
+            }
+            match sub(&chars[digits..i]) {
+                Some(s) if !FUNCTIONS.contains(&word.as_str()) => out.push_str(&s),
+                _ => out.extend(&chars[digits..i]),
+            }
+            continue;
+        }
+        if ch == '_' {
+            let (run, next) = match chars.get(i + 1) {
+                Some('{') => match closing(&chars, i + 1, '{', '}') {
+                    Some(end) => (&chars[i + 2..end], end + 1),
+                    None => (&chars[i..i], i),
+                },
+                Some(_) => (&chars[i + 1..i + 2], i + 2),
+                None => (&chars[i..i], i),
+            };
+            if let Some(s) = sub(run) {
+                out.push_str(&s);
+                i = next;
+                continue;
+            }
+        }
+        out.push(ch);
+        i += 1;
+    }
+    out
+}
+
 /// What a piece of a formula is, for fractions, scripts and spacing.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Kind {
@@ -394,6 +457,16 @@ fn atom(ch: char) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn formulas_in_unicode_have_subscripts() {
+        assert_eq!(unicode("b0"), "b₀");
+        assert_eq!(unicode("λ = −1/2, t ∈ [0, π/2]"), "λ = −1/2, t ∈ [0, π/2]");
+        assert_eq!(unicode("beta_0 + P_{12} − V0…V3"), "β₀ + P₁₂ − V₀…V₃");
+        // no subscript form, a function name's digits: as written
+        assert_eq!(unicode("x_{a} sin2 2.5"), "x_{a} sin2 2.5");
+        assert_eq!(unicode("x_"), "x_");
+    }
 
     #[test]
     fn names_indices_functions_and_primes() {

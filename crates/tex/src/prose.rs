@@ -3,7 +3,7 @@
 //! lines, labels) has its formula-like runs (`H_{2−i}(π/2 − u; β)`) found by
 //! their look and set in math mode, the rest escaped ([`crate::text`]).
 
-use crate::marked::{CLOSE, OPEN, marked};
+use crate::marked::{CLOSE, OPEN, marked, runs};
 use crate::math::{inline_breakable, math};
 use crate::symbols::is_mathy;
 use crate::text::{code, text};
@@ -188,9 +188,35 @@ pub fn prose(line: &str) -> String {
     out.join(" ")
 }
 
+/// Marked text whose prose may hold formulas of its own (a basis's title
+/// beside marked values, as a figure's heading): the marked formulas set
+/// as [`marked`] sets them, the prose between them as [`prose`] sets
+/// generated text.
+pub fn labelled(line: &str) -> String {
+    runs(line)
+        .into_iter()
+        .map(|(formula, run)| {
+            if formula {
+                inline_breakable(&math(&run))
+            } else {
+                prose(&run)
+            }
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn headings_set_marked_and_unmarked_formulas() {
+        assert_eq!(
+            labelled("cubic basis b_i(u; m) at ⟪μ = 1/2⟫"),
+            r"cubic basis $b_{i}(u;\allowbreak m)$ at $\mu = \frac{1}{2}$"
+        );
+        assert_eq!(labelled("plain & simple"), r"plain \& simple");
+    }
 
     #[test]
     fn statements_set_their_formulas_in_math() {

@@ -10,6 +10,7 @@ use std::sync::Arc;
 
 use clap::{Args, ValueEnum};
 use trig_certify::range::EndPoint;
+use trig_core::param::read_params;
 use trig_core::{Described, End, Family};
 use trig_fit::optimise::search_between;
 use trig_fit::{
@@ -73,6 +74,11 @@ pub struct FitSetup {
     /// multiple of pi such as alpha=pi/2; default: 0.6 for every family, as the thesis).
     #[arg(long = "param", value_name = "NAME=VALUE")]
     params: Vec<String>,
+    /// The parameter --optimise searches per segment (name or printed
+    /// symbol), the others fixed by --param (a catalog family's at 0.6);
+    /// default: a basis's one parameter, or the one --param leaves free.
+    #[arg(long, value_name = "NAME")]
+    vary: Option<String>,
     /// Interval searched by --optimise.
     #[arg(long, value_enum, default_value = "certified")]
     range: SearchRange,
@@ -164,10 +170,19 @@ type SearchEnds = ((f64, bool), (f64, bool));
 
 /// Fixed parameters of `subject` from `--param` pairs (a catalog family's
 /// default 0.6, as the thesis; a spec file's parameters must be given),
-/// checked against the published range.
-fn fixed_params(subject: &AnyBasis, pairs: &[(String, String)]) -> Result<Vec<f64>, CliError> {
-    let mut mine = Vec::new();
-    for (name, symbol, _) in parameters(subject) {
+/// each checked against its published range: every parameter but
+/// `except` (the one searched), by index.
+fn fixed_params(
+    subject: &AnyBasis,
+    pairs: &[(String, String)],
+    except: Option<usize>,
+) -> Result<Vec<(usize, f64)>, CliError> {
+    let mut out = Vec::new();
+    for (k, p) in subject.parameters().into_iter().enumerate() {
+        if Some(k) == except {
+            continue;
+        }
+        let (name, symbol) = (p.name.clone(), p.symbol.clone());
         let given = pairs
             .iter()
             .rev()
@@ -183,20 +198,50 @@ fn fixed_params(subject: &AnyBasis, pairs: &[(String, String)]) -> Result<Vec<f6
                 )));
             }
         };
-        mine.push((name, value));
+        let value = read_params(&subject.id(), &[p], &[(name, value)], false)?;
+        out.extend(value.iter().map(|v| (k, v.to_f64())));
     }
-    Ok(subject
-        .params_from_pairs(&mine, false)
-        .map_err(CliError::Core)?
-        .iter()
-        .map(trig_core::Affine::to_f64)
-        .collect())
+    Ok(out)
 }
 
-/// The search interval of `--optimise` for a one-parameter basis, and
+/// The parameter `--optimise` searches in `subject`: `--vary`'s (its
+/// `--param` value, if any, is the fixed fit's), else its one parameter,
+/// else the one `--param` leaves free (none when several are, or none).
+fn searched(
+    subject: &AnyBasis,
+    pairs: &[(String, String)],
+    vary: Option<&str>,
+) -> Result<Option<usize>, CliError> {
+    let params = parameters(subject);
+    let named = |name: &str, k: usize| params[k].0 == name || params[k].1 == name;
+    let fixed = |k: usize| pairs.iter().any(|(n, _)| named(n, k));
+    if let Some(name) = vary {
+        return match (0..params.len()).find(|&k| named(name, k)) {
+            Some(k) => Ok(Some(k)),
+            None => Err(CliError::Usage(format!(
+                "--vary {name}: `{}` has no parameter `{name}`",
+                subject.id()
+            ))),
+        };
+    }
+    let free: Vec<usize> = (0..params.len()).filter(|&k| !fixed(k)).collect();
+    Ok(match (params.len(), free.as_slice()) {
+        (1, _) => Some(0),
+        (_, [k]) => Some(*k),
+        _ => None,
+    })
+}
+
+/// The search interval of `--optimise` for the parameter `index`, and
 /// where it comes from.
-fn interval(subject: &AnyBasis, range: SearchRange) -> Result<(f64, f64, &'static str), CliError> {
-    let (name, _, ends) = parameters(subject).swap_remove(0);
+fn interval(
+    subject: &AnyBasis,
+    index: usize,
+    range: SearchRange,
+) -> Result<(f64, f64, &'static str), CliError> {
+    let mut params = parameters(subject);
+    let several = params.len() > 1;
+    let (name, _, ends) = params.swap_remove(index);
     let Some((lo, hi)) = ends else {
         return Err(CliError::Usage(format!(
             "`{}`: the range of {name} is unbounded: no search interval",
@@ -206,6 +251,13 @@ fn interval(subject: &AnyBasis, range: SearchRange) -> Result<(f64, f64, &'stati
     let (lo, hi) = search_between(lo, hi);
     let family = match (subject, range) {
         (_, SearchRange::Published) => return Ok((lo, hi, "published range")),
+        (_, SearchRange::Certified) if several => {
+            return Ok((
+                lo,
+                hi,
+                "published range: certified ranges are computed for one-parameter catalog families",
+            ));
+        }
         (AnyBasis::Spec(_), SearchRange::Certified) => {
             return Ok((
                 lo,
@@ -245,8 +297,11 @@ fn interval(subject: &AnyBasis, range: SearchRange) -> Result<(f64, f64, &'stati
 pub struct Method {
     pub label: String,
     pub setting: String,
-    /// The printed symbol of the one shape parameter, if any.
-    pub symbol: Option<String>,
+    /// The parameter shown per segment: the one searched, or the first
+    /// (its index and printed symbol; none without parameters).
+    pub shown: Option<(usize, String)>,
+    /// The printed symbols of every shape parameter, in order.
+    pub symbols: Vec<String>,
     pub fit: OutlineFit,
 }
 
@@ -301,9 +356,18 @@ pub fn prepare(
         }),
         shape,
     };
+    if setup.vary.is_some() && runs == Runs::Fixed {
+        return Err(CliError::Usage(
+            "--vary chooses the parameter --optimise searches: give --optimise".into(),
+        ));
+    }
+    let mut found = Vec::new();
+    for s in &selected {
+        found.push(searched(s, &pairs, setup.vary.as_deref())?);
+    }
     // the golden-section search optimises one shape parameter: say so
     // rather than print no optimised fit
-    if runs != Runs::Fixed && selected.iter().all(|s| parameters(s).len() != 1) {
+    if runs != Runs::Fixed && found.iter().all(Option::is_none) {
         let why: Vec<String> = selected
             .iter()
             .map(|s| {
@@ -318,18 +382,21 @@ pub fn prepare(
             })
             .collect();
         return Err(CliError::Usage(format!(
-            "--optimise searches one shape parameter per segment (golden section); {}: fit with fixed values (--param NAME=VALUE) or choose a one-parameter basis",
+            "--optimise searches one shape parameter per segment (golden section); {}: fix all but one with --param NAME=VALUE (--vary NAME names the one searched), or fit with fixed values only",
             why.join("; ")
         )));
     }
     let mut methods = Vec::new();
-    for subject in selected {
+    for (subject, searched) in selected.into_iter().zip(found) {
         let params = parameters(&subject);
-        let symbol = params.first().map(|(_, s, _)| s.clone());
+        let symbols: Vec<String> = params.iter().map(|(_, s, _)| s.clone()).collect();
         let basis: Arc<dyn NumericBasis> = Arc::new(subject.clone());
-        let optimise = runs != Runs::Fixed && params.len() == 1;
-        if runs != Runs::Optimised || !optimise {
-            let fixed = fixed_params(&subject, &pairs)?;
+        let optimise = (runs != Runs::Fixed).then_some(searched).flatten();
+        if runs != Runs::Optimised || optimise.is_none() {
+            let fixed: Vec<f64> = fixed_params(&subject, &pairs, None)?
+                .into_iter()
+                .map(|(_, v)| v)
+                .collect();
             let setting = params
                 .iter()
                 .zip(&fixed)
@@ -343,21 +410,29 @@ pub fn prepare(
                 } else {
                     setting
                 },
-                symbol: symbol.clone(),
+                shown: symbols.first().map(|s| (0, s.clone())),
+                symbols: symbols.clone(),
                 fit: fit_outline(&outline, basis.clone(), &options(Shape::Fixed(fixed)))
                     .map_err(fit_err)?,
             });
         }
-        if optimise {
-            let (lo, hi, from) = interval(&subject, setup.range)?;
+        if let Some(index) = optimise {
+            let (lo, hi, from) = interval(&subject, index, setup.range)?;
+            let fixed = fixed_params(&subject, &pairs, Some(index))?;
+            let others: Vec<String> = fixed
+                .iter()
+                .map(|(k, v)| format!(", {} = {v}", symbols[*k]))
+                .collect();
             methods.push(Method {
                 label: subject.id(),
                 setting: format!(
-                    "{} optimised in [{lo}, {hi}] ({from})",
-                    symbol.clone().unwrap_or_default()
+                    "{} optimised in [{lo}, {hi}] ({from}){}",
+                    symbols[index],
+                    others.concat()
                 ),
-                symbol,
-                fit: fit_outline(&outline, basis, &options(Shape::Optimise { lo, hi }))
+                shown: Some((index, symbols[index].clone())),
+                symbols,
+                fit: fit_outline(&outline, basis, &options(Shape::Optimise { lo, hi, fixed }))
                     .map_err(fit_err)?,
             });
         }
@@ -430,9 +505,8 @@ fn markdown(args: &FitSetup, outline: &Outline, methods: &[Method]) -> String {
     for m in methods {
         let _ = writeln!(out, "## {} ({})\n", m.label, m.setting);
         let refined = m.fit.after.is_some();
-        let param = m.symbol.as_deref();
         let mut head = vec!["Segment", "Points"];
-        if let Some(p) = param {
+        if let Some((_, p)) = &m.shown {
             head.push(p);
         }
         head.extend(["Total (C⁰)", "Max (C⁰)", "Ave (C⁰)", "Bad (C⁰)"]);
@@ -443,8 +517,8 @@ fn markdown(args: &FitSetup, outline: &Outline, methods: &[Method]) -> String {
         let _ = writeln!(out, "|{}", "---|".repeat(head.len()));
         for (k, s) in m.fit.segments.iter().enumerate() {
             let mut row = vec![(k + 1).to_string(), s.metrics.points.to_string()];
-            if param.is_some() {
-                row.push(format!("{:.4}", s.params[0]));
+            if let Some((j, _)) = &m.shown {
+                row.push(format!("{:.4}", s.params[*j]));
             }
             row.extend(metric_cells(&s.metrics));
             if let Some((_, a)) = &s.refined {
@@ -453,7 +527,7 @@ fn markdown(args: &FitSetup, outline: &Outline, methods: &[Method]) -> String {
             let _ = writeln!(out, "| {} |", row.join(" | "));
         }
         let mut total = vec!["TOTAL".to_string(), m.fit.before.points.to_string()];
-        if param.is_some() {
+        if m.shown.is_some() {
             total.push(String::new());
         }
         total.extend(summary_cells(&m.fit.before, false));
@@ -525,7 +599,10 @@ fn csv(methods: &[Method]) -> CmdResult {
     let mut rows: Vec<Vec<String>> = Vec::new();
     for m in methods {
         for (k, s) in m.fit.segments.iter().enumerate() {
-            let p = s.params.first().map_or(String::new(), |p| p.to_string());
+            let p = m
+                .shown
+                .as_ref()
+                .map_or(String::new(), |(k, _)| s.params[*k].to_string());
             let mut stages = vec![("C0", s.metrics)];
             if let Some((_, a)) = s.refined {
                 stages.push(("C1", a));

@@ -5,19 +5,18 @@
 use std::path::{Path, PathBuf};
 
 use clap::{Args, Subcommand};
-use rug::Rational;
 use trig_certify::ParamBox;
 use trig_certify::region::CellKind;
-use trig_core::End as SpecEnd;
-use trig_core::{Affine, Bound, Described, parse_exact, parse_point};
+use trig_core::{parse_exact, parse_point};
 use trig_interp::{DataSet, Scheme, Variant, f64_segments};
 use trig_judge::region::{Axis, classify_window};
 use trig_plot::{
-    Interpolant, PgfOptions, Picture, Plotted, RegionCell, RegionKind, basis_svg, basis_versus_svg,
-    curve_svg, fit_svg, interp_svg, region_svg,
+    Choice, Interpolant, PgfOptions, Picture, Plotted, RegionCell, RegionKind, basis_svg,
+    basis_versus_svg, curve_svg, fit_svg, interp_svg, region_svg,
 };
 use trig_specfile::Spec;
 
+use super::eval::param_pairs;
 use super::fit::{FitSetup, Runs, prepare};
 use super::{CliError, CmdResult, range_hint};
 use crate::format::csv_text;
@@ -152,108 +151,55 @@ struct Values {
     /// Draw the basis of this spec file (TOML, docs/spec.md) instead of a family.
     #[arg(long, value_name = "FILE")]
     spec: Option<PathBuf>,
-    /// Parameter values, comma separated (read exactly: rationals, or
-    /// rational multiples of pi such as pi/2); default: five values evenly
-    /// spread over the published range (open ends left out) when it is
-    /// bounded with rational ends; otherwise give them.
+    /// Fix a parameter, as name=value (name or printed symbol; read exactly
+    /// as `eval --param` reads it: 0.6 = 3/5, 1/2, or a rational multiple
+    /// of pi such as alpha=pi/2); repeatable. With every parameter but
+    /// one fixed, that one is varied.
+    #[arg(long = "param", value_name = "NAME=VALUE", allow_hyphen_values = true)]
+    params: Vec<String>,
+    /// The parameter whose values are drawn (name or printed symbol);
+    /// default: the one parameter not fixed by --param.
+    #[arg(long, value_name = "NAME")]
+    vary: Option<String>,
+    /// Values of the varied parameter, comma separated (read exactly:
+    /// rationals, or rational multiples of pi such as pi/2); default: five
+    /// values evenly spread over the published range (open ends left out)
+    /// when it is bounded with rational ends; otherwise give them.
     #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
     values: Vec<String>,
-    /// Allow values outside the published range.
+    /// Allow values (fixed or varied) outside the published ranges.
     #[arg(long)]
     allow_outside_range: bool,
 }
 
-/// The values to draw: given (rationals or rational multiples of π, read
-/// exactly), or `lo + k·w/4`, `k = 0..4`, without open ends, for a range
-/// `[lo, hi]` given by its ends `(value, open)` (`None`: unbounded, or in
-/// multiples of π).
-fn values(
-    given: &[String],
-    name: &str,
-    lo: Option<(Affine, bool)>,
-    hi: Option<(Affine, bool)>,
-) -> Result<Vec<Affine>, CliError> {
-    if !given.is_empty() {
-        return Ok(given
-            .iter()
-            .map(|v| parse_point(v))
-            .collect::<Result<_, _>>()?);
+impl Values {
+    /// The parameters to fix and to vary, read as every command reads a
+    /// parameter value.
+    fn choice(&self) -> Result<Choice, CliError> {
+        Ok(Choice {
+            fixed: param_pairs(&self.params)?,
+            vary: self.vary.clone(),
+            values: self
+                .values
+                .iter()
+                .map(|v| parse_point(v))
+                .collect::<Result<_, _>>()?,
+            allow_outside: self.allow_outside_range,
+        })
     }
-    let (Some((lo, lo_open)), Some((hi, hi_open))) = (lo, hi) else {
-        return Err(CliError::Usage(format!(
-            "the range of {name} is unbounded (or in multiples of pi): give --values"
-        )));
-    };
-    let w = hi
-        .plus(&lo.scale(&Rational::from(-1)))
-        .scale(&Rational::from((1, 4)));
-    Ok((0..=4u32)
-        .filter(|&k| !(k == 0 && lo_open || k == 4 && hi_open))
-        .map(|k| lo.plus(&w.scale(&Rational::from(k))))
-        .collect())
 }
 
 /// What `plot basis` and `plot curve` draw: the family or spec file's
-/// basis, for the values of its one parameter (checked against the
-/// published range unless `--allow-outside-range`).
+/// basis, for the parameters `v` fixes and the values of the one it
+/// varies (checked against the published ranges unless
+/// `--allow-outside-range`).
 fn plotted(family: Option<&str>, v: &Values, what: &str) -> Result<Plotted, CliError> {
+    let choice = v.choice()?;
     match AnyBasis::open(family, v.spec.as_deref())? {
-        AnyBasis::Family(family) => {
-            let vals = match family.info().params.first() {
-                None => Vec::new(),
-                Some(p) => {
-                    let end = |b: Bound| {
-                        b.value()
-                            .map(|q| (Affine::rational(q), matches!(b, Bound::Open(..))))
-                    };
-                    values(&v.values, p.name, end(p.range.lo), end(p.range.hi))?
-                }
-            };
-            Plotted::family(family, &vals, v.allow_outside_range, what).map_err(plot_err_hinted)
-        }
-        AnyBasis::Spec(spec) => {
-            let settings: Vec<Vec<Affine>> = match spec.params.as_slice() {
-                [] => vec![Vec::new()],
-                [p] => {
-                    let end = |e: &SpecEnd| {
-                        e.value()
-                            .filter(|_| !p.range.pi)
-                            .map(|q| (Affine::rational(q.clone()), matches!(e, SpecEnd::Open(_))))
-                    };
-                    let vals = values(&v.values, &p.name, end(&p.range.lo), end(&p.range.hi))?;
-                    let mut settings = Vec::new();
-                    for q in vals {
-                        let pair = [(p.name.clone(), q.text(&[]))];
-                        settings.push(
-                            spec.params_from_pairs(&pair, v.allow_outside_range)
-                                .map_err(range_hint)?,
-                        );
-                    }
-                    settings
-                }
-                ps => {
-                    return Err(CliError::Usage(format!(
-                        "`{}` has {} parameters; {what} plots vary one",
-                        spec.id,
-                        ps.len()
-                    )));
-                }
-            };
-            Ok(Plotted {
-                id: spec.id.clone(),
-                citation: spec.citation.clone(),
-                functions: spec.function_names(),
-                symbol: spec.params.first().map(|p| p.symbol.clone()),
-                variable: spec
-                    .domain
-                    .to_string()
-                    .replace(" in ", " ∈ ")
-                    .replace("pi", "π"),
-                settings,
-                basis: std::sync::Arc::new(*spec),
-            })
-        }
+        AnyBasis::Family(family) => Plotted::new(family, &choice, what),
+        AnyBasis::Spec(spec) => Plotted::new(*spec, &choice, what),
     }
+    .map_err(plot_err_hinted)
 }
 
 /// Writes the picture (SVG) and, beside it, its pgfplots code
@@ -328,6 +274,8 @@ pub fn run(args: &PlotArgs) -> CmdResult {
                     // the same values, without the spec file of the first basis
                     let same = Values {
                         spec: None,
+                        params: v.params.clone(),
+                        vary: v.vary.clone(),
                         values: v.values.clone(),
                         allow_outside_range: v.allow_outside_range,
                     };
@@ -383,9 +331,14 @@ pub fn run(args: &PlotArgs) -> CmdResult {
             let method = methods
                 .first()
                 .ok_or_else(|| CliError::Usage("nothing fitted".into()))?;
+            let searched = method
+                .fit
+                .optimised
+                .then(|| method.shown.as_ref().map(|(k, _)| *k))
+                .flatten();
             write(
                 output,
-                fit_svg(&outline, &method.fit).map_err(plot_err)?,
+                fit_svg(&outline, &method.fit, &method.symbols, searched).map_err(plot_err)?,
                 look,
             )
         }
