@@ -74,6 +74,26 @@ prepare_gmp() {
   fi
 }
 
+# A minimal TeX for the tests that compile the LaTeX outputs (reports,
+# tables, figures, a paper that \input's them): pdflatex with booktabs,
+# longtable and pgfplots -- Debian's texlive-latex-base,
+# texlive-latex-recommended and texlive-pictures (about 20 s to install).
+# Under ./run.sh test the compile tests then must run: without TeX they fail
+# (TRIG_AUDIT_REQUIRE_TEX) instead of being skipped.
+prepare_tex() {
+  if command -v pdflatex >/dev/null 2>&1 &&
+    kpsewhich booktabs.sty longtable.sty pgfplots.sty >/dev/null 2>&1 &&
+    [ "$(kpsewhich booktabs.sty longtable.sty pgfplots.sty | wc -l)" = 3 ]; then
+    return
+  fi
+  if command -v apt-get >/dev/null 2>&1; then
+    install_packages --no-install-recommends texlive-latex-base \
+      texlive-latex-recommended texlive-pictures
+  else
+    echo "run.sh: pdflatex with booktabs, longtable and pgfplots is needed for the LaTeX compile tests" >&2
+  fi
+}
+
 cmd="${1:-}"
 shift || true
 case "$cmd" in
@@ -86,7 +106,10 @@ esac
 # shares its build with `./run.sh test` (BENCHMARKS.md).
 case "$cmd" in
   audit) cargo run -p trig-audit "${FEATURES[@]}" -- audit "$@" ;;
-  test) cargo test --workspace "${FEATURES[@]}" ;;
+  test)
+    prepare_tex
+    TRIG_AUDIT_REQUIRE_TEX=1 cargo test --workspace "${FEATURES[@]}"
+    ;;
   lint)
     cargo fmt --all --check
     cargo clippy --workspace --all-targets "${FEATURES[@]}" -- -D warnings

@@ -33,6 +33,11 @@ pub(crate) fn compiles_cleanly(tex: &str, name: &str, figure: bool) {
         .output()
         .is_ok_and(|o| o.status.success());
     if figure && !pgfplots {
+        assert!(
+            std::env::var_os(trig_tex::REQUIRE_TEX).is_none(),
+            "{name}: pgfplots is not installed, and {} requires it",
+            trig_tex::REQUIRE_TEX
+        );
         eprintln!("skipped: pdflatex with pgfplots is not on this machine ({name})");
         return;
     }

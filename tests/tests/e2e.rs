@@ -22,5 +22,6 @@ mod cli_table;
 mod cli_witness_points;
 mod fuzz;
 mod latex_statements;
+mod paper;
 mod witness_lines;
 mod witness_recheck;

@@ -18,7 +18,7 @@ use trig_tex::{
     prose, text,
 };
 
-use super::render::{Format, Tally, anchor, battery_label, point_text, render};
+use super::render::{BATTERY_LABEL, Format, Tally, anchor, point_text, render};
 use super::{Document, Entry, View};
 use trig_verdict::evidence::{Part, Witness};
 use trig_verdict::status::Status;
@@ -196,7 +196,18 @@ impl Format for Latex<'_> {
 
     fn summary(&self, out: &mut String, documents: &[(&Document, Tally)], all: &Tally) {
         let _ = writeln!(out, "\\subsection*{{Summary}}\n");
-        let mut columns = vec![Column::Left; 2];
+        // the status columns take about 290 pt of the line: a document name
+        // longer than a seed's (a spec id, the battery's line) wraps at its
+        // hyphens in a small table
+        let long = documents
+            .iter()
+            .any(|(d, _)| d.id.chars().count() > 8 || d.battery);
+        let first = if long {
+            Column::Share(22)
+        } else {
+            Column::Left
+        };
+        let mut columns = vec![first, Column::Left];
         columns.extend([Column::Right; Status::ALL.len()]);
         let head = ["document", "claims"]
             .into_iter()
@@ -204,6 +215,9 @@ impl Format for Latex<'_> {
             .map(String::from)
             .collect();
         let mut table = LongTable::new(columns, "Verdicts by document".into(), head).unnumbered();
+        if long {
+            table = table.small();
+        }
         let cells = |first: String, t: &Tally| -> Vec<String> {
             [first, t.claims.to_string()]
                 .into_iter()
@@ -214,8 +228,8 @@ impl Format for Latex<'_> {
             table.row(cells(text(&doc.id), t));
         }
         table.foot(cells(self.strong("all"), all));
-        for (doc, t) in documents.iter().filter(|(d, _)| d.battery) {
-            table.foot(cells(text(&battery_label(doc)), t));
+        for (_, t) in documents.iter().filter(|(d, _)| d.battery) {
+            table.foot(cells(text(BATTERY_LABEL), t));
         }
         let _ = writeln!(out, "{table}");
     }

@@ -10,7 +10,7 @@ use std::path::Path;
 
 use trig_tex::plain;
 
-use super::render::{Format, Tally, anchor, battery_label, point_text, render};
+use super::render::{BATTERY_LABEL, Format, Tally, anchor, point_text, render};
 use super::{Document, Entry, View, short};
 use trig_verdict::evidence::{Part, Witness};
 use trig_verdict::status::Status;
@@ -149,8 +149,8 @@ impl Format for Markdown<'_> {
             let _ = writeln!(out, "{}", line(doc.id.clone(), t));
         }
         let _ = writeln!(out, "{}", line("**all**".to_string(), all));
-        for (doc, t) in documents.iter().filter(|(d, _)| d.battery) {
-            let _ = writeln!(out, "{}", line(md_text(&battery_label(doc)), t));
+        for (_, t) in documents.iter().filter(|(d, _)| d.battery) {
+            let _ = writeln!(out, "{}", line(md_text(BATTERY_LABEL), t));
         }
         out.push('\n');
     }

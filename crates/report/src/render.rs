@@ -138,11 +138,9 @@ pub(crate) fn claims_only<'a>(entries: &[&'a Entry]) -> Vec<&'a Entry> {
         .collect()
 }
 
-/// What a summary row of a battery is called: its document, and that it
-/// is not in the total.
-pub(crate) fn battery_label(doc: &Document) -> String {
-    format!("{} (apart, not in all)", doc.id)
-}
+/// What a summary row of a battery is called: that it is a battery, not
+/// in the total (short: the row shares a table with the status columns).
+pub(crate) const BATTERY_LABEL: &str = "battery (not in all)";
 
 /// One claim: source, printed statement, method, correction, the witness
 /// of a claim that does not hold, figure, evidence.

@@ -14,17 +14,28 @@ pub struct CompileLog {
     pub pages: usize,
 }
 
+/// Set (to anything) when TeX must be there: `./run.sh test` sets it after
+/// installing a minimal TeX, so that a compile test cannot be skipped.
+pub const REQUIRE_TEX: &str = "TRIG_AUDIT_REQUIRE_TEX";
+
 /// Compiles `tex` with `pdflatex` (twice, for the links) in a temporary
 /// directory and reads the log; `None` when `pdflatex` is not installed
-/// (`./run.sh texlive` installs it). The tests of the reports and tables
-/// use this; nothing else runs TeX.
+/// (`./run.sh test` installs it) — unless [`REQUIRE_TEX`] is set: then a
+/// log whose one error says so, which every compile test reports as a
+/// failure. The tests of the reports, tables and figures use this; nothing
+/// else runs TeX.
 pub fn compile(tex: &str, name: &str) -> Option<CompileLog> {
-    let probe = std::process::Command::new("pdflatex")
+    let installed = std::process::Command::new("pdflatex")
         .arg("--version")
         .output()
-        .ok()?;
-    if !probe.status.success() {
-        return None;
+        .is_ok_and(|probe| probe.status.success());
+    if !installed {
+        return std::env::var_os(REQUIRE_TEX).map(|_| CompileLog {
+            errors: vec![format!(
+                "! pdflatex is not installed, and {REQUIRE_TEX} requires it"
+            )],
+            ..CompileLog::default()
+        });
     }
     let dir = std::env::temp_dir().join(format!("trig-audit-tex-{}-{name}", std::process::id()));
     std::fs::create_dir_all(&dir).ok()?;

@@ -40,7 +40,7 @@ pub mod symbols;
 mod table;
 mod text;
 
-pub use compile::{CompileLog, compile};
+pub use compile::{CompileLog, REQUIRE_TEX, compile};
 pub use document::{
     FRAGMENT_PACKAGES, FRAGMENT_SETUP, PREAMBLE, align, comment, document, fragment,
 };
