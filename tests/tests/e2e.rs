@@ -21,5 +21,6 @@ mod cli_table;
 mod cli_witness_points;
 mod fuzz;
 mod latex_statements;
+mod sympy_forms;
 mod witness_lines;
 mod witness_recheck;
