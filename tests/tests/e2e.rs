@@ -13,6 +13,7 @@ mod cli_hostile_round2;
 mod cli_hostile_round2_io;
 mod cli_interp;
 mod cli_join;
+mod cli_output;
 mod cli_paste;
 mod cli_spec;
 mod cli_spec_engine;

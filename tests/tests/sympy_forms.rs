@@ -109,38 +109,59 @@ fn names_sympy_would_merge_or_refuse_get_their_own_symbols() {
     assert!(pairs.contains(&("in", "in_")), "{pairs:?}");
 }
 
+/// The spec files of `examples/` and `examples/catalog/`.
+fn example_specs() -> Vec<String> {
+    let mut out = Vec::new();
+    for dir in ["", "catalog"] {
+        let path = std::path::PathBuf::from(example(dir));
+        for entry in std::fs::read_dir(&path).expect("examples") {
+            let p = entry.expect("entry").path();
+            if p.extension().is_some_and(|e| e == "toml") {
+                out.push(p.display().to_string());
+            }
+        }
+    }
+    out.sort();
+    out
+}
+
 /// A certified enclosure is `Interval(Rational('lo'), Rational('hi'))`,
-/// never `Float('[lo, hi]', 30)` (which SymPy cannot read), and an atom
-/// `exp(alpha)` lists the symbol `alpha`.
+/// never `Float('[lo, hi]', 30)` (which SymPy cannot read) — in the JSON
+/// audit of no example —, and an atom `exp(alpha)` lists the symbol
+/// `alpha`, not the atom.
 #[test]
 fn enclosures_are_intervals_and_atoms_list_their_parameter() {
-    for spec in ["exp-bernstein-cubic.toml", "exp-bernstein-maximal.toml"] {
-        let text = stdout_ok(&["audit", "--spec", &example(spec), "--format", "json"]);
+    let re =
+        regex::Regex::new(r"^Interval\(Rational\('-?[0-9.e-]+'\), Rational\('-?[0-9.e-]+'\)\)$")
+            .expect("regex");
+    let (mut intervals, mut atoms) = (0, 0);
+    let specs = example_specs();
+    assert!(specs.len() > 30, "{specs:?}");
+    for spec in &specs {
+        let text = stdout_ok(&["audit", "--spec", spec, "--format", "json"]);
         assert!(!text.contains("Float('["), "{spec}: an interval as a Float");
         let report: Value = serde_json::from_str(&text).expect("JSON");
         let mut all = Vec::new();
         exprs(&report, &mut all);
-        let intervals: Vec<&String> = all
-            .iter()
-            .map(|(f, _)| f)
-            .filter(|f| f.starts_with("Interval("))
-            .collect();
-        assert!(
-            !intervals.is_empty(),
-            "{spec}: its real witnesses' enclosures"
-        );
-        let re = regex::Regex::new(
-            r"^Interval\(Rational\('-?[0-9.e-]+'\), Rational\('-?[0-9.e-]+'\)\)$",
-        )
-        .expect("regex");
-        for f in intervals {
-            assert!(re.is_match(f), "{f}");
-        }
         for (form, symbols) in &all {
+            if form.starts_with("Interval(") {
+                intervals += 1;
+                assert!(re.is_match(form), "{spec}: {form}");
+            }
+            assert!(
+                !symbols.iter().any(|s| s.contains('(')),
+                "{spec}: an atom among the symbols {symbols:?}"
+            );
             if form.contains("exp(alpha)") {
+                atoms += 1;
                 assert!(symbols.iter().any(|s| s == "alpha"), "{form}: {symbols:?}");
-                assert!(!symbols.iter().any(|s| s.contains('(')), "{symbols:?}");
             }
         }
     }
+    // the exponential Bernstein bases' real witnesses have enclosures and
+    // atoms exp(alpha)
+    assert!(
+        intervals > 0 && atoms > 0,
+        "{intervals} intervals, {atoms} atoms"
+    );
 }

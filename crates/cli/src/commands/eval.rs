@@ -76,6 +76,8 @@ pub struct EvalArgs {
     /// Output format.
     #[arg(long, value_enum, default_value = "text")]
     format: TextOrJson,
+    #[command(flatten)]
+    pub out: crate::output::OutputArg,
 }
 
 /// Splits `name=value` arguments.

@@ -100,6 +100,8 @@ pub struct TableArgs {
     /// Interval length h for --wrt x in a numeric table (exact tables keep the symbol h).
     #[arg(long, requires = "numeric", allow_hyphen_values = true)]
     h: Option<String>,
+    #[command(flatten)]
+    pub out: crate::output::OutputArg,
 }
 
 impl From<WrtArg> for Wrt {
