@@ -352,3 +352,55 @@ fn points_may_be_rational_multiples_of_pi() {
         ),
     ]);
 }
+
+/// `R1 = 2(1 + α)w·t(1 − t)/d` of `examples/independent/issue40/vanishing.toml`
+/// at exact values, computed here from the formula.
+fn vanishing_r1(alpha: rug::Rational, w: rug::Rational, t: rug::Rational) -> rug::Rational {
+    let one = rug::Rational::from(1);
+    let u = one.clone() - &t;
+    let middle = rug::Rational::from(2) * (one + &alpha) * &w * &t * &u;
+    let d = u.clone() * &u + &middle + t.clone() * &t;
+    middle / d
+}
+
+/// A function that vanishes identically at the given parameter values is
+/// decided in the exact ring first: `0`, exact, in every arithmetic —
+/// never "not decided whether zero" after the climb to the precision
+/// limit (issue 40); at other values it is still evaluated.
+#[test]
+fn eval_prints_an_identically_zero_function_as_exact_zero() {
+    let spec = example("independent/issue40/vanishing.toml");
+    let q = |n: i64, d: i64| rug::Rational::from((n, d));
+    let at = |alpha: &str, extra: &[&str]| {
+        let mut args = vec![
+            "eval", "--spec", &spec, "--param", alpha, "--param", "w=2", "--at", "0.3",
+        ];
+        args.extend_from_slice(extra);
+        stdout_ok(&args)
+    };
+    // the value really is 0 there, and the formula is not 0 elsewhere
+    assert_eq!(vanishing_r1(q(-1, 1), q(2, 1), q(3, 10)), 0);
+    for extra in [&["--digits", "30"][..], &[], &["--prec", "100"]] {
+        let out = at("alpha=-1", extra);
+        let r1 = out.lines().find(|l| l.starts_with("R1 = ")).expect("R1");
+        assert!(r1.starts_with("R1 = 0 (exact"), "{extra:?}: {out}");
+        assert!(!out.contains("not decided"), "{out}");
+        assert!(!out.contains("65536"), "no climb to the limit: {out}");
+    }
+    let json: serde_json::Value =
+        serde_json::from_str(&at("alpha=-1", &["--format", "json"])).expect("JSON");
+    assert_eq!(json["values"]["R1"], "0");
+    assert!(
+        json["error_bounds"]["R1"].is_null(),
+        "exact: no error bound"
+    );
+    // nonzero at α = −1/2: evaluated, to the digits asked
+    let exact = vanishing_r1(q(-1, 2), q(2, 1), q(3, 10));
+    assert_ne!(exact, 0);
+    let out = at("alpha=-1/2", &["--digits", "30"]);
+    let r1 = out.lines().find(|l| l.starts_with("R1 = ")).expect("R1");
+    assert!(!r1.contains("exact"), "{r1}");
+    let printed: f64 = r1["R1 = ".len()..].parse().expect("a decimal");
+    assert!((printed - exact.to_f64()).abs() < 1e-15, "{r1} vs {exact}");
+    assert!(out.contains("all proved"), "{out}");
+}

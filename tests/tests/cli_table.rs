@@ -206,3 +206,57 @@ fn latex_tables_compile() {
         }
     }
 }
+
+/// An exact rational-curve table that divides by a parameter names where it
+/// is singular when that value is inside the parameter's range (`k = 0` in
+/// `[0, 1]`: the weighted sum at the start is `k·w₀`), in every format, as
+/// the joins do; with the range `(0, 1]` the division is proved safe and
+/// nothing is noted (issue 40).
+#[test]
+fn exact_tables_name_where_a_division_by_a_parameter_is_singular() {
+    let spec = trig_e2e::example("independent/issue40/singular-table.toml");
+    let table = |spec: &str, format: &str| {
+        stdout_ok(&[
+            "table",
+            "--spec",
+            spec,
+            "--curve",
+            "--rational",
+            "--order",
+            "1",
+            "--format",
+            format,
+        ])
+    };
+    let md = table(&spec, "md");
+    // the start's first derivative divides by k, the end's does not
+    let start = md.split("### end").next().expect("start block");
+    assert!(start.contains("k·w₀"), "the table divides by k: {md}");
+    assert!(
+        start.contains("### start of the domain: rational curve R (singular where k = 0)"),
+        "{md}"
+    );
+    let end = md.split("### end").nth(1).expect("end block");
+    assert!(
+        !end.contains("singular where"),
+        "the end divides by w₁ only: {md}"
+    );
+    for format in ["csv", "json", "tex"] {
+        assert!(
+            table(&spec, format).contains("singular where"),
+            "{format}: the note in every format"
+        );
+    }
+    let text = std::fs::read_to_string(&spec).expect("spec");
+    let open = text.replace("range = \"[0, 1]\"", "range = \"(0, 1]\"");
+    assert_ne!(open, text);
+    let path = std::env::temp_dir().join(format!("trig-e2e-singular-{}.toml", std::process::id()));
+    std::fs::write(&path, open).expect("write spec");
+    let md = table(path.to_str().expect("utf-8"), "md");
+    let _ = std::fs::remove_file(&path);
+    assert!(md.contains("k·w₀"), "{md}");
+    assert!(
+        !md.contains("singular where"),
+        "k = 0 is outside (0, 1]: {md}"
+    );
+}

@@ -17,6 +17,7 @@ mod names;
 mod output;
 
 use std::ffi::OsString;
+use std::path::Path;
 
 use clap::error::ErrorKind;
 use clap::{CommandFactory, Parser, Subcommand};
@@ -123,21 +124,30 @@ where
             };
         }
     };
-    let result = match cli.command {
-        Command::Eval(args) if commands::eval::streams(&args) => {
+    let target = cli.command.output().map(Path::to_path_buf);
+    if let Some(path) = &target
+        && let Err(e) = output::check_directory(path)
+    {
+        return Outcome::Error(one_line(&e.to_string()));
+    }
+    let name = cli.command.name();
+    let result = match (cli.command, &target) {
+        // `eval --at-file` writes row by row, to the file as to standard output
+        (Command::Eval(args), Some(path)) if commands::eval::streams(&args) => {
+            output::write_atomically_with(path, &mut |w| commands::eval::stream(&args, w))
+                .map(|()| String::new())
+        }
+        (Command::Eval(args), None) if commands::eval::streams(&args) => {
             commands::eval::stream(&args, out).map(|()| String::new())
         }
-        Command::Audit(args) => commands::audit::run(&args),
-        Command::List(args) => commands::list::run(&args),
-        Command::Eval(args) => commands::eval::run(&args),
-        Command::Table(args) => commands::table::run(&args),
-        Command::Join(args) => commands::join::run(&args),
-        Command::Fit(args) => commands::fit::run(&args),
-        Command::Plot(args) => commands::plot::run(&args),
-        Command::Interp(args) => commands::interp::run(&args),
-        Command::Completions(args) => commands::generate::completions(&args, Cli::command()),
-        Command::Man(args) => commands::generate::man(&args, Cli::command()),
+        (command, Some(path)) => command.run().and_then(|text| {
+            output::write_atomically(path, text.as_bytes()).map(|()| String::new())
+        }),
+        (command, None) => command.run(),
     };
+    if let (Some(path), Ok(_)) = (&target, &result) {
+        output::wrote(path, name);
+    }
     let written = result.and_then(|text| {
         out.write_all(text.as_bytes())
             .and_then(|()| out.flush())
@@ -149,6 +159,55 @@ where
             Outcome::Output(String::new())
         }
         Err(e) => Outcome::Error(one_line(&e.to_string())),
+    }
+}
+
+impl Command {
+    /// The file `--output` names (not `-`), for the commands that print
+    /// their result (`audit`, `plot` and `fit` write files themselves).
+    fn output(&self) -> Option<&Path> {
+        match self {
+            Command::List(a) => a.out.path(),
+            Command::Eval(a) => a.out.path(),
+            Command::Table(a) => a.out.path(),
+            Command::Join(a) => a.out.path(),
+            Command::Interp(a) => a.out.path(),
+            Command::Completions(a) => a.out.path(),
+            Command::Man(a) => a.out.path(),
+            Command::Audit(_) | Command::Fit(_) | Command::Plot(_) => None,
+        }
+    }
+
+    /// The subcommand's name, as the `wrote …` note says what was written.
+    fn name(&self) -> &'static str {
+        match self {
+            Command::Audit(_) => "audit",
+            Command::List(_) => "list",
+            Command::Eval(_) => "eval",
+            Command::Table(_) => "table",
+            Command::Join(_) => "join",
+            Command::Fit(_) => "fit",
+            Command::Plot(_) => "plot",
+            Command::Interp(_) => "interp",
+            Command::Completions(_) => "completions",
+            Command::Man(_) => "man page",
+        }
+    }
+
+    /// Runs the command: the text for standard output (or `--output`).
+    fn run(self) -> commands::CmdResult {
+        match self {
+            Command::Audit(args) => commands::audit::run(&args),
+            Command::List(args) => commands::list::run(&args),
+            Command::Eval(args) => commands::eval::run(&args),
+            Command::Table(args) => commands::table::run(&args),
+            Command::Join(args) => commands::join::run(&args),
+            Command::Fit(args) => commands::fit::run(&args),
+            Command::Plot(args) => commands::plot::run(&args),
+            Command::Interp(args) => commands::interp::run(&args),
+            Command::Completions(args) => commands::generate::completions(&args, Cli::command()),
+            Command::Man(args) => commands::generate::man(&args, Cli::command()),
+        }
     }
 }
 

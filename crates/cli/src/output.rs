@@ -11,11 +11,31 @@
 //! is replaced, never the link); a device, pipe or socket is written in
 //! place; `-` is not a file name here (the commands that can print to
 //! standard output do so without `--output`).
+//!
+//! Every command that prints takes `--output FILE` ([`OutputArg`]; `audit`
+//! has its own, which also places the report's figures): the text goes to
+//! the file, written atomically, instead of standard output.
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use super::commands::CliError;
+
+/// `--output FILE` of a command that prints its result.
+#[derive(Debug, Clone, Default, clap::Args)]
+pub struct OutputArg {
+    /// Write the output to this file (atomically: the old file or the whole
+    /// new one, never a part) instead of standard output (`-`: standard output).
+    #[arg(long, value_name = "FILE")]
+    output: Option<PathBuf>,
+}
+
+impl OutputArg {
+    /// The file to write, if any (`-` is standard output).
+    pub fn path(&self) -> Option<&Path> {
+        self.output.as_deref().filter(|p| p.as_os_str() != "-")
+    }
+}
 
 /// The prefix of this program's temporary files.
 const PREFIX: &str = ".trig-audit-";
@@ -23,17 +43,33 @@ const PREFIX: &str = ".trig-audit-";
 /// Writes `bytes` to `path` atomically (a regular file; a device or pipe
 /// is written in place, a symbolic link written through).
 pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
+    write_atomically_with(path, &mut |w| w.write_all(bytes).map_err(CliError::Write))
+}
+
+/// Writes what `write` produces to `path` atomically, as it is produced
+/// (`eval --at-file` row by row, in bounded memory): the file appears whole
+/// when `write` succeeds, and not at all when it fails.
+pub fn write_atomically_with(
+    path: &Path,
+    write: &mut dyn FnMut(&mut dyn Write) -> Result<(), CliError>,
+) -> Result<(), CliError> {
     let path = &resolve(path)?;
     let fail = |e: std::io::Error| cannot_write(path, e.kind());
+    // a write error of the file is the file's, not standard output's
+    let written = |r: Result<(), CliError>| match r {
+        Err(CliError::Write(e)) => Err(fail(e)),
+        other => other,
+    };
     // a device, pipe or socket is written in place: renaming over it would
     // replace it (`--output /dev/full` must fail as the device fails, not
     // turn /dev/full into a regular file)
     if is_special(path) {
-        return std::fs::OpenOptions::new()
+        let mut f = std::fs::OpenOptions::new()
             .write(true)
             .open(path)
-            .and_then(|mut f| f.write_all(bytes).and_then(|()| f.flush()))
-            .map_err(fail);
+            .map_err(fail)?;
+        written(write(&mut f))?;
+        return f.flush().map_err(fail);
     }
     let dir = directory_of(path);
     remove_stale_temporaries(dir);
@@ -41,7 +77,11 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
         .prefix(&format!("{PREFIX}{}-", std::process::id()))
         .tempfile_in(dir)
         .map_err(fail)?;
-    file.write_all(bytes).map_err(fail)?;
+    {
+        let mut buffered = std::io::BufWriter::new(file.as_file_mut());
+        written(write(&mut buffered))?;
+        buffered.flush().map_err(fail)?;
+    }
     // the temporary file is private (0600): give the result the mode of the
     // file it replaces, or the usual 0644
     #[cfg(unix)]

@@ -173,6 +173,9 @@ pub struct BasisAt<'a, B: ?Sized> {
     params: Vec<Affine>,
     /// The point as typed (for messages).
     x_text: String,
+    /// Functions known to vanish identically at the parameter values
+    /// (decided exactly by the caller): computed as an exact 0.
+    zero: Vec<bool>,
 }
 
 impl<'a, B: Basis + ?Sized> BasisAt<'a, B> {
@@ -196,7 +199,24 @@ impl<'a, B: Basis + ?Sized> BasisAt<'a, B> {
             x,
             params,
             x_text: x_text.to_string(),
+            zero: Vec::new(),
         })
+    }
+
+    /// The same with the functions marked in `zero` (by index) known to
+    /// vanish identically at the parameter values — decided in the exact
+    /// ring, which this crate does not hold — computed as an exact 0: the
+    /// value is `0`, exact, in every arithmetic, and no precision is spent
+    /// on it.
+    pub fn with_zeros(mut self, zero: Vec<bool>) -> Self {
+        self.zero = zero;
+        self
+    }
+
+    /// True for the `i`-th function when it is known to vanish identically
+    /// ([`BasisAt::with_zeros`]).
+    pub fn is_zero(&self, i: usize) -> bool {
+        self.zero.get(i).copied().unwrap_or(false)
     }
 
     /// The exact parameter values, in the basis' order.
@@ -218,7 +238,13 @@ impl<B: Basis + ?Sized> Computation for BasisAt<'_, B> {
         let zero = make(&Rational::new());
         let x = self.x.eval(&zero, &[]);
         let p: Vec<T> = self.params.iter().map(|a| a.eval(&zero, &[])).collect();
-        Ok(self.basis.eval(&self.basis.domain().atoms(&x), &p))
+        let mut values = self.basis.eval(&self.basis.domain().atoms(&x), &p);
+        for (v, z) in values.iter_mut().zip(&self.zero) {
+            if *z {
+                *v = zero.clone();
+            }
+        }
+        Ok(values)
     }
 }
 

@@ -37,6 +37,35 @@ pub fn basis_at(family: Family, atoms: &Atoms<Sym>) -> Vec<Sym> {
 pub trait ExactBasis: Basis {
     /// Every function, exactly.
     fn exact_functions(&self) -> Vec<Sym>;
+
+    /// Every function at exact parameter values (`values[i]` the value of
+    /// the `i`-th parameter, a rational or a rational multiple of π), in
+    /// the exact ring with the variable free: `None` for a function the
+    /// ring cannot take there (a denominator that vanishes). Parameter
+    /// atoms the basis does not specialise (`sin(α)` of a family) stay
+    /// atoms, so a zero found here is identically zero at those values.
+    fn exact_functions_at(&self, values: &[Sym]) -> Vec<Option<Sym>> {
+        generic_at(self, values)
+    }
+}
+
+/// [`ExactBasis::exact_functions_at`] by substituting the parameters'
+/// symbols only.
+fn generic_at<B: ExactBasis + ?Sized>(basis: &B, values: &[Sym]) -> Vec<Option<Sym>> {
+    let names = basis.param_names();
+    basis
+        .exact_functions()
+        .into_iter()
+        .map(|f| {
+            names.iter().zip(values).try_fold(f, |f, (n, v)| {
+                if f.variables().contains(n) {
+                    f.try_subs(n, v).ok()
+                } else {
+                    Some(f)
+                }
+            })
+        })
+        .collect()
 }
 
 impl ExactBasis for Family {
@@ -49,6 +78,22 @@ impl ExactBasis for Spec {
     fn exact_functions(&self) -> Vec<Sym> {
         self.symbolic()
     }
+
+    /// The spec specialised at the values ([`Spec::at_values`]: its
+    /// parameter atoms too, `exp(α)` at `α = 0` is `1`), else the generic
+    /// substitution (an atom not exact at the value stays an atom).
+    fn exact_functions_at(&self, values: &[Sym]) -> Vec<Option<Sym>> {
+        let pairs: Vec<(String, Sym)> = self
+            .params
+            .iter()
+            .map(|p| p.name.clone())
+            .zip(values.iter().cloned())
+            .collect();
+        match self.at_values(&pairs) {
+            Ok(fixed) => fixed.symbolic().into_iter().map(Some).collect(),
+            Err(_) => generic_at(self, values),
+        }
+    }
 }
 
 impl ExactBasis for AnyBasis {
@@ -58,11 +103,22 @@ impl ExactBasis for AnyBasis {
             AnyBasis::Spec(s) => s.exact_functions(),
         }
     }
+
+    fn exact_functions_at(&self, values: &[Sym]) -> Vec<Option<Sym>> {
+        match self {
+            AnyBasis::Family(f) => f.exact_functions_at(values),
+            AnyBasis::Spec(s) => s.exact_functions_at(values),
+        }
+    }
 }
 
 impl<B: ExactBasis + ?Sized> ExactBasis for &B {
     fn exact_functions(&self) -> Vec<Sym> {
         (**self).exact_functions()
+    }
+
+    fn exact_functions_at(&self, values: &[Sym]) -> Vec<Option<Sym>> {
+        (**self).exact_functions_at(values)
     }
 }
 

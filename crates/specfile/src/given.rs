@@ -181,6 +181,24 @@ impl Given {
     }
 }
 
+impl Spec {
+    /// The basis with the parameters `values` (name, exact value) fixed,
+    /// as a claim's fixed values are ([`Given::apply`]): substituted into
+    /// every formula, into the parameters' atoms (`sin(λ/2)` at `λ = π` is
+    /// `1`) and into the domain. Names that are not parameters are skipped.
+    pub fn at_values(&self, values: &[(String, Sym)]) -> Result<Spec, GivenError> {
+        let mut spec = self.clone();
+        for (name, value) in values {
+            let Some(index) = spec.params.iter().position(|p| &p.name == name) else {
+                continue;
+            };
+            let at = format!("{} = {value}", spec.params[index].symbol);
+            spec = Substitution::new(&spec, index, value, &at, false)?.spec(&spec)?;
+        }
+        Ok(spec)
+    }
+}
+
 /// The divisions of the printed formulas that may vanish, found again on
 /// the specialised basis and the claim's ranges: the notes read with the
 /// printed claim spoke of the declared ones (a pole at `λ2 = −2` is gone at

@@ -130,6 +130,47 @@ pub fn check(d: &Sym, domain: &Domain, params: &[(String, ParamRange)]) -> Resul
     Ok(())
 }
 
+/// Where exact `values` (formulas in the parameters of `params`, perhaps
+/// in other symbols too: control points, weights) are singular: every
+/// factor of their denominators that involves a parameter and is not
+/// proved nonzero on the ranges ([`check`]; a factor with other symbols is
+/// never proved), as the joins state it ([`trig_deriv::vanishing`]:
+/// `α = −1`, or `α² − β = 0`). Empty where no division by a parameter can
+/// vanish. Each factor is named once, in the order first met.
+pub fn singular_where<'a>(
+    values: impl IntoIterator<Item = &'a Sym>,
+    domain: &Domain,
+    params: &[(String, ParamRange)],
+) -> Vec<String> {
+    let is_param = |v: &String| params.iter().any(|(p, _)| p == v);
+    let mut seen = std::collections::BTreeSet::new();
+    let mut out = Vec::new();
+    for v in values {
+        for den in v.denominator().keys() {
+            if !seen.insert(den.clone()) {
+                continue;
+            }
+            for (factor, _) in &Sym::from_poly(den.clone()).factored().num {
+                let factor = Sym::from_poly(factor.clone());
+                let vars = factor.variables();
+                if !vars.iter().any(is_param) {
+                    continue;
+                }
+                let only_params = vars.iter().all(|v| is_param(v) || v == "pi");
+                if only_params && check(&factor, domain, params).is_ok() {
+                    continue;
+                }
+                for note in trig_deriv::vanishing(&factor) {
+                    if !out.contains(&note) {
+                        out.push(note);
+                    }
+                }
+            }
+        }
+    }
+    out
+}
+
 /// True when `n` is a polynomial in `y = exp(p)` alone, `p` a parameter,
 /// with no root for `y` in the image of `p`'s range (bounded or not):
 /// `(0, ∞)` maps onto `(1, ∞)`, a finite end `q ≠ 0` onto a rational

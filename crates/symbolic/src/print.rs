@@ -1,10 +1,11 @@
 //! Canonical printing of [`Poly`] and [`Sym`] in four forms: plain ASCII
 //! (`Display`), Unicode ([`Sym::to_unicode`], for Markdown tables), LaTeX
 //! ([`Sym::to_latex`]) and SymPy syntax ([`Sym::to_sympy`]: `**` for powers,
-//! `sin(theta)`, `cos(theta)` for the atoms `s`, `c`, and `lamda` for
-//! `lambda`, a Python keyword — SymPy's own spelling; read it with
+//! `sin(theta)`, `cos(theta)` for the atoms `s`, `c`, one SymPy symbol per
+//! variable whatever its name — `lamda` for `lambda`, `in_` for `in`, the
+//! rules of [`crate::sympy_names`]; read it with
 //! `sympy.parse_expr(text, local_dict={name: Symbol(name) …})` so that
-//! names such as `beta` or `zeta` stay symbols, see [`sympy_symbols`]).
+//! names such as `beta` or `zeta` stay symbols, see [`crate::sympy_symbols`]).
 //! Factored forms ([`crate::FactoredQuotient`]) print in the same four.
 //!
 //! The output is deterministic. Terms are printed greatest first in the
@@ -39,6 +40,7 @@ use crate::factor::FactoredQuotient;
 use crate::monomial::Monomial;
 use crate::poly::Poly;
 use crate::sym::Sym;
+use crate::sympy_names::sympy_name;
 use crate::var::{Var, split_digits};
 
 /// The four text forms of an expression. The LaTeX pieces (names, powers,
@@ -52,8 +54,9 @@ pub enum Style {
     /// LaTeX math (without `$`).
     Latex,
     /// SymPy syntax: `**` for powers, `sin(theta)`, `cos(theta)` for the
-    /// atoms `s`, `c`, `lamda` for `lambda` (read it with the names of
-    /// [`sympy_symbols`] as symbols).
+    /// atoms `s`, `c`, one symbol per variable (`lamda` for `lambda`, `in_`
+    /// for `in`: [`crate::sympy_names`]; read it with the names of
+    /// [`crate::sympy_symbols`] as symbols).
     Sympy,
 }
 
@@ -84,40 +87,6 @@ impl Style {
     pub fn factored(self, f: &FactoredQuotient) -> String {
         factored(f, self)
     }
-}
-
-/// The SymPy name of a variable: `s`, `c` are `sin(theta)`, `cos(theta)`,
-/// `lambda` (a Python keyword) is `lamda`, as SymPy spells it.
-fn sympy_name(n: &str) -> String {
-    match n {
-        crate::var::SIN => "sin(theta)".to_string(),
-        crate::var::COS => "cos(theta)".to_string(),
-        _ => {
-            let (prefix, digits) = split_digits(n);
-            if prefix == "lambda" {
-                format!("lamda{digits}")
-            } else {
-                n.to_string()
-            }
-        }
-    }
-}
-
-/// The SymPy symbol names an expression with the variables `names` uses
-/// (`theta` for `s`, `c`; `lamda` for `lambda`), sorted, without `pi`
-/// (SymPy's own constant).
-pub fn sympy_symbols<'a>(names: impl IntoIterator<Item = &'a str>) -> Vec<String> {
-    let mut out: Vec<String> = names
-        .into_iter()
-        .filter(|n| *n != crate::var::PI)
-        .map(|n| match n {
-            crate::var::SIN | crate::var::COS => "theta".to_string(),
-            _ => sympy_name(n),
-        })
-        .collect();
-    out.sort();
-    out.dedup();
-    out
 }
 
 fn digits_in(table: &[char; 10], digits: &str) -> String {
@@ -361,8 +330,8 @@ impl Poly {
     }
 
     /// SymPy syntax: `**` for powers, `sin(theta)`, `cos(theta)` for the
-    /// atoms `s`, `c`, `lamda` for `lambda` (read it with the names of
-    /// [`sympy_symbols`] as symbols).
+    /// atoms `s`, `c`, one symbol per variable ([`crate::sympy_names`];
+    /// read it with the names of [`crate::sympy_symbols`] as symbols).
     pub fn to_sympy(&self) -> String {
         poly(self, Style::Sympy)
     }
@@ -386,8 +355,8 @@ impl Sym {
     }
 
     /// SymPy syntax: `**` for powers, `sin(theta)`, `cos(theta)` for the
-    /// atoms `s`, `c`, `lamda` for `lambda` (read it with the names of
-    /// [`sympy_symbols`] as symbols).
+    /// atoms `s`, `c`, one symbol per variable ([`crate::sympy_names`];
+    /// read it with the names of [`crate::sympy_symbols`] as symbols).
     pub fn to_sympy(&self) -> String {
         sym(self, Style::Sympy)
     }
@@ -461,6 +430,7 @@ impl fmt::Display for Sym {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::sympy_symbols;
 
     fn v(n: &str) -> Sym {
         Sym::var(n)

@@ -31,10 +31,16 @@ pub struct Expr {
     pub unicode: String,
     /// LaTeX math (without `$`).
     pub latex: String,
-    /// SymPy syntax: `**`, `sin(theta)`, `cos(theta)`, `lamda` for `λ`;
-    /// parse with `sympy.parse_expr(sympy, local_dict={n: Symbol(n) for n in symbols})`.
+    /// SymPy syntax: `**`, `sin(theta)`, `cos(theta)`, one symbol per
+    /// variable (`lamda` for `λ`; a Python keyword, a SymPy one-letter name
+    /// or a name the forms write, `lamda…` and a name ending in `_` get a
+    /// trailing `_`: `in_`, `None_`, `lamda_`; `E_` is the atom `exp(κx)`);
+    /// an enclosure is `Interval(Rational('lo'), Rational('hi'))`; parse with
+    /// `sympy.parse_expr(sympy, local_dict={n: Symbol(n) for n in symbols})`.
     pub sympy: String,
-    /// The SymPy symbols `sympy` uses (`pi` is SymPy's own constant).
+    /// The SymPy symbols `sympy` uses (`pi` is SymPy's own constant), one
+    /// per variable: a name is undone by stripping one trailing `_`, and
+    /// `lamda…` without one is `lambda…`.
     pub symbols: Vec<String>,
     /// Plain ASCII (`*`, `^`).
     pub plain: String,
@@ -200,6 +206,24 @@ impl Expr {
             terms: num.numerator().len(),
             degree: num.numerator().total_degree(),
             factored: None,
+        }
+    }
+
+    /// A certified enclosure `[lo, hi]` of a value (decimal ends, rounded
+    /// outward), in SymPy `Interval(Rational('lo'), Rational('hi'))`: the
+    /// ends exactly as printed.
+    pub fn enclosure(lo: &str, hi: &str) -> Expr {
+        let end = |x: &str| match x.trim_start_matches(['-', '+']) {
+            "inf" | "@Inf@" => format!("{}oo", if x.starts_with('-') { "-" } else { "" }),
+            y if y.starts_with(|c: char| c.is_ascii_digit()) && y.parse::<f64>().is_ok() => {
+                format!("Rational('{x}')")
+            }
+            _ => "nan".to_string(),
+        };
+        let text = format!("[{lo}, {hi}]");
+        Expr {
+            sympy: format!("Interval({}, {})", end(lo), end(hi)),
+            ..Expr::numeric(&text)
         }
     }
 

@@ -152,7 +152,7 @@ fn witness(
                 f.to_rational()
                     .map_or_else(|| f.to_string(), |q| decimal(&q, DIGITS, up))
             };
-            Expr::numeric(&format!("[{}, {}]", end(i.lo(), false), end(i.hi(), true)))
+            Expr::enclosure(&end(i.lo(), false), &end(i.hi(), true))
         }
     };
     Witness {

@@ -16,6 +16,7 @@ use trig_core::piecewise::UniformAt;
 use trig_core::{
     Affine, CoreError, Described, Family, Real, SEED000_NONUNIFORM, echo, parse_exact, parse_point,
 };
+use trig_judge::exact::ExactBasis;
 use trig_specfile::AnyBasis;
 use trig_symbolic::Sym;
 
@@ -75,6 +76,8 @@ pub struct EvalArgs {
     /// Output format.
     #[arg(long, value_enum, default_value = "text")]
     format: TextOrJson,
+    #[command(flatten)]
+    pub out: crate::output::OutputArg,
 }
 
 /// Splits `name=value` arguments.
@@ -269,6 +272,8 @@ fn setup<'a>(
         args.allow_outside_range,
     )
     .map_err(range_hint)?;
+    let zeros = exact_zeros(subject, at.params());
+    let at = at.with_zeros(zeros);
     Ok(Setup {
         problem: Problem::Basis(at),
         id,
@@ -276,6 +281,22 @@ fn setup<'a>(
         names: subject.function_names(),
         note: None,
     })
+}
+
+/// Which functions of `basis` vanish identically at the parameter values
+/// `params`, decided first in the exact ring (the basis specialised at the
+/// values): those print as an exact `0` instead of an enclosure of zero
+/// that no precision decides.
+fn exact_zeros(basis: &AnyBasis, params: &[Affine]) -> Vec<bool> {
+    if params.is_empty() {
+        return Vec::new();
+    }
+    let values: Vec<Sym> = params.iter().map(|a| a.eval(&Sym::zero(), &[])).collect();
+    basis
+        .exact_functions_at(&values)
+        .iter()
+        .map(|f| f.as_ref().is_some_and(Sym::is_zero))
+        .collect()
 }
 
 /// The point as a rational, for the knot-based evaluations (their knots
@@ -306,7 +327,27 @@ fn evaluate(
         }
         e => e.into(),
     })?;
-    let values: Vec<Shown> = e.values.iter().map(|v| shown(v, arithmetic)).collect();
+    let identically_zero = |i: usize| matches!(&s.problem, Problem::Basis(b) if b.is_zero(i));
+    let values: Vec<Shown> = e
+        .values
+        .iter()
+        .enumerate()
+        .map(|(i, v)| {
+            if identically_zero(i) {
+                Shown {
+                    text: "0".into(),
+                    bound: None,
+                    note: Some(
+                        "exact: identically 0 at these parameter values, decided in the exact ring"
+                            .into(),
+                    ),
+                    digits: None,
+                }
+            } else {
+                shown(v, arithmetic)
+            }
+        })
+        .collect();
     let short = match arithmetic {
         Arithmetic::Digits(n) => (e.short_of(n), e.values.len()),
         _ => (0, 0),

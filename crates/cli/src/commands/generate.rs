@@ -19,6 +19,8 @@ pub struct CompletionsArgs {
     /// The shell the script is for.
     #[arg(value_enum)]
     pub shell: Shell,
+    #[command(flatten)]
+    pub out: crate::output::OutputArg,
 }
 
 /// The completion script of `shell` for the command line `cli`.
@@ -34,6 +36,8 @@ pub struct ManArgs {
     /// The page of this subcommand (`trig-audit-audit(1)`, …) instead of
     /// the page of `trig-audit` itself.
     pub command: Option<String>,
+    #[command(flatten)]
+    pub out: crate::output::OutputArg,
 }
 
 /// The man page (roff) of the command line `cli`, or of one of its

@@ -47,6 +47,8 @@ pub struct InterpArgs {
     /// Output format.
     #[arg(long, value_enum, default_value = "text")]
     format: InterpFormat,
+    #[command(flatten)]
+    pub out: crate::output::OutputArg,
 }
 
 fn usage(e: InterpError) -> CliError {

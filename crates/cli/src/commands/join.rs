@@ -49,6 +49,8 @@ pub struct JoinArgs {
     /// Output format.
     #[arg(long, value_enum, default_value = "text")]
     format: JoinFormat,
+    #[command(flatten)]
+    pub out: crate::output::OutputArg,
 }
 
 /// The solved join, ready to print.

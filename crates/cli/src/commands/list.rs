@@ -14,6 +14,8 @@ pub struct ListArgs {
     /// Output format.
     #[arg(long, value_enum, default_value = "text")]
     format: TextOrJson,
+    #[command(flatten)]
+    pub out: crate::output::OutputArg,
 }
 
 pub fn run(args: &ListArgs) -> CmdResult {

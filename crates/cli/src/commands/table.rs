@@ -21,6 +21,7 @@ use crate::digits;
 use crate::format::{TableFormat, render_blocks};
 use crate::names::names_of;
 use trig_specfile::AnyBasis;
+use trig_specfile::nonvanishing::singular_where;
 
 /// Highest order a table can have (the cost model).
 pub const MAX_ORDER: usize = 12;
@@ -99,6 +100,8 @@ pub struct TableArgs {
     /// Interval length h for --wrt x in a numeric table (exact tables keep the symbol h).
     #[arg(long, requires = "numeric", allow_hyphen_values = true)]
     h: Option<String>,
+    #[command(flatten)]
+    pub out: crate::output::OutputArg,
 }
 
 impl From<WrtArg> for Wrt {
@@ -243,11 +246,23 @@ fn exact(args: &TableArgs, family: &AnyBasis, wrt: Wrt) -> Result<Vec<Block>, Cl
     let [points, _] = namespace.points(n);
     let names: Vec<String> = points.iter().map(ToString::to_string).collect();
     let weights = namespace.weights(n);
+    let ranges: Vec<_> = family
+        .parameters()
+        .into_iter()
+        .map(|p| (p.name.to_string(), p.range))
+        .collect();
+    let domain = family.domain();
     Ok(
         build(args, family, wrt, &params, &h, Some((&points, &weights)))
             .map_err(|e| CliError::Usage(e.to_string()))?
             .into_iter()
-            .map(|b| {
+            .map(|mut b| {
+                // a division by a parameter that may vanish in its range is
+                // named, as the joins name theirs
+                let singular = singular_where(b.cells(), &domain, &ranges);
+                if !singular.is_empty() {
+                    b.title = format!("{} (singular where {})", b.title, singular.join(", "));
+                }
                 b.map(|v| {
                     if args.curve {
                         v.combination(&names)
