@@ -5,7 +5,7 @@
 
 use std::path::PathBuf;
 
-use trig_e2e::{assert_errors, example, stdout_ok, written};
+use trig_e2e::{assert_errors, example, stdout_ok, usage_error, written};
 
 /// A spec file written for one test.
 fn spec_file(name: &str, text: &str) -> String {
@@ -622,4 +622,76 @@ fn joins_are_labelled_as_a_referee_reads_them() {
     );
     let wrong = spec_file("rqtb-wrong-c1.toml", &wrong);
     assert_eq!(verdict(&wrong, "RQTB-C1"), "fails");
+}
+
+/// The standard battery is counted apart from the file's claims; `--battery
+/// summary` keeps its counts only, `none` does not run it; the flag needs
+/// `--spec`.
+#[test]
+fn the_battery_is_counted_apart_and_chosen_by_flag() {
+    let hmh = example("han-ma-huang-cubic.toml");
+    let json = |battery: &str| -> serde_json::Value {
+        let text = stdout_ok(&[
+            "audit",
+            "--spec",
+            &hmh,
+            "--format",
+            "json",
+            "--battery",
+            battery,
+        ]);
+        serde_json::from_str(&text).expect("json")
+    };
+    let full = json("full");
+    let claims = full["claims"].as_array().expect("claims");
+    let in_file = claims
+        .iter()
+        .filter(|c| c["seed"] == "han-ma-huang-cubic")
+        .count();
+    let summary = &full["summary"];
+    let total: u64 = ["holds", "fails", "holds-after-correction", "not-checkable"]
+        .iter()
+        .map(|k| summary[k].as_u64().unwrap_or(0))
+        .sum();
+    // the total counts the file's claims only, the battery is its own document
+    assert_eq!(total as usize, in_file, "{summary}");
+    assert!(claims.len() > in_file, "the battery is reported in full");
+    let battery = full["documents"]
+        .as_array()
+        .expect("documents")
+        .iter()
+        .find(|d| d["battery"] == true)
+        .expect("a battery document");
+    assert_eq!(
+        battery["claims"].as_u64(),
+        Some((claims.len() - in_file) as u64)
+    );
+    // the file's claims come first
+    assert_eq!(claims[0]["seed"], "han-ma-huang-cubic");
+    let counts_only = json("summary");
+    assert_eq!(
+        counts_only["claims"].as_array().map(Vec::len),
+        Some(in_file)
+    );
+    assert_eq!(counts_only["summary"], full["summary"]);
+    assert!(
+        counts_only["documents"]
+            .as_array()
+            .expect("documents")
+            .iter()
+            .any(|d| d["battery"] == true)
+    );
+    let none = json("none");
+    assert_eq!(none["claims"].as_array().map(Vec::len), Some(in_file));
+    assert!(
+        !none["documents"]
+            .as_array()
+            .expect("documents")
+            .iter()
+            .any(|d| d["battery"] == true)
+    );
+    let md = stdout_ok(&["audit", "--spec", &hmh]);
+    assert!(md.contains("| battery (not in all) |"), "{md}");
+    let refused = usage_error(&["audit", "--battery", "none"]);
+    assert!(refused.contains("--battery applies to --spec"), "{refused}");
 }
