@@ -60,7 +60,7 @@ pub fn breakable(line: &str) -> String {
 }
 
 /// A code span (a command, a file name) in typewriter: breakable after
-/// `/`, `-` and the like when longer than [`CODE_UNBROKEN`] characters (a
+/// `/`, `-` and the like when longer than 48 characters (`CODE_UNBROKEN`; a
 /// path of any length fits the line), else kept on one line.
 pub fn code(span: &str) -> String {
     if span.chars().count() > CODE_UNBROKEN {
@@ -72,7 +72,7 @@ pub fn code(span: &str) -> String {
 
 /// The longest code span [`code`] keeps unbroken: 48 typewriter characters
 /// (about 250 pt at 10 pt) always fit the text width of an `article`.
-pub const CODE_UNBROKEN: usize = 48;
+const CODE_UNBROKEN: usize = 48;
 
 #[cfg(test)]
 mod tests {
