@@ -1,7 +1,8 @@
 //! A researcher's own paper, end to end (issue 40): a plain `article` that
-//! `\input`s the audits of spec files with Greek symbols, weights and two or
-//! three parameters, an exact table, a G² join fragment and a figure of a
-//! two-parameter basis must compile with no error and no overfull box. Under
+//! `\input`s the audits of every spec file of `examples/` (Greek symbols,
+//! weights, two and three parameters), an exact table, a G² join fragment
+//! and a figure of a two-parameter basis must compile with no error and no
+//! overfull box. Under
 //! `./run.sh test` (TeX installed, `TRIG_AUDIT_REQUIRE_TEX`) it cannot be
 //! skipped.
 
@@ -10,17 +11,28 @@ use std::path::Path;
 use crate::cli_paste::{compiles_cleanly, draw, scratch};
 use trig_e2e::{example, stdout_ok, written};
 
-/// The spec files whose audits the paper includes: Greek symbols, a weight
-/// (a rational one fixed in a claim), two and three parameters, exchange
-/// symmetry, joins with poles in the printed ranges.
-const AUDITED: [&str; 6] = [
-    "rational-trig-two-shape.toml",
-    "han-ma-huang-cubic.toml",
-    "bashir-quadratic.toml",
-    "rational-quadratic.toml",
-    "exp-bernstein-cubic.toml",
-    "c-bezier-cubic.toml",
-];
+/// The spec files whose audits the paper includes: every one of
+/// `examples/` and `examples/catalog/` — Greek symbols, weights (a rational
+/// one fixed in a claim), two and three parameters, exchange symmetry,
+/// joins with poles in the printed ranges, irrational range ends.
+fn audited() -> Vec<String> {
+    let mut files: Vec<String> = ["", "catalog"]
+        .iter()
+        .flat_map(|dir| {
+            let root = Path::new(&example("")).join(dir);
+            std::fs::read_dir(&root)
+                .expect("examples/")
+                .filter_map(Result::ok)
+                .map(|e| e.path())
+                .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+                .map(|p| p.display().to_string())
+                .collect::<Vec<_>>()
+        })
+        .collect();
+    files.sort();
+    assert!(files.len() >= 30, "{files:?}");
+    files
+}
 
 /// Writes `text` to `dir/name` and returns its path as LaTeX reads it.
 fn fragment(dir: &Path, name: &str, text: &str) -> String {
@@ -33,12 +45,12 @@ fn fragment(dir: &Path, name: &str, text: &str) -> String {
 fn a_paper_inputting_spec_audits_a_table_a_join_and_a_figure_compiles() {
     let dir = scratch("paper");
     let mut body = String::from("\\section{Audits of the bases}\n");
-    for (k, spec) in AUDITED.iter().enumerate() {
+    for (k, spec) in audited().iter().enumerate() {
         let path = dir.join(format!("audit-{k}.tex"));
         let out = written(&[
             "audit",
             "--spec",
-            &example(spec),
+            spec,
             "--format",
             "tex",
             "--output",

@@ -50,36 +50,77 @@ struct Latex<'a> {
     options: &'a TexOptions,
 }
 
-/// The shares (percent of the line) of the index's columns — claim,
-/// verdict, document, source, printed: 10, 17, 9, 20, 44, with the claim
-/// and document columns widened to their longest unbreakable piece (a word
-/// or the part of an id between hyphens, set at `\small`) at the cost of
-/// the printed statement, then of the source.
-fn index_shares(entries: &[&Entry]) -> [u8; 5] {
-    // an upper bound of a `\small` Computer Modern character (about 4.7 pt)
+/// The index's columns — claim, verdict, document, source, printed — with
+/// their shares (percent of the line): 10, 17, 9, 20, 44. The document
+/// column is left out when the report has one document (its battery aside:
+/// the battery's lines say `standard battery` as their source), its share
+/// going to the printed statement. The claim, document and source columns
+/// are widened to their longest unbreakable piece (a word, or the part of
+/// an id between hyphens or of a path between slashes, set at `\small`) at
+/// the cost of the printed statement (down to 24), then of the source (down
+/// to its own longest piece, at least 14).
+fn index_columns(entries: &[&Entry]) -> Vec<(&'static str, u8)> {
+    // an upper bound of a `\small` Computer Modern character (about 5 pt)
     // over the text width of an `article` (345 pt), padding 12 pt, percent
-    let need = |pieces: &mut dyn Iterator<Item = &str>| -> u8 {
-        let longest = pieces
-            .flat_map(|t| t.split([' ', '-']))
+    let need = |texts: &mut dyn Iterator<Item = &str>, cap: u8| -> u8 {
+        let longest = texts
+            .flat_map(|t| t.split([' ', '-', '/']))
             .map(|w| w.chars().count())
             .max()
             .unwrap_or(0);
-        u8::try_from((longest * 500 + 1200).div_ceil(345)).unwrap_or(u8::MAX)
+        u8::try_from((longest * 500 + 1200).div_ceil(345))
+            .unwrap_or(u8::MAX)
+            .min(cap)
     };
-    let mut shares = [10, 17, 9, 20, 44];
-    shares[0] = shares[0].max(need(&mut entries.iter().map(|e| e.id.as_str())).min(30));
-    shares[2] = shares[2].max(need(&mut entries.iter().map(|e| e.document.id.as_str())).min(20));
-    let mut over = shares
+    let mut documents: Vec<&str> = entries
         .iter()
-        .map(|&s| u32::from(s))
-        .sum::<u32>()
-        .saturating_sub(100);
-    for (k, least) in [(4, 24), (3, 14)] {
-        let take = over.min(u32::from(shares[k] - least));
-        shares[k] -= take as u8;
-        over -= take;
+        .filter(|e| !e.document.battery)
+        .map(|e| e.document.id.as_str())
+        .collect();
+    documents.dedup();
+    let one = documents.len() <= 1;
+    let id = need(&mut entries.iter().map(|e| e.id.as_str()), 30).max(10);
+    let doc = need(&mut entries.iter().map(|e| e.document.id.as_str()), 20).max(9);
+    let source_least = need(&mut entries.iter().map(|e| e.source.as_str()), 20).max(14);
+    let mut shares: Vec<(&'static str, u8)> = vec![("claim", id), ("verdict", 17)];
+    if !one {
+        shares.push(("doc.", doc));
+    }
+    shares.extend([("source", 20), ("printed", 0)]);
+    let used: u32 = shares.iter().map(|(_, s)| u32::from(*s)).sum();
+    let printed = 100u32.saturating_sub(used);
+    let last = shares.len() - 1;
+    if printed >= 24 {
+        shares[last].1 = printed as u8;
+    } else {
+        // the source gives up to its least, the statement keeps 24
+        let source = last - 1;
+        let give = (24 - printed).min(u32::from(shares[source].1 - source_least));
+        shares[source].1 -= give as u8;
+        shares[last].1 = (printed + give) as u8;
     }
     shares
+}
+
+/// A claim's source in the index: prose, except that a path too long for
+/// the column (`examples/independent/README.md`) may break after its `/`
+/// and `.`.
+fn source_cell(source: &str) -> String {
+    let path = |w: &str| w.contains('/') && w.chars().count() > 16;
+    if !source.split(' ').any(path) {
+        return prose(source);
+    }
+    source
+        .split(' ')
+        .map(|w| {
+            if path(w) {
+                breakable(w).replace('.', r".\allowbreak{}")
+            } else {
+                prose(w)
+            }
+        })
+        .collect::<Vec<_>>()
+        .join(" ")
 }
 
 /// The file a figure is drawn in, as LaTeX includes it: a PDF or PNG beside
@@ -236,9 +277,11 @@ impl Format for Latex<'_> {
 
     fn index(&self, out: &mut String, entries: &[&Entry], linked: bool) {
         let _ = writeln!(out, "\\subsection*{{Index}}\n");
-        let columns = index_shares(entries).map(Column::Share).to_vec();
-        let head = ["claim", "verdict", "doc.", "source", "printed"].map(String::from);
-        let mut table = LongTable::new(columns, "One line per claim".into(), head.to_vec())
+        let shares = index_columns(entries);
+        let with_document = shares.iter().any(|(name, _)| *name == "doc.");
+        let columns = shares.iter().map(|(_, s)| Column::Share(*s)).collect();
+        let head = shares.iter().map(|(name, _)| name.to_string()).collect();
+        let mut table = LongTable::new(columns, "One line per claim".into(), head)
             .unnumbered()
             .small();
         for e in entries {
@@ -247,13 +290,12 @@ impl Format for Latex<'_> {
             } else {
                 text(&e.id)
             };
-            table.row(vec![
-                id,
-                e.verdict.status.to_string(),
-                text(&e.document.id),
-                prose(&e.source),
-                marked(&truncate(&e.statement, 120)),
-            ]);
+            let mut row = vec![id, e.verdict.status.to_string()];
+            if with_document {
+                row.push(text(&e.document.id));
+            }
+            row.extend([source_cell(&e.source), marked(&truncate(&e.statement, 120))]);
+            table.row(row);
         }
         let _ = writeln!(out, "{table}");
     }

@@ -179,6 +179,16 @@ fn pieces(chars: &[char], top: bool) -> Vec<Piece> {
                 i += 1;
             }
             let word: String = chars[start..i].iter().collect();
+            // `sqrt(2)`: a radical over its bracketed argument
+            if word == "sqrt"
+                && chars.get(i) == Some(&'(')
+                && let Some(end) = closing(chars, i, '(', ')')
+            {
+                let inner = join(&pieces(&chars[i + 1..end], top));
+                out.push(piece(format!(r"\sqrt{{{inner}}}"), Kind::Atom));
+                i = end + 1;
+                continue;
+            }
             out.extend(word_pieces(&word));
             // trailing digits: the index of a letter or name (`P1`,
             // `lambda2`); inside a script they are part of it (`b_{j0}`)
@@ -482,6 +492,7 @@ mod tests {
             r"\alpha_{0}(0) = \alpha_{1}'(1), 2\alpha"
         );
         assert_eq!(math("tan α + cos(x)"), r"\tan \alpha + \cos(x)");
+        assert_eq!(math("λ·sqrt(2) + 2 = 0"), r"\lambda\cdot\sqrt{2} + 2 = 0");
         assert_eq!(math("sinh t"), r"\sinh t");
         assert_eq!(math("sgn x"), r"\operatorname{sgn} x");
         assert_eq!(math("Σ b_i = 1"), r"\sum b_{i} = 1");
