@@ -34,6 +34,17 @@ fn is_label(word: &str) -> bool {
         && (number.len() < inner.len() || number.contains('.'))
 }
 
+/// A product written with `*` between a number or name and a name
+/// (`26624*lambda`, `2*mu`): ASCII formula text. Code (`m.*cos(t)`,
+/// `(pi/2)*t`) is not one.
+fn is_product(word: &str) -> bool {
+    let chars: Vec<char> = word.chars().collect();
+    !word.contains(".*")
+        && chars
+            .windows(3)
+            .any(|w| w[1] == '*' && w[0].is_ascii_alphanumeric() && w[2].is_ascii_alphabetic())
+}
+
 /// A prime after a name or bracket (`R''(0)`, `b0'`), not a possessive.
 fn has_prime(word: &str) -> bool {
     let core = word.trim_end_matches([',', ';', ':', '.']);
@@ -47,10 +58,14 @@ fn has_prime(word: &str) -> bool {
 fn classify(word: &str) -> Token {
     let trimmed = word.trim_end_matches([',', ';', '.']);
     // labels stay text: `(4.21)`, `(A45)`, a claim id before a colon (`T4:`)
-    if is_label(trimmed) || (trimmed.ends_with(':') && !trimmed.chars().any(is_mathy)) {
+    let id_before_colon = trimmed.ends_with(':')
+        && !trimmed.chars().any(is_mathy)
+        && trimmed.contains(|c: char| c.is_ascii_alphabetic());
+    if is_label(trimmed) || id_before_colon {
         return Token::Text;
     }
     if word.contains(['_', '^'])
+        || is_product(trimmed)
         || has_prime(word)
         || word.chars().any(|c| is_mathy(c) || c == '\u{304}')
     {
@@ -253,6 +268,15 @@ mod tests {
         assert_eq!(
             prose("reading of T4: H_i(u) = 1"),
             r"reading of T4: $H_{i}(u) = 1$"
+        );
+        // ASCII products and a fraction before a colon are formulas
+        assert_eq!(
+            prose("root of 3*lambda^2 - 26624*lambda - 8192 = 0 in"),
+            r"root of $3\cdot\lambda^{2} - 26624\cdot\lambda - 8192 = 0$ in"
+        );
+        assert_eq!(
+            prose("z = 1/4 (θ ≈ 0.49, s = 8/17, c = 15/17): value"),
+            r"$z = \frac{1}{4} (\theta \approx 0.49,\allowbreak s = \frac{8}{17},\allowbreak c = \frac{15}{17})$: value"
         );
         assert_eq!(
             prose("run `trig-audit audit` now"),
