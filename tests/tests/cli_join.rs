@@ -88,3 +88,54 @@ fn bad_join_requests_are_one_line_errors() {
         ),
     ]);
 }
+
+/// A G² join whose order-2 condition involves no free control point of the
+/// second segment is met by the factor β alone: the join says which β
+/// instead of failing. The quartic trigonometric basis with two shape
+/// parameters (b₀ = (1 − s)²(1 − λs)², b₂ = (1 − c)²(1 − μc)², b₁ the rest),
+/// checked independently in SymPy (a new user's derivation):
+/// β = −α[α(μ₁² + 4μ₁ + 1)/(μ₁ + 1) + (λ₂² + 4λ₂ + 1)/(λ₂ + 1)].
+#[test]
+fn a_g2_condition_without_a_free_point_fixes_the_factor() {
+    let spec = crate::cli_spec_features::spec_file(
+        "quartic-two-shape.toml",
+        "id = \"quartic-two-shape\"\ncitation = \"test\"\nvariable = \"angle\"\n[[parameters]]\nname = \"lambda\"\nsymbol = \"λ\"\nrange = \"[-1, 1]\"\n[[parameters]]\nname = \"mu\"\nsymbol = \"μ\"\nrange = \"[-1, 1]\"\n[[functions]]\nname = \"b0\"\nformula = \"(1 - s)^2*(1 - lambda*s)^2\"\n[[functions]]\nname = \"b2\"\nformula = \"(1 - c)^2*(1 - mu*c)^2\"\n[[functions]]\nname = \"b1\"\nformula = \"1 - b0 - b2\"\n",
+    );
+    let text = stdout_ok(&[
+        "join",
+        "--spec",
+        &spec,
+        "--kind",
+        "g2",
+        "--params",
+        "different",
+    ]);
+    assert!(
+        text.contains("β = −α·(α·λ₂·μ₁² + 4·α·λ₂·μ₁ + α·μ₁² + λ₂²·μ₁ + α·λ₂ + 4·α·μ₁ + λ₂² + 4·λ₂·μ₁ + α + 4·λ₂ + μ₁ + 1)/((λ₂ + 1)·(μ₁ + 1))"),
+        "{text}"
+    );
+    let json = stdout_ok(&[
+        "join",
+        "--spec",
+        &spec,
+        "--kind",
+        "g2",
+        "--params",
+        "different",
+        "--format",
+        "json",
+    ]);
+    let value: serde_json::Value = serde_json::from_str(&json).expect("json");
+    assert_eq!(value["factor"]["symbol"], "beta", "{json}");
+    // a C² join has no factor to take up the condition: it cannot be met
+    let c2 = trig_e2e::error_line(&[
+        "join",
+        "--spec",
+        &spec,
+        "--kind",
+        "c2",
+        "--params",
+        "different",
+    ]);
+    assert!(c2.contains("cannot be met"), "{c2}");
+}

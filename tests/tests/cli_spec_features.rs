@@ -8,7 +8,7 @@ use std::path::PathBuf;
 use trig_e2e::{assert_errors, example, stdout_ok, usage_error, written};
 
 /// A spec file written for one test.
-fn spec_file(name: &str, text: &str) -> String {
+pub(crate) fn spec_file(name: &str, text: &str) -> String {
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cli_spec_features");
     std::fs::create_dir_all(&dir).expect("temp dir");
     let path = dir.join(name);

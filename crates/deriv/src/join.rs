@@ -238,6 +238,11 @@ pub struct Forced {
 pub struct Join {
     pub kind: JoinKind,
     pub forced: Vec<Forced>,
+    /// The `G²` factor `β` and its value when a condition involves no free
+    /// control point of the second segment but is met, for every control
+    /// point, by that value of `β` alone (a `G²` join is the existence of
+    /// such factors).
+    pub factor: Option<(Sym, Sym)>,
 }
 
 impl Join {
@@ -298,6 +303,7 @@ pub fn solve_join_with<B: Basis>(
     }
     let names: Vec<String> = second.iter().map(|q| q.to_string()).collect();
     let mut forced: Vec<Forced> = Vec::new();
+    let mut factor: Option<(Sym, Sym)> = None;
     for (order, residual) in setup
         .residuals_with(ends, kind, first, second)
         .into_iter()
@@ -315,6 +321,10 @@ pub fn solve_join_with<B: Basis>(
             .find(|&i| !reduced.diff(&names[i]).is_zero());
         let Some(index) = pivot_index else {
             if reduced.is_zero() {
+                continue;
+            }
+            if let Some(value) = factor_value(setup, kind, &reduced, first, second) {
+                factor = Some((setup.factors[1].clone(), value));
                 continue;
             }
             return Err(JoinError::Inconsistent {
@@ -336,7 +346,37 @@ pub fn solve_join_with<B: Basis>(
         });
     }
     forced.sort_by_key(|f| f.index);
-    Ok(Join { kind, forced })
+    Ok(Join {
+        kind,
+        forced,
+        factor,
+    })
+}
+
+/// The value of the `G²` factor `β` that makes the condition `residual = 0`
+/// hold for every control point, when it is linear in `β` and that value
+/// involves no control point; `None` otherwise (or for another kind).
+fn factor_value<B: Basis>(
+    setup: &JoinSetup<'_, B>,
+    kind: JoinKind,
+    residual: &Sym,
+    first: &[Sym],
+    second: &[Sym],
+) -> Option<Sym> {
+    if kind != JoinKind::G2 {
+        return None;
+    }
+    let beta = setup.factors[1].to_string();
+    let slope = residual.diff(&beta);
+    if slope.is_zero() || !slope.diff(&beta).is_zero() {
+        return None;
+    }
+    let value = -((residual.clone() - &(slope.clone() * &setup.factors[1])) / &slope);
+    let points = first.iter().chain(second);
+    points
+        .map(ToString::to_string)
+        .all(|p| value.diff(&p).is_zero())
+        .then_some(value)
 }
 
 /// Where `pivot` vanishes, as readable conditions: `m = −2` when it is

@@ -69,6 +69,9 @@ struct Solved {
     factors: [Sym; 2],
     /// The symbols of the interval lengths (`h₁`, `h₂`; used in `x`).
     lengths: [Sym; 2],
+    /// The `G²` factor `β` and the value a condition without a free control
+    /// point fixes (`trig_deriv::Join::factor`).
+    factor: Option<(Sym, Sym)>,
 }
 
 /// The letter of control points `P0, P1, …`.
@@ -150,6 +153,7 @@ fn solve(
         curves: [letter(&first), letter(&second)],
         factors,
         lengths: [h1, h2],
+        factor: join.factor,
     })
 }
 
@@ -238,7 +242,28 @@ fn text(s: &Solved) -> String {
             out.push_str(&format!("    singular where {}\n", singular.join(", ")));
         }
     }
+    if let Some((beta, value)) = &s.factor {
+        out.push_str(&format!(
+            "\n{FACTOR_NOTE}:\n  {} = {}\n",
+            beta.to_unicode(),
+            shortest(value, Style::Unicode)
+        ));
+    }
     out
+}
+
+/// What the line of a factor fixed by the join says.
+const FACTOR_NOTE: &str = "the factor the join fixes (a condition with no free control point of the second segment, met for every control point by this value)";
+
+/// `x` in `style`, factored where that is not longer.
+fn shortest(x: &Sym, style: Style) -> String {
+    let f = x.factored();
+    let factored = (!f.trivial).then(|| style.factored(&f));
+    let expanded = style.sym(x);
+    match factored {
+        Some(g) if g.chars().count() <= expanded.chars().count() => g,
+        _ => expanded,
+    }
 }
 
 fn tex(s: &Solved) -> String {
@@ -250,7 +275,15 @@ fn tex(s: &Solved) -> String {
             let lines = formula_lines(value, s, Style::Latex);
             (point.to_latex(), lines.join(" \\\\\n&\\quad "))
         })
+        .chain(
+            s.factor
+                .iter()
+                .map(|(beta, value)| (beta.to_latex(), shortest(value, Style::Latex))),
+        )
         .collect();
+    if s.factor.is_some() {
+        out.push_str(&trig_tex::comment(&format!("last line: {FACTOR_NOTE}")));
+    }
     out.push_str(&trig_tex::align(&equations));
     for (point, _, singular) in &s.forced {
         if !singular.is_empty() {
@@ -280,5 +313,11 @@ fn json_value(s: &Solved) -> serde_json::Value {
             "latex_lines": formula_lines(value, s, Style::Latex),
             "singular_where": singular,
         })).collect::<Vec<_>>(),
+        "factor": s.factor.as_ref().map(|(beta, value)| json!({
+            "symbol": beta.to_string(),
+            "formula": value.to_string(),
+            "latex": shortest(value, Style::Latex),
+            "note": FACTOR_NOTE,
+        })),
     })
 }
