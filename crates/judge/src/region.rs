@@ -23,7 +23,7 @@ use trig_certify::{Bound, ParamBox};
 use trig_symbolic::Sym;
 
 use crate::certificate::{MAXIMAL, Published, maximal_against, nonnegative_on_box_named};
-use trig_verdict::evidence::EvidenceList;
+use trig_verdict::evidence::{Evidence, EvidenceList, Expr};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
@@ -300,14 +300,14 @@ pub fn classify_window(fs: &[Sym], names: &[&str], trig: bool, axes: &[Axis<'_>;
 }
 
 /// The region in a few lines: cell counts, witnesses, boundary polynomials.
-pub fn describe_region(reg: &Region, names: &[&str], axes: &[Axis<'_>; 2]) -> Vec<String> {
+pub fn describe_region(reg: &Region, names: &[&str], axes: &[Axis<'_>; 2]) -> Vec<Evidence> {
     let inside = reg.count(|k| *k == CellKind::Inside);
     let outside = reg.count(|k| matches!(k, CellKind::Outside { .. }));
     let edge = reg.count(|k| *k == CellKind::Boundary);
-    let mut out = vec![format!(
+    let mut out: Vec<Evidence> = vec![Evidence::note(format!(
         "window [{}, {}] × [{}, {}]: {inside} cells certified inside, {outside} certified outside, {edge} undecided along the edge",
         reg.window_lo[0], reg.window_hi[0], reg.window_lo[1], reg.window_hi[1]
-    )];
+    ))];
     if let Some(c) = reg
         .cells
         .iter()
@@ -331,40 +331,31 @@ pub fn describe_region(reg: &Region, names: &[&str], axes: &[Axis<'_>; 2]) -> Ve
                 c.hi[1],
                 point[0],
                 point[1]
-            ));
+            ).into());
         }
     }
     match &reg.boundary_note {
-        Some(why) => out.push(format!("boundary polynomials not computed: {why}")),
+        Some(why) => out.push(format!("boundary polynomials not computed: {why}").into()),
         None => out.push(edge_line(&reg.boundary)),
     }
     out
 }
 
 /// The exact polynomial conditions on whose zero sets the region's edge
-/// lies (each boundary polynomial once, up to a constant factor).
-fn edge_line(boundary: &[trig_certify::boundary::Candidate]) -> String {
+/// lies (each boundary polynomial once, up to a constant factor), each as
+/// an exact expression labelled by where it comes from (the reports show a
+/// long one by its size, the JSON in full).
+fn edge_line(boundary: &[trig_certify::boundary::Candidate]) -> Evidence {
     let mut seen: Vec<trig_symbolic::Poly> = Vec::new();
-    let mut parts = Vec::new();
+    let mut item =
+        Evidence::note("the region's edge lies on the zero sets of these boundary polynomials");
     for c in boundary {
         let (_, p) = c.poly.canonical();
         if seen.contains(&p) {
             continue;
         }
-        parts.push(format!("{} = 0 ({})", short(&p.to_string()), c.origin));
+        item = item.with(c.origin.to_string(), Expr::new(&Sym::from_poly(p.clone())));
         seen.push(p);
     }
-    format!("the region's edge lies on: {}", parts.join("; "))
-}
-
-/// A polynomial as text, or its size when it is too long to read.
-fn short(text: &str) -> String {
-    if text.chars().count() <= 160 {
-        text.to_string()
-    } else {
-        format!(
-            "[a polynomial of {} terms; full form in JSON]",
-            text.matches(['+', '-']).count() + 1
-        )
-    }
+    item
 }

@@ -202,8 +202,19 @@ pub fn run(args: &AuditArgs) -> CmdResult {
         Some(path) if path.as_os_str() == "-" => Ok(text),
         Some(path) => {
             write_atomically(path, text.as_bytes())?;
-            let shown = view.select(&entries).len();
-            wrote(path, &trig_verdict::plural(shown, "claim", "claims"));
+            // the file's claims and the battery's checks counted apart
+            let (checks, claims): (Vec<&Entry>, Vec<&Entry>) = view
+                .select(&entries)
+                .into_iter()
+                .partition(|e| e.document.battery);
+            let mut what = trig_verdict::plural(claims.len(), "claim", "claims");
+            if !checks.is_empty() {
+                what.push_str(&format!(
+                    " and {} of the standard battery",
+                    trig_verdict::plural(checks.len(), "check", "checks")
+                ));
+            }
+            wrote(path, &what);
             Ok(String::new())
         }
     }
