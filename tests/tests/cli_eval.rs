@@ -404,3 +404,33 @@ fn eval_prints_an_identically_zero_function_as_exact_zero() {
     assert!((printed - exact.to_f64()).abs() < 1e-15, "{r1} vs {exact}");
     assert!(out.contains("all proved"), "{out}");
 }
+
+/// A function that is 0 at an exact point (a multiple of π/12, where sine
+/// and cosine are exact) prints as an exact 0, decided in the exact ring,
+/// never as an enclosure of zero that no precision decides (found by a new
+/// user): Han, Ma & Huang's b₀ = (1 − sin t)²(1 − λ sin t) at t = π/2.
+#[test]
+fn eval_prints_a_zero_at_an_exact_point_as_exact_zero() {
+    let hmh = trig_e2e::example("han-ma-huang-cubic.toml");
+    let args = |at: &'static str| {
+        [
+            "eval", "--spec", &hmh, "--param", "lambda=1", "--param", "mu=1/2", "--at", at,
+            "--digits", "30",
+        ]
+        .map(String::from)
+    };
+    let out = stdout_ok(&args("pi/2").each_ref().map(String::as_str));
+    assert!(
+        out.contains("b0 = 0 (exactly 0") && out.contains("b1 = 0 (exactly 0"),
+        "{out}"
+    );
+    assert!(!out.contains("not decided"), "{out}");
+    // b3(π/2) = (1 − 0)²(1 − 0) = 1 is evaluated, not marked
+    assert!(
+        out.contains("b3 = 1.00000000000000000000000000000\n"),
+        "{out}"
+    );
+    // at π/3 nothing vanishes: every value is evaluated
+    let out = stdout_ok(&args("pi/3").each_ref().map(String::as_str));
+    assert!(!out.contains("exactly 0"), "{out}");
+}

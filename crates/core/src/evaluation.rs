@@ -173,8 +173,9 @@ pub struct BasisAt<'a, B: ?Sized> {
     params: Vec<Affine>,
     /// The point as typed (for messages).
     x_text: String,
-    /// Functions known to vanish identically at the parameter values
-    /// (decided exactly by the caller): computed as an exact 0.
+    /// Functions known to be exactly 0 — identically at the parameter
+    /// values, or at the point (decided exactly by the caller): computed as
+    /// an exact 0.
     zero: Vec<bool>,
 }
 
@@ -203,9 +204,10 @@ impl<'a, B: Basis + ?Sized> BasisAt<'a, B> {
         })
     }
 
-    /// The same with the functions marked in `zero` (by index) known to
-    /// vanish identically at the parameter values — decided in the exact
-    /// ring, which this crate does not hold — computed as an exact 0: the
+    /// The same with the functions marked in `zero` (by index) known to be
+    /// exactly 0 — identically at the parameter values, or at the point;
+    /// decided in the exact ring, which this crate does not hold — computed
+    /// as an exact 0: the
     /// value is `0`, exact, in every arithmetic, and no precision is spent
     /// on it.
     pub fn with_zeros(mut self, zero: Vec<bool>) -> Self {
@@ -213,7 +215,7 @@ impl<'a, B: Basis + ?Sized> BasisAt<'a, B> {
         self
     }
 
-    /// True for the `i`-th function when it is known to vanish identically
+    /// True for the `i`-th function when it is known to be exactly 0
     /// ([`BasisAt::with_zeros`]).
     pub fn is_zero(&self, i: usize) -> bool {
         self.zero.get(i).copied().unwrap_or(false)

@@ -206,6 +206,8 @@ pub fn streams(args: &EvalArgs) -> bool {
 /// description.
 struct Setup<'a> {
     problem: Problem<'a>,
+    /// Which functions are exactly zero (decided in the exact ring).
+    zeros: Vec<Zero>,
     id: String,
     citation: String,
     names: Vec<String>,
@@ -257,6 +259,7 @@ fn setup<'a>(
             .map_err(range_hint)?;
         let piece = UniformAt::new(*family, rational_point(at, at_text)?, at_text, params)?;
         return Ok(Setup {
+            zeros: Vec::new(),
             problem: Problem::Piecewise(piece),
             id,
             citation,
@@ -264,7 +267,7 @@ fn setup<'a>(
             note: Some("uniform B-spline basis function on knots 0,1,2,3,4".into()),
         });
     }
-    let at = BasisAt::new(
+    let basis_at = BasisAt::new(
         subject,
         at.clone(),
         at_text,
@@ -272,10 +275,11 @@ fn setup<'a>(
         args.allow_outside_range,
     )
     .map_err(range_hint)?;
-    let zeros = exact_zeros(subject, at.params());
-    let at = at.with_zeros(zeros);
+    let zeros = exact_zeros(subject, basis_at.params(), at);
+    let basis_at = basis_at.with_zeros(zeros.iter().map(|z| *z != Zero::No).collect());
     Ok(Setup {
-        problem: Problem::Basis(at),
+        zeros,
+        problem: Problem::Basis(basis_at),
         id,
         citation,
         names: subject.function_names(),
@@ -283,19 +287,39 @@ fn setup<'a>(
     })
 }
 
-/// Which functions of `basis` vanish identically at the parameter values
-/// `params`, decided first in the exact ring (the basis specialised at the
-/// values): those print as an exact `0` instead of an enclosure of zero
-/// that no precision decides.
-fn exact_zeros(basis: &AnyBasis, params: &[Affine]) -> Vec<bool> {
-    if params.is_empty() {
-        return Vec::new();
-    }
+/// Whether a function is exactly zero, decided in the exact ring.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Zero {
+    No,
+    /// Identically, at the parameter values.
+    Identically,
+    /// At the point (its atoms exact: a rational, a multiple of π/12):
+    /// computed as an exact 0, printed as any exact value.
+    AtPoint,
+}
+
+/// Which functions of `basis` are exactly zero, decided first in the exact
+/// ring (the basis specialised at the parameter values `params`, then at
+/// the point `x` when its atoms are exact): those print as an exact `0`
+/// instead of an enclosure of zero that no precision decides.
+fn exact_zeros(basis: &AnyBasis, params: &[Affine], x: &Affine) -> Vec<Zero> {
     let values: Vec<Sym> = params.iter().map(|a| a.eval(&Sym::zero(), &[])).collect();
+    let atoms = basis.domain().atoms_at(x, &Sym::one(), &values);
     basis
         .exact_functions_at(&values)
         .iter()
-        .map(|f| f.as_ref().is_some_and(Sym::is_zero))
+        .map(|f| match (f, &atoms) {
+            (Some(f), _) if f.is_zero() => Zero::Identically,
+            (Some(f), Some(a)) => {
+                let v = f
+                    .subs("s", &a.s)
+                    .subs("c", &a.c)
+                    .subs("t", &a.t)
+                    .subs("E", &a.e);
+                if v.is_zero() { Zero::AtPoint } else { Zero::No }
+            }
+            _ => Zero::No,
+        })
         .collect()
 }
 
@@ -327,24 +351,22 @@ fn evaluate(
         }
         e => e.into(),
     })?;
-    let identically_zero = |i: usize| matches!(&s.problem, Problem::Basis(b) if b.is_zero(i));
     let values: Vec<Shown> = e
         .values
         .iter()
         .enumerate()
         .map(|(i, v)| {
-            if identically_zero(i) {
-                Shown {
-                    text: "0".into(),
-                    bound: None,
-                    note: Some(
-                        "exact: identically 0 at these parameter values, decided in the exact ring"
-                            .into(),
-                    ),
-                    digits: None,
+            let note = match s.zeros.get(i) {
+                Some(Zero::Identically) => {
+                    "exact: identically 0 at these parameter values, decided in the exact ring"
                 }
-            } else {
-                shown(v, arithmetic)
+                _ => return shown(v, arithmetic),
+            };
+            Shown {
+                text: "0".into(),
+                bound: None,
+                note: Some(note.into()),
+                digits: None,
             }
         })
         .collect();
@@ -431,6 +453,7 @@ fn nonuniform<'a>(
     NonUniform::new(knots.iter().map(sym).collect(), sym(&zeta)).span(span as i64)?;
     let note = format!("span j = {span}, local angle t_j = ({local})·π/2");
     Ok(Setup {
+        zeros: Vec::new(),
         problem: Problem::NonUniform(SpanAt {
             knots,
             span,
