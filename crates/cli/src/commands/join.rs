@@ -4,7 +4,8 @@
 use clap::{Args, ValueEnum};
 use serde_json::json;
 use trig_core::Described;
-use trig_deriv::{JoinKind, JoinSetup, Wrt, solve_join, vanishing};
+use trig_deriv::{End, JoinKind, JoinSetup, Wrt, solve_join, vanishing};
+use trig_judge::domain::end_text;
 use trig_symbolic::{Style, Sym};
 
 use super::table::WrtArg;
@@ -170,15 +171,38 @@ fn params_text(p: &[Sym]) -> String {
 
 /// The conditions of `kind` between the curves `P`, `Q` with the `G`
 /// factors `α`, `β` (as named in this output).
-fn conditions(kind: JoinKind, [p, q]: &[String; 2], [a, b]: &[String; 2]) -> String {
+/// The conditions of `kind` at the ends `(a, b)` of the domain, the first
+/// segment `p` ending where the second `q` starts.
+fn conditions(
+    kind: JoinKind,
+    [p, q]: &[String; 2],
+    [a, b]: &[String; 2],
+    (start, end): (&str, &str),
+) -> String {
+    let (p1, q0) = (format!("{p}({end})"), format!("{q}({start})"));
+    let d = |curve: &str, primes: &str, at: &str| format!("{curve}{primes}({at})");
     match kind {
-        JoinKind::C(0) => format!("{q}(0) = {p}(1)"),
-        JoinKind::C(1) => format!("{q}⁽ʲ⁾(0) = {p}⁽ʲ⁾(1), j = 0, 1"),
-        JoinKind::C(2) => format!("{q}⁽ʲ⁾(0) = {p}⁽ʲ⁾(1), j = 0, 1, 2"),
-        JoinKind::C(_) => format!("{q}⁽ʲ⁾(0) = {p}⁽ʲ⁾(1), j = 0…3"),
-        JoinKind::G1 => format!("{q}(0) = {p}(1), {q}'(0) = {a} {p}'(1)"),
+        JoinKind::C(0) => format!("{q0} = {p1}"),
+        JoinKind::C(k) => {
+            let orders = match k {
+                1 => "0, 1".to_string(),
+                2 => "0, 1, 2".to_string(),
+                _ => "0…3".to_string(),
+            };
+            format!("{} = {}, j = {orders}", d(q, "⁽ʲ⁾", start), d(p, "⁽ʲ⁾", end))
+        }
+        JoinKind::G1 => format!(
+            "{q0} = {p1}, {} = {a} {}",
+            d(q, "'", start),
+            d(p, "'", end)
+        ),
         JoinKind::G2 => format!(
-            "{q}(0) = {p}(1), {q}'(0) = {a} {p}'(1), {q}''(0) = {a}² {p}''(1) + {b} {p}'(1)"
+            "{q0} = {p1}, {} = {a} {}, {} = {a}² {} + {b} {}",
+            d(q, "'", start),
+            d(p, "'", end),
+            d(q, "''", start),
+            d(p, "''", end),
+            d(p, "'", end)
         ),
     }
 }
@@ -193,7 +217,11 @@ fn header(s: &Solved) -> Vec<String> {
             conditions(
                 s.kind,
                 &s.curves,
-                &s.factors.clone().map(|f| f.to_unicode())
+                &s.factors.clone().map(|f| f.to_unicode()),
+                (
+                    &end_text(&s.family, End::Start),
+                    &end_text(&s.family, End::End)
+                ),
             )
         ),
         format!("derivatives: {}", s.wrt.describe_on(&s.family.domain())),
