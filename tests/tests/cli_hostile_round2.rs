@@ -456,9 +456,9 @@ fn item8_a_time_limit_cuts_claims_off_but_never_changes_a_verdict() {
 /// under a header saying all digits were proved; the values are tiny, not
 /// zero (2.4674e-20, 1.5220e-40; 256-bit MPFR and the unit test in
 /// trig_core::certified agree), so the precision is raised until their
-/// digits are proved. Where that cannot
-/// be done (values that are exactly zero at π/2 but computed with π), the
-/// header says how many values are proved and each other value says why.
+/// digits are proved. Values that are exactly zero at an exact point (π/2)
+/// are decided in the exact ring first: an exact 0, and the header says
+/// every value is proved.
 #[test]
 fn item7_the_header_never_claims_digits_that_were_not_delivered() {
     let out = stdout_ok(&[
@@ -484,10 +484,9 @@ fn item7_the_header_never_claims_digits_that_were_not_delivered() {
         "5",
     ]);
     let header = end.lines().next().unwrap_or_default();
-    assert!(!header.contains("all proved"), "{end}");
-    assert!(header.contains("proved for 1 of 4 values"), "{end}");
+    assert!(header.contains("all proved"), "{end}");
     assert!(
-        end.contains("b0 = 0 ± ") && end.contains("no significant digit proved"),
+        end.contains("b0 = 0 (exactly 0") && !end.contains("no significant digit proved"),
         "{end}"
     );
     // an exact zero is a value, and says it has no significant digits

@@ -189,13 +189,13 @@ fn conditions(
                 2 => "0, 1, 2".to_string(),
                 _ => "0…3".to_string(),
             };
-            format!("{} = {}, j = {orders}", d(q, "⁽ʲ⁾", start), d(p, "⁽ʲ⁾", end))
+            format!(
+                "{} = {}, j = {orders}",
+                d(q, "⁽ʲ⁾", start),
+                d(p, "⁽ʲ⁾", end)
+            )
         }
-        JoinKind::G1 => format!(
-            "{q0} = {p1}, {} = {a} {}",
-            d(q, "'", start),
-            d(p, "'", end)
-        ),
+        JoinKind::G1 => format!("{q0} = {p1}, {} = {a} {}", d(q, "'", start), d(p, "'", end)),
         JoinKind::G2 => format!(
             "{q0} = {p1}, {} = {a} {}, {} = {a}² {} + {b} {}",
             d(q, "'", start),
