@@ -72,7 +72,7 @@ pub fn check(text: &str) -> Result<(), MarkupError> {
 
 /// The runs of marked text: `(is_formula, text)`. A formula left open runs
 /// to the end; a stray close is dropped.
-pub(crate) fn runs(text: &str) -> Vec<(bool, String)> {
+fn runs(text: &str) -> Vec<(bool, String)> {
     let mut out: Vec<(bool, String)> = vec![(false, String::new())];
     for ch in text.chars() {
         let inside = out.last().is_some_and(|r| r.0);
@@ -96,13 +96,19 @@ pub(crate) fn runs(text: &str) -> Vec<(bool, String)> {
 /// (its Unicode math symbols as inline math, `code spans` in typewriter).
 /// Any input gives valid LaTeX.
 pub fn marked(line: &str) -> String {
+    marked_with(line, prose_run)
+}
+
+/// Marked text with its formulas set in math and the text between them set
+/// by `between`.
+pub(crate) fn marked_with(line: &str, between: impl Fn(&str) -> String) -> String {
     runs(line)
         .into_iter()
         .map(|(formula, run)| {
             if formula {
                 inline_breakable(&math(&run))
             } else {
-                prose_run(&run)
+                between(&run)
             }
         })
         .collect()

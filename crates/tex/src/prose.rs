@@ -3,7 +3,7 @@
 //! lines, labels) has its formula-like runs (`H_{2−i}(π/2 − u; β)`) found by
 //! their look and set in math mode, the rest escaped ([`crate::text`]).
 
-use crate::marked::{CLOSE, OPEN, marked, runs};
+use crate::marked::{CLOSE, OPEN, marked, marked_with};
 use crate::math::{inline_breakable, math};
 use crate::symbols::is_mathy;
 use crate::text::{code, text};
@@ -208,16 +208,7 @@ pub fn prose(line: &str) -> String {
 /// as [`marked`] sets them, the prose between them as [`prose`] sets
 /// generated text.
 pub fn labelled(line: &str) -> String {
-    runs(line)
-        .into_iter()
-        .map(|(formula, run)| {
-            if formula {
-                inline_breakable(&math(&run))
-            } else {
-                prose(&run)
-            }
-        })
-        .collect()
+    marked_with(line, prose)
 }
 
 #[cfg(test)]
