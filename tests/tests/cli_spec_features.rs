@@ -227,6 +227,32 @@ fn a_triangular_region_of_two_parameters_is_described_exactly() {
     }
     // the containment part holds
     assert!(e.contains("containment"), "{e}");
+    // the triangle itself, as a paper prints it: nonnegative exactly there
+    let claim = |region: &str| {
+        format!(
+            "{text}[[claims]]\nid = \"T-region\"\nsource = \"x\"\nstatement = \"on the triangle\"\ncheck = \"nonnegative\"\nregion = \"{region}\"\n"
+        )
+    };
+    let inside = spec_file(
+        "triangle-region.toml",
+        &claim("lambda >= 0, mu >= 0, lambda + mu <= 2"),
+    );
+    assert_eq!(verdict(&inside, "T-region"), "holds");
+    let beyond = spec_file(
+        "triangle-beyond.toml",
+        &claim("lambda >= 0, mu >= 0, lambda + mu <= 3"),
+    );
+    assert_eq!(verdict(&beyond, "T-region"), "fails");
+    // a region whose edge bends is refused with the reason, where it is
+    let bent = spec_file(
+        "triangle-bent.toml",
+        &claim("lambda >= 0, lambda <= 1, mu >= 0, mu >= lambda - 1/2, mu <= 1"),
+    );
+    let refused = usage_error(&["audit", "--spec", &bent]);
+    assert!(
+        refused.contains("claims.region") && refused.contains("2 lines at once"),
+        "{refused}"
+    );
 }
 
 fn glyph(name: &str) -> String {

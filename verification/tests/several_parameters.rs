@@ -217,4 +217,20 @@ fn a_triangle_of_parameters() {
         "check = \"unity\"\nranges = { b = \"[0, a - 1/2]\" }",
     );
     assert_eq!(v.status, Status::NotCheckable, "{}", evidence_lines(&v));
+    // the same triangles as the paper prints them, by inequalities
+    let v = decide_text(
+        &text,
+        "check = \"total-positivity\"\nregion = \"a >= 0, b >= 0, a + b <= 1\"",
+    );
+    assert_eq!(v.status, Status::Holds, "{}", evidence_lines(&v));
+    assert!(
+        evidence_lines(&v).contains("b ∈ [0, -a + 1]"),
+        "{}",
+        evidence_lines(&v)
+    );
+    let v = decide_text(
+        &text,
+        "check = \"total-positivity\"\nregion = \"a >= 0, a <= 1, b >= 0, a + 2*b <= 2\"",
+    );
+    assert_eq!(v.status, Status::Fails, "{}", evidence_lines(&v));
 }

@@ -151,19 +151,38 @@ pub(crate) fn given(src: &Source<'_>, spec: &Spec, c: &RawClaim, kind: &str) -> 
             None => {}
         }
     }
+    // `ranges` as written, then those a `region` of inequalities states
+    let mut ranges: Vec<(String, String, std::ops::Range<usize>, &str)> = Vec::new();
     for (name, r) in c.ranges.iter().flatten() {
         let name = param(name, r.span(), "ranges")?;
-        let range = match ParamRange::parse(r.get_ref()) {
+        ranges.push((name, r.get_ref().clone(), r.span(), "ranges"));
+    }
+    if let Some(r) = &c.region {
+        let stated = crate::region_read::region_ranges(spec, r.get_ref())
+            .or_else(|m| src.invalid(r.span(), "claims.region", m))?;
+        for (name, text) in stated {
+            if ranges.iter().any(|(n, ..)| *n == name) {
+                return src.invalid(
+                    r.span(),
+                    "claims.region",
+                    format!("`{name}` is given a range and a region"),
+                );
+            }
+            ranges.push((name, text, r.span(), "region"));
+        }
+    }
+    for (name, text, span, field) in ranges {
+        let range = match ParamRange::parse(&text) {
             Ok(range) => range,
-            Err(m) => match between(spec, &name, r.get_ref()) {
+            Err(m) => match between(spec, &name, &text) {
                 Some(b) => {
                     out.between.push(b);
                     continue;
                 }
                 None => {
                     return src.invalid(
-                        r.span(),
-                        "claims.ranges",
+                        span,
+                        &format!("claims.{field}"),
                         format!(
                             "{m}; or ends linear in the other parameters, e.g. [0, 4 - lambda]"
                         ),
@@ -172,11 +191,11 @@ pub(crate) fn given(src: &Source<'_>, spec: &Spec, c: &RawClaim, kind: &str) -> 
             },
         };
         match point_of(&range) {
-            Some(point) => fix(&mut out, name, &point, r.span(), "ranges")?,
+            Some(point) => fix(&mut out, name, &point, span, field)?,
             None if out.fixed.iter().any(|f| f.name == name) => {
                 return src.invalid(
-                    r.span(),
-                    "claims.ranges",
+                    span,
+                    &format!("claims.{field}"),
                     format!("`{name}` is fixed and given a range"),
                 );
             }

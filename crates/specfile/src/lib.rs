@@ -45,6 +45,7 @@ mod load;
 mod names;
 pub mod nonvanishing;
 mod raw;
+mod region_read;
 mod source;
 pub mod spec;
 

@@ -55,6 +55,8 @@ pub struct RawClaim {
     pub check: Spanned<String>,
     pub range: Option<Spanned<String>>,
     pub ranges: Option<BTreeMap<String, Spanned<String>>>,
+    /// A region by linear inequalities (`"lambda >= 0, mu >= 0, lambda + mu <= 4"`).
+    pub region: Option<Spanned<String>>,
     pub maximal: Option<bool>,
     pub functions: Option<Vec<Spanned<String>>>,
     pub map: Option<Spanned<String>>,

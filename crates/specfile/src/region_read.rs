@@ -1,0 +1,257 @@
+//! A claim's region of parameters as a paper prints it, by linear
+//! inequalities: `region = "lambda >= 0, mu >= 0, lambda + mu <= 4"`.
+//!
+//! Fourier–Motzkin elimination in the parameters' declared order turns it
+//! into what `ranges` states: the first parameter between two numbers, each
+//! later one between two ends linear in the earlier ones
+//! (`λ ∈ [0, 4]`, `μ ∈ [0, 4 − λ]`), which the claim is then decided on
+//! exactly as if those `ranges` were written ([`crate::given`]). The
+//! projection is exact: the region is `{p₁ ∈ [a, b], p₂ ∈ [l₂(p₁), u₂(p₁)],
+//! …}` exactly when, at each step, one bound remains on each side (a bound
+//! that is the larger of two lines, `μ ≥ max(0, λ − 1)`, is refused: state
+//! such a region as claims on its pieces).
+
+use rug::Rational;
+use trig_symbolic::Sym;
+
+use crate::spec::Spec;
+
+/// `Σ coef·pᵢ + constant`, over the parameters in declared order.
+#[derive(Debug, Clone, PartialEq)]
+struct Linear {
+    coef: Vec<Rational>,
+    constant: Rational,
+}
+
+impl Linear {
+    fn is_constant(&self) -> bool {
+        self.coef.iter().all(|c| *c == 0)
+    }
+
+    /// `self · k`.
+    fn scaled(&self, k: &Rational) -> Linear {
+        Linear {
+            coef: self.coef.iter().map(|c| Rational::from(c * k)).collect(),
+            constant: Rational::from(&self.constant * k),
+        }
+    }
+
+    /// `self − other`.
+    fn minus(&self, other: &Linear) -> Linear {
+        Linear {
+            coef: self
+                .coef
+                .iter()
+                .zip(&other.coef)
+                .map(|(a, b)| Rational::from(a - b))
+                .collect(),
+            constant: Rational::from(&self.constant - &other.constant),
+        }
+    }
+
+    /// The form as formula text (`4 - lambda`), in the parameters' names.
+    fn text(&self, names: &[&str]) -> String {
+        let sum = self
+            .coef
+            .iter()
+            .zip(names)
+            .filter(|(c, _)| **c != 0)
+            .fold(Sym::rational(self.constant.clone()), |acc, (c, n)| {
+                acc + &(Sym::rational(c.clone()) * &Sym::var(n))
+            });
+        sum.to_string()
+    }
+}
+
+/// The ranges a region states, as `ranges` would write them: `(name,
+/// "[lo, hi]")` for each parameter it bounds, in declared order (the first
+/// with numbers, the later ones with ends in the earlier ones); or why the
+/// region cannot be read so.
+pub(crate) fn region_ranges(spec: &Spec, text: &str) -> Result<Vec<(String, String)>, String> {
+    let names: Vec<&str> = spec.params.iter().map(|p| p.name.as_str()).collect();
+    // each constraint as `form ≥ 0`
+    let mut forms: Vec<Linear> = Vec::new();
+    for part in text.split(',').map(str::trim).filter(|p| !p.is_empty()) {
+        forms.push(constraint(spec, &names, part)?);
+    }
+    if forms.is_empty() {
+        return Err(
+            "an empty region: give inequalities, e.g. \"lambda >= 0, mu >= 0, lambda + mu <= 4\""
+                .into(),
+        );
+    }
+    let used: Vec<usize> = (0..names.len())
+        .filter(|&k| forms.iter().any(|f| f.coef[k] != 0))
+        .collect();
+    let mut bounds: Vec<(usize, Linear, Linear)> = Vec::new();
+    for &k in used.iter().rev() {
+        let (mut lower, mut upper, mut rest) = (Vec::new(), Vec::new(), Vec::new());
+        for f in forms {
+            let a = f.coef[k].clone();
+            if a == 0 {
+                rest.push(f);
+                continue;
+            }
+            // a·p + r ≥ 0: p ≥ −r/a (a > 0) or p ≤ r/(−a) (a < 0)
+            let mut r = f.clone();
+            r.coef[k] = Rational::new();
+            let bound = r.scaled(&Rational::from(-1 / &a));
+            if a > 0 {
+                lower.push(bound);
+            } else {
+                upper.push(bound);
+            }
+        }
+        let name = names[k];
+        let lo = one_bound(lower, name, "below", true)?;
+        let hi = one_bound(upper, name, "above", false)?;
+        // the projection: lo ≤ hi, a constraint on the earlier parameters
+        rest.push(hi.minus(&lo));
+        bounds.push((k, lo, hi));
+        forms = rest;
+    }
+    // what is left is free of every parameter: each a number ≥ 0
+    if let Some(f) = forms.iter().find(|f| f.constant < 0) {
+        return Err(format!(
+            "the region is empty ({} < 0 after eliminating its parameters)",
+            f.constant
+        ));
+    }
+    bounds.reverse();
+    Ok(bounds
+        .into_iter()
+        .map(|(k, lo, hi)| {
+            (
+                names[k].to_string(),
+                format!("[{}, {}]", lo.text(&names), hi.text(&names)),
+            )
+        })
+        .collect())
+}
+
+/// The one bound of a parameter on one side: the largest of several
+/// numbers below (`lower`), the smallest above; a bound that is the larger
+/// (smaller) of two different lines is refused, as is none.
+fn one_bound(
+    mut bounds: Vec<Linear>,
+    name: &str,
+    side: &str,
+    lower: bool,
+) -> Result<Linear, String> {
+    bounds.dedup();
+    if bounds.iter().all(Linear::is_constant) {
+        let best = bounds.into_iter().reduce(|a, b| {
+            let keep_a = if lower {
+                a.constant >= b.constant
+            } else {
+                a.constant <= b.constant
+            };
+            if keep_a { a } else { b }
+        });
+        return best.ok_or_else(|| {
+            format!("the region does not bound `{name}` from {side}: add an inequality for it")
+        });
+    }
+    let mut distinct: Vec<Linear> = Vec::new();
+    for b in bounds {
+        if !distinct.contains(&b) {
+            distinct.push(b);
+        }
+    }
+    match distinct.as_slice() {
+        [one] => Ok(one.clone()),
+        _ => Err(format!(
+            "`{name}` is bounded from {side} by {} lines at once (the region's edge bends there): state the region as claims on its pieces, each with one bound per side",
+            distinct.len()
+        )),
+    }
+}
+
+/// One inequality `A >= B`, `A <= B` (or `≥`, `≤`) as `form ≥ 0`, linear
+/// in the parameters with rational coefficients.
+fn constraint(spec: &Spec, names: &[&str], part: &str) -> Result<Linear, String> {
+    let ops = [(">=", true), ("≥", true), ("<=", false), ("≤", false)];
+    let Some((at, op, greater)) = ops
+        .iter()
+        .find_map(|(op, g)| part.find(op).map(|at| (at, *op, *g)))
+    else {
+        return Err(format!(
+            "`{part}`: an inequality is `A >= B` or `A <= B` (a line is `at = {{ NAME = \"…\" }}`)"
+        ));
+    };
+    let side = |s: &str| {
+        spec.parse_formula(s, &[])
+            .map_err(|e| format!("`{}`: {}", s.trim(), e.message))
+    };
+    let (a, b) = (side(&part[..at])?, side(&part[at + op.len()..])?);
+    let d = if greater { a - &b } else { b - &a };
+    let not_linear = || {
+        format!(
+            "`{part}`: a region's inequalities are linear in the parameters with rational coefficients"
+        )
+    };
+    let mut form = Linear {
+        coef: vec![Rational::new(); names.len()],
+        constant: Rational::new(),
+    };
+    let mut rest = d.clone();
+    for v in d.variables() {
+        let k = names.iter().position(|n| *n == v).ok_or_else(not_linear)?;
+        let c = d.diff(&v).as_rational().ok_or_else(not_linear)?;
+        rest = rest - &(Sym::rational(c.clone()) * &Sym::var(&v));
+        form.coef[k] = c;
+    }
+    form.constant = rest.as_rational().ok_or_else(not_linear)?;
+    Ok(form)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn spec() -> Spec {
+        Spec::from_str_named(
+            "id = \"r\"\ncitation = \"test\"\nvariable = \"polynomial\"\n[[parameters]]\nname = \"lambda\"\nrange = \"[0, 9]\"\n[[parameters]]\nname = \"mu\"\nrange = \"[0, 9]\"\n[[functions]]\nname = \"b0\"\nformula = \"1 - t\"\n[[functions]]\nname = \"b1\"\nformula = \"t\"\n",
+            "r",
+        )
+        .expect("spec")
+    }
+
+    #[test]
+    fn a_triangle_is_a_range_and_a_range_in_the_first_parameter() {
+        let r = region_ranges(&spec(), "lambda >= 0, mu >= 0, lambda + mu <= 4").unwrap();
+        assert_eq!(
+            r,
+            [
+                ("lambda".to_string(), "[0, 4]".to_string()),
+                ("mu".to_string(), "[0, -lambda + 4]".to_string())
+            ]
+        );
+        // redundant numbers: the tighter one on each side
+        let r = region_ranges(
+            &spec(),
+            "lambda >= 0, lambda >= 1/2, lambda <= 3, 2*lambda <= 5",
+        )
+        .unwrap();
+        assert_eq!(r, [("lambda".to_string(), "[1/2, 5/2]".to_string())]);
+    }
+
+    #[test]
+    fn regions_that_are_not_one_bound_per_side_are_refused() {
+        let bent = region_ranges(
+            &spec(),
+            "lambda >= 0, lambda <= 2, mu >= 0, mu >= lambda - 1, mu <= 3",
+        )
+        .unwrap_err();
+        assert!(bent.contains("2 lines at once"), "{bent}");
+        let open =
+            region_ranges(&spec(), "lambda >= 0, lambda <= 1, lambda + mu >= 4").unwrap_err();
+        assert!(open.contains("from above"), "{open}");
+        let empty = region_ranges(&spec(), "lambda >= 3, lambda <= 1").unwrap_err();
+        assert!(empty.contains("empty"), "{empty}");
+        let curved = region_ranges(&spec(), "lambda*mu <= 1").unwrap_err();
+        assert!(curved.contains("linear"), "{curved}");
+        let line = region_ranges(&spec(), "mu = 3 - lambda").unwrap_err();
+        assert!(line.contains("at = {"), "{line}");
+    }
+}
