@@ -377,8 +377,29 @@ fn variable_hull(f: &Sym, domain: &Domain, axes: &[Axis]) -> Option<Domain> {
     })
 }
 
+/// A point where `f < 0`, certified, found by the search's first probe
+/// alone (a grid of a few points per axis, no subdivision): a cheap
+/// refutation to try before any certificate. `None` says nothing.
+pub fn probe_negative(f: &Sym, domain: &Domain, axes: &[Axis]) -> Option<Outcome> {
+    let (mut engine, e, bx) = prepared(f, domain, axes);
+    engine.probe(&e, &bx)
+}
+
 fn search(f: &Sym, domain: &Domain, axes: &[Axis], goal: Goal) -> Outcome {
-    let mut engine = Engine {
+    let (mut engine, e, bx) = prepared(f, domain, axes);
+    if let Some(negative) = engine.probe(&e, &bx) {
+        return negative;
+    }
+    engine.decide(&e, &bx, goal, 0, 0)
+}
+
+/// The engine, the function and the box `[0, τ_end] × axes` of a search.
+fn prepared<'a>(
+    f: &Sym,
+    domain: &'a Domain,
+    axes: &'a [Axis],
+) -> (Engine<'a>, Rc<Fun>, Vec<(Rational, Rational)>) {
+    let engine = Engine {
         coords: Coordinates::new(domain, axes),
         evaluations: 0,
         limit: BUDGET,
@@ -398,10 +419,7 @@ fn search(f: &Sym, domain: &Domain, axes: &[Axis], goal: Goal) -> Outcome {
     let mut bx = vec![(Rational::new(), tau_end)];
     bx.extend(axes.iter().map(|a| (a.lo.clone(), a.hi.clone())));
     let e = Fun::new(engine.coords.function(f), bx.len());
-    if let Some(negative) = engine.probe(&e, &bx) {
-        return negative;
-    }
-    engine.decide(&e, &bx, goal, 0, 0)
+    (engine, e, bx)
 }
 
 #[cfg(test)]

@@ -101,7 +101,24 @@ pub fn nonnegative<B: ExactBasis>(
     f: &Sym,
     axes: &[Axis],
 ) -> (Status, String) {
-    match trig_certify::factors::nonnegative(f, &basis.domain(), axes) {
+    outcome_line(
+        basis,
+        (name, "its numerator"),
+        axes,
+        trig_certify::factors::nonnegative(f, &basis.domain(), axes),
+    )
+}
+
+/// The status and evidence line of the engine's outcome for `name ≥ 0`
+/// (`what` was enclosed at a counterexample: the function's numerator, or
+/// its value).
+fn outcome_line<B: ExactBasis>(
+    basis: &B,
+    (name, what): (&str, &str),
+    axes: &[Axis],
+    outcome: Outcome,
+) -> (Status, String) {
+    match outcome {
         Outcome::Proved { boxes } => (
             Status::Holds,
             format!("{name} ≥ 0: certified on the whole domain ({boxes} interval boxes)"),
@@ -111,7 +128,7 @@ pub fn nonnegative<B: ExactBasis>(
         } => (
             Status::Fails,
             format!(
-                "{name} ≥ 0: violated at {} (its numerator lies in [{:.6e}, {:.6e}] there, certified)",
+                "{name} ≥ 0: violated at {} ({what} lies in [{:.6e}, {:.6e}] there, certified)",
                 describe_point(basis, axes, &params, x),
                 value.0,
                 value.1
@@ -132,6 +149,9 @@ pub fn all_nonnegative<B: ExactBasis>(
     notes: &[String],
 ) -> Verdict {
     if let Some(v) = on_half_line(basis, fs, axes, notes) {
+        return v;
+    }
+    if let Some(v) = refuted_by_probe(basis, fs, axes, notes) {
         return v;
     }
     let mut status = Status::Holds;
@@ -183,6 +203,36 @@ pub fn all_nonnegative<B: ExactBasis>(
         status = Status::NotCheckable;
     }
     Verdict::new(status, INTERVAL, evidence)
+}
+
+/// The claim refuted before any certificate when the search's first probe
+/// (a few points per axis) finds a function `< 0` at a point, certified:
+/// one violation decides the claim, so the functions it did not catch are
+/// not certified (that is where the time goes); `None` when the probe
+/// finds none.
+fn refuted_by_probe<B: ExactBasis>(
+    basis: &B,
+    fs: &[(String, Sym)],
+    axes: &[Axis],
+    notes: &[String],
+) -> Option<Verdict> {
+    let domain = basis.domain();
+    let violations: Vec<String> = fs
+        .iter()
+        .filter_map(|(name, f)| {
+            let negative = trig_certify::branch::probe_negative(f, &domain, axes)?;
+            Some(outcome_line(basis, (name, "its value"), axes, negative).1)
+        })
+        .collect();
+    if violations.is_empty() {
+        return None;
+    }
+    let mut evidence: Vec<String> = notes.to_vec();
+    evidence.extend(violations);
+    evidence.push(
+        "the other functions are not certified: a certified violation decides the claim".into(),
+    );
+    Some(Verdict::new(Status::Fails, INTERVAL, evidence))
 }
 
 /// How an unbounded range of an exponential basis is decided.
