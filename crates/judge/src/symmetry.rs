@@ -172,7 +172,9 @@ pub fn battery_symmetry<B: ExactBasis>(basis: &B) -> (String, Verdict) {
     let x = &basis.variable_name();
     let xr = format!("{} − {x}", pretty(&a, basis));
     let plain = reflection_symmetry(basis, 0..n);
-    let text = format!("f_i({x}) = f_{{{}−i}}({xr})", n - 1);
+    // the functions' own letter (`b_i`), `f_i` when they have none
+    let f = crate::unity::indexed_letter(&basis.function_names()).unwrap_or_else(|| "f".into());
+    let text = format!("{f}_i({x}) = {f}_{{{}−i}}({xr})", n - 1);
     if plain.status == Status::Holds || basis.parameters().len() != 2 {
         return (text, plain);
     }
@@ -191,7 +193,7 @@ pub fn battery_symmetry<B: ExactBasis>(basis: &B) -> (String, Verdict) {
         format!("with the parameters kept the identity fails; with {p} and {q} exchanged it holds exactly"),
     );
     (
-        format!("f_i({x}; {p}, {q}) = f_{{{}−i}}({xr}; {q}, {p})", n - 1),
+        format!("{f}_i({x}; {p}, {q}) = {f}_{{{}−i}}({xr}; {q}, {p})", n - 1),
         v,
     )
 }

@@ -10,17 +10,23 @@ use trig_verdict::verdict::Verdict;
 /// `Σ b_i − 1` when the names share a prefix (`b0, b1, …`), else the sum
 /// written out.
 pub fn sum_label(names: &[String]) -> String {
-    let prefix = |n: &str| n.trim_end_matches(|c: char| c.is_ascii_digit()).to_string();
-    let first = prefix(&names[0]);
-    if names
+    match indexed_letter(names) {
+        Some(first) => format!("Σ {first}_i − 1"),
+        None => format!("{} − 1", names.join(" + ")),
+    }
+}
+
+/// The common name of functions named `b0, b1, …` (`b`), when they are.
+pub fn indexed_letter(names: &[String]) -> Option<String> {
+    let first = names
+        .first()?
+        .trim_end_matches(|c: char| c.is_ascii_digit())
+        .to_string();
+    names
         .iter()
         .enumerate()
         .all(|(i, n)| *n == format!("{first}{i}"))
-    {
-        format!("Σ {first}_i − 1")
-    } else {
-        format!("{} − 1", names.join(" + "))
-    }
+        .then_some(first)
 }
 
 /// The functions of `basis` sum to 1 identically.
