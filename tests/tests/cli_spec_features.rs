@@ -723,3 +723,85 @@ fn the_battery_is_counted_apart_and_chosen_by_flag() {
     let refused = usage_error(&["audit", "--battery", "none"]);
     assert!(refused.contains("--battery applies to --spec"), "{refused}");
 }
+
+/// A region beside fixed values, a `range` or a parameter map (found by a
+/// hostile campaign): the values are substituted into the inequalities
+/// first (Han, Ma & Huang at μ = 0 on `λ + μ ≤ 1` is λ ∈ [−2, 1], where the
+/// basis is nonnegative; before, the region's projection λ ≤ 3 was taken and
+/// the claim called false at λ = 3); `region` with `range`, and a region
+/// under an exchange symmetry, are refused with the reason.
+#[test]
+fn a_region_beside_fixed_values_ranges_and_parameter_maps() {
+    let base = std::fs::read_to_string(example("han-ma-huang-cubic.toml"))
+        .expect("read")
+        .split("[[claims]]")
+        .next()
+        .unwrap_or_default()
+        .to_string();
+    let with = |name: &str, claim: &str| {
+        spec_file(
+            name,
+            &format!("{base}[[claims]]\nid = \"R\"\nsource = \"x\"\nstatement = \"x\"\n{claim}\n"),
+        )
+    };
+    let nonneg = |region: &str, at: &str| {
+        format!("check = \"nonnegative\"\nregion = \"{region}\"\nat = {{ {at} }}")
+    };
+    let at_zero = with(
+        "region-at-zero.toml",
+        &nonneg("lambda >= -2, mu >= -2, lambda + mu <= 1", "mu = \"0\""),
+    );
+    let (v, e) = claim(&at_zero, "R");
+    assert_eq!(v, "holds", "{e}");
+    assert!(e.contains("λ ∈ [-2, 1]"), "{e}");
+    let on_line = with(
+        "region-on-line.toml",
+        &nonneg(
+            "lambda >= -2, mu >= -2, lambda + mu <= 2",
+            "mu = \"lambda\"",
+        ),
+    );
+    assert_eq!(verdict(&on_line, "R"), "holds");
+    // the line μ = λ on λ + μ ≤ 4 reaches λ = 2, beyond the nonnegative box
+    let beyond = with(
+        "region-on-line-beyond.toml",
+        &nonneg(
+            "lambda >= -2, mu >= -2, lambda + mu <= 4",
+            "mu = \"lambda\"",
+        ),
+    );
+    assert_eq!(verdict(&beyond, "R"), "fails");
+    let refused = |claim: &str, field: &str, text: &str| {
+        let path = with("region-refused.toml", claim);
+        let e = usage_error(&["audit", "--spec", &path]);
+        assert!(e.contains(field) && e.contains(text), "{e}");
+    };
+    let symmetry = "check = \"symmetry\"\nmap = \"pi/2 - t\"\nindex = \"3 - i\"\nparams = { lambda = \"mu\", mu = \"lambda\" }";
+    // an identity takes no region; an exchange symmetry no end in the
+    // exchanged parameter (the change of parameters would rewrite it)
+    refused(
+        &format!("{symmetry}\nregion = \"lambda >= -2, mu >= -2, lambda + mu <= -1\""),
+        "claims.region",
+        "takes no region",
+    );
+    refused(
+        &format!("{symmetry}\nranges = {{ mu = \"[-2, -lambda - 1]\" }}"),
+        "claims.ranges",
+        "exchanged parameters",
+    );
+    // a one-parameter basis: `region` and `range` together are refused
+    let han = std::fs::read_to_string(example("han-quadratic.toml"))
+        .expect("read")
+        .split("[[claims]]")
+        .next()
+        .unwrap_or_default()
+        .to_string();
+    let both = spec_file(
+        "region-and-range.toml",
+        &format!(
+            "{han}[[claims]]\nid = \"R\"\nsource = \"x\"\nstatement = \"x\"\ncheck = \"nonnegative\"\nregion = \"lambda >= -1, lambda <= 3\"\nrange = \"[0, 1/2]\"\n"
+        ),
+    );
+    let e = usage_error(&["audit", "--spec", &both]);
+    assert!(e.contains("either a `region` or a `range`"), "{e}");
+}

@@ -158,7 +158,27 @@ pub(crate) fn given(src: &Source<'_>, spec: &Spec, c: &RawClaim, kind: &str) -> 
         ranges.push((name, r.get_ref().clone(), r.span(), "ranges"));
     }
     if let Some(r) = &c.region {
-        let stated = crate::region_read::region_ranges(spec, r.get_ref())
+        if c.range.is_some() {
+            return src.invalid(
+                r.span(),
+                "claims.region",
+                "a claim gives its parameters either a `region` or a `range`, not both".into(),
+            );
+        }
+        if !RANGED.contains(&kind) && c.quantifier.is_none() {
+            return src.invalid(
+                r.span(),
+                "claims.region",
+                format!("`{kind}` takes no region of values (but with `for = \"some value\"` or `\"no value\"`): it is an identity, decided for every value or at the values `at` fixes"),
+            );
+        }
+        // values the claim fixes are substituted into the inequalities first
+        let fixed: Vec<(String, Sym)> = out
+            .fixed
+            .iter()
+            .map(|f| (f.name.clone(), f.value.clone()))
+            .collect();
+        let stated = crate::region_read::region_ranges(spec, r.get_ref(), &fixed)
             .or_else(|m| src.invalid(r.span(), "claims.region", m))?;
         for (name, text) in stated {
             if ranges.iter().any(|(n, ..)| *n == name) {
@@ -171,9 +191,21 @@ pub(crate) fn given(src: &Source<'_>, spec: &Spec, c: &RawClaim, kind: &str) -> 
             ranges.push((name, text, r.span(), "region"));
         }
     }
+    // a parameter map (an exchange symmetry) or the copies of a join's two
+    // segments would be rewritten by the change of parameters of a range
+    // with ends in other parameters: such claims take boxes only
+    let mapped = (kind == "symmetry" && c.params.as_ref().is_some_and(|m| !m.is_empty()))
+        || (kind == "join" && c.different == Some(true));
     for (name, text, span, field) in ranges {
         let range = match ParamRange::parse(&text) {
             Ok(range) => range,
+            Err(_) if mapped && between(spec, &name, &text).is_some() => {
+                return src.invalid(
+                    span,
+                    &format!("claims.{field}"),
+                    format!("`{kind}` with exchanged parameters or two segments takes boxes of parameters (numbers as ends), not ends in other parameters: `{name}` ∈ {text}"),
+                );
+            }
             Err(m) => match between(spec, &name, &text) {
                 Some(b) => {
                     out.between.push(b);

@@ -67,12 +67,18 @@ impl Linear {
 /// "[lo, hi]")` for each parameter it bounds, in declared order (the first
 /// with numbers, the later ones with ends in the earlier ones); or why the
 /// region cannot be read so.
-pub(crate) fn region_ranges(spec: &Spec, text: &str) -> Result<Vec<(String, String)>, String> {
+/// Values the claim fixes (`at`) are substituted into the inequalities
+/// first (a line `mu = lambda` keeps them linear).
+pub(crate) fn region_ranges(
+    spec: &Spec,
+    text: &str,
+    fixed: &[(String, Sym)],
+) -> Result<Vec<(String, String)>, String> {
     let names: Vec<&str> = spec.params.iter().map(|p| p.name.as_str()).collect();
     // each constraint as `form ≥ 0`
     let mut forms: Vec<Linear> = Vec::new();
     for part in text.split(',').map(str::trim).filter(|p| !p.is_empty()) {
-        forms.push(constraint(spec, &names, part)?);
+        forms.push(constraint(spec, &names, part, fixed)?);
     }
     if forms.is_empty() {
         return Err(
@@ -118,6 +124,20 @@ pub(crate) fn region_ranges(spec: &Spec, text: &str) -> Result<Vec<(String, Stri
         ));
     }
     bounds.reverse();
+    // an end in a parameter that itself has ends in others would not be
+    // linear once that one is rewritten (a simplex of three parameters)
+    for (k, lo, hi) in &bounds {
+        let uses = |j: usize| lo.coef[j] != 0 || hi.coef[j] != 0;
+        if let Some((j, ..)) = bounds
+            .iter()
+            .find(|(j, l, h)| uses(*j) && !(l.is_constant() && h.is_constant()))
+        {
+            return Err(format!(
+                "the ends of `{}` depend on `{}`, whose own ends depend on other parameters: regions whose ends chain through three parameters are not supported (state them as claims on boxes of the outer parameters)",
+                names[*k], names[*j]
+            ));
+        }
+    }
     Ok(bounds
         .into_iter()
         .map(|(k, lo, hi)| {
@@ -161,7 +181,7 @@ fn one_bound(
     match distinct.as_slice() {
         [one] => Ok(one.clone()),
         _ => Err(format!(
-            "`{name}` is bounded from {side} by {} lines at once (the region's edge bends there): state the region as claims on its pieces, each with one bound per side",
+            "`{name}` is bounded from {side} by {} lines at once: where neither is implied by the other the region's edge bends (state the region as claims on its pieces, each with one bound per side); a redundant bound can be left out",
             distinct.len()
         )),
     }
@@ -169,7 +189,12 @@ fn one_bound(
 
 /// One inequality `A >= B`, `A <= B` (or `≥`, `≤`) as `form ≥ 0`, linear
 /// in the parameters with rational coefficients.
-fn constraint(spec: &Spec, names: &[&str], part: &str) -> Result<Linear, String> {
+fn constraint(
+    spec: &Spec,
+    names: &[&str],
+    part: &str,
+    fixed: &[(String, Sym)],
+) -> Result<Linear, String> {
     let ops = [(">=", true), ("≥", true), ("<=", false), ("≤", false)];
     let Some((at, op, greater)) = ops
         .iter()
@@ -184,7 +209,12 @@ fn constraint(spec: &Spec, names: &[&str], part: &str) -> Result<Linear, String>
             .map_err(|e| format!("`{}`: {}", s.trim(), e.message))
     };
     let (a, b) = (side(&part[..at])?, side(&part[at + op.len()..])?);
-    let d = if greater { a - &b } else { b - &a };
+    let d = fixed
+        .iter()
+        .try_fold(if greater { a - &b } else { b - &a }, |d, (name, v)| {
+            d.try_subs(name, v)
+        })
+        .map_err(|e| format!("`{part}` at the fixed values: {e}"))?;
     let not_linear = || {
         format!(
             "`{part}`: a region's inequalities are linear in the parameters with rational coefficients"
@@ -211,7 +241,7 @@ mod tests {
 
     fn spec() -> Spec {
         Spec::from_str_named(
-            "id = \"r\"\ncitation = \"test\"\nvariable = \"polynomial\"\n[[parameters]]\nname = \"lambda\"\nrange = \"[0, 9]\"\n[[parameters]]\nname = \"mu\"\nrange = \"[0, 9]\"\n[[functions]]\nname = \"b0\"\nformula = \"1 - t\"\n[[functions]]\nname = \"b1\"\nformula = \"t\"\n",
+            "id = \"r\"\ncitation = \"test\"\nvariable = \"polynomial\"\n[[parameters]]\nname = \"lambda\"\nrange = \"[0, 9]\"\n[[parameters]]\nname = \"mu\"\nrange = \"[0, 9]\"\n[[parameters]]\nname = \"nu\"\nrange = \"[0, 9]\"\n[[functions]]\nname = \"b0\"\nformula = \"1 - t\"\n[[functions]]\nname = \"b1\"\nformula = \"t\"\n",
             "r",
         )
         .expect("spec")
@@ -219,7 +249,7 @@ mod tests {
 
     #[test]
     fn a_triangle_is_a_range_and_a_range_in_the_first_parameter() {
-        let r = region_ranges(&spec(), "lambda >= 0, mu >= 0, lambda + mu <= 4").unwrap();
+        let r = region_ranges(&spec(), "lambda >= 0, mu >= 0, lambda + mu <= 4", &[]).unwrap();
         assert_eq!(
             r,
             [
@@ -231,6 +261,7 @@ mod tests {
         let r = region_ranges(
             &spec(),
             "lambda >= 0, lambda >= 1/2, lambda <= 3, 2*lambda <= 5",
+            &[],
         )
         .unwrap();
         assert_eq!(r, [("lambda".to_string(), "[1/2, 5/2]".to_string())]);
@@ -241,17 +272,38 @@ mod tests {
         let bent = region_ranges(
             &spec(),
             "lambda >= 0, lambda <= 2, mu >= 0, mu >= lambda - 1, mu <= 3",
+            &[],
         )
         .unwrap_err();
         assert!(bent.contains("2 lines at once"), "{bent}");
         let open =
-            region_ranges(&spec(), "lambda >= 0, lambda <= 1, lambda + mu >= 4").unwrap_err();
+            region_ranges(&spec(), "lambda >= 0, lambda <= 1, lambda + mu >= 4", &[]).unwrap_err();
         assert!(open.contains("from above"), "{open}");
-        let empty = region_ranges(&spec(), "lambda >= 3, lambda <= 1").unwrap_err();
+        let empty = region_ranges(&spec(), "lambda >= 3, lambda <= 1", &[]).unwrap_err();
         assert!(empty.contains("empty"), "{empty}");
-        let curved = region_ranges(&spec(), "lambda*mu <= 1").unwrap_err();
+        let curved = region_ranges(&spec(), "lambda*mu <= 1", &[]).unwrap_err();
         assert!(curved.contains("linear"), "{curved}");
-        let line = region_ranges(&spec(), "mu = 3 - lambda").unwrap_err();
+        let line = region_ranges(&spec(), "mu = 3 - lambda", &[]).unwrap_err();
         assert!(line.contains("at = {"), "{line}");
+        // a simplex of three parameters chains its ends: refused, said so
+        let simplex = region_ranges(
+            &spec(),
+            "lambda >= 0, mu >= 0, nu >= 0, lambda + mu + nu <= 1",
+            &[],
+        )
+        .unwrap_err();
+        assert!(simplex.contains("three parameters"), "{simplex}");
+    }
+
+    #[test]
+    fn fixed_values_are_substituted_first() {
+        // μ = 0 on the triangle: λ ∈ [0, 4], μ gone
+        let at = [("mu".to_string(), Sym::zero())];
+        let r = region_ranges(&spec(), "lambda >= 0, mu >= 0, lambda + mu <= 4", &at).unwrap();
+        assert_eq!(r, [("lambda".to_string(), "[0, 4]".to_string())]);
+        // the line μ = λ: 2λ ≤ 4
+        let at = [("mu".to_string(), Sym::var("lambda"))];
+        let r = region_ranges(&spec(), "lambda >= 0, mu >= 0, lambda + mu <= 4", &at).unwrap();
+        assert_eq!(r, [("lambda".to_string(), "[0, 2]".to_string())]);
     }
 }
