@@ -69,11 +69,11 @@ fn bad_audit_requests_fail_cleanly() {
     // refused before the claims are decided, with the write's own error
     assert!(
         error_line(&["audit", "--output", "/nonexistent-dir/x.md"])
-            .contains("cannot write /nonexistent-dir/x.md: entity not found")
+            .contains("cannot write /nonexistent-dir/x.md: its directory does not exist")
     );
     assert!(
         error_line(&["audit", "--output", "/etc/passwd/x.md"])
-            .contains("cannot write /etc/passwd/x.md: not a directory")
+            .contains("cannot write /etc/passwd/x.md: a part of its path is not a directory")
     );
 }
 

@@ -306,6 +306,17 @@ fn plots_are_written_as_svg() {
             ],
             "cannot write /nonexistent-dir/x.svg",
         ),
+        (
+            &[
+                "plot",
+                "basis",
+                "--family",
+                "han",
+                "--output",
+                &out("x.png"),
+            ],
+            "written as SVG",
+        ),
     ]);
     std::fs::remove_dir_all(&dir).unwrap();
 }

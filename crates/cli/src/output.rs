@@ -112,11 +112,15 @@ fn directory_of(path: &Path) -> &Path {
 /// The error of a write to `path` that failed with `kind` (the kind only:
 /// tempfile's errors name the temporary file, not the target).
 fn cannot_write(path: &Path, kind: std::io::ErrorKind) -> CliError {
-    CliError::Usage(format!(
-        "cannot write {}: {}",
-        path.display(),
-        std::io::Error::from(kind)
-    ))
+    use std::io::ErrorKind;
+    let why = match kind {
+        ErrorKind::NotFound => "its directory does not exist".to_string(),
+        ErrorKind::NotADirectory => "a part of its path is not a directory".to_string(),
+        ErrorKind::IsADirectory => "it is a directory (give a file name)".to_string(),
+        ErrorKind::PermissionDenied => "permission denied".to_string(),
+        other => std::io::Error::from(other).to_string(),
+    };
+    CliError::Usage(format!("cannot write {}: {why}", path.display()))
 }
 
 /// Fails before any work when `path` cannot be written because its
@@ -127,6 +131,9 @@ pub fn check_directory(path: &Path) -> Result<(), CliError> {
     let path = &resolve(path)?;
     if is_special(path) {
         return Ok(());
+    }
+    if std::fs::metadata(path).is_ok_and(|m| m.is_dir()) {
+        return Err(cannot_write(path, std::io::ErrorKind::IsADirectory));
     }
     match std::fs::metadata(directory_of(path)) {
         Ok(m) if m.is_dir() => Ok(()),

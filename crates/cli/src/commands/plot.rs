@@ -221,6 +221,15 @@ fn write(output: &Path, picture: Picture, look: &FigureArgs) -> CmdResult {
             output.display()
         )));
     }
+    if !output
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("svg"))
+    {
+        return Err(CliError::Usage(format!(
+            "{}: the picture is written as SVG: give a name ending in .svg (its pgfplots code goes to NAME.tex, its data to NAME.csv)",
+            output.display()
+        )));
+    }
     let (tex, data) = (output.with_extension("tex"), output.with_extension("csv"));
     if tex == output || data == output {
         return Err(CliError::Usage(format!(
