@@ -278,6 +278,8 @@ fn eval_at_file_matches_eval_at_each_point() {
     let err = String::from_utf8_lossy(&late.stderr);
     assert_eq!(err.lines().count(), 1, "{err}");
     assert!(err.contains("point 2 is outside the domain"), "{err}");
+    // the error names the line of the file it comes from
+    assert!(err.contains("line 2: "), "{err}");
     let rows = String::from_utf8_lossy(&late.stdout);
     assert!(rows.lines().any(|l| l.starts_with("0.5\t")), "{rows}");
     assert_errors(&[

@@ -33,11 +33,13 @@ use crate::format::{TextOrJson, json};
 use trig_core::evaluation::Arithmetic;
 use trig_specfile::AnyBasis;
 
-/// The points of `source`, one at a time: the text as written, its exact
-/// value (blank lines and `#` lines skipped).
-fn points(
-    source: &Source,
-) -> Result<impl Iterator<Item = Result<(String, Affine), CliError>>, CliError> {
+/// A point of the file: its line number, its text as written, its exact
+/// value.
+type Point = (usize, String, Affine);
+
+/// The points of `source`, one at a time (blank lines and `#` lines
+/// skipped).
+fn points(source: &Source) -> Result<impl Iterator<Item = Result<Point, CliError>>, CliError> {
     let name = source.name();
     let lines = Lines::open(source).map_err(|e| CliError::Usage(e.to_string()))?;
     Ok(lines.filter_map(move |line| {
@@ -51,10 +53,18 @@ fn points(
         }
         Some(
             parse_point(text)
-                .map(|q| (text.to_string(), q))
+                .map(|q| (n, text.to_string(), q))
                 .map_err(|e| CliError::Usage(format!("{name} line {n}: {e}"))),
         )
     }))
+}
+
+/// A point's error with the file and line it comes from.
+fn at_line(e: CliError, name: &str, n: usize) -> CliError {
+    match e {
+        CliError::Write(e) => CliError::Write(e),
+        other => CliError::Usage(format!("{name} line {n}: {other}")),
+    }
 }
 
 /// The number of points of a file (a first pass; lines are only split,
@@ -223,7 +233,7 @@ fn write(out: &mut dyn Write, line: &str) -> Result<(), CliError> {
 
 fn text(
     rows: &mut Rows<'_>,
-    points: impl Iterator<Item = Result<(String, Affine), CliError>>,
+    points: impl Iterator<Item = Result<Point, CliError>>,
     name: &str,
     out: &mut dyn Write,
 ) -> Result<(), CliError> {
@@ -232,8 +242,8 @@ fn text(
     let (mut largest, mut bits, mut short) = (None::<(f64, String)>, 0, 0usize);
     let mut first = true;
     for point in points {
-        let (text, q) = point?;
-        let r = rows.row(&text, &q)?;
+        let (n, text, q) = point?;
+        let r = rows.row(&text, &q).map_err(|e| at_line(e, name, n))?;
         if first {
             let count = rows.total.map_or_else(
                 || format!("the points of {name}"),
@@ -297,15 +307,15 @@ fn text(
 
 fn json_columns(
     rows: &mut Rows<'_>,
-    points: impl Iterator<Item = Result<(String, Affine), CliError>>,
+    points: impl Iterator<Item = Result<Point, CliError>>,
     name: &str,
 ) -> Result<serde_json::Value, CliError> {
     let mut at = Vec::new();
     let mut all: Vec<Evaluation> = Vec::new();
     let (mut values, mut bytes) = (0u64, 0u64);
     for point in points {
-        let (text, q) = point?;
-        let r = rows.row(&text, &q)?;
+        let (n, text, q) = point?;
+        let r = rows.row(&text, &q).map_err(|e| at_line(e, name, n))?;
         values += r.values.len() as u64;
         bytes += r.values.iter().map(|v| v.text.len() as u64).sum::<u64>();
         if values > cost::MAX_JSON_VALUES || bytes > cost::MAX_JSON_BYTES {
