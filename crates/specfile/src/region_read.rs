@@ -89,7 +89,9 @@ pub(crate) fn region_ranges(
     let used: Vec<usize> = (0..names.len())
         .filter(|&k| forms.iter().any(|f| f.coef[k] != 0))
         .collect();
-    let mut bounds: Vec<(usize, Linear, Linear)> = Vec::new();
+    // backward: every bound of each parameter, the projection of the rest
+    // (each lower bound ≤ each upper bound) onto the earlier parameters
+    let mut sides: Vec<(usize, Vec<Linear>, Vec<Linear>)> = Vec::new();
     for &k in used.iter().rev() {
         let (mut lower, mut upper, mut rest) = (Vec::new(), Vec::new(), Vec::new());
         for f in forms {
@@ -102,18 +104,23 @@ pub(crate) fn region_ranges(
             let mut r = f.clone();
             r.coef[k] = Rational::new();
             let bound = r.scaled(&Rational::from(-1 / &a));
-            if a > 0 {
-                lower.push(bound);
-            } else {
-                upper.push(bound);
+            let side: &mut Vec<Linear> = if a > 0 { &mut lower } else { &mut upper };
+            if !side.contains(&bound) {
+                side.push(bound);
             }
         }
-        let name = names[k];
-        let lo = one_bound(lower, name, "below", true)?;
-        let hi = one_bound(upper, name, "above", false)?;
-        // the projection: lo ≤ hi, a constraint on the earlier parameters
-        rest.push(hi.minus(&lo));
-        bounds.push((k, lo, hi));
+        for (bounds, side) in [(&lower, "below"), (&upper, "above")] {
+            if bounds.is_empty() {
+                return Err(format!(
+                    "the region does not bound `{}` from {side}: add an inequality for it",
+                    names[k]
+                ));
+            }
+        }
+        for lo in &lower {
+            rest.extend(upper.iter().map(|hi| hi.minus(lo)));
+        }
+        sides.push((k, lower, upper));
         forms = rest;
     }
     // what is left is free of every parameter: each a number ≥ 0
@@ -123,7 +130,20 @@ pub(crate) fn region_ranges(
             f.constant
         ));
     }
-    bounds.reverse();
+    // forward: each parameter's one bound per side, a bound implied by
+    // another over the box enclosing the earlier parameters left out
+    sides.reverse();
+    let mut enclosure: Vec<Option<(Rational, Rational)>> = vec![None; names.len()];
+    let mut bounds: Vec<(usize, Linear, Linear)> = Vec::new();
+    for (k, lower, upper) in sides {
+        let lo = one_bound(lower, &enclosure, names[k], "below", true)?;
+        let hi = one_bound(upper, &enclosure, names[k], "above", false)?;
+        enclosure[k] = Some((
+            extreme(&lo, &enclosure, false),
+            extreme(&hi, &enclosure, true),
+        ));
+        bounds.push((k, lo, hi));
+    }
     // an end in a parameter that itself has ends in others would not be
     // linear once that one is rewritten (a simplex of three parameters)
     for (k, lo, hi) in &bounds {
@@ -149,40 +169,56 @@ pub(crate) fn region_ranges(
         .collect())
 }
 
-/// The one bound of a parameter on one side: the largest of several
-/// numbers below (`lower`), the smallest above; a bound that is the larger
-/// (smaller) of two different lines is refused, as is none.
+/// The least (`!most`) or greatest value of `form` over the box
+/// `enclosure` of the parameters it involves (a corner of the box).
+fn extreme(form: &Linear, enclosure: &[Option<(Rational, Rational)>], most: bool) -> Rational {
+    form.coef
+        .iter()
+        .zip(enclosure)
+        .filter(|(c, _)| **c != 0)
+        .fold(form.constant.clone(), |acc, (c, range)| {
+            let (lo, hi) = range.clone().unwrap_or_default();
+            let at = if (*c > 0) == most { hi } else { lo };
+            acc + Rational::from(c * &at)
+        })
+}
+
+/// The one bound of a parameter on one side: a bound that another implies
+/// over the box `enclosure` of the earlier parameters (`μ ≤ 1` beside
+/// `μ ≤ 1 − λ` for `λ ∈ [0, 1]`) is left out; two that remain are refused
+/// (the region's edge bends there).
 fn one_bound(
-    mut bounds: Vec<Linear>,
+    bounds: Vec<Linear>,
+    enclosure: &[Option<(Rational, Rational)>],
     name: &str,
     side: &str,
     lower: bool,
 ) -> Result<Linear, String> {
-    bounds.dedup();
-    if bounds.iter().all(Linear::is_constant) {
-        let best = bounds.into_iter().reduce(|a, b| {
-            let keep_a = if lower {
-                a.constant >= b.constant
-            } else {
-                a.constant <= b.constant
-            };
-            if keep_a { a } else { b }
-        });
-        return best.ok_or_else(|| {
-            format!("the region does not bound `{name}` from {side}: add an inequality for it")
-        });
-    }
-    let mut distinct: Vec<Linear> = Vec::new();
-    for b in bounds {
-        if !distinct.contains(&b) {
-            distinct.push(b);
+    // `b` is implied by `other` when the other is at least as tight
+    // everywhere: above it (a lower bound) or below it (an upper one)
+    let implied = |b: &Linear, other: &Linear| {
+        let gap = if lower {
+            other.minus(b)
+        } else {
+            b.minus(other)
+        };
+        extreme(&gap, enclosure, false) >= 0
+    };
+    let mut kept: Vec<Linear> = Vec::new();
+    for (i, b) in bounds.iter().enumerate() {
+        let redundant = bounds
+            .iter()
+            .enumerate()
+            .any(|(j, o)| j != i && implied(b, o) && !(implied(o, b) && j > i));
+        if !redundant {
+            kept.push(b.clone());
         }
     }
-    match distinct.as_slice() {
+    match kept.as_slice() {
         [one] => Ok(one.clone()),
         _ => Err(format!(
-            "`{name}` is bounded from {side} by {} lines at once: where neither is implied by the other the region's edge bends (state the region as claims on its pieces, each with one bound per side); a redundant bound can be left out",
-            distinct.len()
+            "`{name}` is bounded from {side} by {} lines at once, neither implied by the other: the region's edge bends there (state the region as claims on its pieces, each with one bound per side)",
+            kept.len()
         )),
     }
 }
@@ -265,6 +301,28 @@ mod tests {
         )
         .unwrap();
         assert_eq!(r, [("lambda".to_string(), "[1/2, 5/2]".to_string())]);
+        // the triangle as papers often print it, μ ≤ 1 implied by μ ≤ 1 − λ
+        let r = region_ranges(
+            &spec(),
+            "lambda >= 0, lambda <= 1, mu >= 0, mu <= 1, lambda + mu <= 1",
+            &[],
+        )
+        .unwrap();
+        assert_eq!(
+            r,
+            [
+                ("lambda".to_string(), "[0, 1]".to_string()),
+                ("mu".to_string(), "[0, -lambda + 1]".to_string())
+            ]
+        );
+        // a bound implied over the other parameter's range: μ ≤ 5
+        let r = region_ranges(
+            &spec(),
+            "lambda >= -2, lambda <= 1, mu >= -2, lambda + mu <= -1, mu <= 5",
+            &[],
+        )
+        .unwrap();
+        assert_eq!(r[1], ("mu".to_string(), "[-2, -lambda - 1]".to_string()));
     }
 
     #[test]
@@ -275,7 +333,7 @@ mod tests {
             &[],
         )
         .unwrap_err();
-        assert!(bent.contains("2 lines at once"), "{bent}");
+        assert!(bent.contains("2 lines at once, neither implied"), "{bent}");
         let open =
             region_ranges(&spec(), "lambda >= 0, lambda <= 1, lambda + mu >= 4", &[]).unwrap_err();
         assert!(open.contains("from above"), "{open}");
