@@ -101,30 +101,28 @@ fn a_g2_condition_without_a_free_point_fixes_the_factor() {
         "quartic-two-shape.toml",
         "id = \"quartic-two-shape\"\ncitation = \"test\"\nvariable = \"angle\"\n[[parameters]]\nname = \"lambda\"\nsymbol = \"λ\"\nrange = \"[-1, 1]\"\n[[parameters]]\nname = \"mu\"\nsymbol = \"μ\"\nrange = \"[-1, 1]\"\n[[functions]]\nname = \"b0\"\nformula = \"(1 - s)^2*(1 - lambda*s)^2\"\n[[functions]]\nname = \"b2\"\nformula = \"(1 - c)^2*(1 - mu*c)^2\"\n[[functions]]\nname = \"b1\"\nformula = \"1 - b0 - b2\"\n",
     );
-    let text = stdout_ok(&[
-        "join",
-        "--spec",
-        &spec,
-        "--kind",
-        "g2",
-        "--params",
-        "different",
-    ]);
+    let g2 = |extra: &[&str]| {
+        let args = [
+            &[
+                "join",
+                "--spec",
+                &spec,
+                "--kind",
+                "g2",
+                "--params",
+                "different",
+            ][..],
+            extra,
+        ]
+        .concat();
+        stdout_ok(&args)
+    };
+    let text = g2(&[]);
     assert!(
         text.contains("β = −α·(α·λ₂·μ₁² + 4·α·λ₂·μ₁ + α·μ₁² + λ₂²·μ₁ + α·λ₂ + 4·α·μ₁ + λ₂² + 4·λ₂·μ₁ + α + 4·λ₂ + μ₁ + 1)/((λ₂ + 1)·(μ₁ + 1))"),
         "{text}"
     );
-    let json = stdout_ok(&[
-        "join",
-        "--spec",
-        &spec,
-        "--kind",
-        "g2",
-        "--params",
-        "different",
-        "--format",
-        "json",
-    ]);
+    let json = g2(&["--format", "json"]);
     let value: serde_json::Value = serde_json::from_str(&json).expect("json");
     assert_eq!(value["factor"]["symbol"], "beta", "{json}");
     // a C² join has no factor to take up the condition: it cannot be met

@@ -283,46 +283,37 @@ mod tests {
         .expect("spec")
     }
 
+    /// The ranges a region states, unwrapped.
+    fn ranges(text: &str) -> Vec<(String, String)> {
+        region_ranges(&spec(), text, &[]).unwrap()
+    }
+
+    /// `(name, range)` as [`region_ranges`] gives it.
+    fn range(name: &str, text: &str) -> (String, String) {
+        (name.to_string(), text.to_string())
+    }
+
     #[test]
     fn a_triangle_is_a_range_and_a_range_in_the_first_parameter() {
-        let r = region_ranges(&spec(), "lambda >= 0, mu >= 0, lambda + mu <= 4", &[]).unwrap();
         assert_eq!(
-            r,
-            [
-                ("lambda".to_string(), "[0, 4]".to_string()),
-                ("mu".to_string(), "[0, -lambda + 4]".to_string())
-            ]
+            ranges("lambda >= 0, mu >= 0, lambda + mu <= 4"),
+            [range("lambda", "[0, 4]"), range("mu", "[0, -lambda + 4]")]
         );
         // redundant numbers: the tighter one on each side
-        let r = region_ranges(
-            &spec(),
-            "lambda >= 0, lambda >= 1/2, lambda <= 3, 2*lambda <= 5",
-            &[],
-        )
-        .unwrap();
-        assert_eq!(r, [("lambda".to_string(), "[1/2, 5/2]".to_string())]);
-        // the triangle as papers often print it, μ ≤ 1 implied by μ ≤ 1 − λ
-        let r = region_ranges(
-            &spec(),
-            "lambda >= 0, lambda <= 1, mu >= 0, mu <= 1, lambda + mu <= 1",
-            &[],
-        )
-        .unwrap();
         assert_eq!(
-            r,
-            [
-                ("lambda".to_string(), "[0, 1]".to_string()),
-                ("mu".to_string(), "[0, -lambda + 1]".to_string())
-            ]
+            ranges("lambda >= 0, lambda >= 1/2, lambda <= 3, 2*lambda <= 5"),
+            [range("lambda", "[1/2, 5/2]")]
+        );
+        // the triangle as papers often print it, μ ≤ 1 implied by μ ≤ 1 − λ
+        assert_eq!(
+            ranges("lambda >= 0, lambda <= 1, mu >= 0, mu <= 1, lambda + mu <= 1"),
+            [range("lambda", "[0, 1]"), range("mu", "[0, -lambda + 1]")]
         );
         // a bound implied over the other parameter's range: μ ≤ 5
-        let r = region_ranges(
-            &spec(),
-            "lambda >= -2, lambda <= 1, mu >= -2, lambda + mu <= -1, mu <= 5",
-            &[],
-        )
-        .unwrap();
-        assert_eq!(r[1], ("mu".to_string(), "[-2, -lambda - 1]".to_string()));
+        assert_eq!(
+            ranges("lambda >= -2, lambda <= 1, mu >= -2, lambda + mu <= -1, mu <= 5")[1],
+            range("mu", "[-2, -lambda - 1]")
+        );
     }
 
     #[test]
@@ -358,10 +349,10 @@ mod tests {
         // μ = 0 on the triangle: λ ∈ [0, 4], μ gone
         let at = [("mu".to_string(), Sym::zero())];
         let r = region_ranges(&spec(), "lambda >= 0, mu >= 0, lambda + mu <= 4", &at).unwrap();
-        assert_eq!(r, [("lambda".to_string(), "[0, 4]".to_string())]);
+        assert_eq!(r, [range("lambda", "[0, 4]")]);
         // the line μ = λ: 2λ ≤ 4
         let at = [("mu".to_string(), Sym::var("lambda"))];
         let r = region_ranges(&spec(), "lambda >= 0, mu >= 0, lambda + mu <= 4", &at).unwrap();
-        assert_eq!(r, [("lambda".to_string(), "[0, 2]".to_string())]);
+        assert_eq!(r, [range("lambda", "[0, 2]")]);
     }
 }

@@ -59,10 +59,9 @@ impl Sym {
                 .enumerate()
                 .map(|(i, (v, c))| {
                     let point = style.sym(&Sym::var(v));
-                    let term = match by_factors(c, by, style) {
-                        Some(k) => combine(&[(k, point)], style),
-                        None => shortest_term(c, &point, style),
-                    };
+                    let coefficient =
+                        by_factors(c, by, style).unwrap_or_else(|| c.shortest_in(style));
+                    let term = combine(&[(coefficient, point)], style);
                     if i == 0 {
                         return term;
                     }
@@ -76,54 +75,40 @@ impl Sym {
     }
 }
 
-/// `x` in `style` as a factor of a product, factored where that is not
-/// longer (a sum counted with the parentheses it needs there).
-fn shortest(x: &Sym, style: Style) -> String {
-    let expanded = style.sym(x);
-    let f = x.factored();
-    if f.trivial {
-        return expanded;
-    }
-    let factored = style.factored(&f);
-    let width = |t: &str| t.chars().count() + 2 * usize::from(has_top_level_sum(t, style));
-    if width(&factored) <= width(&expanded) {
-        factored
-    } else {
-        expanded
-    }
-}
-
-/// The term `c·point` in `style`, its coefficient factored where the term
-/// is not longer for it (a factored coefficient needs no parentheses).
-fn shortest_term(c: &Sym, point: &str, style: Style) -> String {
-    let expanded = combine(&[(style.sym(c), point.to_string())], style);
-    let f = c.factored();
-    if f.trivial {
-        return expanded;
-    }
-    let factored = combine(&[(style.factored(&f), point.to_string())], style);
-    if factored.chars().count() <= expanded.chars().count() {
-        factored
-    } else {
-        expanded
+impl Sym {
+    /// `self` in `style` as a factor of a product, factored where that is
+    /// not longer (a sum counted with the parentheses it needs there).
+    pub fn shortest_in(&self, style: Style) -> String {
+        let expanded = style.sym(self);
+        let f = self.factored();
+        if f.trivial {
+            return expanded;
+        }
+        let factored = style.factored(&f);
+        let width = |t: &str| t.chars().count() + 2 * usize::from(has_top_level_sum(t, style));
+        if width(&factored) <= width(&expanded) {
+            factored
+        } else {
+            expanded
+        }
     }
 }
 
 /// A coefficient in `style` collected by the monomials of `by`, when it is
 /// a polynomial of more than one of them (`−(2·(μ₁ + 1)·α² + (μ₁ + 2)/2·β)`,
-/// a common sign taken out, each part [`shortest`]).
+/// a common sign taken out, each part [`Sym::shortest_in`]).
 fn by_factors(c: &Sym, by: &[String], style: Style) -> Option<String> {
     let parts = collected(c, by);
     if parts.len() < 2 {
         return None;
     }
     // a common sign is taken out when it leaves fewer minus signs in each part
-    let minuses = |x: &Sym| shortest(x, style).matches(style.minus()).count();
+    let minuses = |x: &Sym| x.shortest_in(style).matches(style.minus()).count();
     let negative = parts.iter().all(|(_, k)| minuses(&-k.clone()) < minuses(k));
     let sign = if negative { Sym::int(-1) } else { Sym::one() };
     let printed: Vec<(String, String)> = parts
         .iter()
-        .map(|(m, k)| (shortest(&(k.clone() * &sign), style), style.sym(m)))
+        .map(|(m, k)| ((k.clone() * &sign).shortest_in(style), style.sym(m)))
         .collect();
     let sum = combine(&printed, style);
     Some(if negative {

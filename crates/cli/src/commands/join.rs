@@ -274,7 +274,7 @@ fn text(s: &Solved) -> String {
         out.push_str(&format!(
             "\n{FACTOR_NOTE}:\n  {} = {}\n",
             beta.to_unicode(),
-            shortest(value, Style::Unicode)
+            value.shortest_in(Style::Unicode)
         ));
     }
     out
@@ -282,17 +282,6 @@ fn text(s: &Solved) -> String {
 
 /// What the line of a factor fixed by the join says.
 const FACTOR_NOTE: &str = "the factor the join fixes (a condition with no free control point of the second segment, met for every control point by this value)";
-
-/// `x` in `style`, factored where that is not longer.
-fn shortest(x: &Sym, style: Style) -> String {
-    let f = x.factored();
-    let factored = (!f.trivial).then(|| style.factored(&f));
-    let expanded = style.sym(x);
-    match factored {
-        Some(g) if g.chars().count() <= expanded.chars().count() => g,
-        _ => expanded,
-    }
-}
 
 fn tex(s: &Solved) -> String {
     let mut out: String = header(s).iter().map(|l| trig_tex::comment(l)).collect();
@@ -306,7 +295,7 @@ fn tex(s: &Solved) -> String {
         .chain(
             s.factor
                 .iter()
-                .map(|(beta, value)| (beta.to_latex(), shortest(value, Style::Latex))),
+                .map(|(beta, value)| (beta.to_latex(), value.shortest_in(Style::Latex))),
         )
         .collect();
     if s.factor.is_some() {
@@ -344,7 +333,7 @@ fn json_value(s: &Solved) -> serde_json::Value {
         "factor": s.factor.as_ref().map(|(beta, value)| json!({
             "symbol": beta.to_string(),
             "formula": value.to_string(),
-            "latex": shortest(value, Style::Latex),
+            "latex": value.shortest_in(Style::Latex),
             "note": FACTOR_NOTE,
         })),
     })
