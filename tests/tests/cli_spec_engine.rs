@@ -209,6 +209,12 @@ fn trigonometric_bernstein_quartic_ends_exactly_at_pi() {
     let (v, e) = claim(&tb, "TB4-maximal");
     assert_eq!(v, "holds", "{e}");
     assert!(e.contains("upper end α = 1·π exactly (included"), "{e}");
+    // the maximal interval's inside lies in the printed range, certified
+    // first: it is not certified a second time
+    assert!(
+        e.contains("the part inside the ends proved: it lies in the printed range, proved above"),
+        "{e}"
+    );
     let (v, e) = claim(&tb, "TB4-wide");
     assert_eq!(v, "fails", "{e}");
     assert!(e.contains("b1 ≥ 0: violated"), "{e}");

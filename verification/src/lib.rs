@@ -14,7 +14,6 @@ mod claims;
 pub mod entry;
 pub mod figures;
 pub mod minimum;
-pub mod parallel;
 pub mod spec_audit;
 
 pub use claim::{Claim, Seed};
@@ -34,7 +33,7 @@ pub struct Outcome {
 }
 
 /// Runs the checkers of the selected claims (all when both filters are `None`),
-/// on every available core ([`parallel::map`]); the outcomes come back in
+/// on every available core ([`trig_core::parallel::map`]); the outcomes come back in
 /// report order, whatever order the checkers finish in.
 pub fn run(seed: Option<Seed>, claim_id: Option<&str>) -> Vec<Outcome> {
     let claims: Vec<Claim> = all_claims()
@@ -42,7 +41,7 @@ pub fn run(seed: Option<Seed>, claim_id: Option<&str>) -> Vec<Outcome> {
         .filter(|c| seed.is_none_or(|s| c.seed == s))
         .filter(|c| claim_id.is_none_or(|id| c.id.eq_ignore_ascii_case(id)))
         .collect();
-    let verdicts = parallel::map(&claims, |claim| (claim.check)());
+    let verdicts = trig_core::parallel::map(&claims, |claim| (claim.check)());
     claims
         .into_iter()
         .zip(verdicts)

@@ -321,9 +321,12 @@ impl<'a> Problem<'a> {
     /// The proof that every function is `≥ 0` for the parameter in the
     /// axis (factor by factor), with the total boxes.
     pub fn prove(&self, axis: &[Axis]) -> Outcome {
+        let decided: Vec<&Sym> = self.decided().map(|(_, f)| f).collect();
+        let outcomes =
+            trig_core::parallel::map(&decided, |f| factors::nonnegative(f, self.domain, axis));
         let mut boxes = 0;
-        for (_, f) in self.decided() {
-            match factors::nonnegative(f, self.domain, axis) {
+        for outcome in outcomes {
+            match outcome {
                 Outcome::Proved { boxes: b } => boxes += b,
                 other => return other,
             }

@@ -25,6 +25,7 @@ use rug::Rational;
 
 pub use crate::analytic_end::{End, Equation, ExactValue, Outside, Problem, Witness, value_text};
 use crate::branch::Outcome;
+use crate::coordinates::Axis;
 use crate::range::simplest_between;
 use crate::transcendental::{certify_end, vanishing_end};
 
@@ -39,6 +40,9 @@ pub struct AnalyticRange {
     /// The proof of the part inside the ends (all functions, one box of
     /// parameters): `Proved` with its boxes, or why not.
     pub inside: Outcome,
+    /// The part of the inside that the caller had proved already (then
+    /// `inside` counts the boxes of the rest only).
+    pub inside_given: Option<Axis>,
 }
 
 /// Grid steps from the start to each limit.
@@ -47,12 +51,16 @@ const STEPS: u32 = 16;
 const BISECTIONS: usize = 12;
 
 /// The maximal interval containing `start` on which every function is
-/// `≥ 0`, searched down to `lo_limit` and up to `hi_limit`.
+/// `≥ 0`, searched down to `lo_limit` and up to `hi_limit`. `proved`: a
+/// parameter interval on which the caller has proved every function `≥ 0`
+/// already (the printed range): only the part of the inside beyond it is
+/// proved again.
 pub fn maximal_range(
     problem: &Problem<'_>,
     start: &Rational,
     lo_limit: &Rational,
     hi_limit: &Rational,
+    proved: Option<&Axis>,
 ) -> AnalyticRange {
     if let Err(o) = problem.admissible(start) {
         let und = End::Undecided {
@@ -65,6 +73,7 @@ pub fn maximal_range(
             lo: und.clone(),
             hi: und,
             inside: Outcome::Undecided("the start is not admissible".into()),
+            inside_given: None,
         };
     }
     // the search stops where the domain shrinks to a point
@@ -83,11 +92,15 @@ pub fn maximal_range(
     let (hi_limit, hi_empty) = clamp(hi_limit, 1);
     let lo = search(problem, start, &lo_limit, -1, lo_empty);
     let hi = search(problem, start, &hi_limit, 1, hi_empty);
-    let inside = match (inner(&lo), inner(&hi)) {
+    let (inside, inside_given) = match (inner(&lo), inner(&hi)) {
         (Some((a, a_open)), Some((b, b_open))) => {
-            problem.prove(&problem.axis(&a, &b, a_open, b_open))
+            let whole = &problem.axis(&a, &b, a_open, b_open)[0];
+            match proved.filter(|p| covers_most(whole, p)) {
+                Some(p) => (prove_beyond(problem, whole, p), Some(p.clone())),
+                None => (problem.prove(std::slice::from_ref(whole)), None),
+            }
         }
-        _ => Outcome::Undecided("an end was not decided".into()),
+        _ => (Outcome::Undecided("an end was not decided".into()), None),
     };
     AnalyticRange {
         start: start.clone(),
@@ -95,7 +108,40 @@ pub fn maximal_range(
         lo,
         hi,
         inside,
+        inside_given,
     }
+}
+
+/// True when `given` covers most of `whole`: they share an interval wider
+/// than the rest of `whole` (else proving the rest is no cheaper than
+/// proving the whole).
+fn covers_most(whole: &Axis, given: &Axis) -> bool {
+    let top = (&whole.hi).min(&given.hi);
+    let bottom = (&whole.lo).max(&given.lo);
+    let shared = Rational::from(top - bottom);
+    let rest = Rational::from(&whole.hi - &whole.lo) - &shared;
+    whole.pi == given.pi && shared > 0 && shared > rest
+}
+
+/// The proof of `whole` where `given` (proved, overlapping it) does not
+/// reach: the pieces below and above `given`, each closed where it meets
+/// `given` (a shared end point is proved twice, never missed).
+fn prove_beyond(problem: &Problem<'_>, whole: &Axis, given: &Axis) -> Outcome {
+    let mut pieces = Vec::new();
+    if whole.lo < given.lo || (whole.lo == given.lo && given.lo_open && !whole.lo_open) {
+        pieces.push((whole.lo.clone(), given.lo.clone(), whole.lo_open, false));
+    }
+    if whole.hi > given.hi || (whole.hi == given.hi && given.hi_open && !whole.hi_open) {
+        pieces.push((given.hi.clone(), whole.hi.clone(), false, whole.hi_open));
+    }
+    let mut boxes = 0;
+    for (lo, hi, lo_open, hi_open) in pieces {
+        match problem.prove(&problem.axis(&lo, &hi, lo_open, hi_open)) {
+            Outcome::Proved { boxes: b } => boxes += b,
+            other => return other,
+        }
+    }
+    Outcome::Proved { boxes }
 }
 
 /// The inner bound of an end for the final proof: `(value, open)`.
@@ -241,7 +287,7 @@ mod tests {
         let g = Sym::var("lambda") * &Sym::var("t") * &Sym::var("s");
         let fs = [Sym::one() - &g, g];
         let p = Problem::new(&fs, &d, false);
-        let r = maximal_range(&p, &q(1, 4), &q(-1, 1), &q(1, 1));
+        let r = maximal_range(&p, &q(1, 4), &q(-1, 1), &q(1, 1), None);
         assert!(matches!(r.inside, Outcome::Proved { .. }), "{:?}", r.inside);
         match &r.hi {
             End::Certified {
@@ -289,7 +335,7 @@ mod tests {
         let f = v("s") - &(v("t") * &v("cos(alpha)"));
         let fs = [f];
         let p = Problem::new(&fs, &d, false);
-        let r = maximal_range(&p, &q(1, 1), &q(1, 2), &q(6, 1));
+        let r = maximal_range(&p, &q(1, 1), &q(1, 2), &q(6, 1), None);
         assert!(matches!(r.inside, Outcome::Proved { .. }), "{:?}", r.inside);
         match &r.hi {
             End::Certified {
@@ -321,7 +367,7 @@ mod tests {
             (one.clone() - &c) / &den,
         ];
         let p = Problem::new(&fs, &d, true);
-        let r = maximal_range(&p, &q(1, 2), &q(0, 1), &q(2, 1));
+        let r = maximal_range(&p, &q(1, 2), &q(0, 1), &q(2, 1), None);
         assert!(matches!(r.inside, Outcome::Proved { .. }), "{:?}", r.inside);
         match &r.hi {
             End::Exact {
@@ -335,6 +381,68 @@ mod tests {
             }
             other => panic!("{other:?}"),
         }
+        // with the printed range (0, π] proved by the caller, the inside
+        // is not proved again; with a proved part smaller than the rest,
+        // the whole is proved
+        let given = |lo: (i64, i64), hi: (i64, i64)| Axis {
+            lo: q(lo.0, lo.1),
+            hi: q(hi.0, hi.1),
+            lo_open: true,
+            hi_open: false,
+            pi: true,
+        };
+        let printed = given((0, 1), (1, 1));
+        let reused = maximal_range(&p, &q(1, 2), &q(0, 1), &q(2, 1), Some(&printed));
+        assert_eq!(reused.inside, Outcome::Proved { boxes: 0 });
+        assert_eq!(reused.inside_given, Some(printed));
+        assert_eq!((reused.lo, reused.hi), (r.lo.clone(), r.hi.clone()));
+        let narrow = maximal_range(
+            &p,
+            &q(1, 2),
+            &q(0, 1),
+            &q(2, 1),
+            Some(&given((1, 4), (1, 2))),
+        );
+        assert_eq!((narrow.inside, narrow.inside_given), (r.inside, None));
+    }
+
+    #[test]
+    fn the_rest_beyond_a_proved_interval_is_proved_piece_by_piece() {
+        // b = α − t on t ∈ [0, 1]: ≥ 0 exactly for α ≥ 1; with [1, 3] proved
+        // the rest of [2, 4] is [3, 4] (proved), of [1/2, 2] it is [1/2, 1] (refuted)
+        let d = Domain {
+            name: "t".into(),
+            param_names: vec!["alpha".into()],
+            start: Affine::default(),
+            end: Affine::rational(q(1, 1)),
+            angle: None,
+            uses_variable: true,
+            exp: None,
+            param_angles: Vec::new(),
+            param_exps: Vec::new(),
+        };
+        let fs = [v("alpha") - &v("t")];
+        let p = Problem::new(&fs, &d, false);
+        let axis = |a: (i64, i64), b: (i64, i64)| Axis {
+            lo: q(a.0, a.1),
+            hi: q(b.0, b.1),
+            lo_open: false,
+            hi_open: false,
+            pi: false,
+        };
+        let whole = axis((2, 1), (4, 1));
+        assert!(matches!(
+            prove_beyond(&p, &whole, &axis((1, 1), (3, 1))),
+            Outcome::Proved { boxes } if boxes > 0
+        ));
+        assert_eq!(
+            prove_beyond(&p, &whole, &axis((1, 1), (5, 1))),
+            Outcome::Proved { boxes: 0 }
+        );
+        assert!(!matches!(
+            prove_beyond(&p, &axis((1, 2), (2, 1)), &axis((1, 1), (3, 1))),
+            Outcome::Proved { .. }
+        ));
     }
 
     #[test]
@@ -361,7 +469,7 @@ mod tests {
             (t.clone() - &s) / &big_a,
         ];
         let p = Problem::new(&fs, &d, true);
-        let r = maximal_range(&p, &q(1, 2), &q(0, 1), &q(4, 1));
+        let r = maximal_range(&p, &q(1, 2), &q(0, 1), &q(4, 1), None);
         assert!(matches!(r.inside, Outcome::Proved { .. }), "{:?}", r.inside);
         for (end, at) in [(&r.lo, q(0, 1)), (&r.hi, q(2, 1))] {
             match end {

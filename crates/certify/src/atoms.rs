@@ -82,12 +82,32 @@ pub fn value<T: Ring>(
         return atoms.t.int(p.parse().ok()?).try_sqrt();
     }
     let a = param_atoms.iter().find(|a| a.name == name)?;
-    let x = params[a.param].clone() * &atoms.t.rational(&a.base);
     match a.kind {
-        Kind::Sin => x.try_sin_cos().map(|(s, _)| s),
-        Kind::Cos => x.try_sin_cos().map(|(_, c)| c),
-        Kind::Exp => x.try_exp(),
+        Kind::Sin => param_sin_cos(a, atoms, params).map(|(s, _)| s),
+        Kind::Cos => param_sin_cos(a, atoms, params).map(|(_, c)| c),
+        Kind::Exp => (params[a.param].clone() * &atoms.t.rational(&a.base)).try_exp(),
     }
+}
+
+/// `(sin(b·p), cos(b·p))` of a sine or cosine atom `a` of a parameter, both
+/// at once (a ring whose sine is costly forms the pair once).
+pub fn param_sin_cos<T: Ring>(a: &ParamAtom, atoms: &Atoms<T>, params: &[T]) -> Option<(T, T)> {
+    (params[a.param].clone() * &atoms.t.rational(&a.base)).try_sin_cos()
+}
+
+/// The names of the sine and the cosine atom of the same multiple as `a`
+/// (`None` unless `a` is one of such a pair).
+pub fn sin_cos_names<'p>(
+    a: &ParamAtom,
+    param_atoms: &'p [ParamAtom],
+) -> Option<(&'p str, &'p str)> {
+    let find = |k: Kind| {
+        param_atoms
+            .iter()
+            .find(|x| x.param == a.param && x.base == a.base && x.kind == k)
+            .map(|x| x.name.as_str())
+    };
+    Some((find(Kind::Sin)?, find(Kind::Cos)?))
 }
 
 /// `d/dx` of an exact value: `s ↦ ωc`, `c ↦ −ωs`, `t ↦ 1`, `E ↦ κE`.

@@ -16,7 +16,7 @@ use rug::Rational;
 use trig_core::{Atoms, Domain, Interval, Ring};
 use trig_symbolic::{Poly, Sym};
 
-use crate::atoms::{ParamAtom, value};
+use crate::atoms::{ParamAtom, param_sin_cos, sin_cos_names, value};
 use crate::taylor::{Space, TaylorModel};
 
 /// Degree of the models.
@@ -110,6 +110,16 @@ impl<'a> BoxAtoms<'a> {
     fn atom(&self, name: &str) -> Option<TaylorModel> {
         if let Some(m) = self.cache.borrow().get(name) {
             return Some(m.clone());
+        }
+        // a sine or cosine of a parameter: the pair is one computation
+        if let Some(a) = self.param_atoms.iter().find(|a| a.name == name)
+            && let Some((sin_name, cos_name)) = sin_cos_names(a, &self.param_atoms)
+        {
+            let (s, c) = param_sin_cos(a, &self.atoms, &self.params)?;
+            let mut cache = self.cache.borrow_mut();
+            cache.insert(sin_name.to_string(), s);
+            cache.insert(cos_name.to_string(), c);
+            return cache.get(name).cloned();
         }
         let m = value(
             name,

@@ -25,7 +25,7 @@
 //! models of one box share their [`Space`]. Elementary functions of models
 //! are in [`crate::elementary`], with the [`trig_core::Ring`] implementation.
 
-use std::cell::Cell;
+use std::cell::{Cell, RefCell};
 use std::cmp::Ordering;
 use std::fmt;
 use std::ops::{Add, Mul, Neg, Sub};
@@ -57,6 +57,10 @@ pub struct Space {
     /// Operations on models of this space (products and series), the
     /// engine's unit of work.
     ops: Cell<u64>,
+    /// Coefficient vectors of dropped models, reused by new ones: a model
+    /// is made and dropped per operation, and one heap allocation per
+    /// MPFR coefficient was a third of the engine's time.
+    pool: RefCell<Vec<Vec<Float>>>,
 }
 
 impl fmt::Debug for Space {
@@ -116,6 +120,7 @@ impl Space {
             even,
             to_bernstein: conversion(degree),
             ops: Cell::new(0),
+            pool: RefCell::new(Vec::new()),
         })
     }
 
@@ -146,6 +151,29 @@ impl Space {
 
     fn count(&self) {
         self.ops.set(self.ops.get() + 1);
+    }
+
+    /// A coefficient vector of the space's length and precision whose
+    /// values are to be overwritten: a recycled one, or a new one of zeros.
+    fn coefficients(&self) -> Vec<Float> {
+        self.pool
+            .borrow_mut()
+            .pop()
+            .unwrap_or_else(|| vec![Float::new(self.prec); self.len()])
+    }
+
+    /// Takes back the coefficients of a dropped model when they have the
+    /// space's length and precision (a model may hold a coefficient of
+    /// another precision, which a recycled vector must not pass on).
+    fn recycle(&self, coef: Vec<Float>) {
+        const KEPT: usize = 64;
+        let mut pool = self.pool.borrow_mut();
+        if pool.len() < KEPT
+            && coef.len() == self.len()
+            && coef.iter().all(|c| c.prec() == self.prec)
+        {
+            pool.push(coef);
+        }
     }
 
     /// `γₘ` for sums of `m` rounded terms, as an f64 upper bound.
@@ -188,7 +216,6 @@ pub fn abs_up(x: &Float) -> f64 {
 }
 
 /// A Taylor model on the unit box of its [`Space`] (see the module docs).
-#[derive(Clone)]
 pub struct TaylorModel {
     space: Rc<Space>,
     coef: Vec<Float>,
@@ -197,6 +224,31 @@ pub struct TaylorModel {
     /// No enclosure: a division by a model whose range may contain zero, a
     /// series outside its domain, an overflow.
     fault: bool,
+}
+
+impl Clone for TaylorModel {
+    fn clone(&self) -> TaylorModel {
+        let mut coef = self.space.coefficients();
+        for (to, from) in coef.iter_mut().zip(&self.coef) {
+            if to.prec() == from.prec() {
+                to.assign(from);
+            } else {
+                *to = from.clone();
+            }
+        }
+        TaylorModel {
+            space: self.space.clone(),
+            coef,
+            rad: self.rad,
+            fault: self.fault,
+        }
+    }
+}
+
+impl Drop for TaylorModel {
+    fn drop(&mut self) {
+        self.space.recycle(std::mem::take(&mut self.coef));
+    }
 }
 
 impl fmt::Debug for TaylorModel {
@@ -242,9 +294,13 @@ impl TaylorModel {
 
     /// The exact zero of the space.
     pub fn zero(space: &Rc<Space>) -> TaylorModel {
+        let mut coef = space.coefficients();
+        for c in &mut coef {
+            c.assign(0u32);
+        }
         TaylorModel {
             space: space.clone(),
-            coef: vec![Float::new(space.prec); space.len()],
+            coef,
             rad: 0.0,
             fault: false,
         }
@@ -330,7 +386,11 @@ impl TaylorModel {
     /// The model with its constant term removed (`x − x(0)`).
     pub fn without_constant(&self) -> TaylorModel {
         let mut m = self.clone();
-        m.coef[0] = Float::new(self.space.prec);
+        if m.coef[0].prec() == self.space.prec {
+            m.coef[0].assign(0u32);
+        } else {
+            m.coef[0] = Float::new(self.space.prec);
+        }
         m
     }
 
@@ -490,13 +550,12 @@ impl TaylorModel {
         let mut out = TaylorModel::zero(space);
         let mut tmp = Float::new(space.prec);
         let mut truncated = 0.0;
-        let abs_a: Vec<f64> = self.coef.iter().map(abs_up).collect();
-        let abs_b: Vec<f64> = rhs.coef.iter().map(abs_up).collect();
         let mut terms = vec![0usize; m];
         for (i, a) in self.coef.iter().enumerate() {
             if a.is_zero() {
                 continue;
             }
+            let abs_a = abs_up(a);
             for (j, b) in rhs.coef.iter().enumerate() {
                 if b.is_zero() {
                     continue;
@@ -507,7 +566,7 @@ impl TaylorModel {
                         out.coef[k as usize] += &tmp;
                         terms[k as usize] += 1;
                     }
-                    None => truncated = up(truncated + up(abs_a[i] * abs_b[j])),
+                    None => truncated = up(truncated + up(abs_a * abs_up(b))),
                 }
             }
         }

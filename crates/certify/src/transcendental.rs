@@ -498,13 +498,9 @@ fn admissible_up_to(
         uses_variable: true,
         ..d.clone()
     };
-    problem.decided().all(|(j, f)| {
-        if matches!(factors::nonnegative(f, d, &axis), Outcome::Proved { .. }) {
-            return true;
-        }
-        if !vanishing.contains(&j) {
-            return false;
-        }
+    // a function vanishing at `q`: the derivative first (branch and bound
+    // on the function itself is slow next to the face where it is ≡ 0)
+    let decreasing_towards = |f: &Sym| {
         let mut negative = dir > 0;
         for g in f.denominator().keys() {
             match factors::sign_of(&Sym::from_poly(g.clone()), d, &axis, true) {
@@ -522,6 +518,10 @@ fn admissible_up_to(
             factors::nonnegative(&g, &with_t, &axis),
             Outcome::Proved { .. }
         )
+    };
+    problem.decided().all(|(j, f)| {
+        (vanishing.contains(&j) && decreasing_towards(f))
+            || matches!(factors::nonnegative(f, d, &axis), Outcome::Proved { .. })
     })
 }
 

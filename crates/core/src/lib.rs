@@ -36,6 +36,7 @@ pub mod interval;
 pub mod knots;
 pub mod mpfr;
 pub mod number;
+pub mod parallel;
 pub mod param;
 pub mod piecewise;
 mod precision;

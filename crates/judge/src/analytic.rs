@@ -29,8 +29,9 @@ pub struct EndDecision {
 }
 
 /// The maximal interval containing a value inside `printed` (searched one
-/// printed width beyond each end), with the functions' names.
-pub fn search<B: ExactBasis>(basis: &B, fs: &[Sym], printed: &Axis) -> AnalyticRange {
+/// printed width beyond each end), with the functions' names; `proved`
+/// when every function is proved `≥ 0` on the printed range already.
+pub fn search<B: ExactBasis>(basis: &B, fs: &[Sym], printed: &Axis, proved: bool) -> AnalyticRange {
     let domain = basis.domain();
     let problem = Problem::new(fs, &domain, printed.pi);
     let width = Rational::from(&printed.hi - &printed.lo).max(Rational::from(1));
@@ -42,7 +43,13 @@ pub fn search<B: ExactBasis>(basis: &B, fs: &[Sym], printed: &Axis) -> AnalyticR
     );
     let lo_limit = Rational::from(&printed.lo - &width);
     let hi_limit = Rational::from(&printed.hi + &width);
-    maximal_range(&problem, &start, &lo_limit, &hi_limit)
+    maximal_range(
+        &problem,
+        &start,
+        &lo_limit,
+        &hi_limit,
+        proved.then_some(printed),
+    )
 }
 
 /// The whole interval as one line of evidence.
@@ -52,9 +59,15 @@ pub fn describe<B: ExactBasis>(basis: &B, fs: &[Sym], printed: &Axis, r: &Analyt
     let names = basis.function_names();
     let symbol = &basis.parameters()[0].symbol;
     let inside = match &r.inside {
-        Outcome::Proved { boxes } => {
-            format!("the part inside the ends proved ({boxes} interval boxes)")
-        }
+        Outcome::Proved { boxes } => match (&r.inside_given, boxes) {
+            (Some(_), 0) => {
+                "the part inside the ends proved: it lies in the printed range, proved above".into()
+            }
+            (Some(_), _) => format!(
+                "the part inside the ends proved: the printed range above, the rest here ({boxes} interval boxes)"
+            ),
+            (None, _) => format!("the part inside the ends proved ({boxes} interval boxes)"),
+        },
         Outcome::Negative { .. } => "the part inside the ends not proved (a negative value)".into(),
         Outcome::Undecided(why) => format!("the part inside the ends not proved ({why})"),
     };

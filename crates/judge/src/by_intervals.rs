@@ -154,12 +154,23 @@ pub fn all_nonnegative<B: ExactBasis>(
     if let Some(v) = refuted_by_probe(basis, fs, axes, notes) {
         return v;
     }
+    let partners: Vec<Option<usize>> = fs
+        .iter()
+        .enumerate()
+        .map(|(k, (_, f))| (0..fs.len()).find(|&j| j != k && mirrors(basis, f, &fs[j].1)))
+        .collect();
+    // the functions without an earlier mirror image, certified on every
+    // core at once (into the memo; the loop below reads them in order)
+    let first: Vec<usize> = (0..fs.len())
+        .filter(|&k| partners[k].is_none_or(|j| j > k))
+        .collect();
+    trig_core::parallel::map(&first, |&k| memo(basis, &fs[k].0, &fs[k].1, axes));
     let mut status = Status::Holds;
     let mut evidence: Vec<String> = notes.to_vec();
     let mut done: Vec<Option<Status>> = vec![None; fs.len()];
     for (k, (name, f)) in fs.iter().enumerate() {
         // f(x) = g(a + b − x) exactly for a decided g: f ≥ 0 follows from g ≥ 0
-        let partner = (0..fs.len()).find(|&j| j != k && mirrors(basis, f, &fs[j].1));
+        let partner = partners[k];
         if let Some(j) = partner.filter(|&j| done[j] == Some(Status::Holds)) {
             evidence.push(format!(
                 "{name} ≥ 0 follows from {} ≥ 0: {name}(x) = {}(a + b − x) exactly and the reflection maps the domain onto itself",
@@ -273,20 +284,9 @@ fn on_half_line<B: ExactBasis>(
 /// [`nonnegative`], remembered across the claims of one run (the battery
 /// and the file's claims ask the same questions).
 fn memo<B: ExactBasis>(basis: &B, name: &str, f: &Sym, axes: &[Axis]) -> (Status, String) {
-    use std::collections::HashMap;
-    use std::sync::{Mutex, OnceLock};
-    type Cache = Mutex<HashMap<String, (Status, String)>>;
-    static CACHE: OnceLock<Cache> = OnceLock::new();
+    static DECIDED: Memo<(Status, String)> = Memo::new();
     let key = format!("{}|{:?}|{name}|{f}|{axes:?}", basis.id(), basis.domain());
-    let cache = CACHE.get_or_init(|| Mutex::new(HashMap::new()));
-    if let Some(hit) = cache.lock().ok().and_then(|c| c.get(&key).cloned()) {
-        return hit;
-    }
-    let result = nonnegative(basis, name, f, axes);
-    if let Ok(mut c) = cache.lock() {
-        c.insert(key, result.clone());
-    }
-    result
+    DECIDED.get_or_compute(key, || nonnegative(basis, name, f, axes))
 }
 
 /// True when `f(x) = g(a + b − x)` exactly (same parameters).
@@ -372,7 +372,7 @@ fn maximal_uncached<B: ExactBasis>(basis: &B, range: &ParamRange) -> Verdict {
     let values: Vec<Sym> = fs.iter().map(|(_, f)| f.clone()).collect();
     let found = notes
         .is_empty()
-        .then(|| analytic::search(basis, &values, &ax[0]));
+        .then(|| analytic::search(basis, &values, &ax[0], true));
     if let Some(r) = &found {
         evidence.push(analytic::describe(basis, &values, &ax[0], r));
     }

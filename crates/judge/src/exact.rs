@@ -34,7 +34,7 @@ pub fn basis_at(family: Family, atoms: &Atoms<Sym>) -> Vec<Sym> {
 /// a catalog family evaluated at the symbolic atoms, a spec file's formulas
 /// as read (denominators factored as written, so a definition used as a
 /// divisor stays one factor for the certifiers).
-pub trait ExactBasis: Basis {
+pub trait ExactBasis: Basis + Sync {
     /// Every function, exactly.
     fn exact_functions(&self) -> Vec<Sym>;
 
