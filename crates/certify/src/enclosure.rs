@@ -24,6 +24,10 @@ pub const DEGREE: u32 = 4;
 /// Coefficient precision (bits).
 pub const PREC: u32 = 128;
 
+/// The powers `atomᵉ` formed during one evaluation (a few: found by a
+/// scan, without forming a key).
+type Powers = Vec<(String, u32, TaylorModel)>;
+
 /// The atoms of one box as Taylor models.
 pub struct BoxAtoms<'a> {
     domain: &'a Domain,
@@ -136,7 +140,7 @@ impl<'a> BoxAtoms<'a> {
     /// enclosure: a denominator whose range may contain zero). The powers
     /// of the atoms are formed once per evaluation.
     pub fn eval(&self, f: &Sym) -> Option<TaylorModel> {
-        let mut powers: HashMap<(String, u32), TaylorModel> = HashMap::new();
+        let mut powers = Powers::new();
         let mut m = self.eval_poly(f.numerator(), &mut powers)?;
         for (factor, e) in f.denominator() {
             let d = self.eval_poly(factor, &mut powers)?;
@@ -150,7 +154,7 @@ impl<'a> BoxAtoms<'a> {
     fn eval_poly(
         &self,
         p: &Poly,
-        powers: &mut HashMap<(String, u32), TaylorModel>,
+        powers: &mut Powers,
     ) -> Option<TaylorModel> {
         let mut sum = self.tau.int(0);
         for (monomial, q) in p.terms() {
@@ -168,9 +172,9 @@ impl<'a> BoxAtoms<'a> {
         &self,
         name: &str,
         e: u32,
-        powers: &mut HashMap<(String, u32), TaylorModel>,
+        powers: &mut Powers,
     ) -> Option<TaylorModel> {
-        if let Some(m) = powers.get(&(name.to_string(), e)) {
+        if let Some((.., m)) = powers.iter().find(|(n, k, _)| *k == e && n == name) {
             return Some(m.clone());
         }
         let m = if e == 1 {
@@ -181,7 +185,7 @@ impl<'a> BoxAtoms<'a> {
         } else {
             self.power(name, e - 1, powers)? * &self.atom(name)?
         };
-        powers.insert((name.to_string(), e), m.clone());
+        powers.push((name.to_string(), e, m.clone()));
         Some(m)
     }
 
