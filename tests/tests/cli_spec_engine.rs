@@ -7,7 +7,7 @@
 use std::path::PathBuf;
 
 use rug::Float;
-use trig_e2e::{example, stdout_ok};
+use trig_e2e::{example, stdout_ok, usage_error};
 
 /// A shipped example with `from` replaced by `to` (a narrower or wider
 /// range), written for one test.
@@ -263,6 +263,63 @@ fn squares_have_exact_ends() {
         "{e}"
     );
     assert_eq!(verdict(&sq, "SQ-wide"), "fails");
+    // the maximal range printed with its algebraic end: compared exactly
+    // with the end of the maximal interval
+    let (v, e) = claim(&sq, "SQ-exact");
+    assert_eq!(v, "holds", "{e}");
+    assert!(
+        e.contains("the same number, exactly, and alike included or excluded"),
+        "{e}"
+    );
+    let (v, e) = claim(&sq, "SQ-exact-open");
+    assert_eq!(v, "fails", "{e}");
+    assert!(
+        e.contains("but included in one and excluded in the other"),
+        "{e}"
+    );
+    let (v, e) = claim(&sq, "SQ-exact-wide");
+    assert_eq!(v, "fails", "{e}");
+    assert!(e.contains("which lies inside the printed range:"), "{e}");
+    let (v, e) = claim(&sq, "SQ-exact-tp");
+    assert_eq!(v, "holds", "{e}");
+    assert!(e.contains("which contains the printed range:"), "{e}");
+}
+
+#[test]
+fn a_range_end_beyond_the_rationals_is_read_exactly_or_refused_clearly() {
+    let sq = std::fs::read_to_string(example("squares-han.toml")).expect("the example");
+    let with = |range: &str, check: &str| {
+        let text = format!(
+            "{sq}\n[[claims]]\nid = \"X\"\nsource = \"test\"\nstatement = \"x\"\ncheck = \"{check}\"\nrange = \"{range}\"\n"
+        );
+        crate::cli_hostile_round2::scratch(&format!("exact-end-{}.toml", text.len()), &text)
+    };
+    // an end just below the exact end: holds on the rational range outside
+    // it; the identity check takes no range at all
+    let inside = with("[-1, 2 + 2*sqrt(2) - 1/1000]", "nonnegative");
+    assert_eq!(verdict(&inside, "X"), "holds");
+    // up to the exact end: the rational ranges on either side differ, the
+    // exact comparison decides
+    let (v, e) = claim(&with("[-1, 2 + 2*sqrt(2)]", "nonnegative"), "X");
+    assert_eq!(v, "holds", "{e}");
+    assert!(e.contains("which contains the printed range: fails"), "{e}");
+    assert!(
+        e.contains("which lies inside the printed range: holds"),
+        "{e}"
+    );
+    assert!(e.contains("the same number, exactly: inside"), "{e}");
+    let unity = with("[-1, 2 + 2*sqrt(2)]", "unity");
+    let err = usage_error(&["audit", "--spec", &unity, "--claim", "X"]);
+    assert!(
+        err.contains("a range with ends beyond the rationals is taken by nonnegative"),
+        "{err}"
+    );
+    let garbled = with("[-1, 2 + 2*sqrt(x)]", "nonnegative");
+    let err = usage_error(&["audit", "--spec", &garbled, "--claim", "X"]);
+    assert!(
+        err.contains("exact numbers with square roots or pi"),
+        "{err}"
+    );
 }
 
 #[test]

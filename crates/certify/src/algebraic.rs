@@ -46,6 +46,57 @@ impl Algebraic {
         a
     }
 
+    /// `a + b√k` (`k ≥ 1` an integer): a root of `(x − a)² − b²k`, the
+    /// larger one for `b > 0`, the smaller for `b < 0` (`a` itself for
+    /// `b = 0` or a square `k`).
+    pub fn surd(a: &Rational, b: &Rational, k: u32) -> Algebraic {
+        let shifted = UPoly::new(vec![-a.clone(), Rational::from(1)]);
+        let poly = shifted
+            .mul(&shifted)
+            .sub(&UPoly::new(vec![Rational::from(b * b) * k]));
+        let bound = poly.root_bound();
+        let roots = poly.isolate(&-bound.clone(), &bound);
+        let pick = if *b < 0 { roots.first() } else { roots.last() };
+        let (lo, hi) = pick.cloned().unwrap_or_else(|| (a.clone(), a.clone()));
+        Algebraic::new(&poly, lo, hi)
+    }
+
+    /// The exact order of two real algebraic numbers: equal when their
+    /// polynomials have a common root in both isolating intervals (then it
+    /// is the only root of each there), otherwise the intervals are
+    /// narrowed until they are apart.
+    pub fn cmp(&mut self, other: &mut Algebraic) -> std::cmp::Ordering {
+        use std::cmp::Ordering;
+        if let Some(q) = other.rational.clone() {
+            return self.cmp_rational(&q);
+        }
+        if let Some(q) = self.rational.clone() {
+            return other.cmp_rational(&q).reverse();
+        }
+        let common = self.poly.gcd(&other.poly);
+        let (lo, hi) = (
+            (&self.lo).max(&other.lo).clone(),
+            (&self.hi).min(&other.hi).clone(),
+        );
+        if common.degree() > 0 && lo <= hi && common.count_roots(&lo, &hi) > 0 {
+            return Ordering::Equal;
+        }
+        loop {
+            if self.hi < other.lo {
+                return Ordering::Less;
+            }
+            if other.hi < self.lo {
+                return Ordering::Greater;
+            }
+            let (w1, w2) = (
+                Rational::from(&self.hi - &self.lo) / 2u32,
+                Rational::from(&other.hi - &other.lo) / 2u32,
+            );
+            self.refine(&w1);
+            other.refine(&w2);
+        }
+    }
+
     /// True when the isolating interval is a point (the root itself).
     fn is_point(&self) -> bool {
         self.lo == self.hi
@@ -234,6 +285,36 @@ mod tests {
         let c = UPoly::new(vec![q(-2, 1), q(0, 1), q(0, 1), q(1, 1)]);
         let a = Algebraic::new(&c, q(1, 1), q(2, 1));
         assert!(a.rational.is_none() && a.minimal);
+    }
+
+    #[test]
+    fn surds_are_ordered_exactly() {
+        use std::cmp::Ordering::{Equal, Greater, Less};
+        // 2 + 2√2 against the root of the boundary polynomial
+        // 3λ⁶ − 10λ⁵ − 32λ⁴ + 32λ³ + 80λ² + 32λ in [4, 5]: the same number
+        let mut printed = Algebraic::surd(&q(2, 1), &q(2, 1), 2);
+        let c = |k: i64| q(k, 1);
+        let boundary = UPoly::new(vec![c(0), c(32), c(80), c(32), c(-32), c(-10), c(3)]);
+        let iv = boundary.isolate(&q(4, 1), &q(5, 1));
+        let mut end = Algebraic::new(&boundary, iv[0].0.clone(), iv[0].1.clone());
+        assert_eq!(printed.cmp(&mut end), Equal);
+        assert_eq!(end.cmp(&mut printed), Equal);
+        // 2 − 2√2 < 0 < (1 + √5)/2 < 2 = 2 + 0·√3; √2 + 1 against √3 + 1
+        let mut below = Algebraic::surd(&q(2, 1), &q(-2, 1), 2);
+        assert_eq!(below.cmp_rational(&q(0, 1)), Less);
+        let mut golden = Algebraic::surd(&q(1, 2), &q(1, 2), 5);
+        assert_eq!(golden.cmp(&mut below), Greater);
+        let mut two = Algebraic::surd(&q(2, 1), &q(0, 1), 3);
+        assert_eq!(two.rational, Some(q(2, 1)));
+        assert_eq!(golden.cmp(&mut two), Less);
+        let mut r2 = Algebraic::surd(&q(1, 1), &q(1, 1), 2);
+        let mut r3 = Algebraic::surd(&q(1, 1), &q(1, 1), 3);
+        assert_eq!(r2.cmp(&mut r3), Less);
+        assert_eq!(r3.cmp(&mut r2), Greater);
+        // a root close to but not equal to 2 + 2√2
+        let near = UPoly::new(vec![q(-48_284_271, 10_000_000), q(1, 1)]);
+        let mut n = Algebraic::new(&near, q(4, 1), q(5, 1));
+        assert_eq!(printed.cmp(&mut n), Greater);
     }
 
     /// The boundary polynomial of `examples/squares-han.toml`'s upper end:

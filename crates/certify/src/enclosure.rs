@@ -151,11 +151,7 @@ impl<'a> BoxAtoms<'a> {
         (!m.is_fault()).then_some(m)
     }
 
-    fn eval_poly(
-        &self,
-        p: &Poly,
-        powers: &mut Powers,
-    ) -> Option<TaylorModel> {
+    fn eval_poly(&self, p: &Poly, powers: &mut Powers) -> Option<TaylorModel> {
         let mut sum = self.tau.int(0);
         for (monomial, q) in p.terms() {
             let mut term = self.tau.rational(&q.to_rational());
@@ -168,12 +164,7 @@ impl<'a> BoxAtoms<'a> {
     }
 
     /// `atomᵉ`, from the cache or by one product with a cached power.
-    fn power(
-        &self,
-        name: &str,
-        e: u32,
-        powers: &mut Powers,
-    ) -> Option<TaylorModel> {
+    fn power(&self, name: &str, e: u32, powers: &mut Powers) -> Option<TaylorModel> {
         if let Some((.., m)) = powers.iter().find(|(n, k, _)| *k == e && n == name) {
             return Some(m.clone());
         }

@@ -28,6 +28,7 @@ pub mod curve;
 pub mod domain;
 pub mod endpoint;
 pub mod exact;
+pub mod exact_ends;
 pub mod exceptional;
 pub mod independence;
 pub mod join;

@@ -218,6 +218,10 @@ pub struct Given {
     /// Ranges whose ends are linear in other parameters (a triangle
     /// `λ ∈ [0, 4]`, `μ ∈ [0, 4 − λ]`).
     pub between: Vec<Between>,
+    /// Ranges with an end beyond the rationals (`[-1, 2 + 2*sqrt(2)]`):
+    /// decided through rational ranges next to them and, at the end
+    /// itself, exactly (`trig_judge::exact_ends`).
+    pub exact: Vec<crate::ExactRange>,
 }
 
 /// A parameter between two ends linear in the others: `μ ∈ [lo, hi]`.

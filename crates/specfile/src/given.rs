@@ -46,7 +46,10 @@ pub enum GivenError {
 impl Given {
     /// True when the claim fixes nothing and narrows nothing.
     pub fn is_empty(&self) -> bool {
-        self.fixed.is_empty() && self.ranges.is_empty() && self.between.is_empty()
+        self.fixed.is_empty()
+            && self.ranges.is_empty()
+            && self.between.is_empty()
+            && self.exact.is_empty()
     }
 
     /// `λ = 0, μ ∈ [0, 1]` in the parameters' printed symbols.
@@ -64,6 +67,11 @@ impl Given {
                 self.ranges
                     .iter()
                     .map(|(n, r)| format!("{} ∈ {r}", symbol(n))),
+            )
+            .chain(
+                self.exact
+                    .iter()
+                    .map(|r| format!("{} ∈ {}", symbol(&r.name), r.text)),
             )
             .chain(self.between.iter().map(|b| {
                 format!(

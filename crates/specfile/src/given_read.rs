@@ -8,6 +8,7 @@ use trig_symbolic::Sym;
 
 use crate::check::{Between, Fixed, Given};
 use crate::error::{Result, SpecError};
+use crate::exact_range::ExactRange;
 use crate::raw::RawClaim;
 use crate::source::Source;
 use crate::spec::Spec;
@@ -27,10 +28,23 @@ pub(crate) fn one_param_range(
             "`range` is the range of the only parameter: with several parameters give `ranges = { NAME = \"[a, b]\", … }` (a one-point range `[v, v]` or `at = { NAME = \"v\" }` fixes a value)".into(),
         );
     }
-    let range =
-        ParamRange::parse(r.get_ref()).or_else(|m| src.invalid(r.span(), "claims.range", m))?;
+    let range = match ParamRange::parse(r.get_ref()) {
+        Ok(range) => range,
+        // ends beyond the rationals: decided through [`given`]
+        Err(_) if ExactRange::read(spec, &spec.params[0].name, r.get_ref()).is_some() => {
+            return Ok(None);
+        }
+        Err(m) => return src.invalid(r.span(), "claims.range", beyond_rationals(&m)),
+    };
     // a one-point range fixes the value ([`given`]): no range is left
     Ok(point_of(&range).is_none().then_some(range))
+}
+
+/// The message of an unreadable range, with the exact ends it may have.
+fn beyond_rationals(message: &str) -> String {
+    format!(
+        "{message}; ends may also be exact numbers with square roots or pi, e.g. [-1, 2 + 2*sqrt(2)]"
+    )
 }
 
 /// `v` for the one-point range `[v, v]`, written as read.
@@ -135,20 +149,40 @@ pub(crate) fn given(src: &Source<'_>, spec: &Spec, c: &RawClaim, kind: &str) -> 
         let [p] = spec.params.as_slice() else {
             return one_param_range(src, spec, &c.range).map(|_| out);
         };
-        let range =
-            ParamRange::parse(r.get_ref()).or_else(|m| src.invalid(r.span(), "claims.range", m))?;
-        match point_of(&range) {
-            Some(point) => fix(&mut out, p.name.clone(), &point, r.span(), "range")?,
+        let range = match ParamRange::parse(r.get_ref()) {
+            Ok(range) => Some(range),
+            Err(m) => {
+                match ExactRange::read(spec, &p.name, r.get_ref()) {
+                    Some(exact) if RANGED.contains(&kind) && c.quantifier.is_none() => {
+                        out.exact.push(exact);
+                        None
+                    }
+                    Some(_) => {
+                        return src.invalid(
+                        r.span(),
+                        "claims.range",
+                        format!("a range with ends beyond the rationals is taken by {} (without `for`)", RANGED.join(", ")),
+                    );
+                    }
+                    None => return src.invalid(r.span(), "claims.range", beyond_rationals(&m)),
+                }
+            }
+        };
+        match range.as_ref().map(|r| (r, point_of(r))) {
+            None => {}
+            Some((_, Some(point))) => fix(&mut out, p.name.clone(), &point, r.span(), "range")?,
             // a quantified claim (`for = "some value"`) is about its range
-            None if c.quantifier.is_some() => out.ranges.push((p.name.clone(), range)),
-            None if !RANGED.contains(&kind) => {
+            Some((range, None)) if c.quantifier.is_some() => {
+                out.ranges.push((p.name.clone(), range.clone()));
+            }
+            Some((_, None)) if !RANGED.contains(&kind) => {
                 return src.invalid(
                     r.span(),
                     "claims.range",
                     format!("`{kind}` takes no range of values (but with `for = \"some value\"` or `\"no value\"`); a one-point range `[v, v]` fixes the value"),
                 );
             }
-            None => {}
+            Some((_, None)) => {}
         }
     }
     // `ranges` as written, then those a `region` of inequalities states
@@ -211,15 +245,22 @@ pub(crate) fn given(src: &Source<'_>, spec: &Spec, c: &RawClaim, kind: &str) -> 
                     out.between.push(b);
                     continue;
                 }
-                None => {
-                    return src.invalid(
-                        span,
-                        &format!("claims.{field}"),
-                        format!(
-                            "{m}; or ends linear in the other parameters, e.g. [0, 4 - lambda]"
-                        ),
-                    );
-                }
+                None => match ExactRange::read(spec, &name, &text) {
+                    Some(exact) if RANGED.contains(&kind) && c.quantifier.is_none() => {
+                        out.exact.push(exact);
+                        continue;
+                    }
+                    _ => {
+                        return src.invalid(
+                            span,
+                            &format!("claims.{field}"),
+                            format!(
+                                "{m}; or ends linear in the other parameters, e.g. [0, 4 - lambda], or exact numbers with square roots or pi (for {}), e.g. [-1, 2 + 2*sqrt(2)]",
+                                RANGED.join(", ")
+                            ),
+                        );
+                    }
+                },
             },
         };
         match point_of(&range) {

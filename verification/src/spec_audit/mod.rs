@@ -268,6 +268,9 @@ pub fn decide(spec: &Spec, claim: &SpecClaim) -> Verdict {
     if claim.given.is_empty() {
         return decide_check(spec, &claim.check);
     }
+    if !claim.given.exact.is_empty() {
+        return exact_ends(spec, claim);
+    }
     let given = claim.given.describe(spec);
     match claim.given.apply(spec, &claim.check) {
         Ok((fixed, check)) => {
@@ -286,6 +289,49 @@ pub fn decide(spec: &Spec, claim: &SpecClaim) -> Verdict {
             v
         }
         Err(e) => Verdict::not_checkable(format!("the claim fixes {given}, where {e}")),
+    }
+}
+
+/// A claim over ranges with ends beyond the rationals
+/// (`trig_judge::exact_ends`): decided over rational ranges put in their
+/// place, and for nonnegativity (the convex hull's part of it with unity
+/// beside) at the printed end exactly.
+fn exact_ends(spec: &Spec, claim: &SpecClaim) -> Verdict {
+    let with = |check: Check| {
+        move |ranges: &[(String, trig_core::ParamRange)]| {
+            let mut c = claim.clone();
+            c.check = check.clone();
+            c.given.exact.clear();
+            c.given.ranges.extend(ranges.iter().cloned());
+            decide(spec, &c)
+        }
+    };
+    let nonnegativity = |maximal: bool| {
+        trig_judge::exact_ends::decide(
+            spec,
+            &claim.given.exact,
+            Some(maximal),
+            &with(Check::Nonnegative {
+                range: None,
+                maximal,
+            }),
+        )
+    };
+    match &claim.check {
+        Check::Nonnegative { maximal, .. } => nonnegativity(*maximal),
+        Check::ConvexHull { maximal, .. } => Verdict::all(
+            trig_judge::certificate::CERTIFIED,
+            vec![
+                ("partition of unity".into(), trig_judge::unity::unity(spec)),
+                ("nonnegativity".into(), nonnegativity(*maximal)),
+            ],
+        ),
+        Check::TotalPositivity { maximal: true, .. } => Verdict::not_checkable(
+            "a maximal set of total positivity against a printed end beyond the rationals is not decided (exact ends are compared for nonnegativity only)",
+        ),
+        check => {
+            trig_judge::exact_ends::decide(spec, &claim.given.exact, None, &with(check.clone()))
+        }
     }
 }
 
