@@ -314,6 +314,12 @@ fn a_range_end_beyond_the_rationals_is_read_exactly_or_refused_clearly() {
         err.contains("a range with ends beyond the rationals is taken by nonnegative"),
         "{err}"
     );
+    let reversed = with("[2 + 2*sqrt(2), -1]", "nonnegative");
+    let err = usage_error(&["audit", "--spec", &reversed, "--claim", "X"]);
+    assert!(err.contains("the range is empty"), "{err}");
+    let over_zero = with("[-1, pi/0]", "nonnegative");
+    let err = usage_error(&["audit", "--spec", &over_zero, "--claim", "X"]);
+    assert!(err.contains("division by zero"), "{err}");
     let garbled = with("[-1, 2 + 2*sqrt(x)]", "nonnegative");
     let err = usage_error(&["audit", "--spec", &garbled, "--claim", "X"]);
     assert!(

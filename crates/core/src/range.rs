@@ -54,7 +54,13 @@ fn pi_multiple(s: &str) -> Result<Option<Rational>, String> {
     };
     let rest = after.trim_start_matches('*');
     let value = match rest.strip_prefix('/') {
-        Some(d) => coef / parse_exact(d).map_err(|e| e.to_string())?,
+        Some(d) => {
+            let d = parse_exact(d).map_err(|e| e.to_string())?;
+            if d == 0 {
+                return Err(format!("`{s}`: division by zero"));
+            }
+            coef / d
+        }
         None if rest.is_empty() => coef,
         None => coef * parse_exact(rest).map_err(|e| e.to_string())?,
     };
@@ -283,6 +289,12 @@ mod tests {
 
     #[test]
     fn bad_ranges_are_refused_with_a_reason() {
+        // a multiple of π over zero (it panicked in the division)
+        assert!(
+            ParamRange::parse("[0, pi/0]")
+                .unwrap_err()
+                .contains("division by zero")
+        );
         assert!(
             ParamRange::parse("[1, -2]")
                 .unwrap_err()

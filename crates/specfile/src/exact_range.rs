@@ -154,6 +154,26 @@ impl ExactRange {
         ordered.then_some(range)
     }
 
+    /// The value of a one-point range `[v, v]`, as written (it fixes the
+    /// value, like a rational one).
+    pub fn point(&self) -> Option<String> {
+        match (&self.lo, &self.hi) {
+            (
+                ExactEnd::Finite {
+                    value: a,
+                    open: false,
+                    text,
+                },
+                ExactEnd::Finite {
+                    value: b,
+                    open: false,
+                    ..
+                },
+            ) if (a.clone() - b).is_zero() => Some(text.clone()),
+            _ => None,
+        }
+    }
+
     /// Reads `[a, b]`, `(a, b]`… whose ends are numbers with `pi` or
     /// square roots (at least one end not rational); `None` when the text is
     /// not such a range.
@@ -260,8 +280,10 @@ mod tests {
         for text in ["[0, 1]", "[0, 2 + x]", "[+inf, 1]", "0, 1"] {
             assert!(ExactRange::read(&spec, "lambda", text).is_none(), "{text}");
         }
-        // an empty range after rounding
-        let empty = ExactRange::read(&spec, "lambda", "[sqrt(2), sqrt(2)]").expect("read");
-        assert!(empty.rounded(false).is_none());
+        // a point fixes the value; reversed ends leave nothing inside
+        let point = ExactRange::read(&spec, "lambda", "[sqrt(2), 2/sqrt(2)]").expect("read");
+        assert_eq!(point.point().as_deref(), Some("sqrt(2)"));
+        let reversed = ExactRange::read(&spec, "lambda", "[sqrt(3), sqrt(2)]").expect("read");
+        assert!(reversed.point().is_none() && reversed.rounded(false).is_none());
     }
 }

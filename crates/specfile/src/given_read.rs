@@ -40,6 +40,9 @@ pub(crate) fn one_param_range(
     Ok(point_of(&range).is_none().then_some(range))
 }
 
+/// A range with ends beyond the rationals that holds no interval.
+const EMPTY: &str = "the range is empty: its ends are reversed or nearer than 10⁻¹² (a one-point range [v, v] fixes the value)";
+
 /// The message of an unreadable range, with the exact ends it may have.
 fn beyond_rationals(message: &str) -> String {
     format!(
@@ -153,6 +156,14 @@ pub(crate) fn given(src: &Source<'_>, spec: &Spec, c: &RawClaim, kind: &str) -> 
             Ok(range) => Some(range),
             Err(m) => {
                 match ExactRange::read(spec, &p.name, r.get_ref()) {
+                    Some(exact) if exact.point().is_some() => {
+                        let point = exact.point().unwrap_or_default();
+                        fix(&mut out, p.name.clone(), &point, r.span(), "range")?;
+                        None
+                    }
+                    Some(exact) if exact.rounded(false).is_none() => {
+                        return src.invalid(r.span(), "claims.range", EMPTY.into());
+                    }
                     Some(exact) if RANGED.contains(&kind) && c.quantifier.is_none() => {
                         out.exact.push(exact);
                         None
@@ -246,6 +257,14 @@ pub(crate) fn given(src: &Source<'_>, spec: &Spec, c: &RawClaim, kind: &str) -> 
                     continue;
                 }
                 None => match ExactRange::read(spec, &name, &text) {
+                    Some(exact) if exact.point().is_some() => {
+                        let point = exact.point().unwrap_or_default();
+                        fix(&mut out, name, &point, span, field)?;
+                        continue;
+                    }
+                    Some(exact) if exact.rounded(false).is_none() => {
+                        return src.invalid(span, &format!("claims.{field}"), EMPTY.into());
+                    }
                     Some(exact) if RANGED.contains(&kind) && c.quantifier.is_none() => {
                         out.exact.push(exact);
                         continue;
