@@ -19,7 +19,7 @@ use crate::error::{CoreError, Result};
 use crate::evaluation::{Computation, named_affine};
 use crate::families::thesis::{surface_matrix_a, surface_row_t};
 use crate::net::ControlNet;
-use crate::scalar::Real;
+use crate::scalar::{Real, Ring};
 
 /// One direction of a surface: a basis with its exact parameters (in the
 /// order of [`crate::Described::param_names`]).
@@ -112,7 +112,7 @@ impl<B: Basis> TensorSurface<B> {
 
     /// `Σ_i Σ_j c_{i,j} P_{i,j}` with `c_{i,j} = bu_i bv_j` (times `w_{i,j}`
     /// over the weighted sum for a rational surface).
-    pub fn combine<T: Real>(&self, bu: &[T], bv: &[T]) -> Result<[T; 3]> {
+    pub fn combine<T: Ring>(&self, bu: &[T], bv: &[T]) -> Result<[T; 3]> {
         let like = &bu[0];
         let mut sum: [T; 3] = std::array::from_fn(|_| like.int(0));
         let mut den = like.int(0);
@@ -146,6 +146,9 @@ impl<B: Basis> TensorSurface<B> {
 pub struct SurfaceAt<'a, B> {
     surface: &'a TensorSurface<B>,
     at: [(Affine, String); 2],
+    /// Coordinates known to be exactly 0 (decided by the caller in the
+    /// exact ring): computed as an exact 0.
+    zero: [bool; 3],
 }
 
 impl<'a, B: Basis> SurfaceAt<'a, B> {
@@ -162,7 +165,20 @@ impl<'a, B: Basis> SurfaceAt<'a, B> {
                 crate::certified::check_domain(&dir.basis.domain(), x, &dir.params, text)?;
             }
         }
-        Ok(SurfaceAt { surface, at })
+        Ok(SurfaceAt {
+            surface,
+            at,
+            zero: [false; 3],
+        })
+    }
+
+    /// The same with the coordinates marked in `zero` known to be exactly
+    /// 0 (decided in the exact ring, which this crate does not hold):
+    /// computed as an exact 0 in every arithmetic, no precision spent on
+    /// them.
+    pub fn with_zeros(mut self, zero: [bool; 3]) -> Self {
+        self.zero = zero;
+        self
     }
 }
 
@@ -192,7 +208,12 @@ impl<B: Basis> Computation for SurfaceAt<'_, B> {
         let [u, v] = [&self.at[0].0, &self.at[1].0].map(|a| a.eval(&zero, &[]));
         // the domain was checked exactly in `new`: an enclosure of an end
         // point may straddle it
-        Ok(self.surface.eval(&u, &v, true)?.to_vec())
+        let point = self.surface.eval(&u, &v, true)?;
+        Ok(point
+            .into_iter()
+            .zip(self.zero)
+            .map(|(x, z)| if z { zero.clone() } else { x })
+            .collect())
     }
 }
 
