@@ -390,3 +390,75 @@ fn the_corner_table_reproduces_the_printed_terminal_properties() {
         ),
     ]);
 }
+
+/// The line of a forced point in `join` text output.
+fn forced<'a>(out: &'a str, point: &str) -> &'a str {
+    out.lines()
+        .find_map(|l| l.trim().strip_prefix(&format!("{point} = ")))
+        .unwrap_or_else(|| panic!("no {point} in {out}"))
+}
+
+#[test]
+fn the_surface_join_is_the_printed_theorems_column_by_column() {
+    // Theorem 5.1 (5.13): P₅ = 2P₃ − P₂ with one m; the cylinder's C²
+    // points (Section 5.4.3): Q₂ = P₁ − (4m + 4)P₂ + (4m + 4)P₃
+    let out = stdout_ok(&["join", "thesis-cubic", "--surface", "--kind", "c2"]);
+    for j in 0..4 {
+        assert_eq!(
+            forced(&out, &format!("Q₀{}", sub(j))),
+            format!("P₃{}", sub(j))
+        );
+        assert_eq!(
+            forced(&out, &format!("Q₁{}", sub(j))),
+            format!("−P₂{0} + 2·P₃{0}", sub(j))
+        );
+        assert_eq!(
+            forced(&out, &format!("Q₂{}", sub(j))),
+            format!("P₁{0} + (−4·m − 4)·P₂{0} + (4·m + 4)·P₃{0}", sub(j))
+        );
+    }
+    assert!(out.contains("across u: u = 1 of the first patch is u = 0 of the second"));
+    // Theorem 5.2 (5.25): P₅ = α(P₃ − P₂) + P₃, here across v (rows)
+    let out = stdout_ok(&[
+        "join",
+        "thesis-cubic",
+        "--surface",
+        "--kind",
+        "g1",
+        "--across",
+        "v",
+    ]);
+    assert_eq!(forced(&out, "Q₂₁"), "−α·P₂₂ + (α + 1)·P₂₃");
+    assert_eq!(forced(&out, "Q₂₀"), "P₂₃");
+    // another basis in v changes nothing of a join across u: only the count
+    let out = stdout_ok(&[
+        "join",
+        "bernstein3",
+        "--surface",
+        "--kind",
+        "c1",
+        "--v-family",
+        "thesis-cubic",
+        "--format",
+        "json",
+    ]);
+    assert!(out.contains("\"v\": \"thesis-cubic\""), "{out}");
+    assert!(out.contains("\"point\": \"Q13\""), "{out}");
+    assert_errors(&[(
+        &[
+            "join",
+            "thesis-cubic",
+            "--surface",
+            "--kind",
+            "c1",
+            "--v-param",
+            "m=0",
+        ],
+        "drop --v-param",
+    )]);
+}
+
+/// The subscript digit of `j`.
+fn sub(j: usize) -> char {
+    char::from_u32(0x2080 + j as u32).expect("a subscript digit")
+}
