@@ -190,6 +190,7 @@ struct Evaluation {
 }
 
 pub fn run(args: &EvalArgs) -> CmdResult {
+    args.surface.check()?;
     let arithmetic = arithmetic_of(args.prec, args.digits)?;
     if args.surface.surface {
         return surface::run(args, arithmetic);

@@ -15,7 +15,7 @@ use crate::format;
 use crate::names::{names_of, segment_copies};
 use trig_specfile::AnyBasis;
 
-mod surface;
+pub mod surface;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum ParamsArg {
@@ -93,6 +93,7 @@ fn letter(points: &[Sym]) -> String {
 }
 
 pub fn run(args: &JoinArgs) -> CmdResult {
+    args.surface.check()?;
     let family = AnyBasis::open(args.family.as_deref(), args.spec.as_deref())?;
     let kind: JoinKind = args
         .kind

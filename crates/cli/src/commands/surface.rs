@@ -16,31 +16,55 @@ use trig_specfile::AnyBasis;
 use super::eval::param_pairs;
 use super::{CliError, range_hint};
 
-/// The options of a tensor-product surface.
+/// The options of a tensor-product surface in `eval`, `table`, `join`.
 #[derive(Debug, Clone, Args)]
 pub struct SurfaceArgs {
     /// Work on the tensor-product surface S(u, v) = Σ Σ P_ij B_i(u) B_j(v)
     /// (rational with weights) instead of the basis (docs/surfaces.md).
     #[arg(long)]
     pub surface: bool,
-    /// The v direction's basis: a catalog family id (default: the u basis).
-    #[arg(
-        long,
-        value_name = "ID",
-        requires = "surface",
-        conflicts_with = "v_spec"
-    )]
-    pub v_family: Option<String>,
-    /// The v direction's basis from a spec file (default: the u basis).
-    #[arg(long, value_name = "FILE", requires = "surface")]
-    pub v_spec: Option<PathBuf>,
-    /// A shape parameter of the v direction as name=value (default: the
-    /// --param values when both directions have the same basis).
-    #[arg(long = "v-param", value_name = "NAME=VALUE", requires = "surface")]
-    pub v_params: Vec<String>,
+    #[command(flatten)]
+    pub v: VArgs,
 }
 
 impl SurfaceArgs {
+    /// The `v` options go with `--surface`.
+    pub fn check(&self) -> Result<(), CliError> {
+        if !self.surface && self.v.given() {
+            return Err(CliError::Usage(
+                "--v-family, --v-spec and --v-param describe a surface: they go with --surface"
+                    .into(),
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// The `v` direction of a surface.
+#[derive(Debug, Clone, Args)]
+pub struct VArgs {
+    /// The v direction's basis: a catalog family id (default: the u basis).
+    #[arg(long, value_name = "ID", conflicts_with = "v_spec")]
+    pub v_family: Option<String>,
+    /// The v direction's basis from a spec file (default: the u basis).
+    #[arg(long, value_name = "FILE")]
+    pub v_spec: Option<PathBuf>,
+    /// A shape parameter of the v direction as name=value (default: the
+    /// --param values when both directions have the same basis).
+    #[arg(
+        long = "v-param",
+        value_name = "NAME=VALUE",
+        allow_hyphen_values = true
+    )]
+    pub v_params: Vec<String>,
+}
+
+impl VArgs {
+    /// True when any `v` option is given.
+    pub fn given(&self) -> bool {
+        self.v_family.is_some() || self.v_spec.is_some() || !self.v_params.is_empty()
+    }
+
     /// The `v` basis: the one named, else the `u` basis.
     pub fn v_basis(&self, u: &AnyBasis) -> Result<AnyBasis, CliError> {
         if self.v_family.is_none() && self.v_spec.is_none() {

@@ -139,6 +139,7 @@ pub fn run(args: &TableArgs) -> CmdResult {
             "--standalone writes a whole LaTeX document: it goes with --format tex".into(),
         ));
     }
+    args.surface.check()?;
     let family = AnyBasis::open(args.family.as_deref(), args.spec.as_deref())?;
     let wrt = wrt_of(&args.wrt, &family)?;
     let id = family.id();

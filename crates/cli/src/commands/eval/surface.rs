@@ -30,6 +30,7 @@ pub fn run(args: &EvalArgs, arithmetic: Arithmetic) -> CmdResult {
     let u = AnyBasis::open(args.family.as_deref(), args.spec.as_deref())?;
     let directions = args
         .surface
+        .v
         .directions(&u, &args.params, args.allow_outside_range)?;
     let surface = surface::open(directions, net)?;
     let at = parse_uv(args.at.as_deref().unwrap_or_default())?;
@@ -68,7 +69,7 @@ pub fn run(args: &EvalArgs, arithmetic: Arithmetic) -> CmdResult {
             } else {
                 ""
             },
-            args.surface.v_text(&args.params)
+            args.surface.v.v_text(&args.params)
         )),
         bits: e.bits,
     };

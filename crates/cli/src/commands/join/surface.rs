@@ -17,7 +17,10 @@ use trig_deriv::JoinKind;
 use trig_specfile::AnyBasis;
 use trig_symbolic::Sym;
 
-use super::{JoinArgs, JoinFormat, Solved, json_value, solve, tex, text};
+use rug::Rational;
+use trig_core::net::ControlNet;
+
+use super::{JoinArgs, JoinFormat, ParamsArg, Solved, json_value, solve, tex, text};
 use crate::commands::{CliError, CmdResult};
 use crate::format;
 
@@ -31,8 +34,8 @@ pub enum Across {
 }
 
 pub fn run(args: &JoinArgs, u: AnyBasis, kind: JoinKind) -> CmdResult {
-    let v = args.surface.v_basis(&u)?;
-    if !args.surface.v_params.is_empty() {
+    let v = args.surface.v.v_basis(&u)?;
+    if !args.surface.v.v_params.is_empty() {
         return Err(CliError::Usage(
             "join --surface: the parameters stay symbols (the forced points hold for every value); drop --v-param".into(),
         ));
@@ -80,22 +83,25 @@ pub fn run(args: &JoinArgs, u: AnyBasis, kind: JoinKind) -> CmdResult {
     })
 }
 
+/// The name of the control point in net row `row`, column `column`
+/// (`P12`, or `P1_2` when an index may have two digits).
+fn point_name(letter: &str, row: usize, column: usize, wide: bool) -> String {
+    if wide {
+        format!("{letter}{row}_{column}")
+    } else {
+        format!("{letter}{row}{column}")
+    }
+}
+
 /// The curve join written for every column (across `u`) or row (across
 /// `v`) of the nets: `P_i → P_ij`, `Q_i → Q_ij` (or `P_ji`, `Q_ji`).
 fn by_columns(solved: Solved, count: usize, across: Across) -> Solved {
     let n = solved.family.function_names().len();
     let [p, q] = solved.curves.clone();
     let wide = n > 10 || count > 10;
-    let name = |letter: &str, i: usize, k: usize| {
-        let (a, b) = match across {
-            Across::U => (i, k),
-            Across::V => (k, i),
-        };
-        if wide {
-            format!("{letter}{a}_{b}")
-        } else {
-            format!("{letter}{a}{b}")
-        }
+    let name = |letter: &str, i: usize, k: usize| match across {
+        Across::U => point_name(letter, i, k, wide),
+        Across::V => point_name(letter, k, i, wide),
     };
     let renamed = |value: &Sym, k: usize| {
         (0..n).fold(value.clone(), |v, i| {
@@ -134,10 +140,126 @@ fn by_columns(solved: Solved, count: usize, across: Across) -> Solved {
     }
 }
 
+/// The values a drawn join is made of: the parameters of each patch's
+/// joined direction, the factors `α`, `β`.
+pub struct JoinValues {
+    pub first: Vec<Rational>,
+    pub second: Vec<Rational>,
+    pub alpha: Rational,
+    pub beta: Rational,
+}
+
+/// The net of the second patch of a join, in numbers: the forced points
+/// from the exact join (every symbol replaced by its value, exactly), the
+/// free ones the first net moved on by its extent across the boundary
+/// (`Q_ij = P_ij + P_{n−1,j} − P_{0,j}` across `u`): a second patch beside
+/// the first, as the thesis's Figures 5.4–5.7 draw them.
+pub fn second_net(
+    [u, v]: [&AnyBasis; 2],
+    kind: JoinKind,
+    across: Across,
+    net: &ControlNet,
+    values: &JoinValues,
+) -> Result<ControlNet, CliError> {
+    if net.is_rational() {
+        return Err(CliError::Usage(
+            "a drawn join takes a net without weights".into(),
+        ));
+    }
+    let (curve_basis, other) = match across {
+        Across::U => (u, v),
+        Across::V => (v, u),
+    };
+    let params = if values.first == values.second {
+        ParamsArg::Same
+    } else {
+        ParamsArg::Different
+    };
+    let solved = solve(curve_basis.clone(), kind, params, trig_deriv::Wrt::Angle)?;
+    let (n, count) = (
+        curve_basis.function_names().len(),
+        other.function_names().len(),
+    );
+    let joined = by_columns(solved, count, across);
+    let [p, q] = joined.curves.clone();
+    let wide = n > 10 || count > 10;
+    let mut known: Vec<(String, Rational)> = Vec::new();
+    for (symbols, values) in [
+        (&joined.first_params, &values.first),
+        (&joined.second_params, &values.second),
+    ] {
+        for (s, x) in symbols.iter().zip(values) {
+            known.push((s.to_string(), x.clone()));
+        }
+    }
+    known.push((joined.factors[0].to_string(), values.alpha.clone()));
+    known.push((joined.factors[1].to_string(), values.beta.clone()));
+    let rows = net.rows();
+    let columns = net.columns();
+    let moved = |i: usize, j: usize, axis: usize| {
+        let pts = net.points();
+        let shift = match across {
+            Across::U => Rational::from(&pts[rows - 1][j][axis] - &pts[0][j][axis]),
+            Across::V => Rational::from(&pts[i][columns - 1][axis] - &pts[i][0][axis]),
+        };
+        Rational::from(&pts[i][j][axis] + &shift)
+    };
+    // one coordinate of every point of the second net
+    let coordinate = |axis: usize| -> Result<Vec<Vec<Rational>>, CliError> {
+        let mut table = known.clone();
+        for i in 0..rows {
+            for j in 0..columns {
+                table.push((point_name(&p, i, j, wide), net.points()[i][j][axis].clone()));
+                table.push((point_name(&q, i, j, wide), moved(i, j, axis)));
+            }
+        }
+        let value_of = |formula: &Sym| {
+            let mut f = formula.clone();
+            if let Some((beta, fixed)) = &joined.factor {
+                f = f.subs(&beta.to_string(), fixed);
+            }
+            for (name, x) in &table {
+                f = f.subs(name, &Sym::rational(x.clone()));
+            }
+            f.as_rational().ok_or_else(|| {
+                CliError::Usage(format!(
+                    "the forced point is not a rational number at these values: {}",
+                    f.to_unicode()
+                ))
+            })
+        };
+        (0..rows)
+            .map(|i| {
+                (0..columns)
+                    .map(|j| {
+                        let name = point_name(&q, i, j, wide);
+                        match joined
+                            .forced
+                            .iter()
+                            .find(|(pt, _, _)| pt.to_string() == name)
+                        {
+                            Some((_, formula, _)) => value_of(formula),
+                            None => Ok(moved(i, j, axis)),
+                        }
+                    })
+                    .collect()
+            })
+            .collect()
+    };
+    let [x, y, z] = [coordinate(0)?, coordinate(1)?, coordinate(2)?];
+    let out = (0..rows)
+        .map(|i| {
+            (0..columns)
+                .map(|j| [x[i][j].clone(), y[i][j].clone(), z[i][j].clone()])
+                .collect()
+        })
+        .collect();
+    ControlNet::new(out).map_err(|e| CliError::Usage(e.to_string()))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::commands::join::ParamsArg;
     use trig_core::Family;
     use trig_deriv::{JoinSetup, Wrt};
 

@@ -32,11 +32,11 @@ pub fn run(args: &TableArgs, u: &AnyBasis, wrt: Wrt) -> CmdResult {
         }
         .into());
     }
-    let v = args.surface.v_basis(u)?;
-    let same = args.surface.v_family.is_none() && args.surface.v_spec.is_none();
+    let v = args.surface.v.v_basis(u)?;
+    let same = args.surface.v.v_family.is_none() && args.surface.v.v_spec.is_none();
     let u_params = exact_params_of(&args.params, u)?;
-    let v_params = if !args.surface.v_params.is_empty() {
-        exact_params_of(&args.surface.v_params, &v)?
+    let v_params = if !args.surface.v.v_params.is_empty() {
+        exact_params_of(&args.surface.v.v_params, &v)?
     } else if same {
         u_params.clone()
     } else {
@@ -68,7 +68,7 @@ pub fn run(args: &TableArgs, u: &AnyBasis, wrt: Wrt) -> CmdResult {
         .into_iter()
         .map(|b| b.map(|cell| cell.combination(&names)))
         .collect();
-    let v_text = if same && args.surface.v_params.is_empty() {
+    let v_text = if same && args.surface.v.v_params.is_empty() {
         "the same parameters".to_string()
     } else {
         v_params

@@ -1,0 +1,179 @@
+//! `plot surface`: the SVG (snapshot), its pgfplots code (compiled when TeX
+//! is there), the meshes (OBJ, PLY, STL) and a drawn join.
+
+use std::path::PathBuf;
+
+use trig_e2e::{assert_errors, example, written};
+
+fn net() -> String {
+    example("surfaces/thesis-net.txt")
+}
+
+fn scratch(name: &str) -> String {
+    let dir = std::env::temp_dir().join(format!("trig-e2e-surface-plot-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("scratch dir");
+    dir.join(name).display().to_string()
+}
+
+/// `plot surface` of the thesis net at `m` into `name`, with `extra` options.
+fn plot(m: &str, name: &str, extra: &[&str]) -> String {
+    let out = scratch(name);
+    let param = format!("m={m}");
+    let net = net();
+    let mut args = vec![
+        "plot",
+        "surface",
+        "--family",
+        "thesis-cubic",
+        "--param",
+        &param,
+        "--net",
+        &net,
+        "--output",
+        &out,
+    ];
+    args.extend_from_slice(extra);
+    let note = written(&args);
+    assert!(note.contains("wrote"), "{note}");
+    out
+}
+
+/// The vertices of an OBJ file.
+fn obj_vertices(text: &str) -> Vec<[f64; 3]> {
+    text.lines()
+        .filter_map(|l| l.strip_prefix("v "))
+        .map(|l| {
+            let v: Vec<f64> = l.split(' ').map(|x| x.parse().expect("a number")).collect();
+            [v[0], v[1], v[2]]
+        })
+        .collect()
+}
+
+#[test]
+fn the_thesis_surface_as_svg_with_its_pgfplots_code() {
+    let svg_path = plot("1", "figure-5-1.svg", &["--samples", "4"]);
+    let svg = std::fs::read_to_string(&svg_path).expect("svg");
+    insta::assert_snapshot!("surface_thesis_m1_samples4", svg);
+    // 3 × 3 cells, two triangles each; 16 control points, 8 net lines
+    assert_eq!(svg.matches("<polygon").count(), 18);
+    assert_eq!(svg.matches("<circle").count(), 16);
+    assert_eq!(svg.matches("<polyline").count(), 8);
+    let tex = std::fs::read_to_string(PathBuf::from(&svg_path).with_extension("tex")).expect("tex");
+    assert!(tex.is_ascii());
+    assert!(
+        tex.contains("view={-37.5}{30}") && tex.contains("mesh/rows=4]"),
+        "{tex}"
+    );
+    let whole = format!(
+        "\\documentclass{{article}}\n\\usepackage{{pgfplots}}\n\\pgfplotsset{{compat=1.16}}\n\\begin{{document}}\n{tex}\\end{{document}}\n"
+    );
+    if let Some(log) = trig_tex::compile(&whole, "surface-figure") {
+        assert!(log.errors.is_empty(), "{:?}", log.errors);
+        assert_eq!(log.overfull, 0, "{:?}", log.overfull_lines);
+    }
+}
+
+#[test]
+fn meshes_hold_the_samples_in_every_format() {
+    let obj = std::fs::read_to_string(plot("1/2", "s.obj", &["--samples", "5"])).expect("obj");
+    let ply = std::fs::read_to_string(plot("1/2", "s.ply", &["--samples", "5"])).expect("ply");
+    let stl = std::fs::read_to_string(plot("1/2", "s.stl", &["--samples", "5"])).expect("stl");
+    let vertices = obj_vertices(&obj);
+    assert_eq!(vertices.len(), 25);
+    assert_eq!(obj.lines().filter(|l| l.starts_with("f ")).count(), 32);
+    // the corners interpolate P₀₀ = (0, 0, 0) and P₃₃ = (3, 3, 0)
+    assert_eq!(vertices[0], [0.0, 0.0, 0.0]);
+    let last = vertices[24];
+    assert!(
+        (last[0] - 3.0).abs() < 1e-15 && (last[1] - 3.0).abs() < 1e-15 && last[2].abs() < 1e-15
+    );
+    // PLY: the same numbers after its header
+    let body = ply.split("end_header\n").nth(1).expect("a PLY body");
+    let ply_vertices: Vec<&str> = body.lines().take(25).collect();
+    let obj_lines: Vec<&str> = obj.lines().filter_map(|l| l.strip_prefix("v ")).collect();
+    assert_eq!(ply_vertices, obj_lines);
+    assert!(ply.contains("element face 32\n"));
+    assert_eq!(stl.matches("facet normal").count(), 32);
+}
+
+#[test]
+fn a_drawn_join_shares_its_boundary_with_the_first_patch() {
+    let obj = std::fs::read_to_string(plot(
+        "1",
+        "c2.obj",
+        &["--samples", "6", "--join", "c2", "--param2", "m=0"],
+    ))
+    .expect("obj");
+    let v = obj_vertices(&obj);
+    assert_eq!(v.len(), 72);
+    // the last sample row (u = 1) of patch 1 is the first (u = 0) of patch 2
+    for j in 0..6 {
+        let (a, b) = (v[5 * 6 + j], v[36 + j]);
+        for k in 0..3 {
+            assert!((a[k] - b[k]).abs() < 1e-12, "{a:?} {b:?}");
+        }
+    }
+    // and a G² join with its factors draws too
+    let svg = plot(
+        "1/2",
+        "g2.svg",
+        &[
+            "--samples",
+            "4",
+            "--join",
+            "g2",
+            "--alpha",
+            "2",
+            "--beta",
+            "1/2",
+            "--across",
+            "v",
+        ],
+    );
+    let svg = std::fs::read_to_string(svg).expect("svg");
+    assert_eq!(svg.matches("<polygon").count(), 36);
+    assert!(svg.contains("G2 join"), "{svg}");
+}
+
+#[test]
+fn bad_plot_requests_are_one_line_errors() {
+    let net = net();
+    let base = |out: &'static str, extra: &[&'static str]| {
+        let mut a = vec![
+            "plot",
+            "surface",
+            "--family",
+            "thesis-cubic",
+            "--param",
+            "m=1",
+            "--output",
+            out,
+        ];
+        a.extend_from_slice(extra);
+        a
+    };
+    let png = base("x.png", &["--net"]);
+    let few = base("x.svg", &["--samples", "1", "--net"]);
+    let far = base("x.svg", &["--net"]);
+    let cases: Vec<(Vec<&str>, &str)> = vec![
+        (
+            [png, vec![net.as_str()]].concat(),
+            "give a name ending in .svg",
+        ),
+        ([few, vec![net.as_str()]].concat(), "--samples 1"),
+        (
+            [
+                far.clone(),
+                vec![net.as_str(), "--net", net.as_str(), "--join", "c1"],
+            ]
+            .concat(),
+            "--join draws one --net",
+        ),
+        (
+            [far, vec![net.as_str(), "--join", "g1", "--alpha", "0"]].concat(),
+            "--alpha must be positive",
+        ),
+    ];
+    let cases: Vec<(&[&str], &str)> = cases.iter().map(|(a, e)| (a.as_slice(), *e)).collect();
+    assert_errors(&cases);
+}
