@@ -1,0 +1,18 @@
+#!/bin/sh
+# Redraws the thesis's surface figures (seed 001, Chapter 5) into
+# docs/figures/ from its printed control net (examples/surfaces/thesis-net.txt)
+# and the parameter values its text gives (docs/surfaces.md says which are
+# chosen where the text gives none). Run from the repository root.
+set -eu
+plot() { cargo run -q -p trig-audit -- plot surface --family thesis-cubic --net examples/surfaces/thesis-net.txt "$@"; }
+plot --param m=1 --output docs/figures/surface-5.1.svg
+for m in -1.8 -1 0 1; do
+  plot --param "m=$m" --output "docs/figures/surface-5.2-m$m.svg"
+done
+for m in -4 -3 3 4; do
+  plot --param "m=$m" --allow-outside-range --output "docs/figures/surface-5.3-m$m.svg"
+done
+plot --param m=1 --join c1 --param2 m=0.5 --output docs/figures/surface-5.4-c1.svg
+plot --param m=1 --join c2 --param2 m=0.5 --output docs/figures/surface-5.5-c2.svg
+plot --param m=0.5 --join g1 --alpha 2 --output docs/figures/surface-5.6-g1.svg
+plot --param m=0.5 --join g2 --param2 m=0.2 --alpha 0.5 --beta 2 --output docs/figures/surface-5.7-g2.svg
