@@ -16,3 +16,7 @@ plot --param m=1 --join c1 --param2 m=0.5 --output docs/figures/surface-5.4-c1.s
 plot --param m=1 --join c2 --param2 m=0.5 --output docs/figures/surface-5.5-c2.svg
 plot --param m=0.5 --join g1 --alpha 2 --output docs/figures/surface-5.6-g1.svg
 plot --param m=0.5 --join g2 --param2 m=0.2 --alpha 0.5 --beta 2 --output docs/figures/surface-5.7-g2.svg
+# a surface of revolution: the vase profile (thesis cubic, m = 0) swept by the
+# exact quarter circle of Han's quadratic at λ = 0 (not a thesis figure)
+cargo run -q -p trig-audit -- plot surface --family thesis-cubic --param m=0 --net examples/surfaces/vase-profile.txt \
+  --revolution --v-spec examples/han-quadratic.toml --v-param lambda=0 --elevation 20 --output docs/figures/surface-revolution-vase.svg

@@ -177,3 +177,78 @@ fn bad_plot_requests_are_one_line_errors() {
     let cases: Vec<(&[&str], &str)> = cases.iter().map(|(a, e)| (a.as_slice(), *e)).collect();
     assert_errors(&cases);
 }
+
+#[test]
+fn a_surface_of_revolution_is_an_exact_circle_at_every_height() {
+    let profile = scratch("cylinder.txt");
+    std::fs::write(&profile, "1 0 0\n1 0 1\n1 0 2\n1 0 3\n").expect("profile");
+    let han = example("han-quadratic.toml");
+    // the quarter circle in the span of Han's quadratic at λ = 0, and of
+    // the thesis cubic at m = 0 (cos θ = b₀ + b₁ + b₂/2 there)
+    for circle in [
+        vec!["--v-spec", han.as_str(), "--v-param", "lambda=0"],
+        vec!["--v-param", "m=0"],
+    ] {
+        let out = scratch("revolution.obj");
+        let mut args = vec![
+            "plot",
+            "surface",
+            "--family",
+            "thesis-cubic",
+            "--param",
+            "m=0",
+            "--net",
+            &profile,
+            "--revolution",
+            "--samples",
+            "9",
+            "--output",
+            &out,
+        ];
+        args.extend_from_slice(&circle);
+        written(&args);
+        let v = obj_vertices(&std::fs::read_to_string(&out).expect("obj"));
+        assert_eq!(v.len(), 4 * 81);
+        for p in &v {
+            assert!((p[0].hypot(p[1]) - 1.0).abs() < 1e-15, "{p:?} ({circle:?})");
+        }
+        // the four quarters meet: patch k's end is patch k + 1's start
+        assert!(
+            (v[8][0]).abs() < 1e-15 && (v[8][1] - 1.0).abs() < 1e-15,
+            "{:?}",
+            v[8]
+        );
+        assert!(
+            (v[81][0]).abs() < 1e-15 && (v[81][1] - 1.0).abs() < 1e-15,
+            "{:?}",
+            v[81]
+        );
+    }
+    let bent = scratch("bent.txt");
+    std::fs::write(&bent, "1 0 0\n1 1 1\n1 0 2\n1 0 3\n").expect("profile");
+    let cbez = example("c-bezier-cubic.toml");
+    let run = |net: &str, circle: &[&str]| {
+        let mut a = vec![
+            "plot",
+            "surface",
+            "--family",
+            "thesis-cubic",
+            "--param",
+            "m=0",
+            "--net",
+            net,
+            "--revolution",
+            "--output",
+            "never.svg",
+        ];
+        a.extend_from_slice(circle);
+        trig_e2e::error_line(&a)
+    };
+    assert!(run(&profile, &["--v-param", "m=1/2"]).contains("does not hold cos"));
+    assert!(
+        run(&profile, &["--v-spec", &cbez, "--v-param", "alpha=pi/2"])
+            .contains("not rational (1, 1, 1/2·π − 1, 0)")
+    );
+    assert!(run(&bent, &["--v-param", "m=0"]).contains("the profile lies in the xz plane"));
+    assert!(run(&net(), &["--v-param", "m=0"]).contains("not a 4 × 4 net"));
+}

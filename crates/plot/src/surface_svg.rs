@@ -117,7 +117,7 @@ pub fn surface_svg(figure: &SurfaceFigure) -> Result<String> {
     if !figure.title.is_empty() {
         let _ = writeln!(
             out,
-            "<text x=\"{}\" y=\"{}\" font-family=\"serif\" font-size=\"4.2\" text-anchor=\"middle\">{}</text>",
+            "<text x=\"{}\" y=\"{}\" font-family=\"serif\" font-size=\"3.6\" text-anchor=\"middle\">{}</text>",
             c(WIDTH / 2.0),
             c(MARGIN + 4.5),
             escape(&trig_tex::unicode(&figure.title))

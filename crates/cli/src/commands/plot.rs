@@ -23,6 +23,7 @@ use crate::format::csv_text;
 use crate::output::{resolve, write_atomically, wrote};
 use trig_specfile::AnyBasis;
 
+mod revolution;
 mod surface;
 
 #[derive(Debug, Args)]

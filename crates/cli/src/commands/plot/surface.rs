@@ -19,6 +19,7 @@ use trig_plot::{
 };
 use trig_specfile::AnyBasis;
 
+use super::revolution::{quarter_circle, revolution_nets};
 use super::{FigureArgs, plot_err};
 use crate::commands::join::surface::{Across, JoinValues, second_net};
 use crate::commands::surface::VArgs;
@@ -51,6 +52,11 @@ pub struct SurfacePlotArgs {
     /// its extent across the boundary).
     #[arg(long, value_name = "KIND")]
     join: Option<String>,
+    /// Sweep the profile (--net: one row of points `r 0 z` in the u basis)
+    /// about the z axis by the exact quarter circle of the v basis (e.g.
+    /// --v-spec examples/han-quadratic.toml --v-param lambda=0): four patches.
+    #[arg(long, conflicts_with = "join")]
+    revolution: bool,
     /// With --join: the boundary (u: u = 1 of the first is u = 0 of the second).
     #[arg(long, value_enum, default_value = "u", requires = "join")]
     across: Across,
@@ -180,7 +186,14 @@ pub fn run(args: &SurfacePlotArgs) -> CmdResult {
     for path in &args.net {
         let net =
             ControlNet::read(&Source::of(path)).map_err(|e| CliError::Usage(e.to_string()))?;
-        surfaces.push(TensorSurface::new(du.clone(), dv.clone(), net)?);
+        if args.revolution {
+            let circle = quarter_circle(&dv)?;
+            for quarter in revolution_nets(&net, &circle)? {
+                surfaces.push(TensorSurface::new(du.clone(), dv.clone(), quarter)?);
+            }
+        } else {
+            surfaces.push(TensorSurface::new(du.clone(), dv.clone(), net)?);
+        }
     }
     if let Some(kind) = &args.join {
         if surfaces.len() != 1 {
@@ -301,6 +314,9 @@ fn default_title(
     } else {
         format!("surface, u: {a}; v: {b}")
     };
+    if args.revolution {
+        title = format!("surface of revolution, profile {a}; circle {b}");
+    }
     if let Some(kind) = &args.join {
         title.push_str(&format!(", {} join", kind.to_uppercase()));
         if let Ok(pairs) = crate::commands::eval::param_pairs(&args.params2)
