@@ -20,3 +20,7 @@ plot --param m=0.5 --join g2 --param2 m=0.2 --alpha 0.5 --beta 2 --output docs/f
 # exact quarter circle of Han's quadratic at λ = 0 (not a thesis figure)
 cargo run -q -p trig-audit -- plot surface --family thesis-cubic --param m=0 --net examples/surfaces/vase-profile.txt \
   --revolution --v-spec examples/han-quadratic.toml --v-param lambda=0 --elevation 20 --output docs/figures/surface-revolution-vase.svg
+# the cylinders (the thesis prints no net for them: examples/surfaces/half-cylinder-net.txt is ours)
+plot_cylinder() { cargo run -q -p trig-audit -- plot surface --family thesis-cubic --net examples/surfaces/half-cylinder-net.txt --close "$@"; }
+plot_cylinder --param m=0.7 --join c1 --output docs/figures/surface-5.9-c1-cylinder.svg
+plot_cylinder --param m=1 --join g1 --alpha 2 --output docs/figures/surface-5.11-g1-cylinder.svg

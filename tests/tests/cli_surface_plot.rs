@@ -252,3 +252,76 @@ fn a_surface_of_revolution_is_an_exact_circle_at_every_height() {
     assert!(run(&bent, &["--v-param", "m=0"]).contains("the profile lies in the xz plane"));
     assert!(run(&net(), &["--v-param", "m=0"]).contains("not a 4 × 4 net"));
 }
+
+#[test]
+fn a_closed_pair_is_a_cylinder_joined_at_both_seams() {
+    let half = example("surfaces/half-cylinder-net.txt");
+    for join in [
+        vec!["--join", "c1", "--param2", "m=1/2"],
+        vec!["--join", "g1", "--alpha", "2"],
+    ] {
+        let out = scratch("closed.obj");
+        let mut args = vec![
+            "plot",
+            "surface",
+            "--family",
+            "thesis-cubic",
+            "--param",
+            "m=1",
+            "--net",
+            &half,
+            "--close",
+            "--samples",
+            "5",
+            "--output",
+            &out,
+        ];
+        args.extend_from_slice(&join);
+        written(&args);
+        let v = obj_vertices(&std::fs::read_to_string(&out).expect("obj"));
+        assert_eq!(v.len(), 50);
+        // u = 1 of each patch is u = 0 of the other
+        for j in 0..5 {
+            for (a, b) in [(v[20 + j], v[25 + j]), (v[45 + j], v[j])] {
+                for k in 0..3 {
+                    assert!((a[k] - b[k]).abs() < 1e-14, "{join:?}: {a:?} {b:?}");
+                }
+            }
+        }
+    }
+    let run = |family: &str, kind: &str| {
+        trig_e2e::error_line(&[
+            "plot",
+            "surface",
+            "--family",
+            family,
+            "--net",
+            &half,
+            "--join",
+            kind,
+            "--close",
+            "--output",
+            "never.svg",
+        ])
+    };
+    // the second seam read backwards is not the same join for a B-spline basis
+    assert!(run("bspline3", "c1").contains("the closing seam of `bspline3` is not C1"));
+    assert!(
+        trig_e2e::error_line(&[
+            "plot",
+            "surface",
+            "--family",
+            "thesis-cubic",
+            "--param",
+            "m=1",
+            "--net",
+            &half,
+            "--join",
+            "c2",
+            "--close",
+            "--output",
+            "never.svg",
+        ])
+        .contains("force 6 of the 4 rows")
+    );
+}

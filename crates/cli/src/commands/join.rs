@@ -15,6 +15,7 @@ use crate::format;
 use crate::names::{names_of, segment_copies};
 use trig_specfile::AnyBasis;
 
+pub mod cylinder;
 pub mod surface;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]

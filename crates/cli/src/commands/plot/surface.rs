@@ -21,6 +21,7 @@ use trig_specfile::AnyBasis;
 
 use super::revolution::{quarter_circle, revolution_nets};
 use super::{FigureArgs, plot_err};
+use crate::commands::join::cylinder::closing_net;
 use crate::commands::join::surface::{Across, JoinValues, second_net};
 use crate::commands::surface::VArgs;
 use crate::commands::{CliError, CmdResult, range_hint};
@@ -57,6 +58,10 @@ pub struct SurfacePlotArgs {
     /// --v-spec examples/han-quadratic.toml --v-param lambda=0): four patches.
     #[arg(long, conflicts_with = "join")]
     revolution: bool,
+    /// With --join c0, c1 or g1: close the pair into a cylinder, the second
+    /// patch joined to the first at both seams (thesis Figures 5.9, 5.11).
+    #[arg(long, requires = "join")]
+    close: bool,
     /// With --join: the boundary (u: u = 1 of the first is u = 0 of the second).
     #[arg(long, value_enum, default_value = "u", requires = "join")]
     across: Across,
@@ -230,7 +235,8 @@ pub fn run(args: &SurfacePlotArgs) -> CmdResult {
             alpha,
             beta,
         };
-        let net2 = second_net(
+        let build = if args.close { closing_net } else { second_net };
+        let net2 = build(
             [&du.basis, &dv.basis],
             kind,
             args.across,
@@ -318,7 +324,8 @@ fn default_title(
         title = format!("surface of revolution, profile {a}; circle {b}");
     }
     if let Some(kind) = &args.join {
-        title.push_str(&format!(", {} join", kind.to_uppercase()));
+        let closed = if args.close { " closed" } else { "" };
+        title.push_str(&format!(",{closed} {} join", kind.to_uppercase()));
         if let Ok(pairs) = crate::commands::eval::param_pairs(&args.params2)
             && !pairs.is_empty()
         {
