@@ -325,3 +325,56 @@ fn a_closed_pair_is_a_cylinder_joined_at_both_seams() {
         .contains("force 6 of the 4 rows")
     );
 }
+
+#[test]
+fn a_uniform_bspline_surface_is_one_patch_per_span_and_they_meet() {
+    let grid = scratch("grid6.txt");
+    let rows: Vec<String> = (0..6)
+        .map(|i| {
+            (0..6)
+                .map(|j| format!("{i} {j} {}\n", (i * j) % 5))
+                .collect()
+        })
+        .collect();
+    std::fs::write(&grid, rows.join("\n")).expect("net");
+    let out = scratch("bspline.obj");
+    written(&[
+        "plot",
+        "surface",
+        "--family",
+        "bspline3",
+        "--net",
+        &grid,
+        "--bspline",
+        "--samples",
+        "3",
+        "--output",
+        &out,
+    ]);
+    let v = obj_vertices(&std::fs::read_to_string(&out).expect("obj"));
+    // (6 − 3)² spans of 3 × 3 samples
+    assert_eq!(v.len(), 81);
+    let at = |patch: usize, i: usize, j: usize| v[patch * 9 + i * 3 + j];
+    for j in 0..3 {
+        // span (0, 0) at u = 1 is span (1, 0) at u = 0; (0, 0) at v = 1 is (0, 1) at v = 0
+        for (a, b) in [(at(0, 2, j), at(3, 0, j)), (at(0, j, 2), at(1, j, 0))] {
+            for k in 0..3 {
+                assert!((a[k] - b[k]).abs() < 1e-14, "{a:?} {b:?}");
+            }
+        }
+    }
+    let line = trig_e2e::error_line(&[
+        "plot",
+        "surface",
+        "--family",
+        "thesis-cubic",
+        "--param",
+        "m=0",
+        "--net",
+        &grid,
+        "--bspline",
+        "--output",
+        "never.svg",
+    ]);
+    assert!(line.contains("`thesis-cubic` is not one"), "{line}");
+}

@@ -178,6 +178,26 @@ impl ControlNet {
         Ok(ControlNet { points, weights })
     }
 
+    /// The `rows × columns` window of the net starting at row `row`, column
+    /// `column` (the points one span of a uniform B-spline surface uses);
+    /// `None` when it does not fit.
+    pub fn window(&self, row: usize, column: usize, rows: usize, columns: usize) -> Option<Self> {
+        if rows == 0
+            || columns == 0
+            || row + rows > self.rows()
+            || column + columns > self.columns()
+        {
+            return None;
+        }
+        Some(ControlNet {
+            points: window_of(&self.points, (row, rows), (column, columns)),
+            weights: self
+                .weights
+                .as_deref()
+                .map(|w| window_of(w, (row, rows), (column, columns))),
+        })
+    }
+
     /// The number of net rows (`n_u`).
     pub fn rows(&self) -> usize {
         self.points.len()
@@ -218,6 +238,19 @@ impl ControlNet {
         }
         out
     }
+}
+
+/// The rows `row..row + rows` of `grid`, each cut to its columns
+/// `column..column + columns`.
+fn window_of<T: Clone>(
+    grid: &[Vec<T>],
+    (row, rows): (usize, usize),
+    (column, columns): (usize, usize),
+) -> Vec<Vec<T>> {
+    grid[row..row + rows]
+        .iter()
+        .map(|r| r[column..column + columns].to_vec())
+        .collect()
 }
 
 /// The three or four numbers of a point line.
@@ -273,6 +306,13 @@ mod tests {
         let weighted = ControlNet::parse("0 0 0 2\n1 0 0 1\n", "n").unwrap();
         assert_eq!(weighted.weight(0, 0), Some(&q(2)));
         assert_eq!(weighted.inputs().len(), 8);
+        let w = net.window(1, 1, 1, 1).unwrap();
+        assert_eq!(w.points()[0][0][2], Rational::from((1, 3)));
+        assert_eq!(
+            weighted.window(0, 1, 1, 1).unwrap().weight(0, 0),
+            Some(&q(1))
+        );
+        assert!(net.window(1, 1, 2, 1).is_none());
     }
 
     #[test]

@@ -58,6 +58,12 @@ pub struct SurfacePlotArgs {
     /// --v-spec examples/han-quadratic.toml --v-param lambda=0): four patches.
     #[arg(long, conflicts_with = "join")]
     revolution: bool,
+    /// A uniform B-spline surface over a net of any size ≥ n × n, for a
+    /// piecewise basis in both directions (bspline3, seed000-uniform, a spec
+    /// with four segment functions): one patch per span, the n × n windows
+    /// of the net.
+    #[arg(long, conflicts_with_all = ["join", "revolution"])]
+    bspline: bool,
     /// With --join c0, c1 or g1: close the pair into a cylinder, the second
     /// patch joined to the first at both seams (thesis Figures 5.9, 5.11).
     #[arg(long, requires = "join")]
@@ -136,6 +142,41 @@ fn sampled(
         .collect()
 }
 
+/// The spans of the uniform B-spline surface over `net`: a patch over each
+/// `n_u × n_v` window (the segment functions of a piecewise basis are the
+/// blending functions of one span, `b_i` weighting the `i`-th point of the
+/// window).
+fn spans(
+    u: &Direction<AnyBasis>,
+    v: &Direction<AnyBasis>,
+    net: &ControlNet,
+) -> Result<Vec<TensorSurface<AnyBasis>>, CliError> {
+    for d in [u, v] {
+        if !d.basis.piecewise() {
+            return Err(CliError::Usage(format!(
+                "--bspline needs a basis of uniform B-spline segment functions in both directions (bspline3, seed000-uniform, a spec with four segment functions); `{}` is not one",
+                d.basis.id()
+            )));
+        }
+    }
+    let (nu, nv) = (u.len(), v.len());
+    if net.rows() < nu || net.columns() < nv {
+        return Err(CliError::Usage(format!(
+            "--bspline: the net is {} × {}, a span needs {nu} × {nv} points",
+            net.rows(),
+            net.columns()
+        )));
+    }
+    let mut out = Vec::new();
+    for row in 0..=net.rows() - nu {
+        for column in 0..=net.columns() - nv {
+            let window = net.window(row, column, nu, nv).expect("the window fits");
+            out.push(TensorSurface::new(u.clone(), v.clone(), window)?);
+        }
+    }
+    Ok(out)
+}
+
 /// The net in f64, for drawing.
 fn net_f64(net: &ControlNet) -> Vec<Vec<[f64; 3]>> {
     net.points()
@@ -196,6 +237,8 @@ pub fn run(args: &SurfacePlotArgs) -> CmdResult {
             for quarter in revolution_nets(&net, &circle)? {
                 surfaces.push(TensorSurface::new(du.clone(), dv.clone(), quarter)?);
             }
+        } else if args.bspline {
+            surfaces.extend(spans(&du, &dv, &net)?);
         } else {
             surfaces.push(TensorSurface::new(du.clone(), dv.clone(), net)?);
         }
