@@ -283,6 +283,33 @@ fn bad_nets_and_bad_points_are_one_line_errors() {
         (
             &[
                 "eval",
+                "bernstein3",
+                "--surface",
+                "--net",
+                &net,
+                "--v-family",
+                "thesis-cubic",
+                "--at",
+                "0,0",
+            ],
+            "the v direction (--v-param): family `thesis-cubic` needs parameter `m`",
+        ),
+        (
+            &[
+                "eval",
+                "thesis-cubic",
+                "--param",
+                "m=0",
+                "--v-param",
+                "m=0",
+                "--at",
+                "0",
+            ],
+            "they go with --surface",
+        ),
+        (
+            &[
+                "eval",
                 "bspline3",
                 "--surface",
                 "--piecewise",

@@ -102,7 +102,13 @@ impl VArgs {
                 .map_err(range_hint)?;
             Ok::<_, CliError>(Direction { basis, params })
         };
-        Ok([read(u.clone(), &u_pairs)?, read(v, &v_pairs)?])
+        let v = read(v, &v_pairs).map_err(|e| match e {
+            CliError::Core(_) | CliError::Usage(_) => {
+                CliError::Usage(format!("the v direction (--v-param): {e}"))
+            }
+            e => e,
+        })?;
+        Ok([read(u.clone(), &u_pairs)?, v])
     }
 
     /// The `v` parameters as typed (`name=value`), for headers.
