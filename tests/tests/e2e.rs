@@ -19,6 +19,8 @@ mod cli_plot_params;
 mod cli_spec;
 mod cli_spec_engine;
 mod cli_spec_features;
+mod cli_surface;
+mod cli_surface_plot;
 mod cli_table;
 mod cli_witness_points;
 mod fuzz;

@@ -251,10 +251,7 @@ impl<B: Basis + ?Sized> Computation for BasisAt<'_, B> {
 }
 
 /// Exact parameter values `c + q·π` as named rationals (both parts).
-pub(crate) fn named_affine<'a>(
-    names: &[String],
-    params: &'a [Affine],
-) -> Vec<(String, &'a Rational)> {
+pub fn named_affine<'a>(names: &[String], params: &'a [Affine]) -> Vec<(String, &'a Rational)> {
     names
         .iter()
         .zip(params)

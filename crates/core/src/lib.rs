@@ -35,6 +35,7 @@ pub mod input;
 pub mod interval;
 pub mod knots;
 pub mod mpfr;
+pub mod net;
 pub mod number;
 pub mod parallel;
 pub mod param;

@@ -6,8 +6,9 @@ use nalgebra::{Point2, Point3};
 use proptest::prelude::*;
 use rug::Rational;
 use trig_core::curve::Segment;
-use trig_core::surface::{TensorSurface, thesis_matrix_form};
-use trig_core::{Bound, Family, Mpfr, Real};
+use trig_core::net::ControlNet;
+use trig_core::surface::{Direction, TensorSurface, thesis_matrix_form};
+use trig_core::{Affine, Bound, Family, Mpfr, Real};
 
 /// A parameter value inside `range`, from a uniform draw `x ∈ [0, 1]`.
 /// Unbounded ends are capped at ±1000 (the quadratic's `β ≥ 0`).
@@ -95,13 +96,20 @@ proptest! {
                 Point3::new(coords[k], coords[k + 1], coords[k + 2])
             })
         });
-        let p = vec![Rational::from_f64(m).unwrap()];
-        let surface = TensorSurface::new(
-            Family::ThesisCubic,
-            p,
-            grid.iter().map(|row| row.to_vec()).collect(),
+        let m_exact = Rational::from_f64(m).unwrap();
+        let exact = |x: f64| Rational::from_f64(x).unwrap();
+        let net = ControlNet::new(
+            grid.iter()
+                .map(|row| row.iter().map(|p| [exact(p.x), exact(p.y), exact(p.z)]).collect())
+                .collect(),
         ).unwrap();
-        let sum = surface.eval(&u, &v).unwrap();
+        let direction = || Direction {
+            basis: Family::ThesisCubic,
+            params: vec![Affine::rational(m_exact.clone())],
+        };
+        let surface = TensorSurface::new(direction(), direction(), net).unwrap();
+        let [x, y, z] = surface.eval(&u, &v, false).unwrap();
+        let sum = Point3::new(x, y, z);
         let matrix = thesis_matrix_form(m, &grid, u, v);
         prop_assert!((sum - matrix).norm() < 1e-11, "{sum} vs {matrix}");
     }

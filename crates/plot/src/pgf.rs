@@ -37,12 +37,12 @@ impl Default for PgfOptions {
 }
 
 /// The packages and setup a figure needs.
-const PACKAGES: [&str; 1] = ["pgfplots"];
-const SETUP: [&str; 1] = [r"\pgfplotsset{compat=1.16}"];
+pub(crate) const PACKAGES: [&str; 1] = ["pgfplots"];
+pub(crate) const SETUP: [&str; 1] = [r"\pgfplotsset{compat=1.16}"];
 
 /// A number as pgfplots reads it: plain decimals in a moderate range,
 /// scientific notation beyond it.
-fn num(v: f64) -> String {
+pub(crate) fn num(v: f64) -> String {
     if v == 0.0 || (1e-4..1e6).contains(&v.abs()) {
         v.to_string()
     } else {

@@ -25,6 +25,7 @@ use crate::digits;
 use crate::format::{TextOrJson, json};
 
 mod points;
+mod surface;
 
 /// Most knots `--knots` takes (the cost model).
 const MAX_KNOTS: usize = 10_000;
@@ -76,6 +77,12 @@ pub struct EvalArgs {
     /// Output format.
     #[arg(long, value_enum, default_value = "text")]
     format: TextOrJson,
+    #[command(flatten)]
+    pub surface: super::surface::SurfaceArgs,
+    /// With --surface: the control net, one point `x y z [w]` per line,
+    /// net rows separated by blank lines (docs/surfaces.md).
+    #[arg(long, value_name = "FILE", requires = "surface")]
+    net: Option<std::path::PathBuf>,
     #[command(flatten)]
     pub out: crate::output::OutputArg,
 }
@@ -183,7 +190,11 @@ struct Evaluation {
 }
 
 pub fn run(args: &EvalArgs) -> CmdResult {
+    args.surface.check()?;
     let arithmetic = arithmetic_of(args.prec, args.digits)?;
+    if args.surface.surface {
+        return surface::run(args, arithmetic);
+    }
     let at_text = args.at.as_deref().unwrap_or_default();
     let at = parse_point(at_text)?;
     let eval = evaluate(args, at_text, &at, arithmetic, subject_of(args)?.as_ref())?;
@@ -199,7 +210,7 @@ pub fn stream(args: &EvalArgs, out: &mut dyn std::io::Write) -> Result<(), CliEr
 
 /// True when the command streams its output (`--at-file`).
 pub fn streams(args: &EvalArgs) -> bool {
-    args.at_file.is_some()
+    args.at_file.is_some() && !args.surface.surface
 }
 
 /// The problem `eval` was asked, located on the exact input, with its
@@ -311,16 +322,36 @@ fn exact_zeros(basis: &AnyBasis, params: &[Affine], x: &Affine) -> Vec<Zero> {
         .map(|f| match (f, &atoms) {
             (Some(f), _) if f.is_zero() => Zero::Identically,
             (Some(f), Some(a)) => {
-                let v = f
-                    .subs("s", &a.s)
-                    .subs("c", &a.c)
-                    .subs("t", &a.t)
-                    .subs("E", &a.e);
-                if v.is_zero() { Zero::AtPoint } else { Zero::No }
+                if at_atoms(f, a).is_zero() {
+                    Zero::AtPoint
+                } else {
+                    Zero::No
+                }
             }
             _ => Zero::No,
         })
         .collect()
+}
+
+/// The exact functions of `basis` at the point `x` with the parameters
+/// `params`, where the exact ring forms them (`None` for a function it
+/// cannot specialise, or for all at a point whose atoms are not exact).
+fn exact_values(basis: &AnyBasis, params: &[Affine], x: &Affine) -> Vec<Option<Sym>> {
+    let values: Vec<Sym> = params.iter().map(|a| a.eval(&Sym::zero(), &[])).collect();
+    let atoms = basis.domain().atoms_at(x, &Sym::one(), &values);
+    basis
+        .exact_functions_at(&values)
+        .into_iter()
+        .map(|f| Some(at_atoms(&f?, atoms.as_ref()?)))
+        .collect()
+}
+
+/// An exact function at exact atoms.
+fn at_atoms(f: &Sym, a: &trig_core::Atoms<Sym>) -> Sym {
+    f.subs("s", &a.s)
+        .subs("c", &a.c)
+        .subs("t", &a.t)
+        .subs("E", &a.e)
 }
 
 /// The point as a rational, for the knot-based evaluations (their knots

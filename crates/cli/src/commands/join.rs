@@ -15,6 +15,9 @@ use crate::format;
 use crate::names::{names_of, segment_copies};
 use trig_specfile::AnyBasis;
 
+pub mod cylinder;
+pub mod surface;
+
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum ParamsArg {
     /// One parameter value shared by both segments.
@@ -51,6 +54,12 @@ pub struct JoinArgs {
     #[arg(long, value_enum, default_value = "text")]
     format: JoinFormat,
     #[command(flatten)]
+    pub surface: super::surface::SurfaceArgs,
+    /// With --surface: the boundary the patches share (u: u = 1 of the
+    /// first is u = 0 of the second; v likewise).
+    #[arg(long, value_enum, default_value = "u", requires = "surface")]
+    across: surface::Across,
+    #[command(flatten)]
     pub out: crate::output::OutputArg,
 }
 
@@ -85,11 +94,15 @@ fn letter(points: &[Sym]) -> String {
 }
 
 pub fn run(args: &JoinArgs) -> CmdResult {
+    args.surface.check()?;
     let family = AnyBasis::open(args.family.as_deref(), args.spec.as_deref())?;
     let kind: JoinKind = args
         .kind
         .parse()
         .map_err(|e: trig_deriv::JoinError| CliError::Usage(e.to_string()))?;
+    if args.surface.surface {
+        return surface::run(args, family, kind);
+    }
     let solved = solve(family, kind, args.params, args.wrt.into())?;
     Ok(match args.format {
         JoinFormat::Text => text(&solved),

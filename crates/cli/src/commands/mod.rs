@@ -8,6 +8,7 @@ pub mod interp;
 pub mod join;
 pub mod list;
 pub mod plot;
+pub mod surface;
 pub mod table;
 
 /// Error of a command: a typed library error or a usage problem.

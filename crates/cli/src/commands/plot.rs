@@ -23,6 +23,9 @@ use crate::format::csv_text;
 use crate::output::{resolve, write_atomically, wrote};
 use trig_specfile::AnyBasis;
 
+mod revolution;
+mod surface;
+
 #[derive(Debug, Args)]
 pub struct PlotArgs {
     #[command(subcommand)]
@@ -93,6 +96,9 @@ enum PlotKind {
         #[command(flatten)]
         look: FigureArgs,
     },
+    /// Tensor-product surface patches with their control nets (thesis
+    /// Figures 5.1–5.7), as SVG with pgfplots code or as a mesh (OBJ, PLY, STL).
+    Surface(Box<surface::SurfacePlotArgs>),
     /// Positivity interpolants of thesis 4.3 with their data points.
     Interp {
         /// Data set (thesis-table-4.1 … thesis-table-4.6).
@@ -352,6 +358,7 @@ pub fn run(args: &PlotArgs) -> CmdResult {
             )
         }
         PlotKind::Region { spec, output, look } => write(output, region(spec)?, look),
+        PlotKind::Surface(args) => surface::run(args),
         PlotKind::Interp {
             data,
             scheme,

@@ -23,6 +23,8 @@ use crate::names::names_of;
 use trig_specfile::AnyBasis;
 use trig_specfile::nonvanishing::singular_where;
 
+mod surface;
+
 /// Highest order a table can have (the cost model).
 pub const MAX_ORDER: usize = 12;
 
@@ -101,6 +103,8 @@ pub struct TableArgs {
     #[arg(long, requires = "numeric", allow_hyphen_values = true)]
     h: Option<String>,
     #[command(flatten)]
+    pub surface: super::surface::SurfaceArgs,
+    #[command(flatten)]
     pub out: crate::output::OutputArg,
 }
 
@@ -135,9 +139,13 @@ pub fn run(args: &TableArgs) -> CmdResult {
             "--standalone writes a whole LaTeX document: it goes with --format tex".into(),
         ));
     }
+    args.surface.check()?;
     let family = AnyBasis::open(args.family.as_deref(), args.spec.as_deref())?;
     let wrt = wrt_of(&args.wrt, &family)?;
     let id = family.id();
+    if args.surface.surface {
+        return surface::run(args, &family, wrt);
+    }
     if args.order > MAX_ORDER {
         return Err(CoreError::Limit {
             what: format!("--order {}", args.order),
@@ -200,11 +208,16 @@ pub fn run(args: &TableArgs) -> CmdResult {
 /// the multiples of π/12 (where both are exact), or inside `exp` away
 /// from 0.
 fn exact_params(args: &TableArgs, family: &AnyBasis) -> Result<Vec<Sym>, CliError> {
-    if args.params.is_empty() {
+    exact_params_of(&args.params, family)
+}
+
+/// [`exact_params`] from the `name=value` arguments `raw`.
+fn exact_params_of(raw: &[String], family: &AnyBasis) -> Result<Vec<Sym>, CliError> {
+    if raw.is_empty() {
         return Ok(family.param_names().iter().map(|p| Sym::var(p)).collect());
     }
     // an exact table stays in the published range (no --allow-outside-range)
-    let values = family.params_from_pairs(&param_pairs(&args.params)?, false)?;
+    let values = family.params_from_pairs(&param_pairs(raw)?, false)?;
     let domain = family.domain();
     let names = family.param_names();
     let twelfth = |a: &Affine| a.constant == 0 && *Rational::from(&a.pi * 12u32).denom() == 1;
