@@ -25,6 +25,23 @@ pub enum FitError {
         got: usize,
         needed: usize,
     },
+    /// A grid row with a different number of heights than the first row.
+    #[error(
+        "{origin}, line {line}: {got} heights in this row, the first row has {expected}: a grid must be rectangular"
+    )]
+    GridShape {
+        origin: String,
+        line: usize,
+        expected: usize,
+        got: usize,
+    },
+    /// A height that is NaN or infinite.
+    #[error("{origin}, line {line}: height {column} is not finite (NaN or infinite)")]
+    NonFinite {
+        origin: String,
+        line: usize,
+        column: usize,
+    },
     /// An explicit corner index that is not an index of the data.
     #[error("corner index {index} is out of range: the outline has {count} points (indices 0..{})", count.saturating_sub(1))]
     CornerOutOfRange { index: usize, count: usize },
