@@ -143,6 +143,7 @@ fn settings(args: &FitSurfaceArgs) -> Result<Vec<(AnyBasis, String, Shape)>, Cli
         e => e,
     };
     let mut out = Vec::new();
+    let (mut searchable, mut unsearched) = (false, Vec::new());
     for subject in selected {
         let symbols: Vec<String> = parameters(&subject)
             .into_iter()
@@ -169,17 +170,16 @@ fn settings(args: &FitSurfaceArgs) -> Result<Vec<(AnyBasis, String, Shape)>, Cli
         if !args.optimise {
             continue;
         }
+        // a basis with no parameter to search has its fixed fit only
+        // (`--family all` takes the Bernstein basis along); none at all is refused
         let Some(index) = searched(&subject, &pairs, args.vary.as_deref())? else {
-            return Err(CliError::Usage(format!(
-                "--optimise searches one shape parameter; `{}` has {}: fix all but one with --param NAME=VALUE",
-                subject.id(),
-                if symbols.is_empty() {
-                    "none".to_string()
-                } else {
-                    symbols.join(", ")
-                }
-            )));
+            unsearched.push(match symbols.len() {
+                0 => format!("`{}` has no shape parameter", subject.id()),
+                n => format!("`{}` has {n} ({})", subject.id(), symbols.join(", ")),
+            });
+            continue;
         };
+        searchable = true;
         let (lo, hi, from) = interval(&subject, index, args.range)?;
         let fixed = fixed_params(&subject, &pairs, Some(index), args.allow_outside_range)
             .map_err(hinted)?;
@@ -195,6 +195,12 @@ fn settings(args: &FitSurfaceArgs) -> Result<Vec<(AnyBasis, String, Shape)>, Cli
             ),
             Shape::Optimise { lo, hi, fixed },
         ));
+    }
+    if args.optimise && !searchable {
+        return Err(CliError::Usage(format!(
+            "--optimise searches one shape parameter per direction (golden section); {}: fix all but one with --param NAME=VALUE (--vary NAME names the one searched), or fit with fixed values only",
+            unsearched.join("; ")
+        )));
     }
     Ok(out)
 }
