@@ -220,6 +220,24 @@ pub fn fit_surface(
             "patches {pu}×{pv}: at least one patch in each direction"
         )));
     }
+    // refused before any matrix is built: a huge patch count costs no memory
+    let coefficients = |p: usize| match options.join {
+        Join::C0 => p.saturating_mul(3).saturating_add(1),
+        Join::C1 => p.saturating_mul(2).saturating_add(2),
+    };
+    for (p, lines, what) in [
+        (pu, grid.rows, "along u (the rows)"),
+        (pv, grid.cols, "along v (the columns)"),
+    ] {
+        if coefficients(p) > lines {
+            return Err(FitError::Singular {
+                what: format!(
+                    "surface fit, {what} ({lines} data lines for {} coefficients)",
+                    coefficients(p)
+                ),
+            });
+        }
+    }
     let (params_u, params_v) = choose_params(&basis, grid, options)?;
     let u = space(&basis, &params_u, pu, options.join)?;
     let v = space(&basis, &params_v, pv, options.join)?;
