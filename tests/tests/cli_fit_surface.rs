@@ -55,10 +55,18 @@ fn the_documented_surface_tables_are_the_tools_output() {
     let docs = std::fs::read_to_string(root().join("docs/fitting.md")).expect("docs/fitting.md");
     let grid = volcano();
     let spec = example("c-bezier-cubic.toml");
-    let commands: [&[&str]; 4] = [
+    let commands: [&[&str]; 5] = [
         &["--summary"],
         &["--summary", "--continuity", "c0"],
         &["--summary", "--optimise", "--patches", "4x4,8x6"],
+        &[
+            "--summary",
+            "--optimise",
+            "--optimise-per",
+            "segment",
+            "--patches",
+            "4x4,8x6",
+        ],
         &["--summary", "--spec", &spec, "--param", "alpha=1"],
     ];
     for extra in commands {

@@ -41,4 +41,4 @@ pub use metrics::{Metrics, Summary, THESIS_THRESHOLD};
 pub use pipeline::{FitOptions, OutlineFit, SegmentFit, Shape, fit_outline};
 pub use refine::Continuity;
 pub use space::Join;
-pub use surface::{PatchStats, Stats, SurfaceFit, SurfaceOptions, fit_surface};
+pub use surface::{PatchStats, Scope, Stats, SurfaceFit, SurfaceOptions, fit_surface};

@@ -16,10 +16,16 @@
 //! than its coefficients, or a segment without data) is refused as
 //! singular, not solved in some minimal-norm sense.
 //!
-//! The shape parameter is the same in every segment of a direction, fixed
-//! or optimised per direction by golden section ([`crate::optimise`]) on
-//! the total squared error: `u`'s with `v`'s fixed, then `v`'s, then `u`'s
-//! again (coordinate descent, two rounds).
+//! The shape parameter is fixed, or optimised by golden section
+//! ([`crate::optimise`]) on the total squared error, by coordinate descent
+//! (two rounds, starting from the middle of the interval; a searched value
+//! is taken only when it lowers the error): [`Scope::Direction`] one value
+//! for every segment of a direction, `u`'s with `v`'s fixed, then `v`'s;
+//! [`Scope::Segment`] from there one value per segment of each direction —
+//! per row and per column of patches, each searched with the others fixed —
+//! so never worse than the per-direction optimum. A value per patch would
+//! break the separation: the basis of patch `(k, l)` along `u` would then
+//! depend on `l`.
 
 use std::sync::Arc;
 
@@ -37,8 +43,20 @@ use crate::space::{Join, Space};
 /// matrix that is fitted.
 const RANK_TOL: f64 = 1e-10;
 
-/// Rounds of coordinate descent of the per-direction optimisation.
+/// Rounds of coordinate descent of the optimisation.
 const ROUNDS: usize = 2;
+
+/// The shape parameters of each segment of a direction.
+pub type SegmentParams = Vec<Vec<f64>>;
+
+/// What one optimised shape parameter covers.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum Scope {
+    /// Every segment of a direction.
+    Direction,
+    /// One segment of a direction: a row or a column of patches.
+    Segment,
+}
 
 /// Options of [`fit_surface`].
 #[derive(Debug, Clone, PartialEq)]
@@ -47,6 +65,8 @@ pub struct SurfaceOptions {
     pub patches: (usize, usize),
     pub join: Join,
     pub shape: Shape,
+    /// What one optimised value covers (with [`Shape::Optimise`]).
+    pub scope: Scope,
 }
 
 /// Error statistics of a set of data points: `|S(uᵢ, vⱼ) − zᵢⱼ|`.
@@ -88,8 +108,8 @@ pub struct SurfaceFit {
     pub family: String,
     pub patches: (usize, usize),
     pub join: Join,
-    /// Shape parameters along `u` and along `v`.
-    pub params: (Vec<f64>, Vec<f64>),
+    /// Shape parameters of each segment along `u` and along `v`.
+    pub params: (SegmentParams, SegmentParams),
     /// Free coefficients `nu · nv`.
     pub coefficients: usize,
     /// Control heights `P`, `(3pu + 1) × (3pv + 1)`, row-major.
@@ -110,10 +130,13 @@ fn grid_parameters(n: usize) -> Vec<f64> {
     (0..n).map(|k| k as f64 / (n - 1) as f64).collect()
 }
 
-/// The space of `n` segments of `basis` at `params`.
-fn space(basis: &Arc<dyn NumericBasis>, params: &[f64], n: usize, join: Join) -> Result<Space> {
-    let segment = SegmentBasis::new(basis.clone(), params)?;
-    Space::new(vec![segment; n], join)
+/// The space of the segments of `basis` at `params` (one set each).
+fn space(basis: &Arc<dyn NumericBasis>, params: &[Vec<f64>], join: Join) -> Result<Space> {
+    let segments = params
+        .iter()
+        .map(|p| SegmentBasis::new(basis.clone(), p))
+        .collect::<Result<Vec<_>>>()?;
+    Space::new(segments, join)
 }
 
 /// `A⁺ B` for a collocation matrix `A` of full column rank.
@@ -158,25 +181,27 @@ fn solve(u: &Space, v: &Space, grid: &Grid) -> Result<(DMatrix<f64>, DMatrix<f64
 fn objective(
     basis: &Arc<dyn NumericBasis>,
     grid: &Grid,
-    options: &SurfaceOptions,
-    pu: &[f64],
-    pv: &[f64],
+    join: Join,
+    pu: &[Vec<f64>],
+    pv: &[Vec<f64>],
 ) -> Result<f64> {
-    let u = space(basis, pu, options.patches.0, options.join)?;
-    let v = space(basis, pv, options.patches.1, options.join)?;
+    let u = space(basis, pu, join)?;
+    let v = space(basis, pv, join)?;
     let (_, fitted) = solve(&u, &v, grid)?;
     let z = DMatrix::from_row_slice(grid.rows, grid.cols, &grid.z);
     Ok((fitted - z).norm_squared())
 }
 
-/// The parameters along `u` and `v`: fixed, or optimised per direction.
+/// The parameters of each segment along `u` and `v`: fixed, or optimised
+/// over `options.scope`.
 fn choose_params(
     basis: &Arc<dyn NumericBasis>,
     grid: &Grid,
     options: &SurfaceOptions,
-) -> Result<(Vec<f64>, Vec<f64>)> {
+) -> Result<(SegmentParams, SegmentParams)> {
+    let (nu, nv) = options.patches;
     let (lo, hi, fixed) = match &options.shape {
-        Shape::Fixed(p) => return Ok((p.clone(), p.clone())),
+        Shape::Fixed(p) => return Ok((vec![p.clone(); nu], vec![p.clone(); nv])),
         Shape::Optimise { lo, hi, fixed } => (*lo, *hi, fixed),
     };
     let (_, n) = basis.counts();
@@ -190,20 +215,49 @@ fn choose_params(
             fixed.len()
         )));
     };
-    let with = |p: f64| {
-        let mut all = vec![p; n];
-        for (j, v) in fixed {
-            all[*j] = *v;
+    let mut start = vec![0.5 * (lo + hi); n];
+    for (j, v) in fixed {
+        start[*j] = *v;
+    }
+    // the segments one searched value covers: all of a direction together,
+    // or each alone
+    let groups = |scope: Scope, count: usize| -> Vec<Vec<usize>> {
+        match scope {
+            Scope::Direction => vec![(0..count).collect()],
+            Scope::Segment => (0..count).map(|k| vec![k]).collect(),
         }
-        all
     };
-    let start = 0.5 * (lo + hi);
-    let (mut pu, mut pv) = (with(start), with(start));
-    for _ in 0..ROUNDS {
-        let (p, _) = golden_section(|p| objective(basis, grid, options, &with(p), &pv), lo, hi)?;
-        pu[index] = p;
-        let (p, _) = golden_section(|p| objective(basis, grid, options, &pu, &with(p)), lo, hi)?;
-        pv[index] = p;
+    let set = |params: &[Vec<f64>], group: &[usize], p: f64| {
+        let mut trial = params.to_vec();
+        for &k in group {
+            trial[k][index] = p;
+        }
+        trial
+    };
+    let (mut pu, mut pv) = (vec![start.clone(); nu], vec![start; nv]);
+    // a start where the fit fails counts as +∞, as in the search
+    let mut best = objective(basis, grid, options.join, &pu, &pv).unwrap_or(f64::INFINITY);
+    let scopes = match options.scope {
+        Scope::Direction => vec![Scope::Direction],
+        Scope::Segment => vec![Scope::Direction, Scope::Segment],
+    };
+    for scope in scopes {
+        for _ in 0..ROUNDS {
+            for group in groups(scope, nu) {
+                let search = |p| objective(basis, grid, options.join, &set(&pu, &group, p), &pv);
+                let (p, error) = golden_section(search, lo, hi)?;
+                if error < best {
+                    (pu, best) = (set(&pu, &group, p), error);
+                }
+            }
+            for group in groups(scope, nv) {
+                let search = |p| objective(basis, grid, options.join, &pu, &set(&pv, &group, p));
+                let (p, error) = golden_section(search, lo, hi)?;
+                if error < best {
+                    (pv, best) = (set(&pv, &group, p), error);
+                }
+            }
+        }
     }
     Ok((pu, pv))
 }
@@ -239,8 +293,8 @@ pub fn fit_surface(
         }
     }
     let (params_u, params_v) = choose_params(&basis, grid, options)?;
-    let u = space(&basis, &params_u, pu, options.join)?;
-    let v = space(&basis, &params_v, pv, options.join)?;
+    let u = space(&basis, &params_u, options.join)?;
+    let v = space(&basis, &params_v, options.join)?;
     let (x, fitted) = solve(&u, &v, grid)?;
     let z = DMatrix::from_row_slice(grid.rows, grid.cols, &grid.z);
     let error = &fitted - z;
@@ -314,6 +368,7 @@ mod tests {
             patches,
             join,
             shape: Shape::Fixed(p.to_vec()),
+            scope: Scope::Direction,
         }
     }
 
@@ -378,19 +433,34 @@ mod tests {
     fn optimising_is_never_worse_than_the_interval_ends() {
         let g = grid(21, 19, |u, v| (3.0 * u).sin() + v * v);
         let basis: Arc<dyn NumericBasis> = Arc::new(Family::ThesisCubic);
-        let options = SurfaceOptions {
-            patches: (2, 2),
-            join: Join::C1,
-            shape: Shape::Optimise {
-                lo: -1.0,
-                hi: 1.0,
-                fixed: vec![],
-            },
+        let optimised = |scope| {
+            let options = SurfaceOptions {
+                patches: (2, 3),
+                join: Join::C1,
+                shape: Shape::Optimise {
+                    lo: -1.0,
+                    hi: 1.0,
+                    fixed: vec![],
+                },
+                scope,
+            };
+            fit_surface(&g, basis.clone(), &options).unwrap()
         };
-        let best = fit_surface(&g, basis.clone(), &options).unwrap();
+        let (direction, segment) = (optimised(Scope::Direction), optimised(Scope::Segment));
         for p in [-1.0, 0.0, 1.0] {
-            let at = fit_surface(&g, basis.clone(), &fixed((2, 2), Join::C1, &[p])).unwrap();
-            assert!(best.overall.rms <= at.overall.rms * (1.0 + 1e-9), "{p}");
+            let at = fit_surface(&g, basis.clone(), &fixed((2, 3), Join::C1, &[p])).unwrap();
+            assert!(
+                direction.overall.rms <= at.overall.rms * (1.0 + 1e-9),
+                "{p}"
+            );
         }
+        // one value per direction, or one per segment (starting from the
+        // per-direction optimum: never worse)
+        let (u, v) = &direction.params;
+        assert!(u.iter().all(|p| p == &u[0]) && v.iter().all(|p| p == &v[0]));
+        let (u, v) = &segment.params;
+        assert_eq!((u.len(), v.len()), (2, 3));
+        assert!(u[0] != u[1] || v[0] != v[1] || v[1] != v[2], "{u:?} {v:?}");
+        assert!(segment.overall.rms <= direction.overall.rms * (1.0 + 1e-9));
     }
 }

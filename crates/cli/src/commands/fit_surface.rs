@@ -12,7 +12,9 @@ use std::time::Instant;
 
 use clap::{Args, ValueEnum};
 use trig_core::Described;
-use trig_fit::{Grid, Join, NumericBasis, Shape, Stats, SurfaceFit, SurfaceOptions, fit_surface};
+use trig_fit::{
+    Grid, Join, NumericBasis, Scope, Shape, Stats, SurfaceFit, SurfaceOptions, fit_surface,
+};
 use trig_specfile::AnyBasis;
 
 use super::eval::param_pairs;
@@ -53,6 +55,14 @@ pub enum ContinuityArg {
     C1,
 }
 
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum OptimisePer {
+    /// One value for every patch of a direction.
+    Direction,
+    /// One value per segment of a direction: per row and per column of patches.
+    Segment,
+}
+
 #[derive(Debug, Args)]
 pub struct FitSurfaceArgs {
     /// Grid of heights: CSV rows of numbers, or a matrix as R writes it
@@ -85,10 +95,14 @@ pub struct FitSurfaceArgs {
     /// Parameters outside their published range.
     #[arg(long)]
     allow_outside_range: bool,
-    /// Also fit with the shape parameter optimised per direction (golden
-    /// section, the same value in every patch of a direction).
+    /// Also fit with the shape parameter optimised (golden section on the
+    /// total squared error), one value per direction or per segment (--optimise-per).
     #[arg(long)]
     optimise: bool,
+    /// What one optimised value covers: every patch of a direction, or one
+    /// segment of a direction (a row or a column of patches).
+    #[arg(long, value_enum, default_value = "direction", requires = "optimise")]
+    optimise_per: OptimisePer,
     /// The parameter --optimise searches (name or printed symbol), the
     /// others fixed by --param.
     #[arg(long, value_name = "NAME", requires = "optimise")]
@@ -190,15 +204,19 @@ fn settings(args: &FitSurfaceArgs) -> Result<Vec<(AnyBasis, String, Shape)>, Cli
         out.push((
             subject,
             format!(
-                "{} optimised per direction in [{lo:.4}, {hi:.4}] ({from}){others}",
-                symbols[index]
+                "{} optimised per {} in [{lo:.4}, {hi:.4}] ({from}){others}",
+                symbols[index],
+                match args.optimise_per {
+                    OptimisePer::Direction => "direction",
+                    OptimisePer::Segment => "segment",
+                }
             ),
             Shape::Optimise { lo, hi, fixed },
         ));
     }
     if args.optimise && !searchable {
         return Err(CliError::Usage(format!(
-            "--optimise searches one shape parameter per direction (golden section); {}: fix all but one with --param NAME=VALUE (--vary NAME names the one searched), or fit with fixed values only",
+            "--optimise searches one shape parameter (golden section); {}: fix all but one with --param NAME=VALUE (--vary NAME names the one searched), or fit with fixed values only",
             unsearched.join("; ")
         )));
     }
@@ -223,6 +241,10 @@ fn fits(args: &FitSurfaceArgs, grid: &Grid) -> Result<Vec<Row>, CliError> {
                 patches: (pu, pv),
                 join,
                 shape: shape.clone(),
+                scope: match args.optimise_per {
+                    OptimisePer::Direction => Scope::Direction,
+                    OptimisePer::Segment => Scope::Segment,
+                },
             };
             let fit = fit_surface(grid, basis.clone(), &options).map_err(fit_err)?;
             let elapsed = start.elapsed().as_secs_f64();
@@ -364,18 +386,29 @@ fn blocks(args: &FitSurfaceArgs, rows: &[Row]) -> Vec<Block> {
     out
 }
 
-/// The setting, with the values an optimisation chose.
+/// The setting, with the values an optimisation chose: per direction one
+/// set of values (when every segment has the same), else each segment's,
+/// separated by ` / `.
 fn chosen(r: &Row) -> String {
-    let (pu, pv) = &r.fit.params;
-    if r.optimised {
-        let show = |p: &[f64]| {
-            p.iter()
-                .map(|v| format!("{v:.4}"))
-                .collect::<Vec<_>>()
-                .join(", ")
-        };
-        format!("{}: u {}, v {}", r.setting, show(pu), show(pv))
-    } else {
-        r.setting.clone()
+    if !r.optimised {
+        return r.setting.clone();
     }
+    let show = |segments: &[Vec<f64>]| {
+        let each: Vec<String> = segments
+            .iter()
+            .map(|p| {
+                p.iter()
+                    .map(|v| format!("{v:.4}"))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            })
+            .collect();
+        if each.iter().all(|e| *e == each[0]) {
+            each[0].clone()
+        } else {
+            each.join(" / ")
+        }
+    };
+    let (pu, pv) = &r.fit.params;
+    format!("{}: u {}, v {}", r.setting, show(pu), show(pv))
 }
