@@ -9,6 +9,7 @@ use std::path::Path;
 use trig_core::echo;
 use trig_core::input::{MAX_TEXT_BYTES, Source, read_text};
 
+use crate::data::MAX_COORDINATE;
 use crate::error::{FitError, Result};
 
 /// Heights on a rectangular grid, row-major: `z[i·cols + j]` is row `i`,
@@ -76,6 +77,15 @@ impl Grid {
                         line: number,
                         column: k + 1,
                     });
+                }
+                if v.abs() > MAX_COORDINATE {
+                    return Err(bad(
+                        number,
+                        format!(
+                            "height {} is {v:e}, beyond ±{MAX_COORDINATE:e}: its squared errors would overflow",
+                            k + 1
+                        ),
+                    ));
                 }
                 row.push(v);
             }
@@ -149,6 +159,10 @@ mod tests {
         );
         assert!(matches!(
             Grid::parse("1,2\n4,x\n", "g", "g.csv"),
+            Err(FitError::Malformed { line: 2, .. })
+        ));
+        assert!(matches!(
+            Grid::parse("1,2\n4,-1e200\n", "g", "g.csv"),
             Err(FitError::Malformed { line: 2, .. })
         ));
         assert!(matches!(
