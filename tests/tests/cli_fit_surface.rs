@@ -197,6 +197,35 @@ fn bad_grids_and_options_get_one_line_errors() {
     let v = volcano();
     assert_errors(&[
         (
+            &["fit-surface", "--grid", "/nonexistent/volcano.csv"],
+            "cannot read grid `/nonexistent/volcano.csv`",
+        ),
+        (
+            &[
+                "fit-surface",
+                "--grid",
+                &v,
+                "--family",
+                "usman",
+                "--param",
+                "alpha=0",
+                "--allow-outside-range",
+            ],
+            "collocation matrix has deficient rank",
+        ),
+        (
+            &[
+                "fit-surface",
+                "--grid",
+                &v,
+                "--error-map",
+                "/tmp/x.svg",
+                "--spacing",
+                "-1",
+            ],
+            "--spacing -1: a positive number",
+        ),
+        (
             &["fit-surface", "--grid", &ragged],
             "line 3: 2 heights in this row, the first row has 3",
         ),

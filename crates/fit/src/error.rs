@@ -6,9 +6,14 @@ use trig_core::CoreError;
 /// What can go wrong when outline data is read or fitted.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum FitError {
-    /// The data file cannot be read (missing, unreadable).
-    #[error("cannot read outline data `{path}`: {reason}")]
-    Read { path: String, reason: String },
+    /// The data file cannot be read (missing, unreadable); `what` names
+    /// the data (`outline data`, `grid`).
+    #[error("cannot read {what} `{path}`: {reason}")]
+    Read {
+        what: &'static str,
+        path: String,
+        reason: String,
+    },
     /// A line of the data file is not `contour,x,y` with finite numbers.
     #[error("{origin}, line {line}: {reason}")]
     Malformed {

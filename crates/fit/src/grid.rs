@@ -28,6 +28,7 @@ impl Grid {
     pub fn read(path: &Path) -> Result<Grid> {
         let text = read_text(&Source::File(path.to_path_buf()), MAX_TEXT_BYTES).map_err(|e| {
             FitError::Read {
+                what: "grid",
                 path: path.display().to_string(),
                 reason: e.reason(),
             }

@@ -141,28 +141,35 @@ fn space(basis: &Arc<dyn NumericBasis>, params: &[Vec<f64>], join: Join) -> Resu
 
 /// `A⁺ B` for a collocation matrix `A` of full column rank.
 fn least_squares(a: DMatrix<f64>, b: &DMatrix<f64>, what: &str) -> Result<DMatrix<f64>> {
-    let singular = || FitError::Singular {
-        what: format!(
-            "surface fit, {what} ({} data lines for {} coefficients)",
-            a.nrows(),
-            a.ncols()
-        ),
+    let singular = |why: String| FitError::Singular {
+        what: format!("surface fit, {what} ({why})"),
     };
     if a.nrows() < a.ncols() {
-        return Err(singular());
+        return Err(singular(format!(
+            "{} data lines for {} coefficients",
+            a.nrows(),
+            a.ncols()
+        )));
     }
+    let deficient = || {
+        singular(format!(
+            "its {} × {} collocation matrix has deficient rank: a patch without enough data, or functions dependent at these parameters",
+            a.nrows(),
+            a.ncols()
+        ))
+    };
     let svd = a.clone().svd(true, true);
     let largest = svd.singular_values.max();
     // a NaN singular value is refused too
     if svd.singular_values.min().partial_cmp(&(RANK_TOL * largest))
         != Some(std::cmp::Ordering::Greater)
     {
-        return Err(singular());
+        return Err(deficient());
     }
     svd.solve(b, 0.0)
         .ok()
         .filter(|x| x.iter().all(|v| v.is_finite()))
-        .ok_or_else(singular)
+        .ok_or_else(deficient)
 }
 
 /// The separable least-squares fit with fixed spaces: `(X, A_u X A_vᵀ)`.

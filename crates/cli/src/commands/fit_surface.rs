@@ -122,7 +122,7 @@ pub struct FitSurfaceArgs {
     #[arg(long, value_name = "FILE.svg")]
     error_map: Option<PathBuf>,
     /// Grid spacing for the error map's axes (the volcano: 10 m).
-    #[arg(long, default_value_t = 1.0)]
+    #[arg(long, default_value_t = 1.0, allow_hyphen_values = true)]
     spacing: f64,
     #[command(flatten)]
     pub out: crate::output::OutputArg,
