@@ -8,6 +8,7 @@ mod cli_certify;
 mod cli_eval;
 mod cli_figures;
 mod cli_fit_plot;
+mod cli_fit_surface;
 mod cli_hostile;
 mod cli_hostile_round2;
 mod cli_hostile_round2_io;

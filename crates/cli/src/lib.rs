@@ -26,6 +26,7 @@ use crate::commands::{
     audit::AuditArgs,
     eval::EvalArgs,
     fit::FitArgs,
+    fit_surface::FitSurfaceArgs,
     generate::{CompletionsArgs, ManArgs},
     interp::InterpArgs,
     join::JoinArgs,
@@ -56,6 +57,8 @@ enum Command {
     Join(JoinArgs),
     /// Fit cubic (trigonometric) curves to an outline: thesis Chapter 6 tables and comparison.
     Fit(FitArgs),
+    /// Fit a gridded height field by tensor-product patches of a basis (C⁰ or C¹): errors per patch and overall, error map.
+    FitSurface(FitSurfaceArgs),
     /// Draw SVG pictures: basis functions, curves, fitted outlines, interpolants.
     Plot(PlotArgs),
     /// A positivity-preserving interpolant of thesis 4.3 on its data: pieces, knot jumps, certified minimum.
@@ -118,7 +121,7 @@ where
             return match e.kind() {
                 ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => Outcome::Help(e.to_string()),
                 ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => Outcome::Error(one_line(
-                    "a subcommand is required: audit, list, eval, table, join, fit, plot or interp (see trig-audit --help)",
+                    "a subcommand is required: audit, list, eval, table, join, fit, fit-surface, plot or interp (see trig-audit --help)",
                 )),
                 _ => Outcome::Usage(usage_error(&e.render().to_string())),
             };
@@ -171,6 +174,7 @@ impl Command {
             Command::Eval(a) => a.out.path(),
             Command::Table(a) => a.out.path(),
             Command::Join(a) => a.out.path(),
+            Command::FitSurface(a) => a.out.path(),
             Command::Interp(a) => a.out.path(),
             Command::Completions(a) => a.out.path(),
             Command::Man(a) => a.out.path(),
@@ -187,6 +191,7 @@ impl Command {
             Command::Table(_) => "table",
             Command::Join(_) => "join",
             Command::Fit(_) => "fit",
+            Command::FitSurface(_) => "fit-surface",
             Command::Plot(_) => "plot",
             Command::Interp(_) => "interp",
             Command::Completions(_) => "completions",
@@ -203,6 +208,7 @@ impl Command {
             Command::Table(args) => commands::table::run(&args),
             Command::Join(args) => commands::join::run(&args),
             Command::Fit(args) => commands::fit::run(&args),
+            Command::FitSurface(args) => commands::fit_surface::run(&args),
             Command::Plot(args) => commands::plot::run(&args),
             Command::Interp(args) => commands::interp::run(&args),
             Command::Completions(args) => commands::generate::completions(&args, Cli::command()),

@@ -38,6 +38,7 @@ impl Outline {
         // bounded, a byte-order mark dropped: the same reader as every input
         let text = read_text(&Source::File(path.to_path_buf()), MAX_TEXT_BYTES).map_err(|e| {
             FitError::Read {
+                what: "outline data",
                 path: path.display().to_string(),
                 reason: e.reason(),
             }

@@ -6,9 +6,14 @@ use trig_core::CoreError;
 /// What can go wrong when outline data is read or fitted.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum FitError {
-    /// The data file cannot be read (missing, unreadable).
-    #[error("cannot read outline data `{path}`: {reason}")]
-    Read { path: String, reason: String },
+    /// The data file cannot be read (missing, unreadable); `what` names
+    /// the data (`outline data`, `grid`).
+    #[error("cannot read {what} `{path}`: {reason}")]
+    Read {
+        what: &'static str,
+        path: String,
+        reason: String,
+    },
     /// A line of the data file is not `contour,x,y` with finite numbers.
     #[error("{origin}, line {line}: {reason}")]
     Malformed {
@@ -24,6 +29,23 @@ pub enum FitError {
         segment: usize,
         got: usize,
         needed: usize,
+    },
+    /// A grid row with a different number of heights than the first row.
+    #[error(
+        "{origin}, line {line}: {got} heights in this row, the first row has {expected}: a grid must be rectangular"
+    )]
+    GridShape {
+        origin: String,
+        line: usize,
+        expected: usize,
+        got: usize,
+    },
+    /// A height that is NaN or infinite.
+    #[error("{origin}, line {line}: height {column} is not finite (NaN or infinite)")]
+    NonFinite {
+        origin: String,
+        line: usize,
+        column: usize,
     },
     /// An explicit corner index that is not an index of the data.
     #[error("corner index {index} is out of range: the outline has {count} points (indices 0..{})", count.saturating_sub(1))]

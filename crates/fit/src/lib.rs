@@ -13,6 +13,9 @@
 //! 7. optionally a C¹ refinement of the joined segments ([`refine`]).
 //!
 //! [`pipeline::fit_outline`] runs all of it.
+//!
+//! Surfaces: a gridded height field ([`grid`]) fitted by tensor-product
+//! patches joined C⁰ or C¹ ([`space`], [`surface::fit_surface`]).
 
 pub mod banded;
 pub mod basis;
@@ -20,16 +23,22 @@ pub mod chord;
 pub mod corners;
 pub mod data;
 pub mod error;
+pub mod grid;
 pub mod lsq;
 pub mod metrics;
 pub mod optimise;
 pub mod pipeline;
 pub mod refine;
+pub mod space;
+pub mod surface;
 
 pub use basis::{NumericBasis, SegmentBasis};
 pub use corners::{CornerRule, Corners, Span};
 pub use data::{Outline, P2};
 pub use error::{FitError, Result};
+pub use grid::Grid;
 pub use metrics::{Metrics, Summary, THESIS_THRESHOLD};
 pub use pipeline::{FitOptions, OutlineFit, SegmentFit, Shape, fit_outline};
 pub use refine::Continuity;
+pub use space::Join;
+pub use surface::{PatchStats, Scope, Stats, SurfaceFit, SurfaceOptions, fit_surface};

@@ -5,10 +5,11 @@
 //! basis (a listing beside the printed formulas), a curve with its
 //! control polygon for several parameter values (Figure 6.3), and fitted
 //! outlines over their data (Figures 6.5–6.7, 6.11–6.22), and piecewise
-//! interpolants with their data points (thesis 4.3), and the region of two
-//! shape parameters. Every picture has axes, axis labels, a title (left
-//! out with [`Picture::without_title`] where a caption says it) and a
-//! legend below the chart; functions are told apart by colour, parameter
+//! interpolants with their data points (thesis 4.3), the region of two
+//! shape parameters, and the error map of a fitted surface. Every picture
+//! has axes, axis labels, a title (left out with
+//! [`Picture::without_title`] where a caption says it) and a legend below
+//! the chart; functions are told apart by colour, parameter
 //! values by line style.
 //!
 //! Each function returns a [`Picture`]: a description (frame, series with
@@ -21,6 +22,7 @@ pub mod basis;
 mod chart;
 pub mod curve;
 pub mod error;
+pub mod error_map;
 pub mod fit;
 pub mod interp;
 pub mod mesh;
@@ -38,6 +40,7 @@ pub use basis::{basis_svg, basis_versus_svg};
 pub use chart::{Dash, Frame, Look, Mark, Series};
 pub use curve::curve_svg;
 pub use error::PlotError;
+pub use error_map::error_map_svg;
 pub use fit::fit_svg;
 pub use interp::{Interpolant, interp_svg};
 pub use mesh::{Mesh, MeshFormat};

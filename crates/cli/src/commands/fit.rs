@@ -4,7 +4,7 @@
 //! Usman, Han as the Appendix 2 listing computes it, Bézier).
 
 use std::fmt::Write;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use std::sync::Arc;
 
@@ -119,7 +119,7 @@ pub struct FitArgs {
     format: FitFormat,
 }
 
-fn fit_err(e: FitError) -> CliError {
+pub fn fit_err(e: FitError) -> CliError {
     match e {
         FitError::Core(c) => CliError::Core(c),
         other => CliError::Usage(other.to_string()),
@@ -127,8 +127,8 @@ fn fit_err(e: FitError) -> CliError {
 }
 
 /// The bases selected by `--family` or `--spec`.
-pub fn subjects(id: &str, setup: &FitSetup) -> Result<Vec<AnyBasis>, CliError> {
-    if let Some(path) = &setup.spec {
+pub fn subjects(id: &str, spec: Option<&Path>) -> Result<Vec<AnyBasis>, CliError> {
+    if let Some(path) = spec {
         if id != "all" {
             return Err(CliError::Usage(
                 "--family and --spec exclude each other: give one basis".into(),
@@ -145,7 +145,7 @@ pub fn subjects(id: &str, setup: &FitSetup) -> Result<Vec<AnyBasis>, CliError> {
 
 /// The parameters of `subject`: ASCII name, printed symbol, published range
 /// as the closed search interval's ends `(value, open)` when bounded.
-fn parameters(subject: &AnyBasis) -> Vec<(String, String, Option<SearchEnds>)> {
+pub fn parameters(subject: &AnyBasis) -> Vec<(String, String, Option<SearchEnds>)> {
     subject
         .parameters()
         .into_iter()
@@ -166,16 +166,18 @@ fn parameters(subject: &AnyBasis) -> Vec<(String, String, Option<SearchEnds>)> {
 }
 
 /// A published range's ends for the search: `((lo, open), (hi, open))`.
-type SearchEnds = ((f64, bool), (f64, bool));
+pub type SearchEnds = ((f64, bool), (f64, bool));
 
 /// Fixed parameters of `subject` from `--param` pairs (a catalog family's
 /// default 0.6, as the thesis; a spec file's parameters must be given),
 /// each checked against its published range: every parameter but
-/// `except` (the one searched), by index.
-fn fixed_params(
+/// `except` (the one searched), by index; outside it only when
+/// `allow_outside`.
+pub fn fixed_params(
     subject: &AnyBasis,
     pairs: &[(String, String)],
     except: Option<usize>,
+    allow_outside: bool,
 ) -> Result<Vec<(usize, f64)>, CliError> {
     let mut out = Vec::new();
     for (k, p) in subject.parameters().into_iter().enumerate() {
@@ -198,7 +200,7 @@ fn fixed_params(
                 )));
             }
         };
-        let value = read_params(&subject.id(), &[p], &[(name, value)], false)?;
+        let value = read_params(&subject.id(), &[p], &[(name, value)], allow_outside)?;
         out.extend(value.iter().map(|v| (k, v.to_f64())));
     }
     Ok(out)
@@ -207,7 +209,7 @@ fn fixed_params(
 /// The parameter `--optimise` searches in `subject`: `--vary`'s (its
 /// `--param` value, if any, is the fixed fit's), else its one parameter,
 /// else the one `--param` leaves free (none when several are, or none).
-fn searched(
+pub fn searched(
     subject: &AnyBasis,
     pairs: &[(String, String)],
     vary: Option<&str>,
@@ -234,7 +236,7 @@ fn searched(
 
 /// The search interval of `--optimise` for the parameter `index`, and
 /// where it comes from.
-fn interval(
+pub fn interval(
     subject: &AnyBasis,
     index: usize,
     range: SearchRange,
@@ -321,7 +323,7 @@ pub fn prepare(
 ) -> Result<(Outline, Vec<Method>), CliError> {
     let outline = Outline::read(&setup.glyph).map_err(fit_err)?;
     let pairs = param_pairs(&setup.params)?;
-    let selected = subjects(family, setup)?;
+    let selected = subjects(family, setup.spec.as_deref())?;
     for (name, _) in &pairs {
         if !selected.iter().any(|s| {
             parameters(s)
@@ -393,7 +395,7 @@ pub fn prepare(
         let basis: Arc<dyn NumericBasis> = Arc::new(subject.clone());
         let optimise = (runs != Runs::Fixed).then_some(searched).flatten();
         if runs != Runs::Optimised || optimise.is_none() {
-            let fixed: Vec<f64> = fixed_params(&subject, &pairs, None)?
+            let fixed: Vec<f64> = fixed_params(&subject, &pairs, None, false)?
                 .into_iter()
                 .map(|(_, v)| v)
                 .collect();
@@ -418,7 +420,7 @@ pub fn prepare(
         }
         if let Some(index) = optimise {
             let (lo, hi, from) = interval(&subject, index, setup.range)?;
-            let fixed = fixed_params(&subject, &pairs, Some(index))?;
+            let fixed = fixed_params(&subject, &pairs, Some(index), false)?;
             let others: Vec<String> = fixed
                 .iter()
                 .map(|(k, v)| format!(", {} = {v}", symbols[*k]))

@@ -3,6 +3,7 @@
 pub mod audit;
 pub mod eval;
 pub mod fit;
+pub mod fit_surface;
 pub mod generate;
 pub mod interp;
 pub mod join;

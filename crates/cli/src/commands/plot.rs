@@ -117,7 +117,7 @@ enum PlotKind {
 
 /// How a figure is written, for every kind of plot.
 #[derive(Debug, Args)]
-struct FigureArgs {
+pub struct FigureArgs {
     /// Width of the pgfplots figure, a LaTeX length (tick and axis labels
     /// included; the height follows).
     #[arg(long, default_value = r"\linewidth", value_name = "LENGTH")]
@@ -129,6 +129,17 @@ struct FigureArgs {
     /// fragment to \input.
     #[arg(long)]
     standalone: bool,
+}
+
+/// The defaults of the command line: as wide as the line, with the title, a fragment.
+impl Default for FigureArgs {
+    fn default() -> Self {
+        FigureArgs {
+            width: r"\linewidth".into(),
+            no_title: false,
+            standalone: false,
+        }
+    }
 }
 
 impl FigureArgs {
@@ -212,7 +223,7 @@ fn plotted(family: Option<&str>, v: &Values, what: &str) -> Result<Plotted, CliE
 /// (`NAME.tex`, text mapped to LaTeX as in the report) and its data
 /// (`NAME.csv`: series, point, x, y), each atomically; the notes on
 /// standard error (standard output stays empty).
-fn write(output: &Path, picture: Picture, look: &FigureArgs) -> CmdResult {
+pub fn write(output: &Path, picture: Picture, look: &FigureArgs) -> CmdResult {
     let pgf_options = look.options()?;
     let picture = if look.no_title {
         picture.without_title().map_err(plot_err)?
