@@ -20,7 +20,7 @@ use trig_judge::exact::ExactBasis;
 use trig_specfile::AnyBasis;
 use trig_symbolic::Sym;
 
-use super::{CliError, CmdResult, range_hint};
+use super::{CliError, CmdResult, param_pairs, range_hint};
 use crate::digits;
 use crate::format::{TextOrJson, json};
 
@@ -85,18 +85,6 @@ pub struct EvalArgs {
     net: Option<std::path::PathBuf>,
     #[command(flatten)]
     pub out: crate::output::OutputArg,
-}
-
-/// Splits `name=value` arguments.
-pub fn param_pairs(raw: &[String]) -> Result<Vec<(String, String)>, CliError> {
-    raw.iter()
-        .map(|p| {
-            p.split_once('=')
-                .map(|(n, v)| (n.trim().to_string(), v.trim().to_string()))
-                .filter(|(n, v)| !n.is_empty() && !v.is_empty())
-                .ok_or_else(|| CliError::Usage(format!("--param `{p}`: expected NAME=VALUE")))
-        })
-        .collect()
 }
 
 /// What `eval` computes: the functions of a basis at a point, the uniform

@@ -18,7 +18,7 @@ use trig_fit::{
     OutlineFit, Shape, Summary, THESIS_THRESHOLD, fit_outline,
 };
 
-use super::eval::param_pairs;
+use super::param_pairs;
 use super::{CliError, CmdResult};
 use trig_specfile::AnyBasis;
 

@@ -17,8 +17,8 @@ use trig_fit::{
 };
 use trig_specfile::AnyBasis;
 
-use super::eval::param_pairs;
 use super::fit::{SearchRange, fit_err, fixed_params, interval, parameters, searched, subjects};
+use super::param_pairs;
 use super::plot::{FigureArgs, write};
 use super::{CliError, CmdResult, range_hint};
 use crate::cell::{Block, Rendered};

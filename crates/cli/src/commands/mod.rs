@@ -48,3 +48,15 @@ pub fn range_hint(e: trig_core::CoreError) -> CliError {
         e => e.into(),
     }
 }
+
+/// Splits `name=value` arguments.
+pub fn param_pairs(raw: &[String]) -> Result<Vec<(String, String)>, CliError> {
+    raw.iter()
+        .map(|p| {
+            p.split_once('=')
+                .map(|(n, v)| (n.trim().to_string(), v.trim().to_string()))
+                .filter(|(n, v)| !n.is_empty() && !v.is_empty())
+                .ok_or_else(|| CliError::Usage(format!("--param `{p}`: expected NAME=VALUE")))
+        })
+        .collect()
+}

@@ -16,8 +16,8 @@ use trig_plot::{
 };
 use trig_specfile::Spec;
 
-use super::eval::param_pairs;
 use super::fit::{FitSetup, Runs, prepare};
+use super::param_pairs;
 use super::{CliError, CmdResult, range_hint};
 use crate::format::csv_text;
 use crate::output::{resolve, write_atomically, wrote};

@@ -13,7 +13,7 @@ use trig_core::surface::{Direction, TensorSurface};
 use trig_core::{Affine, Described, echo, input::Source, parse_point};
 use trig_specfile::AnyBasis;
 
-use super::eval::param_pairs;
+use super::param_pairs;
 use super::{CliError, range_hint};
 
 /// The options of a tensor-product surface in `eval`, `table`, `join`.

@@ -13,7 +13,8 @@ use trig_deriv::{
 };
 use trig_symbolic::{Sym, symbolic_atoms};
 
-use super::eval::{arithmetic_of, param_pairs};
+use super::eval::arithmetic_of;
+use super::param_pairs;
 use super::{CliError, CmdResult, range_hint};
 use crate::cell::{Block, Cell, Rendered};
 use crate::cost;

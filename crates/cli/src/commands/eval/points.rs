@@ -27,7 +27,8 @@ use serde_json::json;
 use trig_core::input::{Lines, Source};
 use trig_core::{Affine, Described, SEED000_NONUNIFORM, parse_point, work};
 
-use super::{CliError, EvalArgs, Evaluation, evaluate, param_pairs, subject_of};
+use super::{CliError, EvalArgs, Evaluation, evaluate, subject_of};
+use crate::commands::param_pairs;
 use crate::cost;
 use crate::format::{TextOrJson, json};
 use trig_core::evaluation::Arithmetic;

@@ -187,7 +187,7 @@ fn net_f64(net: &ControlNet) -> Vec<Vec<[f64; 3]>> {
 
 /// The exact values of `pairs` for `basis`, in its parameter order.
 fn exact_values(basis: &AnyBasis, raw: &[String], allow: bool) -> Result<Vec<Rational>, CliError> {
-    let pairs = crate::commands::eval::param_pairs(raw)?;
+    let pairs = crate::commands::param_pairs(raw)?;
     basis
         .params_from_pairs(&pairs, allow)
         .map_err(range_hint)?
@@ -369,7 +369,7 @@ fn default_title(
     if let Some(kind) = &args.join {
         let closed = if args.close { " closed" } else { "" };
         title.push_str(&format!(",{closed} {} join", kind.to_uppercase()));
-        if let Ok(pairs) = crate::commands::eval::param_pairs(&args.params2)
+        if let Ok(pairs) = crate::commands::param_pairs(&args.params2)
             && !pairs.is_empty()
         {
             let shown: Vec<String> = pairs.iter().map(|(n, v)| format!("⟪{n}⟫ = {v}")).collect();
