@@ -36,6 +36,23 @@ pub enum Shape {
     },
 }
 
+/// The index of the one parameter an optimisation searches (every other
+/// one fixed in `fixed`), or why there is not exactly one.
+pub fn searched_index(basis: &dyn NumericBasis, fixed: &[(usize, f64)]) -> Result<usize> {
+    let (_, n) = basis.counts();
+    let free: Vec<usize> = (0..n)
+        .filter(|k| !fixed.iter().any(|(j, _)| j == k))
+        .collect();
+    let [index] = free[..] else {
+        return Err(FitError::Option(format!(
+            "`{}` has {n} shape parameters; optimisation searches one, the others fixed ({} fixed)",
+            basis.basis_id(),
+            fixed.len()
+        )));
+    };
+    Ok(index)
+}
+
 /// Options of [`fit_outline`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct FitOptions {
@@ -134,16 +151,7 @@ pub fn fit_outline(
             Shape::Fixed(p) => SegmentBasis::new(family.clone(), p)?,
             Shape::Optimise { lo, hi, fixed } => {
                 let (_, n) = family.counts();
-                let free: Vec<usize> = (0..n)
-                    .filter(|k| !fixed.iter().any(|(j, _)| j == k))
-                    .collect();
-                let [index] = free[..] else {
-                    return Err(FitError::Option(format!(
-                        "`{}` has {n} shape parameters; optimisation searches one, the others fixed ({} fixed)",
-                        family.basis_id(),
-                        fixed.len()
-                    )));
-                };
+                let index = searched_index(family.as_ref(), fixed)?;
                 if fixed.len() + 1 != n {
                     return Err(FitError::Option(format!(
                         "`{}` has {n} shape parameters; {} fixed values given",

@@ -36,7 +36,7 @@ use crate::basis::{NumericBasis, SegmentBasis};
 use crate::error::{FitError, Result};
 use crate::grid::Grid;
 use crate::optimise::golden_section;
-use crate::pipeline::Shape;
+use crate::pipeline::{Shape, searched_index};
 use crate::space::{Join, Space};
 
 /// Smallest singular value, relative to the largest, of a collocation
@@ -212,16 +212,7 @@ fn choose_params(
         Shape::Optimise { lo, hi, fixed } => (*lo, *hi, fixed),
     };
     let (_, n) = basis.counts();
-    let free: Vec<usize> = (0..n)
-        .filter(|k| !fixed.iter().any(|(j, _)| j == k))
-        .collect();
-    let [index] = free[..] else {
-        return Err(FitError::Option(format!(
-            "`{}` has {n} shape parameters; optimisation searches one, the others fixed ({} fixed)",
-            basis.basis_id(),
-            fixed.len()
-        )));
-    };
+    let index = searched_index(basis.as_ref(), fixed)?;
     let mut start = vec![0.5 * (lo + hi); n];
     for (j, v) in fixed {
         start[*j] = *v;

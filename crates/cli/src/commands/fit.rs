@@ -127,6 +127,32 @@ pub fn fit_err(e: FitError) -> CliError {
 }
 
 /// The bases selected by `--family` or `--spec`.
+/// `--param NAME=VALUE` pairs, as read.
+pub type ParamPairs = Vec<(String, String)>;
+
+/// The selected bases ([`subjects`]) and the `--param NAME=VALUE` pairs,
+/// each naming a parameter of at least one of them.
+pub fn selected_with_params(
+    id: &str,
+    spec: Option<&Path>,
+    params: &[String],
+) -> Result<(Vec<AnyBasis>, ParamPairs), CliError> {
+    let pairs = param_pairs(params)?;
+    let selected = subjects(id, spec)?;
+    for (name, _) in &pairs {
+        if !selected.iter().any(|s| {
+            parameters(s)
+                .iter()
+                .any(|(n, symbol, _)| n == name || symbol == name)
+        }) {
+            return Err(CliError::Usage(format!(
+                "--param {name}: no selected basis has a parameter `{name}`"
+            )));
+        }
+    }
+    Ok((selected, pairs))
+}
+
 pub fn subjects(id: &str, spec: Option<&Path>) -> Result<Vec<AnyBasis>, CliError> {
     if let Some(path) = spec {
         if id != "all" {
@@ -322,19 +348,7 @@ pub fn prepare(
     runs: Runs,
 ) -> Result<(Outline, Vec<Method>), CliError> {
     let outline = Outline::read(&setup.glyph).map_err(fit_err)?;
-    let pairs = param_pairs(&setup.params)?;
-    let selected = subjects(family, setup.spec.as_deref())?;
-    for (name, _) in &pairs {
-        if !selected.iter().any(|s| {
-            parameters(s)
-                .iter()
-                .any(|(n, symbol, _)| n == name || symbol == name)
-        }) {
-            return Err(CliError::Usage(format!(
-                "--param {name}: no selected basis has a parameter `{name}`"
-            )));
-        }
-    }
+    let (selected, pairs) = selected_with_params(family, setup.spec.as_deref(), &setup.params)?;
     if setup.corners.is_empty() && (setup.corner_window == 0 || !setup.corner_angle.is_finite()) {
         return Err(CliError::Usage(
             "--corner-window must be ≥ 1 and --corner-angle finite".into(),

@@ -17,8 +17,9 @@ use trig_fit::{
 };
 use trig_specfile::AnyBasis;
 
-use super::fit::{SearchRange, fit_err, fixed_params, interval, parameters, searched, subjects};
-use super::param_pairs;
+use super::fit::{
+    SearchRange, fit_err, fixed_params, interval, parameters, searched, selected_with_params,
+};
 use super::plot::{FigureArgs, write};
 use super::{CliError, CmdResult, range_hint};
 use crate::cell::{Block, Rendered};
@@ -139,19 +140,7 @@ struct Row {
 /// The fits to run: each basis with its fixed parameters, and with
 /// `--optimise` also with the searched one optimised.
 fn settings(args: &FitSurfaceArgs) -> Result<Vec<(AnyBasis, String, Shape)>, CliError> {
-    let pairs = param_pairs(&args.params)?;
-    let selected = subjects(&args.family, args.spec.as_deref())?;
-    for (name, _) in &pairs {
-        if !selected.iter().any(|s| {
-            parameters(s)
-                .iter()
-                .any(|(n, symbol, _)| n == name || symbol == name)
-        }) {
-            return Err(CliError::Usage(format!(
-                "--param {name}: no selected basis has a parameter `{name}`"
-            )));
-        }
-    }
+    let (selected, pairs) = selected_with_params(&args.family, args.spec.as_deref(), &args.params)?;
     let hinted = |e: CliError| match e {
         CliError::Core(c) => range_hint(c),
         e => e,
