@@ -805,3 +805,64 @@ fn a_region_beside_fixed_values_ranges_and_parameter_maps() {
     let e = usage_error(&["audit", "--spec", &both]);
     assert!(e.contains("either a `region` or a `range`"), "{e}");
 }
+
+#[test]
+fn umbrella_claims_and_what_a_copy_does_not_print() {
+    // examples/c-bspline.toml: an umbrella over four claims that hold,
+    // one over it and a refuted claim, and a print that was not retrieved
+    let cbs = example("c-bspline.toml");
+    let (v, e) = claim(&cbs, "CBS-properties");
+    assert_eq!(v, "holds", "{e}");
+    for part in ["CBS-unity", "CBS-symmetry", "CBS-nonnegative", "CBS-hull"] {
+        assert!(e.contains(part), "{part}: {e}");
+    }
+    let (v, e) = claim(&cbs, "CBS-properties-wide");
+    assert_eq!(v, "fails", "{e}");
+    assert!(e.contains("CBS-wide"), "{e}");
+    // stated negatively: "is not C³" holds where the check fails
+    let (v, e) = claim(&cbs, "CBS-not-C3");
+    assert_eq!(v, "holds", "{e}");
+    assert!(e.contains("the negation of the check, which fails"), "{e}");
+    let (v, e) = claim(&cbs, "CBS-not-C2");
+    assert_eq!(v, "fails", "{e}");
+    assert!(e.contains("the negation of the check, which holds"), "{e}");
+    let (v, e) = claim(&cbs, "CBS-print");
+    assert_eq!(v, "not-checkable", "{e}");
+    assert!(e.contains("the print was not retrieved"), "{e}");
+    // refused: a listed id that is not a claim, an umbrella through itself,
+    // `claims` on another check, values fixed on an umbrella
+    let base = std::fs::read_to_string(&cbs).expect("the example");
+    let with = |name: &str, extra: &str| spec_file(name, &format!("{base}\n{extra}"));
+    let cases = [
+        (
+            "umbrella-missing.toml",
+            "[[claims]]\nid = \"U\"\nsource = \"s\"\nstatement = \"x\"\ncheck = \"all\"\nclaims = [\"CBS-unity\", \"nope\"]\n",
+            "lists `nope`, which is not a claim of the file",
+        ),
+        (
+            "umbrella-circle.toml",
+            "[[claims]]\nid = \"U\"\nsource = \"s\"\nstatement = \"x\"\ncheck = \"all\"\nclaims = [\"V\"]\n[[claims]]\nid = \"V\"\nsource = \"s\"\nstatement = \"x\"\ncheck = \"all\"\nclaims = [\"CBS-unity\", \"U\"]\n",
+            "lists itself",
+        ),
+        (
+            "umbrella-claims-elsewhere.toml",
+            "[[claims]]\nid = \"U\"\nsource = \"s\"\nstatement = \"x\"\ncheck = \"unity\"\nclaims = [\"CBS-unity\"]\n",
+            "`claims` belongs to `check = \"all\"`",
+        ),
+        (
+            "umbrella-fixed.toml",
+            "[[claims]]\nid = \"U\"\nsource = \"s\"\nstatement = \"x\"\ncheck = \"all\"\nclaims = [\"CBS-unity\"]\nat = { alpha = \"1\" }\n",
+            "fixes no values",
+        ),
+        (
+            "not-printed-empty.toml",
+            "[[claims]]\nid = \"U\"\nsource = \"s\"\nstatement = \"x\"\ncheck = \"not-printed\"\nreason = \"  \"\n",
+            "say what the copy does not print",
+        ),
+    ];
+    for (name, extra, expected) in cases {
+        let path = with(name, extra);
+        let err = usage_error(&["audit", "--spec", &path]);
+        assert!(err.contains(expected), "{name}: {err}");
+    }
+}

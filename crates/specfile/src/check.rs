@@ -161,6 +161,13 @@ pub enum Check {
     /// the varied control enters exactly the printed segments `j + o`,
     /// `o ∈ segments`.
     LocalControl { varied: Varied, segments: Vec<i64> },
+    /// Every listed claim of the file, each decided as it is stated: an
+    /// umbrella over printed parts (a theorem whose conditions the file
+    /// states one claim each).
+    All { claims: Vec<String> },
+    /// What this copy of the document does not print (a lost formula, an
+    /// unpublished data set): `not-checkable` with the reason, as data.
+    NotPrinted { reason: String },
 }
 
 /// How a printed identity is quantified over the parameter values.
@@ -193,6 +200,9 @@ pub struct SpecClaim {
     /// (`at = { lambda = "0" }`, `range = "[0, 0]"`,
     /// `ranges = { mu = "[0, 1]" }`): applied before deciding.
     pub given: Given,
+    /// The paper states the check's negation ("is not C⁴", "is not
+    /// totally positive"): the claim holds where the check fails.
+    pub negated: bool,
 }
 
 /// A parameter value fixed by a claim.

@@ -164,6 +164,57 @@ pub(crate) fn attach(src: &Source<'_>, spec: &mut Spec, raw: &[RawClaim]) -> Res
         }
         spec.claims.push(claim);
     }
+    umbrellas(src, spec)
+}
+
+/// The claims an umbrella (`check = "all"`) lists exist, and no umbrella
+/// lists itself through others.
+fn umbrellas(src: &Source<'_>, spec: &Spec) -> Result<()> {
+    let parts = |id: &str| -> Vec<String> {
+        match spec.claims.iter().find(|c| c.id == id).map(|c| &c.check) {
+            Some(Check::All { claims }) => claims.clone(),
+            _ => Vec::new(),
+        }
+    };
+    let invalid = |message: String| {
+        Err(SpecError::Invalid {
+            at: src.at(0),
+            field: "claims.claims".into(),
+            message,
+        })
+    };
+    for c in &spec.claims {
+        let Check::All { claims } = &c.check else {
+            continue;
+        };
+        if claims.is_empty() {
+            return invalid(format!("`{}` lists no claim", c.id));
+        }
+        if let Some(missing) = claims
+            .iter()
+            .find(|id| !spec.claims.iter().any(|d| &d.id == *id))
+        {
+            return invalid(format!(
+                "`{}` lists `{missing}`, which is not a claim of the file",
+                c.id
+            ));
+        }
+        // every claim reached from `c` through umbrellas
+        let mut seen: Vec<String> = Vec::new();
+        let mut todo = claims.clone();
+        while let Some(id) = todo.pop() {
+            if id == c.id {
+                return invalid(format!(
+                    "`{}` lists itself (through the claims it lists)",
+                    c.id
+                ));
+            }
+            if !seen.contains(&id) {
+                todo.extend(parts(&id));
+                seen.push(id);
+            }
+        }
+    }
     Ok(())
 }
 
@@ -243,14 +294,62 @@ fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
             }
         }
         "local-control" => local_control(src, spec, c)?,
+        "all" => Check::All {
+            claims: need(src, c, &c.claims, "claims")?
+                .iter()
+                .map(|id| id.get_ref().trim().to_string())
+                .collect(),
+        },
+        "not-printed" => {
+            let reason = need(src, c, &c.reason, "reason")?;
+            if reason.get_ref().trim().is_empty() {
+                return src.invalid(
+                    reason.span(),
+                    "claims.reason",
+                    "say what the copy does not print".into(),
+                );
+            }
+            Check::NotPrinted {
+                reason: reason.get_ref().trim().to_string(),
+            }
+        }
         other => {
             return src.invalid(
                 c.check.span(),
                 "claims.check",
-                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, continuity or local-control"),
+                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, continuity, local-control, all or not-printed"),
             );
         }
     };
+    for (field, given, taken) in [
+        (
+            "claims",
+            c.claims
+                .as_ref()
+                .map(|v| v.first().map_or(c.check.span(), Spanned::span)),
+            matches!(check, Check::All { .. }),
+        ),
+        (
+            "reason",
+            c.reason.as_ref().map(Spanned::span),
+            matches!(check, Check::NotPrinted { .. }),
+        ),
+    ] {
+        if let (Some(span), false) = (given, taken) {
+            return src.invalid(
+                span,
+                &format!("claims.{field}"),
+                format!(
+                    "`{field}` belongs to `check = \"{}\"`",
+                    if field == "claims" {
+                        "all"
+                    } else {
+                        "not-printed"
+                    }
+                ),
+            );
+        }
+    }
     let with_maximal = matches!(
         check,
         Check::Nonnegative { .. } | Check::ConvexHull { .. } | Check::TotalPositivity { .. }
@@ -276,6 +375,13 @@ fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
         );
     }
     let given = given(src, spec, c, c.check.get_ref().trim())?;
+    if matches!(check, Check::All { .. } | Check::NotPrinted { .. }) && !given.is_empty() {
+        return src.invalid(
+            c.check.span(),
+            "claims.at",
+            "an umbrella or a claim the copy does not print fixes no values (its parts fix their own)".into(),
+        );
+    }
     if c.maximal == Some(true) && !spec.params.is_empty() && given.fixed.len() == spec.params.len()
     {
         return src.invalid(
@@ -305,6 +411,7 @@ fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
         statement: c.statement.get_ref().clone(),
         check,
         given,
+        negated: c.negated == Some(true),
     })
 }
 

@@ -531,7 +531,9 @@ impl<'a> Substitution<'a> {
             Check::Unity
             | Check::ShapeEffect { .. }
             | Check::Continuity { .. }
-            | Check::LocalControl { .. } => {}
+            | Check::LocalControl { .. }
+            | Check::All { .. }
+            | Check::NotPrinted { .. } => {}
         }
         Ok(c)
     }

@@ -79,4 +79,10 @@ pub struct RawClaim {
     /// `for = "some value"` or `"no value"`.
     #[serde(rename = "for")]
     pub quantifier: Option<Spanned<String>>,
+    /// `check = "all"`: the ids of the claims it is the umbrella of.
+    pub claims: Option<Vec<Spanned<String>>>,
+    /// `check = "not-printed"`: what the copy does not print.
+    pub reason: Option<Spanned<String>>,
+    /// The statement is the negation of the check ("is not C⁴").
+    pub negated: Option<bool>,
 }

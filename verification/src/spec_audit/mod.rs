@@ -24,6 +24,7 @@ use crate::entry::{Document, Entry};
 use trig_judge::endpoint::TABLE_ORDERS;
 use trig_judge::local_control::Control;
 use trig_verdict::real_witness::{RealPoints, with_real_points};
+use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
 /// The report document of a spec: the claims its file lists.
@@ -263,8 +264,42 @@ fn decided<T>(result: Result<T, Stopped>, failed: impl FnOnce(Verdict) -> T) -> 
 }
 
 /// The verdict of one claim of the file: the values it fixes substituted
-/// and the ranges it gives put in place first (`trig_specfile::Given`).
+/// and the ranges it gives put in place first (`trig_specfile::Given`); a
+/// claim stated as the negation of its check holds where the check fails.
 pub fn decide(spec: &Spec, claim: &SpecClaim) -> Verdict {
+    let v = decide_stated(spec, claim);
+    if claim.negated { negation(v) } else { v }
+}
+
+/// The negation of a check's verdict: holds where the check fails (its
+/// counterexample proves the negation) and fails where it holds (its proof
+/// refutes it); a check that holds only after a correction of its print
+/// leaves the negation undecided, and an undecided check stays undecided.
+fn negation(v: Verdict) -> Verdict {
+    let (status, line) = match v.status {
+        Status::Fails => (
+            Status::Holds,
+            "the claim is the negation of the check, which fails: the counterexample below proves the claim",
+        ),
+        Status::Holds => (
+            Status::Fails,
+            "the claim is the negation of the check, which holds: the proof below refutes the claim",
+        ),
+        Status::HoldsAfterCorrection => (
+            Status::NotCheckable,
+            "the claim is the negation of the check, whose print fails but holds after the correction below: which of the two the negation is about is not decided",
+        ),
+        Status::NotCheckable => (
+            Status::NotCheckable,
+            "the claim is the negation of the check, which is not decided",
+        ),
+    };
+    let mut out = Verdict::new(status, v.method.clone(), vec![line.to_string()]);
+    out.evidence.extend(v.evidence);
+    out
+}
+
+fn decide_stated(spec: &Spec, claim: &SpecClaim) -> Verdict {
     if claim.given.is_empty() {
         return decide_check(spec, &claim.check);
     }
@@ -334,6 +369,9 @@ fn exact_ends(spec: &Spec, claim: &SpecClaim) -> Verdict {
         }
     }
 }
+
+/// How an umbrella claim is decided, as the report states it.
+const UMBRELLA: &str = "every listed claim of the file, each decided as it is stated: the umbrella holds when every part holds, fails when one fails";
 
 /// The verdict of one check on the spec as it is.
 fn decide_check(spec: &Spec, check: &Check) -> Verdict {
@@ -434,6 +472,15 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
             conditions,
         } => joins::printed_join(spec, *kind, *wrt, *different, factors, conditions),
         Check::Continuity { order } => trig_judge::continuity::bspline_continuity(spec, *order),
+        Check::All { claims } => Verdict::all(
+            UMBRELLA,
+            claims
+                .iter()
+                .filter_map(|id| spec.claims.iter().find(|c| &c.id == id))
+                .map(|c| (c.id.clone(), decide(spec, c)))
+                .collect(),
+        ),
+        Check::NotPrinted { reason } => Verdict::not_checkable(reason.clone()),
         Check::LocalControl { varied, segments } => {
             let control = match varied {
                 Varied::Point => Control::Point,
