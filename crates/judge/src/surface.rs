@@ -18,8 +18,8 @@
 use rug::Rational;
 use trig_certify::bernstein::{Tensor, tensor_to_bernstein};
 use trig_core::surface::{Direction, TensorSurface};
-use trig_core::{Affine, Interval, ParamRange};
-use trig_symbolic::Sym;
+use trig_core::{Affine, Interval, ParamRange, Ring};
+use trig_symbolic::{Poly, Sym};
 use trig_verdict::evidence::Evidence;
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
@@ -32,7 +32,7 @@ use crate::nonnegative::convex_hull;
 pub const OUTSIDE_NET: &str = "exact: the surface S(u, v) = Σ Σ P_ij B_i(u) B_j(v) at rational grid points of both domains, each coordinate exact (the functions exact there) and placed against the net's bounding box by a certified interval enclosure of the same sum";
 
 /// The method of [`cylinder_distance`].
-pub const CYLINDER: &str = "certified: x² + y² − r² of the surface, an exact polynomial in (u, v), bounded by its Bernstein coefficients on [0, 1]² in rational arithmetic; distance |ρ − r| = |ρ² − r²|/(ρ + r) ≤ max|x² + y² − r²|/r";
+pub const CYLINDER: &str = "certified: x² + y² − r² = g of the surface, an exact polynomial in (u, v), bounded by its Bernstein coefficients over a subdivision of [0, 1]² in rational arithmetic; the distance |√(r² + g) − r| at the ends of that range, in interval arithmetic";
 
 /// Bits of the interval enclosures that place an exact coordinate.
 const PREC: u32 = 128;
@@ -212,14 +212,10 @@ pub fn inside_net<B: ExactBasis>(surface: &TensorSurface<B>) -> Verdict {
     v
 }
 
-/// A function of `(u, v)` as the tensor of its power coefficients; `None`
-/// for one that is not a polynomial in them with rational coefficients.
-fn tensor(f: &Sym) -> Option<Tensor> {
-    let numerator = f.numerator();
-    if !f.denominator().is_empty() {
-        return None;
-    }
-    let rows = numerator.coefficients_in("u");
+/// A polynomial in `u`, `v` as the tensor of its power coefficients; `None`
+/// for one with another variable or an irrational coefficient.
+fn tensor(p: &Poly) -> Option<Tensor> {
+    let rows = p.coefficients_in("u");
     let columns: Vec<_> = rows.iter().map(|r| r.coefficients_in("v")).collect();
     let dv = columns.iter().map(Vec::len).max().unwrap_or(1).max(1);
     let mut t = Tensor::zeros(vec![rows.len().max(1) - 1, dv - 1]);
@@ -250,13 +246,82 @@ fn symbolic_point<B: ExactBasis>(surface: &TensorSurface<B>) -> Option<[Sym; 3]>
     surface.combine(&bu, &bv).ok()
 }
 
+/// Pieces per variable of the subdivision that bounds `x² + y² − r²`.
+const PIECES: i64 = 16;
+
+/// `p` on the piece `[i/n, (i+1)/n]` of `name`, rescaled to `[0, 1]`.
+fn piece(p: &Poly, name: &str, i: i64, n: i64) -> Poly {
+    if n == 1 {
+        return p.clone();
+    }
+    let x =
+        Poly::var(name).scale(&Rational::from((1, n))) + &Poly::constant(Rational::from((i, n)));
+    p.subs(name, &x)
+}
+
+/// The smallest and largest Bernstein coefficient of `p` over the pieces
+/// of a uniform subdivision of `[0, 1]²` (bounds of `p` there), and the
+/// value of largest modulus at the pieces' corners with its point.
+fn bounds(p: &Poly) -> Option<[Rational; 2]> {
+    let n = |name: &str| {
+        let d = i64::from(p.degree_in(name));
+        if d == 0 { 1 } else { PIECES.max(d + 1) }
+    };
+    let (nu, nv) = (n("u"), n("v"));
+    let (mut lo, mut hi) = (Rational::new(), Rational::new());
+    for i in 0..nu {
+        let pu = piece(p, "u", i, nu);
+        for j in 0..nv {
+            let b = tensor_to_bernstein(&tensor(&piece(&pu, "v", j, nv))?);
+            for c in &b.coeffs {
+                lo = lo.min(c.clone());
+                hi = hi.max(c.clone());
+            }
+        }
+    }
+    Some([lo, hi])
+}
+
+/// The grid point `(i/n, j/n)` where `|g|` is largest, with `g` there.
+fn largest_at(g: &Sym, n: i64) -> (Rational, Rational, Rational) {
+    let mut best = (Rational::new(), Rational::new(), Rational::new());
+    for i in 0..=n {
+        for j in 0..=n {
+            let (u, v) = (Rational::from((i, n)), Rational::from((j, n)));
+            let at = g
+                .subs("u", &Sym::rational(u.clone()))
+                .subs("v", &Sym::rational(v.clone()));
+            if let Some(x) = at.as_rational()
+                && x.clone().abs() > best.0.clone().abs()
+            {
+                best = (x, u, v);
+            }
+        }
+    }
+    best
+}
+
+/// `|√(r² + g) − r|`, the distance from the cylinder of a point at
+/// `x² + y² = r² + g`, enclosed; `None` when `r² + g < 0` is possible.
+fn radial_gap(radius: &Rational, g: &Rational) -> Option<Interval> {
+    let r = Interval::from_rational(PREC, radius);
+    let square = Rational::from(radius * radius) + g;
+    let root = Interval::from_rational(PREC, &square).try_sqrt()?;
+    let d = if *g < 0 { r - &root } else { root - &r };
+    d.fault().is_none().then_some(d)
+}
+
+/// A certified end shown to 5 digits, rounded outward.
+fn shown(x: &rug::Float, round: rug::float::Round) -> String {
+    x.to_string_radix_round(10, Some(5), round)
+}
+
 /// The largest distance of a polynomial surface over `[0, 1]²` from the
 /// cylinder `x² + y² = radius²` about the `z` axis: `fails` (the surface
-/// is not the cylinder) with an exact point off it and a certified bound
-/// of the distance, `holds` when `x² + y² − r²` is identically 0.
+/// is not the cylinder) with an exact point off it and certified bounds of
+/// the largest distance, `holds` when `x² + y² − r²` is identically 0.
 pub fn cylinder_distance<B: ExactBasis>(surface: &TensorSurface<B>, radius: &Rational) -> Verdict {
-    let polynomial = (0..2).all(|k| {
-        let dir = [surface.u(), surface.v()][k];
+    let polynomial = [surface.u(), surface.v()].iter().all(|dir| {
         let domain = dir.basis.domain();
         !domain.is_trigonometric()
             && domain.start.as_rational() == Some(&Rational::new())
@@ -265,13 +330,13 @@ pub fn cylinder_distance<B: ExactBasis>(surface: &TensorSurface<B>, radius: &Rat
     let r2 = Sym::rational(Rational::from(radius * radius));
     let gap = symbolic_point(surface)
         .filter(|_| polynomial && *radius > 0)
-        .map(|[x, y, _]| x.clone() * &x + &(y.clone() * &y) - &r2);
-    let Some(coefficients) = gap.as_ref().and_then(tensor) else {
+        .map(|[x, y, _]| x.clone() * &x + &(y.clone() * &y) - &r2)
+        .filter(|g| g.denominator().is_empty());
+    let Some((gap, [lo, hi])) = gap.and_then(|g| Some((g.clone(), bounds(g.numerator())?))) else {
         return Verdict::not_checkable(
             "the cylinder distance is bounded for polynomial bases on [0, 1] in both directions and a positive radius only",
         );
     };
-    let gap = gap.unwrap_or_else(Sym::zero);
     if gap.is_zero() {
         return Verdict::new(
             Status::Holds,
@@ -279,50 +344,51 @@ pub fn cylinder_distance<B: ExactBasis>(surface: &TensorSurface<B>, radius: &Rat
             ["x² + y² − r² ≡ 0: the surface lies on the cylinder"],
         );
     }
-    let bound = tensor_to_bernstein(&coefficients)
-        .coeffs
-        .iter()
-        .map(|c| c.clone().abs())
-        .max()
-        .unwrap_or_default()
-        / radius;
-    // a nonzero polynomial of degree < n in each variable is nonzero at
-    // some point of an n × n grid
-    let n = coefficients.degrees.iter().max().copied().unwrap_or(0) as i64 + 1;
-    let found = (0..=n)
-        .flat_map(|i| (0..=n).map(move |j| (Rational::from((i, n)), Rational::from((j, n)))))
-        .map(|(u, v)| {
-            let off = gap
-                .subs("u", &Sym::rational(u.clone()))
-                .subs("v", &Sym::rational(v.clone()));
-            (u, v, off)
-        })
-        .find(|(_, _, off)| !off.is_zero());
-    let Some((u, v, off)) = found else {
-        return Verdict::not_checkable("no grid point where x² + y² − r² ≠ 0 was found");
+    // the distance |√(r² + g) − r| grows with |g| on either side of 0: its
+    // largest value over g ∈ [lo, hi] is at an end
+    let (off, u, v) = largest_at(&gap, PIECES);
+    let ends = [radial_gap(radius, &lo), radial_gap(radius, &hi)];
+    let (Some(at_point), [Some(below), Some(above)]) = (radial_gap(radius, &off), ends) else {
+        return Verdict::not_checkable(
+            "x² + y² − r² may reach −r²: the distance is not bounded here",
+        );
+    };
+    let upper = if below.hi() > above.hi() {
+        below.hi()
+    } else {
+        above.hi()
     };
     let point = vec![("u".to_string(), u.clone()), ("v".to_string(), v.clone())];
     let names = ["u".to_string(), "v".to_string()];
-    let mut evidence = vec![
-        Evidence::note(format!(
-            "x² + y² − r² = {} (r = {radius}) is not identically 0",
-            gap.to_unicode()
-        )),
-        Evidence::note(format!(
-            "x² + y² − r² = {} at (u, v) = ({u}, {v}): the surface point is off the cylinder",
-            off.to_unicode()
-        ))
-        .witnessed(Some(witness::witness(
-            &point,
-            &names,
-            vec![("x² + y² − r²", off.clone())],
-        ))),
-    ];
-    evidence.push(Evidence::note(format!(
-        "largest distance from the cylinder ≤ {bound} ≈ {:.3e} (certified: the largest |Bernstein coefficient| of x² + y² − r² on [0, 1]², over r)",
-        bound.to_f64()
-    )));
-    Verdict::new(Status::Fails, CYLINDER, evidence)
+    let off = Sym::rational(off);
+    let (down, up) = (rug::float::Round::Down, rug::float::Round::Up);
+    Verdict::new(
+        Status::Fails,
+        CYLINDER,
+        [
+            Evidence::note(format!(
+                "x² + y² − r² = {} (r = {radius}) is not identically 0",
+                gap.to_unicode()
+            )),
+            Evidence::note(format!(
+                "x² + y² − r² = {} at (u, v) = ({u}, {v}): the surface point is off the cylinder, at distance ≥ {}",
+                off.to_unicode(),
+                shown(at_point.lo(), down)
+            ))
+            .witnessed(Some(witness::witness(
+                &point,
+                &names,
+                vec![("x² + y² − r²", off.clone())],
+            ))),
+            Evidence::note(format!(
+                "the largest distance from the cylinder lies in [{}, {}] (certified: below, the point of largest |x² + y² − r²| of a {PIECES} × {PIECES} grid; above, x² + y² − r² ∈ [{}, {}] by its Bernstein coefficients over {PIECES} pieces per variable of [0, 1]²)",
+                shown(at_point.lo(), down),
+                shown(upper, up),
+                shown(&rug::Float::with_val_round(53, &lo, down).0, down),
+                shown(&rug::Float::with_val_round(53, &hi, up).0, up)
+            )),
+        ],
+    )
 }
 
 #[cfg(test)]
@@ -367,7 +433,37 @@ mod tests {
         let net: String = ["0", "1/3", "2/3", "1"].map(ring).concat();
         let v = cylinder_distance(&surface(Family::Bernstein3, vec![], &net), &q(1, 1));
         assert_eq!(v.status, Status::Fails, "{v:?}");
-        assert!(v.evidence.iter().any(|e| e.contains("≤")), "{v:?}");
+        // the sampled largest distance of C(v) = Σ Bⱼ(v) Pⱼ lies in the bounds
+        let text = v.evidence.iter().map(|e| e.line()).collect::<String>();
+        let range = text
+            .split("lies in [")
+            .nth(1)
+            .and_then(|r| r.split(']').next());
+        let [lo, hi]: [f64; 2] = range
+            .map(|r| {
+                r.split(", ")
+                    .map(|x| x.parse().unwrap())
+                    .collect::<Vec<_>>()
+            })
+            .and_then(|b| b.try_into().ok())
+            .unwrap_or_else(|| panic!("{text}"));
+        let sampled = (0..=1000)
+            .map(|k| {
+                let t = f64::from(k) / 1000.0;
+                let b = [
+                    (1.0 - t).powi(3),
+                    3.0 * t * (1.0 - t).powi(2),
+                    3.0 * t * t * (1.0 - t),
+                    t.powi(3),
+                ];
+                let (x, y) = (b[0] + b[1] + b[2] / 2.0, b[1] / 2.0 + b[2] + b[3]);
+                (x.hypot(y) - 1.0).abs()
+            })
+            .fold(0.0, f64::max);
+        assert!(
+            lo <= sampled && sampled <= hi && hi - lo < 1e-3,
+            "{lo} {sampled} {hi}"
+        );
         let line = ["1 0 0\n"; 4].concat() + "\n";
         let on = cylinder_distance(
             &surface(Family::Bernstein3, vec![], &line.repeat(4)),
