@@ -25,7 +25,7 @@ use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 use trig_verdict::witness;
 
-use crate::exact::ExactBasis;
+use crate::exact::{ExactBasis, values_at};
 use crate::nonnegative::convex_hull;
 
 /// The method of [`leaves_net`].
@@ -40,24 +40,7 @@ const PREC: u32 = 128;
 /// Every function of `dir` at the exact point `x` (its parameters exact):
 /// `None` where the exact ring cannot take a function there.
 pub fn exact_values<B: ExactBasis>(dir: &Direction<B>, x: &Affine) -> Option<Vec<Sym>> {
-    let params: Vec<Sym> = dir
-        .params
-        .iter()
-        .map(|a| a.eval(&Sym::zero(), &[]))
-        .collect();
-    let atoms = dir.basis.domain().atoms_at(x, &Sym::one(), &params)?;
-    dir.basis
-        .exact_functions_at(&params)
-        .into_iter()
-        .map(|f| {
-            Some(
-                f?.subs("s", &atoms.s)
-                    .subs("c", &atoms.c)
-                    .subs("t", &atoms.t)
-                    .subs("E", &atoms.e),
-            )
-        })
-        .collect()
+    values_at(&dir.basis, &dir.params, x).into_iter().collect()
 }
 
 /// The point `S(u, v)` exactly, when every function of both directions is
