@@ -358,11 +358,7 @@ pub fn cylinder_distance<B: ExactBasis>(surface: &TensorSurface<B>, radius: &Rat
                 off.to_unicode(),
                 shown(at_point.lo(), down)
             ))
-            .witnessed(Some(witness::witness(
-                &point,
-                &names,
-                vec![("x² + y² − r²", off.clone())],
-            ))),
+            .witnessed(witness::of_exprs(&point, &names, &[("x² + y² − r²", &gap)])),
             Evidence::note(format!(
                 "the largest distance from the cylinder lies in [{}, {}] (certified: below, the point of largest |x² + y² − r²| of a {PIECES} × {PIECES} grid; above, x² + y² − r² ∈ [{}, {}] by its Bernstein coefficients over {PIECES} pieces per variable of [0, 1]²)",
                 shown(at_point.lo(), down),
