@@ -4,7 +4,7 @@
 //! of truth); identities are decided by the exact zero test, and a failure is
 //! shown by its exact residual.
 
-use trig_core::{Atoms, Basis, Family};
+use trig_core::{Affine, Atoms, Basis, Family};
 use trig_deriv::End;
 use trig_specfile::{AnyBasis, Spec};
 use trig_symbolic::{Sym, symbolic_atoms};
@@ -47,6 +47,27 @@ pub trait ExactBasis: Basis + Sync {
     fn exact_functions_at(&self, values: &[Sym]) -> Vec<Option<Sym>> {
         generic_at(self, values)
     }
+}
+
+/// The exact functions of `basis` at the point `x` with the parameters
+/// `params`, where the exact ring forms them (`None` for a function it
+/// cannot specialise, or for all at a point whose atoms are not exact).
+pub fn values_at<B: ExactBasis>(basis: &B, params: &[Affine], x: &Affine) -> Vec<Option<Sym>> {
+    let values: Vec<Sym> = params.iter().map(|a| a.eval(&Sym::zero(), &[])).collect();
+    let atoms = basis.domain().atoms_at(x, &Sym::one(), &values);
+    basis
+        .exact_functions_at(&values)
+        .into_iter()
+        .map(|f| Some(at_atoms(&f?, atoms.as_ref()?)))
+        .collect()
+}
+
+/// An exact function at exact atoms.
+pub fn at_atoms(f: &Sym, a: &Atoms<Sym>) -> Sym {
+    f.subs("s", &a.s)
+        .subs("c", &a.c)
+        .subs("t", &a.t)
+        .subs("E", &a.e)
 }
 
 /// [`ExactBasis::exact_functions_at`] by substituting the parameters'

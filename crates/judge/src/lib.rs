@@ -42,6 +42,7 @@ pub mod recomputed;
 pub mod region;
 pub mod shape_effect;
 pub mod span;
+pub mod surface;
 pub mod symmetry;
 pub mod total_positivity;
 pub mod tp_maximal;

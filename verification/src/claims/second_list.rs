@@ -5,7 +5,10 @@
 //! D20, D22, S6–S9, E20) — `not-checkable`, naming what is missing, with
 //! whatever part the text does decide.
 
-use trig_core::Family;
+use rug::Rational;
+use trig_core::net::ControlNet;
+use trig_core::surface::{Direction, TensorSurface};
+use trig_core::{Affine, Family};
 use trig_deriv::{End, Wrt};
 use trig_interp::{Scheme, Variant};
 use trig_symbolic::Sym;
@@ -13,6 +16,7 @@ use trig_symbolic::Sym;
 use super::thesis_interp::{derivs, positivity};
 use crate::claim::{Claim, Seed};
 use trig_judge::exact::{IDENTITY, basis, identities, identity_item, sum, symbols};
+use trig_judge::surface::cylinder_distance;
 use trig_judge::{nonnegative, span};
 use trig_verdict::evidence::Evidence;
 use trig_verdict::status::Status;
@@ -446,7 +450,46 @@ fn e18() -> Verdict {
         );
     }
     v.evidence.push("paraboloids of revolution and cones are polynomial surfaces and can be EH surfaces; \"the surfaces of revolution\" in general (spheres, tori, cylinders) cannot");
-    v
+    let mut parts = vec![("the circle in the span of the EH basis".to_string(), v)];
+    for (lambda, mu) in EH_PARAMETERS {
+        let cylinder = eh_cylinder(Rational::from(lambda), Rational::from(mu));
+        parts.push((
+            format!("an EH surface of the cylinder x² + y² = 1 at λ = {lambda}, μ = {mu}")
+                .replace('-', "−"),
+            cylinder_distance(&cylinder, &Rational::from(1)),
+        ));
+    }
+    let method = parts[0].1.method.clone();
+    let mut all = Verdict::all(method, parts);
+    all.evidence.push(format!(
+        "the cylinder's EH surface piece (5): rows of the net go with b_k(u), columns with b_l(v); as the EH bases are Hermite's (b₀, b₁ the end points, b₂, b₃ the end tangents), the net holds the quarter circle (1, 0), (0, 1) with tangents (0, {K}), (−{K}, 0) at heights 0, 1 and the height's tangents: S(u, v) = (C(v), z(u)) with C the EH quarter circle (K = {K} ≈ 4(√2 − 1), the tangent that puts the standard Hermite arc's midpoint on the circle; the paper prints no net). λ, μ: the standard Hermite bases and Figure 1's λ = 2, μ = −2 and λ = −2, μ = 2"
+    ));
+    all
+}
+
+/// Figure 1's printed shape parameters of the EH bases, and the standard
+/// Hermite bases (`λ = μ = 0`).
+const EH_PARAMETERS: [(i64, i64); 3] = [(0, 0), (2, -2), (-2, 2)];
+
+/// The tangent length of the EH quarter circle (our choice: the paper
+/// prints no net).
+const K: &str = "5/3";
+
+/// One EH surface piece (5) of the cylinder `x² + y² = 1`, `0 ≤ z ≤ 1`:
+/// the Hermite data of the quarter circle in `v` and of the height in `u`.
+fn eh_cylinder(lambda: Rational, mu: Rational) -> TensorSurface<Family> {
+    let direction = || Direction {
+        basis: Family::Eh,
+        params: vec![
+            Affine::rational(lambda.clone()),
+            Affine::rational(mu.clone()),
+        ],
+    };
+    let circle = |z: &str| format!("1 0 {z}\n0 1 {z}\n0 {K} 0\n-{K} 0 0\n\n");
+    let height = "0 0 1\n0 0 1\n0 0 0\n0 0 0\n\n";
+    let text = circle("0") + &circle("1") + height + height;
+    let net = ControlNet::parse(&text, "the EH cylinder net").expect("a 4 × 4 net");
+    TensorSurface::new(direction(), direction(), net).expect("a 4 × 4 net for the EH bases")
 }
 
 fn e20() -> Verdict {

@@ -6,11 +6,12 @@
 //! quantity beside the verdict.
 
 use rug::Rational;
-use trig_core::{Described, Family, ParamRange, Ring};
+use trig_core::{Described, Family, Ring};
 use trig_deriv::continuity::quotient_derivatives;
 use trig_specfile::Direction;
 use trig_symbolic::Sym;
 
+use super::thesis_out_of_range::thesis_surface;
 use crate::claim::{Claim, Seed};
 use trig_judge::certificate::CERTIFIED;
 use trig_judge::exact::{IDENTITY, identity_item};
@@ -18,6 +19,7 @@ use trig_judge::nonnegative::convex_hull;
 use trig_judge::shape_effect::{
     Move, Point, SHAPE, TOWARDS, moves, polygon_distances, shape_effect, weights_move,
 };
+use trig_judge::surface::inside_net;
 use trig_verdict::evidence::{Evidence, Expr};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
@@ -104,10 +106,6 @@ fn near_middle() -> Vec<(&'static str, Rational)> {
     vec![("s", q(4, 5)), ("c", q(3, 5))]
 }
 
-fn range(text: &str) -> ParamRange {
-    ParamRange::parse(text).unwrap_or_else(|why| panic!("the range {text}: {why}"))
-}
-
 /// The judge's verdict with explicit quantities on printed polygons
 /// appended.
 fn with_polygons(mut v: Verdict, quantities: Vec<Evidence>) -> Verdict {
@@ -173,13 +171,16 @@ fn t53() -> Verdict {
         "increasing m pulls the surface toward the net".into(),
         pulls,
     )];
-    for m in ["-9/5", "-1", "0", "1"] {
-        let mut hull = convex_hull(&family, Some(&range(&format!("[{m}, {m}]"))));
-        hull.evidence.insert(
-            0,
-            "the product weights b_i(u) b_j(v) are ≥ 0 and sum to 1 exactly when the b_i are (a negative b_i(u₀) times a positive b_j(v) is negative): the surface lies in the convex hull of the net",
-        );
-        parts.push((format!("inside the control net at m = {m}"), hull));
+    for (m, shown) in [
+        (q(-9, 5), "-9/5"),
+        (q(-1, 1), "-1"),
+        (q(0, 1), "0"),
+        (q(1, 1), "1"),
+    ] {
+        parts.push((
+            format!("inside the control net at m = {shown}"),
+            inside_net(&thesis_surface(&m)),
+        ));
     }
     Verdict::all(format!("{SHAPE}{CERTIFIED}"), parts)
 }

@@ -1,20 +1,24 @@
 //! T52: outside `m ∈ (−2, 1]` the thesis's curve (Figure 4.6's polygon)
 //! and surface (the 4×4 net of 5.2, Figure 5.3) leave the convex hull.
 //!
-//! "Leaves the hull" is shown by one exact point: the curve or surface
-//! evaluated exactly at `z = tan(θ/2) = k/20` (so `sin θ`, `cos θ` are
-//! rational) outside a supporting half-plane of the hull — the polygon's
-//! four edges for the curve, the net's bounding box for the surface (every
-//! net point has `0 ≤ x, y ≤ 3`, `0 ≤ z ≤ 4`). A sample never proves that
-//! a curve stays inside: a value of `m` without such a point is left
+//! "Leaves the hull" is shown by one exact point outside a supporting
+//! half-plane of the hull: the curve evaluated exactly at
+//! `z = tan(θ/2) = k/20` (so `sin θ`, `cos θ` are rational) against the
+//! polygon's four edges; the surface, a [`TensorSurface`] of the printed
+//! net, by the surface judge ([`leaves_net`]: an exact point at rational
+//! `u, v` outside the net's bounding box). A sample never proves that a
+//! curve stays inside: a value of `m` without such a point is left
 //! undecided.
 
 use rug::Rational;
-use trig_core::Family;
+use trig_core::net::ControlNet;
+use trig_core::surface::{Direction, TensorSurface};
+use trig_core::{Affine, Family};
 use trig_symbolic::Sym;
 
 use crate::claim::{Claim, Seed};
 use trig_judge::exact::basis;
+use trig_judge::surface::{OUTSIDE_NET, leaves_net};
 use trig_verdict::evidence::Evidence;
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
@@ -45,6 +49,13 @@ const NET: [[(i64, i64, i64); 4]; 4] = [
 
 /// Sample points `z = k/20`, `k = 0 … 20`.
 const STEPS: i64 = 20;
+
+/// The surface's grid: `u, v = k/6`, where `θ = πu/2` is a multiple of
+/// `π/12` and (3.7) is exact.
+const GRID: i64 = 6;
+
+/// The method of the curve's half.
+const CURVE: &str = "exact: the curve evaluated in rational arithmetic at rational points of the circle, against supporting half-planes of the hull";
 
 /// `(sin θ, cos θ)` at `z = tan(θ/2) = k/STEPS`, exactly.
 fn circle_point(k: i64) -> (Rational, Rational) {
@@ -99,46 +110,31 @@ fn curve_outside(b: &[Sym], m: i64) -> Option<(Rational, Rational, Rational, Rat
     })
 }
 
-/// A surface point outside the net's bounding box.
-fn surface_outside(b: &[Sym], m: i64) -> Option<(usize, usize, [Rational; 3])> {
-    let w: Vec<Vec<Rational>> = (0..=STEPS)
-        .map(|k| weights(b, m, &circle_point(k)))
+/// The thesis surface (5.11) of the printed net at `m` in both directions
+/// (T52, T53).
+pub(crate) fn thesis_surface(m: &Rational) -> TensorSurface<Family> {
+    let direction = || Direction {
+        basis: Family::ThesisCubic,
+        params: vec![Affine::rational(m.clone())],
+    };
+    let points = NET
+        .iter()
+        .map(|row| {
+            row.iter()
+                .map(|&(x, y, z)| [x, y, z].map(Rational::from))
+                .collect()
+        })
         .collect();
-    let bounds = [(0, 3), (0, 3), (0, 4)];
-    for (ku, wu) in w.iter().enumerate() {
-        for (kv, wv) in w.iter().enumerate() {
-            let coord = |k: usize| -> Rational {
-                (0..4)
-                    .flat_map(|i| (0..4).map(move |j| (i, j)))
-                    .map(|(i, j)| {
-                        let p = NET[i][j];
-                        let x = [p.0, p.1, p.2][k];
-                        Rational::from(&wu[i] * &wv[j]) * x
-                    })
-                    .sum()
-            };
-            let point = [coord(0), coord(1), coord(2)];
-            if point
-                .iter()
-                .zip(bounds)
-                .any(|(v, (lo, hi))| *v < lo || *v > hi)
-            {
-                return Some((ku, kv, point));
-            }
-        }
-    }
-    None
+    let net = ControlNet::new(points).expect("the printed net is 4 × 4");
+    TensorSurface::new(direction(), direction(), net).expect("a 4 × 4 net for (3.7)")
 }
 
 fn t52() -> Verdict {
     let b = basis(Family::ThesisCubic);
-    let mut evidence = vec![Evidence::note(
-        "Figure 4.6 prints no values of m; the curve is tested at the surface's m = −4, −3, 3, 4. Each case is decided by one exact point outside a supporting half-plane of the hull (z = tan(θ/2) = k/20, k = 0…20); none found leaves it undecided (a sample proves no containment)",
-    )];
-    let mut status = Status::Holds;
+    let mut parts = Vec::new();
     for m in OUTSIDE {
         let shown = m.to_string().replace('-', "−");
-        match curve_outside(&b, m) {
+        let curve = match curve_outside(&b, m) {
             Some((s, c, x, y, edge)) => {
                 let point = vec![
                     ("m".to_string(), Rational::from(m)),
@@ -154,37 +150,31 @@ fn t52() -> Verdict {
                         ("y", Sym::rational(y.clone())),
                     ],
                 );
-                evidence.push(
-                    Evidence::note(format!(
-                        "curve, m = {shown}: Q = ({x}, {y}) violates {edge} — outside the hull of the polygon"
+                Verdict::new(
+                    Status::Holds,
+                    CURVE,
+                    [Evidence::note(format!(
+                        "Q = ({x}, {y}) violates {edge} — outside the hull of the polygon"
                     ))
-                    .witnessed(Some(w)),
-                );
+                    .witnessed(Some(w))],
+                )
             }
-            None => {
-                status = Status::NotCheckable;
-                evidence.push(Evidence::note(format!(
-                    "curve, m = {shown}: no sample point outside the hull (not decided)"
-                )));
-            }
-        }
-        match surface_outside(&b, m) {
-            Some((ku, kv, [x, y, z])) => evidence.push(Evidence::note(format!(
-                "surface, m = {shown}: S at tan(θ_u/2) = {}, tan(θ_v/2) = {} is ({x}, {y}, {z}), outside the box 0 ≤ x, y ≤ 3, 0 ≤ z ≤ 4 that contains the net",
-                Rational::from((ku as i64, STEPS)),
-                Rational::from((kv as i64, STEPS))
-            ))),
-            None => {
-                status = Status::NotCheckable;
-                evidence.push(Evidence::note(format!(
-                    "surface, m = {shown}: no sample point outside the net's box (not decided)"
-                )));
-            }
-        }
+            None => Verdict::new(
+                Status::NotCheckable,
+                CURVE,
+                ["no sample point outside the hull (not decided)"],
+            ),
+        };
+        parts.push((format!("curve, m = {shown}"), curve));
+        parts.push((
+            format!("surface, m = {shown}"),
+            leaves_net(&thesis_surface(&Rational::from(m)), GRID),
+        ));
     }
-    Verdict::new(
-        status,
-        "exact: the curve and surface evaluated in rational arithmetic at rational points of the circle, against supporting half-planes of the hull",
-        evidence,
-    )
+    let mut v = Verdict::all(format!("{CURVE}; {OUTSIDE_NET}"), parts);
+    v.evidence.insert(
+        0,
+        "Figure 4.6 prints no values of m; the curve is tested at the surface's m = −4, −3, 3, 4. Each case is decided by one exact point outside a supporting half-plane of the hull (curve: z = tan(θ/2) = k/20, k = 0…20; surface: u, v = k/6, where (3.7) is exact); none found leaves it undecided (a sample proves no containment)",
+    );
+    v
 }

@@ -16,7 +16,7 @@ use trig_core::piecewise::UniformAt;
 use trig_core::{
     Affine, CoreError, Described, Family, Real, SEED000_NONUNIFORM, echo, parse_exact, parse_point,
 };
-use trig_judge::exact::ExactBasis;
+use trig_judge::exact::{ExactBasis, at_atoms};
 use trig_specfile::AnyBasis;
 use trig_symbolic::Sym;
 
@@ -319,27 +319,6 @@ fn exact_zeros(basis: &AnyBasis, params: &[Affine], x: &Affine) -> Vec<Zero> {
             _ => Zero::No,
         })
         .collect()
-}
-
-/// The exact functions of `basis` at the point `x` with the parameters
-/// `params`, where the exact ring forms them (`None` for a function it
-/// cannot specialise, or for all at a point whose atoms are not exact).
-fn exact_values(basis: &AnyBasis, params: &[Affine], x: &Affine) -> Vec<Option<Sym>> {
-    let values: Vec<Sym> = params.iter().map(|a| a.eval(&Sym::zero(), &[])).collect();
-    let atoms = basis.domain().atoms_at(x, &Sym::one(), &values);
-    basis
-        .exact_functions_at(&values)
-        .into_iter()
-        .map(|f| Some(at_atoms(&f?, atoms.as_ref()?)))
-        .collect()
-}
-
-/// An exact function at exact atoms.
-fn at_atoms(f: &Sym, a: &trig_core::Atoms<Sym>) -> Sym {
-    f.subs("s", &a.s)
-        .subs("c", &a.c)
-        .subs("t", &a.t)
-        .subs("E", &a.e)
 }
 
 /// The point as a rational, for the knot-based evaluations (their knots

@@ -9,11 +9,11 @@ use trig_core::evaluation::{self, Arithmetic};
 use trig_core::surface::{SurfaceAt, TensorSurface};
 use trig_core::{CoreError, Described};
 use trig_specfile::AnyBasis;
-use trig_symbolic::Sym;
 
-use super::{EvalArgs, Evaluation, describe, exact_values, render, shown};
+use super::{EvalArgs, Evaluation, describe, render, shown};
 use crate::commands::surface::{self, parse_uv};
 use crate::commands::{CliError, CmdResult};
+use trig_judge::surface::exact_point;
 
 pub fn run(args: &EvalArgs, arithmetic: Arithmetic) -> CmdResult {
     if args.piecewise || !args.knots.is_empty() || args.at_file.is_some() {
@@ -81,15 +81,5 @@ pub fn run(args: &EvalArgs, arithmetic: Arithmetic) -> CmdResult {
 /// a rational or a multiple of π/12): those print as an exact `0` instead of
 /// an enclosure of zero that no precision decides.
 fn exact_zeros(surface: &TensorSurface<AnyBasis>, [u, v]: [&Affine; 2]) -> [bool; 3] {
-    let exact = |dir: &trig_core::surface::Direction<AnyBasis>, x: &Affine| {
-        exact_values(&dir.basis, &dir.params, x)
-            .into_iter()
-            .collect::<Option<Vec<Sym>>>()
-    };
-    match (exact(surface.u(), u), exact(surface.v(), v)) {
-        (Some(bu), Some(bv)) => surface
-            .combine(&bu, &bv)
-            .map_or([false; 3], |p| p.map(|c| c.is_zero())),
-        _ => [false; 3],
-    }
+    exact_point(surface, u, v).map_or([false; 3], |p| p.map(|c| c.is_zero()))
 }
