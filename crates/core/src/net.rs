@@ -198,6 +198,27 @@ impl ControlNet {
         })
     }
 
+    /// The net checked against the numbers of functions of the `u` basis
+    /// (rows) and the `v` basis (columns), each named by its id.
+    pub fn check_size(&self, u: (&str, usize), v: (&str, usize)) -> crate::error::Result<()> {
+        for ((id, expected), what, got) in
+            [(u, "rows", self.rows()), (v, "columns", self.columns())]
+        {
+            if expected != got {
+                return Err(crate::error::CoreError::Count {
+                    what: format!(
+                        "control-net {what} for `{id}` (the net is {} × {})",
+                        self.rows(),
+                        self.columns()
+                    ),
+                    expected,
+                    got,
+                });
+            }
+        }
+        Ok(())
+    }
+
     /// The number of net rows (`n_u`).
     pub fn rows(&self) -> usize {
         self.points.len()
