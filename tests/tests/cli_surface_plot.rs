@@ -136,6 +136,74 @@ fn a_drawn_join_shares_its_boundary_with_the_first_patch() {
 }
 
 #[test]
+fn a_rational_join_is_built_in_homogeneous_coordinates() {
+    // the thesis net with weights 2 + i + j: the C¹ join's forced weights
+    // are positive, and the two rational patches share their boundary
+    let text: String = std::fs::read_to_string(net())
+        .expect("the example net")
+        .split("\n\n")
+        .enumerate()
+        .map(|(i, row)| {
+            row.lines()
+                .filter(|l| !l.starts_with('#'))
+                .enumerate()
+                .map(|(j, l)| format!("{l} {}\n", 2 + i + j))
+                .collect::<String>()
+        })
+        .collect::<Vec<_>>()
+        .join("\n");
+    let weighted = scratch("weighted-net.txt");
+    std::fs::write(&weighted, text).expect("write the net");
+    let out = scratch("rational-c1.obj");
+    let args = [
+        "plot",
+        "surface",
+        "--family",
+        "thesis-cubic",
+        "--param",
+        "m=1",
+        "--net",
+        &weighted,
+        "--output",
+        &out,
+        "--samples",
+        "6",
+        "--join",
+        "c1",
+    ];
+    assert!(written(&args).contains("wrote"));
+    let v = obj_vertices(&std::fs::read_to_string(&out).expect("obj"));
+    assert_eq!(v.len(), 72);
+    for j in 0..6 {
+        let (a, b) = (v[5 * 6 + j], v[36 + j]);
+        for k in 0..3 {
+            assert!((a[k] - b[k]).abs() < 1e-12, "{a:?} {b:?}");
+        }
+    }
+    // weights the join would have to make negative, and a closed pair
+    let example_net = example("surfaces/thesis-net-weighted.txt");
+    let base = [
+        "plot",
+        "surface",
+        "--family",
+        "thesis-cubic",
+        "--param",
+        "m=1",
+        "--net",
+        &example_net,
+        "--output",
+        &out,
+    ];
+    assert_errors(&[
+        (&[&base[..], &["--join", "c2"]].concat(), "weight -6 ≤ 0"),
+        (
+            &[&base[..], &["--join", "c1", "--close"]].concat(),
+            "without weights",
+        ),
+    ]);
+}
+
+#[test]
 fn bad_plot_requests_are_one_line_errors() {
     let net = net();
     let base = |out: &'static str, extra: &[&'static str]| {

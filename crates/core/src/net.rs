@@ -59,6 +59,8 @@ pub enum NetError {
         line: usize,
         value: String,
     },
+    #[error("{input}: {what}")]
+    Computed { input: String, what: String },
     #[error("{input} holds no control point")]
     Empty { input: String },
 }
@@ -79,6 +81,31 @@ impl ControlNet {
             .map(|r| r.into_iter().map(|p| (p, None)).collect())
             .collect();
         Self::from_rows("the control net", rows, &[])
+    }
+
+    /// A net from its rows with a weight per point when `weights` is
+    /// `Some` (rectangular and nonempty, checked; each weight positive, a
+    /// weight ≤ 0 is refused naming `input`).
+    pub fn with_weights(
+        points: Vec<Vec<[Rational; 3]>>,
+        weights: Option<Vec<Vec<Rational>>>,
+        input: &str,
+    ) -> Result<Self, NetError> {
+        let Some(weights) = weights else {
+            return Self::new(points);
+        };
+        if let Some(w) = weights.iter().flatten().find(|w| **w <= 0) {
+            return Err(NetError::Computed {
+                input: input.into(),
+                what: format!("weight {w} is not positive"),
+            });
+        }
+        let rows = points
+            .into_iter()
+            .zip(weights)
+            .map(|(r, w)| r.into_iter().zip(w).map(|(p, w)| (p, Some(w))).collect())
+            .collect();
+        Self::from_rows(input, rows, &[])
     }
 
     /// The net in `source` (see the module's layout).

@@ -52,6 +52,11 @@ pub fn closing_net(
             2 * forced
         )));
     }
+    if net.is_rational() {
+        return Err(CliError::Usage(
+            "--close takes a net without weights".into(),
+        ));
+    }
     let front = second_net(bases, kind, across, net, values)?;
     let back = second_net(bases, kind, across, &reversed(net, across)?, values)?;
     // rows 0…k from the first seam, rows n−1−i from the second (read backwards)
