@@ -64,8 +64,9 @@ pub struct SurfacePlotArgs {
     /// of the net.
     #[arg(long, conflicts_with_all = ["join", "revolution"])]
     bspline: bool,
-    /// With --join c0, c1 or g1: close the pair into a cylinder, the second
-    /// patch joined to the first at both seams (thesis Figures 5.9, 5.11).
+    /// With --join: close the pair into a cylinder, the second patch joined
+    /// to the first at both seams (thesis Figures 5.9–5.12; for c2, g2 of a
+    /// cubic both patches are solved together, docs/surfaces.md).
     #[arg(long, requires = "join")]
     close: bool,
     /// With --join: the boundary (u: u = 1 of the first is u = 0 of the second).
@@ -278,14 +279,15 @@ pub fn run(args: &SurfacePlotArgs) -> CmdResult {
             alpha,
             beta,
         };
-        let build = if args.close { closing_net } else { second_net };
-        let net2 = build(
-            [&du.basis, &dv.basis],
-            kind,
-            args.across,
-            surfaces[0].net(),
-            &values,
-        )?;
+        let bases = [&du.basis, &dv.basis];
+        let net2 = if args.close {
+            let [first, second] =
+                closing_net(bases, kind, args.across, surfaces[0].net(), &values)?;
+            surfaces[0] = TensorSurface::new(du.clone(), dv.clone(), first)?;
+            second
+        } else {
+            second_net(bases, kind, args.across, surfaces[0].net(), &values)?
+        };
         let mut d2 = joined.clone();
         d2.params = second
             .into_iter()
