@@ -408,6 +408,26 @@ fn a_closed_pair_is_a_cylinder_joined_at_both_seams() {
 }
 
 #[test]
+fn the_closed_c2_pair_of_the_thesis_net_as_svg() {
+    let svg = plot(
+        "1",
+        "closed-c2.svg",
+        &[
+            "--samples",
+            "3",
+            "--join",
+            "c2",
+            "--param2",
+            "m=1/2",
+            "--close",
+        ],
+    );
+    let svg = std::fs::read_to_string(svg).expect("svg");
+    assert!(svg.contains("closed C2 join"), "{svg}");
+    insta::assert_snapshot!("surface_closed_c2_samples3", svg);
+}
+
+#[test]
 fn a_uniform_bspline_surface_is_one_patch_per_span_and_they_meet() {
     let grid = scratch("grid6.txt");
     let rows: Vec<String> = (0..6)
