@@ -213,18 +213,7 @@ pub fn run(args: &SurfacePlotArgs) -> CmdResult {
             "--azimuth and --elevation take finite degrees".into(),
         ));
     }
-    let output = resolve(&args.output)?;
-    let extension = output
-        .extension()
-        .map(|e| e.to_string_lossy().to_ascii_lowercase())
-        .unwrap_or_default();
-    let mesh = MeshFormat::of_extension(&extension);
-    if mesh.is_none() && extension != "svg" {
-        return Err(CliError::Usage(format!(
-            "{}: give a name ending in .svg (a picture, its pgfplots code beside it) or .obj, .ply, .stl (a mesh)",
-            output.display()
-        )));
-    }
+    let (output, mesh) = output_of(&args.output)?;
     let u = AnyBasis::open(args.family.as_deref(), args.spec.as_deref())?;
     let [du, dv] = args
         .v
@@ -325,7 +314,7 @@ pub fn run(args: &SurfacePlotArgs) -> CmdResult {
             elevation: args.elevation,
         },
     };
-    write(&output, mesh, &figure, &args.look)
+    write(&output, mesh, &figure, &args.look, "plot surface")
 }
 
 impl SurfacePlotArgs {
@@ -387,12 +376,32 @@ fn default_title(
     title
 }
 
-/// Writes the SVG and its pgfplots code beside it, or the mesh.
-fn write(
+/// Where a surface goes and how: an SVG (`None`) or a mesh, by the
+/// extension of `path`.
+pub(crate) fn output_of(path: &Path) -> Result<(PathBuf, Option<MeshFormat>), CliError> {
+    let output = resolve(path)?;
+    let extension = output
+        .extension()
+        .map(|e| e.to_string_lossy().to_ascii_lowercase())
+        .unwrap_or_default();
+    let mesh = MeshFormat::of_extension(&extension);
+    if mesh.is_none() && extension != "svg" {
+        return Err(CliError::Usage(format!(
+            "{}: give a name ending in .svg (a picture, its pgfplots code beside it) or .obj, .ply, .stl (a mesh)",
+            output.display()
+        )));
+    }
+    Ok((output, mesh))
+}
+
+/// Writes the SVG and its pgfplots code beside it, or the mesh (its header
+/// naming `command`).
+pub(crate) fn write(
     output: &Path,
     mesh: Option<MeshFormat>,
     figure: &SurfaceFigure,
     look: &FigureArgs,
+    command: &str,
 ) -> CmdResult {
     if std::fs::metadata(output).is_ok_and(|m| !m.is_file()) {
         return Err(CliError::Usage(format!(
@@ -405,10 +414,7 @@ fn write(
         let text = mesh
             .write(
                 format,
-                &format!(
-                    "trig-audit plot surface: {}",
-                    trig_tex::plain(&figure.title)
-                ),
+                &format!("trig-audit {command}: {}", trig_tex::plain(&figure.title)),
             )
             .map_err(plot_err)?;
         write_atomically(output, text.as_bytes())?;
