@@ -24,3 +24,6 @@ cargo run -q -p trig-audit -- plot surface --family thesis-cubic --param m=0 --n
 plot_cylinder() { cargo run -q -p trig-audit -- plot surface --family thesis-cubic --net examples/surfaces/half-cylinder-net.txt --close "$@"; }
 plot_cylinder --param m=0.7 --join c1 --output docs/figures/surface-5.9-c1-cylinder.svg
 plot_cylinder --param m=1 --join g1 --alpha 2 --output docs/figures/surface-5.11-g1-cylinder.svg
+# C2 and G2 (Figures 5.10(a), 5.12(a) values): both patches solved together; flat (docs/surfaces.md)
+plot_cylinder --param m=1 --join c2 --param2 m=0.5 --output docs/figures/surface-5.10-c2-cylinder.svg
+plot_cylinder --param m=0.5 --join g2 --param2 m=0.2 --alpha 0.5 --beta 2 --output docs/figures/surface-5.12-g2-cylinder.svg

@@ -182,6 +182,101 @@ fn the_error_map_is_written_with_its_pgfplots_code_and_data() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
+#[test]
+fn the_fitted_surface_is_written_by_the_surface_writer() {
+    let dir = std::env::temp_dir().join(format!("trig-audit-fitted-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("scratch directory");
+    let fit = |output: &Path| {
+        written(&[
+            "fit-surface",
+            "--grid",
+            &volcano(),
+            "--family",
+            "thesis-cubic",
+            "--patches",
+            "4x4",
+            "--spacing",
+            "10",
+            "--surface-output",
+            &output.display().to_string(),
+            "--output",
+            &dir.join("table.md").display().to_string(),
+        ])
+    };
+    let obj = dir.join("fitted.obj");
+    assert!(fit(&obj).contains("vertices"));
+    let text = std::fs::read_to_string(&obj).expect("OBJ");
+    assert!(
+        text.starts_with("# trig-audit fit-surface: volcano: fitted surface of thesis-cubic"),
+        "{text:.200}"
+    );
+    let vertices: Vec<[f64; 3]> = text
+        .lines()
+        .filter_map(|l| l.strip_prefix("v "))
+        .map(|l| {
+            let v: Vec<f64> = l.split(' ').map(|x| x.parse().expect("a number")).collect();
+            [v[0], v[1], v[2]]
+        })
+        .collect();
+    // 87 rows in 4 patches of 23 grid lines each (around 21.5 rows), 61
+    // columns in 4 of 16: one vertex per grid point of every patch
+    assert_eq!(vertices.len(), (4 * 23) * (4 * 16));
+    assert_eq!(
+        text.lines().filter(|l| l.starts_with("f ")).count(),
+        16 * 22 * 15 * 2
+    );
+    // x, y on the 10 m grid, the heights those of the volcano (94 to 195 m)
+    assert!(
+        vertices
+            .iter()
+            .all(|v| v[0] % 10.0 == 0.0 && v[1] % 10.0 == 0.0 && v[0] <= 860.0 && v[1] <= 600.0)
+    );
+    assert!(
+        vertices.iter().all(|v| (85.0..205.0).contains(&v[2])),
+        "{vertices:?}"
+    );
+    let svg = dir.join("fitted.svg");
+    let note = fit(&svg);
+    assert!(
+        note.contains("fitted.svg") && note.contains("fitted.tex"),
+        "{note}"
+    );
+    assert_eq!(
+        std::fs::read_to_string(&svg)
+            .expect("SVG")
+            .matches("<polygon")
+            .count(),
+        16 * 22 * 15 * 2
+    );
+    std::fs::remove_dir_all(&dir).ok();
+    assert_errors(&[
+        (
+            &[
+                "fit-surface",
+                "--grid",
+                &volcano(),
+                "--surface-output",
+                "/tmp/x.obj",
+            ],
+            "--surface-output draws one fit",
+        ),
+        (
+            &[
+                "fit-surface",
+                "--grid",
+                &volcano(),
+                "--family",
+                "thesis-cubic",
+                "--patches",
+                "2x2",
+                "--surface-output",
+                "/tmp/x.png",
+            ],
+            "give a name ending in .svg",
+        ),
+    ]);
+}
+
 fn scratch(name: &str, text: &str) -> String {
     let path = std::env::temp_dir().join(format!("trig-surface-{}-{name}", std::process::id()));
     std::fs::write(&path, text).expect("scratch grid");

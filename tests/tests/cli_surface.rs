@@ -418,6 +418,63 @@ fn the_corner_table_reproduces_the_printed_terminal_properties() {
     ]);
 }
 
+#[test]
+fn the_rational_corner_table_is_the_quotient_and_equal_weights_change_nothing() {
+    let table = |net: &str| {
+        stdout_ok(&[
+            "table",
+            "thesis-cubic",
+            "--surface",
+            "--order",
+            "2",
+            "--format",
+            "csv",
+            "--net",
+            net,
+        ])
+    };
+    let weighted = table(&example("surfaces/thesis-net-weighted.txt"));
+    // ∂S/∂v at (0, 0) is (w₀₁/w₀₀)(m + 2)(P₀₁ − P₀₀) = 2(m + 2)(P₀₁ − P₀₀)
+    assert_eq!(
+        cell(&weighted, "start, v at its start", 0, 1),
+        "(-2*m - 4)*P00 + (2*m + 4)*P01"
+    );
+    // the corner point is still interpolated; the mixed derivative is not
+    // the polynomial surface's (m + 2)²(P₀₀ − P₀₁ − P₁₀ + P₁₁)
+    assert_eq!(cell(&weighted, "end, v at its end", 0, 0), "P33");
+    assert!(
+        cell(&weighted, "start, v at its start", 1, 1).starts_with("(7*m^2 + 28*m + 28)*P00"),
+        "{weighted}"
+    );
+    // equal weights: the polynomial table, entry by entry
+    let plain = stdout_ok(&[
+        "table",
+        "thesis-cubic",
+        "--surface",
+        "--order",
+        "2",
+        "--format",
+        "csv",
+    ]);
+    let equal: String = std::fs::read_to_string(net())
+        .expect("the example net")
+        .lines()
+        .map(|l| match l.starts_with('#') || l.trim().is_empty() {
+            true => format!("{l}\n"),
+            false => format!("{l} 7/2\n"),
+        })
+        .collect();
+    let equal = table(&scratch("equal-weights.txt", &equal));
+    assert_eq!(equal, plain);
+    assert_ne!(weighted, plain);
+    // a net of the wrong size for the bases
+    let small = scratch("small-weighted.txt", "0 0 0 1\n1 0 0 2\n");
+    assert_errors(&[(
+        &["table", "thesis-cubic", "--surface", "--net", &small],
+        "expected 4, got 1",
+    )]);
+}
+
 /// The line of a forced point in `join` text output.
 fn forced<'a>(out: &'a str, point: &str) -> &'a str {
     out.lines()

@@ -136,6 +136,74 @@ fn a_drawn_join_shares_its_boundary_with_the_first_patch() {
 }
 
 #[test]
+fn a_rational_join_is_built_in_homogeneous_coordinates() {
+    // the thesis net with weights 2 + i + j: the C¹ join's forced weights
+    // are positive, and the two rational patches share their boundary
+    let text: String = std::fs::read_to_string(net())
+        .expect("the example net")
+        .split("\n\n")
+        .enumerate()
+        .map(|(i, row)| {
+            row.lines()
+                .filter(|l| !l.starts_with('#'))
+                .enumerate()
+                .map(|(j, l)| format!("{l} {}\n", 2 + i + j))
+                .collect::<String>()
+        })
+        .collect::<Vec<_>>()
+        .join("\n");
+    let weighted = scratch("weighted-net.txt");
+    std::fs::write(&weighted, text).expect("write the net");
+    let out = scratch("rational-c1.obj");
+    let args = [
+        "plot",
+        "surface",
+        "--family",
+        "thesis-cubic",
+        "--param",
+        "m=1",
+        "--net",
+        &weighted,
+        "--output",
+        &out,
+        "--samples",
+        "6",
+        "--join",
+        "c1",
+    ];
+    assert!(written(&args).contains("wrote"));
+    let v = obj_vertices(&std::fs::read_to_string(&out).expect("obj"));
+    assert_eq!(v.len(), 72);
+    for j in 0..6 {
+        let (a, b) = (v[5 * 6 + j], v[36 + j]);
+        for k in 0..3 {
+            assert!((a[k] - b[k]).abs() < 1e-12, "{a:?} {b:?}");
+        }
+    }
+    // weights the join would have to make negative, and a closed pair
+    let example_net = example("surfaces/thesis-net-weighted.txt");
+    let base = [
+        "plot",
+        "surface",
+        "--family",
+        "thesis-cubic",
+        "--param",
+        "m=1",
+        "--net",
+        &example_net,
+        "--output",
+        &out,
+    ];
+    assert_errors(&[
+        (&[&base[..], &["--join", "c2"]].concat(), "weight -6 ≤ 0"),
+        (
+            &[&base[..], &["--join", "c1", "--close"]].concat(),
+            "without weights",
+        ),
+    ]);
+}
+
+#[test]
 fn bad_plot_requests_are_one_line_errors() {
     let net = net();
     let base = |out: &'static str, extra: &[&'static str]| {
@@ -306,8 +374,15 @@ fn a_closed_pair_is_a_cylinder_joined_at_both_seams() {
     };
     // the second seam read backwards is not the same join for a B-spline basis
     assert!(run("bspline3", "c1").contains("the closing seam of `bspline3` is not C1"));
-    assert!(
-        trig_e2e::error_line(&[
+    // C² and G² overlap: both patches are solved together (both seams exact)
+    // and every column lies on the line through its kept ends — here the
+    // plane y = 0 of the half cylinder's rows 0 and 3
+    for (kind, extra) in [
+        ("c2", &["--param2", "m=1/2"][..]),
+        ("g2", &["--alpha", "1/2", "--beta", "2"][..]),
+    ] {
+        let out = scratch(&format!("closed-{kind}.obj"));
+        let mut args = vec![
             "plot",
             "surface",
             "--family",
@@ -317,13 +392,39 @@ fn a_closed_pair_is_a_cylinder_joined_at_both_seams() {
             "--net",
             &half,
             "--join",
-            "c2",
+            kind,
             "--close",
+            "--samples",
+            "5",
             "--output",
-            "never.svg",
-        ])
-        .contains("force 6 of the 4 rows")
+            &out,
+        ];
+        args.extend_from_slice(extra);
+        assert!(written(&args).contains("wrote"));
+        let v = obj_vertices(&std::fs::read_to_string(&out).expect("obj"));
+        assert_eq!(v.len(), 50);
+        assert!(v.iter().all(|p| p[1].abs() < 1e-12), "{kind}: {v:?}");
+    }
+}
+
+#[test]
+fn the_closed_c2_pair_of_the_thesis_net_as_svg() {
+    let svg = plot(
+        "1",
+        "closed-c2.svg",
+        &[
+            "--samples",
+            "3",
+            "--join",
+            "c2",
+            "--param2",
+            "m=1/2",
+            "--close",
+        ],
     );
+    let svg = std::fs::read_to_string(svg).expect("svg");
+    assert!(svg.contains("closed C2 join"), "{svg}");
+    insta::assert_snapshot!("surface_closed_c2_samples3", svg);
 }
 
 #[test]

@@ -59,6 +59,8 @@ pub enum NetError {
         line: usize,
         value: String,
     },
+    #[error("{input}: {what}")]
+    Computed { input: String, what: String },
     #[error("{input} holds no control point")]
     Empty { input: String },
 }
@@ -79,6 +81,31 @@ impl ControlNet {
             .map(|r| r.into_iter().map(|p| (p, None)).collect())
             .collect();
         Self::from_rows("the control net", rows, &[])
+    }
+
+    /// A net from its rows with a weight per point when `weights` is
+    /// `Some` (rectangular and nonempty, checked; each weight positive, a
+    /// weight ≤ 0 is refused naming `input`).
+    pub fn with_weights(
+        points: Vec<Vec<[Rational; 3]>>,
+        weights: Option<Vec<Vec<Rational>>>,
+        input: &str,
+    ) -> Result<Self, NetError> {
+        let Some(weights) = weights else {
+            return Self::new(points);
+        };
+        if let Some(w) = weights.iter().flatten().find(|w| **w <= 0) {
+            return Err(NetError::Computed {
+                input: input.into(),
+                what: format!("weight {w} is not positive"),
+            });
+        }
+        let rows = points
+            .into_iter()
+            .zip(weights)
+            .map(|(r, w)| r.into_iter().zip(w).map(|(p, w)| (p, Some(w))).collect())
+            .collect();
+        Self::from_rows(input, rows, &[])
     }
 
     /// The net in `source` (see the module's layout).
@@ -196,6 +223,27 @@ impl ControlNet {
                 .as_deref()
                 .map(|w| window_of(w, (row, rows), (column, columns))),
         })
+    }
+
+    /// The net checked against the numbers of functions of the `u` basis
+    /// (rows) and the `v` basis (columns), each named by its id.
+    pub fn check_size(&self, u: (&str, usize), v: (&str, usize)) -> crate::error::Result<()> {
+        for ((id, expected), what, got) in
+            [(u, "rows", self.rows()), (v, "columns", self.columns())]
+        {
+            if expected != got {
+                return Err(crate::error::CoreError::Count {
+                    what: format!(
+                        "control-net {what} for `{id}` (the net is {} × {})",
+                        self.rows(),
+                        self.columns()
+                    ),
+                    expected,
+                    got,
+                });
+            }
+        }
+        Ok(())
     }
 
     /// The number of net rows (`n_u`).

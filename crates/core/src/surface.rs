@@ -70,20 +70,7 @@ pub struct TensorSurface<B> {
 impl<B: Basis> TensorSurface<B> {
     /// A surface over `net`, checked against the sizes of the two bases.
     pub fn new(u: Direction<B>, v: Direction<B>, net: ControlNet) -> Result<Self> {
-        for (dir, what, got) in [(&u, "rows", net.rows()), (&v, "columns", net.columns())] {
-            if dir.len() != got {
-                return Err(CoreError::Count {
-                    what: format!(
-                        "control-net {what} for `{}` (the net is {} × {})",
-                        dir.basis.id(),
-                        net.rows(),
-                        net.columns()
-                    ),
-                    expected: dir.len(),
-                    got,
-                });
-            }
-        }
+        net.check_size((&u.basis.id(), u.len()), (&v.basis.id(), v.len()))?;
         Ok(TensorSurface { u, v, net })
     }
 

@@ -42,6 +42,15 @@ impl<T: Ring, const K: usize> Jet<T, K> {
         Jet { c }
     }
 
+    /// The jet with these derivatives of orders `0..K` (`x_k = f^{(k)}/k!`).
+    ///
+    /// # Panics
+    /// If `d` does not have `K` entries.
+    pub fn from_derivatives(d: &[T]) -> Self {
+        assert_eq!(d.len(), K, "one derivative per coefficient");
+        Self::from_coeffs(std::array::from_fn(|k| d[k].clone() / &factorial(&d[k], k)))
+    }
+
     /// The constant `x` (all higher coefficients zero).
     pub fn constant(x: T) -> Self {
         let zero = x.int(0);

@@ -7,6 +7,7 @@
 pub mod continuity;
 pub mod jet;
 pub mod join;
+pub mod surface;
 
 pub use jet::{Jet, angle_atoms, family_derivatives};
 pub use join::{
@@ -14,6 +15,8 @@ pub use join::{
     solve_join, solve_join_for, solve_join_with, vanishing,
 };
 pub mod table;
+
+pub use surface::{VanishingWeightedSum, surface_corner_derivatives};
 
 pub use table::{
     End, KnotDerivatives, VanishingDenominator, Wrt, curve_endpoint_derivatives,

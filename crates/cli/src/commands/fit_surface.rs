@@ -15,11 +15,13 @@ use trig_core::Described;
 use trig_fit::{
     Grid, Join, NumericBasis, Scope, Shape, Stats, SurfaceFit, SurfaceOptions, fit_surface,
 };
+use trig_plot::{PATCH_COLOURS, SurfaceFigure, SurfacePatch, View};
 use trig_specfile::AnyBasis;
 
 use super::fit::{
     SearchRange, fit_err, fixed_params, interval, parameters, searched, selected_with_params,
 };
+use super::plot::surface::{output_of, write as write_surface};
 use super::plot::{FigureArgs, write};
 use super::{CliError, CmdResult, range_hint};
 use crate::cell::{Block, Rendered};
@@ -122,7 +124,15 @@ pub struct FitSurfaceArgs {
     /// pgfplots code and data beside it (NAME.tex, NAME.csv).
     #[arg(long, value_name = "FILE.svg")]
     error_map: Option<PathBuf>,
-    /// Grid spacing for the error map's axes (the volcano: 10 m).
+    /// Write the fitted surface of the last fit of the table (one basis and
+    /// one patch count, as --error-map) through the surface writer of `plot
+    /// surface`: FILE.svg (a picture, its pgfplots code beside it) or a mesh
+    /// FILE.obj, FILE.ply, FILE.stl. Each patch is drawn at the grid points
+    /// around it.
+    #[arg(long, value_name = "FILE")]
+    surface_output: Option<PathBuf>,
+    /// Grid spacing for the error map's and the fitted surface's x and y
+    /// (the volcano: 10 m).
     #[arg(long, default_value_t = 1.0, allow_hyphen_values = true)]
     spacing: f64,
     #[command(flatten)]
@@ -265,31 +275,98 @@ pub fn run(args: &FitSurfaceArgs) -> CmdResult {
     let grid = Grid::read(&args.grid).map_err(fit_err)?;
     let rows = fits(args, &grid)?;
     if let Some(path) = &args.error_map {
-        let last = rows
-            .last()
-            .ok_or_else(|| CliError::Usage("nothing fitted".into()))?;
-        if rows.iter().any(|r| r.basis != last.basis) || args.patches.len() != 1 {
-            return Err(CliError::Usage(
-                "--error-map draws one fit: give one --family (or --spec) and one --patches".into(),
-            ));
-        }
-        let title = format!(
-            "{}: |error| of {} ({}), {} patches, {:?}",
-            grid.name,
-            last.basis,
-            last.setting,
-            Patches(last.fit.patches.0, last.fit.patches.1),
-            last.fit.join
-        );
-        let picture = trig_plot::error_map_svg(&title, &last.fit, args.spacing)
-            .map_err(|e| CliError::Usage(e.to_string()))?;
+        let last = one_fit(&rows, args, "--error-map")?;
+        let picture =
+            trig_plot::error_map_svg(&title_of(&grid, last, "|error|"), &last.fit, args.spacing)
+                .map_err(|e| CliError::Usage(e.to_string()))?;
         write(path, picture, &FigureArgs::default())?;
+    }
+    if let Some(path) = &args.surface_output {
+        let last = one_fit(&rows, args, "--surface-output")?;
+        let (output, mesh) = output_of(path)?;
+        let figure = fitted_figure(
+            title_of(&grid, last, "fitted surface"),
+            &last.fit,
+            args.spacing,
+        );
+        write_surface(
+            &output,
+            mesh,
+            &figure,
+            &FigureArgs::default(),
+            "fit-surface",
+        )?;
     }
     let heading = format!(
         "Surface fit of `{}` ({} × {} heights), patches joined {:?}",
         grid.name, grid.rows, grid.cols, args.continuity
     );
     render_blocks(&heading, &blocks(args, &rows), args.format, false)
+}
+
+/// The one fit `option` draws: the last of the table, which must hold one
+/// basis and one patch count.
+fn one_fit<'a>(rows: &'a [Row], args: &FitSurfaceArgs, option: &str) -> Result<&'a Row, CliError> {
+    let last = rows
+        .last()
+        .ok_or_else(|| CliError::Usage("nothing fitted".into()))?;
+    if rows.iter().any(|r| r.basis != last.basis) || args.patches.len() != 1 {
+        return Err(CliError::Usage(format!(
+            "{option} draws one fit: give one --family (or --spec) and one --patches"
+        )));
+    }
+    Ok(last)
+}
+
+/// `volcano: WHAT of BASIS (SETTING), PU×PV patches, JOIN`.
+fn title_of(grid: &Grid, row: &Row, what: &str) -> String {
+    format!(
+        "{}: {what} of {} ({}), {} patches, {:?}",
+        grid.name,
+        row.basis,
+        row.setting,
+        Patches(row.fit.patches.0, row.fit.patches.1),
+        row.fit.join
+    )
+}
+
+/// The fitted surface as patches for the surface writer: patch `(a, b)` is
+/// the fitted heights at the grid points around it (`u = i/(r − 1)` from the
+/// last at or before `a/p_u` to the first at or after `(a + 1)/p_u`,
+/// likewise `v`), at `x = i·spacing`,
+/// `y = j·spacing`; no control net is drawn (the fit's control heights
+/// have no positions in the plane).
+fn fitted_figure(title: String, fit: &SurfaceFit, spacing: f64) -> SurfaceFigure {
+    let (r, c) = fit.fitted.shape();
+    let (pu, pv) = fit.patches;
+    // from the grid line at or before the patch's start to the one at or
+    // after its end, so neighbouring patches meet without a gap
+    let covered = |n: usize, p: usize, k: usize| -> Vec<usize> {
+        let (first, last) = (k * (n - 1) / p, ((k + 1) * (n - 1)).div_ceil(p));
+        (first..=last).collect()
+    };
+    let patches = (0..pu)
+        .flat_map(|a| (0..pv).map(move |b| (a, b)))
+        .zip(PATCH_COLOURS.iter().cycle())
+        .map(|((a, b), rgb)| SurfacePatch {
+            grid: covered(r, pu, a)
+                .into_iter()
+                .map(|i| {
+                    covered(c, pv, b)
+                        .into_iter()
+                        .map(|j| [i as f64 * spacing, j as f64 * spacing, fit.fitted[(i, j)]])
+                        .collect()
+                })
+                .collect(),
+            net: Vec::new(),
+            rgb: *rgb,
+        })
+        .collect();
+    SurfaceFigure {
+        title,
+        patches,
+        view: View::default(),
+    }
 }
 
 fn number(x: f64) -> Rendered {

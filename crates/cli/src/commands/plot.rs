@@ -24,7 +24,7 @@ use crate::output::{resolve, write_atomically, wrote};
 use trig_specfile::AnyBasis;
 
 mod revolution;
-mod surface;
+pub(crate) mod surface;
 
 #[derive(Debug, Args)]
 pub struct PlotArgs {

@@ -105,6 +105,11 @@ pub struct TableArgs {
     h: Option<String>,
     #[command(flatten)]
     pub surface: super::surface::SurfaceArgs,
+    /// With --surface: a control net file whose weights make the surface
+    /// rational (the table stays in the control points P_ij; the file's
+    /// points are not used).
+    #[arg(long, value_name = "FILE", requires = "surface")]
+    net: Option<std::path::PathBuf>,
     #[command(flatten)]
     pub out: crate::output::OutputArg,
 }

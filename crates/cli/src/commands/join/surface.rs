@@ -153,7 +153,11 @@ pub struct JoinValues {
 /// from the exact join (every symbol replaced by its value, exactly), the
 /// free ones the first net moved on by its extent across the boundary
 /// (`Q_ij = P_ij + P_{n−1,j} − P_{0,j}` across `u`): a second patch beside
-/// the first, as the thesis's Figures 5.4–5.7 draw them.
+/// the first, as the thesis's Figures 5.4–5.7 draw them. A net with weights
+/// is joined in homogeneous coordinates `(w_ij P_ij, w_ij)`: the join of
+/// the homogeneous patches (the same curve join, column by column, on four
+/// coordinates) joins their quotients; the free points keep the weights of
+/// the points they are moved from, and a forced weight ≤ 0 is an error.
 pub fn second_net(
     [u, v]: [&AnyBasis; 2],
     kind: JoinKind,
@@ -161,11 +165,6 @@ pub fn second_net(
     net: &ControlNet,
     values: &JoinValues,
 ) -> Result<ControlNet, CliError> {
-    if net.is_rational() {
-        return Err(CliError::Usage(
-            "a drawn join takes a net without weights".into(),
-        ));
-    }
     let (curve_basis, other) = match across {
         Across::U => (u, v),
         Across::V => (v, u),
@@ -204,13 +203,29 @@ pub fn second_net(
         };
         Rational::from(&pts[i][j][axis] + &shift)
     };
-    // one coordinate of every point of the second net
+    let weight = |i: usize, j: usize| net.weight(i, j).cloned().unwrap_or(Rational::from(1));
+    // homogeneous coordinate `axis` (0…2: w·x, w·y, w·z; 3: w) of a point
+    let homogeneous = |w: Rational, x: Rational, axis: usize| match axis {
+        3 => w,
+        _ => w * x,
+    };
+    // one homogeneous coordinate of every point of the second net
     let coordinate = |axis: usize| -> Result<Vec<Vec<Rational>>, CliError> {
+        let cartesian =
+            |x: &dyn Fn(usize) -> Rational| if axis < 3 { x(axis) } else { Rational::new() };
         let mut table = known.clone();
         for i in 0..rows {
             for j in 0..columns {
-                table.push((point_name(&p, i, j, wide), net.points()[i][j][axis].clone()));
-                table.push((point_name(&q, i, j, wide), moved(i, j, axis)));
+                let first = cartesian(&|a| net.points()[i][j][a].clone());
+                let free = cartesian(&|a| moved(i, j, a));
+                table.push((
+                    point_name(&p, i, j, wide),
+                    homogeneous(weight(i, j), first, axis),
+                ));
+                table.push((
+                    point_name(&q, i, j, wide),
+                    homogeneous(weight(i, j), free, axis),
+                ));
             }
         }
         let value_of = |formula: &Sym| {
@@ -239,7 +254,11 @@ pub fn second_net(
                             .find(|(pt, _, _)| pt.to_string() == name)
                         {
                             Some((_, formula, _)) => value_of(formula),
-                            None => Ok(moved(i, j, axis)),
+                            None => Ok(homogeneous(
+                                weight(i, j),
+                                cartesian(&|a| moved(i, j, a)),
+                                axis,
+                            )),
                         }
                     })
                     .collect()
@@ -247,14 +266,29 @@ pub fn second_net(
             .collect()
     };
     let [x, y, z] = [coordinate(0)?, coordinate(1)?, coordinate(2)?];
+    let w = if net.is_rational() {
+        coordinate(3)?
+    } else {
+        vec![vec![Rational::from(1); columns]; rows]
+    };
+    if let Some(bad) = w.iter().flatten().find(|w| **w <= 0) {
+        return Err(CliError::Usage(format!(
+            "the join forces a weight {bad} ≤ 0 on the second patch: no rational patch has it (other weights or parameter values)"
+        )));
+    }
     let out = (0..rows)
         .map(|i| {
             (0..columns)
-                .map(|j| [x[i][j].clone(), y[i][j].clone(), z[i][j].clone()])
+                .map(|j| [&x, &y, &z].map(|c| Rational::from(&c[i][j] / &w[i][j])))
                 .collect()
         })
         .collect();
-    ControlNet::new(out).map_err(|e| CliError::Usage(e.to_string()))
+    ControlNet::with_weights(
+        out,
+        net.is_rational().then_some(w),
+        "the second patch's forced net",
+    )
+    .map_err(|e| CliError::Usage(e.to_string()))
 }
 
 #[cfg(test)]
@@ -323,6 +357,74 @@ mod tests {
                             })
                             .count(),
                         kind.order() + 1
+                    );
+                }
+            }
+        }
+    }
+
+    /// The second patch of a rational join, built in homogeneous
+    /// coordinates, meets the first in the rational surfaces' own
+    /// derivatives: `∂^{a+b}S/∂u^a∂v^b` at the two corners of the boundary
+    /// agree for `a ≤ k` (and not beyond for C¹), every `b`.
+    #[test]
+    fn a_rational_join_meets_in_the_quotient_derivatives() {
+        use trig_deriv::{End, endpoint_derivatives, surface_corner_derivatives};
+        let basis = AnyBasis::Family(Family::ThesisCubic);
+        let text: String = (0..4)
+            .map(|i| {
+                (0..4)
+                    .map(|j| {
+                        format!(
+                            "{i} {j} {} {}\n",
+                            (7 * i * i + 3 * j + i * j * j) % 5,
+                            2 + i + j
+                        )
+                    })
+                    .collect::<String>()
+                    + "\n"
+            })
+            .collect();
+        let net = ControlNet::parse(&text, "net").unwrap();
+        let m = Rational::from((1, 2));
+        let values = JoinValues {
+            first: vec![m.clone()],
+            second: vec![m.clone()],
+            alpha: Rational::from(1),
+            beta: Rational::new(),
+        };
+        let params = [Sym::rational(m)];
+        let d = |end| endpoint_derivatives::<Sym, 4>(&basis, &params, end, Wrt::Angle, &Sym::one());
+        let flat = |net: &ControlNet, f: &dyn Fn(usize, usize) -> Rational| -> Vec<Sym> {
+            (0..net.rows())
+                .flat_map(|i| (0..net.columns()).map(move |j| (i, j)))
+                .map(|(i, j)| Sym::rational(f(i, j)))
+                .collect()
+        };
+        for kind in [JoinKind::C(1), JoinKind::C(2)] {
+            let second = second_net([&basis, &basis], kind, Across::U, &net, &values).unwrap();
+            assert!(second.is_rational());
+            for axis in 0..3 {
+                for ev in [End::Start, End::End] {
+                    let corner = |n: &ControlNet, eu| {
+                        let points = flat(n, &|i, j| n.points()[i][j][axis].clone());
+                        let weights = flat(n, &|i, j| n.weight(i, j).unwrap().clone());
+                        surface_corner_derivatives::<Sym, 4>(
+                            &d(eu),
+                            &d(ev),
+                            &points,
+                            Some(&weights),
+                        )
+                        .unwrap()
+                    };
+                    let (first, next) = (corner(&net, End::End), corner(&second, End::Start));
+                    let k = kind.order();
+                    assert_eq!(first[..=k], next[..=k], "{kind} axis {axis} v at its {ev}");
+                    // the heights are generic (x, y continue linearly; the
+                    // free point moved on, Q₃ = 2P₃ − P₀, meets C³ here)
+                    assert!(
+                        axis < 2 || k > 1 || first[k + 1] != next[k + 1],
+                        "{kind} z v at its {ev}: the join holds beyond its order"
                     );
                 }
             }

@@ -64,8 +64,9 @@ pub struct SurfacePlotArgs {
     /// of the net.
     #[arg(long, conflicts_with_all = ["join", "revolution"])]
     bspline: bool,
-    /// With --join c0, c1 or g1: close the pair into a cylinder, the second
-    /// patch joined to the first at both seams (thesis Figures 5.9, 5.11).
+    /// With --join: close the pair into a cylinder, the second patch joined
+    /// to the first at both seams (thesis Figures 5.9–5.12; for c2, g2 of a
+    /// cubic both patches are solved together, docs/surfaces.md).
     #[arg(long, requires = "join")]
     close: bool,
     /// With --join: the boundary (u: u = 1 of the first is u = 0 of the second).
@@ -212,18 +213,7 @@ pub fn run(args: &SurfacePlotArgs) -> CmdResult {
             "--azimuth and --elevation take finite degrees".into(),
         ));
     }
-    let output = resolve(&args.output)?;
-    let extension = output
-        .extension()
-        .map(|e| e.to_string_lossy().to_ascii_lowercase())
-        .unwrap_or_default();
-    let mesh = MeshFormat::of_extension(&extension);
-    if mesh.is_none() && extension != "svg" {
-        return Err(CliError::Usage(format!(
-            "{}: give a name ending in .svg (a picture, its pgfplots code beside it) or .obj, .ply, .stl (a mesh)",
-            output.display()
-        )));
-    }
+    let (output, mesh) = output_of(&args.output)?;
     let u = AnyBasis::open(args.family.as_deref(), args.spec.as_deref())?;
     let [du, dv] = args
         .v
@@ -278,14 +268,15 @@ pub fn run(args: &SurfacePlotArgs) -> CmdResult {
             alpha,
             beta,
         };
-        let build = if args.close { closing_net } else { second_net };
-        let net2 = build(
-            [&du.basis, &dv.basis],
-            kind,
-            args.across,
-            surfaces[0].net(),
-            &values,
-        )?;
+        let bases = [&du.basis, &dv.basis];
+        let net2 = if args.close {
+            let [first, second] =
+                closing_net(bases, kind, args.across, surfaces[0].net(), &values)?;
+            surfaces[0] = TensorSurface::new(du.clone(), dv.clone(), first)?;
+            second
+        } else {
+            second_net(bases, kind, args.across, surfaces[0].net(), &values)?
+        };
         let mut d2 = joined.clone();
         d2.params = second
             .into_iter()
@@ -323,7 +314,7 @@ pub fn run(args: &SurfacePlotArgs) -> CmdResult {
             elevation: args.elevation,
         },
     };
-    write(&output, mesh, &figure, &args.look)
+    write(&output, mesh, &figure, &args.look, "plot surface")
 }
 
 impl SurfacePlotArgs {
@@ -385,12 +376,32 @@ fn default_title(
     title
 }
 
-/// Writes the SVG and its pgfplots code beside it, or the mesh.
-fn write(
+/// Where a surface goes and how: an SVG (`None`) or a mesh, by the
+/// extension of `path`.
+pub(crate) fn output_of(path: &Path) -> Result<(PathBuf, Option<MeshFormat>), CliError> {
+    let output = resolve(path)?;
+    let extension = output
+        .extension()
+        .map(|e| e.to_string_lossy().to_ascii_lowercase())
+        .unwrap_or_default();
+    let mesh = MeshFormat::of_extension(&extension);
+    if mesh.is_none() && extension != "svg" {
+        return Err(CliError::Usage(format!(
+            "{}: give a name ending in .svg (a picture, its pgfplots code beside it) or .obj, .ply, .stl (a mesh)",
+            output.display()
+        )));
+    }
+    Ok((output, mesh))
+}
+
+/// Writes the SVG and its pgfplots code beside it, or the mesh (its header
+/// naming `command`).
+pub(crate) fn write(
     output: &Path,
     mesh: Option<MeshFormat>,
     figure: &SurfaceFigure,
     look: &FigureArgs,
+    command: &str,
 ) -> CmdResult {
     if std::fs::metadata(output).is_ok_and(|m| !m.is_file()) {
         return Err(CliError::Usage(format!(
@@ -403,10 +414,7 @@ fn write(
         let text = mesh
             .write(
                 format,
-                &format!(
-                    "trig-audit plot surface: {}",
-                    trig_tex::plain(&figure.title)
-                ),
+                &format!("trig-audit {command}: {}", trig_tex::plain(&figure.title)),
             )
             .map_err(plot_err)?;
         write_atomically(output, text.as_bytes())?;

@@ -3,10 +3,16 @@
 //! control points `P_ij`. Each entry is `Σ_i Σ_j P_ij b_i^{(a)}(u₀) b_j^{(b)}(v₀)`
 //! (the double sum (5.3) of seed `001_cf6c2ede0355a863.txt` differentiated
 //! term by term), from the exact endpoint derivatives of each direction's
-//! basis ([`endpoint_derivatives`]), so nothing is re-derived here.
+//! basis ([`endpoint_derivatives`]), so nothing is re-derived here. With
+//! the weights of a net file the surface is rational,
+//! `Σ w_ij P_ij B_i B_j / Σ w_ij B_i B_j`, and the entries are the quotient's
+//! derivatives ([`surface_corner_derivatives`]), still combinations of the
+//! `P_ij`.
 
 use trig_core::Described;
-use trig_deriv::{End, Wrt, endpoint_derivatives};
+use trig_core::input::Source;
+use trig_core::net::ControlNet;
+use trig_deriv::{End, Wrt, endpoint_derivatives, surface_corner_derivatives};
 use trig_specfile::AnyBasis;
 use trig_symbolic::Sym;
 
@@ -63,7 +69,18 @@ pub fn run(args: &TableArgs, u: &AnyBasis, wrt: Wrt) -> CmdResult {
             "a parameter is called `{clash}`, as a control point of the table would be"
         )));
     }
-    let corners = corner_table(args.order, [u, &v], [&u_params, &v_params], wrt, &points);
+    let weights = match &args.net {
+        Some(path) => weights_of(path, (u, nu), (&v, nv))?,
+        None => None,
+    };
+    let corners = corner_table(
+        args.order,
+        [u, &v],
+        [&u_params, &v_params],
+        wrt,
+        &points,
+        weights.as_deref(),
+    )?;
     let blocks: Vec<Block> = corners
         .into_iter()
         .map(|b| b.map(|cell| cell.combination(&names)))
@@ -78,8 +95,15 @@ pub fn run(args: &TableArgs, u: &AnyBasis, wrt: Wrt) -> CmdResult {
             .collect::<Vec<_>>()
             .join(", ")
     };
+    let model = match (&args.net, &weights) {
+        (Some(path), Some(_)) => format!(
+            "rational surface S(u, v) = Σ_i Σ_j w_ij P_ij B_i(u) B_j(v) / Σ_i Σ_j w_ij B_i(u) B_j(v), w_ij from {}",
+            path.display()
+        ),
+        _ => "surface S(u, v) = Σ_i Σ_j P_ij B_i(u) B_j(v)".to_string(),
+    };
     let heading = format!(
-        "surface S(u, v) = Σ_i Σ_j P_ij B_i(u) B_j(v), u: {} ({}), v: {} ({}; {v_text}): partial derivatives ∂^(a+b)S/∂u^a∂v^b at the corners, {}, exact",
+        "{model}, u: {} ({}), v: {} ({}; {v_text}): partial derivatives ∂^(a+b)S/∂u^a∂v^b at the corners, {}, exact",
         u.id(),
         u.citation(),
         v.id(),
@@ -89,19 +113,37 @@ pub fn run(args: &TableArgs, u: &AnyBasis, wrt: Wrt) -> CmdResult {
     render_blocks(&heading, &blocks, args.format, args.standalone)
 }
 
+/// The weights of the net in `path` in row order (`None` for a net
+/// without weights), the net checked against the sizes of the bases.
+fn weights_of(
+    path: &std::path::Path,
+    (u, nu): (&AnyBasis, usize),
+    (v, nv): (&AnyBasis, usize),
+) -> Result<Option<Vec<Sym>>, CliError> {
+    let net = ControlNet::read(&Source::of(path)).map_err(|e| CliError::Usage(e.to_string()))?;
+    net.check_size((&u.id(), nu), (&v.id(), nv))?;
+    Ok(net.is_rational().then(|| {
+        (0..nu)
+            .flat_map(|i| (0..nv).map(move |j| (i, j)))
+            .map(|(i, j)| Sym::rational(net.weight(i, j).expect("a rational net").clone()))
+            .collect()
+    }))
+}
+
 /// The four corner blocks (rows `a`, columns `b`), `points` the net in row
-/// order (`P_ij` at `i·n_v + j`).
+/// order (`P_ij` at `i·n_v + j`), `weights` likewise for a rational surface.
 fn corner_table(
     order: usize,
     bases: [&AnyBasis; 2],
     params: [&[Sym]; 2],
     wrt: Wrt,
     points: &[Sym],
-) -> Vec<Block<Sym>> {
+    weights: Option<&[Sym]>,
+) -> Result<Vec<Block<Sym>>, CliError> {
     macro_rules! with_order {
         ($($n:literal),*) => {
             match order {
-                $($n => corners::<{ $n + 1 }>(bases, params, wrt, points),)*
+                $($n => corners::<{ $n + 1 }>(bases, params, wrt, points, weights),)*
                 _ => unreachable!("order checked against MAX_SURFACE_ORDER"),
             }
         };
@@ -114,32 +156,30 @@ fn corners<const K: usize>(
     [pu, pv]: [&[Sym]; 2],
     wrt: Wrt,
     points: &[Sym],
-) -> Vec<Block<Sym>> {
+    weights: Option<&[Sym]>,
+) -> Result<Vec<Block<Sym>>, CliError> {
     let derivatives = |basis: &AnyBasis, params: &[Sym], end: End| {
         endpoint_derivatives::<Sym, K>(basis, params, end, wrt, &Sym::one())
     };
-    let nv = v.function_names().len();
     let mut blocks = Vec::new();
     for eu in [End::Start, End::End] {
         let du = derivatives(u, pu, eu);
         for ev in [End::Start, End::End] {
             let dv = derivatives(v, pv, ev);
-            let entry = |a: usize, b: usize| {
-                du.iter().enumerate().fold(Sym::zero(), |acc, (i, bi)| {
-                    dv.iter().enumerate().fold(acc, |acc, (j, bj)| {
-                        acc + &(bi[a].clone() * &bj[b] * &points[i * nv + j])
-                    })
-                })
-            };
+            let title = format!("corner u at its {eu}, v at its {ev}");
+            let entries = surface_corner_derivatives::<Sym, K>(&du, &dv, points, weights)
+                .map_err(|e| CliError::Usage(format!("{title}: {e}")))?;
             blocks.push(Block {
-                title: format!("corner u at its {eu}, v at its {ev}"),
+                title,
                 corner: "a \\ b".into(),
                 columns: (0..K).map(|b| b.to_string()).collect(),
-                rows: (0..K)
-                    .map(|a| (a.to_string(), (0..K).map(|b| entry(a, b)).collect()))
+                rows: entries
+                    .into_iter()
+                    .enumerate()
+                    .map(|(a, row)| (a.to_string(), row))
                     .collect(),
             });
         }
     }
-    blocks
+    Ok(blocks)
 }
