@@ -295,6 +295,7 @@ fn a_surface_of_revolution_is_an_exact_circle_at_every_height() {
     let bent = scratch("bent.txt");
     std::fs::write(&bent, "1 0 0\n1 1 1\n1 0 2\n1 0 3\n").expect("profile");
     let cbez = example("c-bezier-cubic.toml");
+    let never = scratch("never.svg");
     let run = |net: &str, circle: &[&str]| {
         let mut a = vec![
             "plot",
@@ -307,7 +308,7 @@ fn a_surface_of_revolution_is_an_exact_circle_at_every_height() {
             net,
             "--revolution",
             "--output",
-            "never.svg",
+            &never,
         ];
         a.extend_from_slice(circle);
         trig_e2e::error_line(&a)
@@ -357,19 +358,11 @@ fn a_closed_pair_is_a_cylinder_joined_at_both_seams() {
             }
         }
     }
+    let never = scratch("never.svg");
     let run = |family: &str, kind: &str| {
         trig_e2e::error_line(&[
-            "plot",
-            "surface",
-            "--family",
-            family,
-            "--net",
-            &half,
-            "--join",
-            kind,
-            "--close",
-            "--output",
-            "never.svg",
+            "plot", "surface", "--family", family, "--net", &half, "--join", kind, "--close",
+            "--output", &never,
         ])
     };
     // the second seam read backwards is not the same join for a B-spline basis
@@ -464,6 +457,7 @@ fn a_uniform_bspline_surface_is_one_patch_per_span_and_they_meet() {
             }
         }
     }
+    let never = scratch("never.svg");
     let line = trig_e2e::error_line(&[
         "plot",
         "surface",
@@ -475,7 +469,7 @@ fn a_uniform_bspline_surface_is_one_patch_per_span_and_they_meet() {
         &grid,
         "--bspline",
         "--output",
-        "never.svg",
+        &never,
     ]);
     assert!(line.contains("`thesis-cubic` is not one"), "{line}");
 }
