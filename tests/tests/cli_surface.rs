@@ -546,3 +546,107 @@ fn the_surface_join_is_the_printed_theorems_column_by_column() {
 fn sub(j: usize) -> char {
     char::from_u32(0x2080 + j as u32).expect("a subscript digit")
 }
+
+#[test]
+fn a_spline_surface_over_knot_vectors_is_the_window_of_its_span() {
+    // seed 004 (5): 5 × 4 points, u knots 0,0,0,0,1,3,3,3 (spans [0, 1],
+    // [1, 3]), v knots 0,0,0,0,1,1,1 (one span): the point u = 2 lies in
+    // the second span at local 1/2, the patch over rows 1 … 4
+    let row = |i: i64| {
+        (0..4)
+            .map(|j| format!("{i} {j} {}", (i * j) % 3 + i))
+            .collect::<Vec<_>>()
+            .join("\n")
+    };
+    let net = |rows: std::ops::Range<i64>| rows.map(row).collect::<Vec<_>>().join("\n\n") + "\n";
+    let whole = scratch("knots-whole.txt", &net(0..5));
+    let window = scratch("knots-window.txt", &net(1..5));
+    let eval = |net: &str, extra: &[&str]| {
+        let mut args = vec![
+            "eval",
+            "thesis-cubic",
+            "--surface",
+            "--net",
+            net,
+            "--param",
+            "m=1/2",
+            "--digits",
+            "25",
+        ];
+        args.extend_from_slice(extra);
+        stdout_ok(&args)
+    };
+    let spline = eval(
+        &whole,
+        &[
+            "--knots",
+            "0,0,0,0,1,3,3,3",
+            "--v-knots",
+            "0,0,0,0,1,1,1",
+            "--at",
+            "2,1/3",
+        ],
+    );
+    let patch = eval(&window, &["--at", "1/2,1/3"]);
+    for name in ["x", "y", "z"] {
+        let line = |out: &str| {
+            out.lines()
+                .find(|l| l.starts_with(&format!("{name} =")))
+                .map(str::to_string)
+        };
+        assert_eq!(line(&spline), line(&patch), "{spline}\n{patch}");
+    }
+    assert!(
+        spline.contains("the piece of the net's 5 × 4 points at local (1/2, 1/3)"),
+        "{spline}"
+    );
+    // one-line errors: a knot vector of the wrong length, a zero-length
+    // span, a point outside the spans, one knot vector only
+    fn knots<'a>(whole: &'a str, u: &'a str, v: &'a str, at: &'a str) -> Vec<&'a str> {
+        vec![
+            "eval",
+            "thesis-cubic",
+            "--surface",
+            "--net",
+            whole,
+            "--param",
+            "m=1/2",
+            "--knots",
+            u,
+            "--v-knots",
+            v,
+            "--at",
+            at,
+        ]
+    }
+    assert_errors(&[
+        (
+            &knots(&whole, "0,0,0,0,1,3,3", "0,0,0,0,1,1,1", "2,0")[..],
+            "take 8 knots",
+        ),
+        (
+            &knots(&whole, "0,0,0,0,1,1,3,3", "0,0,0,0,1,1,1", "2,0")[..],
+            "zero-length interval",
+        ),
+        (
+            &knots(&whole, "0,0,0,0,1,3,3,3", "0,0,0,0,1,1,1", "4,0")[..],
+            "outside the domain",
+        ),
+        (
+            &[
+                "eval",
+                "thesis-cubic",
+                "--surface",
+                "--net",
+                whole.as_str(),
+                "--param",
+                "m=1/2",
+                "--knots",
+                "0,0,0,0,1,3,3,3",
+                "--at",
+                "2,0",
+            ][..],
+            "takes both: --knots (u) and --v-knots (v)",
+        ),
+    ]);
+}

@@ -10,7 +10,9 @@
 
 use rug::Rational;
 
+use crate::error::CoreError;
 use crate::input::{InputError, MAX_TEXT_BYTES, Source, read_text};
+use crate::knots::{check_increasing, locate_exact};
 use crate::number::parse_exact;
 
 /// Why a control net cannot be read.
@@ -225,6 +227,50 @@ impl ControlNet {
         })
     }
 
+    /// The span of a tensor-product spline over knot vectors that holds the
+    /// point `(u, v)`: its window of the net and the local coordinates
+    /// there — seed 004's EH B-spline surface (5),
+    /// `R(u, v) = R_{i,j}((u − u_i)/Δu_i, (v − v_j)/Δv_j)` on
+    /// `[u_i, u_{i+1}] × [v_j, v_{j+1}]`, the piece over the window of rows
+    /// `i − k + 1 … i` and columns `j − l + 1 … j` (`k`, `l` the numbers of
+    /// functions of each direction, `sizes`). A net of `r` rows takes a knot
+    /// vector of `r + k − 1` knots `u_0 … u_{r+k−2}` (seed 004: `n + 4` for
+    /// `n + 1` points and `k = 4`) whose spans `[u_{k−1}, u_r]` are used and
+    /// must be strictly increasing; `at` is the point as printed, for errors.
+    pub fn span_at(
+        &self,
+        knots: [&[Rational]; 2],
+        sizes: (usize, usize),
+        point: [&Rational; 2],
+        at: [&str; 2],
+    ) -> crate::error::Result<(ControlNet, Rational, Rational)> {
+        let locate = |d: usize,
+                      count: usize,
+                      k: usize|
+         -> crate::error::Result<(usize, Rational)> {
+            let name = ["u", "v"][d];
+            let expected = count + k - 1;
+            if count < k || knots[d].len() != expected {
+                return Err(CoreError::Knots(format!(
+                    "the {name} knot vector: a net of {count} points along {name} and {k} functions take {expected} knots ({name}_0 … {name}_{}), got {}",
+                    expected - 1,
+                    knots[d].len()
+                )));
+            }
+            let used = &knots[d][k - 1..=count];
+            check_increasing(used, 2, |i| {
+                format!("{} (knot {name}_{})", used[i], i + k - 1)
+            })?;
+            locate_exact(used, point[d], at[d])
+        };
+        let (row, u) = locate(0, self.rows(), sizes.0)?;
+        let (column, v) = locate(1, self.columns(), sizes.1)?;
+        let window = self
+            .window(row, column, sizes.0, sizes.1)
+            .ok_or_else(|| CoreError::Knots("the span's window lies outside the net".into()))?;
+        Ok((window, u, v))
+    }
+
     /// The net checked against the numbers of functions of the `u` basis
     /// (rows) and the `v` basis (columns), each named by its id.
     pub fn check_size(&self, u: (&str, usize), v: (&str, usize)) -> crate::error::Result<()> {
@@ -342,6 +388,54 @@ mod tests {
 
     fn q(n: i64) -> Rational {
         Rational::from(n)
+    }
+
+    #[test]
+    fn the_span_over_knot_vectors_is_a_window_with_local_coordinates() {
+        // 5 × 4 points, cubic both ways: u knots u_0 … u_7 with the spans
+        // [u_3, u_4] = [0, 1], [u_4, u_5] = [1, 3]; v knots v_0 … v_6, one span
+        let points: Vec<Vec<[Rational; 3]>> = (0..5)
+            .map(|i| (0..4).map(|j| [q(i), q(j), q(i * j)]).collect())
+            .collect();
+        let net = ControlNet::new(points).expect("a net");
+        let u: Vec<Rational> = [0, 0, 0, 0, 1, 3, 3, 3].map(q).to_vec();
+        let v: Vec<Rational> = [0, 0, 0, 0, 2, 2, 2].map(q).to_vec();
+        let (window, lu, lv) = net
+            .span_at([&u, &v], (4, 4), [&q(2), &q(1)], ["2", "1"])
+            .expect("a span");
+        assert_eq!((lu, lv), (Rational::from((1, 2)), Rational::from((1, 2))));
+        assert_eq!(window.points()[0][0], [q(1), q(0), q(0)]);
+        assert_eq!((window.rows(), window.columns()), (4, 4));
+        // the first span, its right end closed only for the last span
+        let (window, lu, _) = net
+            .span_at([&u, &v], (4, 4), [&q(1), &q(0)], ["1", "0"])
+            .expect("a span");
+        assert_eq!(
+            (lu, window.points()[0][0].clone()),
+            (q(0), [q(1), q(0), q(0)])
+        );
+        let (window, lu, _) = net
+            .span_at(
+                [&u, &v],
+                (4, 4),
+                [&Rational::from((1, 2)), &q(0)],
+                ["1/2", "0"],
+            )
+            .expect("a span");
+        assert_eq!(
+            (lu, window.points()[0][0].clone()),
+            (Rational::from((1, 2)), [q(0), q(0), q(0)])
+        );
+        // refused: a knot vector of the wrong length, a zero-length span, a
+        // point outside the spans
+        let short = &u[..7];
+        let err = net.span_at([short, &v], (4, 4), [&q(1), &q(1)], ["1", "1"]);
+        assert!(err.unwrap_err().to_string().contains("take 8 knots"));
+        let flat: Vec<Rational> = [0, 0, 0, 0, 1, 1, 3, 3].map(q).to_vec();
+        let err = net.span_at([&flat, &v], (4, 4), [&q(1), &q(1)], ["1", "1"]);
+        assert!(err.unwrap_err().to_string().contains("zero-length"));
+        let err = net.span_at([&u, &v], (4, 4), [&q(4), &q(1)], ["4", "1"]);
+        assert!(err.unwrap_err().to_string().contains("outside"));
     }
 
     #[test]

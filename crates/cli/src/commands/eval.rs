@@ -68,9 +68,19 @@ pub struct EvalArgs {
     /// Evaluate the uniform B-spline basis function over knots 0,1,2,3,4.
     #[arg(long)]
     piecewise: bool,
-    /// Knot vector for seed000-nonuniform, comma separated.
+    /// Knot vector for seed000-nonuniform, comma separated; with --surface
+    /// the u knot vector of a spline surface over knot vectors (seed 004
+    /// (5), docs/surfaces.md).
     #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
     knots: Vec<String>,
+    /// With --surface and --knots: the v knot vector, comma separated.
+    #[arg(
+        long,
+        value_delimiter = ',',
+        allow_hyphen_values = true,
+        requires = "knots"
+    )]
+    v_knots: Vec<String>,
     /// Evaluate outside the published parameter range or the domain.
     #[arg(long)]
     allow_outside_range: bool,
@@ -323,7 +333,7 @@ fn exact_zeros(basis: &AnyBasis, params: &[Affine], x: &Affine) -> Vec<Zero> {
 
 /// The point as a rational, for the knot-based evaluations (their knots
 /// are rational; a multiple of π is an angle).
-fn rational_point<'a>(at: &'a Affine, at_text: &str) -> Result<&'a Rational, CliError> {
+pub(crate) fn rational_point<'a>(at: &'a Affine, at_text: &str) -> Result<&'a Rational, CliError> {
     at.as_rational().ok_or_else(|| {
         CliError::Usage(format!(
             "`{}`: --piecewise and --knots take a rational point (a multiple of pi is an angle)",

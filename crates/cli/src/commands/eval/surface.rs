@@ -16,10 +16,9 @@ use crate::commands::{CliError, CmdResult};
 use trig_judge::surface::exact_point;
 
 pub fn run(args: &EvalArgs, arithmetic: Arithmetic) -> CmdResult {
-    if args.piecewise || !args.knots.is_empty() || args.at_file.is_some() {
+    if args.piecewise || args.at_file.is_some() {
         return Err(CliError::Usage(
-            "--surface evaluates one point --at u,v: without --piecewise, --knots or --at-file"
-                .into(),
+            "--surface evaluates one point --at u,v: without --piecewise or --at-file".into(),
         ));
     }
     let Some(net) = args.net.as_deref() else {
@@ -32,8 +31,13 @@ pub fn run(args: &EvalArgs, arithmetic: Arithmetic) -> CmdResult {
         .surface
         .v
         .directions(&u, &args.params, args.allow_outside_range)?;
-    let surface = surface::open(directions, net)?;
     let at = parse_uv(args.at.as_deref().unwrap_or_default())?;
+    let (surface, at, span) = if args.knots.is_empty() {
+        (surface::open(directions, net)?, at, None)
+    } else {
+        let (surface, local, span) = knot_span(args, directions, net, &at)?;
+        (surface, local, Some(span))
+    };
     let zeros = exact_zeros(&surface, [&at[0].0, &at[1].0]);
     let point = SurfaceAt::new(&surface, at, args.allow_outside_range)
         .map_err(super::super::range_hint)?
@@ -62,8 +66,9 @@ pub fn run(args: &EvalArgs, arithmetic: Arithmetic) -> CmdResult {
         values: e.values.iter().map(|v| shown(v, arithmetic)).collect(),
         precision: describe(arithmetic, e.bits, short, e.stopped),
         note: Some(format!(
-            "net {} ({net_size}{}); v parameters [{}]",
+            "net {} ({net_size}{}{}); v parameters [{}]",
             net.display(),
+            span.unwrap_or_default(),
             if surface.net().is_rational() {
                 ", rational: weights"
             } else {
@@ -74,6 +79,57 @@ pub fn run(args: &EvalArgs, arithmetic: Arithmetic) -> CmdResult {
         bits: e.bits,
     };
     Ok(render(args, &evaluation))
+}
+
+/// A surface point `(u, v)`, each exact and as printed.
+type Point = [(Affine, String); 2];
+
+/// The piece of a spline surface over the knot vectors `--knots`,
+/// `--v-knots` that holds the point (`ControlNet::span_at`, seed 004 (5)):
+/// the surface over its window, the point in the window's local
+/// coordinates, and the span as the note says it.
+fn knot_span(
+    args: &EvalArgs,
+    directions: [trig_core::surface::Direction<AnyBasis>; 2],
+    net: &std::path::Path,
+    at: &[(Affine, String); 2],
+) -> Result<(TensorSurface<AnyBasis>, Point, String), CliError> {
+    if args.v_knots.is_empty() {
+        return Err(CliError::Usage(
+            "a spline surface over knot vectors takes both: --knots (u) and --v-knots (v)".into(),
+        ));
+    }
+    let read = |texts: &[String]| -> Result<Vec<rug::Rational>, CliError> {
+        Ok(texts
+            .iter()
+            .map(|k| trig_core::number::parse_exact(k))
+            .collect::<Result<_, CoreError>>()?)
+    };
+    let (uk, vk) = (read(&args.knots)?, read(&args.v_knots)?);
+    let point = [
+        super::rational_point(&at[0].0, &at[0].1)?,
+        super::rational_point(&at[1].0, &at[1].1)?,
+    ];
+    let whole = trig_core::net::ControlNet::read(&trig_core::input::Source::of(net))
+        .map_err(|e| CliError::Usage(e.to_string()))?;
+    let sizes = (directions[0].len(), directions[1].len());
+    let (window, lu, lv) = whole.span_at(
+        [&uk, &vk],
+        sizes,
+        point,
+        [at[0].1.as_str(), at[1].1.as_str()],
+    )?;
+    let span = format!(
+        "; over knot vectors: the piece of the net's {} × {} points at local ({lu}, {lv})",
+        whole.rows(),
+        whole.columns()
+    );
+    let [u, v] = directions;
+    let local = [
+        (Affine::rational(lu.clone()), lu.to_string()),
+        (Affine::rational(lv.clone()), lv.to_string()),
+    ];
+    Ok((TensorSurface::new(u, v, window)?, local, span))
 }
 
 /// Which coordinates of the point are exactly 0, decided in the exact ring
