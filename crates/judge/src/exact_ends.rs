@@ -74,40 +74,23 @@ pub fn decide<B: ExactBasis>(
         }
     )];
     // the claim turns on the end itself when it fails just outside and
-    // holds just inside
-    let mut turns = (false, false);
+    // holds just inside; it is decided where it holds outside (a superset)
+    // or fails inside (a subset)
+    let mut turns = [false, false];
     if nonnegativity != Some(true) {
-        if let Some(o) = &outer {
-            let v = on(o);
-            turns.0 = v.status == Status::Fails;
-            if v.status == Status::Holds {
-                evidence.push(format!(
-                    "holds on {}, which contains the printed range:",
-                    shown(o)
-                ));
+        let sides = [
+            (&outer, Status::Holds, Status::Fails, "which contains the printed range"),
+            (&inner, Status::Fails, Status::Holds, "which lies inside the printed range"),
+        ];
+        for (k, (side, decides, turning, relation)) in sides.into_iter().enumerate() {
+            let Some(rs) = side else { continue };
+            let v = on(rs);
+            turns[k] = v.status == turning;
+            if v.status == decides {
+                evidence.push(format!("{} on {}, {relation}:", v.status, shown(rs)));
                 return with_lines(v, evidence);
             }
-            evidence.push(format!(
-                "on {}, which contains the printed range: {}",
-                shown(o),
-                v.status
-            ));
-        }
-        if let Some(i) = &inner {
-            let v = on(i);
-            turns.1 = v.status == Status::Holds;
-            if v.status == Status::Fails {
-                evidence.push(format!(
-                    "fails on {}, which lies inside the printed range:",
-                    shown(i)
-                ));
-                return with_lines(v, evidence);
-            }
-            evidence.push(format!(
-                "on {}, which lies inside the printed range: {}",
-                shown(i),
-                v.status
-            ));
+            evidence.push(format!("on {}, {relation}: {}", shown(rs), v.status));
         }
     }
     match (nonnegativity, ranges, inner) {
@@ -115,7 +98,7 @@ pub fn decide<B: ExactBasis>(
             at_the_ends(basis, range, &inner[0].1, maximal, on, evidence)
         }
         _ => {
-            evidence.push(if turns == (true, true) {
+            evidence.push(if turns == [true, true] {
                 "the claim turns on the end itself, which is decided exactly for the nonnegativity of a one-parameter basis only".into()
             } else {
                 "neither rational range decides the claim".into()
