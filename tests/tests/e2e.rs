@@ -23,6 +23,7 @@ mod cli_spec_features;
 mod cli_surface;
 mod cli_surface_plot;
 mod cli_table;
+mod cli_tp_wronskian;
 mod cli_witness_points;
 mod fuzz;
 mod latex_statements;

@@ -119,6 +119,9 @@ struct Engine<'a> {
     /// Set to the order of a derivative certified negative somewhere: the
     /// face argument that needs it `≥ 0` is doomed, its search stops.
     doomed: Option<usize>,
+    /// The ends of the variable's domain are excluded (`τ ∈ (0, 1)`): the
+    /// faces `τ = 0`, `τ = 1` are open, like an open range end.
+    open_variable: bool,
 }
 
 /// `−f` (its derivatives formed anew).
@@ -309,24 +312,57 @@ impl Engine<'_> {
 /// `f ≥ 0` for every `x` of the domain and every parameter in `axes`
 /// (one axis per parameter of the domain, in order; bounded).
 pub fn nonnegative(f: &Sym, domain: &Domain, axes: &[Axis]) -> Outcome {
-    run(f, domain, axes, Goal::NonNegative)
+    run(f, domain, axes, Goal::NonNegative, false)
 }
 
 /// `f > 0` on the domain for every parameter in `axes` (open ends
 /// excluded).
 pub fn positive(f: &Sym, domain: &Domain, axes: &[Axis]) -> Outcome {
-    run(f, domain, axes, Goal::Positive)
+    run(f, domain, axes, Goal::Positive, false)
 }
 
-fn run(f: &Sym, domain: &Domain, axes: &[Axis], goal: Goal) -> Outcome {
+/// `f > 0` on the open domain `a(p) < x < b(p)` for every parameter in
+/// `axes` (open range ends excluded too): `f` may vanish at the ends of
+/// the domain, where the face arguments need it positive only inside
+/// (Taylor's theorem with Lagrange's remainder puts `ξ` strictly inside).
+pub fn positive_inside(f: &Sym, domain: &Domain, axes: &[Axis]) -> Outcome {
+    if let Some(why) = zero_at_closed_end(f, domain, axes) {
+        return Outcome::Undecided(why);
+    }
+    run(f, domain, axes, Goal::Positive, true)
+}
+
+/// Why `f` cannot be positive: it vanishes identically (for every `x`) at
+/// a closed end of a parameter's range, decided exactly before any search.
+fn zero_at_closed_end(f: &Sym, domain: &Domain, axes: &[Axis]) -> Option<String> {
+    let coords = Coordinates::new(domain, axes);
+    let e = coords.function(f);
+    let mut bx = vec![(Rational::new(), Rational::from(1))];
+    bx.extend(axes.iter().map(|a| (a.lo.clone(), a.hi.clone())));
+    for (i, a) in axes.iter().enumerate() {
+        for (end, open) in [(&a.lo, a.lo_open), (&a.hi, a.hi_open)] {
+            if !open && coords.zero_on_face(&e, &bx, i + 1, end) {
+                let unit = if a.pi { "·π" } else { "" };
+                return Some(format!(
+                    "it vanishes identically at the closed range end {} = {end}{unit}",
+                    domain.param_names[i]
+                ));
+            }
+        }
+    }
+    None
+}
+
+fn run(f: &Sym, domain: &Domain, axes: &[Axis], goal: Goal, open_variable: bool) -> Outcome {
     // a function of the variable alone is decided on the union of the
-    // domains, `[min a(p), max b(p)]` (one dimension instead of 1 + d)
+    // domains, `[min a(p), max b(p)]` (one dimension instead of 1 + d; with
+    // the ends excluded, the union of the open domains lies inside it)
     if let Some(hull) = variable_hull(f, domain, axes) {
-        if let proved @ Outcome::Proved { .. } = search(f, &hull, &[], goal) {
+        if let proved @ Outcome::Proved { .. } = search(f, &hull, &[], goal, open_variable) {
             return proved;
         }
     }
-    search(f, domain, axes, goal)
+    search(f, domain, axes, goal, open_variable)
 }
 
 /// When `f` depends on the variable alone (its atoms, `π`, radicals) and
@@ -381,12 +417,12 @@ fn variable_hull(f: &Sym, domain: &Domain, axes: &[Axis]) -> Option<Domain> {
 /// alone (a grid of a few points per axis, no subdivision): a cheap
 /// refutation to try before any certificate. `None` says nothing.
 pub fn probe_negative(f: &Sym, domain: &Domain, axes: &[Axis]) -> Option<Outcome> {
-    let (mut engine, e, bx) = prepared(f, domain, axes);
+    let (mut engine, e, bx) = prepared(f, domain, axes, false);
     engine.probe(&e, &bx)
 }
 
-fn search(f: &Sym, domain: &Domain, axes: &[Axis], goal: Goal) -> Outcome {
-    let (mut engine, e, bx) = prepared(f, domain, axes);
+fn search(f: &Sym, domain: &Domain, axes: &[Axis], goal: Goal, open_variable: bool) -> Outcome {
+    let (mut engine, e, bx) = prepared(f, domain, axes, open_variable);
     if let Some(negative) = engine.probe(&e, &bx) {
         return negative;
     }
@@ -398,6 +434,7 @@ fn prepared<'a>(
     f: &Sym,
     domain: &'a Domain,
     axes: &'a [Axis],
+    open_variable: bool,
 ) -> (Engine<'a>, Rc<Fun>, Vec<(Rational, Rational)>) {
     let engine = Engine {
         coords: Coordinates::new(domain, axes),
@@ -405,6 +442,7 @@ fn prepared<'a>(
         limit: BUDGET,
         floor: MAX_DEPTH,
         doomed: None,
+        open_variable,
     };
     // a function of the parameters alone does not depend on τ: τ = 0
     let free = !f
@@ -477,6 +515,41 @@ mod tests {
         // with the end 0 closed, α − sin α vanishes there: not positive
         let closed = alpha(q(0, 1), q(314, 100), false, false);
         assert!(!matches!(positive(&a, &d, &closed), Outcome::Proved { .. }));
+    }
+
+    #[test]
+    fn positive_inside_excludes_the_ends_of_the_domain_only() {
+        let d = c_curve(false);
+        let axes = alpha(q(1, 2), q(3, 1), false, false);
+        // t − sin t vanishes at t = 0 (to third order): positive inside only
+        let f = v("t") - &v("s");
+        assert!(matches!(
+            positive_inside(&f, &d, &axes),
+            Outcome::Proved { .. }
+        ));
+        assert!(!matches!(positive(&f, &d, &axes), Outcome::Proved { .. }));
+        // sin t · sin(α − t) = sin t (sin α c − cos α s): zero at both ends
+        let g = v("s") * &(v("sin(alpha)") * &v("c") - &(v("cos(alpha)") * &v("s")));
+        let out = positive_inside(&g, &d, &axes);
+        assert!(matches!(out, Outcome::Proved { .. }), "{out:?}");
+        // cos t changes sign inside the domain for α > π/2
+        assert!(matches!(
+            positive_inside(&v("c"), &d, &axes),
+            Outcome::Negative { .. }
+        ));
+        // α − t·... vanishing for every t at the closed end α = 1/2: refused
+        // at once, with the reason
+        let h = (v("alpha") - &Sym::rational(q(1, 2))) * &g;
+        match positive_inside(&h, &d, &axes) {
+            Outcome::Undecided(why) => {
+                assert!(why.contains("closed range end alpha = 1/2"), "{why}")
+            }
+            other => panic!("{other:?}"),
+        }
+        // the same end open: positive inside
+        let open = alpha(q(1, 2), q(3, 1), true, false);
+        let out = positive_inside(&h, &d, &open);
+        assert!(matches!(out, Outcome::Proved { .. }), "{out:?}");
     }
 
     #[test]

@@ -49,6 +49,7 @@ pub mod total_positivity;
 pub mod tp_box;
 pub mod tp_set;
 pub mod transcendental;
+pub mod wronskian;
 
 pub use domain::{Bound, ParamBox, describe_z, in_z};
 pub use standard::{Standard, standardize};

@@ -55,31 +55,6 @@ fn derive<B: ExactBasis>(basis: &B, f: &Sym) -> Sym {
     }
 }
 
-/// `det m` by expansion along the first row (small `n`).
-fn det(m: &[Vec<Sym>]) -> Sym {
-    match m.len() {
-        0 => Sym::one(),
-        1 => m[0][0].clone(),
-        n => (0..n)
-            .filter(|&j| !m[0][j].is_zero())
-            .map(|j| {
-                let minor: Vec<Vec<Sym>> = m[1..]
-                    .iter()
-                    .map(|row| {
-                        row.iter()
-                            .enumerate()
-                            .filter(|(k, _)| *k != j)
-                            .map(|(_, x)| x.clone())
-                            .collect()
-                    })
-                    .collect();
-                let term = m[0][j].clone() * &det(&minor);
-                if j % 2 == 0 { term } else { -term }
-            })
-            .fold(Sym::zero(), |acc, t| acc + &t),
-    }
-}
-
 /// The Wronskian of the functions of `basis`.
 pub fn wronskian<B: ExactBasis>(basis: &B) -> Sym {
     let mut rows = vec![basis_of(basis)];
@@ -90,7 +65,7 @@ pub fn wronskian<B: ExactBasis>(basis: &B) -> Sym {
             .collect();
         rows.push(next);
     }
-    det(&rows)
+    Sym::determinant(&rows)
 }
 
 /// The coefficients of `p` in the monomials of the variable's atoms.

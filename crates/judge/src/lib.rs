@@ -46,4 +46,5 @@ pub mod surface;
 pub mod symmetry;
 pub mod total_positivity;
 pub mod tp_maximal;
+pub mod tp_wronskian;
 pub mod unity;

@@ -20,6 +20,7 @@ use trig_core::{ParamRange, Parameter};
 use trig_symbolic::Sym;
 
 use super::nonnegative::pieces;
+use super::tp_wronskian::{WRONSKIAN, by_wronskians};
 use super::unity::unity;
 use crate::exact::ExactBasis;
 use trig_verdict::evidence::{Evidence, Kind};
@@ -39,11 +40,19 @@ pub fn normalized_totally_positive<B: ExactBasis>(
     basis: &B,
     range: Option<&ParamRange>,
 ) -> Verdict {
+    let tp = totally_positive(basis, range);
+    // the method of the part that decided it: the factorisation, or the
+    // Wronskian criterion where that took over
+    let method = if tp.method == WRONSKIAN {
+        WRONSKIAN
+    } else {
+        TOTALLY_POSITIVE
+    };
     let mut v = Verdict::all(
-        TOTALLY_POSITIVE,
+        method,
         vec![
             ("partition of unity".into(), unity(basis)),
-            ("total positivity".into(), totally_positive(basis, range)),
+            ("total positivity".into(), tp),
         ],
     );
     v.evidence.insert(0, CONSEQUENCES);
@@ -56,9 +65,13 @@ pub fn totally_positive<B: ExactBasis>(basis: &B, range: Option<&ParamRange>) ->
     let (trig, fs, _) = match pieces(basis) {
         Ok(p) => p,
         Err(why) => {
-            return Verdict::not_checkable(format!(
-                "the factorisation needs functions polynomial in sin, cos or the variable on one standard domain ({why}); the Wronskian criterion (Karlin) is not implemented"
-            ));
+            return by_wronskians(
+                basis,
+                range,
+                &format!(
+                    "the factorisation needs functions polynomial in sin, cos or the variable on one standard domain ({why})"
+                ),
+            );
         }
     };
     if fs.len() != basis.function_names().len() {
@@ -149,9 +162,22 @@ pub fn totally_positive<B: ExactBasis>(basis: &B, range: Option<&ParamRange>) ->
         }
     }
     evidence.push(Evidence::note(
-        "no collocation matrix with a negative minor was found at the failing parameter values (rational grids of [0, 1] in z); the Wronskian criterion (Karlin: positive consecutive Wronskians make an extended complete Chebyshev system) that could close the gap is not implemented",
+        "no collocation matrix with a negative minor was found at the failing parameter values (rational grids of [0, 1] in z)",
     ));
-    Verdict::new(Status::NotCheckable, TOTALLY_POSITIVE, evidence)
+    // where the certificate stalls, the Wronskian criterion may decide
+    let wronskians = by_wronskians(
+        basis,
+        range,
+        "the factorisation's certificate does not cover the range",
+    );
+    evidence.extend(wronskians.evidence);
+    let status = wronskians.status;
+    let method = if status == Status::NotCheckable {
+        TOTALLY_POSITIVE
+    } else {
+        WRONSKIAN
+    };
+    Verdict::new(status, method, evidence)
 }
 
 /// The certificate in words: degrees, matrix size, minors, the set.

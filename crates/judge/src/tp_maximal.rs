@@ -12,10 +12,12 @@
 //! `b₀` non-increasing and `bₙ` non-decreasing — variation diminishing):
 //! an end where they stop holding is exact (the squared Han basis:
 //! totally positive exactly on `[−1, 1]`, nonnegative up to `2 + 2√2`).
-//! Beyond any other end, a rational value where the certificate proves
-//! total positivity refutes maximality (exact witness), and a value where a
-//! collocation minor is negative bounds the end (a **bracket**, called so:
-//! `not-checkable`).
+//! An end where the domain `[0, α]` shrinks to a point is exact (no basis
+//! beyond). Beyond any other end, a value where the certificate (or, for
+//! bases it does not take, Karlin's Wronskian criterion,
+//! [`crate::tp_wronskian`]) proves total positivity refutes maximality, and
+//! a value where a collocation minor (or a consecutive Wronskian) is
+//! negative bounds the end (a **bracket**, called so: `not-checkable`).
 
 use rug::Rational;
 use trig_certify::ParamBox;
@@ -29,14 +31,17 @@ use trig_symbolic::Sym;
 use super::certificate::show_outside;
 use super::nonnegative::{nonnegative_claim, pieces};
 use super::total_positivity::normalized_totally_positive;
+use super::tp_wronskian::at_point;
 use crate::exact::ExactBasis;
 use crate::exact::basis_of;
+use trig_certify::analytic_end::Problem;
+use trig_certify::branch::Axis;
 use trig_verdict::evidence::Evidence;
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
 /// How the maximal set is decided, as the report states it.
-pub const METHOD: &str = "total positivity on the printed range by the totally positive factorisation; an end where necessary conditions (nonnegativity; b0 non-increasing and bn non-decreasing for a basis interpolating its ends: variation diminishing) stop holding, decided exactly by the range engine, is exact; beyond another end, a value where the certificate proves total positivity refutes maximality, a negative collocation minor bounds the end (a bracket)";
+pub const METHOD: &str = "total positivity on the printed range by the totally positive factorisation or Karlin's Wronskian criterion; an end where necessary conditions (nonnegativity; b0 non-increasing and bn non-decreasing for a basis interpolating its ends: variation diminishing) stop holding, decided exactly by the range engine, is exact, and so is an end where the domain shrinks to a point; beyond another end, a value where the certificate or the criterion proves total positivity refutes maximality, a negative collocation minor or a consecutive Wronskian negative at a point bounds the end (a bracket)";
 
 /// The distances beyond an end that are tried: 1, 1/4, …, 1/256.
 const STEPS: u32 = 5;
@@ -74,51 +79,65 @@ pub fn maximal_totally_positive<B: ExactBasis>(basis: &B, range: Option<&ParamRa
         )));
         return v;
     }
-    let Ok((trig, fs, _)) = pieces(basis) else {
-        return Verdict::not_checkable(
-            "the factorisation needs functions polynomial in sin, cos or the variable",
-        );
-    };
+    // the factorisation where the functions are polynomial in sin, cos or
+    // the variable; the Wronskian criterion at single values otherwise
+    let polynomial = pieces(basis).ok();
     let mut evidence: Vec<Evidence> = vec![Evidence::note(format!(
         "normalized totally positive on the printed range {} ∈ {printed} (proved, see the claim without maximal); the range is not exactly the maximal nonnegativity interval, so its ends are decided by total positivity itself",
         p.symbol
     ))];
-    let necessary = necessary_set(basis, &p.name, &printed);
+    let necessary = match &polynomial {
+        Some(_) => necessary_set(basis, &p.name, &printed),
+        None => (None, None),
+    };
     if let Some(note) = &necessary.1 {
         evidence.push(Evidence::note(note.clone()));
     }
+    let unit = if printed.pi { "·π" } else { "" };
     let mut bracketed = false;
     for (end, outward) in [(&printed.lo, -1), (&printed.hi, 1)] {
-        let e = match (end, printed.pi) {
-            (End::Unbounded, _) => continue,
-            (_, true) => {
+        let e = match (end, printed.pi, &polynomial) {
+            (End::Unbounded, _, _) => continue,
+            (_, true, Some(_)) => {
                 evidence.push(Evidence::note(
                     "an end in multiples of π is not compared (rational values only)",
                 ));
                 bracketed = true;
                 continue;
             }
-            (End::Closed(e) | End::Open(e), false) => e.clone(),
+            (End::Closed(e) | End::Open(e), _, _) => e.clone(),
         };
         let necessary_end = if outward < 0 {
             necessary.0.as_ref().map(|r| &r.lo)
         } else {
             necessary.0.as_ref().map(|r| &r.hi)
         };
-        if let Some(EndPoint::Exact {
-            value,
-            closed,
-            outside,
-            ..
-        }) = necessary_end
+        if let (
+            Some(EndPoint::Exact {
+                value,
+                closed,
+                outside,
+                ..
+            }),
+            Some((trig, _, _)),
+        ) = (necessary_end, &polynomial)
         {
             if value.rational.as_ref() == Some(&e) && *closed == matches!(end, End::Closed(_)) {
                 evidence.push(Evidence::note(format!(
                     "the end {e} is exact: just beyond it a necessary condition of normalized total positivity fails ({}; exact end of that condition's set, found by its boundary polynomials)",
-                    show_outside(outside, &p.symbol, trig)
+                    show_outside(outside, &p.symbol, *trig)
                 )));
                 continue;
             }
+        }
+        // where the domain shrinks to a point there is no basis beyond
+        let functions = basis_of(basis);
+        let domain = basis.domain();
+        if Problem::new(&functions, &domain, printed.pi).empty_domain_at() == Some(e.clone()) {
+            evidence.push(Evidence::note(format!(
+                "the end {e}{unit} is exact: the domain shrinks to a point there, and there is no basis beyond it"
+            )));
+            continue;
         }
         // an open end itself, then values at 1, 1/4, … beyond it
         let mut tries: Vec<Rational> = Vec::new();
@@ -128,30 +147,25 @@ pub fn maximal_totally_positive<B: ExactBasis>(basis: &B, range: Option<&ParamRa
         tries.extend((0..STEPS).map(|k| e.clone() + Rational::from((outward, 1u32 << (2 * k)))));
         let mut refuted: Option<Rational> = None;
         for q in tries {
-            // a refutation is cheap; the certificate at a value only where
-            // none is found
-            if refute(&fs, trig, &[(p.name.as_str(), &q)]).is_some() {
-                refuted = Some(q);
-                continue;
-            }
-            let at = ParamBox::point(q.clone());
-            let proved =
-                certify(&fs, trig, Some((p.name.as_str(), &at))).is_ok_and(|c| c.set.covers);
-            if proved {
-                evidence.push(Evidence::note(format!(
-                    "at {} = {q}, outside the printed range, the basis is totally positive too (the certificate at that value, exact): the printed range is not the maximal set",
-                    p.symbol
-                )));
-                return Verdict::new(Status::Fails, METHOD, evidence);
+            match totally_positive_at(basis, polynomial.as_ref(), &p.name, &q, printed.pi) {
+                Some(false) => refuted = Some(q),
+                Some(true) => {
+                    evidence.push(Evidence::note(format!(
+                        "at {} = {q}{unit}, outside the printed range, the basis is totally positive too (proved at that value): the printed range is not the maximal set",
+                        p.symbol
+                    )));
+                    return Verdict::new(Status::Fails, METHOD, evidence);
+                }
+                None => {}
             }
         }
         match refuted {
             Some(q) => evidence.push(Evidence::note(format!(
-                "beyond the end {e}: not totally positive at {} = {q} (a negative collocation minor, exact), but not proved on the whole gap: the maximal set ends between {e} and {q} (a bracket)",
+                "beyond the end {e}{unit}: not totally positive at {} = {q}{unit} (refuted there), but not proved on the whole gap: the maximal set ends between {e}{unit} and {q}{unit} (a bracket)",
                 p.symbol
             ))),
             None => evidence.push(Evidence::note(format!(
-                "beyond the end {e}: neither proved nor refuted at the values tried"
+                "beyond the end {e}{unit}: neither proved nor refuted at the values tried"
             ))),
         }
         bracketed = true;
@@ -160,9 +174,41 @@ pub fn maximal_totally_positive<B: ExactBasis>(basis: &B, range: Option<&ParamRa
         return Verdict::new(Status::Holds, METHOD, evidence);
     }
     evidence.push(Evidence::note(format!(
-        "the maximal set is not decided exactly ({TOTALLY_POSITIVE_SHORT}); the Wronskian criterion that could close the gap is not implemented"
+        "the maximal set is not decided exactly ({TOTALLY_POSITIVE_SHORT})"
     )));
     Verdict::new(Status::NotCheckable, METHOD, evidence)
+}
+
+/// Total positivity at one parameter value `q` (in units of π on a π
+/// axis): `Some(false)` refuted (a negative collocation minor, or a
+/// consecutive Wronskian negative at a point), `Some(true)` proved (the
+/// factorisation's certificate at `q`, else the Wronskian criterion),
+/// `None` undecided.
+fn totally_positive_at<B: ExactBasis>(
+    basis: &B,
+    polynomial: Option<&(bool, Vec<Sym>, Vec<String>)>,
+    name: &str,
+    q: &Rational,
+    pi: bool,
+) -> Option<bool> {
+    if let Some((trig, fs, _)) = polynomial {
+        // a refutation is cheap; the certificate only where none is found
+        if refute(fs, *trig, &[(name, q)]).is_some() {
+            return Some(false);
+        }
+        let at = ParamBox::point(q.clone());
+        if certify(fs, *trig, Some((name, &at))).is_ok_and(|c| c.set.covers) {
+            return Some(true);
+        }
+    }
+    let axis = Axis {
+        lo: q.clone(),
+        hi: q.clone(),
+        lo_open: false,
+        hi_open: false,
+        pi,
+    };
+    at_point(&basis_of(basis), &basis.domain(), &[axis])
 }
 
 /// A short name of the certificate's method for the notes.

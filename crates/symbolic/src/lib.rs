@@ -45,6 +45,7 @@
 
 mod calculus;
 pub mod coef;
+mod determinant;
 mod division;
 mod error;
 mod eval;

@@ -51,7 +51,7 @@ impl Engine<'_> {
                 } else {
                     Rational::from(1)
                 },
-                false,
+                self.open_variable,
             )
         } else {
             let a = &self.coords.axes[k - 1];

@@ -1,0 +1,113 @@
+//! Total positivity by Karlin's Wronskian criterion (issue 38): bases the
+//! totally positive factorisation does not take — the variable beside
+//! `sin t` (C-Bézier), exponentials, domains `[0, α]` — decided both ways.
+//! Expected values: `examples/independent/issue38-wronskian.md` (SymPy and
+//! mpmath, written without reading the crates).
+
+use std::path::PathBuf;
+
+use trig_e2e::{example, stdout_ok};
+
+/// The verdict and evidence (JSON text) of one claim of a spec file.
+fn claim(path: &str, id: &str) -> (String, String) {
+    let text = stdout_ok(&[
+        "audit",
+        "--spec",
+        path,
+        "--claim",
+        id,
+        "--format",
+        "json",
+        "--time-limit",
+        "600",
+    ]);
+    let json: serde_json::Value = serde_json::from_str(&text).expect("json");
+    let c = &json["claims"][0];
+    (
+        c["verdict"].as_str().unwrap_or_default().to_string(),
+        c["evidence"].to_string(),
+    )
+}
+
+/// A copy of a shipped example with extra claims appended, for one test.
+fn with_claims(name: &str, claims: &str) -> String {
+    let text = std::fs::read_to_string(example(name)).expect("read example");
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cli_tp_wronskian");
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let path = dir.join(format!("with-{name}"));
+    std::fs::write(&path, format!("{text}\n{claims}")).expect("write spec");
+    path.display().to_string()
+}
+
+#[test]
+fn a_domain_that_moves_with_its_parameter() {
+    let path = example("trig-bernstein-alpha.toml");
+    let (v, e) = claim(&path, "TBA-totally-positive");
+    assert_eq!(v, "holds", "{e}");
+    assert!(e.contains("all 6 consecutive Wronskians"), "{e}");
+    let (v, e) = claim(&path, "TBA-totally-positive-wide");
+    assert_eq!(v, "fails", "{e}");
+    assert!(
+        e.contains("W(b1) < 0") && e.contains("negative 1 × 1 minor"),
+        "{e}"
+    );
+}
+
+#[test]
+fn c_bezier_cubic_both_ways_and_its_maximal_set() {
+    let path = example("c-bezier-cubic.toml");
+    let (v, e) = claim(&path, "CB-totally-positive");
+    assert_eq!(v, "holds", "{e}");
+    assert!(e.contains("W(b0, b1, b2, b3) > 0"), "{e}");
+    // the printed (0, π) is not the maximal set: at α = π it holds too
+    let (v, e) = claim(&path, "CB-totally-positive-maximal");
+    assert_eq!(v, "fails", "{e}");
+    assert!(
+        e.contains("α = 1·π") && e.contains("shrinks to a point"),
+        "{e}"
+    );
+    // beyond 2π the basis is not even nonnegative: b1 < 0 inside
+    let beyond = with_claims(
+        "c-bezier-cubic.toml",
+        "[[claims]]\nid = \"beyond\"\nsource = \"test\"\nstatement = \"TP\"\ncheck = \"total-positivity\"\nrange = \"[13/2, 7]\"\n",
+    );
+    let (v, e) = claim(&beyond, "beyond");
+    assert_eq!(v, "fails", "{e}");
+    assert!(e.contains("W(b1) < 0"), "{e}");
+}
+
+#[test]
+fn c_bezier_cubic_is_totally_positive_exactly_below_two_pi() {
+    let path = with_claims(
+        "c-bezier-cubic-2pi.toml",
+        "[[claims]]\nid = \"tp-max\"\nsource = \"test\"\nstatement = \"TP\"\ncheck = \"total-positivity\"\nmaximal = true\n",
+    );
+    let (v, e) = claim(&path, "tp-max");
+    assert_eq!(v, "holds", "{e}");
+    assert!(e.contains("exactly the maximal set"), "{e}");
+}
+
+#[test]
+fn exponentials_and_a_closed_degenerate_end() {
+    // the exponential Bernstein basis on its bounded printed range
+    let path = with_claims(
+        "exp-bernstein-cubic.toml",
+        "[[claims]]\nid = \"tp\"\nsource = \"test\"\nstatement = \"TP\"\ncheck = \"total-positivity\"\n",
+    );
+    let (v, e) = claim(&path, "tp");
+    assert_eq!(v, "holds", "{e}");
+    // the quadratic C-Bézier basis degenerates at the closed end π (b1 ≡ 0
+    // there): the criterion cannot prove it, and says so at once
+    let path = with_claims(
+        "c-bezier-quadratic.toml",
+        "[[claims]]\nid = \"tp\"\nsource = \"test\"\nstatement = \"TP\"\ncheck = \"total-positivity\"\n\n[[claims]]\nid = \"tp-open\"\nsource = \"test\"\nstatement = \"TP\"\ncheck = \"total-positivity\"\nrange = \"(0, pi)\"\n",
+    );
+    let (v, e) = claim(&path, "tp");
+    assert_eq!(v, "not-checkable", "{e}");
+    assert!(
+        e.contains("vanishes identically at the closed range end"),
+        "{e}"
+    );
+    let (v, e) = claim(&path, "tp-open");
+    assert_eq!(v, "holds", "{e}");
+}
