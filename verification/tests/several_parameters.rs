@@ -234,3 +234,105 @@ fn a_triangle_of_parameters() {
     );
     assert_eq!(v.status, Status::Fails, "{}", evidence_lines(&v));
 }
+
+/// The constructed basis above with `λ = α²`, `μ = β²`: totally positive
+/// exactly for `λ, μ ∈ [0, 1]` (issue38.md, section 3, item 6; `λ > 1`
+/// gives `b0` a double zero inside and a negative `2 × 2` minor), so exactly
+/// on `[−1, 1]²` in `(α, β)`; nonnegative on a larger box (`Q`'s
+/// coefficients `2 + 2α²`, `6 − (α² − 1)² − (β² − 1)²`, `2 + 2β²` stay
+/// positive on `[−5/4, 5/4]²`).
+const SQUARED_PARAMETERS: &str = "id = \"b7\"\ncitation = \"constructed\"\nvariable = \"polynomial\"\n\
+[[parameters]]\nname = \"alpha\"\nsymbol = \"α\"\nrange = \"[-1, 1]\"\n\
+[[parameters]]\nname = \"beta\"\nsymbol = \"β\"\nrange = \"[-1, 1]\"\n\
+[[functions]]\nname = \"b0\"\nformula = \"(1 - t)^2*(1 - alpha^2*t)^2\"\n\
+[[functions]]\nname = \"b1\"\nformula = \"1 - (1 - t)^2*(1 - alpha^2*t)^2 - t^2*(1 - beta^2*(1 - t))^2\"\n\
+[[functions]]\nname = \"b2\"\nformula = \"t^2*(1 - beta^2*(1 - t))^2\"\n";
+
+#[test]
+fn a_maximal_set_of_two_parameters_smaller_than_nonnegativity_exactly() {
+    let maximal = "check = \"total-positivity\"\nmaximal = true";
+    let v = decide_text(SQUARED_PARAMETERS, maximal);
+    assert_eq!(v.status, Status::Holds, "{}", evidence_lines(&v));
+    let lines = evidence_lines(&v);
+    assert!(lines.contains("is exactly the maximal set"), "{lines}");
+    assert!(
+        lines.contains("the face α = 1: the maximal interval"),
+        "{lines}"
+    );
+    // nonnegative beyond it
+    let v = decide_text(
+        SQUARED_PARAMETERS,
+        "check = \"nonnegative\"\nranges = { alpha = \"[-5/4, 5/4]\", beta = \"[-5/4, 5/4]\" }",
+    );
+    assert_eq!(v.status, Status::Holds, "{}", evidence_lines(&v));
+    // a smaller box is not maximal: totally positive beyond its face
+    let v = decide_text(
+        SQUARED_PARAMETERS,
+        &format!("{maximal}\nranges = {{ alpha = \"[-1/2, 1]\" }}"),
+    );
+    assert_eq!(v.status, Status::Fails, "{}", evidence_lines(&v));
+    assert!(
+        evidence_lines(&v).contains("at α = -3/4, β = 0, outside the printed box"),
+        "{}",
+        evidence_lines(&v)
+    );
+}
+
+/// Generalized Bernstein of degree 2 (Han, Ma & Huang, JCAM 217 (2008)):
+/// totally positive exactly on `[−2, 1]²` in the plane (issue38.md,
+/// section 3, item 1: beyond each face a function is negative).
+#[test]
+fn published_boxes_are_exactly_the_maximal_sets() {
+    let gb2 = [
+        "(1 - t)^2*(1 - lambda1*t)",
+        "t*(1 - t)*(2 + lambda1 - lambda1*t + lambda2*t)",
+        "t^2*(1 - lambda2 + lambda2*t)",
+    ];
+    let spec = |r1: &str| {
+        let mut text = "id = \"gb2\"\ncitation = \"test\"\nvariable = \"polynomial\"\n".to_string();
+        for (name, range) in [("lambda1", r1), ("lambda2", "[-2, 1]")] {
+            text.push_str(&format!(
+                "[[parameters]]\nname = \"{name}\"\nrange = \"{range}\"\n"
+            ));
+        }
+        for (i, f) in gb2.iter().enumerate() {
+            text.push_str(&format!(
+                "[[functions]]\nname = \"b{i}\"\nformula = \"{f}\"\n"
+            ));
+        }
+        text
+    };
+    let maximal = "check = \"total-positivity\"\nmaximal = true";
+    let v = decide_text(&spec("[-2, 1]"), maximal);
+    assert_eq!(v.status, Status::Holds, "{}", evidence_lines(&v));
+    let v = decide_text(&spec("[-1, 1]"), maximal);
+    assert_eq!(v.status, Status::Fails, "{}", evidence_lines(&v));
+    let v = decide_text(&example_text("han-ma-huang-cubic"), maximal);
+    assert_eq!(v.status, Status::Holds, "{}", evidence_lines(&v));
+}
+
+/// `b0 = 1 − f`, `b1 = f` with `f = t + λ·t(1 − t)(1 − 2t)`: `W(b0, b1) =
+/// f′ = 1 + λ(1 − 6t + 6t²)`, positive on `(0, 1)` exactly for
+/// `λ ∈ [−1, 2)` (its least value `1 − λ/2` at `t = 1/2` for `λ > 0`,
+/// `1 + λ` at the ends for `λ < 0`), and `0 < f < 1` inside there: totally
+/// positive on `[−1, 2]` (by hand). The cubic Bernstein coefficients of `f`,
+/// `(0, (1 + λ)/3, (2 − λ)/3, 1)`, increase only for `λ ≤ 1/2`: the
+/// factorisation's certificate stalls below the true set, degree elevation
+/// only narrows the gap, and the Wronskian criterion closes it.
+#[test]
+fn the_wronskian_criterion_decides_where_the_certificate_stalls() {
+    let f = "lambda*t*(1 - t)*(1 - 2*t)";
+    let b = [format!("1 - t - {f}"), format!("t + {f}")];
+    let functions = [b[0].as_str(), b[1].as_str()];
+    let v = tp(&[("lambda", "[-1, 3/2]")], &functions);
+    assert_eq!(v.status, Status::Holds, "{}", evidence_lines(&v));
+    let lines = evidence_lines(&v);
+    assert!(
+        lines.contains("the factorisation's certificate does not cover the range")
+            && lines.contains("W(b0, b1) > 0 on the open domain"),
+        "{lines}"
+    );
+    // beyond λ = 2, f′(1/2) < 0: refuted
+    let v = tp(&[("lambda", "[-1, 5/2]")], &functions);
+    assert_eq!(v.status, Status::Fails, "{}", evidence_lines(&v));
+}

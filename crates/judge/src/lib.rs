@@ -46,5 +46,6 @@ pub mod surface;
 pub mod symmetry;
 pub mod total_positivity;
 pub mod tp_maximal;
+pub mod tp_maximal_box;
 pub mod tp_wronskian;
 pub mod unity;

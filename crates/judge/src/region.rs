@@ -18,6 +18,7 @@
 
 use rug::Rational;
 use trig_certify::boundary::{candidates, end_conditions};
+use trig_certify::range::EndPoint;
 use trig_certify::region::{CellKind, Region, region};
 use trig_certify::{Bound, ParamBox};
 use trig_symbolic::Sym;
@@ -171,6 +172,69 @@ fn box_from_end_conditions(
     Some(lines)
 }
 
+/// `region ⊂ box` from the functions of one parameter alone, when the
+/// exact ends of their maximal intervals are the box's finite faces (a
+/// function of `λ` alone negative just beyond `λ = 1` is negative there for
+/// every `μ`): the lines that prove it, or `None`.
+fn box_from_one_parameter_functions(
+    fs: &[Sym],
+    names: &[&str],
+    trig: bool,
+    axes: &[Axis<'_>; 2],
+) -> Option<Vec<String>> {
+    let mut lines = Vec::new();
+    for k in 0..2 {
+        let set = &axes[k].set;
+        let faces: Vec<(bool, &Rational)> = [(true, &set.lo), (false, &set.hi)]
+            .into_iter()
+            .filter_map(|(lower, b)| b.value().map(|v| (lower, v)))
+            .collect();
+        if faces.is_empty() {
+            continue;
+        }
+        let alone: Vec<usize> = (0..fs.len())
+            .filter(|&i| {
+                let vars = fs[i].variables();
+                vars.contains(axes[k].name) && !vars.contains(axes[1 - k].name)
+            })
+            .collect();
+        if alone.is_empty() {
+            return None;
+        }
+        let group: Vec<Sym> = alone.iter().map(|&i| fs[i].clone()).collect();
+        let group_names: Vec<&str> = alone.iter().map(|&i| names[i]).collect();
+        let published = Published {
+            name: axes[k].name,
+            symbol: axes[k].symbol,
+            range: set.to_string(),
+            set: set.clone(),
+            source: axes[k].source,
+        };
+        let (r, _) = maximal_against(&group, &group_names, trig, &published);
+        for (lower, v) in faces {
+            let (end, closed) = if lower {
+                (&r.lo, matches!(set.lo, Bound::Closed(_)))
+            } else {
+                (&r.hi, matches!(set.hi, Bound::Closed(_)))
+            };
+            match end {
+                EndPoint::Exact {
+                    value, closed: c, ..
+                } if value.rational.as_ref() == Some(v) && *c == closed => {
+                    lines.push(format!(
+                        "the face {} = {v}: the maximal interval of {} on which {} ≥ 0 ends exactly there",
+                        axes[k].symbol,
+                        axes[k].symbol,
+                        group_names.join(", ")
+                    ));
+                }
+                _ => return None,
+            }
+        }
+    }
+    Some(lines)
+}
+
 /// The coupled case: the end conditions, the face test, then the window.
 fn coupled(
     fs: &[Sym],
@@ -182,6 +246,11 @@ fn coupled(
     if let Some(lines) = box_from_end_conditions(fs, names, trig, axes) {
         evidence.push("every parameter where all functions are ≥ 0 satisfies these necessary conditions (the sign of a function next to an end of the domain), whose half-planes cut out exactly the box: so the region is inside the box, and with the containment it is the box");
         evidence.extend(lines.into_iter().map(|l| format!("necessary: {l}")));
+        return Verdict::new(Status::Holds, REGION, evidence);
+    }
+    if let Some(lines) = box_from_one_parameter_functions(fs, names, trig, axes) {
+        evidence.push("beyond each finite face of the box a function of that face's parameter alone is negative whatever the other parameter (the exact end of its maximal interval is the face): the part of the region that contains the box lies inside the box, and with the containment it is the box");
+        evidence.extend(lines);
         return Verdict::new(Status::Holds, REGION, evidence);
     }
     // the face test needs every boundary polynomial

@@ -165,19 +165,7 @@ pub fn totally_positive<B: ExactBasis>(basis: &B, range: Option<&ParamRange>) ->
         "no collocation matrix with a negative minor was found at the failing parameter values (rational grids of [0, 1] in z)",
     ));
     // where the certificate stalls, the Wronskian criterion may decide
-    let wronskians = by_wronskians(
-        basis,
-        range,
-        "the factorisation's certificate does not cover the range",
-    );
-    evidence.extend(wronskians.evidence);
-    let status = wronskians.status;
-    let method = if status == Status::NotCheckable {
-        TOTALLY_POSITIVE
-    } else {
-        WRONSKIAN
-    };
-    Verdict::new(status, method, evidence)
+    with_wronskians(basis, range, evidence)
 }
 
 /// The certificate in words: degrees, matrix size, minors, the set.
@@ -392,7 +380,28 @@ fn several<B: ExactBasis>(basis: &B, fs: &[Sym], trig: bool, params: &[Parameter
     evidence.push(Evidence::note(
         "no collocation matrix with a negative minor was found there or at the corners of the box (rational grids of [0, 1] in z): the certificate is sufficient, not necessary",
     ));
-    Verdict::new(Status::NotCheckable, TOTALLY_POSITIVE, evidence)
+    with_wronskians(basis, None, evidence)
+}
+
+/// Where the factorisation's certificate stalls: the Wronskian criterion
+/// on the same range, its evidence after the certificate's.
+fn with_wronskians<B: ExactBasis>(
+    basis: &B,
+    range: Option<&ParamRange>,
+    mut evidence: Vec<Evidence>,
+) -> Verdict {
+    let wronskians = by_wronskians(
+        basis,
+        range,
+        "the factorisation's certificate does not cover the range",
+    );
+    evidence.extend(wronskians.evidence);
+    let method = if wronskians.status == Status::NotCheckable {
+        TOTALLY_POSITIVE
+    } else {
+        WRONSKIAN
+    };
+    Verdict::new(wronskians.status, method, evidence)
 }
 
 /// The corners of the parameters' box at their closed finite ends.

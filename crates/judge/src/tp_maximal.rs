@@ -31,11 +31,13 @@ use trig_symbolic::Sym;
 use super::certificate::show_outside;
 use super::nonnegative::{nonnegative_claim, pieces};
 use super::total_positivity::normalized_totally_positive;
+use super::tp_maximal_box::maximal_totally_positive_box;
 use super::tp_wronskian::at_point;
 use crate::exact::ExactBasis;
 use crate::exact::basis_of;
 use trig_certify::analytic_end::Problem;
 use trig_certify::branch::Axis;
+use trig_certify::tp_box::BoxOutcome;
 use trig_verdict::evidence::Evidence;
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
@@ -50,11 +52,14 @@ const STEPS: u32 = 5;
 /// claim's range, else the declared one) for a one-parameter basis.
 pub fn maximal_totally_positive<B: ExactBasis>(basis: &B, range: Option<&ParamRange>) -> Verdict {
     let params = basis.parameters();
-    let [p] = params.as_slice() else {
-        return Verdict::not_checkable(format!(
-            "the maximal set of total positivity is decided for one parameter ({} here)",
-            params.len()
-        ));
+    let p = match params.as_slice() {
+        [] => {
+            return Verdict::not_checkable(
+                "the basis has no parameter: there is no set of parameters to be maximal",
+            );
+        }
+        [p] => p,
+        _ => return maximal_totally_positive_box(basis),
     };
     let printed = range.unwrap_or(&p.range).clone();
     let inside = normalized_totally_positive(basis, Some(&printed));
@@ -147,7 +152,7 @@ pub fn maximal_totally_positive<B: ExactBasis>(basis: &B, range: Option<&ParamRa
         tries.extend((0..STEPS).map(|k| e.clone() + Rational::from((outward, 1u32 << (2 * k)))));
         let mut refuted: Option<Rational> = None;
         for q in tries {
-            match totally_positive_at(basis, polynomial.as_ref(), &p.name, &q, printed.pi) {
+            match totally_positive_at(basis, polynomial.as_ref(), &[(&p.name, &q)], &[printed.pi]) {
                 Some(false) => refuted = Some(q),
                 Some(true) => {
                     evidence.push(Evidence::note(format!(
@@ -179,36 +184,50 @@ pub fn maximal_totally_positive<B: ExactBasis>(basis: &B, range: Option<&ParamRa
     Verdict::new(Status::NotCheckable, METHOD, evidence)
 }
 
-/// Total positivity at one parameter value `q` (in units of π on a π
-/// axis): `Some(false)` refuted (a negative collocation minor, or a
+/// Total positivity at one parameter vector `at` (values in units of π on
+/// a π axis): `Some(false)` refuted (a negative collocation minor, or a
 /// consecutive Wronskian negative at a point), `Some(true)` proved (the
-/// factorisation's certificate at `q`, else the Wronskian criterion),
+/// factorisation's certificate there, else the Wronskian criterion),
 /// `None` undecided.
-fn totally_positive_at<B: ExactBasis>(
+pub(crate) fn totally_positive_at<B: ExactBasis>(
     basis: &B,
     polynomial: Option<&(bool, Vec<Sym>, Vec<String>)>,
-    name: &str,
-    q: &Rational,
-    pi: bool,
+    at: &[(&str, &Rational)],
+    pi: &[bool],
 ) -> Option<bool> {
     if let Some((trig, fs, _)) = polynomial {
         // a refutation is cheap; the certificate only where none is found
-        if refute(fs, *trig, &[(name, q)]).is_some() {
+        if refute(fs, *trig, at).is_some() {
             return Some(false);
         }
-        let at = ParamBox::point(q.clone());
-        if certify(fs, *trig, Some((name, &at))).is_ok_and(|c| c.set.covers) {
+        let proved = match at {
+            [(name, q)] => certify(fs, *trig, Some((name, &ParamBox::point((*q).clone()))))
+                .is_ok_and(|c| c.set.covers),
+            _ => {
+                let points: Vec<(&str, ParamBox)> = at
+                    .iter()
+                    .map(|(n, q)| (*n, ParamBox::point((*q).clone())))
+                    .collect();
+                trig_certify::tp_box::certify(fs, *trig, &points)
+                    .is_ok_and(|c| matches!(c.outcome, BoxOutcome::Covers { .. }))
+            }
+        };
+        if proved {
             return Some(true);
         }
     }
-    let axis = Axis {
-        lo: q.clone(),
-        hi: q.clone(),
-        lo_open: false,
-        hi_open: false,
-        pi,
-    };
-    at_point(&basis_of(basis), &basis.domain(), &[axis])
+    let axes: Vec<Axis> = at
+        .iter()
+        .zip(pi)
+        .map(|((_, q), pi)| Axis {
+            lo: (*q).clone(),
+            hi: (*q).clone(),
+            lo_open: false,
+            hi_open: false,
+            pi: *pi,
+        })
+        .collect();
+    at_point(&basis_of(basis), &basis.domain(), &axes)
 }
 
 /// A short name of the certificate's method for the notes.
@@ -216,33 +235,50 @@ const TOTALLY_POSITIVE_SHORT: &str =
     "the totally positive factorisation is sufficient, not necessary";
 
 /// The maximal interval, around a point of the printed range, of the
-/// necessary conditions of normalized total positivity that the range
-/// engine decides exactly: every function `≥ 0` (the `1 × 1` minors) and,
-/// when `b₀` is `1` at the start of the domain and `bₙ` at its end, `b₀`
-/// non-increasing and `bₙ` non-decreasing (a normalized totally positive
-/// basis is variation diminishing, so `b₀ − κ`, whose coefficients
-/// `(1 − κ, −κ, …, −κ)` change sign once, changes sign at most once for
-/// every `κ ∈ (0, 1)`; with `b₀(a) = 1` a rise of `b₀` would make two).
-/// With a note saying which conditions were used.
+/// necessary conditions of normalized total positivity
+/// ([`necessary_functions`]), with a note saying which were used.
 fn necessary_set<B: ExactBasis>(
     basis: &B,
     param: &str,
     printed: &ParamRange,
 ) -> (Option<MaximalRange>, Option<String>) {
-    let Ok((trig, mut fs, mut names)) = pieces(basis) else {
-        return (None, None);
-    };
     if printed.pi {
         return (None, None);
     }
+    let Some(necessary) = necessary_functions(basis) else {
+        return (None, None);
+    };
+    let names: Vec<&str> = necessary.names.iter().map(String::as_str).collect();
+    let start = printed.interior_point();
+    let r = maximal_range(&necessary.functions, &names, necessary.trig, param, &start);
+    (Some(r), Some(necessary.note))
+}
+
+/// The necessary conditions of normalized total positivity that the range
+/// and region engines decide exactly, as functions that must be `≥ 0`.
+pub(crate) struct Necessary {
+    pub trig: bool,
+    pub functions: Vec<Sym>,
+    pub names: Vec<String>,
+    /// Which conditions were used, for the notes.
+    pub note: String,
+}
+
+/// Every function `≥ 0` (the `1 × 1` minors) and, when `b₀` is `1` at the
+/// start of the domain and `bₙ` at its end, `b₀` non-increasing and `bₙ`
+/// non-decreasing (a normalized totally positive basis is variation
+/// diminishing, so `b₀ − κ`, whose coefficients `(1 − κ, −κ, …, −κ)`
+/// change sign once, changes sign at most once for every `κ ∈ (0, 1)`;
+/// with `b₀(a) = 1` a rise of `b₀` would make two). `None` for a basis the
+/// polynomial engines do not take.
+pub(crate) fn necessary_functions<B: ExactBasis>(basis: &B) -> Option<Necessary> {
+    let (trig, mut fs, mut names) = pieces(basis).ok()?;
     let domain = basis.domain();
     let values = basis_of(basis);
-    let (Some(first), Some(last)) = (values.first(), values.last()) else {
-        return (None, None);
-    };
-    let (Ok(b0), Ok(bn)) = (standardize(first, &domain), standardize(last, &domain)) else {
-        return (None, None);
-    };
+    let (b0, bn) = (
+        standardize(values.first()?, &domain).ok()?,
+        standardize(values.last()?, &domain).ok()?,
+    );
     let at = |f: &Sym, s: i64, c: i64, t: i64| {
         f.subs("s", &Sym::int(s))
             .subs("c", &Sym::int(c))
@@ -266,11 +302,10 @@ fn necessary_set<B: ExactBasis>(
         names.extend(bn.pieces.iter().map(|_| "bn′".to_string()));
         used.push_str(", b0 non-increasing and bn non-decreasing (b0 = 1 at the start, bn = 1 at the end: a normalized totally positive basis is variation diminishing)");
     }
-    let names: Vec<&str> = names.iter().map(String::as_str).collect();
-    let start = printed.interior_point();
-    let r = maximal_range(&fs, &names, trig, param, &start);
-    (
-        Some(r),
-        Some(format!("necessary conditions used for the ends: {used}")),
-    )
+    Some(Necessary {
+        trig,
+        functions: fs,
+        names,
+        note: format!("necessary conditions used for the ends: {used}"),
+    })
 }
