@@ -420,8 +420,11 @@ def iv_digits(expr, env, digits=30, dps=60):
     import mpmath
 
     v = iv_eval(expr, env, dps)
-    lo = mpmath.nstr(mpmath.mpf(v.a), digits)
-    hi = mpmath.nstr(mpmath.mpf(v.b), digits)
+    # the ends are converted at the enclosure's own precision: at mpmath's
+    # default 15 digits both would be rounded to doubles first
+    with mpmath.workdps(dps):
+        lo = mpmath.nstr(mpmath.mpf(v.a), digits)
+        hi = mpmath.nstr(mpmath.mpf(v.b), digits)
     assert lo == hi, f"not {digits} certified digits: [{lo}, {hi}]"
     return lo
 
