@@ -307,3 +307,66 @@ fn a_witness_on_a_quarter_turn_names_its_own_angle() {
     assert!(text.contains("name: \"φ\""), "{text}");
     assert!(!text.contains("c = cos θ; θ ≈ 0.000000"), "{text}");
 }
+
+/// `maximal = true` on `independent` with a claim's own ranges, read from a
+/// spec file (examples/independent/issue38.md, section 2): the constructed
+/// basis on α ∈ [−1, 1], β ∈ [0, 1] is dependent exactly on the edges
+/// α = −1 and β = 0, so independent exactly on (−1, 1] × (0, 1]; GB2 is
+/// dependent only at the corner (−2, −2), so not on its open lower edges.
+#[test]
+fn the_maximal_set_of_independence_with_two_parameters() {
+    let basis = |params: [(&str, &str); 2], fs: [&str; 3], claim: &str| {
+        let mut text =
+            "id = \"t\"\ncitation = \"t\"\nvariable = \"t\"\ndomain = \"[0, 1]\"\n".to_string();
+        for (name, range) in params {
+            text.push_str(&format!(
+                "[[parameters]]\nname = \"{name}\"\nrange = \"{range}\"\nsource = \"t\"\n"
+            ));
+        }
+        for (i, f) in fs.iter().enumerate() {
+            text.push_str(&format!(
+                "[[functions]]\nname = \"b{i}\"\nformula = \"{f}\"\n"
+            ));
+        }
+        text.push_str(&format!(
+            "[[claims]]\nid = \"M\"\nsource = \"t\"\nstatement = \"t\"\ncheck = \"independent\"\nmaximal = true\n{claim}\n"
+        ));
+        let spec = Spec::from_str_named(&text, "t").expect("a spec");
+        spec_audit::decide(&spec, &spec.claims[0])
+    };
+    let constructed = [
+        "(1 - t)*(1 + beta*(alpha + 1)*t)",
+        "-2*beta*(alpha + 1)*t*(1 - t)",
+        "t*(1 + beta*(alpha + 1) - beta*(alpha + 1)*t)",
+    ];
+    let params = [("alpha", "[-1, 1]"), ("beta", "[0, 1]")];
+    let v = basis(
+        params,
+        constructed,
+        "ranges = { alpha = \"(-1, 1]\", beta = \"(0, 1]\" }",
+    );
+    assert_eq!(v.status, Status::Holds, "{v:?}");
+    assert!(
+        format!("{v:?}").contains("within the declared ranges"),
+        "{v:?}"
+    );
+    // leaving β = 0 in the claim's range: dependent there (b1 ≡ 0)
+    let w = basis(params, constructed, "ranges = { alpha = \"(-1, 1]\" }");
+    assert_eq!(w.status, Status::Fails, "{w:?}");
+    assert!(format!("{w:?}").contains("b1 ≡ 0"), "{w:?}");
+    let gb2 = [
+        "(1 - t)^2*(1 - lambda1*t)",
+        "t*(1 - t)*(2 + lambda1 - lambda1*t + lambda2*t)",
+        "t^2*(1 - lambda2 + lambda2*t)",
+    ];
+    let x = basis(
+        [("lambda1", "[-2, 1]"), ("lambda2", "[-2, 1]")],
+        gb2,
+        "ranges = { lambda1 = \"(-2, 1]\", lambda2 = \"(-2, 1]\" }",
+    );
+    assert_eq!(x.status, Status::Fails, "{x:?}");
+    assert!(
+        format!("{x:?}").contains("outside the claim's range"),
+        "{x:?}"
+    );
+}
