@@ -7,9 +7,12 @@
 //!   `Res_x(F, H)` (both nonzero as `F`, `H` are coprime). Over a rational
 //!   root `x₀` the common zeros are the real roots of
 //!   `gcd(p₁(x₀, y), …, p_k(x₀, y))` in `y` (Sturm sequences), and
-//!   symmetrically over a rational `y₀`. A point with both coordinates
-//!   irrational is not isolated here: when both resultants have irrational
-//!   roots in the box the answer says so (a bracket, not a set).
+//!   symmetrically over a rational `y₀`. Over an irrational `x₀` (a root
+//!   of `h`), the gcd of the fibres in `(Q[x]/(h))[y]` (Euclid, `h` split
+//!   where a zero divisor is met): when it is linear, `y = φ(x₀)`, the
+//!   root of `Res_x(h, y − φ)` isolated by enclosing `φ` on finer
+//!   intervals of `x₀`; of higher degree, the answer says so (a bracket,
+//!   not a set).
 //! - **A point on a curve** `f = 0` in the box: over a few rational values
 //!   of one coordinate in its range (the closed ends, the middle, the
 //!   quarters), the real roots of `f(x₀, y)` in the other range, a
@@ -187,17 +190,190 @@ pub fn common_zeros(
             }
         }
     }
-    let irrational = |a: &[Algebraic]| a.iter().filter(|c| c.rational.is_none()).count();
-    let undecided = (irrational(&xs) > 0 && irrational(&ys) > 0).then(|| {
+    // both irrational: over each irrational x₀, the gcd of the fibres in
+    // Q(x₀)[y]
+    let mut undecided = Vec::new();
+    if ys.iter().any(|c| c.rational.is_none()) {
+        for x0 in xs.iter().filter(|c| c.rational.is_none()) {
+            match over_irrational(&ps, x, y, x0, ry) {
+                Ok(Some(p)) => points.push(p),
+                Ok(None) => {}
+                Err(why) => undecided.push(format!("over {x} = {}: {why}", x0.describe(x, 12))),
+            }
+        }
+    }
+    let undecided = (!undecided.is_empty()).then(|| {
         format!(
-            "common zeros with both coordinates irrational are not isolated: {} irrational root(s) of {} in the range of {x} and {} of {} in the range of {y} (the resultants)",
-            irrational(&xs),
-            px.integer_primitive().display(x),
-            irrational(&ys),
-            py.integer_primitive().display(y)
+            "common zeros with both coordinates irrational are not all isolated ({})",
+            undecided.join("; ")
         )
     });
     Ok(CommonZeros { points, undecided })
+}
+
+/// A polynomial in `y` with coefficients in `Q[x]/(h)`, lowest degree
+/// first, no zero (mod `h`) leading coefficient.
+type Fibre = Vec<UPoly>;
+
+fn reduced(a: Fibre, h: &UPoly) -> Fibre {
+    let mut a: Fibre = a.into_iter().map(|c| c.div_rem(h).1).collect();
+    while a.last().is_some_and(UPoly::is_zero) {
+        a.pop();
+    }
+    a
+}
+
+/// The inverse of `c` modulo `h`, or (a zero divisor) the factor of `h`
+/// with the root in `(lo, hi)`, to go on with.
+fn inverse(c: &UPoly, h: &UPoly, lo: &Rational, hi: &Rational) -> Result<UPoly, UPoly> {
+    let (g, s) = c.ext_gcd(h);
+    if g.degree() > 0 {
+        let other = h.div_rem(&g).0;
+        return Err(if g.count_roots(lo, hi) > 0 { g } else { other });
+    }
+    Ok(s.mul(&UPoly::new(vec![Rational::from(1) / g.leading()])))
+}
+
+/// `a mod b` in `(Q[x]/(h))[y]`.
+fn remainder(
+    a: &Fibre,
+    b: &Fibre,
+    h: &UPoly,
+    lo: &Rational,
+    hi: &Rational,
+) -> Result<Fibre, UPoly> {
+    let inv = inverse(&b[b.len() - 1], h, lo, hi)?;
+    let mut r = a.clone();
+    while r.len() >= b.len() {
+        let f = r[r.len() - 1].mul(&inv).div_rem(h).1;
+        let shift = r.len() - b.len();
+        for (j, bj) in b.iter().enumerate() {
+            r[shift + j] = r[shift + j].sub(&f.mul(bj));
+        }
+        r = reduced(r, h);
+    }
+    Ok(r)
+}
+
+/// The monic gcd of the fibres in `(Q[x]/(h))[y]`; `Err` with the factor
+/// of `h` to continue with where a zero divisor was met.
+fn fibre_gcd(fs: &[Fibre], h: &UPoly, lo: &Rational, hi: &Rational) -> Result<Fibre, UPoly> {
+    let mut g: Fibre = Vec::new();
+    for f in fs {
+        let (mut a, mut b) = (g, reduced(f.clone(), h));
+        while !b.is_empty() {
+            let r = remainder(&a, &b, h, lo, hi)?;
+            (a, b) = (b, r);
+        }
+        g = a;
+    }
+    if let Some(lead) = g.last() {
+        let inv = inverse(lead, h, lo, hi)?;
+        g = reduced(g.iter().map(|c| c.mul(&inv)).collect(), h);
+    }
+    Ok(g)
+}
+
+/// An enclosure of `p` over `[lo, hi]` (interval Horner, exact rationals).
+fn enclose(p: &UPoly, lo: &Rational, hi: &Rational) -> (Rational, Rational) {
+    let (mut a, mut b) = (Rational::new(), Rational::new());
+    for c in p.coeffs().iter().rev() {
+        let products = [
+            Rational::from(&a * lo),
+            Rational::from(&a * hi),
+            Rational::from(&b * lo),
+            Rational::from(&b * hi),
+        ];
+        let min = products.iter().min().cloned().unwrap_or_default();
+        let max = products.iter().max().cloned().unwrap_or_default();
+        (a, b) = (min + c, max + c);
+    }
+    (a, b)
+}
+
+/// `a` in `r` (exact comparisons with the ends).
+fn within(a: &mut Algebraic, r: &ParamRange) -> bool {
+    use std::cmp::Ordering::{Greater, Less};
+    let above = match &r.lo {
+        End::Closed(q) => a.cmp_rational(q) != Less,
+        End::Open(q) => a.cmp_rational(q) == Greater,
+        End::Unbounded => true,
+    };
+    let below = match &r.hi {
+        End::Closed(q) => a.cmp_rational(q) != Greater,
+        End::Open(q) => a.cmp_rational(q) == Less,
+        End::Unbounded => true,
+    };
+    above && below
+}
+
+/// The common zero with an irrational `y` over the irrational `x0`, when
+/// the gcd of the fibres over it is linear (`y = φ(x₀)`): `y` a root of
+/// `Res_x(h, y − φ)` isolated by enclosing `φ` over ever finer intervals
+/// of `x0`. `Err` when the gcd is of higher degree or `y` not isolated.
+fn over_irrational(
+    ps: &[Poly],
+    x: &str,
+    y: &str,
+    x0: &Algebraic,
+    ry: &ParamRange,
+) -> Result<Option<PlanePoint>, String> {
+    let fibres: Vec<Fibre> = ps
+        .iter()
+        .map(|p| {
+            p.coefficients_in(y)
+                .iter()
+                .map(|c| UPoly::from_poly(c, x).unwrap_or_else(|| UPoly::new(vec![])))
+                .collect()
+        })
+        .collect();
+    let (mut h, lo, hi) = (x0.poly.clone(), x0.lo.clone(), x0.hi.clone());
+    let g = loop {
+        match fibre_gcd(&fibres, &h, &lo, &hi) {
+            Ok(g) => break g,
+            Err(factor) if factor.degree() < h.degree() && factor.degree() > 0 => h = factor,
+            Err(_) => return Err("the splitting of its polynomial did not settle".into()),
+        }
+    };
+    match g.len() {
+        0 => return Err("every fibre vanishes there (a common factor)".into()),
+        1 => return Ok(None),
+        2 => {}
+        n => {
+            return Err(format!(
+                "the gcd of the fibres is of degree {} in {y} over Q({x}); its roots are not isolated",
+                n - 1
+            ));
+        }
+    }
+    let phi = UPoly::new(vec![]).sub(&g[0]);
+    if phi.degree() == 0 {
+        return Ok(None); // a rational y: found over it
+    }
+    let to_poly = |u: &UPoly, var: &str| {
+        let cs: Vec<Poly> = u
+            .coeffs()
+            .iter()
+            .map(|c| Poly::constant(c.clone()))
+            .collect();
+        crate::resultant::from_coefficients(&cs, var)
+    };
+    let q = resultant(&to_poly(&h, x), &(Poly::var(y) - &to_poly(&phi, x)), x);
+    let q = UPoly::from_poly(&q, y).ok_or("the resultant is not in y alone")?;
+    let mut root = Algebraic::new(&h, lo, hi);
+    for _ in 0..200 {
+        let (a, b) = enclose(&phi, &root.lo, &root.hi);
+        if q.sign_at(&a) != 0 && q.sign_at(&b) != 0 && q.count_roots(&a, &b) == 1 {
+            let mut y0 = Algebraic::new(&q, a, b);
+            if y0.rational.is_some() || !within(&mut y0, ry) {
+                return Ok(None);
+            }
+            return Ok(Some(PlanePoint { x: root, y: y0 }));
+        }
+        let half = Rational::from(&root.hi - &root.lo) / 2u32;
+        root.refine(&half);
+    }
+    Err(format!("the value of {y} there was not isolated"))
 }
 
 /// Rational values of `r` to try: its closed ends, the middle and the
@@ -296,7 +472,20 @@ mod tests {
         assert_eq!(z.points.len(), 1);
         assert!(z.points[0].y.rational.is_none());
         assert!(z.points[0].describe("x", "y", 6).contains("y^2 - 2"));
-        // both irrational: a bracket, not a set
+        // both irrational: x² − 2 and y − x − 1 meet at (√2, 1 + √2)
+        let ps = [&(&x * &x) - &k(2), &(&y - &x) - &k(1)];
+        let z = common_zeros(&ps, "x", "y", &range("[0, 3]"), &range("[0, 3]")).expect("zeros");
+        assert!(z.undecided.is_none(), "{z:?}");
+        assert_eq!(z.points.len(), 1, "{z:?}");
+        let text = z.points[0].describe("x", "y", 6);
+        assert!(
+            text.contains("x^2 - 2") && text.contains("y^2 - 2*y - 1"),
+            "{text}"
+        );
+        // out of the range of y: none
+        let z = common_zeros(&ps, "x", "y", &range("[0, 3]"), &range("[0, 2]")).expect("zeros");
+        assert!(z.points.is_empty() && z.undecided.is_none(), "{z:?}");
+        // x² − 2 and y² − 3: the fibre over √2 is quadratic, a bracket
         let ps = [&(&x * &x) - &k(2), &(&y * &y) - &k(3)];
         let z = common_zeros(&ps, "x", "y", &range("[0, 3]"), &range("[0, 3]")).expect("zeros");
         assert!(z.undecided.is_some());
