@@ -370,3 +370,20 @@ fn the_maximal_set_of_independence_with_two_parameters() {
         "{x:?}"
     );
 }
+
+/// examples/gb2-independence.toml against issue38.md, section 2: dependent
+/// only at the corner (−2, −2) (b1 ≡ 0 there).
+#[test]
+fn gb2_example_is_dependent_only_at_its_corner() {
+    let spec = example("gb2-independence.toml");
+    let status = |id: &str| {
+        let claim = spec.claims.iter().find(|c| c.id == id).expect(id);
+        spec_audit::decide(&spec, claim)
+    };
+    let v = status("GB2-independent");
+    assert_eq!(v.status, Status::Fails, "{v:?}");
+    assert!(format!("{v:?}").contains("λ1 = -2, λ2 = -2"), "{v:?}");
+    assert!(format!("{v:?}").contains("b1 ≡ 0"), "{v:?}");
+    assert_eq!(status("GB2-independent-off-corner").status, Status::Holds);
+    assert_eq!(status("GB2-maximal-open-edges").status, Status::Fails);
+}

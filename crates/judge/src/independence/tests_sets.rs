@@ -229,3 +229,20 @@ fn two_parameter_maximal_against_the_lines_of_dependence() {
         text(&w)
     );
 }
+
+#[test]
+fn an_isolated_point_with_both_coordinates_irrational_is_exact() {
+    // the minors p² − 2 and q − p − 1: dependent at (√2, 1 + √2) only
+    let fs = fns(&["1", "t", "(p^2 - 2)*t^2 + (q - p - 1)*t^3"]);
+    let basis = spec("t on [0, 1]", &[("p", "[0, 2]"), ("q", "[0, 3]")], &fs);
+    let v = independent(&basis, None);
+    assert_eq!(v.status, Status::Fails, "{}", text(&v));
+    let t = text(&v);
+    assert!(t.contains("p = the root of p^2 - 2 = 0"), "{t}");
+    assert!(t.contains("q = the root of q^2 - 2*q - 1 = 0"), "{t}");
+    // with q ≤ 2 the point is outside: independent, exactly
+    let below = spec("t on [0, 1]", &[("p", "[0, 2]"), ("q", "[0, 2]")], &fs);
+    let w = independent(&below, None);
+    assert_eq!(w.status, Status::Holds, "{}", text(&w));
+    assert!(text(&w).contains("exact): none"), "{}", text(&w));
+}
