@@ -49,7 +49,7 @@ struct Set {
 
 /// The maximal minors (nonzero) when the matrix is polynomial in the
 /// parameters alone and they are few enough.
-pub(super) fn maximal_minors(ctx: &Context<'_>) -> Option<Vec<Poly>> {
+fn maximal_minors(ctx: &Context<'_>) -> Option<Vec<Poly>> {
     let names: Vec<&str> = ctx.params.iter().map(|p| p.name.as_str()).collect();
     let alone = |q: &Poly| q.variables().iter().all(|v| names.contains(&v.as_str()));
     let in_basis = |f: &Sym| {
@@ -99,7 +99,7 @@ fn gcd_line(minors: &[Poly], g: &Poly) -> String {
 }
 
 impl Context<'_> {
-    fn names2(&self) -> (&str, &str) {
+    fn plane_names(&self) -> (&str, &str) {
         (&self.params[0].name, &self.params[1].name)
     }
 
@@ -111,14 +111,16 @@ impl Context<'_> {
 /// The exceptional set of two parameters in the box of `ctx`.
 fn two_set(ctx: &Context<'_>, minors: &[Poly]) -> Option<Set> {
     let g = gcd_all(minors)?;
-    let (x, y) = ctx.names2();
+    let (x, y) = ctx.plane_names();
     let (rx, ry) = (&ctx.ranges[0], &ctx.ranges[1]);
     let mut lines = vec![format!(
         "exceptional set (where every maximal minor vanishes, so the functions are dependent), exact: {}",
         gcd_line(minors, &g)
     )];
     let mut witness: Option<PlanePoint> = None;
-    let mut complete = ctx.notes.is_empty();
+    // real roots are isolated exactly on unbounded ranges too (root
+    // bounds); only a curve's strict sign needs a bounded box
+    let mut complete = true;
     let keep = |p: PlanePoint, w: &mut Option<PlanePoint>| {
         if w.as_ref()
             .is_none_or(|q| q.rational().is_none() && p.rational().is_some())

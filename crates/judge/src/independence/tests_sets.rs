@@ -96,6 +96,14 @@ fn gb2_is_dependent_only_at_the_corner() {
     let w = independent(&open, None);
     assert_eq!(w.status, Status::Holds, "{}", text(&w));
     assert!(text(&w).contains("exact): none"), "{}", text(&w));
+    // a half-line: the roots of the resultants are bounded, still exact
+    let half = spec(
+        "t on [0, 1]",
+        &[("lambda1", "[-2, 1]"), ("lambda2", "(-2, inf)")],
+        &fns(&GB2),
+    );
+    let x = independent(&half, None);
+    assert_eq!(x.status, Status::Holds, "{}", text(&x));
 }
 
 #[test]
