@@ -44,16 +44,6 @@ impl PlanePoint {
     pub fn rational(&self) -> Option<[Rational; 2]> {
         Some([self.x.rational.clone()?, self.y.rational.clone()?])
     }
-
-    /// `x = …, y = …` with the given names (`digits` after the point for an
-    /// irrational coordinate's interval).
-    pub fn describe(&self, x: &str, y: &str, digits: usize) -> String {
-        format!(
-            "{x} = {}, {y} = {}",
-            self.x.describe(x, digits),
-            self.y.describe(y, digits)
-        )
-    }
 }
 
 /// The common zeros in the box.
@@ -471,13 +461,17 @@ mod tests {
         let z = common_zeros(&ps, "x", "y", &range("[0, 3]"), &range("[0, 3]")).expect("zeros");
         assert_eq!(z.points.len(), 1);
         assert!(z.points[0].y.rational.is_none());
-        assert!(z.points[0].describe("x", "y", 6).contains("y^2 - 2"));
+        assert!(z.points[0].y.describe("y", 6).contains("y^2 - 2"));
         // both irrational: x² − 2 and y − x − 1 meet at (√2, 1 + √2)
         let ps = [&(&x * &x) - &k(2), &(&y - &x) - &k(1)];
         let z = common_zeros(&ps, "x", "y", &range("[0, 3]"), &range("[0, 3]")).expect("zeros");
         assert!(z.undecided.is_none(), "{z:?}");
         assert_eq!(z.points.len(), 1, "{z:?}");
-        let text = z.points[0].describe("x", "y", 6);
+        let text = [
+            z.points[0].x.describe("x", 6),
+            z.points[0].y.describe("y", 6),
+        ]
+        .join(", ");
         assert!(
             text.contains("x^2 - 2") && text.contains("y^2 - 2*y - 1"),
             "{text}"

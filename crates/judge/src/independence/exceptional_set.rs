@@ -13,8 +13,11 @@
 //!   factor, so finitely many; `trig_certify::plane_zeros`), each exact,
 //!   with the dependence relation at a rational one;
 //! - three parameters: the factors of `G` are **surfaces**, shown with a
-//!   point in the box or certified not to meet it; the common zeros of the
-//!   `E_k` (curves and points) are not computed, a bracket.
+//!   point in the box or certified not to meet it; on each closed face
+//!   `pₖ = a` of the box the set is that of two parameters (the minors of
+//!   the matrix with `pₖ = a`: curves and points of the face, exact);
+//!   inside the box the common zeros of the `E_k` (curves and points) are
+//!   not computed, a bracket.
 //!
 //! Computed when every entry of the coefficient matrix is a polynomial in
 //! the parameters alone (no parameter in a denominator, no atom of a
@@ -25,6 +28,7 @@ use rug::Rational;
 use trig_certify::minors::{binomial, index_sets};
 use trig_certify::plane_zeros::{PlanePoint, common_zeros, point_on, roots_in};
 use trig_certify::sturm::UPoly;
+use trig_core::{End, ParamRange};
 use trig_symbolic::{Poly, Sym};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
@@ -47,9 +51,10 @@ struct Set {
     complete: bool,
 }
 
-/// The maximal minors (nonzero) when the matrix is polynomial in the
-/// parameters alone and they are few enough.
-fn maximal_minors(ctx: &Context<'_>) -> Option<Vec<Poly>> {
+/// True when every entry of the coefficient matrix is a polynomial in the
+/// parameters alone (no parameter in a denominator, no atom of one, no
+/// range in multiples of π).
+fn polynomial(ctx: &Context<'_>) -> bool {
     let names: Vec<&str> = ctx.params.iter().map(|p| p.name.as_str()).collect();
     let alone = |q: &Poly| q.variables().iter().all(|v| names.contains(&v.as_str()));
     let in_basis = |f: &Sym| {
@@ -60,21 +65,32 @@ fn maximal_minors(ctx: &Context<'_>) -> Option<Vec<Poly>> {
                 .keys()
                 .all(|d| !d.variables().iter().any(|v| names.contains(&v.as_str())))
     };
-    let (n, m) = (ctx.names.len(), ctx.matrix.columns.len());
-    if ctx.ranges.iter().any(|r| r.pi)
-        || !ctx.matrix.rows.iter().flatten().all(alone)
-        || !ctx.matrix.scales.iter().all(|s| s.as_constant().is_some())
-        || !ctx.fs.iter().all(in_basis)
-        || m > 31
-        || binomial(m, n).is_none_or(|c| c > MAX_MINORS as u64)
-    {
+    !ctx.ranges.iter().any(|r| r.pi)
+        && ctx.matrix.rows.iter().flatten().all(alone)
+        && ctx.matrix.scales.iter().all(|s| s.as_constant().is_some())
+        && ctx.fs.iter().all(in_basis)
+}
+
+/// The nonzero maximal minors of `rows` (`n` rows), when they are few
+/// enough.
+fn minors_of(rows: &[Vec<Poly>]) -> Option<Vec<Poly>> {
+    let (n, m) = (rows.len(), rows.first().map_or(0, Vec::len));
+    if m > 31 || n > m || binomial(m, n).is_none_or(|c| c > MAX_MINORS as u64) {
         return None;
     }
     let minors: Vec<Poly> = index_sets(m, n)
         .iter()
-        .map(|cols| minor_on(&ctx.matrix.rows, cols).ok())
+        .map(|cols| minor_on(rows, cols).ok())
         .collect::<Option<_>>()?;
     Some(minors.into_iter().filter(|d| !d.is_zero()).collect())
+}
+
+/// The maximal minors of a matrix polynomial in the parameters.
+fn maximal_minors(ctx: &Context<'_>) -> Option<Vec<Poly>> {
+    if !polynomial(ctx) {
+        return None;
+    }
+    minors_of(&ctx.matrix.rows)
 }
 
 /// `gcd` of polynomials free of the variable's atoms.
@@ -94,29 +110,86 @@ fn gcd_line(minors: &[Poly], g: &Poly) -> String {
         "the gcd of the {} nonzero maximal minor{} is {}",
         minors.len(),
         if minors.len() == 1 { "" } else { "s" },
-        shown(&g.canonical().1)
+        if g.factor().is_trivial() {
+            factor_text(&g.canonical().1)
+        } else {
+            shown(&g.canonical().1)
+        }
     )
 }
 
-impl Context<'_> {
-    fn plane_names(&self) -> (&str, &str) {
-        (&self.params[0].name, &self.params[1].name)
+/// Two of the parameters, `axes`, the others fixed: the box of two
+/// parameters, or a face of a box of three.
+struct Plane {
+    axes: [usize; 2],
+    fixed: Option<(usize, Rational)>,
+}
+
+impl Plane {
+    fn names<'a>(&self, ctx: &'a Context<'_>) -> (&'a str, &'a str) {
+        (
+            &ctx.params[self.axes[0]].name,
+            &ctx.params[self.axes[1]].name,
+        )
     }
 
-    fn plane_text(&self, p: &PlanePoint) -> String {
-        p.describe(&self.params[0].symbol, &self.params[1].symbol, DIGITS)
+    /// The point of every parameter.
+    fn full(&self, q: &[Rational; 2]) -> Vec<Rational> {
+        let mut out = q.to_vec();
+        if let Some((k, a)) = &self.fixed {
+            out.insert(*k, a.clone());
+        }
+        out
+    }
+
+    /// The point, every parameter in order.
+    fn text(&self, ctx: &Context<'_>, p: &PlanePoint) -> String {
+        let [i, j] = self.axes;
+        let mut parts = vec![
+            (
+                i,
+                format!(
+                    "{} = {}",
+                    ctx.params[i].symbol,
+                    p.x.describe(&ctx.params[i].symbol, DIGITS)
+                ),
+            ),
+            (
+                j,
+                format!(
+                    "{} = {}",
+                    ctx.params[j].symbol,
+                    p.y.describe(&ctx.params[j].symbol, DIGITS)
+                ),
+            ),
+        ];
+        if let Some((k, a)) = &self.fixed {
+            parts.push((*k, format!("{} = {a}", ctx.params[*k].symbol)));
+        }
+        parts.sort_by_key(|(k, _)| *k);
+        parts
+            .into_iter()
+            .map(|(_, t)| t)
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+
+    fn box_text(&self, ctx: &Context<'_>) -> String {
+        let [i, j] = self.axes;
+        format!(
+            "{} ∈ {}, {} ∈ {}",
+            ctx.params[i].symbol, ctx.ranges[i], ctx.params[j].symbol, ctx.ranges[j]
+        )
     }
 }
 
-/// The exceptional set of two parameters in the box of `ctx`.
-fn two_set(ctx: &Context<'_>, minors: &[Poly]) -> Option<Set> {
+/// The exceptional set in the box of a plane of `ctx`, from the maximal
+/// minors there.
+fn plane_set(ctx: &Context<'_>, plane: &Plane, minors: &[Poly]) -> Option<Set> {
     let g = gcd_all(minors)?;
-    let (x, y) = ctx.plane_names();
-    let (rx, ry) = (&ctx.ranges[0], &ctx.ranges[1]);
-    let mut lines = vec![format!(
-        "exceptional set (where every maximal minor vanishes, so the functions are dependent), exact: {}",
-        gcd_line(minors, &g)
-    )];
+    let (x, y) = plane.names(ctx);
+    let (rx, ry) = (&ctx.ranges[plane.axes[0]], &ctx.ranges[plane.axes[1]]);
+    let mut lines = vec![gcd_line(minors, &g)];
     let mut witness: Option<PlanePoint> = None;
     // real roots are isolated exactly on unbounded ranges too (root
     // bounds); only a curve's strict sign needs a bounded box
@@ -140,20 +213,20 @@ fn two_set(ctx: &Context<'_>, minors: &[Poly]) -> Option<Set> {
         if let Some(p) = point_on(f, x, y, rx, ry) {
             lines.push(format!(
                 "curve {text} = 0: meets the box {} at {} (a point on it, exact)",
-                ctx.point_ranges(),
-                ctx.plane_text(&p)
+                plane.box_text(ctx),
+                plane.text(ctx, &p)
             ));
             keep(p, &mut witness);
         } else if strict_sign(ctx, &Sym::from_poly(f.clone())).is_ok() && ctx.notes.is_empty() {
             lines.push(format!(
                 "curve {text} = 0: does not meet the box {} ({text} certified of one strict sign on the box, interval branch and bound, open ends excluded)",
-                ctx.point_ranges()
+                plane.box_text(ctx)
             ));
         } else {
             complete = false;
             lines.push(format!(
                 "curve {text} = 0: not decided whether it meets the box {} (no point of it found over rational values, no strict sign certified)",
-                ctx.point_ranges()
+                plane.box_text(ctx)
             ));
         }
     }
@@ -172,11 +245,11 @@ fn two_set(ctx: &Context<'_>, minors: &[Poly]) -> Option<Set> {
                 .map(|p| {
                     let relation = p
                         .rational()
-                        .and_then(|q| ctx.rank_at(&q).ok())
+                        .and_then(|q| ctx.rank_at(&plane.full(&q)).ok())
                         .and_then(|at| at.relation);
                     match relation {
-                        Some(r) => format!("{} ({r}, exact)", ctx.plane_text(p)),
-                        None => ctx.plane_text(p),
+                        Some(r) => format!("{} ({r}, exact)", plane.text(ctx, p)),
+                        None => plane.text(ctx, p),
                     }
                 })
                 .collect();
@@ -214,7 +287,15 @@ fn two_set(ctx: &Context<'_>, minors: &[Poly]) -> Option<Set> {
 /// verdict of [`general`]. `None` when the set is not computed.
 pub(super) fn two_parameters(ctx: &Context<'_>, e: &Echelon<Poly>) -> Option<Verdict> {
     let minors = maximal_minors(ctx)?;
-    let set = two_set(ctx, &minors)?;
+    let plane = Plane {
+        axes: [0, 1],
+        fixed: None,
+    };
+    let mut set = plane_set(ctx, &plane, &minors)?;
+    set.lines[0] = format!(
+        "exceptional set (where every maximal minor vanishes, so the functions are dependent), exact: {}",
+        set.lines[0]
+    );
     let n = ctx.names.len();
     let mut v = match (&set.witness, set.complete) {
         (Some(p), _) => match p.rational() {
@@ -228,7 +309,7 @@ pub(super) fn two_parameters(ctx: &Context<'_>, e: &Echelon<Poly>) -> Option<Ver
                 vec![format!(
                     "{}: rank {n} over Q(parameters), but at {}, in the range, every maximal minor vanishes (exact): the functions are linearly dependent there",
                     ctx.header(),
-                    ctx.plane_text(p)
+                    plane.text(ctx, p)
                 )],
             ),
         },
@@ -280,13 +361,95 @@ pub(super) fn three_parameters(ctx: &Context<'_>, e: &Echelon<Poly>) -> Verdict 
             None => format!("surface {text} = 0: not decided whether it meets the box"),
         });
     }
+    let mut witness = None;
+    for k in 0..3 {
+        for a in closed_ends(&ctx.ranges[k]) {
+            let (face, found) = face_set(ctx, k, &a);
+            lines.extend(face);
+            witness = witness.or(found);
+        }
+    }
     lines.push(
-        "not computed (a bracket): the common zeros of the minors divided by the gcd (curves and points in three parameters); dependence there is decided only at the exact points tried".into(),
+        "not computed (a bracket): inside the box, the common zeros of the minors divided by the gcd (curves and points in three parameters); exact on the closed faces above, decided elsewhere only at the exact points tried".into(),
     );
+    if v.status != Status::Fails
+        && let Some(q) = witness
+        && let Ok(at) = ctx.rank_at(&q)
+        && at.rank < ctx.names.len()
+    {
+        v = dropped(ctx, &q, &at, how_in(ctx, &q));
+    }
     v.evidence.extend(lines);
     v
 }
 
+fn closed_ends(r: &ParamRange) -> Vec<Rational> {
+    [&r.lo, &r.hi]
+        .into_iter()
+        .filter_map(|e| match e {
+            End::Closed(q) => Some(q.clone()),
+            _ => None,
+        })
+        .collect()
+}
+
+/// The exceptional set on the face `p_k = a` of a box of three
+/// parameters: its lines, and a rational point of it (all parameters).
+fn face_set(ctx: &Context<'_>, k: usize, a: &Rational) -> (Vec<String>, Option<Vec<Rational>>) {
+    let name = &ctx.params[k].name;
+    let head = format!("face {} = {a}", ctx.params[k].symbol);
+    let rows: Vec<Vec<Poly>> = ctx
+        .matrix
+        .rows
+        .iter()
+        .map(|row| {
+            row.iter()
+                .map(|e| e.subs(name, &Poly::constant(a.clone())))
+                .collect()
+        })
+        .collect();
+    let Some(minors) = minors_of(&rows) else {
+        return (
+            vec![format!("{head}: too many maximal minors, not computed")],
+            None,
+        );
+    };
+    let plane = Plane {
+        axes: match k {
+            0 => [1, 2],
+            1 => [0, 2],
+            _ => [0, 1],
+        },
+        fixed: Some((k, a.clone())),
+    };
+    if minors.is_empty() {
+        let corner = plane.full(&[0, 1].map(|i| ctx.ranges[plane.axes[i]].interior_point()));
+        return (
+            vec![format!(
+                "{head}: every maximal minor vanishes on the whole face (exact): dependent on all of it"
+            )],
+            Some(corner),
+        );
+    }
+    match plane_set(ctx, &plane, &minors) {
+        Some(set) => {
+            let found = set
+                .witness
+                .and_then(|p| p.rational())
+                .map(|q| plane.full(&q));
+            let lines = set
+                .lines
+                .into_iter()
+                .map(|l| format!("{head}: {l}"))
+                .collect();
+            (lines, found)
+        }
+        None => (
+            vec![format!("{head}: the gcd of its minors was not computed")],
+            None,
+        ),
+    }
+}
 /// A rational point of `f = 0` in the box of three parameters: the first
 /// two at the closed ends or middles of their ranges, the third a rational
 /// root in its range.

@@ -127,10 +127,27 @@ fn gb3_reports_what_is_exact_and_brackets_the_rest() {
     let t = text(&v);
     // the edges are of codimension 2: no surface, the gcd is 1
     assert!(
-        t.contains("the gcd of the 4 nonzero maximal minors is 1"),
+        t.contains("exact part: the gcd of the 4 nonzero maximal minors is 1"),
         "{t}"
     );
-    assert!(t.contains("not computed (a bracket)"), "{t}");
+    // on the faces, exact: E1 {λ1 = −3, λ2 = 3}, E2 {λ1 = −3, λ3 = −3},
+    // E3 {λ2 = −3, λ3 = −3}, each seen from both of its faces
+    for line in [
+        "face lambda1 = -3: the gcd of the 1 nonzero maximal minor is (λ₂ − 3)·(λ₃ + 3)",
+        "face lambda2 = 3: the gcd of the 4 nonzero maximal minors is λ₁ + 3",
+        "face lambda3 = -3: the gcd of the 4 nonzero maximal minors is (λ₁ + 3)·(λ₂ + 3)",
+        "face lambda2 = -3: the gcd of the 2 nonzero maximal minors is λ₃ + 3",
+        // the faces the edges only end on: one point each, with the
+        // relations of issue38.md ((1, −3, −3): b2 ≡ 0; on E1: b1 ≡ 0)
+        "lambda1 = 1, lambda2 = -3, lambda3 = -3 (b2 ≡ 0, exact)",
+        "lambda1 = -3, lambda2 = 3, lambda3 = 1 (b1 ≡ 0, exact)",
+    ] {
+        assert!(t.contains(line), "{line}\n{t}");
+    }
+    assert!(
+        t.contains("not computed (a bracket): inside the box"),
+        "{t}"
+    );
     // a corner on E2 ∩ E3 (λ2 = λ3 = −3): b2 ≡ 0 there (issue38.md)
     assert!(
         t.contains("lambda1 = -3, lambda2 = -3, lambda3 = -3"),
