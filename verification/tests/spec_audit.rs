@@ -387,3 +387,23 @@ fn gb2_example_is_dependent_only_at_its_corner() {
     assert_eq!(status("GB2-independent-off-corner").status, Status::Holds);
     assert_eq!(status("GB2-maximal-open-edges").status, Status::Fails);
 }
+
+/// `maximal = true` with one parameter's `range` (issue38.md, section 2):
+/// sin²(α − t), sin(α − t)·sin t, sin²t on [0, α] are dependent exactly at
+/// α = π, so (0, π) is the maximal set within (0, π] and (0, π] is not.
+#[test]
+fn the_maximal_set_of_independence_with_one_parameter() {
+    let spec = |range: &str| {
+        let text = format!(
+            "id = \"t\"\ncitation = \"t\"\nvariable = \"t\"\ndomain = \"[0, alpha]\"\n[[parameters]]\nname = \"alpha\"\nrange = \"(0, pi]\"\nsource = \"t\"\n[[functions]]\nname = \"b0\"\nformula = \"sin(alpha - t)^2\"\n[[functions]]\nname = \"b1\"\nformula = \"sin(alpha - t)*sin(t)\"\n[[functions]]\nname = \"b2\"\nformula = \"sin(t)^2\"\n[[claims]]\nid = \"M\"\nsource = \"t\"\nstatement = \"t\"\ncheck = \"independent\"\nmaximal = true\n{range}\n"
+        );
+        let spec = Spec::from_str_named(&text, "t").expect("a spec");
+        spec_audit::decide(&spec, &spec.claims[0])
+    };
+    let v = spec("range = \"(0, pi)\"");
+    assert_eq!(v.status, Status::Holds, "{v:?}");
+    assert!(format!("{v:?}").contains("b0 − b2 ≡ 0"), "{v:?}");
+    let w = spec("");
+    assert_eq!(w.status, Status::Fails, "{w:?}");
+    assert!(format!("{w:?}").contains("alpha = π"), "{w:?}");
+}
