@@ -269,12 +269,14 @@ fn fixed_values_that_cannot_be_taken() {
         )
         .contains("also fixes")
     );
-    // `maximal` is decided for nonnegativity, the convex hull and total
-    // positivity: elsewhere it is refused, never silently ignored
+    // `maximal` is decided for nonnegativity, the convex hull,
+    // independence and total positivity: elsewhere it is refused, never
+    // silently ignored
     assert!(
-        err("han-quadratic", "check = \"independent\"\nmaximal = true")
-            .contains("not decided for `independent`")
+        err("han-quadratic", "check = \"unity\"\nmaximal = true")
+            .contains("not decided for `unity`")
     );
+    assert!(read("han-quadratic", "check = \"independent\"\nmaximal = true").is_ok());
     assert!(
         err(
             "han-quadratic",

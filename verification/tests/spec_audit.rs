@@ -307,3 +307,103 @@ fn a_witness_on_a_quarter_turn_names_its_own_angle() {
     assert!(text.contains("name: \"φ\""), "{text}");
     assert!(!text.contains("c = cos θ; θ ≈ 0.000000"), "{text}");
 }
+
+/// `maximal = true` on `independent` with a claim's own ranges, read from a
+/// spec file (examples/independent/issue38.md, section 2): the constructed
+/// basis on α ∈ [−1, 1], β ∈ [0, 1] is dependent exactly on the edges
+/// α = −1 and β = 0, so independent exactly on (−1, 1] × (0, 1]; GB2 is
+/// dependent only at the corner (−2, −2), so not on its open lower edges.
+#[test]
+fn the_maximal_set_of_independence_with_two_parameters() {
+    let basis = |params: [(&str, &str); 2], fs: [&str; 3], claim: &str| {
+        let mut text =
+            "id = \"t\"\ncitation = \"t\"\nvariable = \"t\"\ndomain = \"[0, 1]\"\n".to_string();
+        for (name, range) in params {
+            text.push_str(&format!(
+                "[[parameters]]\nname = \"{name}\"\nrange = \"{range}\"\nsource = \"t\"\n"
+            ));
+        }
+        for (i, f) in fs.iter().enumerate() {
+            text.push_str(&format!(
+                "[[functions]]\nname = \"b{i}\"\nformula = \"{f}\"\n"
+            ));
+        }
+        text.push_str(&format!(
+            "[[claims]]\nid = \"M\"\nsource = \"t\"\nstatement = \"t\"\ncheck = \"independent\"\nmaximal = true\n{claim}\n"
+        ));
+        let spec = Spec::from_str_named(&text, "t").expect("a spec");
+        spec_audit::decide(&spec, &spec.claims[0])
+    };
+    let constructed = [
+        "(1 - t)*(1 + beta*(alpha + 1)*t)",
+        "-2*beta*(alpha + 1)*t*(1 - t)",
+        "t*(1 + beta*(alpha + 1) - beta*(alpha + 1)*t)",
+    ];
+    let params = [("alpha", "[-1, 1]"), ("beta", "[0, 1]")];
+    let v = basis(
+        params,
+        constructed,
+        "ranges = { alpha = \"(-1, 1]\", beta = \"(0, 1]\" }",
+    );
+    assert_eq!(v.status, Status::Holds, "{v:?}");
+    assert!(
+        format!("{v:?}").contains("within the declared ranges"),
+        "{v:?}"
+    );
+    // leaving β = 0 in the claim's range: dependent there (b1 ≡ 0)
+    let w = basis(params, constructed, "ranges = { alpha = \"(-1, 1]\" }");
+    assert_eq!(w.status, Status::Fails, "{w:?}");
+    assert!(format!("{w:?}").contains("b1 ≡ 0"), "{w:?}");
+    let gb2 = [
+        "(1 - t)^2*(1 - lambda1*t)",
+        "t*(1 - t)*(2 + lambda1 - lambda1*t + lambda2*t)",
+        "t^2*(1 - lambda2 + lambda2*t)",
+    ];
+    let x = basis(
+        [("lambda1", "[-2, 1]"), ("lambda2", "[-2, 1]")],
+        gb2,
+        "ranges = { lambda1 = \"(-2, 1]\", lambda2 = \"(-2, 1]\" }",
+    );
+    assert_eq!(x.status, Status::Fails, "{x:?}");
+    assert!(
+        format!("{x:?}").contains("outside the claim's range"),
+        "{x:?}"
+    );
+}
+
+/// examples/gb2-independence.toml against issue38.md, section 2: dependent
+/// only at the corner (−2, −2) (b1 ≡ 0 there).
+#[test]
+fn gb2_example_is_dependent_only_at_its_corner() {
+    let spec = example("gb2-independence.toml");
+    let status = |id: &str| {
+        let claim = spec.claims.iter().find(|c| c.id == id).expect(id);
+        spec_audit::decide(&spec, claim)
+    };
+    let v = status("GB2-independent");
+    assert_eq!(v.status, Status::Fails, "{v:?}");
+    assert!(format!("{v:?}").contains("λ1 = -2, λ2 = -2"), "{v:?}");
+    assert!(format!("{v:?}").contains("b1 ≡ 0"), "{v:?}");
+    assert_eq!(status("GB2-independent-off-corner").status, Status::Holds);
+    assert_eq!(status("GB2-maximal-open-edges").status, Status::Fails);
+}
+
+/// `maximal = true` with one parameter's `range` (issue38.md, section 2):
+/// sin²(α − t), sin(α − t)·sin t, sin²t on [0, α] are dependent exactly at
+/// α = π, so (0, π) is the maximal set within (0, π] and (0, π] is not.
+#[test]
+fn the_maximal_set_of_independence_with_one_parameter() {
+    let spec = |range: &str| {
+        let text = format!(
+            "id = \"t\"\ncitation = \"t\"\nvariable = \"t\"\ndomain = \"[0, alpha]\"\n[[parameters]]\nname = \"alpha\"\nrange = \"(0, pi]\"\nsource = \"t\"\n[[functions]]\nname = \"b0\"\nformula = \"sin(alpha - t)^2\"\n[[functions]]\nname = \"b1\"\nformula = \"sin(alpha - t)*sin(t)\"\n[[functions]]\nname = \"b2\"\nformula = \"sin(t)^2\"\n[[claims]]\nid = \"M\"\nsource = \"t\"\nstatement = \"t\"\ncheck = \"independent\"\nmaximal = true\n{range}\n"
+        );
+        let spec = Spec::from_str_named(&text, "t").expect("a spec");
+        spec_audit::decide(&spec, &spec.claims[0])
+    };
+    let v = spec("range = \"(0, pi)\"");
+    assert_eq!(v.status, Status::Holds, "{v:?}");
+    assert!(format!("{v:?}").contains("b0 − b2 ≡ 0"), "{v:?}");
+    let w = spec("");
+    assert_eq!(w.status, Status::Fails, "{w:?}");
+    assert!(format!("{w:?}").contains("alpha = π"), "{w:?}");
+}

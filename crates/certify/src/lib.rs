@@ -37,6 +37,7 @@ pub mod maxima;
 pub mod minors;
 pub mod neville;
 pub mod nonneg;
+pub mod plane_zeros;
 pub mod range;
 pub mod real_point;
 pub mod region;

@@ -154,6 +154,12 @@ fn indices(mask: u32) -> Vec<usize> {
     (0..32).filter(|i| mask & (1 << i) != 0).collect()
 }
 
+/// The sets of `k ≥ 1` indices out of `n ≤ 31`, each increasing, in the
+/// order of [`subsets`] (the columns of the maximal minors, say).
+pub fn index_sets(n: usize, k: usize) -> Vec<Vec<usize>> {
+    subsets(n, k).into_iter().map(indices).collect()
+}
+
 /// Every nonzero minor of `m` (any order), by Laplace expansion along the
 /// last row of each minor from the minors one order lower; an error beyond
 /// the limits of the enumeration ([`MAX_SIDE`], [`MAX_MINORS`]).

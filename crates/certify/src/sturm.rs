@@ -188,6 +188,21 @@ impl UPoly {
         a.monic()
     }
 
+    /// `(g, s)` with `g = gcd(self, h)` (not made monic) and
+    /// `s·self ≡ g (mod h)`, for `self ≢ 0 (mod h)`: the inverse of `self`
+    /// modulo `h` is `s/g` when `g` is a constant.
+    pub fn ext_gcd(&self, h: &UPoly) -> (UPoly, UPoly) {
+        let (mut r0, mut r1) = (h.clone(), self.div_rem(h).1);
+        let (mut s0, mut s1) = (UPoly::new(vec![]), UPoly::new(vec![Rational::from(1)]));
+        while !r1.is_zero() {
+            let (q, r) = r0.div_rem(&r1);
+            let s = s0.sub(&q.mul(&s1));
+            (r0, r1) = (r1, r);
+            (s0, s1) = (s1, s);
+        }
+        (r0, s0)
+    }
+
     fn monic(&self) -> UPoly {
         match self.0.last() {
             Some(l) => UPoly::new(self.0.iter().map(|a| a.clone() / l).collect()),

@@ -18,10 +18,13 @@
 //!   among the rational roots, checked exactly) refutes it.
 
 mod at_root;
+mod exceptional_set;
 pub mod matrix;
+mod maximal;
 mod one_parameter;
 mod rank;
 
+pub use maximal::maximal;
 pub use rank::RANK;
 
 use trig_certify::branch::{self, Outcome};
@@ -117,6 +120,36 @@ pub fn by_rank<B: ExactBasis>(
     basis: &B,
     range: Option<&ParamRange>,
 ) -> Result<Verdict, NotMonomial> {
+    let params = basis.parameters();
+    let atoms: Vec<String> = trig_certify::atoms::param_atoms(&basis.domain())
+        .into_iter()
+        .map(|a| a.name)
+        .collect();
+    let symbols: Vec<&String> = params.iter().map(|p| &p.name).chain(&atoms).collect();
+    with_context(basis, range, |ctx, e| {
+        if e.rank < ctx.names.len() {
+            return rank::short_rank(ctx, e);
+        }
+        if !e.minor.variables().iter().any(|v| symbols.contains(&v)) {
+            return rank::constant_minor(ctx, e);
+        }
+        let decided = match params.len() {
+            1 => one_parameter::one_parameter(ctx, e),
+            2 => exceptional_set::two_parameters(ctx, e),
+            3 => Some(exceptional_set::three_parameters(ctx, e)),
+            _ => None,
+        };
+        decided.unwrap_or_else(|| rank::general(ctx, e))
+    })
+}
+
+/// `decide` on the rank judge's reading of `basis` (its coefficient matrix
+/// and its elimination); an error when the rank method does not apply.
+fn with_context<B: ExactBasis>(
+    basis: &B,
+    range: Option<&ParamRange>,
+    decide: impl FnOnce(&rank::Context<'_>, &matrix::Echelon<Poly>) -> Verdict,
+) -> Result<Verdict, NotMonomial> {
     let names = basis.function_names();
     let fs = basis_of(basis);
     let params = basis.parameters();
@@ -176,19 +209,7 @@ pub fn by_rank<B: ExactBasis>(
             "the fraction-free elimination met a division that was not exact (the entries' ring is not an integral domain as written)",
         ));
     };
-    if e.rank < names.len() {
-        return Ok(rank::short_rank(&ctx, &e));
-    }
-    let symbols: Vec<&String> = params.iter().map(|p| &p.name).chain(&atoms).collect();
-    if !e.minor.variables().iter().any(|v| symbols.contains(&v)) {
-        return Ok(rank::constant_minor(&ctx, &e));
-    }
-    if params.len() == 1
-        && let Some(v) = one_parameter::one_parameter(&ctx, &e)
-    {
-        return Ok(v);
-    }
-    Ok(rank::general(&ctx, &e))
+    Ok(decide(&ctx, &e))
 }
 
 /// The Wronskian judge (see the module documentation): the method of the
@@ -328,3 +349,5 @@ pub fn by_wronskian<B: ExactBasis>(basis: &B, range: Option<&ParamRange>) -> Ver
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_sets;

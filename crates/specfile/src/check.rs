@@ -137,7 +137,12 @@ pub enum Check {
     },
     /// The functions are linearly independent for every parameter value of
     /// the range (the declared ranges without one).
-    Independent { range: Option<ParamRange> },
+    Independent {
+        range: Option<ParamRange>,
+        /// Independent exactly there within the declared ranges (dependent
+        /// at every declared value outside the range).
+        maximal: bool,
+    },
     /// As `parameter` increases (over `range`, the declared one unless
     /// given; the other parameters over their declared ranges) the curve
     /// moves in `direction`.

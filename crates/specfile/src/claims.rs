@@ -243,6 +243,7 @@ fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
         "conic" => conic(src, spec, c)?,
         "independent" => Check::Independent {
             range: one_param_range(src, spec, &c.range)?,
+            maximal: c.maximal.unwrap_or(false),
         },
         "total-positivity" => Check::TotalPositivity {
             range: one_param_range(src, spec, &c.range)?,
@@ -352,14 +353,17 @@ fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
     }
     let with_maximal = matches!(
         check,
-        Check::Nonnegative { .. } | Check::ConvexHull { .. } | Check::TotalPositivity { .. }
+        Check::Nonnegative { .. }
+            | Check::ConvexHull { .. }
+            | Check::TotalPositivity { .. }
+            | Check::Independent { .. }
     );
     if let (Some(true), false) = (c.maximal, with_maximal) {
         return src.invalid(
             c.check.span(),
             "claims.maximal",
             format!(
-                "`maximal = true` asks for the maximal set of nonnegativity, of the convex-hull property or of total positivity; it is not decided for `{}` (the claim would be decided without it)",
+                "`maximal = true` asks for the maximal set of nonnegativity, of the convex-hull property, of independence or of total positivity; it is not decided for `{}` (the claim would be decided without it)",
                 c.check.get_ref().trim()
             ),
         );

@@ -493,7 +493,7 @@ impl<'a> Substitution<'a> {
         match &mut c {
             Check::Nonnegative { range, .. }
             | Check::ConvexHull { range, .. }
-            | Check::Independent { range }
+            | Check::Independent { range, .. }
             | Check::TotalPositivity { range, .. }
             | Check::Monotone { range, .. } => *range = None,
             Check::EndpointValues { values, .. } | Check::EndpointDerivatives { values, .. } => {

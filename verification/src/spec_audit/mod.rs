@@ -307,6 +307,11 @@ fn decide_stated(spec: &Spec, claim: &SpecClaim) -> Verdict {
         return exact_ends(spec, claim);
     }
     let given = claim.given.describe(spec);
+    if let Check::Independent { maximal: true, .. } = claim.check
+        && !claim.given.ranges.is_empty()
+    {
+        return maximal_independent(spec, claim, &given);
+    }
     match claim.given.apply(spec, &claim.check) {
         Ok((fixed, check)) => {
             let mut v = with_real_points(real_points(&fixed), || decide_check(&fixed, &check));
@@ -320,6 +325,34 @@ fn decide_stated(spec: &Spec, claim: &SpecClaim) -> Verdict {
                         "the values substituted into the formulas of the basis and of the claim before deciding"
                     }
                 ),
+            );
+            v
+        }
+        Err(e) => Verdict::not_checkable(format!("the claim fixes {given}, where {e}")),
+    }
+}
+
+/// `maximal = true` on `independent` with the claim's own ranges: the
+/// declared ranges (with the claim's fixed values, if any) against the
+/// claim's.
+fn maximal_independent(spec: &Spec, claim: &SpecClaim, given: &str) -> Verdict {
+    if !claim.given.between.is_empty() {
+        return Verdict::not_checkable(
+            "a maximal set of independence against a region bounded by lines is not decided (own ranges of the parameters only)",
+        );
+    }
+    let mut fixed_only = claim.given.clone();
+    fixed_only.ranges.clear();
+    let applied = claim
+        .given
+        .apply(spec, &claim.check)
+        .and_then(|(claimed, _)| Ok((fixed_only.apply(spec, &claim.check)?.0, claimed)));
+    match applied {
+        Ok((declared, claimed)) => {
+            let mut v = trig_judge::independence::maximal(&declared, &claimed, None);
+            v.evidence.insert(
+                0,
+                format!("decided at {given}, as the claim states, within the declared ranges"),
             );
             v
         }
@@ -363,6 +396,9 @@ fn exact_ends(spec: &Spec, claim: &SpecClaim) -> Verdict {
         ),
         Check::TotalPositivity { maximal: true, .. } => Verdict::not_checkable(
             "a maximal set of total positivity against a printed end beyond the rationals is not decided (exact ends are compared for nonnegativity only)",
+        ),
+        Check::Independent { maximal: true, .. } => Verdict::not_checkable(
+            "a maximal set of independence against a printed end beyond the rationals is not decided (exact ends are compared for nonnegativity only)",
         ),
         check => {
             trig_judge::exact_ends::decide(spec, &claim.given.exact, None, &with(check.clone()))
@@ -411,7 +447,14 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
             }
             v
         }
-        Check::Independent { range } => trig_judge::independence::independent(spec, range.as_ref()),
+        Check::Independent {
+            range,
+            maximal: false,
+        } => trig_judge::independence::independent(spec, range.as_ref()),
+        Check::Independent {
+            range,
+            maximal: true,
+        } => trig_judge::independence::maximal(spec, spec, range.as_ref()),
         Check::TotalPositivity {
             range,
             maximal: false,

@@ -19,19 +19,6 @@ fn rem(a: &UPoly, h: &UPoly) -> UPoly {
     a.div_rem(h).1
 }
 
-/// `(g, s)` with `g = gcd(a, h)` and `s·a ≡ g (mod h)`, for `a ≢ 0`.
-fn ext_gcd(a: &UPoly, h: &UPoly) -> (UPoly, UPoly) {
-    let (mut r0, mut r1) = (h.clone(), rem(a, h));
-    let (mut s0, mut s1) = (zero(), UPoly::new(vec![Rational::from(1)]));
-    while !r1.is_zero() {
-        let (q, r) = r0.div_rem(&r1);
-        let s = s0.sub(&q.mul(&s1));
-        (r0, r1) = (r1, r);
-        (s0, s1) = (s1, s);
-    }
-    (r0, s0)
-}
-
 /// The rank at the root.
 #[derive(Debug, Clone)]
 pub struct AtRoot {
@@ -66,7 +53,7 @@ pub fn rank_at_root(rows: &[Vec<UPoly>], h: UPoly, lo: &Rational, hi: &Rational)
             let Some(p) = (r..n).find(|&i| !a[i][col].is_zero()) else {
                 continue;
             };
-            let (g, s) = ext_gcd(&a[p][col], &h);
+            let (g, s) = a[p][col].ext_gcd(&h);
             if g.degree() > 0 {
                 // a zero divisor: keep the factor with the root
                 let other = h.div_rem(&g).0;

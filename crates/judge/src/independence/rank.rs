@@ -61,11 +61,11 @@ pub(super) struct AtPoint {
     pub rank: usize,
     pub pivots: Vec<usize>,
     /// A dependence relation of the functions there, verified exactly.
-    relation: Option<String>,
+    pub relation: Option<String>,
 }
 
 /// An expression printed whole when short.
-fn shown(p: &Poly) -> String {
+pub(super) fn shown(p: &Poly) -> String {
     let text = if p.len() > 1 && p.len() <= 64 {
         Style::Unicode.factored(&Sym::from_poly(p.clone()).factored())
     } else {
@@ -111,7 +111,7 @@ impl Context<'_> {
         )
     }
 
-    fn columns_text(&self, cols: &[usize]) -> String {
+    pub(super) fn columns_text(&self, cols: &[usize]) -> String {
         cols.iter()
             .map(|&j| column_text(self.matrix.columns[j]))
             .collect::<Vec<_>>()
@@ -126,7 +126,7 @@ impl Context<'_> {
         }
     }
 
-    fn point_text(&self, point: &[Rational]) -> String {
+    pub(super) fn point_text(&self, point: &[Rational]) -> String {
         self.params
             .iter()
             .zip(point)
@@ -164,29 +164,43 @@ impl Context<'_> {
         }
     }
 
-    /// The rank at an exact point, with the relation where it drops.
-    pub(super) fn rank_at(&self, point: &[Rational]) -> Result<AtPoint, Skip> {
-        let values: Vec<Sym> = point
+    /// The coefficient matrix at an exact point.
+    fn rows_at(&self, values: &[Sym], atoms: &[ParamAtom]) -> Result<Vec<Vec<Poly>>, Skip> {
+        self.matrix
+            .rows
+            .iter()
+            .map(|row| {
+                row.iter()
+                    .map(|e| self.entry_at(e, values, atoms))
+                    .collect::<Result<Vec<Poly>, Skip>>()
+            })
+            .collect()
+    }
+
+    fn values(&self, point: &[Rational]) -> Vec<Sym> {
+        point
             .iter()
             .enumerate()
             .map(|(i, q)| self.point_value(i, q))
-            .collect();
+            .collect()
+    }
+
+    /// The maximal minor on the columns `cols` at an exact point.
+    pub(super) fn minor_at(&self, point: &[Rational], cols: &[usize]) -> Result<Poly, Skip> {
+        let rows = self.rows_at(&self.values(point), &param_atoms(&self.domain))?;
+        minor_on(&rows, cols).map_err(|_| Skip::Inexact)
+    }
+
+    /// The rank at an exact point, with the relation where it drops.
+    pub(super) fn rank_at(&self, point: &[Rational]) -> Result<AtPoint, Skip> {
+        let values = self.values(point);
         let atoms = param_atoms(&self.domain);
         let fs: Vec<Sym> = self
             .fs
             .iter()
             .map(|f| self.at(f, &values, &atoms))
             .collect::<Result<_, _>>()?;
-        let rows: Vec<Vec<Poly>> = self
-            .matrix
-            .rows
-            .iter()
-            .map(|row| {
-                row.iter()
-                    .map(|e| self.entry_at(e, &values, &atoms))
-                    .collect::<Result<Vec<Poly>, Skip>>()
-            })
-            .collect::<Result<_, _>>()?;
+        let rows = self.rows_at(&values, &atoms)?;
         let e = echelon_poly(&rows).map_err(|_| Skip::Inexact)?;
         let relation = if e.rank < self.names.len() {
             let scales: Vec<Poly> = self
@@ -334,6 +348,20 @@ pub(super) fn where_in(q: &Rational, r: &ParamRange) -> &'static str {
     }
 }
 
+/// Where `point` lies in the parameter box: at a closed end (one
+/// parameter), a corner, or in it.
+pub(super) fn how_in(ctx: &Context<'_>, point: &[Rational]) -> &'static str {
+    let corner = point
+        .iter()
+        .zip(&ctx.ranges)
+        .all(|(q, r)| where_in(q, r) == CLOSED_END);
+    match (ctx.params.len(), corner) {
+        (1, _) => where_in(&point[0], &ctx.ranges[0]),
+        (_, true) => ", a corner of the range,",
+        _ => ", in the range,",
+    }
+}
+
 /// Generic rank `n` without any parameter in the pivot minor.
 pub(super) fn constant_minor(ctx: &Context<'_>, e: &Echelon<Poly>) -> Verdict {
     let n = ctx.names.len();
@@ -412,16 +440,7 @@ pub(super) fn general(ctx: &Context<'_>, e: &Echelon<Poly>) -> Verdict {
         };
         decided += 1;
         if at.rank < n {
-            let corner = point
-                .iter()
-                .zip(&ctx.ranges)
-                .all(|(q, r)| where_in(q, r) == CLOSED_END);
-            let how = match (ctx.params.len(), corner) {
-                (1, _) => where_in(&point[0], &ctx.ranges[0]),
-                (_, true) => ", a corner of the range,",
-                _ => ", in the range,",
-            };
-            return dropped(ctx, &point, &at, how);
+            return dropped(ctx, &point, &at, how_in(ctx, &point));
         }
         if at.pivots != e.pivots && !others.contains(&at.pivots) && others.len() < 3 {
             others.push(at.pivots);
@@ -499,7 +518,7 @@ pub(super) fn general(ctx: &Context<'_>, e: &Echelon<Poly>) -> Verdict {
 }
 
 impl Context<'_> {
-    fn point_ranges(&self) -> String {
+    pub(super) fn point_ranges(&self) -> String {
         self.params
             .iter()
             .zip(&self.ranges)
@@ -511,7 +530,7 @@ impl Context<'_> {
 
 /// `f > 0` or `f < 0` on the parameter box, certified; the reason when
 /// neither is.
-fn strict_sign(ctx: &Context<'_>, f: &Sym) -> Result<(), String> {
+pub(super) fn strict_sign(ctx: &Context<'_>, f: &Sym) -> Result<(), String> {
     let mut why = String::new();
     for g in [f.clone(), -f.clone()] {
         match branch::positive(&g, &ctx.domain, &ctx.axes) {

@@ -18,7 +18,11 @@ fn binomial(n: u64, i: u64) -> u64 {
 
 /// A spec file of `functions` (name, formula) with `params` (name,
 /// range) on `variable`.
-fn spec(variable: &str, params: &[(&str, &str)], functions: &[(String, String)]) -> Spec {
+pub(super) fn spec(
+    variable: &str,
+    params: &[(&str, &str)],
+    functions: &[(String, String)],
+) -> Spec {
     // `t` on a domain: `t on [0, 1]`
     let variable = match variable.split_once(" on ") {
         Some((v, d)) => format!("{v}\"\ndomain = \"{d}"),
@@ -38,7 +42,7 @@ fn spec(variable: &str, params: &[(&str, &str)], functions: &[(String, String)])
     Spec::from_str_named(&text, "test").unwrap_or_else(|e| panic!("{e}"))
 }
 
-fn fns(formulas: &[&str]) -> Vec<(String, String)> {
+pub(super) fn fns(formulas: &[&str]) -> Vec<(String, String)> {
     formulas
         .iter()
         .enumerate()
@@ -53,7 +57,7 @@ fn example(name: &str) -> Spec {
     Spec::from_file(&path).unwrap_or_else(|e| panic!("{e}"))
 }
 
-fn text(v: &Verdict) -> String {
+pub(super) fn text(v: &Verdict) -> String {
     v.evidence
         .iter()
         .map(|e| e.line())
