@@ -79,8 +79,18 @@ pub fn decide<B: ExactBasis>(
     let mut turns = [false, false];
     if nonnegativity != Some(true) {
         let sides = [
-            (&outer, Status::Holds, Status::Fails, "which contains the printed range"),
-            (&inner, Status::Fails, Status::Holds, "which lies inside the printed range"),
+            (
+                &outer,
+                Status::Holds,
+                Status::Fails,
+                "which contains the printed range",
+            ),
+            (
+                &inner,
+                Status::Fails,
+                Status::Holds,
+                "which lies inside the printed range",
+            ),
         ];
         for (k, (side, decides, turning, relation)) in sides.into_iter().enumerate() {
             let Some(rs) = side else { continue };
