@@ -18,6 +18,8 @@ use std::rc::Rc;
 
 use rug::Rational;
 
+use crate::coordinates::BoxFunction;
+
 use super::{ATTEMPT, ATTEMPT_DEPTH, Engine, Fun, Goal, MAX_ORDER, Outcome, negate};
 
 /// What the face of a face argument must satisfy: strictly positive for a
@@ -124,6 +126,28 @@ impl Engine<'_> {
         if !lower && m % 2 == 1 {
             g = negate(&g, bx.len());
         }
+        if self.negative_inside(&g.e, bx, k, lower, false) {
+            return None;
+        }
+        match self.decide(&g, bx, goal, order + m, depth) {
+            out @ Outcome::Proved { .. } => Some(out),
+            _ => None,
+        }
+    }
+
+    /// True when `g` (negated when `flip`) is certified negative at the
+    /// box's centre or at the centre of its side opposite the face (`lower`
+    /// side of coordinate `k`), where a derivative that is `≥ 0` next to the
+    /// face first turns negative: a face argument that needs `g ≥ 0` on
+    /// the whole box is doomed, and given up before any search.
+    fn negative_inside(
+        &mut self,
+        g: &BoxFunction,
+        bx: &[(Rational, Rational)],
+        k: usize,
+        lower: bool,
+        flip: bool,
+    ) -> bool {
         let centre: Vec<(Rational, Rational)> = bx
             .iter()
             .map(|(l, h)| {
@@ -131,13 +155,13 @@ impl Engine<'_> {
                 (c.clone(), c)
             })
             .collect();
-        if self.enclose(&g.e, &centre).is_some_and(|v| *v.hi() < 0) {
-            return None;
-        }
-        match self.decide(&g, bx, goal, order + m, depth) {
-            out @ Outcome::Proved { .. } => Some(out),
-            _ => None,
-        }
+        let mut far = centre.clone();
+        let side = if lower { &bx[k].1 } else { &bx[k].0 };
+        far[k] = (side.clone(), side.clone());
+        [centre, far].iter().any(|p| {
+            self.enclose(g, p)
+                .is_some_and(|v| *(if flip { -v } else { v }).hi() < 0)
+        })
     }
 
     /// The two halves of a face argument (see [`Engine::face_argument`]).
@@ -154,21 +178,11 @@ impl Engine<'_> {
         global: Rational,
         open: bool,
     ) -> Option<Outcome> {
-        // a derivative into the box certified negative at the box's centre
-        // dooms the argument: give up before searching the face
-        let centre: Vec<(Rational, Rational)> = bx
-            .iter()
-            .map(|(l, h)| {
-                let m = Rational::from(l + h) / 2u32;
-                (m.clone(), m)
-            })
-            .collect();
+        // a derivative into the box certified negative at a point dooms the
+        // argument: give up before searching the face
         let d = self.derived(f, k);
-        if let Some(v) = self.enclose(&d.e, &centre) {
-            let into = if lower { v } else { -v };
-            if *into.hi() < 0 {
-                return None;
-            }
+        if self.negative_inside(&d.e, bx, k, lower, !lower) {
+            return None;
         }
         let face_ok = (face_goal(goal, open) == Goal::NonNegative
             && self.coords.zero_on_face(&f.e, bx, k, &global))
