@@ -189,7 +189,7 @@ fn figure_fragments_take_a_width_a_title_or_none_and_a_real_minus() {
 fn figure_fragments_fit_a_plain_article() {
     let dir = scratch("compile");
     let spec = example("bashir-quadratic.toml");
-    let cases: [(&str, &[&str]); 5] = [
+    let cases: [(&str, &[&str]); 6] = [
         (
             "basis",
             &[
@@ -217,6 +217,10 @@ fn figure_fragments_fit_a_plain_article() {
             &["interp", "--data", "thesis-table-4.6", "--scheme", "g1"],
         ),
         ("region", &["region", "--spec", &spec]),
+        (
+            "region-tp",
+            &["region", "--spec", &spec, "--property", "total-positivity"],
+        ),
     ];
     for (name, args) in cases {
         let (_, fragment) = draw(&dir, name, args);

@@ -111,3 +111,39 @@ fn exponentials_and_a_closed_degenerate_end() {
     let (v, e) = claim(&path, "tp-open");
     assert_eq!(v, "holds", "{e}");
 }
+
+/// `plot region --property total-positivity`: Han, Ma & Huang's box
+/// `[−2, 1]²` is the certified inside (examples/independent/issue38.md,
+/// section 3: totally positive exactly there), a necessary condition fails
+/// on certified cells around it.
+#[test]
+fn the_region_of_total_positivity_is_drawn() {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cli_tp_wronskian");
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let svg = dir.join("hmh-tp.svg");
+    let out = trig_e2e::written(&[
+        "plot",
+        "region",
+        "--spec",
+        &example("han-ma-huang-cubic.toml"),
+        "--property",
+        "total-positivity",
+        "--output",
+        &svg.display().to_string(),
+    ]);
+    assert!(out.contains("wrote"), "{out}");
+    let text = std::fs::read_to_string(&svg).expect("svg written");
+    assert!(
+        text.contains("where the basis is totally positive"),
+        "{out}"
+    );
+    assert!(
+        text.contains(
+            "certified inside (totally positive: every minor of the factorisation ≥ 0): 1"
+        ) && text.contains("certified outside (a necessary condition fails)"),
+        "{text}"
+    );
+    for ext in ["svg", "tex", "csv"] {
+        let _ = std::fs::remove_file(dir.join(format!("hmh-tp.{ext}")));
+    }
+}

@@ -109,7 +109,7 @@ fn negative_on_cell(f: &Sym, trig: bool, z: &Rational, boxes: &[(&str, ParamBox)
 }
 
 /// Classifies one cell (no subdivision of the cell itself).
-fn classify(
+pub fn classify(
     fs: &[Sym],
     trig: bool,
     params: [&str; 2],
@@ -162,6 +162,57 @@ pub fn region(
     splits: [&[Rational]; 2],
     max_depth: u32,
 ) -> Region {
+    region_by(
+        fs,
+        names,
+        trig,
+        params,
+        window,
+        splits,
+        max_depth,
+        |lo, hi| classify(fs, trig, params, lo, hi),
+    )
+}
+
+/// [`region`] with another classification of the cells (the edge still
+/// lies on the boundary polynomials of `fs`): the region of a property
+/// of which `fs ≥ 0` are necessary conditions.
+#[allow(clippy::too_many_arguments)]
+pub fn region_by(
+    fs: &[Sym],
+    names: &[&str],
+    trig: bool,
+    params: [&str; 2],
+    window: ([Rational; 2], [Rational; 2]),
+    splits: [&[Rational]; 2],
+    max_depth: u32,
+    classify: impl Fn(&[Rational; 2], &[Rational; 2]) -> CellKind,
+) -> Region {
+    let cells = quadtree(&window, splits, max_depth, classify);
+    let (wlo, whi) = window;
+    let (boundary, boundary_note) = match candidates(fs, names, trig) {
+        Ok(c) => (dedup(c), None),
+        Err(why) => (Vec::new(), Some(why)),
+    };
+    Region {
+        params: [params[0].to_string(), params[1].to_string()],
+        window_lo: wlo,
+        window_hi: whi,
+        cells,
+        boundary,
+        boundary_note,
+    }
+}
+
+/// The window cut at the split lines, each cell classified by `classify`
+/// and split into four while it is [`CellKind::Boundary`], down to
+/// `max_depth`: the cells, sorted.
+pub fn quadtree(
+    window: &([Rational; 2], [Rational; 2]),
+    splits: [&[Rational]; 2],
+    max_depth: u32,
+    classify: impl Fn(&[Rational; 2], &[Rational; 2]) -> CellKind,
+) -> Vec<Cell> {
     let (wlo, whi) = window;
     // the initial grid: the window cut at the split lines
     let cuts = |k: usize| -> Vec<Rational> {
@@ -190,7 +241,7 @@ pub fn region(
     }
     let mut cells = Vec::new();
     while let Some((lo, hi, depth)) = stack.pop() {
-        let kind = classify(fs, trig, params, &lo, &hi);
+        let kind = classify(&lo, &hi);
         if kind != CellKind::Boundary || depth >= max_depth {
             cells.push(Cell { lo, hi, kind });
             continue;
@@ -228,18 +279,7 @@ pub fn region(
         }
     }
     cells.sort_by(|a, b| a.lo.cmp(&b.lo).then(a.hi.cmp(&b.hi)));
-    let (boundary, boundary_note) = match candidates(fs, names, trig) {
-        Ok(c) => (dedup(c), None),
-        Err(why) => (Vec::new(), Some(why)),
-    };
-    Region {
-        params: [params[0].to_string(), params[1].to_string()],
-        window_lo: wlo,
-        window_hi: whi,
-        cells,
-        boundary,
-        boundary_note,
-    }
+    cells
 }
 
 /// One candidate per distinct polynomial (up to a constant factor).

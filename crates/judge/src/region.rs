@@ -19,7 +19,7 @@
 use rug::Rational;
 use trig_certify::boundary::{candidates, end_conditions};
 use trig_certify::range::EndPoint;
-use trig_certify::region::{CellKind, Region, region};
+use trig_certify::region::{CellKind, Region, region_by};
 use trig_certify::{Bound, ParamBox};
 use trig_symbolic::Sym;
 
@@ -348,6 +348,22 @@ fn box_corners(axes: &[Axis<'_>; 2]) -> ([Rational; 2], [Rational; 2]) {
 /// The window around the printed box, classified, with the box's finite
 /// ends as split lines.
 pub fn classify_window(fs: &[Sym], names: &[&str], trig: bool, axes: &[Axis<'_>; 2]) -> Region {
+    let params = [axes[0].name, axes[1].name];
+    classify_window_by(fs, names, trig, axes, |lo, hi| {
+        trig_certify::region::classify(fs, trig, params, lo, hi)
+    })
+}
+
+/// [`classify_window`] with another classification of the cells (the
+/// region of a property of which `fs ≥ 0` are necessary conditions; the
+/// edge lies on their boundary polynomials).
+pub fn classify_window_by(
+    fs: &[Sym],
+    names: &[&str],
+    trig: bool,
+    axes: &[Axis<'_>; 2],
+    classify: impl Fn(&[Rational; 2], &[Rational; 2]) -> CellKind,
+) -> Region {
     let (w0, w1) = (window(&axes[0].set), window(&axes[1].set));
     let ends = |set: &ParamBox| -> Vec<Rational> {
         [&set.lo, &set.hi]
@@ -357,7 +373,7 @@ pub fn classify_window(fs: &[Sym], names: &[&str], trig: bool, axes: &[Axis<'_>;
             .collect()
     };
     let (s0, s1) = (ends(&axes[0].set), ends(&axes[1].set));
-    region(
+    region_by(
         fs,
         names,
         trig,
@@ -365,6 +381,7 @@ pub fn classify_window(fs: &[Sym], names: &[&str], trig: bool, axes: &[Axis<'_>;
         ([w0.0, w1.0], [w0.1, w1.1]),
         [&s0, &s1],
         REGION_DEPTH,
+        classify,
     )
 }
 

@@ -17,6 +17,8 @@
 
 use rug::Rational;
 use trig_certify::ParamBox;
+use trig_certify::region::{CellKind, Region};
+use trig_certify::tp_box::BoxOutcome;
 use trig_core::Parameter;
 
 use super::nonnegative::pieces;
@@ -143,4 +145,43 @@ fn equalities(params: &[Parameter], point: &[Rational]) -> String {
         .map(|(p, v)| format!("{} = {v}", p.symbol))
         .collect::<Vec<_>>()
         .join(", ")
+}
+
+/// The window around the printed box of a two-parameter basis, classified
+/// for total positivity (`plot region --property total-positivity`): a
+/// cell is **inside** where the factorisation's minors are certified `≥ 0`
+/// on the whole cell ([`trig_certify::tp_box`]), **outside** where a
+/// necessary condition (a function `≥ 0`; `b₀` non-increasing, `bₙ`
+/// non-decreasing) is certified to fail at one point of the domain for
+/// every parameter of the cell, the **edge** otherwise. The edge lies on
+/// the necessary conditions' boundary curves or inside the certificate's
+/// gap.
+pub fn totally_positive_region<B: ExactBasis>(
+    basis: &B,
+    axes: &[Axis<'_>; 2],
+) -> Result<Region, String> {
+    let (trig, fs, _) = pieces(basis)?;
+    let necessary = necessary_functions(basis)
+        .ok_or("the necessary conditions need functions polynomial in sin, cos or the variable")?;
+    let names: Vec<&str> = necessary.names.iter().map(String::as_str).collect();
+    let params = [axes[0].name, axes[1].name];
+    Ok(region::classify_window_by(
+        &necessary.functions,
+        &names,
+        trig,
+        axes,
+        |lo, hi| match trig_certify::region::classify(&necessary.functions, trig, params, lo, hi) {
+            outside @ CellKind::Outside { .. } => outside,
+            _ => {
+                let cell = [
+                    (params[0], ParamBox::closed(lo[0].clone(), hi[0].clone())),
+                    (params[1], ParamBox::closed(lo[1].clone(), hi[1].clone())),
+                ];
+                match trig_certify::tp_box::certify(&fs, trig, &cell) {
+                    Ok(c) if matches!(c.outcome, BoxOutcome::Covers { .. }) => CellKind::Inside,
+                    _ => CellKind::Boundary,
+                }
+            }
+        },
+    ))
 }

@@ -47,7 +47,7 @@ pub use mesh::{Mesh, MeshFormat};
 pub use pgf::PgfOptions;
 pub use picture::Picture;
 pub use plotted::{Choice, Plotted};
-pub use region::{RegionCell, RegionKind, region_svg};
+pub use region::{CellLabels, RegionCell, RegionKind, region_svg};
 pub use surface::{PATCH_COLOURS, SurfaceFigure, SurfacePatch, View};
 pub use surface_pgf::surface_pgf;
 pub use surface_svg::surface_svg;

@@ -30,6 +30,29 @@ pub struct RegionCell {
     pub kind: RegionKind,
 }
 
+/// What the cells of each kind were certified to be, for the legend.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct CellLabels {
+    pub inside: &'static str,
+    pub outside: &'static str,
+    pub edge: &'static str,
+}
+
+impl CellLabels {
+    /// The region where every function is `≥ 0`.
+    pub const NONNEGATIVE: CellLabels = CellLabels {
+        inside: "certified inside (every function ≥ 0)",
+        outside: "certified outside (a function < 0)",
+        edge: "undecided (the edge, or where the negative function changes)",
+    };
+    /// The region where the basis is totally positive.
+    pub const TOTALLY_POSITIVE: CellLabels = CellLabels {
+        inside: "certified inside (totally positive: every minor of the factorisation ≥ 0)",
+        outside: "certified outside (a necessary condition fails)",
+        edge: "undecided (the edge, or beyond the certificate)",
+    };
+}
+
 /// The classified window; `printed` is the printed box (its
 /// infinite sides clipped to the window).
 pub fn region_svg(
@@ -37,6 +60,7 @@ pub fn region_svg(
     axes: (&str, &str),
     cells: &[RegionCell],
     printed: Option<((f64, f64), (f64, f64))>,
+    labels: CellLabels,
 ) -> Result<Picture> {
     let x = cells
         .iter()
@@ -52,24 +76,9 @@ pub fn region_svg(
         return Err(crate::PlotError::Input("no cells to draw".into()));
     }
     let styles = [
-        (
-            RegionKind::Inside,
-            colour(2),
-            0.55,
-            "certified inside (every function ≥ 0)",
-        ),
-        (
-            RegionKind::Outside,
-            colour(1),
-            0.35,
-            "certified outside (a function < 0)",
-        ),
-        (
-            RegionKind::Edge,
-            (200, 200, 200),
-            0.9,
-            "undecided (the edge, or where the negative function changes)",
-        ),
+        (RegionKind::Inside, colour(2), 0.55, labels.inside),
+        (RegionKind::Outside, colour(1), 0.35, labels.outside),
+        (RegionKind::Edge, (200, 200, 200), 0.9, labels.edge),
     ];
     // each cell as two points: its lower-left and upper-right corners
     let mut series = Vec::new();

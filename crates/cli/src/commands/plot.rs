@@ -11,8 +11,8 @@ use trig_core::{parse_exact, parse_point};
 use trig_interp::{DataSet, Scheme, Variant, f64_segments};
 use trig_judge::region::{Axis, classify_window};
 use trig_plot::{
-    Choice, Interpolant, PgfOptions, Picture, Plotted, RegionCell, RegionKind, basis_svg,
-    basis_versus_svg, curve_svg, fit_svg, interp_svg, region_svg,
+    CellLabels, Choice, Interpolant, PgfOptions, Picture, Plotted, RegionCell, RegionKind,
+    basis_svg, basis_versus_svg, curve_svg, fit_svg, interp_svg, region_svg,
 };
 use trig_specfile::Spec;
 
@@ -84,12 +84,19 @@ enum PlotKind {
         look: FigureArgs,
     },
     /// The region of two shape parameters where every function of a spec
-    /// file's basis is nonnegative: certified cells inside and outside, the
-    /// undecided edge, the printed box.
+    /// file's basis is nonnegative (or where the basis is totally positive):
+    /// certified cells inside and outside, the undecided edge, the printed
+    /// box.
     Region {
         /// Spec file (TOML, docs/spec.md) of a basis with two parameters.
         #[arg(long, value_name = "FILE")]
         spec: PathBuf,
+        /// The property whose region is drawn: `nonnegative` (every function
+        /// ≥ 0) or `total-positivity` (inside: the factorisation's minors
+        /// certified ≥ 0 on the cell; outside: a necessary condition fails on
+        /// the whole cell).
+        #[arg(long, value_enum, default_value_t = RegionProperty::Nonnegative)]
+        property: RegionProperty,
         /// SVG file to write (its pgfplots code NAME.tex and data NAME.csv beside it).
         #[arg(long)]
         output: PathBuf,
@@ -368,7 +375,12 @@ pub fn run(args: &PlotArgs) -> CmdResult {
                 look,
             )
         }
-        PlotKind::Region { spec, output, look } => write(output, region(spec)?, look),
+        PlotKind::Region {
+            spec,
+            property,
+            output,
+            look,
+        } => write(output, region(spec, *property)?, look),
         PlotKind::Surface(args) => surface::run(args),
         PlotKind::Interp {
             data,
@@ -409,7 +421,14 @@ pub fn run(args: &PlotArgs) -> CmdResult {
 }
 
 /// The classified window around the printed box of a two-parameter spec.
-fn region(path: &Path) -> Result<Picture, CliError> {
+/// The property whose region `plot region` draws.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum RegionProperty {
+    Nonnegative,
+    TotalPositivity,
+}
+
+fn region(path: &Path, property: RegionProperty) -> Result<Picture, CliError> {
     let spec =
         Spec::from_file(path).map_err(|e| CliError::Usage(e.to_string().replace('\n', " ")))?;
     let [p, q] = spec.params.as_slice() else {
@@ -428,10 +447,18 @@ fn region(path: &Path) -> Result<Picture, CliError> {
         }
     }
     let axes = [axis(p), axis(q)];
-    let (trig, fs, names) = trig_judge::nonnegative::pieces(&spec)
-        .map_err(|why| CliError::Usage(format!("plot region: {why}")))?;
-    let names: Vec<&str> = names.iter().map(String::as_str).collect();
-    let reg = classify_window(&fs, &names, trig, &axes);
+    let reg = match property {
+        RegionProperty::Nonnegative => {
+            let (trig, fs, names) = trig_judge::nonnegative::pieces(&spec)
+                .map_err(|why| CliError::Usage(format!("plot region: {why}")))?;
+            let names: Vec<&str> = names.iter().map(String::as_str).collect();
+            classify_window(&fs, &names, trig, &axes)
+        }
+        RegionProperty::TotalPositivity => {
+            trig_judge::tp_maximal_box::totally_positive_region(&spec, &axes)
+                .map_err(|why| CliError::Usage(format!("plot region: {why}")))?
+        }
+    };
     let cells: Vec<RegionCell> = reg
         .cells
         .iter()
@@ -451,12 +478,22 @@ fn region(path: &Path) -> Result<Picture, CliError> {
             set.hi.value().map_or(f64::INFINITY, |v| v.to_f64()),
         )
     };
-    let title = format!("{}: where every function is ≥ 0", spec.id);
+    let (title, labels) = match property {
+        RegionProperty::Nonnegative => (
+            format!("{}: where every function is ≥ 0", spec.id),
+            CellLabels::NONNEGATIVE,
+        ),
+        RegionProperty::TotalPositivity => (
+            format!("{}: where the basis is totally positive", spec.id),
+            CellLabels::TOTALLY_POSITIVE,
+        ),
+    };
     region_svg(
         &title,
         (&p.symbol, &q.symbol),
         &cells,
         Some((side(&axes[0].set), side(&axes[1].set))),
+        labels,
     )
     .map_err(plot_err)
 }
