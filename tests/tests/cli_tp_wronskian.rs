@@ -51,6 +51,14 @@ fn a_domain_that_moves_with_its_parameter() {
         e.contains("W(b1) < 0") && e.contains("negative 1 × 1 minor"),
         "{e}"
     );
+    // b1 ≡ 0 at α = π/2: the closed end by continuity, and the range is
+    // exactly the maximal set (issue38-wronskian.md: TP exactly on (0, π/2])
+    let (v, e) = claim(&path, "TBA-totally-positive-maximal");
+    assert_eq!(v, "holds", "{e}");
+    assert!(
+        e.contains("the closed ends of the range by continuity"),
+        "{e}"
+    );
 }
 
 #[test]
@@ -88,7 +96,7 @@ fn c_bezier_cubic_is_totally_positive_exactly_below_two_pi() {
 }
 
 #[test]
-fn exponentials_and_a_closed_degenerate_end() {
+fn exponentials_and_a_degenerate_closed_end() {
     // the exponential Bernstein basis on its bounded printed range
     let path = with_claims(
         "exp-bernstein-cubic.toml",
@@ -97,15 +105,16 @@ fn exponentials_and_a_closed_degenerate_end() {
     let (v, e) = claim(&path, "tp");
     assert_eq!(v, "holds", "{e}");
     // the quadratic C-Bézier basis degenerates at the closed end π (b1 ≡ 0
-    // there): the criterion cannot prove it, and says so at once
+    // there, issue38-wronskian.md: still totally positive): the criterion
+    // proves the open range, continuity reaches π
     let path = with_claims(
         "c-bezier-quadratic.toml",
         "[[claims]]\nid = \"tp\"\nsource = \"test\"\nstatement = \"TP\"\ncheck = \"total-positivity\"\n\n[[claims]]\nid = \"tp-open\"\nsource = \"test\"\nstatement = \"TP\"\ncheck = \"total-positivity\"\nrange = \"(0, pi)\"\n",
     );
     let (v, e) = claim(&path, "tp");
-    assert_eq!(v, "not-checkable", "{e}");
+    assert_eq!(v, "holds", "{e}");
     assert!(
-        e.contains("vanishes identically at the closed range end"),
+        e.contains("the closed ends of the range by continuity"),
         "{e}"
     );
     let (v, e) = claim(&path, "tp-open");

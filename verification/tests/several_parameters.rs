@@ -307,6 +307,14 @@ fn published_boxes_are_exactly_the_maximal_sets() {
     assert_eq!(v.status, Status::Holds, "{}", evidence_lines(&v));
     let v = decide_text(&spec("[-1, 1]"), maximal);
     assert_eq!(v.status, Status::Fails, "{}", evidence_lines(&v));
+    // the face λ1 = −2 left open: totally positive there too (by continuity)
+    let v = decide_text(&spec("(-2, 1]"), maximal);
+    assert_eq!(v.status, Status::Fails, "{}", evidence_lines(&v));
+    assert!(
+        evidence_lines(&v).contains("on the open face lambda1 = -2"),
+        "{}",
+        evidence_lines(&v)
+    );
     let v = decide_text(&example_text("han-ma-huang-cubic"), maximal);
     assert_eq!(v.status, Status::Holds, "{}", evidence_lines(&v));
 }

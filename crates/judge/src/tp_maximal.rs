@@ -32,7 +32,7 @@ use super::certificate::show_outside;
 use super::nonnegative::{nonnegative_claim, pieces};
 use super::total_positivity::normalized_totally_positive;
 use super::tp_maximal_box::maximal_totally_positive_box;
-use super::tp_wronskian::at_point;
+use super::tp_wronskian::{at_point, continuous};
 use crate::exact::ExactBasis;
 use crate::exact::basis_of;
 use trig_certify::analytic_end::Problem;
@@ -143,6 +143,24 @@ pub fn maximal_totally_positive<B: ExactBasis>(basis: &B, range: Option<&ParamRa
                 "the end {e}{unit} is exact: the domain shrinks to a point there, and there is no basis beyond it"
             )));
             continue;
+        }
+        // an open end where the functions are continuous: totally positive
+        // there too, as a limit from inside the printed range
+        if matches!(end, End::Open(_)) {
+            let point = [Axis {
+                lo: e.clone(),
+                hi: e.clone(),
+                lo_open: false,
+                hi_open: false,
+                pi: printed.pi,
+            }];
+            if continuous(&functions, &domain, &point).is_ok() {
+                evidence.push(Evidence::note(format!(
+                    "at the open end {} = {e}{unit} the basis is totally positive too: every denominator is nonzero there, so each collocation minor is a limit of minors ≥ 0 from inside the printed range; the printed range is not the maximal set",
+                    p.symbol
+                )));
+                return Verdict::new(Status::Fails, METHOD, evidence);
+            }
         }
         // an open end itself, then values at 1, 1/4, … beyond it
         let mut tries: Vec<Rational> = Vec::new();

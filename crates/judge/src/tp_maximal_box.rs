@@ -17,15 +17,17 @@
 
 use rug::Rational;
 use trig_certify::ParamBox;
+use trig_certify::branch::Axis as BranchAxis;
 use trig_certify::region::{CellKind, Region};
 use trig_certify::tp_box::BoxOutcome;
-use trig_core::Parameter;
+use trig_core::{End, Parameter};
 
 use super::nonnegative::pieces;
 use super::region::{self, Axis};
 use super::total_positivity::normalized_totally_positive;
 use super::tp_maximal::{METHOD, necessary_functions, totally_positive_at};
-use crate::exact::ExactBasis;
+use super::tp_wronskian::continuous;
+use crate::exact::{ExactBasis, basis_of};
 use trig_verdict::evidence::Evidence;
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
@@ -77,6 +79,18 @@ pub fn maximal_totally_positive_box<B: ExactBasis>(basis: &B) -> Verdict {
     for (i, p) in params.iter().enumerate() {
         for (end, outward) in [(p.range.lo.value(), -1), (p.range.hi.value(), 1)] {
             let Some(e) = end else { continue };
+            let open = if outward < 0 {
+                matches!(p.range.lo, End::Open(_))
+            } else {
+                matches!(p.range.hi, End::Open(_))
+            };
+            if open && continuous_on_face(basis, &params, i, e) {
+                evidence.push(Evidence::note(format!(
+                    "on the open face {} = {e} the basis is totally positive too: every denominator is nonzero there, so each collocation minor is a limit of minors ≥ 0 from inside the printed box; the box is not the maximal set",
+                    p.symbol
+                )));
+                return Verdict::new(Status::Fails, METHOD, evidence);
+            }
             let mut refuted: Option<Rational> = None;
             for k in 0..STEPS {
                 let q = e.clone() + Rational::from((outward, 1u32 << (2 * k)));
@@ -125,6 +139,35 @@ pub fn maximal_totally_positive_box<B: ExactBasis>(basis: &B) -> Verdict {
         "the maximal set is not decided exactly: beyond the faces, total positivity is refuted at single points only",
     ));
     Verdict::new(Status::NotCheckable, METHOD, evidence)
+}
+
+/// Every denominator of the basis nonzero on the closed face `pᵢ = e` of
+/// the box (the other ranges closed, bounded ones only).
+fn continuous_on_face<B: ExactBasis>(
+    basis: &B,
+    params: &[Parameter],
+    i: usize,
+    e: &Rational,
+) -> bool {
+    let axes: Option<Vec<BranchAxis>> = params
+        .iter()
+        .enumerate()
+        .map(|(j, r)| {
+            let (lo, hi) = if j == i {
+                (e.clone(), e.clone())
+            } else {
+                (r.range.lo.value()?.clone(), r.range.hi.value()?.clone())
+            };
+            Some(BranchAxis {
+                lo,
+                hi,
+                lo_open: false,
+                hi_open: false,
+                pi: r.range.pi,
+            })
+        })
+        .collect();
+    axes.is_some_and(|axes| continuous(&basis_of(basis), &basis.domain(), &axes).is_ok())
 }
 
 /// A parameter as an axis of the region judge.

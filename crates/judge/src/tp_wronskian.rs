@@ -30,13 +30,29 @@ pub fn by_wronskians<B: ExactBasis>(
     range: Option<&ParamRange>,
     before: &str,
 ) -> Verdict {
-    let (axes, truncated) = axes(basis, range);
+    let (closed, truncated) = axes(basis, range);
     let domain = basis.domain();
     let names = basis.function_names();
-    let criterion = match wronskian::consecutive(&basis_of(basis), &domain, &axes) {
+    let functions = basis_of(basis);
+    let mut axes = closed.clone();
+    let mut criterion = match wronskian::consecutive(&functions, &domain, &axes) {
         Ok(c) => c,
         Err(why) => return Verdict::not_checkable(format!("{before}; {why}")),
     };
+    // a Wronskian may vanish at a closed end of a range (a function ≡ 0
+    // there, or a double zero inside): proved with the ends open, total
+    // positivity reaches the closed ends by continuity where the functions
+    // are continuous there (every minor a limit of minors ≥ 0)
+    let mut by_continuity = None;
+    let opened = open_ends(&closed);
+    if !criterion.proved(names.len()) && criterion.refuting().is_none() && opened != closed {
+        if let Ok(c) = wronskian::consecutive(&functions, &domain, &opened) {
+            if c.proved(names.len()) {
+                by_continuity = Some(continuous(&functions, &domain, &closed));
+                (criterion, axes) = (c, opened);
+            }
+        }
+    }
     let mut evidence = vec![Evidence::note(format!(
         "{before}: decided by the Wronskians of consecutive functions on the open domain {}",
         open_domain(basis, &axes)
@@ -58,7 +74,12 @@ pub fn by_wronskians<B: ExactBasis>(
             format!("so the basis is not totally positive there: {functions} < 0 at that point is a negative 1 × 1 minor")
         } else {
             format!(
-                "so the basis is not totally positive there: at coalescing points x, x + h, …, x + {m}h the collocation minor of ({functions}) is a positive multiple of h^{} times W(x) + O(h), negative for small h",
+                "so the basis is not totally positive there: at coalescing points {} the collocation minor of ({functions}) is a positive multiple of h^{} times W(x) + O(h), negative for small h",
+                if m == 1 {
+                    "x, x + h".to_string()
+                } else {
+                    format!("x, x + h, …, x + {m}h")
+                },
                 m * (m + 1) / 2
             )
         }));
@@ -76,6 +97,18 @@ pub fn by_wronskians<B: ExactBasis>(
         ));
         return Verdict::new(Status::NotCheckable, WRONSKIAN, evidence);
     }
+    match by_continuity {
+        Some(Ok(())) => evidence.push(Evidence::note(
+            "the closed ends of the range by continuity: every denominator keeps one strict sign on the closed domain and range, so each collocation minor there is a limit of minors ≥ 0 from inside",
+        )),
+        Some(Err(why)) => {
+            evidence.push(Evidence::note(format!(
+                "proved with the range's ends open; the closed ends are not reached: {why}"
+            )));
+            return Verdict::new(Status::NotCheckable, WRONSKIAN, evidence);
+        }
+        None => {}
+    }
     evidence.push(
         Evidence::new(
             Kind::Certificate,
@@ -88,6 +121,35 @@ pub fn by_wronskians<B: ExactBasis>(
         .about("total positivity", Status::Holds),
     );
     Verdict::new(Status::Holds, WRONSKIAN, evidence)
+}
+
+/// The axes with their finite closed ends opened.
+fn open_ends(axes: &[Axis]) -> Vec<Axis> {
+    axes.iter()
+        .map(|a| Axis {
+            lo_open: true,
+            hi_open: true,
+            ..a.clone()
+        })
+        .collect()
+}
+
+/// Every denominator factor of every function of one strict sign on the
+/// closed domain and the closed ranges: the functions are continuous there.
+pub(crate) fn continuous(
+    functions: &[Sym],
+    domain: &trig_core::Domain,
+    axes: &[Axis],
+) -> Result<(), String> {
+    for f in functions {
+        for factor in f.denominator().keys() {
+            let g = Sym::from_poly(factor.clone());
+            trig_certify::factors::sign_of(&g, domain, axes, true).map_err(|why| {
+                format!("the denominator factor {g} is not proved nonzero there ({why})")
+            })?;
+        }
+    }
+    Ok(())
 }
 
 /// The criterion's verdict at one parameter vector only (a single point of
@@ -112,14 +174,19 @@ fn open_domain<B: ExactBasis>(basis: &B, axes: &[Axis]) -> String {
         d.start.text(&d.param_names),
         d.end.text(&d.param_names)
     );
+    let end = |q: &rug::Rational, pi: bool| match (pi, q.to_string().as_str()) {
+        (false, t) => t.to_string(),
+        (true, "0") => "0".to_string(),
+        (true, "1") => "π".to_string(),
+        (true, t) => format!("{t}·π"),
+    };
     for (p, a) in params.iter().zip(axes) {
-        let unit = if a.pi { "·π" } else { "" };
         text.push_str(&format!(
-            ", {} ∈ {}{}{unit}, {}{unit}{}",
+            ", {} ∈ {}{}, {}{}",
             p.symbol,
             if a.lo_open { "(" } else { "[" },
-            a.lo,
-            a.hi,
+            end(&a.lo, a.pi),
+            end(&a.hi, a.pi),
             if a.hi_open { ")" } else { "]" }
         ));
     }
@@ -141,7 +208,7 @@ fn run_line(run: &Run, names: &[String], var: &str, symbols: &[String]) -> Evide
             value,
         } => (
             format!(
-                "{label} < 0 at {var} ≈ {x} (τ = {tau} of the domain){}: its numerator, signed by its denominator, lies in [{:e}, {:e}] (certified)",
+                "{label} < 0 at {var} ≈ {x} (τ = {tau} of the domain){}: with W = N/D in the exact ring's normal form (N, D as shown), N times the sign of D there lies in [{:e}, {:e}] (certified)",
                 if params.is_empty() {
                     String::new()
                 } else {

@@ -386,6 +386,13 @@ fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
             "an umbrella or a claim the copy does not print fixes no values (its parts fix their own)".into(),
         );
     }
+    if c.maximal == Some(true) && spec.params.is_empty() {
+        return src.invalid(
+            c.check.span(),
+            "claims.maximal",
+            "`maximal = true` on a basis without parameters: there is no set of parameters to be maximal (drop `maximal`)".into(),
+        );
+    }
     if c.maximal == Some(true) && !spec.params.is_empty() && given.fixed.len() == spec.params.len()
     {
         return src.invalid(
