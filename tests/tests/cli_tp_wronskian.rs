@@ -156,3 +156,50 @@ fn the_region_of_total_positivity_is_drawn() {
         let _ = std::fs::remove_file(dir.join(format!("hmh-tp.{ext}")));
     }
 }
+
+/// `plot region --property independent`: GB2 is dependent only at the
+/// corner (−2, −2) (examples/independent/issue38.md, section 2): every cell
+/// away from it is certified independent, the undecided ones hold it.
+#[test]
+fn the_region_of_independence_is_drawn() {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cli_tp_wronskian");
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let svg = dir.join("gb2-ind.svg");
+    let out = trig_e2e::written(&[
+        "plot",
+        "region",
+        "--spec",
+        &example("gb2-independence.toml"),
+        "--property",
+        "independent",
+        "--output",
+        &svg.display().to_string(),
+    ]);
+    assert!(out.contains("wrote"), "{out}");
+    let csv = std::fs::read_to_string(dir.join("gb2-ind.csv")).expect("csv written");
+    let text = std::fs::read_to_string(&svg).expect("svg written");
+    assert!(text.contains("certified independent"), "{text}");
+    // every undecided cell lies next to the corner (−2, −2), within 1/4
+    // (near the dependence point the minors are too small to be certified
+    // at the depth limit): the CSV gives each cell as its lower-left
+    // (point 0) and upper-right (point 1) corners
+    let corners: Vec<(f64, f64)> = csv
+        .lines()
+        .filter(|l| l.starts_with("edge cell"))
+        .map(|l| {
+            let f: Vec<&str> = l.split(',').collect();
+            (f[2].parse().expect("x"), f[3].parse().expect("y"))
+        })
+        .collect();
+    assert!(!corners.is_empty(), "{csv}");
+    for cell in corners.chunks(2) {
+        let [(x0, y0), (x1, y1)] = cell else {
+            panic!("{cell:?}")
+        };
+        let near = |lo: f64, hi: f64| lo <= -1.75 && hi >= -2.25;
+        assert!(near(*x0, *x1) && near(*y0, *y1), "{cell:?}");
+    }
+    for ext in ["svg", "tex", "csv"] {
+        let _ = std::fs::remove_file(dir.join(format!("gb2-ind.{ext}")));
+    }
+}

@@ -126,7 +126,7 @@ pub fn by_rank<B: ExactBasis>(
         .map(|a| a.name)
         .collect();
     let symbols: Vec<&String> = params.iter().map(|p| &p.name).chain(&atoms).collect();
-    with_context(basis, range, |ctx, e| {
+    with_context(basis, range, inexact_division, |ctx, e| {
         if e.rank < ctx.names.len() {
             return rank::short_rank(ctx, e);
         }
@@ -144,12 +144,14 @@ pub fn by_rank<B: ExactBasis>(
 }
 
 /// `decide` on the rank judge's reading of `basis` (its coefficient matrix
-/// and its elimination); an error when the rank method does not apply.
-fn with_context<B: ExactBasis>(
+/// and its elimination; `inexact` where the elimination meets a division
+/// that is not exact); an error when the rank method does not apply.
+fn with_context<B: ExactBasis, R>(
     basis: &B,
     range: Option<&ParamRange>,
-    decide: impl FnOnce(&rank::Context<'_>, &matrix::Echelon<Poly>) -> Verdict,
-) -> Result<Verdict, NotMonomial> {
+    inexact: impl FnOnce() -> R,
+    decide: impl FnOnce(&rank::Context<'_>, &matrix::Echelon<Poly>) -> R,
+) -> Result<R, NotMonomial> {
     let names = basis.function_names();
     let fs = basis_of(basis);
     let params = basis.parameters();
@@ -205,11 +207,73 @@ fn with_context<B: ExactBasis>(
         matrix: matrix::coefficients(&fs),
     };
     let Ok(e) = matrix::echelon_poly(&ctx.matrix.rows) else {
-        return Ok(Verdict::not_checkable(
-            "the fraction-free elimination met a division that was not exact (the entries' ring is not an integral domain as written)",
-        ));
+        return Ok(inexact());
     };
     Ok(decide(&ctx, &e))
+}
+
+/// Why the rank was not computed: the elimination's division not exact.
+fn inexact_division() -> Verdict {
+    Verdict::not_checkable(
+        "the fraction-free elimination met a division that was not exact (the entries' ring is not an integral domain as written)",
+    )
+}
+
+/// The window around the declared box of a two-parameter basis,
+/// classified for linear independence (`plot region --property
+/// independent`): a cell is **inside** where a maximal minor of the
+/// coefficient matrix keeps one strict sign on the whole cell (certified by
+/// Bernstein subdivision), the **edge** otherwise — the cells that may hold
+/// a point of the exceptional set (its curves and isolated points, given
+/// exactly by the independence claim's evidence). No cell is outside: the
+/// dependence set of functions independent somewhere has no interior.
+pub fn independence_region<B: ExactBasis>(
+    basis: &B,
+    axes: &[crate::region::Axis<'_>; 2],
+) -> Result<trig_certify::region::Region, String> {
+    let minors = with_context(
+        basis,
+        None,
+        || Err("the fraction-free elimination met a division that was not exact".to_string()),
+        |ctx, e| {
+            if e.rank < ctx.names.len() {
+                return Err("the functions are dependent for every parameter value".to_string());
+            }
+            exceptional_set::maximal_minors(ctx).ok_or_else(|| {
+                "the maximal minors are not polynomials in the parameters, or too many to list"
+                    .to_string()
+            })
+        },
+    )
+    .map_err(|NotMonomial(why)| why)??;
+    let minors: Vec<Sym> = minors.into_iter().map(Sym::from_poly).collect();
+    let params = [axes[0].name, axes[1].name];
+    Ok(crate::region::classify_window_by(
+        &[],
+        &[],
+        false,
+        axes,
+        |lo, hi| {
+            let cell = [
+                (
+                    params[0],
+                    trig_certify::ParamBox::closed(lo[0].clone(), hi[0].clone()),
+                ),
+                (
+                    params[1],
+                    trig_certify::ParamBox::closed(lo[1].clone(), hi[1].clone()),
+                ),
+            ];
+            if minors
+                .iter()
+                .any(|m| trig_certify::nonneg::definite_sign(m, false, &cell).is_ok())
+            {
+                trig_certify::region::CellKind::Inside
+            } else {
+                trig_certify::region::CellKind::Boundary
+            }
+        },
+    ))
 }
 
 /// The Wronskian judge (see the module documentation): the method of the

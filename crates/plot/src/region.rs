@@ -45,6 +45,12 @@ impl CellLabels {
         outside: "certified outside (a function < 0)",
         edge: "undecided (the edge, or where the negative function changes)",
     };
+    /// Where the functions are linearly independent.
+    pub const INDEPENDENT: CellLabels = CellLabels {
+        inside: "certified independent (a maximal minor of one strict sign on the cell)",
+        outside: "dependent on the whole cell",
+        edge: "undecided (where a point of the exceptional set may lie)",
+    };
     /// The region where the basis is totally positive.
     pub const TOTALLY_POSITIVE: CellLabels = CellLabels {
         inside: "certified inside (totally positive: every minor of the factorisation ≥ 0)",

@@ -92,9 +92,11 @@ enum PlotKind {
         #[arg(long, value_name = "FILE")]
         spec: PathBuf,
         /// The property whose region is drawn: `nonnegative` (every function
-        /// ≥ 0) or `total-positivity` (inside: the factorisation's minors
+        /// ≥ 0), `total-positivity` (inside: the factorisation's minors
         /// certified ≥ 0 on the cell; outside: a necessary condition fails on
-        /// the whole cell).
+        /// the whole cell) or `independent` (inside: a maximal minor of the
+        /// coefficient matrix of one strict sign on the cell; the exceptional
+        /// set lies in the undecided cells).
         #[arg(long, value_enum, default_value_t = RegionProperty::Nonnegative)]
         property: RegionProperty,
         /// SVG file to write (its pgfplots code NAME.tex and data NAME.csv beside it).
@@ -426,6 +428,7 @@ pub fn run(args: &PlotArgs) -> CmdResult {
 pub enum RegionProperty {
     Nonnegative,
     TotalPositivity,
+    Independent,
 }
 
 fn region(path: &Path, property: RegionProperty) -> Result<Picture, CliError> {
@@ -458,6 +461,8 @@ fn region(path: &Path, property: RegionProperty) -> Result<Picture, CliError> {
             trig_judge::tp_maximal_box::totally_positive_region(&spec, &axes)
                 .map_err(|why| CliError::Usage(format!("plot region: {why}")))?
         }
+        RegionProperty::Independent => trig_judge::independence::independence_region(&spec, &axes)
+            .map_err(|why| CliError::Usage(format!("plot region: {why}")))?,
     };
     let cells: Vec<RegionCell> = reg
         .cells
@@ -486,6 +491,10 @@ fn region(path: &Path, property: RegionProperty) -> Result<Picture, CliError> {
         RegionProperty::TotalPositivity => (
             format!("{}: where the basis is totally positive", spec.id),
             CellLabels::TOTALLY_POSITIVE,
+        ),
+        RegionProperty::Independent => (
+            format!("{}: where the functions are linearly independent", spec.id),
+            CellLabels::INDEPENDENT,
         ),
     };
     region_svg(

@@ -86,7 +86,7 @@ fn minors_of(rows: &[Vec<Poly>]) -> Option<Vec<Poly>> {
 }
 
 /// The maximal minors of a matrix polynomial in the parameters.
-fn maximal_minors(ctx: &Context<'_>) -> Option<Vec<Poly>> {
+pub(super) fn maximal_minors(ctx: &Context<'_>) -> Option<Vec<Poly>> {
     if !polynomial(ctx) {
         return None;
     }

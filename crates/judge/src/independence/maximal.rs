@@ -336,7 +336,7 @@ pub fn maximal<B: ExactBasis>(declared: &B, claimed: &B, range: Option<&ParamRan
             "the claim's range is the whole declared range: nothing lies outside it".to_string(),
         );
     }
-    let outside = super::with_context(declared, None, |ctx, e| {
+    let outside = super::with_context(declared, None, super::inexact_division, |ctx, e| {
         if e.rank < ctx.names.len() {
             // dependent everywhere: the claim's range already fails
             return Verdict::new(Status::Fails, MAXIMAL, Vec::<String>::new());
