@@ -29,7 +29,7 @@ fn verdict(path: &str, id: &str) -> String {
 /// The verdict and evidence of one claim of a spec file. Verdicts come from
 /// counted budgets; the wall-clock limit only cuts a run off, so it is set
 /// far above what these claims take on a loaded machine (some take 10 s).
-fn claim(path: &str, id: &str) -> (String, String) {
+pub(crate) fn claim(path: &str, id: &str) -> (String, String) {
     let text = stdout_ok(&[
         "audit",
         "--spec",

@@ -6,28 +6,8 @@
 
 use std::path::PathBuf;
 
-use trig_e2e::{example, stdout_ok};
-
-/// The verdict and evidence (JSON text) of one claim of a spec file.
-fn claim(path: &str, id: &str) -> (String, String) {
-    let text = stdout_ok(&[
-        "audit",
-        "--spec",
-        path,
-        "--claim",
-        id,
-        "--format",
-        "json",
-        "--time-limit",
-        "600",
-    ]);
-    let json: serde_json::Value = serde_json::from_str(&text).expect("json");
-    let c = &json["claims"][0];
-    (
-        c["verdict"].as_str().unwrap_or_default().to_string(),
-        c["evidence"].to_string(),
-    )
-}
+use crate::cli_spec_engine::claim;
+use trig_e2e::example;
 
 /// A copy of a shipped example with extra claims appended, for one test.
 fn with_claims(name: &str, claims: &str) -> String {
