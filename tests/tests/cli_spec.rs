@@ -198,3 +198,38 @@ fn bad_spec_files_are_one_line_errors_with_a_position() {
     let out = run(&["audit", "--spec", &unknown]);
     assert_eq!(out.status.code(), Some(2));
 }
+
+/// A reader corrects a paper without touching Rust (issue 41's test, on the
+/// thesis's own spec file): a copy of `examples/thesis-cubic.toml` with the
+/// printed C¹ formula `Q1 = 2 P3 − P2` edited is audited anew — a flipped
+/// sign is a correctable misprint (the correction and a witness named), a
+/// wrong coefficient fails with the witness `P3 = 1, P2 = 0`: printed 3,
+/// derived 2.
+#[test]
+fn an_edited_printed_formula_in_a_copied_spec_file_is_caught() {
+    let text = std::fs::read_to_string(example("thesis-cubic.toml")).expect("example");
+    let printed = r#"conditions = ["Q0 = P3", "Q1 = 2*P3 - P2"]"#;
+    assert!(text.contains(printed), "the printed C¹ formula");
+    let verdict = |edited: &str, name: &str| {
+        let path = crate::cli_spec_features::spec_file(name, &text.replace(printed, edited));
+        stdout_ok(&["audit", "--spec", &path, "--claim", "C1-join"])
+    };
+    let md = verdict(
+        r#"conditions = ["Q0 = P3", "Q1 = 2*P3 + P2"]"#,
+        "thesis-sign.toml",
+    );
+    assert!(
+        md.contains("C1-join — holds-after-correction")
+            && md.contains("flip the sign of the printed term P₂ in the formula for Q₁"),
+        "{md}"
+    );
+    let md = verdict(
+        r#"conditions = ["Q0 = P3", "Q1 = 3*P3 - P2"]"#,
+        "thesis-coefficient.toml",
+    );
+    assert!(
+        md.contains("C1-join — fails")
+            && md.contains("at `P₃ = 1, P₂ = 0`: printed Q₁ = `3`, derived Q₁ = `2`"),
+        "{md}"
+    );
+}
