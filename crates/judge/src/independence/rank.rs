@@ -103,7 +103,7 @@ fn value_text(q: &Rational, pi: bool) -> String {
 impl Context<'_> {
     pub(super) fn header(&self) -> String {
         format!(
-            "coefficient matrix of {} over their common denominator in the {} monomials t^a·c^b·s^e (e ≤ 1) of their numerators ({} × {})",
+            "coefficient matrix of {} times their common denominator (each row also times its function's denominator factors free of the variable; the minors below are of this matrix) in the {} monomials t^a·c^b·s^e (e ≤ 1) of their numerators ({} × {})",
             self.names.join(", "),
             self.matrix.columns.len(),
             self.names.len(),
