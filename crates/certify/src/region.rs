@@ -153,32 +153,13 @@ pub fn classify(
 /// `params`, splitting undecided cells up to `max_depth` times. Cells
 /// never straddle the lines `splits` (e.g. a claimed box's edges), so
 /// each cell is inside or outside such a box.
-pub fn region(
-    fs: &[Sym],
-    names: &[&str],
-    trig: bool,
-    params: [&str; 2],
-    window: ([Rational; 2], [Rational; 2]),
-    splits: [&[Rational]; 2],
-    max_depth: u32,
-) -> Region {
-    region_by(
-        fs,
-        names,
-        trig,
-        params,
-        window,
-        splits,
-        max_depth,
-        |lo, hi| classify(fs, trig, params, lo, hi),
-    )
-}
-
-/// [`region`] with another classification of the cells (the edge still
-/// lies on the boundary polynomials of `fs`): the region of a property
-/// of which `fs ≥ 0` are necessary conditions.
+///
+/// The cells are classified by `classify` — [`classify`] for the region
+/// where every function of `fs` is nonnegative, another for a property of
+/// which `fs ≥ 0` are necessary conditions (the edge lies on the boundary
+/// polynomials of `fs` either way).
 #[allow(clippy::too_many_arguments)]
-pub fn region_by(
+pub fn region(
     fs: &[Sym],
     names: &[&str],
     trig: bool,
@@ -207,7 +188,7 @@ pub fn region_by(
 /// The window cut at the split lines, each cell classified by `classify`
 /// and split into four while it is [`CellKind::Boundary`], down to
 /// `max_depth`: the cells, sorted.
-pub fn quadtree(
+fn quadtree(
     window: &([Rational; 2], [Rational; 2]),
     splits: [&[Rational]; 2],
     max_depth: u32,
@@ -304,14 +285,16 @@ mod tests {
         let (t, p, q) = (Sym::var("t"), Sym::var("p"), Sym::var("q"));
         let f = Sym::one() - &((p + &q) * &t);
         let r = |n: i64| Rational::from(n);
+        let fs = [f];
         let reg = region(
-            &[f],
+            &fs,
             &["f"],
             false,
             ["p", "q"],
             ([r(-2), r(-2)], [r(2), r(2)]),
             [&[], &[]],
             5,
+            |lo, hi| classify(&fs, false, ["p", "q"], lo, hi),
         );
         let inside = reg.count(|k| *k == CellKind::Inside);
         let outside = reg.count(|k| matches!(k, CellKind::Outside { .. }));

@@ -27,7 +27,6 @@
 //! open domain, factor by factor of the Wronskian's exact quotient: every
 //! factor must keep one strict sign there.
 
-use rug::Rational;
 use trig_core::Domain;
 use trig_symbolic::Sym;
 
@@ -53,33 +52,15 @@ pub fn wronskian(fs: &[Sym], domain: &Domain) -> Sym {
 }
 
 /// One Wronskian of consecutive functions `b_first, …, b_last` and what was
-/// decided of its sign on the open domain.
+/// decided of its sign on the open domain, for every parameter: `> 0`
+/// proved, `< 0` at a certified point (the numerator of `W = N/D` times
+/// the sign of `D` there), or undecided.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Run {
     pub first: usize,
     pub last: usize,
     pub wronskian: Sym,
-    pub sign: RunSign,
-}
-
-/// The sign of a run's Wronskian on the open domain, for every parameter.
-#[derive(Debug, Clone, PartialEq)]
-pub enum RunSign {
-    /// `> 0` everywhere (proved), after this many boxes.
-    Positive { boxes: usize },
-    /// `< 0` at a point (certified): total positivity is refuted.
-    Negative {
-        /// The point `x = a + Lτ` and the parameters (units of π on π
-        /// axes), exactly.
-        tau: Rational,
-        params: Vec<Rational>,
-        x: f64,
-        /// A certified enclosure of the numerator's value with the
-        /// denominator's sign taken out (`hi < 0`).
-        value: (f64, f64),
-    },
-    /// Not decided (the reason).
-    Undecided(String),
+    pub sign: Outcome,
 }
 
 /// The criterion on the whole basis: the runs decided in order of length
@@ -97,14 +78,14 @@ impl Criterion {
             && self
                 .runs
                 .iter()
-                .all(|r| matches!(r.sign, RunSign::Positive { .. }))
+                .all(|r| matches!(r.sign, Outcome::Proved { .. }))
     }
 
     /// The run whose Wronskian is negative at a point, if any.
     pub fn refuting(&self) -> Option<&Run> {
         self.runs
             .iter()
-            .find(|r| matches!(r.sign, RunSign::Negative { .. }))
+            .find(|r| matches!(r.sign, Outcome::Negative { .. }))
     }
 
     /// Box evaluations spent on the proved runs.
@@ -112,7 +93,7 @@ impl Criterion {
         self.runs
             .iter()
             .map(|r| match r.sign {
-                RunSign::Positive { boxes } => boxes,
+                Outcome::Proved { boxes } => boxes,
                 _ => 0,
             })
             .sum()
@@ -137,7 +118,7 @@ pub fn consecutive(fs: &[Sym], domain: &Domain, axes: &[Axis]) -> Result<Criteri
             .collect();
         let signs = trig_core::parallel::map(&this, |(_, w)| sign_inside(w, domain, axes));
         for ((first, w), sign) in this.into_iter().zip(signs) {
-            let stop = !matches!(sign, RunSign::Positive { .. });
+            let stop = !matches!(sign, Outcome::Proved { .. });
             runs.push(Run {
                 first,
                 last: first + len - 1,
@@ -157,9 +138,9 @@ pub fn consecutive(fs: &[Sym], domain: &Domain, axes: &[Axis]) -> Result<Criteri
 /// numerator factor of one strict sign on the open domain, the product
 /// `+`; a factor found negative where the product should be positive gives
 /// the whole numerator's counterexample.
-fn sign_inside(w: &Sym, domain: &Domain, axes: &[Axis]) -> RunSign {
+fn sign_inside(w: &Sym, domain: &Domain, axes: &[Axis]) -> Outcome {
     if w.is_zero() {
-        return RunSign::Undecided("the Wronskian vanishes identically".into());
+        return Outcome::Undecided("the Wronskian vanishes identically".into());
     }
     let mut denominator = Sign::Plus;
     let mut boxes = 0;
@@ -173,7 +154,7 @@ fn sign_inside(w: &Sym, domain: &Domain, axes: &[Axis]) -> RunSign {
                 }
             }
             Err(why) => {
-                return RunSign::Undecided(format!(
+                return Outcome::Undecided(format!(
                     "the sign of its denominator factor {g} was not proved: {why}"
                 ));
             }
@@ -211,7 +192,7 @@ fn sign_inside(w: &Sym, domain: &Domain, axes: &[Axis]) -> RunSign {
         }
     }
     if sign == Sign::Plus {
-        RunSign::Positive { boxes }
+        Outcome::Proved { boxes }
     } else {
         // every factor strictly signed and the product negative: `W < 0`
         // everywhere inside; the whole numerator gives the point
@@ -220,36 +201,22 @@ fn sign_inside(w: &Sym, domain: &Domain, axes: &[Axis]) -> RunSign {
 }
 
 /// A factor whose sign was not decided, named when it is short.
-fn undecided_factor(g: &Sym, why: &str) -> RunSign {
+fn undecided_factor(g: &Sym, why: &str) -> Outcome {
     let text = g.to_unicode();
     let named = if text.chars().count() <= 60 {
         format!("its factor {text}")
     } else {
         "a factor of its numerator".to_string()
     };
-    RunSign::Undecided(format!("the sign of {named}: {why}"))
+    Outcome::Undecided(format!("the sign of {named}: {why}"))
 }
 
 /// The numerator of `w`, signed by its denominator (`sign`), decided as a
 /// whole: positive inside, or a certified negative point.
-fn whole_numerator(w: &Sym, sign: Sign, domain: &Domain, axes: &[Axis]) -> RunSign {
+fn whole_numerator(w: &Sym, sign: Sign, domain: &Domain, axes: &[Axis]) -> Outcome {
     let n = Sym::from_poly(w.numerator().clone());
     let signed = if sign == Sign::Minus { -n } else { n };
-    match branch::positive_inside(&signed, domain, axes) {
-        Outcome::Proved { boxes } => RunSign::Positive { boxes },
-        Outcome::Negative {
-            tau,
-            params,
-            x,
-            value,
-        } => RunSign::Negative {
-            tau,
-            params,
-            x,
-            value,
-        },
-        Outcome::Undecided(why) => RunSign::Undecided(why),
-    }
+    branch::positive_inside(&signed, domain, axes)
 }
 
 #[cfg(test)]
@@ -297,7 +264,7 @@ mod tests {
         // b1 = t(t − 1/2) < 0 on (0, 1/2): a negative 1 × 1 run, found
         // before any longer Wronskian is decided
         let t = v("t");
-        let half = Sym::rational(Rational::from((1, 2)));
+        let half = Sym::rational(rug::Rational::from((1, 2)));
         let fs = vec![Sym::one() - &t, t.clone() * &(t.clone() - &half)];
         let c = consecutive(&fs, &poly(), &[]).expect("small basis");
         let run = c.refuting().expect("t² − t/2 < 0 near t = 0");
@@ -312,7 +279,7 @@ mod tests {
         let c = consecutive(&fs, &poly(), &[]).expect("small basis");
         assert!(c.refuting().is_none() && !c.proved(2));
         assert!(
-            matches!(c.runs.last().map(|r| &r.sign), Some(RunSign::Undecided(why)) if why.contains("identically"))
+            matches!(c.runs.last().map(|r| &r.sign), Some(Outcome::Undecided(why)) if why.contains("identically"))
         );
     }
 

@@ -19,7 +19,7 @@
 use rug::Rational;
 use trig_certify::boundary::{candidates, end_conditions};
 use trig_certify::range::EndPoint;
-use trig_certify::region::{CellKind, Region, region_by};
+use trig_certify::region::{CellKind, Region, region};
 use trig_certify::{Bound, ParamBox};
 use trig_symbolic::Sym;
 
@@ -373,7 +373,7 @@ pub fn classify_window_by(
             .collect()
     };
     let (s0, s1) = (ends(&axes[0].set), ends(&axes[1].set));
-    region_by(
+    region(
         fs,
         names,
         trig,

@@ -10,7 +10,8 @@
 //! point refutes it (collocation at coalescing points).
 
 use trig_certify::branch::Axis;
-use trig_certify::wronskian::{self, Run, RunSign};
+use trig_certify::branch::Outcome;
+use trig_certify::wronskian::{self, Run};
 use trig_core::ParamRange;
 use trig_symbolic::Sym;
 
@@ -197,11 +198,11 @@ fn open_domain<B: ExactBasis>(basis: &B, axes: &[Axis]) -> String {
 fn run_line(run: &Run, names: &[String], var: &str, symbols: &[String]) -> Evidence {
     let label = format!("W({})", names[run.first..=run.last].join(", "));
     let (text, status) = match &run.sign {
-        RunSign::Positive { boxes } => (
+        Outcome::Proved { boxes } => (
             format!("{label} > 0 on the open domain (proved, {boxes} boxes)"),
             Status::Holds,
         ),
-        RunSign::Negative {
+        Outcome::Negative {
             tau,
             params,
             x,
@@ -227,7 +228,7 @@ fn run_line(run: &Run, names: &[String], var: &str, symbols: &[String]) -> Evide
             ),
             Status::Fails,
         ),
-        RunSign::Undecided(why) => (
+        Outcome::Undecided(why) => (
             format!("{label}: its sign on the open domain was not decided ({why})"),
             Status::NotCheckable,
         ),

@@ -398,16 +398,7 @@ fn closed_ends(r: &ParamRange) -> Vec<Rational> {
 fn face_set(ctx: &Context<'_>, k: usize, a: &Rational) -> (Vec<String>, Option<Vec<Rational>>) {
     let name = &ctx.params[k].name;
     let head = format!("face {} = {a}", ctx.params[k].symbol);
-    let rows: Vec<Vec<Poly>> = ctx
-        .matrix
-        .rows
-        .iter()
-        .map(|row| {
-            row.iter()
-                .map(|e| e.subs(name, &Poly::constant(a.clone())))
-                .collect()
-        })
-        .collect();
+    let rows = ctx.matrix.rows_with(name, a);
     let Some(minors) = minors_of(&rows) else {
         return (
             vec![format!("{head}: too many maximal minors, not computed")],

@@ -44,6 +44,18 @@ pub struct Coefficients {
     pub scales: Vec<Poly>,
 }
 
+impl Coefficients {
+    /// The rows with the parameter `name` set to `a` (a face or slab of the
+    /// parameter box).
+    pub fn rows_with(&self, name: &str, a: &rug::Rational) -> Vec<Vec<Poly>> {
+        let value = Poly::constant(a.clone());
+        self.rows
+            .iter()
+            .map(|row| row.iter().map(|e| e.subs(name, &value)).collect())
+            .collect()
+    }
+}
+
 fn in_variable(p: &Poly) -> bool {
     p.variables()
         .iter()

@@ -272,16 +272,7 @@ fn piece(ctx: &Context<'_>, i: usize, p: &Piece) -> (Option<bool>, String) {
                     ),
                 );
             }
-            let rows: Vec<Vec<Poly>> = ctx
-                .matrix
-                .rows
-                .iter()
-                .map(|row| {
-                    row.iter()
-                        .map(|e| e.subs(pname, &Poly::constant(a.clone())))
-                        .collect()
-                })
-                .collect();
+            let rows = ctx.matrix.rows_with(pname, a);
             match echelon_poly(&rows) {
                 Ok(e) if e.rank < n => (
                     Some(true),
