@@ -237,3 +237,30 @@ fn run_line(run: &Run, names: &[String], var: &str, symbols: &[String]) -> Evide
         .with(label.as_str(), Expr::new(&run.wronskian))
         .about("total positivity", status)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use trig_core::{Domain, Variable};
+
+    fn point(q: i64) -> Vec<Axis> {
+        vec![Axis {
+            lo: rug::Rational::from(q),
+            hi: rug::Rational::from(q),
+            lo_open: false,
+            hi_open: false,
+            pi: false,
+        }]
+    }
+
+    /// Continuity at a range end is what carries total positivity to it:
+    /// a denominator vanishing there must refuse it.
+    #[test]
+    fn continuity_needs_every_denominator_nonzero() {
+        let domain = Domain::from_variable(Variable::Polynomial, &["alpha"]);
+        let f = Sym::var("t") / &(Sym::var("alpha") + &Sym::one());
+        assert!(continuous(std::slice::from_ref(&f), &domain, &point(0)).is_ok());
+        let why = continuous(&[f], &domain, &point(-1)).expect_err("1/(α + 1) at α = −1");
+        assert!(why.contains("not proved nonzero"), "{why}");
+    }
+}
