@@ -30,9 +30,10 @@ mod thesis_tables;
 mod thesis_text;
 mod total_positivity;
 
-/// All claims, in report order.
+/// All claims, in report order: by document ([`crate::Seed::ALL`]), each
+/// document's claims in the order listed here.
 pub fn all() -> Vec<Claim> {
-    [
+    let mut claims = [
         thesis::CLAIMS,
         thesis_interp::CLAIMS,
         thesis_joins::CLAIMS,
@@ -56,5 +57,7 @@ pub fn all() -> Vec<Claim> {
         local_control::CLAIMS,
         total_positivity::CLAIMS,
     ]
-    .concat()
+    .concat();
+    claims.sort_by_key(|c| crate::Seed::ALL.iter().position(|s| *s == c.seed));
+    claims
 }
