@@ -11,40 +11,55 @@ use std::sync::OnceLock;
 
 use trig_report::{self as report, View};
 use trig_verification::Entry;
-use trig_verification::{Outcome, Seed, Status, run};
+use trig_verification::{Status, run};
 
 /// The whole audit, run once for the tests of this file.
-pub(crate) fn outcomes() -> &'static [Outcome] {
-    static ALL: OnceLock<Vec<Outcome>> = OnceLock::new();
-    ALL.get_or_init(|| run(None, None))
+pub(crate) fn entries() -> &'static [Entry] {
+    static ALL: OnceLock<Vec<Entry>> = OnceLock::new();
+    ALL.get_or_init(|| run(None, None).expect("the document files"))
 }
 
-pub(crate) fn entries() -> Vec<Entry> {
-    trig_verification::entry::entries(outcomes())
+/// The Markdown report of the whole audit.
+pub(crate) fn markdown() -> String {
+    report::markdown_entries(entries(), report::BUILTIN_INTRO, &View::default())
 }
 
-fn check_seed(seed: Seed) {
-    let outcomes: Vec<&Outcome> = outcomes().iter().filter(|o| o.claim.seed == seed).collect();
-    assert!(!outcomes.is_empty(), "{seed:?} has claims");
-    // the seed filter of `run` selects the same claims
-    let ids = |o: &[&Outcome]| o.iter().map(|o| o.claim.id).collect::<Vec<_>>();
-    if seed == Seed::S003 {
-        let filtered = run(Some(seed), None);
-        assert_eq!(ids(&filtered.iter().collect::<Vec<_>>()), ids(&outcomes));
+/// The JSON report of the whole audit.
+pub(crate) fn json() -> report::Report {
+    report::json_entries(entries(), report::BUILTIN_INTRO, &View::default())
+}
+
+/// The LaTeX report of the whole audit, a complete document.
+pub(crate) fn tex() -> String {
+    let standalone = report::TexOptions {
+        standalone: true,
+        output_dir: None,
+    };
+    report::tex_entries(
+        entries(),
+        report::BUILTIN_INTRO,
+        &View::default(),
+        &standalone,
+    )
+}
+
+fn check_document(id: &str) {
+    let of_document: Vec<&Entry> = entries().iter().filter(|e| e.document.id == id).collect();
+    assert!(!of_document.is_empty(), "{id} has claims");
+    // the document filter of `run` selects the same claims
+    let ids = |o: &[&Entry]| o.iter().map(|e| e.id.clone()).collect::<Vec<_>>();
+    if id == "003" {
+        let filtered = run(Some(id), None).expect("the document files");
+        assert_eq!(ids(&filtered.iter().collect::<Vec<_>>()), ids(&of_document));
     }
-    for o in outcomes {
-        assert_eq!(o.claim.seed, seed);
-        assert!(
-            !o.verdict.evidence.is_empty(),
-            "{} has evidence",
-            o.claim.id
-        );
-        assert!(!o.verdict.method.is_empty(), "{} says how", o.claim.id);
-        if o.verdict.status == Status::HoldsAfterCorrection {
+    for e in of_document {
+        assert!(!e.verdict.evidence.is_empty(), "{} has evidence", e.id);
+        assert!(!e.verdict.method.is_empty(), "{} says how", e.id);
+        if e.verdict.status == Status::HoldsAfterCorrection {
             assert!(
-                o.verdict.correction.is_some(),
+                e.verdict.correction.is_some(),
                 "{} names its correction",
-                o.claim.id
+                e.id
             );
         }
     }
@@ -52,35 +67,32 @@ fn check_seed(seed: Seed) {
 
 #[test]
 fn seed_001_thesis() {
-    check_seed(Seed::S001);
+    check_document("001");
 }
 
 #[test]
 fn seed_000_majeed_et_al() {
-    check_seed(Seed::S000);
+    check_document("000");
 }
 
 #[test]
 fn seed_002_quartic_bezier() {
-    check_seed(Seed::S002);
+    check_document("002");
 }
 
 #[test]
 fn seed_003_missing_formulas() {
-    check_seed(Seed::S003);
+    check_document("003");
 }
 
 #[test]
 fn seed_004_eh_spline() {
-    check_seed(Seed::S004);
+    check_document("004");
 }
 
 #[test]
 fn claim_ids_are_unique() {
-    let mut ids: Vec<&str> = trig_verification::all_claims()
-        .iter()
-        .map(|c| c.id)
-        .collect();
+    let mut ids: Vec<&str> = entries().iter().map(|e| e.id.as_str()).collect();
     let n = ids.len();
     ids.sort_unstable();
     ids.dedup();
@@ -89,7 +101,7 @@ fn claim_ids_are_unique() {
 
 #[test]
 fn every_claim_that_does_not_hold_shows_a_witness() {
-    let md = report::markdown(outcomes());
+    let md = markdown();
     for e in entries() {
         if matches!(
             e.verdict.status,
@@ -110,7 +122,7 @@ fn every_claim_that_does_not_hold_shows_a_witness() {
 
 #[test]
 fn the_markdown_report_is_short_and_its_lines_readable() {
-    let md = report::markdown(outcomes());
+    let md = markdown();
     // about 1.5 KB a claim: 119 claims of the first list and the 64 of the
     // second, whose evidence lists more parts (quoted figures against
     // tables, a witness per property and basis)
@@ -131,7 +143,7 @@ fn summary_and_verdict_filter() {
         verdicts: vec![Status::Fails],
         ..View::default()
     };
-    let md = report::markdown_entries(&entries, report::BUILTIN_INTRO, &view);
+    let md = report::markdown_entries(entries, report::BUILTIN_INTRO, &view);
     let fails = entries
         .iter()
         .filter(|e| e.verdict.status == Status::Fails)
@@ -165,12 +177,12 @@ fn redacted(v: serde_json::Value) -> serde_json::Value {
 
 #[test]
 fn report_markdown_snapshot() {
-    insta::assert_snapshot!("report_md", report::markdown(outcomes()));
+    insta::assert_snapshot!("report_md", markdown());
 }
 
 #[test]
 fn report_json_snapshot() {
-    let value = serde_json::to_value(report::json(outcomes())).expect("JSON");
+    let value = serde_json::to_value(json()).expect("JSON");
     insta::assert_json_snapshot!("report_json", redacted(value));
 }
 
@@ -199,7 +211,7 @@ fn the_published_schema_is_the_generated_one() {
 #[test]
 fn the_json_report_validates_against_the_published_schema() {
     let validator = jsonschema::validator_for(&published_schema()).expect("a valid schema");
-    let report = serde_json::to_value(report::json(outcomes())).expect("JSON");
+    let report = serde_json::to_value(json()).expect("JSON");
     let errors: Vec<String> = validator
         .iter_errors(&report)
         .take(5)
@@ -217,7 +229,7 @@ fn the_json_report_validates_against_the_published_schema() {
         ..View::default()
     };
     let short = serde_json::to_value(report::json_entries(
-        &entries(),
+        entries(),
         report::BUILTIN_INTRO,
         &view,
     ))
@@ -227,7 +239,7 @@ fn the_json_report_validates_against_the_published_schema() {
 
 #[test]
 fn the_latex_report_maps_every_character_and_compiles() {
-    let tex = report::tex(outcomes());
+    let tex = tex();
     assert!(trig_tex::unmapped(&tex).is_empty());
     assert!(tex.is_ascii(), "every character mapped to ASCII LaTeX");
     assert!(!tex.contains("[U+"), "no unmapped character");

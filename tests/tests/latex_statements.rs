@@ -8,7 +8,7 @@
 use trig_report::{self as report, TexOptions, View};
 use trig_tex::marked::{CLOSE, OPEN, check};
 use trig_tex::{FRAGMENT_PACKAGES, compile, marked, plain};
-use trig_verification::{all_claims, run};
+use trig_verification::run;
 
 /// The formulas of marked text.
 fn formulas(text: &str) -> Vec<&str> {
@@ -37,14 +37,14 @@ fn is_label(word: &str, ids: &[&str]) -> bool {
 
 #[test]
 fn every_statement_marks_its_math_and_no_label_is_math() {
-    let claims = all_claims();
-    let ids: Vec<&str> = claims.iter().map(|c| c.id).collect();
+    let claims = crate::audit::entries();
+    let ids: Vec<&str> = claims.iter().map(|c| c.id.as_str()).collect();
     let mut marked_statements = 0;
-    for c in &claims {
-        check(c.statement).unwrap_or_else(|e| panic!("{}: {e}: {}", c.id, c.statement));
-        let shown = plain(c.statement);
+    for c in claims {
+        check(&c.statement).unwrap_or_else(|e| panic!("{}: {e}: {}", c.id, c.statement));
+        let shown = plain(&c.statement);
         assert!(!shown.contains([OPEN, CLOSE]), "{}", c.id);
-        for f in formulas(c.statement) {
+        for f in formulas(&c.statement) {
             for word in f.split(' ') {
                 assert!(
                     !is_label(word, &ids),
@@ -53,7 +53,7 @@ fn every_statement_marks_its_math_and_no_label_is_math() {
                 );
             }
         }
-        let tex = marked(c.statement);
+        let tex = marked(&c.statement);
         assert!(tex.is_ascii() && !tex.contains("[U+"), "{}: {tex}", c.id);
         assert!(!tex.contains(['⟪', '⟫']), "{}", c.id);
         if c.statement.contains(OPEN) {
@@ -71,11 +71,12 @@ fn every_statement_marks_its_math_and_no_label_is_math() {
 
 #[test]
 fn the_reports_show_statements_as_printed() {
-    let outcomes = run(Some(trig_verification::Seed::S001), Some("T4"));
-    let md = report::markdown(&outcomes);
-    let json = serde_json::to_string(&report::json(&outcomes)).expect("JSON");
-    let tex = report::tex(&outcomes);
-    let statement = outcomes[0].claim.statement;
+    let entries = run(Some("001"), Some("T4")).expect("the document files");
+    let (intro, view) = (report::BUILTIN_INTRO, View::default());
+    let md = report::markdown_entries(&entries, intro, &view);
+    let json = serde_json::to_string(&report::json_entries(&entries, intro, &view)).expect("JSON");
+    let tex = report::tex_entries(&entries, intro, &view, &TexOptions::default());
+    let statement = &entries[0].statement;
     assert!(statement.contains(OPEN));
     assert!(
         md.contains("H\\_i(u; β) = H\\_{2−i}(π/2 − u; β) (as printed)"),
@@ -91,9 +92,9 @@ fn the_reports_show_statements_as_printed() {
 
 #[test]
 fn every_statement_compiles() {
-    let body: String = all_claims()
+    let body: String = crate::audit::entries()
         .iter()
-        .map(|c| format!("{}: {}\\par\n", c.id, marked(c.statement)))
+        .map(|c| format!("{}: {}\\par\n", c.id, marked(&c.statement)))
         .collect();
     match compile(&trig_tex::document(&body), "statements") {
         Some(log) => {
@@ -106,13 +107,13 @@ fn every_statement_compiles() {
 
 #[test]
 fn the_report_compiles_as_a_fragment_in_a_plain_article_and_as_a_document() {
-    let entries = trig_verification::entry::entries(&run(None, None));
+    let entries = crate::audit::entries();
     let tex = |standalone| {
         let options = TexOptions {
             standalone,
             output_dir: None,
         };
-        report::tex_entries(&entries, report::BUILTIN_INTRO, &View::default(), &options)
+        report::tex_entries(entries, report::BUILTIN_INTRO, &View::default(), &options)
     };
     let part = tex(false);
     assert!(!part.contains("\\documentclass") && !part.contains("\\begin{document}"));

@@ -11,9 +11,8 @@
 //! cannot pass by matching nothing.
 
 use regex::Regex;
-use trig_report as report;
 
-use crate::audit::{entries, outcomes};
+use crate::audit::{entries, json, markdown, tex};
 
 /// A garbled pattern: its name and the regular expression that finds it.
 struct Pattern {
@@ -129,21 +128,21 @@ fn every_pattern_finds_its_example() {
 
 #[test]
 fn no_garbled_line_in_the_markdown_report() {
-    let md = report::markdown(outcomes());
+    let md = markdown();
     let found = garbled(&md, &patterns());
     assert!(found.is_empty(), "{}", report_error("Markdown", &found));
 }
 
 #[test]
 fn no_garbled_line_in_the_latex_report() {
-    let tex = report::tex(outcomes());
+    let tex = tex();
     let found = garbled(&tex, &patterns());
     assert!(found.is_empty(), "{}", report_error("LaTeX", &found));
 }
 
 #[test]
 fn no_garbled_line_in_the_json_report() {
-    let value = serde_json::to_value(report::json(outcomes())).expect("JSON");
+    let value = serde_json::to_value(json()).expect("JSON");
     let mut strings = Vec::new();
     json_strings(&value, "", &mut strings);
     let text = strings.join("\n");
@@ -187,7 +186,7 @@ fn no_correction_repeats_the_printed_statement() {
 /// a point in `s`, `c` gives `theta`.
 #[test]
 fn witness_points_name_the_symbols_of_their_expressions() {
-    let value = serde_json::to_value(report::json(outcomes())).expect("JSON");
+    let value = serde_json::to_value(json()).expect("JSON");
     let mut checked = 0;
     for claim in value["claims"].as_array().expect("claims") {
         for item in claim["evidence"].as_array().into_iter().flatten() {

@@ -7,9 +7,6 @@
 //! no formula) leaves the reader nothing to substitute into.
 
 use serde_json::Value;
-use trig_report as report;
-
-use crate::audit::outcomes;
 
 /// Why the witness of `item` cannot be re-checked by substitution, if it
 /// cannot.
@@ -60,7 +57,7 @@ fn values_only(report: &Value) -> (usize, Vec<String>) {
 
 #[test]
 fn every_failing_witness_has_an_expression_to_substitute_into() {
-    let report = serde_json::to_value(report::json(outcomes())).expect("JSON");
+    let report = serde_json::to_value(crate::audit::json()).expect("JSON");
     let (total, found) = values_only(&report);
     assert!(total > 100, "{total} witnesses of claims that do not hold");
     assert!(

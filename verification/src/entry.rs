@@ -1,13 +1,12 @@
 //! One claim of the audit with its computed verdict, owned ([`Entry`]), in
-//! its document ([`Document`]): what the report renders. Built-in outcomes
-//! ([`Outcome`]) and the claims of a spec file ([`crate::spec_audit`]) give
-//! the same entries, so both report exactly alike.
+//! its document ([`Document`]): what the report renders. The claims of a
+//! document file ([`crate::documents`]) and of a spec file
+//! ([`crate::spec_audit`]) give the same entries, so both report exactly
+//! alike.
 
 use trig_verdict::{Evidence, Verdict, Witness};
 
-use crate::Outcome;
-use crate::claim::Seed;
-use crate::figures::{self, Figure};
+use crate::figures::Figure;
 
 /// A document of the report: a seed of `shared/seeds/` or a spec file.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -21,26 +20,11 @@ pub struct Document {
     pub file: String,
     /// Where the document is, as the Markdown section states it.
     pub location: String,
-    /// Sort key of the sections (seeds in [`Seed::ALL`] order first).
+    /// Sort key of the sections (the document files' order first).
     pub order: usize,
     /// The tool's own checks of a basis (a spec's standard battery), not
     /// claims the document makes: reported apart, with their own counts.
     pub battery: bool,
-}
-
-impl Document {
-    /// The document of a seed.
-    pub fn seed(seed: Seed) -> Document {
-        Document {
-            heading: format!("Seed {}", seed.id()),
-            id: seed.id().to_string(),
-            title: seed.title().to_string(),
-            file: seed.file().to_string(),
-            location: format!("shared/seeds/{}", seed.file()),
-            order: Seed::ALL.iter().position(|s| *s == seed).unwrap_or(0),
-            battery: false,
-        }
-    }
 }
 
 /// One claim of the report with its computed verdict.
@@ -67,22 +51,4 @@ impl Entry {
             .iter()
             .find_map(|e| e.witness.as_ref().map(|w| (e, w)))
     }
-}
-
-impl From<&Outcome> for Entry {
-    fn from(o: &Outcome) -> Entry {
-        Entry {
-            id: o.claim.id.to_string(),
-            document: Document::seed(o.claim.seed),
-            source: o.claim.source.to_string(),
-            statement: o.claim.statement.to_string(),
-            verdict: o.verdict.clone(),
-            figure: figures::for_claim(o.claim.id),
-        }
-    }
-}
-
-/// The entries of built-in outcomes.
-pub fn entries(outcomes: &[Outcome]) -> Vec<Entry> {
-    outcomes.iter().map(Entry::from).collect()
 }

@@ -13,7 +13,7 @@ use trig_verification::{Status, Verdict, run};
 const PREC: u32 = 256;
 
 fn verdict(id: &str) -> Verdict {
-    let mut o = run(None, Some(id));
+    let mut o = run(None, Some(id)).expect("the document files");
     assert_eq!(o.len(), 1, "{id}");
     o.remove(0).verdict
 }

@@ -117,7 +117,11 @@ fn malformed_shape_claims_are_refused() {
 /// the end weight b0); D15 compares curvatures at the common end P0.
 #[test]
 fn catalog_shape_claims_are_decided() {
-    let verdict = |id: &str| trig_verification::run(None, Some(id))[0].verdict.clone();
+    let verdict = |id: &str| {
+        trig_verification::run(None, Some(id)).expect("the document files")[0]
+            .verdict
+            .clone()
+    };
     for (id, status) in [
         ("T44", Status::Holds),
         ("T47", Status::Holds),

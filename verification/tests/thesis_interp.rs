@@ -4,7 +4,7 @@
 use trig_verification::{Status, Verdict, run};
 
 fn verdict(id: &str) -> Verdict {
-    let outcomes = run(None, Some(id));
+    let outcomes = run(None, Some(id)).expect("the document files");
     assert_eq!(outcomes.len(), 1, "{id} is registered once");
     outcomes[0].verdict.clone()
 }

@@ -103,7 +103,7 @@ fn squares_han_is_totally_positive_only_on_minus_one_to_one() {
 #[test]
 fn catalog_claims_of_total_positivity() {
     let status = |id: &str| {
-        let entries = run(None, Some(id));
+        let entries = run(None, Some(id)).expect("the document files");
         assert_eq!(entries.len(), 1, "{id}");
         entries[0].verdict.status
     };

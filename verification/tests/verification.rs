@@ -2,6 +2,7 @@
 
 mod certified;
 mod common;
+mod documents;
 mod fixed_values;
 mod joins;
 mod local_control;

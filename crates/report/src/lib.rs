@@ -5,9 +5,8 @@
 //! rendered from the same entries and the same structured evidence
 //! ([`trig_verdict::evidence`]). The text formats are one traversal of the
 //! report (`render`) with a writer per format; the JSON is the entries
-//! through serde. Entries ([`Entry`]) are owned, so claims built at run time
-//! (from a spec file, see [`trig_verification::spec_audit`]) report exactly
-//! like the built-in ones ([`Outcome`]).
+//! through serde. Entries ([`Entry`]) are owned: the claims of the
+//! document files and of a spec file report exactly alike.
 //!
 //! Every format has the same parts: a summary (counts by verdict and by
 //! document), an index (one line per claim), then one section per document
@@ -16,11 +15,11 @@
 //!
 //! ```
 //! use trig_report::{View, markdown_entries};
-//! use trig_verification::{entry::entries, run};
+//! use trig_verification::run;
 //!
 //! // the thesis's partition of unity (3.1), decided and rendered
-//! let outcomes = run(None, Some("T1"));
-//! let md = markdown_entries(&entries(&outcomes), "One claim.", &View::default());
+//! let entries = run(None, Some("T1")).unwrap();
+//! let md = markdown_entries(&entries, "One claim.", &View::default());
 //! assert!(md.starts_with("# trig-audit report"));
 //! assert!(md.contains("T1"));
 //! ```
@@ -31,8 +30,7 @@ pub mod markdown;
 mod render;
 
 use trig_verdict::Status;
-use trig_verification::entry::entries;
-use trig_verification::{Document, Entry, Outcome};
+use trig_verification::{Document, Entry};
 
 pub use json::{Report, SCHEMA_VERSION, json_entries, schema};
 pub use latex::{TexOptions, tex_entries};
@@ -40,6 +38,14 @@ pub use markdown::{markdown_entries, markdown_entries_in};
 
 /// The opening sentence of the built-in report.
 pub const BUILTIN_INTRO: &str = "Every verdict below is computed by `trig-audit audit` from the formulas as printed in `shared/seeds/`; identities are decided exactly in the symbolic ring, counterexamples in 256-bit MPFR.";
+
+/// The opening sentence of the report of one document file (`audit --spec
+/// documents/thesis/`): the same as the audit's, naming the file.
+pub fn document_intro(path: &str) -> String {
+    format!(
+        "Every verdict below is computed by `trig-audit audit --spec {path}` from the claims of the document file as printed; identities are decided exactly in the symbolic ring, counterexamples in 256-bit MPFR."
+    )
+}
 
 /// What a report shows: everything, or the short form (summary and index,
 /// no claim sections), optionally only some verdicts.
@@ -120,30 +126,6 @@ pub(crate) fn short(text: &str, max: usize) -> String {
     }
     let cut: String = text.chars().take(max - 1).collect();
     format!("{}…", cut.trim_end())
-}
-
-/// The built-in Markdown report.
-pub fn markdown(outcomes: &[Outcome]) -> String {
-    markdown_entries(&entries(outcomes), BUILTIN_INTRO, &View::default())
-}
-
-/// The built-in report as JSON.
-pub fn json(outcomes: &[Outcome]) -> Report {
-    json_entries(&entries(outcomes), BUILTIN_INTRO, &View::default())
-}
-
-/// The built-in report as a complete LaTeX document.
-pub fn tex(outcomes: &[Outcome]) -> String {
-    let standalone = TexOptions {
-        standalone: true,
-        output_dir: None,
-    };
-    tex_entries(
-        &entries(outcomes),
-        BUILTIN_INTRO,
-        &View::default(),
-        &standalone,
-    )
 }
 
 #[cfg(test)]

@@ -149,11 +149,18 @@ fn order_field(src: &Source<'_>, c: &RawClaim, order: &Spanned<i64>) -> Result<u
         })
 }
 
-/// Reads one claim.
 /// Reads the claims of the file into `spec`, whose functions are read;
 /// an id used twice is an error.
 pub(crate) fn attach(src: &Source<'_>, spec: &mut Spec, raw: &[RawClaim]) -> Result<()> {
     for c in raw {
+        if let Some(basis) = &c.basis {
+            return src.invalid(
+                basis.span(),
+                "claims.basis",
+                "a spec file states one basis: `basis` names one of a document file's `[bases]`"
+                    .into(),
+            );
+        }
         let claim = claim(src, spec, c)?;
         if spec.claims.iter().any(|d| d.id == claim.id) {
             return Err(SpecError::Invalid {
@@ -169,7 +176,7 @@ pub(crate) fn attach(src: &Source<'_>, spec: &mut Spec, raw: &[RawClaim]) -> Res
 
 /// The claims an umbrella (`check = "all"`) lists exist, and no umbrella
 /// lists itself through others.
-fn umbrellas(src: &Source<'_>, spec: &Spec) -> Result<()> {
+pub(crate) fn umbrellas(src: &Source<'_>, spec: &Spec) -> Result<()> {
     let parts = |id: &str| -> Vec<String> {
         match spec.claims.iter().find(|c| c.id == id).map(|c| &c.check) {
             Some(Check::All { claims }) => claims.clone(),
@@ -218,7 +225,7 @@ fn umbrellas(src: &Source<'_>, spec: &Spec) -> Result<()> {
     Ok(())
 }
 
-fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
+pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecClaim> {
     let id = c.id.get_ref().trim().to_string();
     if id.is_empty() {
         return src.invalid(c.id.span(), "claims.id", "expected a nonempty id".into());

@@ -85,4 +85,7 @@ pub struct RawClaim {
     pub reason: Option<Spanned<String>>,
     /// The statement is the negation of the check ("is not C⁴").
     pub negated: Option<bool>,
+    /// In a document file: the basis the claim is about (a name of its
+    /// `[bases]`).
+    pub basis: Option<Spanned<String>>,
 }

@@ -11,7 +11,7 @@ use trig_deriv::continuity::{Piece, continuity, curve_piece};
 use trig_symbolic::Sym;
 
 use super::local_control_joins::{d17, seed002_segment, t51, t54, t65};
-use crate::claim::{Claim, Seed};
+use crate::claim::Claim;
 use trig_judge::continuity::at_least;
 use trig_judge::exact::{IDENTITY, basis, identities, symbols};
 use trig_judge::local_control::{self, Control, Entry, compare};
@@ -23,58 +23,34 @@ use trig_verdict::verdict::Verdict;
 pub const CLAIMS: &[Claim] = &[
     Claim {
         id: "T48",
-        seed: Seed::S001,
-        source: "3.1, 3.3.4 (with 4.3.1: \"each value m_i influences the shape of the i-th curve segment\")",
-        statement: "⟪m⟫ provides local shape control: \"local modification can be made without influencing the rest of the curve\" (the spline of (3.7) with one ⟪m_i⟫ per segment)",
         check: t48,
     },
     Claim {
         id: "T51",
-        seed: Seed::S001,
-        source: "4.1.2 (iii) and the summary item (iii)",
-        statement: "⟪G²⟫: ⟪P'(1) = λQ'(0)⟫, ⟪P''(1) = μQ''(0) + γQ'(0)⟫, ⟪μ > 0⟫ matches the curvatures; \"⟪C²⟫ and ⟪G²⟫ … have the same velocity and acceleration vector\"",
         check: t51,
     },
     Claim {
         id: "T54",
-        seed: Seed::S001,
-        source: "(4.29) against (4.28)",
-        statement: "⟪G²⟫ interpolation end conditions ⟪P'(x_i) = αd_i⟫, ⟪P''(x_i) = α²D_{i+1} + βD_i⟫ agree with (4.28) ⟪P'_{i+1}(0) = αP'_i(1)⟫, ⟪P''_{i+1}(0) = α²P''_i(1) + βP'_i(1)⟫",
         check: t54,
     },
     Claim {
         id: "T65",
-        seed: Seed::S001,
-        source: "6.6, paragraph after Figure 6.7, with (4.4)–(4.6)",
-        statement: "the ⟪C¹⟫ refinement by (4.6) \"retains the corner points\" and \"will solely affect only the control points of ⟪V3⟫ of the first curve and ⟪V0⟫ for the next curve\"",
         check: t65,
     },
     Claim {
         id: "M20",
-        seed: Seed::S000,
-        source: "5.1.3 with (1) and Definition 3",
-        statement: "local control: changing a control point ⟪H_j⟫ or a weight ⟪w_j⟫ changes the rational / NURBS curve only on ⟪[n_j, n_{j+4})⟫",
         check: m20,
     },
     Claim {
         id: "D17",
-        seed: Seed::S002,
-        source: "§V, text after (8)",
-        statement: "⟪Q(u)⟫ interpolates the points; adding ⟪Q_{−1}⟫, ⟪Q_{n+1}⟫ (two knots, two parameters) gives an open interpolating curve; adding ⟪Q_{−1} = Q_n⟫, ⟪Q_{n+1} = Q_0⟫, ⟪Q_{n+2} = Q_1⟫ (three knots ⟪u_0⟫, ⟪u_n⟫, ⟪u_{n+1}⟫, three parameters ⟪α_0⟫, ⟪α_n⟫, ⟪α_{n+1}⟫) gives a closed one",
         check: d17,
     },
     Claim {
         id: "D19",
-        seed: Seed::S002,
-        source: "§I (\"The changes of a local shape parameter will only affect two curve segments\"), (6)–(7)",
-        statement: "⟪α_i⟫ enters only the segments ⟪Q_{i−1}⟫ and ⟪Q_i⟫ of (6)–(7)",
         check: d19,
     },
     Claim {
         id: "E24",
-        seed: Seed::S004,
-        source: "(2)–(3) (implicit \"piecewise … spline curve\")",
-        statement: "consecutive segments of (3) join continuously: ⟪R_i(1) = P_{i−2} = R_{i+1}(0)⟫, and ⟪R'⟫ matches in ⟪t⟫ (⟪C¹⟫ in ⟪u⟫ only when ⟪Δt_i = Δt_{i+1}⟫)",
         check: e24,
     },
 ];

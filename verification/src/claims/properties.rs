@@ -8,7 +8,7 @@ use trig_deriv::{End, Wrt, endpoint_derivatives};
 use trig_symbolic::Sym;
 
 use super::properties_formulas::{e19, e23, m21, t45, t63};
-use crate::claim::{Claim, Seed};
+use crate::claim::Claim;
 use trig_judge::exact::IDENTITY;
 use trig_judge::{endpoint, independence, nonnegative, span, unity};
 use trig_verdict::status::Status;
@@ -18,142 +18,82 @@ use trig_verdict::verdict::Verdict;
 pub const CLAIMS: &[Claim] = &[
     Claim {
         id: "T40",
-        seed: Seed::S001,
-        source: "1.2 and 2.3.1 (quoting Bashir et al.)",
-        statement: "\"polynomial splines are incapable of generating circular arcs and conical shapes\": no polynomial spline segment traces an arc of a conic",
         check: t40,
     },
     Claim {
         id: "T41",
-        seed: Seed::S001,
-        source: "1.2, 1.3, 1.5, 2.3.2 (implicit for (3.7))",
-        statement: "the proposed trigonometric spline (3.7) represents conic shapes (circular arcs) that polynomials cannot",
         check: t41,
     },
     Claim {
         id: "T43",
-        seed: Seed::S001,
-        source: "3.2.3, text after Figure 3.2",
-        statement: "⟪β = 0 ⇒ H0 ≡ H2 ≡ 0⟫, ⟪H1 ≡ 1⟫ (the curve is the single point ⟪P1⟫)",
         check: t43,
     },
     Claim {
         id: "T45",
-        seed: Seed::S001,
-        source: "3.2.4, text after (3.6) and Figure 3.3",
-        statement: "no finite ⟪β ≥ 0⟫ makes ⟪F(0) = P0⟫ or ⟪F(1) = P2⟫ (unless ⟪P1 = P0⟫ or ⟪P1 = P2⟫); the ends approach ⟪P0⟫, ⟪P2⟫ as ⟪β → ∞⟫",
         check: t45,
     },
     Claim {
         id: "T46",
-        seed: Seed::S001,
-        source: "3.2.4 Figure 3.3(a) text, 3.4",
-        statement: "the quadratic curve lies in the convex hull of ⟪P0⟫, ⟪P1⟫, ⟪P2⟫ (\"inside the control polygon\") and has geometric invariance, for ⟪β ≥ 0⟫",
         check: t46,
     },
     Claim {
         id: "T49",
-        seed: Seed::S001,
-        source: "3.4, 1.2",
-        statement: "cubic curves of (3.7) meet \"all the geometric properties\" of Bézier curves: ⟪Q(0) = P0⟫, ⟪Q(1) = P3⟫, end tangents along ⟪P1 − P0⟫ and ⟪P3 − P2⟫, convex hull, affine invariance, for ⟪m ∈ (−2, 1]⟫",
         check: t49,
     },
     Claim {
         id: "T50",
-        seed: Seed::S001,
-        source: "Definition 3.2 (implicit: \"four basis functions\")",
-        statement: "⟪b0 … b3⟫ of (3.7) are linearly independent for every ⟪m⟫",
         check: t50,
     },
     Claim {
         id: "T62",
-        seed: Seed::S001,
-        source: "6.6",
-        statement: "the common value 0.6 lies in the admissible interval of all four methods (⟪m ∈ (−2,1]⟫, ⟪η ∈ (1/2,2]⟫, ⟪λ ∈ [−2,1]⟫, ⟪α ∈ (0,2)⟫)",
         check: t62,
     },
     Claim {
         id: "T63",
-        seed: Seed::S001,
-        source: "(6.9)–(6.10)",
-        statement: "the chord-length parameters ⟪t_i = Σ_{r=1}^{i} DP_r / Σ_{r=1}^{N} DP_r⟫ satisfy ⟪t_1 = 0⟫, ⟪t_N = 1⟫, with ⟪DP_i = ‖P_{i+1} − P_i‖⟫ defined for the sums used",
         check: t63,
     },
     Claim {
         id: "M16",
-        seed: Seed::S000,
-        source: "3.1.1",
-        statement: "the curve (6) always lies in the convex hull of its control polygon",
         check: m16,
     },
     Claim {
         id: "M17",
-        seed: Seed::S000,
-        source: "3.1.2",
-        statement: "affine invariance ⟪L(Σ S_j F_j(n)) = Σ L(S_j) F_j(n)⟫ (sum written ⟪0 … n⟫)",
         check: m17,
     },
     Claim {
         id: "M18",
-        seed: Seed::S000,
-        source: "5.1.1",
-        statement: "rational and NURBS curves lie in the convex hull of the control polygon (Definition 3 allows \"non-negative weights\")",
         check: m18,
     },
     Claim {
         id: "M19",
-        seed: Seed::S000,
-        source: "5.1.2",
-        statement: "affine invariance of the rational/NURBS curve",
         check: m19,
     },
     Claim {
         id: "M21",
-        seed: Seed::S000,
-        source: "Definition 2",
-        statement: "the printed \"curve\" ⟪Y(n) = Σ w_j F_j / Σ w_j F_j⟫ (the expression of the rational trigonometric B-spline and NURBS)",
         check: m21,
     },
     Claim {
         id: "M23",
-        seed: Seed::S000,
-        source: "(4), (A1)–(A2), Figures 2, 4, 5, 11, 13, Theorem 4",
-        statement: "the shape parameter changes the uniform basis; reading: the uniform basis depends on ⟪ξ⟫ only through ⟪s(ξ) = ξ² − ξ + 1⟫, so ⟪ξ⟫ and ⟪1 − ξ⟫ give the same basis, and then Theorem 4's exception ⟪ξ ≠ 1⟫ must also exclude ⟪ξ = 0⟫",
         check: m23,
     },
     Claim {
         id: "S3",
-        seed: Seed::S003,
-        source: "Remark 1 (b)",
-        statement: "\"the standard cubic uniform B-spline curves cannot exactly represent arcs of ellipse and arcs of parabola\"",
         check: s3,
     },
     Claim {
         id: "D13",
-        seed: Seed::S002,
-        source: "Theorem 2 (4)",
-        statement: "the curve (2) lies \"inside its control polygon spanned by ⟪P0 … P5⟫\" (convex hull), ⟪w_i > 0⟫",
         check: d13,
     },
     Claim {
         id: "E19",
-        seed: Seed::S004,
-        source: "Abstract, §I, Conclusion",
-        statement: "for the fixed interpolation conditions the shape can be adjusted: the EH interpolant ⟪b0 y_i + b1 y_{i+1} + b2 h_i d_i + b3 h_i d_{i+1}⟫ keeps ⟪H(x_i) = y_i⟫, ⟪H(x_{i+1}) = y_{i+1}⟫, ⟪H' = d⟫ at both ends and is ⟪C¹⟫ for all ⟪λ, μ⟫",
         check: e19,
     },
     Claim {
         id: "E23",
-        seed: Seed::S004,
-        source: "§II (\"The standard cubic Hermite spline is C¹ continuous\")",
-        statement: "the spline ⟪H_i(x)⟫ of §II is ⟪C¹⟫",
         check: e23,
     },
     Claim {
         id: "D18",
-        seed: Seed::S002,
-        source: "Definition 1 (implicit: \"basis functions\")",
-        statement: "⟪b0 … b5⟫ are linearly independent",
         check: d18,
     },
 ];

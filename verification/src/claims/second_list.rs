@@ -14,7 +14,7 @@ use trig_interp::{Scheme, Variant};
 use trig_symbolic::Sym;
 
 use super::thesis_interp::{derivs, positivity};
-use crate::claim::{Claim, Seed};
+use crate::claim::Claim;
 use trig_judge::exact::{IDENTITY, basis, identities, identity_item, sum, symbols};
 use trig_judge::surface::cylinder_distance;
 use trig_judge::{nonnegative, span};
@@ -27,93 +27,54 @@ use trig_verdict::witness;
 pub const CLAIMS: &[Claim] = &[
     Claim {
         id: "T58",
-        seed: Seed::S001,
-        source: "end of 4.3.4, 4.4",
-        statement: "\"the resulting adequate conditions for cubic trigonometric spline positivity\"; the ⟪G¹⟫ and ⟪G²⟫ formulations \"reliably maintain positivity even when the data contain points that lie exactly on or close to the zero axis\" (Figures 4.14, 4.15; no condition is printed)",
         check: t58,
     },
     Claim {
         id: "T59",
-        seed: Seed::S001,
-        source: "5.3, proofs of Theorems 5.1–5.4",
-        statement: "proof steps: ⟪C¹⟫ \"if and only if\" ⟪C⁰⟫; (5.18) ⟪⇔⟫ (5.19); (5.28) ⟪⇔⟫ (5.29) with ⟪α(u)⟫, then constant ⟪α⟫ in (5.32); \"for smooth ⟪C¹⟫ continuity … identical normal curvature at every point along their shared boundary\"",
         check: t59,
     },
     Claim {
         id: "T60",
-        seed: Seed::S001,
-        source: "(5.12)",
-        statement: "⟪S(0; m) = P4⟫, ⟪S(1; m) = P3⟫, ⟪S'(0; m) = (m+2)P5 − (m+2)P4⟫, ⟪S'(1; m) = (m+2)P3 − (m+2)P2⟫, ⟪S''(0; m) = 2P6 − (4m+4)P5 + (4m+2)P4⟫, ⟪S''(1; m) = 2P1 − (4m+4)P2 + (4m+2)P3⟫, \"the first and second derivatives with respect to ⟪u⟫\"",
         check: t60,
     },
     Claim {
         id: "M22",
-        seed: Seed::S000,
-        source: "5.4 Conclusions",
-        statement: "\"this curve … had a larger parametric range than the existing scheme\"",
         check: m22,
     },
     Claim {
         id: "D20",
-        seed: Seed::S002,
-        source: "Abstract, §I, Conclusion",
-        statement: "a shape-preserving interpolation condition on ⟪α⟫ is given, and every ⟪α⟫ satisfying it yields an ⟪F³⟫ shape-preserving spline",
         check: d20,
     },
     Claim {
         id: "D22",
-        seed: Seed::S002,
-        source: "Keywords, §I",
-        statement: "\"the representation of quartic trigonometric Bézier surface has been shown\": the rational quartic trigonometric Bézier surface and its properties",
         check: d22,
     },
     Claim {
         id: "S6",
-        seed: Seed::S003,
-        source: "Methodology, \"Note that the value of the parameter α …\"",
-        statement: "the basis functions are not non-negative for ⟪α < 0.3⟫ or ⟪α > 0.5⟫ (the range ⟪[0.3, 0.5]⟫ is maximal)",
         check: s6,
     },
     Claim {
         id: "S7",
-        seed: Seed::S003,
-        source: "Results (a), (c), (3)",
-        statement: "geometric invariance and the curve symmetry ⟪r_i(1 − t; p_{i+3}, p_{i+2}, p_{i+1}, p_i) = r_i(t; p_i, p_{i+1}, p_{i+2}, p_{i+3})⟫ (3) follow from the basis symmetry and mixing",
         check: s7,
     },
     Claim {
         id: "S8",
-        seed: Seed::S003,
-        source: "(13)–(15), cases (i)/(ii)",
-        statement: "the extreme point of the quadratic energy (15) is ⟪α = B/A⟫ (⟪A ≠ 0⟫), and the case analysis (i)/(ii) solves (13) on ⟪[0.3, 0.5]⟫",
         check: s8,
     },
     Claim {
         id: "S9",
-        seed: Seed::S003,
-        source: "text after (10)",
-        statement: "\"when ⟪a = b⟫, equation (10) is the expression of arcs of circle\"; when ⟪a ≠ b⟫, arcs of ellipse",
         check: s9,
     },
     Claim {
         id: "E18",
-        seed: Seed::S004,
-        source: "Abstract, Keywords (\"Rotational surface\")",
-        statement: "\"The associated EH B-spline surfaces can exactly represent the surfaces of revolution\"",
         check: e18,
     },
     Claim {
         id: "E20",
-        seed: Seed::S004,
-        source: "§I",
-        statement: "the EH spline \"could approximate to the interpolated functions better than the standard cubic Hermite interpolation splines and the quartic Hermite interpolation splines with single parameter\"",
         check: e20,
     },
     Claim {
         id: "E22",
-        seed: Seed::S004,
-        source: "§VI, (5)",
-        statement: "⟪R_{j,3}(u, v) = Σ_k Σ_l b_{k,3}(λ1, μ1; u) b_{l,3}(λ2, μ2; v) P_{i+k−3} P_{j+l−3}⟫: \"these surfaces have properties similar to the corresponding cubic B-spline curves\"",
         check: e22,
     },
 ];

@@ -9,7 +9,7 @@ use trig_core::{Family, Ring};
 use trig_symbolic::Sym;
 
 use super::seed000_appendix_c::{NONUNIFORM_J, nonuniform_knots};
-use crate::claim::{Claim, Seed};
+use crate::claim::Claim;
 use trig_certify::ParamBox;
 use trig_judge::certificate::nonnegative_on;
 use trig_judge::exact::{IDENTITY, basis, identities, residual_verdict, sum};
@@ -19,37 +19,22 @@ use trig_verdict::verdict::Verdict;
 pub const CLAIMS: &[Claim] = &[
     Claim {
         id: "M1",
-        seed: Seed::S000,
-        source: "Appendix A, Theorem 1",
-        statement: "uniform case: ⟪Σ_k l_k(t)/(6ζ² − 6ζ + 10) = 1⟫, and each printed step of the proof",
         check: m1,
     },
     Claim {
         id: "M2",
-        seed: Seed::S000,
-        source: "Theorem 2, Appendix B",
-        statement: "⟪F_j(n) > 0⟫ (shape parameter ⟪ζ ∈ [0, 4]⟫)",
         check: m2,
     },
     Claim {
         id: "M3",
-        seed: Seed::S000,
-        source: "(1)–(3), (5), Theorem 1",
-        statement: "partition of unity ⟪Σ_{j=0}^{3} F_j(n) = 1⟫ for non-uniform knots, with the printed coefficient formulas (2)–(3)",
         check: m3,
     },
     Claim {
         id: "M3b",
-        seed: Seed::S000,
-        source: "(2)–(3)",
-        statement: "for uniform knots the printed coefficients reduce to those Appendix A uses ⟪(1/(6ζ² − 6ζ + 10))⟫",
         check: m3b,
     },
     Claim {
         id: "M6",
-        seed: Seed::S000,
-        source: "Theorems 5, 6",
-        statement: "rational basis: ⟪Q_j = F_j⟫ when all ⟪w_j = 1⟫; ⟪Σ Q_j = 1⟫",
         check: m6,
     },
 ];

@@ -9,7 +9,7 @@ use trig_symbolic::Sym;
 
 use super::seed000_appendix_c::{NONUNIFORM_J, nonuniform_knots};
 use super::seed000_appendix_print::{printed_part, zeta};
-use crate::claim::{Claim, Seed};
+use crate::claim::Claim;
 use trig_certify::nonneg::certify;
 use trig_certify::{ParamBox, in_z};
 use trig_judge::certificate::{CERTIFIED, describe};
@@ -19,9 +19,6 @@ use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[Claim {
     id: "M11",
-    seed: Seed::S000,
-    source: "Appendix B",
-    statement: "⟪Σ_i b_{j+2,i} l_i(t_{j+2}) = (1 + z²)^(−3) Σ_k y_k z^k⟫ with the printed ⟪y_0 … y_6⟫, ⟪z = tan(t/2)⟫, and hence the piece is ⟪> 0⟫ for ⟪z ∈ [0, 1)⟫",
     check: m11,
 }];
 

@@ -10,7 +10,7 @@ use trig_deriv::{End, Wrt, endpoint_derivatives};
 use trig_symbolic::Sym;
 
 use super::seed000_appendix_print::{printed_part, zeta};
-use crate::claim::{Claim, Seed, shared};
+use crate::claim::{Claim, shared};
 use trig_deriv::continuity::{
     self, KnotContinuity, curve_jumps, nonuniform_bspline, uniform_bspline,
 };
@@ -22,44 +22,26 @@ use trig_verdict::verdict::Verdict;
 pub const CLAIMS: &[Claim] = &[
     Claim {
         id: "M4",
-        seed: Seed::S000,
-        source: "Theorems 3, 4",
-        statement: "\"The derived basis are ⟪C^3⟫ and ⟪C^5⟫ continuous for non-uniform knots\"; \"The proposed curve possesses ⟪C^3⟫ and ⟪C^5⟫ continuity for ⟪ξ ≠ 1⟫\"",
         check: m4,
     },
     Claim {
         id: "M4b",
-        seed: Seed::S000,
-        source: "Theorems 4, 7",
-        statement: "\"For multiple knots, the curve has ⟪C^{3−k}⟫ continuity here ⟪k = [0,3]⟫\"",
         check: m4b,
     },
     Claim {
         id: "M8",
-        seed: Seed::S000,
-        source: "Theorem 7",
-        statement: "\"The rational trigonometric B-spline and NURBS curve has ⟪C^3⟫ continuity. These curve have ⟪C^{3−k}⟫ continuity, ⟪k = [0,4]⟫\"",
         check: m8,
     },
     Claim {
         id: "M5",
-        seed: Seed::S000,
-        source: "Appendix C",
-        statement: "each printed one-sided derivative of ⟪F_j⟫ at ⟪n_j^+⟫, ⟪n_{j+1}^±⟫, ⟪n_{j+2}^±⟫, ⟪n_{j+3}^±⟫, orders 0–5 (incl. (A3))",
         check: m5,
     },
     Claim {
         id: "M9",
-        seed: Seed::S000,
-        source: "Appendix D",
-        statement: "each printed derivative of the curve ⟪T(n) = Σ_i F_i(n) S_i⟫ at ⟪n_j^+⟫ and ⟪n_{j+1}^−⟫, orders 0–5, where readable",
         check: m9,
     },
     Claim {
         id: "M9b",
-        seed: Seed::S000,
-        source: "Appendix D",
-        statement: "reading of the mislabelled \"⟪T_{j+1}''(n_j^−)⟫\" (printed in the list for ⟪n_{j+1}^−⟫, between ⟪T'⟫ and ⟪T'''⟫ there) as ⟪T''(n_{j+1}^−)⟫",
         check: m9b,
     },
 ];

@@ -17,7 +17,7 @@ use trig_deriv::{End, Jet, Wrt};
 use trig_symbolic::Sym;
 
 use super::seed000_appendix_print::{Shorthand, printed_part, zeta};
-use crate::claim::{Claim, Seed};
+use crate::claim::Claim;
 use trig_deriv::continuity::quotient_derivatives;
 use trig_judge::exact::{IDENTITY, symbols};
 use trig_verdict::verdict::Verdict;
@@ -25,51 +25,30 @@ use trig_verdict::verdict::Verdict;
 pub const CLAIMS: &[Claim] = &[
     Claim {
         id: "M7",
-        seed: Seed::S000,
-        source: "Appendix E, (A36)–(A43)",
-        statement: "rational basis values ⟪Q_i(n_j^+)⟫, ⟪Q_i(n_{j+1}^−)⟫ times ⟪H_i⟫, uniform knots",
         check: m7,
     },
     Claim {
         id: "M10",
-        seed: Seed::S000,
-        source: "Appendix E, (A44)–(A51)",
-        statement: "their first derivatives, uniform knots",
         check: m10,
     },
     Claim {
         id: "M13",
-        seed: Seed::S000,
-        source: "Appendix E, (A52)–(A59)",
-        statement: "their second derivatives, uniform knots",
         check: m13,
     },
     Claim {
         id: "M13b",
-        seed: Seed::S000,
-        source: "Appendix E, (A55)",
-        statement: "reading of the mislabelled (A55) \"⟪Q''_2(n_j^+) = 0⟫\" (it follows (A54), which gives ⟪Q''_2⟫): ⟪Q''_3(n_j^+) = 0⟫",
         check: m13b,
     },
     Claim {
         id: "M12",
-        seed: Seed::S000,
-        source: "Appendix E, (A4)–(A19)",
-        statement: "values and first derivatives of ⟪Q_i H_i⟫ at ⟪n_j^+⟫, ⟪n_{j+1}^−⟫ with general coefficients ⟪d_j⟫, ⟪b_{j,k}⟫, ⟪c_{j,k}⟫, ⟪a_j⟫",
         check: m12,
     },
     Claim {
         id: "M12b",
-        seed: Seed::S000,
-        source: "Appendix E, (A5), (A6), (A13), (A14), (A17), (A18)",
-        statement: "reading of the garbled prints: (A5), (A6) with the bracket ⟪[s(ξ)(b_{j0} + b_{j2}) + 4(s(ξ)+1)b_{j1}]⟫ around the numerator's value; (A13), (A14), (A17), (A18) with the printed \"denominator\" ⟪M⟫ (resp. ⟪L⟫) as a factor of the second term and the missing denominator ⟪A²⟫ (resp. ⟪B²⟫)",
         check: m12b,
     },
     Claim {
         id: "M15",
-        seed: Seed::S000,
-        source: "Appendix E, (A20)–(A35)",
-        statement: "second and third derivatives of ⟪Q_i H_i⟫ at ⟪n_j^+⟫, ⟪n_{j+1}^−⟫ with general coefficients",
         check: m15,
     },
 ];

@@ -6,7 +6,7 @@ use trig_core::{Family, Ring};
 use trig_deriv::{End, Wrt, curve_endpoint_derivatives};
 use trig_symbolic::{Poly, Sym};
 
-use crate::claim::{Claim, Seed};
+use crate::claim::Claim;
 use trig_certify::ParamBox;
 use trig_judge::certificate::nonnegative_on;
 use trig_judge::exact::{
@@ -21,107 +21,62 @@ use trig_verdict::verdict::Verdict;
 pub const CLAIMS: &[Claim] = &[
     Claim {
         id: "D1",
-        seed: Seed::S002,
-        source: "property (b)",
-        statement: "⟪Σ_{i=0}^{5} b_i(t) = 0⟫ (as printed)",
         check: d1,
     },
     Claim {
         id: "D1b",
-        seed: Seed::S002,
-        source: "property (b), reading",
-        statement: "reading of D1: ⟪Σ_{i=0}^{5} b_i(t) = 1⟫",
         check: d1b,
     },
     Claim {
         id: "D2",
-        seed: Seed::S002,
-        source: "property (a)",
-        statement: "⟪b_i(t) ≥ 0⟫ on ⟪[0, π/2]⟫, ⟪i = 0…5⟫",
         check: d2,
     },
     Claim {
         id: "D3",
-        seed: Seed::S002,
-        source: "property (c)",
-        statement: "⟪b_i(t) = b_{5−i}(π/2 − t)⟫, ⟪i = 0, 1, 2⟫",
         check: d3,
     },
     Claim {
         id: "D4",
-        seed: Seed::S002,
-        source: "property (d)",
-        statement: "each ⟪b_i(t)⟫ has one maximum value in ⟪[0, π/2]⟫",
         check: d4,
     },
     Claim {
         id: "D5",
-        seed: Seed::S002,
-        source: "Theorem 2 (1)",
-        statement: "⟪R(0) = P0⟫, ⟪R(π/2) = P5⟫, ⟪R'(0) = 4(w1/w0)(P1 − P0)⟫, ⟪R'(π/2) = 4(w4/w5)(P5 − P4)⟫, ⟪R''(0) = [(32w1² − 8w0w1)(P0 − P1) − 12w0w2(P0 − P2)]/w0²⟫, ⟪R''(π/2) = [(32w4² − 8w4w5)(P5 − P4) − 12w3w5(P5 − P3)]/w5²⟫",
         check: d5,
     },
     Claim {
         id: "D6",
-        seed: Seed::S002,
-        source: "section IV, (3)",
-        statement: "⟪R(0) = P0⟫; ⟪R'(0) = 4(w1/w0)(P1 − P0)⟫; ⟪R''(0) = (1/w0²)[(3w1² − 8w0w1 − 12w0w2)P0 + (8w0w1 − 32w1²)P1 + (12w0w2)P2]⟫; ⟪R''(π/2) = (1/w0²)[(12w3w3)P3 + (8w4w5 − 32w4²)P4 + (3w4² − 8w4w5 − 12w3w3)P5]⟫; ⟪R'(π/2) = (4w4/w5)(P5 − P4)⟫; ⟪R''_2 = P5⟫ (set equal to ⟪V1⟫, ⟪α1(V2 − V0)⟫, ⟪α1(V0 − 2V1 + V2)⟫, ⟪α2(V1 − 2V2 + V3)⟫, ⟪α2(V3 − V1)⟫, ⟪V2⟫)",
         check: d6,
     },
     Claim {
         id: "D6b",
-        seed: Seed::S002,
-        source: "section IV, (3), reading",
-        statement: "reading of D6: ⟪3w1² → 32w1²⟫ and ⟪3w4² → 32w4²⟫ (as in Theorem 2 (1)), ⟪1/w0² → 1/w5²⟫ and ⟪w3w3 → w3w5⟫ in ⟪R''(π/2)⟫, \"⟪R''_2 = P5⟫\" → ⟪R(π/2) = P5⟫",
         check: d6b,
     },
     Claim {
         id: "D7",
-        seed: Seed::S002,
-        source: "Theorem 1, (5)–(8)",
-        statement: "the spline ⟪Q(u)⟫ of (6)–(7) has ⟪F³⟫ continuity at the inner knots, by (8): ⟪Q(u⁺) = Q(u⁻)⟫; ⟪Q'(u⁺) = (Δu_i/Δu_{i+1}) Q'(u⁻)⟫; ⟪Q''(u⁺) = (Δu_i/Δu_{i+1})² Q''(u⁻)⟫; ⟪Q'''(u⁺) = (Δu_i/Δu_{i+1})³ Q'''(u⁻) − 4π(Δu_i)²/(Δu_{i+1})³ Q''(u⁻)⟫",
         check: d7,
     },
     Claim {
         id: "D9",
-        seed: Seed::S002,
-        source: "Theorem 2 (2)",
-        statement: "⟪R(π/2 − t; P5, P4, P3, P2, P1, P0) = R(t; P0, …, P5)⟫ (weights as given)",
         check: d9,
     },
     Claim {
         id: "D9b",
-        seed: Seed::S002,
-        source: "Theorem 2 (2), reading",
-        statement: "reading of D9 with the weights reversed with the points: ⟪R(π/2 − t; P5…P0; w5…w0) = R(t; P0…P5; w0…w5)⟫",
         check: d9b,
     },
     Claim {
         id: "D10",
-        seed: Seed::S002,
-        source: "Theorem 2 (3), garbled print",
-        statement: "as printed: the first equation is unreadable (\"⟪R_2^π − t, P, …⟫\"); the second reads ⟪R(π/2 − t, P3, P4, P3, P2, P1, P3)·T = R(t, P0·T, P1·T, P2·T, P3·T, P4·T, P5·T)⟫",
         check: d10,
     },
     Claim {
         id: "D10b",
-        seed: Seed::S002,
-        source: "Theorem 2 (3), reading",
-        statement: "reading of the garbled print (geometric invariance as the text announces it): ⟪R(t; P_i + q) = R(t; P_i) + q⟫ and ⟪R(t; P_i T) = R(t; P_i) T⟫",
         check: d10b,
     },
     Claim {
         id: "D11",
-        seed: Seed::S002,
-        source: "Theorem 2 (5)",
-        statement: "the blending functions are constructed in the space ⟪{1, sin t, cos t, cos 2t, sin 3t, cos 3t, sin 4t, cos 4t}⟫",
         check: d11,
     },
     Claim {
         id: "D12",
-        seed: Seed::S002,
-        source: "Proposition 1, (5)",
-        statement: "⟪Σ_{i=0}^{3} Tb_i(t, α1, α2) = 1⟫",
         check: d12,
     },
 ];

@@ -5,7 +5,7 @@ use trig_core::Family;
 use trig_deriv::{Wrt, knot_derivatives};
 use trig_symbolic::Sym;
 
-use crate::claim::{Claim, Seed};
+use crate::claim::Claim;
 use trig_judge::exact::IDENTITY;
 use trig_verdict::evidence::EvidenceList;
 use trig_verdict::status::Status;
@@ -14,16 +14,10 @@ use trig_verdict::verdict::Verdict;
 pub const CLAIMS: &[Claim] = &[
     Claim {
         id: "S1",
-        seed: Seed::S003,
-        source: "whole paper",
-        statement: "nonnegativity for ⟪0.3 ≤ α ≤ 0.5⟫, partition of unity, symmetry, endpoint properties, ⟪C³⟫, ellipse and parabola arcs, optimal ⟪α = 0.3375⟫",
         check: s1,
     },
     Claim {
         id: "S2",
-        seed: Seed::S003,
-        source: "Remark 1 (a)",
-        statement: "the standard cubic uniform B-spline curves are only ⟪C²⟫ (not ⟪C³⟫)",
         check: s2,
     },
 ];

@@ -6,7 +6,7 @@ use trig_core::{Family, Ring};
 use trig_deriv::{End, Wrt, curve_endpoint_derivatives, endpoint_derivatives};
 use trig_symbolic::Sym;
 
-use crate::claim::{Claim, Seed};
+use crate::claim::Claim;
 use trig_judge::certificate::{nonnegative_on, nonnegative_on_box};
 
 use trig_certify::ParamBox;
@@ -20,128 +20,74 @@ use trig_verdict::verdict::Verdict;
 pub const CLAIMS: &[Claim] = &[
     Claim {
         id: "E1",
-        seed: Seed::S004,
-        source: "section II",
-        statement: "⟪α0(0) = α1(1) = 1⟫; ⟪α0(1) = α1(0) = 0⟫; ⟪α1'(0) = α1'(1) = 0⟫; ⟪α0'(0) = α0'(1) = 0⟫; ⟪β0(0) = β0(1) = 0⟫; ⟪β1(0) = β1(1) = 0⟫; ⟪β0'(0) = β1'(1) = 1⟫; ⟪β0'(1) = β1'(0) = 0⟫; ⟪α0(t) + α1(t) = 1⟫; ⟪β0(t) + β0(1 − t) = 0⟫",
         check: e1,
     },
     Claim {
         id: "E1b",
-        seed: Seed::S004,
-        source: "section II, reading",
-        statement: "reading of the last property of E1: ⟪β0(t) + β1(1 − t) = 0⟫",
         check: e1b,
     },
     Claim {
         id: "E2",
-        seed: Seed::S004,
-        source: "III(i) (a)",
-        statement: "⟪b0(0) = b1(1) = 1⟫; ⟪b2(0) = b2(1) = 0⟫; ⟪b0(1) = b1(0) = 0⟫; ⟪b3(0) = b3(1) = 0⟫; ⟪b0'(0) = b0'(1) = 0⟫; ⟪b2'(0) = b3'(1) = 1⟫; ⟪b1'(0) = b1'(1) = 0⟫; ⟪b2'(1) = b3'(0) = 0⟫",
         check: e2,
     },
     Claim {
         id: "E3",
-        seed: Seed::S004,
-        source: "III(i) (a)",
-        statement: "⟪b0 + b1 = 1⟫; ⟪b2(t) + b3(1 − t) = 1⟫",
         check: e3,
     },
     Claim {
         id: "E3b",
-        seed: Seed::S004,
-        source: "III(i) (a), reading",
-        statement: "reading of E3's second identity as the Hermite property it copies (E1b): ⟪b2(t) + b3(1 − t) = 0⟫",
         check: e3b,
     },
     Claim {
         id: "E4",
-        seed: Seed::S004,
-        source: "III(i) (b)",
-        statement: "⟪b_{i,3}(t) ≥ 0⟫ on ⟪[0, 1]⟫, ⟪i = 0…3⟫ (for the parameters of the paper, ⟪λ, μ ∈ [−1, 1]⟫)",
         check: e4,
     },
     Claim {
         id: "E5",
-        seed: Seed::S004,
-        source: "III(i) (c)",
-        statement: "⟪b_{i,3}(t) = b_{3−i,3}(1 − t)⟫, ⟪i = 0…3⟫",
         check: e5,
     },
     Claim {
         id: "E6",
-        seed: Seed::S004,
-        source: "III(i) (d)",
-        statement: "⟪Σ_{i=0}^{3} b_{i,3}(t) = 1⟫",
         check: e6,
     },
     Claim {
         id: "E7",
-        seed: Seed::S004,
-        source: "III(i) (e)",
-        statement: "the maximum value of ⟪b_{i,3}(t)⟫ occurs at ⟪t = i/3⟫, ⟪i = 0…3⟫",
         check: e7,
     },
     Claim {
         id: "E8",
-        seed: Seed::S004,
-        source: "text after (1)",
-        statement: "⟪λ = μ = 0⟫ gives the standard cubic Hermite bases",
         check: e8,
     },
     Claim {
         id: "E9",
-        seed: Seed::S004,
-        source: "III(ii) (a)",
-        statement: "⟪R(0) = P0⟫; ⟪R(1) = P1⟫; ⟪R'(0) = P2⟫; ⟪R'(1) = P3⟫; ⟪R''(0) = 2(λ−3)(P0 − P1) + 2μ(P3 − P4) − 2(2P3 + P4)⟫; ⟪R''(1) = (2λ+6)(P0 − P1) + 2μ(P3 − P4) + 2(P3 + 2P4)⟫",
         check: e9,
     },
     Claim {
         id: "E10",
-        seed: Seed::S004,
-        source: "III(ii) (b)",
-        statement: "⟪T(λ, μ; t; P0, P1, P2, P3) = T(μ, λ; 1 − t; P3, P2, P1, P0)⟫",
         check: e10,
     },
     Claim {
         id: "E11",
-        seed: Seed::S004,
-        source: "III(ii) (c)",
-        statement: "⟪T(λ, μ; t; P_i + q) = T(λ, μ; t; P_i) + q⟫ and ⟪T(λ, μ; t; P_i M) = T(λ, μ; t; P_i) M⟫",
         check: e11,
     },
     Claim {
         id: "E11b",
-        seed: Seed::S004,
-        source: "III(ii) (c), second equation",
-        statement: "invariance under linear maps alone: ⟪T(λ, μ; t; P_i M) = T(λ, μ; t; P_i) M⟫ for every ⟪d × d⟫ matrix ⟪M⟫",
         check: e11b,
     },
     Claim {
         id: "E12",
-        seed: Seed::S004,
-        source: "III(ii) (d)",
-        statement: "for ⟪λ = μ ∈ {−1, 0, 1}⟫ the bases are nonnegative and sum to 1, so the curve lies in the convex hull of its control polygon",
         check: e12,
     },
     Claim {
         id: "E13",
-        seed: Seed::S004,
-        source: "(4)",
-        statement: "⟪R = Σ C_{j,3} P_j + λt²(1 + t² − 2t)(P0 − P1) + μt²(1 + t² − 2t)(P2 − P3)⟫, ⟪C⟫ the cubic Hermite bases",
         check: e13,
     },
     Claim {
         id: "E1c",
-        seed: Seed::S004,
-        source: "section II",
-        statement: "⟪h_i = x_{i+1} − x_i⟫; ⟪t = (x_{i+1} − x_i)/h_i⟫; ⟪H_i(x) = α0(t)y_i + α1(t)y_{i+1} + β0(t)h_i d_i + β1(t)h_{i+1}d_{i+1}⟫; ⟪H_i(x_i) = y_i⟫, ⟪H_i(x_{i+1}) = y_{i+1}⟫, ⟪H_i'(x_i) = d_i⟫, ⟪H_i'(x_{i+1}) = d_{i+1}⟫",
         check: e1c,
     },
     Claim {
         id: "E1cb",
-        seed: Seed::S004,
-        source: "section II, reading",
-        statement: "reading of E1c with ⟪t = (x − x_i)/h_i⟫ (the printed ⟪h_{i+1}d_{i+1}⟫ kept)",
         check: e1cb,
     },
 ];

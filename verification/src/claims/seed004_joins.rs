@@ -14,7 +14,7 @@ use trig_core::Family;
 use trig_deriv::{End, JoinKind, Wrt, curve_endpoint_derivatives};
 use trig_symbolic::Sym;
 
-use crate::claim::{Claim, Seed};
+use crate::claim::Claim;
 use trig_judge::exact::{IDENTITY, symbols};
 use trig_judge::join::{Printed, PrintedJoin, audit};
 use trig_verdict::evidence::{Assignment, Evidence, EvidenceList, Expr, Value, Witness};
@@ -24,37 +24,22 @@ use trig_verdict::verdict::Verdict;
 pub const CLAIMS: &[Claim] = &[
     Claim {
         id: "E14",
-        seed: Seed::S004,
-        source: "section V (1)–(2)",
-        statement: "⟪C⁰⟫ continuity: ⟪P3 = Q0⟫; ⟪C¹⟫ continuity: ⟪P3 = Q0⟫ and ⟪P3 − P2 = (Q1 − Q0)⟫ (⟪R1⟫ on ⟪P0…P3⟫ with ⟪λ1, μ1⟫; ⟪R2⟫ on ⟪Q0…Q3⟫ with ⟪λ2, μ2⟫)",
         check: e14,
     },
     Claim {
         id: "E15",
-        seed: Seed::S004,
-        source: "section V (3)",
-        statement: "⟪C²⟫ continuity: ⟪Q3 = 4λP0 + (−2λ + 6)P1 − 6P2 − (2μ + 2λ + 6)⟫, and meeting with the ⟪C¹⟫ continuity condition",
         check: e15,
     },
     Claim {
         id: "E15b",
-        seed: Seed::S004,
-        source: "section V (3), reading",
-        statement: "reading of the truncated E15: ⟪Q3 = 4λP0 + (−2λ + 6)P1 − 6P2 − (2μ + 2λ + 6)P3⟫ with the ⟪C¹⟫ conditions of (2), one ⟪λ, μ⟫ for both curves",
         check: e15b,
     },
     Claim {
         id: "E16",
-        seed: Seed::S004,
-        source: "section V, G¹",
-        statement: "⟪G¹⟫ continuity: ⟪P3 = Q0⟫ and ⟪P3 − P2 = ω(Q1 − Q0)⟫, ⟪ω > 0⟫",
         check: e16,
     },
     Claim {
         id: "E17",
-        seed: Seed::S004,
-        source: "section V, G²",
-        statement: "⟪G²⟫ continuity: ⟪P3 = Q0⟫ and ⟪P3 − P2 = ω(Q1 − Q0)⟫, ⟪ω > 0⟫ and ⟪|P1Q2| □ |P2Q1|⟫ (relation symbol unreadable)",
         check: e17,
     },
 ];

@@ -12,7 +12,7 @@ use trig_specfile::Direction;
 use trig_symbolic::Sym;
 
 use super::thesis_out_of_range::thesis_surface;
-use crate::claim::{Claim, Seed};
+use crate::claim::Claim;
 use trig_judge::certificate::CERTIFIED;
 use trig_judge::exact::{IDENTITY, identity_item};
 use trig_judge::nonnegative::convex_hull;
@@ -28,58 +28,34 @@ use trig_verdict::verdict::Verdict;
 pub const CLAIMS: &[Claim] = &[
     Claim {
         id: "T44",
-        seed: Seed::S001,
-        source: "3.2.3, text after Figure 3.2",
-        statement: "as ⟪β⟫ increases, the distance of the quadratic curve (3.1) from the control polygon increases (example ⟪P0 = (0,0)⟫, ⟪P1 = (1.5,1.5)⟫, ⟪P2 = (3,0)⟫)",
         check: t44,
     },
     Claim {
         id: "T47",
-        seed: Seed::S001,
-        source: "3.3.3 (after Figure 3.7), 6.2 (Figure 6.3(a) text)",
-        statement: "the cubic curve (3.7) approaches the control polygon as ⟪m⟫ increases (polygons ⟪(0,0),(7,3),(10.5,8),(12,16)⟫; ⟪(0,0),(1.5,1.5),(3,0),(4.5,1.5)⟫; ⟪(0,0),(1,2),(3,2),(4,0)⟫); \"all resulting curves remain entirely within the convex hull\"",
         check: t47,
     },
     Claim {
         id: "T53",
-        seed: Seed::S001,
-        source: "5.4.1, Figure 5.2 text",
-        statement: "for ⟪m = −1.8, −1, 0, 1⟫ the surface (tensor product of (3.7)) of the printed net lies inside the control net; increasing ⟪m⟫ \"pulls\" the surface toward the net",
         check: t53,
     },
     Claim {
         id: "T61",
-        seed: Seed::S001,
-        source: "6.2, Figure 6.3 (b), (d) text",
-        statement: "(6.1): the curve approaches the polygon as ⟪η⟫ increases; (6.3): all curves for ⟪η ∈ [0,1]⟫ are inside the convex hull, and a larger ⟪α⟫ moves the curve farther from the polygon (⟪V = (0,0),(1,2),(3,2),(4,0)⟫)",
         check: t61,
     },
     Claim {
         id: "D15",
-        seed: Seed::S002,
-        source: "Theorem 2 (5), Conclusion",
-        statement: "the RQTB curve lies between the quintic Bézier curve and the control polygon and is closer to the polygon than the quintic (Conclusion: than the quartic and quintic) Bézier curves",
         check: d15,
     },
     Claim {
         id: "D21",
-        seed: Seed::S002,
-        source: "Abstract, §III, Conclusion",
-        statement: "the shape is adjusted by the shape parameter \"while the control polygon is kept unchanged\" ((1) has no parameter, and in (3) ⟪α1⟫, ⟪α2⟫ determine ⟪P1⟫, ⟪P4⟫)",
         check: d21,
     },
     Claim {
         id: "S5",
-        seed: Seed::S003,
-        source: "Results (e), (9); Remark 1 (c)",
-        statement: "⟪‖r_i(1/2) − p*‖ = κ(α)‖p_i + p_{i+3} − p_{i+1} − p_{i+2}‖⟫ with ⟪κ⟫ increasing in ⟪α⟫, so the curve is closer to the polygon as ⟪α⟫ decreases; with a proper ⟪α⟫ it is closer than the standard cubic B-spline (⟪κ = 1/48⟫)",
         check: s5,
     },
     Claim {
         id: "E21",
-        seed: Seed::S004,
-        source: "§IV (i)–(iii)",
-        statement: "with ⟪λ⟫ fixed, as ⟪μ⟫ increases (or decreases) the segment ⟪R_{i,3}⟫ approaches the line segment ⟪P_{i−3}P_{i−1}⟫; with ⟪μ⟫ fixed, as ⟪λ⟫ increases (or decreases) it approaches ⟪P_{i−2}P_i⟫; varying both concurrently moves it toward the whole control polygon",
         check: e21,
     },
 ];

@@ -8,7 +8,7 @@ use trig_core::{Family, Variable};
 use trig_deriv::End;
 use trig_symbolic::Sym;
 
-use crate::claim::{Claim, Seed};
+use crate::claim::Claim;
 use trig_certify::ParamBox;
 use trig_judge::certificate::{
     maximal_versus_published, monotone, nonnegative_on, on_published_range,
@@ -22,146 +22,67 @@ use trig_verdict::evidence::Evidence;
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
-/// A claim of the thesis (seed 001); shared by the thesis claim files.
-pub(super) const fn claim(
-    id: &'static str,
-    source: &'static str,
-    statement: &'static str,
-    check: fn() -> Verdict,
-) -> Claim {
-    Claim {
-        id,
-        seed: Seed::S001,
-        source,
-        statement,
-        check,
-    }
-}
-
 pub const CLAIMS: &[Claim] = &[
-    claim("T1", "(3.1), 3.2.2 ii", "⟪H0 + H1 + H2 = 1⟫", t1),
-    claim(
-        "T2",
-        "3.2.2 i",
-        "⟪H_i(u) ≥ 0⟫ for ⟪β ≥ 0⟫, ⟪u ∈ [0, 1]⟫",
-        t2,
-    ),
-    claim(
-        "T3",
-        "3.2.2 iii",
-        "⟪H0⟫ decreasing, ⟪H2⟫ increasing (⟪β ≥ 0⟫)",
-        t3,
-    ),
-    claim(
-        "T4",
-        "3.2.2 iv",
-        "⟪H_i(u; β) = H_{2−i}(π/2 − u; β)⟫ (as printed)",
-        t4,
-    ),
-    claim(
-        "T4b",
-        "3.2.2 iv, reading",
-        "reading of T4: ⟪H_i(u) = H_{2−i}(1 − u)⟫",
-        t4b,
-    ),
-    claim(
-        "T5",
-        "(3.3)–(3.6)",
-        "⟪F(0) − P0 = (P1 − P0)/(β+1)⟫, ⟪F(1) − P2 = (P1 − P2)/(β+1)⟫",
-        t5,
-    ),
-    claim(
-        "T5b",
-        "3.2.4, text after Figure 3.3",
-        "the curve starts at the first control point ⟪P0⟫ and ends at the last control point ⟪P2⟫",
-        t5b,
-    ),
-    claim("T6", "3.3.2 ii", "⟪Σ b_i(u; m) = 1⟫", t6),
-    claim(
-        "T7",
-        "3.3.2 i",
-        "⟪b_i(u; m) ≥ 0⟫ on ⟪[0, 1]⟫ exactly for ⟪m ∈ [−2, 1]⟫ (the maximal range)",
-        t7,
-    ),
-    claim(
-        "T8",
-        "3.3.2 iii",
-        "⟪b0⟫ decreasing and ⟪b2⟫ increasing, ⟪m ∈ [−2, 1]⟫ (as printed)",
-        t8,
-    ),
-    claim("T8a", "3.3.2 iii", "⟪b0⟫ decreasing for ⟪m ∈ [−2, 1]⟫", t8a),
-    claim(
-        "T8b",
-        "3.3.2 iii, proof",
-        "⟪b3⟫ increasing for ⟪m ∈ [−2, 1]⟫ (as the proof says)",
-        t8b,
-    ),
-    claim(
-        "T9",
-        "3.3.2 iv",
-        "⟪b_i(u; m) = b_{2−i}(π/2 − u; m)⟫ (as printed)",
-        t9,
-    ),
-    claim(
-        "T9b",
-        "3.3.2 iv, reading",
-        "reading of T9: ⟪b_i(u) = b_{3−i}(1 − u)⟫",
-        t9b,
-    ),
-    claim(
-        "T25",
-        "(5.4)–(5.8)",
-        "⟪[T][A] = [B0 … B3]⟫; ⟪[T][A][V][A]^T[U]⟫ equals the double sum (5.3)",
-        t25,
-    ),
-    claim(
-        "T27",
-        "5.4.1",
-        "for ⟪m⟫ outside ⟪(−2, 1]⟫ \"the basis functions are not normalized\" (do not sum to 1)",
-        t27,
-    ),
-    claim(
-        "T28",
-        "(3.7), (6.1), (6.2)",
-        "the thesis basis, Majeed & Qayyum (6.1) and Han et al. (6.2): equal under a change of parameter?",
-        t28,
-    ),
-    claim(
-        "T29",
-        "(6.1), (6.2), (6.3)",
-        "partition of unity and nonnegativity of (6.1), (6.2), (6.3) on the published ranges ⟪η ∈ (1/2, 2]⟫, ⟪λ ∈ [−2, 1]⟫, ⟪α ∈ (0, 2)⟫; their maximal ranges",
-        t29,
-    ),
-    claim(
-        "T30",
-        "Appendix 2",
-        "the MATLAB listing computes Han's basis (6.2); its functions sum to 1",
-        t30,
-    ),
-    claim(
-        "T31",
-        "6.2, text after Figure 6.3",
-        "\"curves are generated out of the convex hull\" for ⟪λ = −1, −2⟫ although in range",
-        t31,
-    ),
-    claim(
-        "T33",
-        "4.3.1, Step 1",
-        "⟪b3(1) = 0⟫, ⟪b0(1) = b1(1) = b2(1) = 1⟫",
-        t33,
-    ),
-    claim(
-        "T37",
-        "3.2.1, after (3.1)",
-        "when ⟪β = 0⟫ the quadratic curve is a straight line",
-        t37,
-    ),
-    claim(
-        "T38",
-        "3.2.4, Figure 3.3(a) text",
-        "for ⟪β = 1⟫ the curve ends at the midpoints of the edges ⟪P0P1⟫ and ⟪P1P2⟫",
-        t38,
-    ),
+    Claim {
+        id: "T1",
+        check: t1,
+    },
+    Claim {
+        id: "T2",
+        check: t2,
+    },
+    Claim {
+        id: "T3",
+        check: t3,
+    },
+    Claim {
+        id: "T4",
+        check: t4,
+    },
+    Claim {
+        id: "T4b",
+        check: t4b,
+    },
+    Claim {
+        id: "T5",
+        check: t5,
+    },
+    Claim {
+        id: "T5b",
+        check: t5b,
+    },
+    Claim {
+        id: "T25",
+        check: t25,
+    },
+    Claim {
+        id: "T27",
+        check: t27,
+    },
+    Claim {
+        id: "T28",
+        check: t28,
+    },
+    Claim {
+        id: "T29",
+        check: t29,
+    },
+    Claim {
+        id: "T30",
+        check: t30,
+    },
+    Claim {
+        id: "T31",
+        check: t31,
+    },
+    Claim {
+        id: "T37",
+        check: t37,
+    },
+    Claim {
+        id: "T38",
+        check: t38,
+    },
 ];
 
 fn points(n: usize) -> Vec<Sym> {
@@ -276,21 +197,6 @@ fn t5b() -> Verdict {
     v
 }
 
-fn t6() -> Verdict {
-    identity("Σ b_i − 1", &sum(&basis(Family::ThesisCubic)), &Sym::one())
-}
-
-fn t9() -> Verdict {
-    let mut v = reflection_counterexample(Family::ThesisCubic, (0, 1), 0, 2);
-    v.evidence
-        .push("as printed the index 2 − i is also out of range for i = 3 (b_{−1} does not exist)");
-    trig_judge::exact::defined_by(v, &Family::ThesisCubic)
-}
-
-fn t9b() -> Verdict {
-    reflection_symmetry(&Family::ThesisCubic, 0..4)
-}
-
 fn t25() -> Verdict {
     let (s, c, m) = (Sym::var("s"), Sym::var("c"), Sym::var("m"));
     let t = surface_row_t(&s, &c);
@@ -387,33 +293,6 @@ fn t30() -> Verdict {
     )
 }
 
-fn t33() -> Verdict {
-    let b = basis(Family::ThesisCubic);
-    let values: Vec<Sym> = b.iter().map(|bi| at_end(bi, End::End)).collect();
-    let printed = [1, 1, 1, 0]; // b3(1) = 0, b0(1) = b1(1) = b2(1) = 1
-    let parts = (0..4)
-        .map(|i| {
-            (
-                format!("b{i}(1) = {}", printed[i]),
-                values[i].clone(),
-                Sym::int(printed[i]),
-            )
-        })
-        .collect();
-    // the computed values, grouped as the print groups them
-    let with = |v: i64| -> Vec<String> {
-        (0..4)
-            .filter(|&i| values[i] == Sym::int(v))
-            .map(|i| format!("b{i}(1)"))
-            .collect()
-    };
-    trig_judge::exact::defined_by(identities(parts), &Family::ThesisCubic).with_correction(format!(
-        "{} = 0 and {} = 1 (the computed values)",
-        with(0).join(" = "),
-        with(1).join(" = ")
-    ))
-}
-
 fn t37() -> Verdict {
     let h = basis(Family::ThesisQuadratic);
     let zero = Sym::zero();
@@ -478,10 +357,6 @@ fn t2() -> Verdict {
     )
 }
 
-fn t7() -> Verdict {
-    maximal_versus_published(&Family::ThesisCubic).1
-}
-
 fn t29() -> Verdict {
     let mut parts = Vec::new();
     for family in [Family::MajeedQayyum, Family::Han, Family::Usman] {
@@ -513,10 +388,6 @@ fn beta_half_line() -> ParamBox {
     ParamBox::from_closed(Rational::new())
 }
 
-fn m_range() -> ParamBox {
-    ParamBox::closed(Rational::from(-2), Rational::from(1))
-}
-
 fn t3() -> Verdict {
     Verdict::all(
         trig_judge::certificate::CERTIFIED,
@@ -543,31 +414,6 @@ fn t3() -> Verdict {
             ),
         ],
     )
-}
-
-fn t8() -> Verdict {
-    let v = Verdict::all(
-        trig_judge::certificate::CERTIFIED,
-        vec![
-            (
-                "b0".into(),
-                monotone(&Family::ThesisCubic, 0, false, Some("m"), &m_range()),
-            ),
-            (
-                "b2".into(),
-                monotone(&Family::ThesisCubic, 2, true, Some("m"), &m_range()),
-            ),
-        ],
-    );
-    trig_judge::exact::defined_by(v, &Family::ThesisCubic)
-}
-
-fn t8a() -> Verdict {
-    monotone(&Family::ThesisCubic, 0, false, Some("m"), &m_range())
-}
-
-fn t8b() -> Verdict {
-    monotone(&Family::ThesisCubic, 3, true, Some("m"), &m_range())
 }
 
 /// For (6.2) at λ = −1, −2: nonnegative and summing to 1 (so every curve

@@ -19,7 +19,6 @@ use trig_interp::{
 };
 use trig_symbolic::Sym;
 
-use super::thesis::claim;
 use super::thesis_interp_point::piece_witness;
 use crate::claim::{Claim, umbrella};
 use trig_judge::exact::{IDENTITY, identities};
@@ -29,84 +28,58 @@ use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[
-    claim(
-        "T20",
-        "(4.20)–(4.21)",
-        "⟪C¹⟫ interpolant (4.21): ⟪P(x_i)=f_i⟫, ⟪P(x_{i+1})=f_{i+1}⟫, ⟪P'(x_i)=d_i⟫, ⟪P'(x_{i+1})=d_{i+1}⟫ (derivatives in ⟪x⟫)",
-        t20,
-    ),
-    claim(
-        "T21",
-        "(4.25), Table 4.2, Figure 4.11 text",
-        "the scheme yields a ⟪C²⟫ spline (\"all piecewise segments satisfy the ⟪C²⟫ continuity requirements\")",
-        t21,
-    ),
-    claim(
-        "T21b",
-        "(4.22)–(4.24)",
-        "⟪D_i⟫, ⟪D_{i+1}⟫ of (4.23)/(4.24) are the second derivatives ⟪P''(x_i)⟫, ⟪P''(x_{i+1})⟫",
-        t21b,
-    ),
-    claim(
-        "T22",
-        "(4.26)–(4.27)",
-        "⟪G¹⟫ interpolant (4.27) satisfies (4.26): ⟪P(x_i)=f_i⟫, ⟪P(x_{i+1})=f_{i+1}⟫, ⟪P'(x_i)=n_i d_i⟫, ⟪P'(x_{i+1})=d_{i+1}⟫",
-        t22,
-    ),
-    claim(
-        "T22b",
-        "4.3.3, Figure 4.12 text; 4.3.5, Figure 4.15",
-        "the ⟪G¹⟫ scheme produces a tangent-continuous (⟪G¹⟫) curve",
-        t22b,
-    ),
-    claim(
-        "T23",
-        "(4.30), (4.33)–(4.34)",
-        "the ⟪G²⟫ control points ⟪V_1^2⟫, ⟪V_2^2⟫ of (4.34) satisfy (4.33) with the endpoint list (4.30)",
-        t23,
-    ),
-    claim(
-        "T24",
-        "4.3.1–4.3.5",
-        "every positivity example stays ⟪≥ 0⟫ on its whole interval",
-        t24,
-    ),
-    claim(
-        "T24a",
-        "Table 4.1, Figure 4.10",
-        "⟪C¹⟫ example (Table 4.1) stays ⟪≥ 0⟫",
-        t24a,
-    ),
-    claim(
-        "T24b",
-        "Table 4.2, Figure 4.11",
-        "⟪C²⟫ example (Table 4.2) stays ⟪≥ 0⟫",
-        t24b,
-    ),
-    claim(
-        "T24c",
-        "Table 4.3, Figure 4.12",
-        "⟪G¹⟫ example (Table 4.3) stays ⟪≥ 0⟫",
-        t24c,
-    ),
-    claim(
-        "T24d",
-        "Table 4.4, Figure 4.13",
-        "⟪G²⟫ example (Table 4.4) stays ⟪≥ 0⟫",
-        t24d,
-    ),
-    claim(
-        "T24e",
-        "Table 4.5, Figure 4.14",
-        "⟪G²⟫ example (Table 4.5) stays ⟪≥ 0⟫",
-        t24e,
-    ),
-    claim(
-        "T24f",
-        "Table 4.6, Figure 4.15",
-        "⟪G¹⟫ example (Table 4.6) stays ⟪≥ 0⟫",
-        t24f,
-    ),
+    Claim {
+        id: "T20",
+        check: t20,
+    },
+    Claim {
+        id: "T21",
+        check: t21,
+    },
+    Claim {
+        id: "T21b",
+        check: t21b,
+    },
+    Claim {
+        id: "T22",
+        check: t22,
+    },
+    Claim {
+        id: "T22b",
+        check: t22b,
+    },
+    Claim {
+        id: "T23",
+        check: t23,
+    },
+    Claim {
+        id: "T24",
+        check: t24,
+    },
+    Claim {
+        id: "T24a",
+        check: t24a,
+    },
+    Claim {
+        id: "T24b",
+        check: t24b,
+    },
+    Claim {
+        id: "T24c",
+        check: t24c,
+    },
+    Claim {
+        id: "T24d",
+        check: t24d,
+    },
+    Claim {
+        id: "T24e",
+        check: t24e,
+    },
+    Claim {
+        id: "T24f",
+        check: t24f,
+    },
 ];
 
 fn v(name: &str) -> Sym {

@@ -18,7 +18,6 @@ use trig_core::Family;
 use trig_deriv::{End, JoinKind, Wrt, curve_endpoint_derivatives, endpoint_derivatives};
 use trig_symbolic::Sym;
 
-use super::thesis::claim;
 use crate::claim::{Claim, shared, umbrella};
 use trig_judge::exact::{identities, symbols};
 use trig_judge::join::{Printed, PrintedJoin, audit};
@@ -28,144 +27,98 @@ use trig_verdict::verdict::Verdict;
 mod cylinder;
 
 pub const CLAIMS: &[Claim] = &[
-    claim(
-        "T10",
-        "4.2.1 endpoint list, Conditions 1 and 2",
-        "⟪Q2(0) = P4⟫, ⟪Q1(1) = P3⟫, ⟪Q2'(0) = (m+2)P5 − (m+2)P4⟫, ⟪Q1'(1) = (m+2)P3 − (m+2)P2⟫, ⟪Q2''(0) = 2P6 − (4m+4)P5 + (4m+2)P4⟫, ⟪Q1''(1) = 2P1 − (4m+4)P2 + (4m+2)P3⟫; Condition 2 the same with ⟪m1⟫ for ⟪Q2⟫ and ⟪m2⟫ for ⟪Q1⟫",
-        t10,
-    ),
-    claim(
-        "T11",
-        "(4.30)",
-        "⟪b0'(0) = −π − mπ/2⟫, ⟪b1'(0) = π + mπ/2⟫, ⟪b2'(0) = b3'(0) = 0⟫, ⟪b0''(0) = π²/2 + mπ²⟫, ⟪b1''(0) = −π² − mπ²⟫, ⟪b2''(0) = π²/2⟫, ⟪b3''(0) = 0⟫ (and mirrored at 1); ⟪P'(0)⟫, ⟪P'(1)⟫, ⟪P''(0)⟫, ⟪P''(1)⟫ as the combinations of ⟪V0…V3⟫",
-        t11,
-    ),
-    claim(
-        "T12",
-        "(4.6)",
-        "⟪C¹⟫, same ⟪m⟫: ⟪P4 = P3⟫, ⟪P5 = 2P3 − P2⟫",
-        t12,
-    ),
-    claim(
-        "T13",
-        "(4.7)",
-        "⟪C¹⟫, different ⟪m⟫: ⟪P5 = [(m2+2)P3 − (m1+2)P3 − (m2+2)P2]/(m1+2)⟫",
-        t13,
-    ),
-    claim(
-        "T14",
-        "(4.9)",
-        "⟪C²⟫, same ⟪m⟫: ⟪P6 = P1 − (4m+4)P2 + (4m+4)P3⟫",
-        t14,
-    ),
-    claim(
-        "T15",
-        "(4.10) and the derivation line before it",
-        "⟪C²⟫, different ⟪m⟫: ⟪P6 = P1 + [(4m2+2)P3 − (4m2+4)P2 − (4m1+2)P3 − (4m1+4)P5]/2⟫",
-        t15,
-    ),
-    claim(
-        "T16",
-        "(4.13)",
-        "⟪G¹⟫, same ⟪m⟫: ⟪P5 = α(P3 − P2) + P3⟫",
-        t16,
-    ),
-    claim(
-        "T17",
-        "(4.14)",
-        "⟪G¹⟫, different ⟪m⟫: ⟪P5 = [α(m2+2)P3 − α(m2+2)P2 + (m1+2)P3]/(m1+2)⟫",
-        t17,
-    ),
-    claim(
-        "T18",
-        "(4.15)–(4.17)",
-        "⟪G²⟫, same ⟪m⟫: ⟪P6 = (2α²m + α² + βm/2 + β + 1 + 2mα + 2α)P3 − (2mα + 2α + 2α²m + 2α² + βm/2 + β)P2 + α²P1⟫",
-        t18,
-    ),
-    claim(
-        "T19",
-        "(4.18)",
-        "⟪G²⟫, different ⟪m⟫: ⟪P6 = {(4m1+4)P3 − (4m1+2)P3 + α²[2P1 − (4m2+4)P2 + (4m2+2)P3 + β(m2+2)P3 − (m2+2)P2]}/2⟫",
-        t19,
-    ),
-    claim(
-        "T26a",
-        "(5.13)",
-        "surfaces, ⟪C¹⟫, ⟪m1 = m1* (= m2 = m)⟫: ⟪P4 = P3⟫, ⟪P5 = 2P3 − P2⟫",
-        t26a,
-    ),
-    claim(
-        "T26b",
-        "(5.14)",
-        "surfaces, ⟪C¹⟫, ⟪m1 = m1* ≠ m2 = m2*⟫: ⟪P4 = P3⟫, ⟪P5 = [(m2+2)P3 − (m1+2)P3 − (m2+2)P2]/(m1+2)⟫",
-        t26b,
-    ),
-    claim(
-        "T26c",
-        "(5.25)",
-        "surfaces, ⟪G¹⟫, ⟪m1 = m1*⟫: ⟪P4 = P3⟫, ⟪P5 = α(P3 − P2) + P3⟫",
-        t26c,
-    ),
-    claim(
-        "T26d",
-        "(5.26)",
-        "surfaces, ⟪G¹⟫, ⟪m1 = m1* ≠ m2 = m2*⟫: ⟪P4 = P3⟫, ⟪P5 = [α(m2+2)P3 − α(m2+2)P2 + (m1+2)P3]/(m1+2)⟫",
-        t26d,
-    ),
-    claim(
-        "T26e",
-        "(5.35)",
-        "surfaces, ⟪C²⟫, ⟪m1 = m1*⟫: ⟪P4 = P3⟫, ⟪P5 = 2P3 − P2⟫, ⟪P6 = P1 − (4m+4)P2 + (4m+4)P3⟫",
-        t26e,
-    ),
-    claim(
-        "T26f",
-        "(5.36)",
-        "surfaces, ⟪C²⟫, ⟪m1 = m1* ≠ m2 = m2*⟫: ⟪P5⟫ as (5.14), ⟪P6 = P1 + [(4m2+2)P3 − (4m2+4)P2 − (4m1+2)P3 − (4m1+4)P5]/2⟫",
-        t26f,
-    ),
-    claim(
-        "T26g",
-        "(5.42)/(5.46)",
-        "surfaces, ⟪G²⟫, ⟪m1 = m1*⟫: ⟪P5 = α(P3 − P2) + P3⟫, ⟪P6⟫ as (4.17)",
-        t26g,
-    ),
-    claim(
-        "T26h",
-        "(5.43)",
-        "surfaces, ⟪G²⟫, ⟪m1 = m1* ≠ m2 = m2*⟫: ⟪P5⟫ as (5.26), ⟪P6 = α²[2P1 − (4m2+4)P2 + (4m2+2)P3 + β(m2+2)P3 − (m2+2)P2]/2⟫",
-        t26h,
-    ),
-    claim(
-        "T26i",
-        "(5.47)",
-        "surfaces, ⟪G²⟫, different ⟪m⟫: ⟪P6 = {(4m1+4)P3 − (4m1+2)P3 + α²[2P1 − (4m2+4)P2 + (4m2+2)P3 + β(m2+2)P3 − (m2+2)P2]}/2⟫",
-        t26i,
-    ),
-    claim(
-        "T26j",
-        "5.4.3",
-        "cylinder seams: ⟪Q0 = P3⟫, ⟪Q3 = P0⟫ (⟪C⁰⟫); ⟪Q1 = 2P3 − P2⟫, ⟪P1 = 2Q3 − Q2⟫ (⟪C¹⟫); ⟪Q2 = P1 − (4m+4)P2 + (4m+4)P3⟫, ⟪P2 = Q1 − (4m+4)Q2 + (4m+4)Q3⟫ (⟪C²⟫); the same for every row",
-        cylinder::t26j,
-    ),
-    claim(
-        "T26k",
-        "5.4.3, Appendix 1",
-        "the two-patch cylinder the Appendix 1 listing builds (⟪m = 1⟫) is ⟪C¹⟫/⟪C²⟫ across both seams",
-        cylinder::t26k,
-    ),
-    claim(
-        "T26",
-        "Chapter 5.3, 5.4.3",
-        "all surface join formulas hold (T26a–T26k)",
-        t26,
-    ),
-    claim(
-        "T39",
-        "4.2.1, after (4.7)",
-        "⟪m = −2⟫ breaks the joins (division by ⟪m + 2⟫), so the range is revised to ⟪(−2, 1]⟫",
-        t39,
-    ),
+    Claim {
+        id: "T10",
+        check: t10,
+    },
+    Claim {
+        id: "T11",
+        check: t11,
+    },
+    Claim {
+        id: "T12",
+        check: t12,
+    },
+    Claim {
+        id: "T13",
+        check: t13,
+    },
+    Claim {
+        id: "T14",
+        check: t14,
+    },
+    Claim {
+        id: "T15",
+        check: t15,
+    },
+    Claim {
+        id: "T16",
+        check: t16,
+    },
+    Claim {
+        id: "T17",
+        check: t17,
+    },
+    Claim {
+        id: "T18",
+        check: t18,
+    },
+    Claim {
+        id: "T19",
+        check: t19,
+    },
+    Claim {
+        id: "T26a",
+        check: t26a,
+    },
+    Claim {
+        id: "T26b",
+        check: t26b,
+    },
+    Claim {
+        id: "T26c",
+        check: t26c,
+    },
+    Claim {
+        id: "T26d",
+        check: t26d,
+    },
+    Claim {
+        id: "T26e",
+        check: t26e,
+    },
+    Claim {
+        id: "T26f",
+        check: t26f,
+    },
+    Claim {
+        id: "T26g",
+        check: t26g,
+    },
+    Claim {
+        id: "T26h",
+        check: t26h,
+    },
+    Claim {
+        id: "T26i",
+        check: t26i,
+    },
+    Claim {
+        id: "T26j",
+        check: cylinder::t26j,
+    },
+    Claim {
+        id: "T26k",
+        check: cylinder::t26k,
+    },
+    Claim {
+        id: "T26",
+        check: t26,
+    },
+    Claim {
+        id: "T39",
+        check: t39,
+    },
 ];
 
 fn v(name: &str) -> Sym {

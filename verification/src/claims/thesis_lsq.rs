@@ -14,18 +14,15 @@
 
 use trig_symbolic::Sym;
 
-use super::thesis::claim;
 use crate::claim::Claim;
 use trig_judge::exact::{IDENTITY, identities};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
-pub const CLAIMS: &[Claim] = &[claim(
-    "T64",
-    "(6.11)–(6.18)",
-    "the least-squares normal equations for ⟪V1⟫, ⟪V2⟫ and their Cramer solution",
-    t64,
-)];
+pub const CLAIMS: &[Claim] = &[Claim {
+    id: "T64",
+    check: t64,
+}];
 
 /// Data points used: two, with independent symbols (see the module docs).
 const N: usize = 2;

@@ -16,7 +16,7 @@ use trig_core::surface::{Direction, TensorSurface};
 use trig_core::{Affine, Family};
 use trig_symbolic::Sym;
 
-use crate::claim::{Claim, Seed};
+use crate::claim::Claim;
 use trig_judge::exact::basis;
 use trig_judge::surface::{OUTSIDE_NET, leaves_net};
 use trig_verdict::evidence::Evidence;
@@ -26,9 +26,6 @@ use trig_verdict::witness;
 
 pub const CLAIMS: &[Claim] = &[Claim {
     id: "T52",
-    seed: Seed::S001,
-    source: "4.2.1 Figure 4.6 text; 5.4.1 Figure 5.3 text",
-    statement: "for ⟪m⟫ outside ⟪(−2, 1]⟫ the curve (control points ⟪(0,0)⟫, ⟪(2,6)⟫, ⟪(6,6)⟫, ⟪(8,0)⟫) and the surface (the printed ⟪4×4⟫ net, ⟪m = −4, −3, 3, 4⟫) leave the convex hull / control net",
     check: t52,
 }];
 

@@ -22,7 +22,7 @@ use rug::ops::Pow;
 use rug::{Integer, Rational};
 use trig_symbolic::Sym;
 
-use crate::claim::{Claim, Seed};
+use crate::claim::Claim;
 use trig_judge::recomputed::decimal;
 use trig_judge::recomputed::{self, Cell, Recomputed};
 use trig_verdict::evidence::EvidenceList;
@@ -32,9 +32,6 @@ use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[Claim {
     id: "T32",
-    seed: Seed::S001,
-    source: "Tables 6.2–6.17",
-    statement: "TOTAL rows of Tables 6.2–6.13 versus their segment rows (and the figures quoted in the text); summary Tables 6.14–6.16 versus the per-letter tables; Table 6.17 versus the summaries",
     check: t32,
 }];
 

@@ -12,7 +12,6 @@
 use rug::Rational;
 use trig_symbolic::Sym;
 
-use super::thesis::claim;
 use super::thesis_tables::{DATA, Num, SCHEMES, SYMBOLS, Table, parse, summary_row, total_row};
 use crate::claim::Claim;
 use trig_judge::quoted::{QUOTED, quoted_figure, quoted_order};
@@ -23,30 +22,22 @@ use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[
-    claim(
-        "T66",
-        "6.8.1–6.8.12, text under each table",
-        "figures in the text derived from Tables 6.2–6.13: before/after differences, \"largest total error in segment ⟪k⟫\", \"mostly below 1.6\", quoted averages and maxima",
-        t66,
-    ),
-    claim(
-        "T67",
-        "6.8.13 (text on Table 6.15), 6.9",
-        "for delta: \"Han best, followed by the proposed spline, Majeed & Qayyum, Usman\"; 6.9: the proposed spline is \"most precise to the real image and nearest to the control polygon\"",
-        t67,
-    ),
-    claim(
-        "T68",
-        "Tables 6.2–6.13 against (3.7), (6.1), (6.2), 6.6",
-        "the four tables per letter are consistent with the stated set-up: all methods at parameter 0.6, with (3.7)(⟪m⟫) ≡ (6.2)(⟪λ = m⟫) and (6.1)(⟪η⟫) ≡ (6.2)(⟪λ = η − 1⟫) up to ⟪t ↦ 2t/π⟫ (T28); so proposed = Han and M&Q ≠ Han are expected, but the \"Before\" columns show proposed ≠ Han and M&Q = Han in 10 of 11 epsilon segments",
-        t68,
-    ),
-    claim(
-        "T71",
-        "6.9",
-        "\"increasing the total number of curve segments will decrease the approximation error\"",
-        t71,
-    ),
+    Claim {
+        id: "T66",
+        check: t66,
+    },
+    Claim {
+        id: "T67",
+        check: t67,
+    },
+    Claim {
+        id: "T68",
+        check: t68,
+    },
+    Claim {
+        id: "T71",
+        check: t71,
+    },
 ];
 
 const QUOTES: &str = include_str!("thesis_text_quotes.txt");

@@ -11,7 +11,7 @@ use trig_certify::total_positivity::certify as certify_tp;
 use trig_core::{Family, ParamRange};
 use trig_symbolic::Sym;
 
-use crate::claim::{Claim, Seed};
+use crate::claim::Claim;
 use trig_judge::certificate::CERTIFIED;
 use trig_judge::exact::{IDENTITY, identities, symbols};
 use trig_judge::total_positivity::{CONSEQUENCES, normalized_totally_positive};
@@ -23,37 +23,22 @@ use trig_verdict::verdict::Verdict;
 pub const CLAIMS: &[Claim] = &[
     Claim {
         id: "T42",
-        seed: Seed::S001,
-        source: "1.2, 1.5",
-        statement: "each of the four bases (3.7) ⟪m ∈ (−2, 1]⟫, (6.1) ⟪η ∈ (1/2, 2]⟫, (6.2) ⟪λ ∈ [−2, 1]⟫, (6.3) ⟪α ∈ (0, 2)⟫, in its printed range, gives Bézier-like curves: endpoint interpolation, convex hull, variation diminishing, affine invariance",
         check: t42,
     },
     Claim {
         id: "T70",
-        seed: Seed::S001,
-        source: "2.2.1–2.2.2",
-        statement: "Bernstein polynomials ⟪B_{i,n} = C(n, i)tⁱ(1 − t)^{n−i}⟫ (2.2): non-negativity, partition of unity, symmetry ⟪B_{n−i,n}(t) = B_{i,n}(1 − t)⟫, recursion ⟪B_{i,n} = (1 − t)B_{i,n−1} + tB_{i−1,n−1}⟫; Bézier curves (2.1): ⟪B(0) = P0⟫, ⟪B(1) = Pn⟫, ⟪B'(0) = n(P1 − P0)⟫, ⟪B'(1) = n(Pn − P_{n−1})⟫, convex hull, variation diminishing, affine invariance (decided for every degree ⟪n = 1, …, 6⟫)",
         check: t70,
     },
     Claim {
         id: "D14",
-        seed: Seed::S002,
-        source: "Theorem 2 (5)",
-        statement: "⟪b0 … b5⟫ form a normalized totally positive basis, so the curves (2) (weights ⟪w_i > 0⟫) have the variation diminishing property",
         check: d14,
     },
     Claim {
         id: "D16",
-        seed: Seed::S002,
-        source: "Theorem 2 (6)",
-        statement: "convexity preserving: a planar convex control polygon gives a convex curve (\"the variation diminishing property means the convexity preserving property holds\")",
         check: d16,
     },
     Claim {
         id: "S4",
-        seed: Seed::S003,
-        source: "Results (b)",
-        statement: "a piece ⟪r_i(t)⟫ lies in the convex hull of ⟪p_{i+j}⟫, and \"is convex if its control polygon is convex\", both inferred \"from the nonnegativity and mixing\"",
         check: s4,
     },
 ];

@@ -263,6 +263,12 @@ fn decided<T>(result: Result<T, Stopped>, failed: impl FnOnce(Verdict) -> T) -> 
     }
 }
 
+/// [`decide`] with every witness at a real point of the basis, as the
+/// audit of a file decides each claim: a claim of a document file.
+pub fn decide_in(spec: &Spec, claim: &SpecClaim) -> Verdict {
+    with_real_points(real_points(spec), || decide(spec, claim))
+}
+
 /// The verdict of one claim of the file: the values it fixes substituted
 /// and the ranges it gives put in place first (`trig_specfile::Given`); a
 /// claim stated as the negation of its check holds where the check fails.

@@ -6,10 +6,11 @@ use std::time::Duration;
 
 use clap::{Args, ValueEnum};
 use trig_report::{self as report, View};
+use trig_specfile::DocumentFile;
 use trig_specfile::Spec;
 use trig_verification::Entry;
 use trig_verification::budget::CLAIM_BUDGET;
-use trig_verification::{Seed, Status, run as run_audit, spec_audit};
+use trig_verification::{Status, documents, spec_audit};
 
 use super::{CliError, CmdResult};
 use crate::output::{check_directory, write_atomically, wrote};
@@ -60,9 +61,12 @@ pub struct AuditArgs {
     /// Only this claim id (e.g. T4b).
     #[arg(long)]
     claim: Option<String>,
-    /// Audit the basis and claims of a spec file (TOML, docs/spec.md) instead of the built-in claims.
-    #[arg(long, value_name = "FILE", conflicts_with = "seed")]
+    /// Audit the basis and claims of a spec file (TOML, docs/spec.md), or one document file (a folder of `documents/`, or its `document.toml`), instead of the five documents.
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["seed", "documents"])]
     spec: Option<PathBuf>,
+    /// The folder of the document files the audit decides (its `audit.toml` lists them in report order): by default `documents/` of this checkout.
+    #[arg(long, value_name = "DIR")]
+    documents: Option<PathBuf>,
     /// The short form: the summary and the index (one line per claim), no evidence.
     #[arg(long)]
     summary: bool,
@@ -107,6 +111,13 @@ pub fn run(args: &AuditArgs) -> CmdResult {
         check_directory(path)?;
     }
     let (entries, intro) = match &args.spec {
+        Some(path) if trig_specfile::document::is_document(path) => {
+            let document = DocumentFile::from_path(path)
+                .map_err(|e| CliError::Usage(e.to_string().replace('\n', " ")))?;
+            let entries = documents::audit(&[document], None, args.claim.as_deref())
+                .map_err(|e| CliError::Usage(e.to_string()))?;
+            (entries, report::document_intro(&path.display().to_string()))
+        }
         Some(path) => {
             let spec = Spec::from_file(path)
                 .map_err(|e| CliError::Usage(e.to_string().replace('\n', " ")))?;
@@ -220,21 +231,28 @@ pub fn run(args: &AuditArgs) -> CmdResult {
     }
 }
 
-/// The built-in claims selected by `--seed` and `--claim`, decided.
+/// The claims of the document files selected by `--seed` and `--claim`,
+/// decided.
 fn builtin(args: &AuditArgs) -> Result<Vec<Entry>, CliError> {
+    let dir = args
+        .documents
+        .clone()
+        .unwrap_or_else(documents::default_dir);
+    let files = documents::load(&dir).map_err(|e| CliError::Usage(e.to_string()))?;
     let seed = match &args.seed {
         None => None,
-        Some(id) => Some(
-            Seed::ALL
-                .into_iter()
-                .find(|s| s.id() == id.trim_start_matches("seed").trim_start_matches(' '))
-                .ok_or_else(|| {
-                    CliError::Usage(format!("--seed {id}: expected 000, 001, 002, 003 or 004"))
-                })?,
-        ),
+        Some(id) => {
+            let id = id.trim_start_matches("seed").trim_start_matches(' ');
+            if !files.iter().any(|d| d.header.id == id) {
+                let ids: Vec<&str> = files.iter().map(|d| d.header.id.as_str()).collect();
+                return Err(CliError::Usage(format!(
+                    "--seed {id}: expected one of {}",
+                    ids.join(", ")
+                )));
+            }
+            Some(id)
+        }
     };
-    Ok(trig_verification::entry::entries(&run_audit(
-        seed,
-        args.claim.as_deref(),
-    )))
+    documents::audit(&files, seed, args.claim.as_deref())
+        .map_err(|e| CliError::Usage(e.to_string()))
 }

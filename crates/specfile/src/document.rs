@@ -1,0 +1,390 @@
+//! A document file: the claims one source document prints, each as printed
+//! with its source, each naming the basis it is about. The bases are spec
+//! files referenced by path (relative to the document file), so one
+//! document states claims about several bases and a basis is written once
+//! (`examples/catalog/`). The layout is in `docs/spec.md`, "Document files".
+//!
+//! ```toml
+//! [document]
+//! id = "001"
+//! heading = "Seed 001"
+//! title = "PhD thesis, G² cubic trigonometric spline with shape parameter m"
+//! location = "shared/seeds/001_cf6c2ede0355a863.txt"
+//!
+//! [bases]
+//! cubic = "../../examples/catalog/thesis-cubic.toml"
+//!
+//! [[claims]]
+//! id = "T6"
+//! basis = "cubic"
+//! source = "3.3.2 ii"
+//! statement = "⟪Σ b_i(u; m) = 1⟫"
+//! check = "unity"
+//! ```
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+use serde::Deserialize;
+use toml::Spanned;
+use trig_core::input::{MAX_TEXT_BYTES, Source as Input, read_text};
+
+use crate::check::SpecClaim;
+use crate::claims::{claim, umbrellas};
+use crate::error::{Result, SpecError};
+use crate::raw::RawClaim;
+use crate::source::Source;
+use crate::spec::Spec;
+
+/// The check of a claim still decided by the Rust of `trig-verification`
+/// (issue 41 moves each such claim to a check of the spec language).
+pub const BUILT_IN: &str = "built-in";
+
+/// A whole document file.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawDocument {
+    document: Header,
+    #[serde(default)]
+    bases: BTreeMap<String, Spanned<String>>,
+    #[serde(default)]
+    claims: Vec<RawClaim>,
+}
+
+/// `[document]`: what the report says of the document.
+#[derive(Debug, Clone, PartialEq, Eq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Header {
+    /// Short id (the report's summary table, `--seed`).
+    pub id: String,
+    /// The heading of the report's section (`Seed 001`).
+    pub heading: String,
+    pub title: String,
+    /// Where the document is (as the report states it).
+    pub location: String,
+}
+
+impl Header {
+    /// The file name of [`Header::location`].
+    pub fn file_name(&self) -> &str {
+        self.location.rsplit('/').next().unwrap_or(&self.location)
+    }
+}
+
+/// One claim of a document file.
+#[derive(Debug, Clone)]
+pub enum DocumentClaim {
+    /// A claim of the spec language about the basis `basis` (an index of
+    /// [`DocumentFile::bases`]).
+    Stated { basis: usize, claim: Box<SpecClaim> },
+    /// A claim whose decision is still the Rust checker of the same id
+    /// ([`BUILT_IN`]); what is printed is data all the same.
+    BuiltIn {
+        id: String,
+        source: String,
+        statement: String,
+    },
+}
+
+impl DocumentClaim {
+    pub fn id(&self) -> &str {
+        match self {
+            DocumentClaim::Stated { claim, .. } => &claim.id,
+            DocumentClaim::BuiltIn { id, .. } => id,
+        }
+    }
+
+    pub fn source(&self) -> &str {
+        match self {
+            DocumentClaim::Stated { claim, .. } => &claim.source,
+            DocumentClaim::BuiltIn { source, .. } => source,
+        }
+    }
+
+    pub fn statement(&self) -> &str {
+        match self {
+            DocumentClaim::Stated { claim, .. } => &claim.statement,
+            DocumentClaim::BuiltIn { statement, .. } => statement,
+        }
+    }
+}
+
+/// A document file, read: its header, its bases (each a spec file whose
+/// `claims` are the document's claims about it) and its claims in order.
+#[derive(Debug, Clone)]
+pub struct DocumentFile {
+    pub header: Header,
+    /// The file's path as given.
+    pub file: String,
+    /// The bases by the names the file gives them, in the order of the names.
+    pub bases: Vec<(String, Spec)>,
+    pub claims: Vec<DocumentClaim>,
+}
+
+impl DocumentFile {
+    /// Reads the document file at `path`, or `path/document.toml` when
+    /// `path` is a folder.
+    pub fn from_path(path: &Path) -> Result<DocumentFile> {
+        let path = if path.is_dir() {
+            path.join("document.toml")
+        } else {
+            path.to_path_buf()
+        };
+        let file = path.display().to_string();
+        let text = read_text(&Input::of(&path), MAX_TEXT_BYTES).map_err(|e| SpecError::Io {
+            file: file.clone(),
+            reason: e.reason(),
+        })?;
+        let dir = path.parent().map_or_else(PathBuf::new, Path::to_path_buf);
+        DocumentFile::from_str_in(&text, &file, &dir)
+    }
+
+    /// Reads document text; `file` names it in errors and the bases' paths
+    /// are relative to `dir`.
+    pub fn from_str_in(text: &str, file: &str, dir: &Path) -> Result<DocumentFile> {
+        let text = text.strip_prefix(trig_core::input::BOM).unwrap_or(text);
+        let src = Source { file, text };
+        let raw: RawDocument = toml::from_str(text).map_err(|e| SpecError::Malformed {
+            at: src.at(e.span().map_or(0, |s| s.start)),
+            message: e.message().trim().replace('\n', "; "),
+        })?;
+        let mut bases = Vec::new();
+        for (name, path) in &raw.bases {
+            let mut spec = Spec::from_file(&dir.join(path.get_ref()))?;
+            // the basis's own file may list claims: the document states its own
+            spec.claims.clear();
+            bases.push((name.clone(), spec));
+        }
+        let mut claims: Vec<DocumentClaim> = Vec::new();
+        for c in &raw.claims {
+            let read = document_claim(&src, &mut bases, c)?;
+            if claims.iter().any(|d| d.id() == read.id()) {
+                return src.invalid(
+                    c.id.span(),
+                    "claims.id",
+                    format!("`{}` is used twice", read.id()),
+                );
+            }
+            claims.push(read);
+        }
+        for (_, spec) in &bases {
+            umbrellas(&src, spec)?;
+        }
+        Ok(DocumentFile {
+            header: raw.document,
+            file: file.to_string(),
+            bases,
+            claims,
+        })
+    }
+}
+
+/// One claim, read against the basis it names (the file's only basis when
+/// it names none) and recorded among that basis's claims.
+fn document_claim(
+    src: &Source<'_>,
+    bases: &mut [(String, Spec)],
+    c: &RawClaim,
+) -> Result<DocumentClaim> {
+    if c.check.get_ref().trim() == BUILT_IN {
+        if let Err(e) = trig_tex::marked::check(c.statement.get_ref()) {
+            return src.invalid(
+                c.statement.span(),
+                "claims.statement",
+                format!("math marks ⟪…⟫: {e}"),
+            );
+        }
+        return Ok(DocumentClaim::BuiltIn {
+            id: c.id.get_ref().trim().to_string(),
+            source: c.source.clone(),
+            statement: c.statement.get_ref().clone(),
+        });
+    }
+    let basis = match &c.basis {
+        Some(name) => bases
+            .iter()
+            .position(|(n, _)| n == name.get_ref().trim())
+            .ok_or_else(|| SpecError::Invalid {
+                at: src.at(name.span().start),
+                field: "claims.basis".into(),
+                message: format!(
+                    "`{}`: expected one of the file's bases ({})",
+                    name.get_ref(),
+                    names(bases)
+                ),
+            })?,
+        None if bases.len() == 1 => 0,
+        None => {
+            return src.invalid(
+                c.id.span(),
+                "claims.basis",
+                format!(
+                    "claim `{}` names no basis: expected one of {}",
+                    c.id.get_ref(),
+                    names(bases)
+                ),
+            );
+        }
+    };
+    let spec = &mut bases[basis].1;
+    let claim = claim(src, spec, c)?;
+    spec.claims.push(claim.clone());
+    Ok(DocumentClaim::Stated {
+        basis,
+        claim: Box::new(claim),
+    })
+}
+
+fn names(bases: &[(String, Spec)]) -> String {
+    if bases.is_empty() {
+        return "none: the file has no `[bases]`".into();
+    }
+    bases
+        .iter()
+        .map(|(n, _)| format!("`{n}`"))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// The list of a folder of document files (`documents/audit.toml`): the
+/// folders of its documents, in report order.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawList {
+    documents: Vec<String>,
+}
+
+/// The file listing a folder's documents.
+pub const LIST: &str = "audit.toml";
+
+/// Reads the documents that `dir/audit.toml` lists, in its order.
+pub fn read_set(dir: &Path) -> Result<Vec<DocumentFile>> {
+    let path = dir.join(LIST);
+    let file = path.display().to_string();
+    let text = read_text(&Input::of(&path), MAX_TEXT_BYTES).map_err(|e| SpecError::Io {
+        file: file.clone(),
+        reason: e.reason(),
+    })?;
+    let src = Source {
+        file: &file,
+        text: &text,
+    };
+    let list: RawList = toml::from_str(&text).map_err(|e| SpecError::Malformed {
+        at: src.at(e.span().map_or(0, |s| s.start)),
+        message: e.message().trim().replace('\n', "; "),
+    })?;
+    list.documents
+        .iter()
+        .map(|d| DocumentFile::from_path(&dir.join(d)))
+        .collect()
+}
+
+/// Whether `path` is a document file (or a folder holding one) rather than
+/// a spec file: a folder, or TOML with a `[document]` table.
+pub fn is_document(path: &Path) -> bool {
+    if path.is_dir() {
+        return true;
+    }
+    read_text(&Input::of(path), MAX_TEXT_BYTES)
+        .ok()
+        .and_then(|text| text.parse::<toml::Table>().ok())
+        .is_some_and(|t| t.contains_key("document"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::check::Check;
+
+    fn catalog() -> PathBuf {
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/catalog")
+    }
+
+    const HEADER: &str = "[document]\nid = \"x\"\nheading = \"Paper x\"\ntitle = \"t\"\nlocation = \"papers/x.pdf\"\n";
+
+    fn read(body: &str) -> Result<DocumentFile> {
+        DocumentFile::from_str_in(&format!("{HEADER}{body}"), "x.toml", &catalog())
+    }
+
+    fn claim(id: &str, basis: Option<&str>, check: &str) -> String {
+        let basis = basis.map_or(String::new(), |b| format!("basis = \"{b}\"\n"));
+        format!(
+            "[[claims]]\nid = \"{id}\"\nsource = \"(1)\"\nstatement = \"s\"\n{basis}check = \"{check}\"\n"
+        )
+    }
+
+    #[test]
+    fn claims_name_their_basis_and_keep_their_order() {
+        let doc = read(&format!(
+            "[bases]\ncubic = \"thesis-cubic.toml\"\nquadratic = \"thesis-quadratic.toml\"\n{}{}{}",
+            claim("b", Some("quadratic"), "unity"),
+            claim("a", None, BUILT_IN),
+            claim("c", Some("cubic"), "unity"),
+        ))
+        .unwrap();
+        assert_eq!(doc.header.file_name(), "x.pdf");
+        let ids: Vec<&str> = doc.claims.iter().map(DocumentClaim::id).collect();
+        assert_eq!(ids, ["b", "a", "c"]);
+        let DocumentClaim::Stated { basis, claim } = &doc.claims[0] else {
+            panic!("a stated claim");
+        };
+        assert_eq!(doc.bases[*basis].1.id, "thesis-quadratic");
+        assert_eq!(claim.check, Check::Unity);
+        assert!(matches!(doc.claims[1], DocumentClaim::BuiltIn { .. }));
+        // each basis holds the document's claims about it, and only those
+        assert_eq!(doc.bases[0].1.claims.len(), 1);
+        assert_eq!(doc.bases[0].1.claims[0].id, "c");
+    }
+
+    #[test]
+    fn a_claim_must_name_one_of_several_bases() {
+        let two = "[bases]\ncubic = \"thesis-cubic.toml\"\nquadratic = \"thesis-quadratic.toml\"\n";
+        let e = read(&format!("{two}{}", claim("a", None, "unity"))).unwrap_err();
+        assert!(
+            e.to_string()
+                .contains("names no basis: expected one of `cubic`, `quadratic`"),
+            "{e}"
+        );
+        let e = read(&format!("{two}{}", claim("a", Some("quartic"), "unity"))).unwrap_err();
+        assert!(
+            e.to_string()
+                .contains("`quartic`: expected one of the file's bases"),
+            "{e}"
+        );
+        let e = read(&claim("a", None, "unity")).unwrap_err();
+        assert!(e.to_string().contains("the file has no `[bases]`"), "{e}");
+    }
+
+    #[test]
+    fn ids_are_unique_across_bases_and_a_missing_basis_file_is_named() {
+        let e = read(&format!(
+            "[bases]\ncubic = \"thesis-cubic.toml\"\n{}{}",
+            claim("a", None, "unity"),
+            claim("a", None, BUILT_IN)
+        ))
+        .unwrap_err();
+        assert!(e.to_string().contains("`a` is used twice"), "{e}");
+        let e = read("[bases]\ncubic = \"no-such-basis.toml\"\n").unwrap_err();
+        assert!(matches!(e, SpecError::Io { .. }), "{e}");
+    }
+
+    #[test]
+    fn a_spec_file_refuses_basis() {
+        let text = std::fs::read_to_string(catalog().join("bernstein3.toml")).unwrap();
+        let e = Spec::from_str_named(
+            &format!("{text}\n{}", claim("a", Some("b"), "unity")),
+            "b.toml",
+        )
+        .unwrap_err();
+        assert!(
+            e.to_string().contains("a spec file states one basis"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn a_document_is_told_apart_from_a_spec_file() {
+        assert!(is_document(&catalog()));
+        assert!(!is_document(&catalog().join("bernstein3.toml")));
+    }
+}

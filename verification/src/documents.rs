@@ -1,0 +1,114 @@
+//! The audit of document files (`documents/`, `docs/spec.md` "Document
+//! files"): every claim a document prints, as data, decided by the judges
+//! through the spec language — or, for a claim still marked `built-in`, by
+//! its Rust checker in [`crate::claims`] — and reported as one [`Entry`]
+//! each, in the files' order.
+
+use std::path::{Path, PathBuf};
+
+use trig_specfile::document::{Header, read_set};
+use trig_specfile::{DocumentClaim, DocumentFile, Spec, SpecClaim, SpecError};
+use trig_verdict::Verdict;
+
+use crate::claim::Claim;
+use crate::entry::{Document, Entry};
+use crate::figures;
+
+/// Why the document files cannot be audited.
+#[derive(Debug, thiserror::Error)]
+pub enum DocumentsError {
+    #[error(transparent)]
+    Spec(#[from] SpecError),
+    /// A claim marked `built-in` that no Rust checker decides.
+    #[error("{file}: claim `{id}` is marked `built-in`, but no Rust checker has that id")]
+    NoChecker { file: String, id: String },
+}
+
+/// The folder of the five documents: `documents/` of the working directory
+/// when it has the list, else the one of the checkout this was built from.
+pub fn default_dir() -> PathBuf {
+    let here = PathBuf::from("documents");
+    if here.join(trig_specfile::document::LIST).is_file() {
+        here
+    } else {
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../documents")
+    }
+}
+
+/// Reads the documents `dir` lists (`dir/audit.toml`).
+pub fn load(dir: &Path) -> Result<Vec<DocumentFile>, DocumentsError> {
+    Ok(read_set(dir)?)
+}
+
+/// The report document of a document file at position `order`.
+pub fn document(header: &Header, order: usize) -> Document {
+    Document {
+        heading: header.heading.clone(),
+        id: header.id.clone(),
+        title: header.title.clone(),
+        file: header.file_name().to_string(),
+        location: header.location.clone(),
+        order,
+        battery: false,
+    }
+}
+
+/// What decides one claim.
+enum Decider<'a> {
+    Stated(&'a Spec, &'a SpecClaim),
+    Rust(Claim),
+}
+
+/// The claims of `documents` (those of the document with id `only_document`
+/// and the claim with id `only_claim`, case-insensitive, when given),
+/// decided on every available core, in the files' order.
+pub fn audit(
+    documents: &[DocumentFile],
+    only_document: Option<&str>,
+    only_claim: Option<&str>,
+) -> Result<Vec<Entry>, DocumentsError> {
+    let rust = crate::claims::all();
+    let mut chosen: Vec<(Entry, Decider<'_>)> = Vec::new();
+    for (order, doc) in documents.iter().enumerate() {
+        if only_document.is_some_and(|d| d != doc.header.id) {
+            continue;
+        }
+        let report = document(&doc.header, order);
+        for c in &doc.claims {
+            if only_claim.is_some_and(|id| !c.id().eq_ignore_ascii_case(id)) {
+                continue;
+            }
+            let decider = match c {
+                DocumentClaim::Stated { basis, claim } => {
+                    Decider::Stated(&doc.bases[*basis].1, claim)
+                }
+                DocumentClaim::BuiltIn { id, .. } => {
+                    Decider::Rust(*rust.iter().find(|r| r.id == id).ok_or_else(|| {
+                        DocumentsError::NoChecker {
+                            file: doc.file.clone(),
+                            id: id.clone(),
+                        }
+                    })?)
+                }
+            };
+            let entry = Entry {
+                id: c.id().to_string(),
+                document: report.clone(),
+                source: c.source().to_string(),
+                statement: c.statement().to_string(),
+                verdict: Verdict::not_checkable("not decided yet"),
+                figure: figures::for_claim(c.id()),
+            };
+            chosen.push((entry, decider));
+        }
+    }
+    let verdicts = trig_core::parallel::map(&chosen, |(_, decider)| match decider {
+        Decider::Stated(spec, claim) => crate::spec_audit::decide_in(spec, claim),
+        Decider::Rust(claim) => (claim.check)(),
+    });
+    Ok(chosen
+        .into_iter()
+        .zip(verdicts)
+        .map(|((entry, _), verdict)| Entry { verdict, ..entry })
+        .collect())
+}
