@@ -208,6 +208,10 @@ pub struct SpecClaim {
     /// The paper states the check's negation ("is not C⁴", "is not
     /// totally positive"): the claim holds where the check fails.
     pub negated: bool,
+    /// Remarks of the file shown after the evidence (`notes = […]`): how a
+    /// print is read, what the document says beside the claim; they never
+    /// change the verdict.
+    pub notes: Vec<String>,
 }
 
 /// A parameter value fixed by a claim.

@@ -430,6 +430,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
         check,
         given,
         negated: c.negated == Some(true),
+        notes: c.notes.clone().unwrap_or_default(),
     })
 }
 

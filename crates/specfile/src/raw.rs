@@ -85,6 +85,9 @@ pub struct RawClaim {
     pub reason: Option<Spanned<String>>,
     /// The statement is the negation of the check ("is not C⁴").
     pub negated: Option<bool>,
+    /// Remarks shown after the evidence (how a print is read, what the
+    /// document says beside the claim).
+    pub notes: Option<Vec<String>>,
     /// In a document file: the basis the claim is about (a name of its
     /// `[bases]`).
     pub basis: Option<Spanned<String>>,

@@ -13,9 +13,7 @@ use trig_certify::ParamBox;
 use trig_judge::certificate::{
     maximal_versus_published, monotone, nonnegative_on, on_published_range,
 };
-use trig_judge::exact::{
-    at_end, basis, combination, identities, identity, residual_verdict, sum, symbols,
-};
+use trig_judge::exact::{at_end, basis, combination, identities, residual_verdict, sum, symbols};
 use trig_judge::numeric::{counterexample_item, differ, half_pi_minus, point, show, value};
 use trig_judge::symmetry::reflection_symmetry;
 use trig_verdict::evidence::Evidence;
@@ -23,10 +21,6 @@ use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[
-    Claim {
-        id: "T1",
-        check: t1,
-    },
     Claim {
         id: "T2",
         check: t2,
@@ -92,14 +86,6 @@ fn points(n: usize) -> Vec<Sym> {
 /// `Σ b_i P_i` with symbolic control points.
 fn curve(b: &[Sym]) -> Sym {
     combination(b, &points(b.len()))
-}
-
-fn t1() -> Verdict {
-    let h = basis(Family::ThesisQuadratic);
-    let mut v = identity("H0 + H1 + H2 − 1", &sum(&h), &Sym::one());
-    v.evidence
-        .push("H1 is defined in (3.1) as 1 − H0 − H2, so the identity holds by construction");
-    v
 }
 
 /// A counterexample to `f_i(x) = f_j(π/2 − x)` for a family in `u`.

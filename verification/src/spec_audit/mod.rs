@@ -272,9 +272,12 @@ pub fn decide_in(spec: &Spec, claim: &SpecClaim) -> Verdict {
 /// The verdict of one claim of the file: the values it fixes substituted
 /// and the ranges it gives put in place first (`trig_specfile::Given`); a
 /// claim stated as the negation of its check holds where the check fails.
+/// The file's notes follow the evidence.
 pub fn decide(spec: &Spec, claim: &SpecClaim) -> Verdict {
     let v = decide_stated(spec, claim);
-    if claim.negated { negation(v) } else { v }
+    let mut v = if claim.negated { negation(v) } else { v };
+    v.evidence.extend(claim.notes.iter().map(String::as_str));
+    v
 }
 
 /// The negation of a check's verdict: holds where the check fails (its
