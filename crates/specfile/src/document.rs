@@ -214,6 +214,16 @@ fn document_claim(
                 ),
             })?,
         None if bases.len() == 1 => 0,
+        None if bases.is_empty() => {
+            return src.invalid(
+                c.id.span(),
+                "claims.basis",
+                format!(
+                    "claim `{}` needs a basis, and the file has no `[bases]` (name = \"spec file\")",
+                    c.id.get_ref()
+                ),
+            );
+        }
         None => {
             return src.invalid(
                 c.id.span(),
@@ -237,7 +247,7 @@ fn document_claim(
 
 fn names(bases: &[(String, Spec)]) -> String {
     if bases.is_empty() {
-        return "none: the file has no `[bases]`".into();
+        return "none".into();
     }
     bases
         .iter()
@@ -352,7 +362,11 @@ mod tests {
             "{e}"
         );
         let e = read(&claim("a", None, "unity")).unwrap_err();
-        assert!(e.to_string().contains("the file has no `[bases]`"), "{e}");
+        assert!(
+            e.to_string()
+                .contains("needs a basis, and the file has no `[bases]`"),
+            "{e}"
+        );
     }
 
     #[test]
