@@ -22,7 +22,7 @@ pub mod plot;
 pub mod scheme;
 pub mod slopes;
 
-pub use data::{DataSet, TABLES, Table};
+pub use data::{DataSet, Table};
 pub use interval::Interval;
 pub use jumps::{KnotJump, knot_jumps};
 pub use kind::{Scheme, Variant};
