@@ -31,6 +31,9 @@ pub use piece::Piece;
 pub use plot::{PlotSegment, f64_segments};
 pub use scheme::{Spline, build};
 
+/// The basis every piece is built on: the thesis cubic (3.7).
+pub const BASIS: trig_core::Family = trig_core::Family::ThesisCubic;
+
 /// What can go wrong building or certifying an interpolant.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum InterpError {

@@ -31,6 +31,8 @@ pub mod exact;
 pub mod exact_ends;
 pub mod exceptional;
 pub mod independence;
+pub mod interpolant;
+pub mod interpolant_point;
 pub mod join;
 pub mod local_control;
 pub mod maxima;

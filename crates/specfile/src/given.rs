@@ -533,7 +533,8 @@ impl<'a> Substitution<'a> {
             | Check::Continuity { .. }
             | Check::LocalControl { .. }
             | Check::All { .. }
-            | Check::NotPrinted { .. } => {}
+            | Check::NotPrinted { .. }
+            | Check::InterpolantNonnegative { .. } => {}
         }
         Ok(c)
     }

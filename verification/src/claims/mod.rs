@@ -20,7 +20,6 @@ mod seed004_joins;
 mod shape_effect;
 mod thesis;
 mod thesis_interp;
-mod thesis_interp_point;
 mod thesis_interp_text;
 mod thesis_joins;
 mod thesis_lsq;
