@@ -46,6 +46,7 @@ pub mod shape_effect;
 pub mod span;
 pub mod surface;
 pub mod symmetry;
+pub mod table_arithmetic;
 pub mod total_positivity;
 pub mod tp_maximal;
 pub mod tp_maximal_box;

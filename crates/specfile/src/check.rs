@@ -188,6 +188,11 @@ pub enum Check {
         data: DataSet,
         scheme: Scheme,
     },
+    /// Printed error tables (a table file, `path` as written, relative to
+    /// the claim's file; `text` as read) against their own arithmetic:
+    /// totals, extremes and means of the segment rows, summaries against
+    /// the tables they summarise, the best scheme against the summaries.
+    TableArithmetic { path: String, text: String },
 }
 
 /// How a printed identity is quantified over the parameter values.

@@ -327,11 +327,15 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             }
         }
         "interpolant-nonnegative" => interpolant(src, c)?,
+        "table-arithmetic" => {
+            let (path, text) = data_file(src, c)?;
+            Check::TableArithmetic { path, text }
+        }
         other => {
             return src.invalid(
                 c.check.span(),
                 "claims.check",
-                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, continuity, local-control, all, not-printed or interpolant-nonnegative"),
+                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, continuity, local-control, all, not-printed, interpolant-nonnegative or table-arithmetic"),
             );
         }
     };
@@ -356,7 +360,10 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
         (
             "data",
             c.data.as_ref().map(Spanned::span),
-            matches!(check, Check::InterpolantNonnegative { .. }),
+            matches!(
+                check,
+                Check::InterpolantNonnegative { .. } | Check::TableArithmetic { .. }
+            ),
         ),
         (
             "scheme",
@@ -373,6 +380,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                     match field {
                         "claims" | "brief" => "all",
                         "reason" => "not-printed",
+                        "data" => "interpolant-nonnegative` or `check = \"table-arithmetic",
                         _ => "interpolant-nonnegative",
                     }
                 ),
@@ -414,11 +422,16 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             "an umbrella or a claim the copy does not print fixes no values (its parts fix their own)".into(),
         );
     }
-    if matches!(check, Check::InterpolantNonnegative { .. }) && !given.is_empty() {
+    if matches!(
+        check,
+        Check::InterpolantNonnegative { .. } | Check::TableArithmetic { .. }
+    ) && !given.is_empty()
+    {
         return src.invalid(
             c.check.span(),
             "claims.at",
-            "an interpolant takes its parameters from its table (one value per interval): the claim fixes no values".into(),
+            "a claim about a printed table takes its values from the table: it fixes no values"
+                .into(),
         );
     }
     if c.maximal == Some(true) && spec.params.is_empty() {
@@ -466,17 +479,13 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
 /// read here, so a missing or malformed table is an error of the file) and
 /// `scheme` (the table's own unless given).
 fn interpolant(src: &Source<'_>, c: &RawClaim) -> Result<Check> {
-    let path = need(src, c, &c.data, "data")?;
-    let dir = Path::new(src.file).parent().unwrap_or(Path::new(""));
-    let file = dir.join(path.get_ref().trim());
-    let bad = |message: String| src.invalid(path.span(), "claims.data", message);
-    let text = match read_text(&Input::of(&file), MAX_TEXT_BYTES) {
-        Ok(text) => text,
-        Err(e) => return bad(format!("{}: {}", file.display(), e.reason())),
-    };
+    let (path, text) = data_file(src, c)?;
     let data = match DataSet::parse(&text) {
         Ok(data) => data,
-        Err(e) => return bad(format!("{}: {e}", file.display())),
+        Err(e) => {
+            let span = need(src, c, &c.data, "data")?.span();
+            return src.invalid(span, "claims.data", format!("{path}: {e}"));
+        }
     };
     let scheme = match &c.scheme {
         None => data.table.scheme,
@@ -485,11 +494,23 @@ fn interpolant(src: &Source<'_>, c: &RawClaim) -> Result<Check> {
             Err(e) => return src.invalid(s.span(), "claims.scheme", e.to_string()),
         },
     };
-    Ok(Check::InterpolantNonnegative {
-        path: path.get_ref().trim().to_string(),
-        data,
-        scheme,
-    })
+    Ok(Check::InterpolantNonnegative { path, data, scheme })
+}
+
+/// The table file `data = "…"` names (relative to the claim's file), as
+/// written and as read: a file that cannot be read is an error of the file.
+fn data_file(src: &Source<'_>, c: &RawClaim) -> Result<(String, String)> {
+    let path = need(src, c, &c.data, "data")?;
+    let dir = Path::new(src.file).parent().unwrap_or(Path::new(""));
+    let file = dir.join(path.get_ref().trim());
+    match read_text(&Input::of(&file), MAX_TEXT_BYTES) {
+        Ok(text) => Ok((path.get_ref().trim().to_string(), text)),
+        Err(e) => src.invalid(
+            path.span(),
+            "claims.data",
+            format!("{}: {}", file.display(), e.reason()),
+        ),
+    }
 }
 
 /// `control = "point"` (the control point `P_j`) or a parameter's name

@@ -424,7 +424,7 @@ mod tests {
         assert!(e("data = \"document.toml\"\n", check).contains("expected `FIELD: value`"));
         assert!(
             e("data = \"table-4.6.tsv\"\n", "unity")
-                .contains("`data` belongs to `check = \"interpolant-nonnegative\"`")
+                .contains("`data` belongs to `check = \"interpolant-nonnegative`")
         );
         assert!(
             e("at = { m = \"0\" }\ndata = \"table-4.6.tsv\"\n", check).contains("fixes no values")

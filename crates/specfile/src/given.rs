@@ -534,7 +534,8 @@ impl<'a> Substitution<'a> {
             | Check::LocalControl { .. }
             | Check::All { .. }
             | Check::NotPrinted { .. }
-            | Check::InterpolantNonnegative { .. } => {}
+            | Check::InterpolantNonnegative { .. }
+            | Check::TableArithmetic { .. } => {}
         }
         Ok(c)
     }

@@ -25,7 +25,6 @@ mod thesis_joins;
 mod thesis_lsq;
 mod thesis_out_of_range;
 mod thesis_survey;
-mod thesis_tables;
 mod thesis_text;
 mod total_positivity;
 
@@ -35,7 +34,6 @@ pub fn all() -> Vec<Claim> {
         thesis::CLAIMS,
         thesis_interp::CLAIMS,
         thesis_joins::CLAIMS,
-        thesis_tables::CLAIMS,
         seed000::CLAIMS,
         seed000_appendix_c::CLAIMS,
         seed000_appendix_e::CLAIMS,

@@ -540,6 +540,7 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
         Check::InterpolantNonnegative { data, scheme, .. } => {
             trig_judge::interpolant::nonnegative(spec, data, *scheme)
         }
+        Check::TableArithmetic { text, .. } => trig_judge::table_arithmetic::decide(text),
         Check::LocalControl { varied, segments } => {
             let control = match varied {
                 Varied::Point => Control::Point,
