@@ -16,7 +16,6 @@ mod claims;
 pub mod documents;
 pub mod entry;
 pub mod figures;
-pub mod minimum;
 pub mod spec_audit;
 
 pub use claim::Claim;

@@ -54,7 +54,13 @@ fn positivity_of_each_example() {
     let t24f = verdict("T24f");
     assert_eq!(t24f.status, Status::Fails);
     assert!(has(&t24f, "piece 2: min P ∈ [-0.127737, -0.127736]"));
-    assert_eq!(verdict("T24").status, Status::Fails);
+    // the umbrella over the parts reported on their own (`brief = true`):
+    // each part's verdict, and the failing part's witness
+    let t24 = verdict("T24");
+    assert_eq!(t24.status, Status::Fails);
+    assert!(has(&t24, "reported as claim T24f"));
+    assert!(t24.evidence.iter().any(|e| e.witness.is_some()));
+    assert!(!has(&t24, "(printed), piece 1"));
     // the corrected schemes go negative on the same tables
     assert!(has(
         &verdict("T24b"),

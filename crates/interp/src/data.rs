@@ -1,4 +1,6 @@
-//! The thesis's data sets, Tables 4.1–4.6 of section 4.3, exactly as printed.
+//! Printed data tables for interpolation, read exactly from table files:
+//! the thesis's Tables 4.1–4.6 of section 4.3 are `documents/thesis/table-4.*.tsv`
+//! (built in, by name, for the commands); a claim names any such file.
 //!
 //! Each table lists `i, x_i, f_i` and, per interval `[x_i, x_{i+1}]`, the
 //! shape parameter `m_i` and the scheme's factors (`n_i` for G¹, `α_i`, `β_i`
@@ -13,110 +15,28 @@ use trig_core::parse_exact;
 use crate::InterpError;
 use crate::kind::Scheme;
 
-/// One printed table.
-#[derive(Debug, Clone, Copy)]
+/// What a table file says of its table besides the rows.
+#[derive(Debug, Clone)]
 pub struct Table {
     /// Name on the command line, `thesis-table-4.1` …
-    pub name: &'static str,
+    pub name: String,
     /// The table's caption as printed.
-    pub caption: &'static str,
-    /// Where it is printed and the source the thesis cites for it.
-    pub citation: &'static str,
+    pub caption: String,
+    /// Where it is printed and the source the document cites for it.
+    pub citation: String,
     /// The scheme of the section the table illustrates.
     pub scheme: Scheme,
-    /// Column headers after `i, x_i, f_i` (e.g. `["m", "n"]`).
-    pub columns: &'static [&'static str],
-    /// Rows as printed: `x_i, f_i`, then one entry per column (`-` on the last row).
-    pub rows: &'static [&'static [&'static str]],
 }
 
-const DUBE_SINGH: &str =
-    "real positive data from Dube & Singh (2014), as cited by the thesis (4.3.1)";
-
-/// Tables 4.1–4.6 in order.
-pub const TABLES: [Table; 6] = [
-    Table {
-        name: "thesis-table-4.1",
-        caption: "Table 4.1 Positive Data Set (I)",
-        citation: DUBE_SINGH,
-        scheme: Scheme::C1,
-        columns: &["m"],
-        rows: &[
-            &["1", "3", "0.5"],
-            &["2", "6", "1"],
-            &["3", "5", "-0.5"],
-            &["4", "8", "-1"],
-            &["5", "1", "-"],
-        ],
-    },
-    Table {
-        name: "thesis-table-4.2",
-        caption: "Table 4.2 Positive Data Set (II)",
-        citation: DUBE_SINGH,
-        scheme: Scheme::C2,
-        columns: &["m"],
-        rows: &[
-            &["1", "3", "0.5"],
-            &["2", "6", "-1"],
-            &["3", "5", "0.1"],
-            &["4", "8", "-0.5"],
-            &["5", "1", "-"],
-        ],
-    },
-    Table {
-        name: "thesis-table-4.3",
-        caption: "Table 4.3 Positive Data Set (III)",
-        citation: DUBE_SINGH,
-        scheme: Scheme::G1,
-        columns: &["m", "n"],
-        rows: &[
-            &["1", "3", "1", "0.1"],
-            &["2", "6", "0.6", "2"],
-            &["3", "5", "0.5", "3"],
-            &["4", "8", "-1", "1.5"],
-            &["5", "1", "-", "-"],
-        ],
-    },
-    Table {
-        name: "thesis-table-4.4",
-        caption: "Table 4.4 Positive Data Set (IV)",
-        citation: DUBE_SINGH,
-        scheme: Scheme::G2,
-        columns: &["m", "alpha", "beta"],
-        rows: &[
-            &["1", "3", "0.5", "0.5", "4"],
-            &["2", "6", "-1", "1", "5"],
-            &["3", "5", "-1", "2", "0.15"],
-            &["4", "8", "0.2", "2", "3"],
-            &["5", "1", "-", "-", "-"],
-        ],
-    },
-    Table {
-        name: "thesis-table-4.5",
-        caption: "Table 4.5 Positive Data Set (V)",
-        citation: "thesis 4.3.5 (G² scheme, Figure 4.14); the thesis cites no source for this near-zero data set",
-        scheme: Scheme::G2,
-        columns: &["m", "alpha", "beta"],
-        rows: &[
-            &["0", "12", "0.8", "0.5", "5"],
-            &["1", "0.1", "-1", "0.04", "0.5"],
-            &["2", "1", "0.5", "2", "0.15"],
-            &["3", "13", "-", "-", "-"],
-        ],
-    },
-    Table {
-        name: "thesis-table-4.6",
-        caption: "Table 4.6 Positive Data Set (V1) [sic, VI]",
-        citation: "thesis 4.3.5 (G¹ scheme, Figure 4.15); the thesis cites no source for this near-zero data set",
-        scheme: Scheme::G1,
-        columns: &["m", "n"],
-        rows: &[
-            &["0", "12", "1", "0.1"],
-            &["1", "0.1", "0.9", "0.001"],
-            &["2", "1", "1", "1.5"],
-            &["3", "13", "-", "-"],
-        ],
-    },
+/// The table files of the thesis's Tables 4.1–4.6 (`documents/thesis/`),
+/// the data sets the commands know by name.
+pub const BUILT_IN: [&str; 6] = [
+    include_str!("../../../documents/thesis/table-4.1.tsv"),
+    include_str!("../../../documents/thesis/table-4.2.tsv"),
+    include_str!("../../../documents/thesis/table-4.3.tsv"),
+    include_str!("../../../documents/thesis/table-4.4.tsv"),
+    include_str!("../../../documents/thesis/table-4.5.tsv"),
+    include_str!("../../../documents/thesis/table-4.6.tsv"),
 ];
 
 /// A table read exactly: knots, values and per-interval parameters.
@@ -128,7 +48,7 @@ pub struct DataSet {
     /// `f_0 … f_n`.
     pub f: Vec<Rational>,
     /// Per-interval columns by header (`m`, `n`, `alpha`, `beta`), `n` entries each.
-    pub params: Vec<(&'static str, Vec<Rational>)>,
+    pub params: Vec<(String, Vec<Rational>)>,
 }
 
 impl PartialEq for Table {
@@ -137,52 +57,128 @@ impl PartialEq for Table {
     }
 }
 
+/// The header fields a table file gives before its columns.
+const FIELDS: [&str; 4] = ["name", "caption", "citation", "scheme"];
+
 impl DataSet {
-    /// The data set named `name` (`thesis-table-4.1` …).
+    /// The built-in data set named `name` (`thesis-table-4.1` …).
     pub fn named(name: &str) -> Result<DataSet, InterpError> {
-        let table = TABLES
-            .iter()
-            .find(|t| t.name == name)
-            .ok_or_else(|| InterpError::UnknownData(name.to_string()))?;
-        DataSet::read(table)
+        for text in BUILT_IN {
+            let data = DataSet::parse(text)?;
+            if data.table.name == name {
+                return Ok(data);
+            }
+        }
+        Err(InterpError::UnknownData(name.to_string()))
     }
 
-    /// Reads a table exactly.
-    pub fn read(table: &Table) -> Result<DataSet, InterpError> {
-        let num = |s: &str| {
-            parse_exact(s).map_err(|e| InterpError::Malformed(format!("{}: {e}", table.name)))
+    /// Reads a table file exactly. The layout: `#` comment lines (where the
+    /// table is printed), the fields `name: …`, `caption: …`, `citation: …`,
+    /// `scheme: c1` (the scheme the table illustrates), then tab-separated
+    /// rows under a header `i  x  f  <parameters…>`: `i` the printed row
+    /// number (1, 2, …), `x_i`, `f_i`, and one column per parameter of the
+    /// interval `[x_i, x_{i+1}]`, printed `-` on the last row.
+    pub fn parse(text: &str) -> Result<DataSet, InterpError> {
+        let mut fields: Vec<(&str, &str)> = Vec::new();
+        let mut header: Option<Vec<&str>> = None;
+        let mut rows: Vec<(usize, Vec<&str>)> = Vec::new();
+        for (k, line) in text.lines().enumerate() {
+            let line_no = k + 1;
+            let bad = |why: String| InterpError::Malformed(format!("line {line_no}: {why}"));
+            let line = line.trim_end();
+            if line.trim().is_empty() || line.starts_with('#') {
+                continue;
+            }
+            if header.is_none() && !line.contains('\t') {
+                let (key, value) = line.split_once(':').ok_or_else(|| {
+                    bad(format!(
+                        "`{line}`: expected `FIELD: value` or the tab-separated header"
+                    ))
+                })?;
+                let key = key.trim();
+                if !FIELDS.contains(&key) || fields.iter().any(|(k, _)| *k == key) {
+                    return Err(bad(format!(
+                        "`{key}`: expected each of {} once",
+                        FIELDS.join(", ")
+                    )));
+                }
+                fields.push((key, value.trim()));
+                continue;
+            }
+            let cells: Vec<&str> = line.split('\t').map(str::trim).collect();
+            match &header {
+                None => {
+                    if cells.len() < 3 || cells[..3] != ["i", "x", "f"] {
+                        return Err(bad("the header starts with the columns i, x, f".into()));
+                    }
+                    header = Some(cells);
+                }
+                Some(h) if cells.len() != h.len() => {
+                    return Err(bad(format!(
+                        "{} cells under {} columns",
+                        cells.len(),
+                        h.len()
+                    )));
+                }
+                Some(_) => rows.push((line_no, cells)),
+            }
+        }
+        let field = |key: &str| {
+            fields
+                .iter()
+                .find(|(k, _)| *k == key)
+                .map(|(_, v)| v.to_string())
+                .ok_or_else(|| InterpError::Malformed(format!("no `{key}:` line")))
         };
-        let x = table
-            .rows
-            .iter()
-            .map(|r| num(r[0]))
-            .collect::<Result<Vec<_>, _>>()?;
-        let f = table
-            .rows
-            .iter()
-            .map(|r| num(r[1]))
-            .collect::<Result<Vec<_>, _>>()?;
+        let table = Table {
+            name: field("name")?,
+            caption: field("caption")?,
+            citation: field("citation")?,
+            scheme: field("scheme")?.parse()?,
+        };
+        let header = header.ok_or_else(|| InterpError::Malformed("no header row".into()))?;
+        if rows.len() < 2 {
+            return Err(InterpError::Malformed(format!(
+                "{}: a table needs at least two rows",
+                table.name
+            )));
+        }
+        let num = |line: usize, s: &str| {
+            parse_exact(s)
+                .map_err(|e| InterpError::Malformed(format!("{}, line {line}: {e}", table.name)))
+        };
+        for (k, (line, cells)) in rows.iter().enumerate() {
+            if cells[0] != (k + 1).to_string() {
+                return Err(InterpError::Malformed(format!(
+                    "{}, line {line}: row number {} where {} is next",
+                    table.name,
+                    cells[0],
+                    k + 1
+                )));
+            }
+        }
+        let column = |c: usize, take: usize| {
+            rows[..take]
+                .iter()
+                .map(|(line, cells)| num(*line, cells[c]))
+                .collect::<Result<Vec<_>, _>>()
+        };
+        let x = column(1, rows.len())?;
+        let f = column(2, rows.len())?;
         if x.windows(2).any(|w| w[0] >= w[1]) {
             return Err(InterpError::Malformed(format!(
                 "{}: the abscissae are not increasing",
                 table.name
             )));
         }
-        let intervals = table.rows.len() - 1;
-        let params = table
-            .columns
+        let intervals = rows.len() - 1;
+        let params = header[3..]
             .iter()
             .enumerate()
-            .map(|(k, name)| {
-                let column = table.rows[..intervals]
-                    .iter()
-                    .map(|r| num(r[2 + k]))
-                    .collect::<Result<Vec<_>, _>>()?;
-                Ok((*name, column))
-            })
+            .map(|(k, name)| Ok((name.to_string(), column(3 + k, intervals)?)))
             .collect::<Result<Vec<_>, InterpError>>()?;
         Ok(DataSet {
-            table: *table,
+            table,
             x,
             f,
             params,
@@ -230,10 +226,14 @@ mod tests {
             t6.column("n", Scheme::G1).unwrap()[1],
             Rational::from((1, 1000))
         );
-        for t in &TABLES {
-            let d = DataSet::read(t).unwrap();
-            assert_eq!(d.column("m", t.scheme).unwrap().len(), d.intervals());
-            assert!(d.f.iter().all(|f| *f > 0), "{}: data are positive", t.name);
+        for text in BUILT_IN {
+            let d = DataSet::parse(text).unwrap();
+            assert_eq!(d.column("m", d.table.scheme).unwrap().len(), d.intervals());
+            assert!(
+                d.f.iter().all(|f| *f > 0),
+                "{}: data are positive",
+                d.table.name
+            );
         }
         assert!(matches!(
             DataSet::named("thesis-table-9"),
@@ -244,5 +244,23 @@ mod tests {
             t1.column("n", Scheme::G1),
             Err(InterpError::MissingColumn { .. })
         ));
+    }
+
+    #[test]
+    fn malformed_table_files_are_refused_with_the_line() {
+        let head = "name: t\ncaption: c\ncitation: s\nscheme: c1\n";
+        let ok = format!("{head}i\tx\tf\tm\n1\t0\t1\t1/2\n2\t1\t2\t-\n");
+        let d = DataSet::parse(&ok).unwrap();
+        assert_eq!(
+            d.params,
+            vec![("m".to_string(), vec![Rational::from((1, 2))])]
+        );
+        let e = |text: &str| DataSet::parse(text).unwrap_err().to_string();
+        assert!(e(&ok.replace("2\t1\t2", "2\t0\t2")).contains("not increasing"));
+        assert!(e(&ok.replace("2\t1\t2\t-", "3\t1\t2\t-")).contains("line 7: row number 3"));
+        assert!(e(&ok.replace("1\t0\t1\t1/2", "1\t0\t1")).contains("line 6: 3 cells under 4"));
+        assert!(e(&ok.replace("scheme: c1\n", "")).contains("no `scheme:` line"));
+        assert!(e(&ok.replace("1/2", "x")).contains("line 6"));
+        assert!(e(&format!("nam: t\n{ok}")).contains("line 1: `nam`"));
     }
 }

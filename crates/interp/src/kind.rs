@@ -27,6 +27,17 @@ impl Scheme {
             Scheme::G2 => "thesis 4.3.4, (4.28)–(4.34)",
         }
     }
+
+    /// The corrected variant of a print that has one (the C² and G²
+    /// schemes), as the evidence names it; `None` where the printed scheme
+    /// is the corrected one.
+    pub fn correction(&self) -> Option<&'static str> {
+        match self {
+            Scheme::C1 | Scheme::G1 => None,
+            Scheme::C2 => Some("interior d_i from the C² conditions"),
+            Scheme::G2 => Some("join (4.33) solved in x through the basis, each piece its own m_i"),
+        }
+    }
 }
 
 impl fmt::Display for Scheme {

@@ -22,7 +22,7 @@ pub mod plot;
 pub mod scheme;
 pub mod slopes;
 
-pub use data::{DataSet, TABLES, Table};
+pub use data::{DataSet, Table};
 pub use interval::Interval;
 pub use jumps::{KnotJump, knot_jumps};
 pub use kind::{Scheme, Variant};
@@ -30,6 +30,9 @@ pub use minimum::{PieceMinimum, Proof, certified_minimum};
 pub use piece::Piece;
 pub use plot::{PlotSegment, f64_segments};
 pub use scheme::{Spline, build};
+
+/// The basis every piece is built on: the thesis cubic (3.7).
+pub const BASIS: trig_core::Family = trig_core::Family::ThesisCubic;
 
 /// What can go wrong building or certifying an interpolant.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]

@@ -4,6 +4,7 @@
 use rug::Rational;
 use trig_core::{Affine, ParamRange};
 use trig_deriv::{End, JoinKind, Wrt};
+use trig_interp::{DataSet, Scheme};
 use trig_symbolic::Sym;
 
 /// A printed value `name = formula` of one function.
@@ -169,10 +170,29 @@ pub enum Check {
     /// Every listed claim of the file, each decided as it is stated: an
     /// umbrella over printed parts (a theorem whose conditions the file
     /// states one claim each).
-    All { claims: Vec<String> },
+    All {
+        claims: Vec<String>,
+        /// The parts are reported as claims of their own (`brief = true`):
+        /// the umbrella shows each part's verdict, and the first witness of
+        /// a part that does not hold, instead of every part's evidence.
+        brief: bool,
+    },
     /// What this copy of the document does not print (a lost formula, an
     /// unpublished data set): `not-checkable` with the reason, as data.
     NotPrinted { reason: String },
+    /// The interpolant of a printed data table (a table file, `path` as
+    /// written, relative to the claim's file) by an interpolation scheme of
+    /// `trig-interp` stays `≥ 0` on its whole interval.
+    InterpolantNonnegative {
+        path: String,
+        data: DataSet,
+        scheme: Scheme,
+    },
+    /// Printed error tables (a table file, `path` as written, relative to
+    /// the claim's file; `text` as read) against their own arithmetic:
+    /// totals, extremes and means of the segment rows, summaries against
+    /// the tables they summarise, the best scheme against the summaries.
+    TableArithmetic { path: String, text: String },
 }
 
 /// How a printed identity is quantified over the parameter values.

@@ -13,7 +13,11 @@ use crate::given_read::{given, one_param_range};
 use crate::raw::RawClaim;
 use crate::source::Source;
 use crate::spec::{MAX_ORDER, Spec};
+use std::path::Path;
+
 use trig_core::ParamRange;
+use trig_core::input::{MAX_TEXT_BYTES, Source as Input, read_text};
+use trig_interp::{DataSet, Scheme};
 
 impl Spec {
     /// The names a reader sees in this spec's formulas: the parameters
@@ -179,7 +183,7 @@ pub(crate) fn attach(src: &Source<'_>, spec: &mut Spec, raw: &[RawClaim]) -> Res
 pub(crate) fn umbrellas(src: &Source<'_>, spec: &Spec) -> Result<()> {
     let parts = |id: &str| -> Vec<String> {
         match spec.claims.iter().find(|c| c.id == id).map(|c| &c.check) {
-            Some(Check::All { claims }) => claims.clone(),
+            Some(Check::All { claims, .. }) => claims.clone(),
             _ => Vec::new(),
         }
     };
@@ -191,7 +195,7 @@ pub(crate) fn umbrellas(src: &Source<'_>, spec: &Spec) -> Result<()> {
         })
     };
     for c in &spec.claims {
-        let Check::All { claims } = &c.check else {
+        let Check::All { claims, .. } = &c.check else {
             continue;
         };
         if claims.is_empty() {
@@ -307,6 +311,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                 .iter()
                 .map(|id| id.get_ref().trim().to_string())
                 .collect(),
+            brief: c.brief == Some(true),
         },
         "not-printed" => {
             let reason = need(src, c, &c.reason, "reason")?;
@@ -321,11 +326,16 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                 reason: reason.get_ref().trim().to_string(),
             }
         }
+        "interpolant-nonnegative" => interpolant(src, c)?,
+        "table-arithmetic" => {
+            let (path, text) = data_file(src, c)?;
+            Check::TableArithmetic { path, text }
+        }
         other => {
             return src.invalid(
                 c.check.span(),
                 "claims.check",
-                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, continuity, local-control, all or not-printed"),
+                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, continuity, local-control, all, not-printed, interpolant-nonnegative or table-arithmetic"),
             );
         }
     };
@@ -342,6 +352,24 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             c.reason.as_ref().map(Spanned::span),
             matches!(check, Check::NotPrinted { .. }),
         ),
+        (
+            "brief",
+            c.brief.as_ref().map(|_| c.check.span()),
+            matches!(check, Check::All { .. }),
+        ),
+        (
+            "data",
+            c.data.as_ref().map(Spanned::span),
+            matches!(
+                check,
+                Check::InterpolantNonnegative { .. } | Check::TableArithmetic { .. }
+            ),
+        ),
+        (
+            "scheme",
+            c.scheme.as_ref().map(Spanned::span),
+            matches!(check, Check::InterpolantNonnegative { .. }),
+        ),
     ] {
         if let (Some(span), false) = (given, taken) {
             return src.invalid(
@@ -349,10 +377,11 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                 &format!("claims.{field}"),
                 format!(
                     "`{field}` belongs to `check = \"{}\"`",
-                    if field == "claims" {
-                        "all"
-                    } else {
-                        "not-printed"
+                    match field {
+                        "claims" | "brief" => "all",
+                        "reason" => "not-printed",
+                        "data" => "interpolant-nonnegative` or `check = \"table-arithmetic",
+                        _ => "interpolant-nonnegative",
                     }
                 ),
             );
@@ -391,6 +420,18 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             c.check.span(),
             "claims.at",
             "an umbrella or a claim the copy does not print fixes no values (its parts fix their own)".into(),
+        );
+    }
+    if matches!(
+        check,
+        Check::InterpolantNonnegative { .. } | Check::TableArithmetic { .. }
+    ) && !given.is_empty()
+    {
+        return src.invalid(
+            c.check.span(),
+            "claims.at",
+            "a claim about a printed table takes its values from the table: it fixes no values"
+                .into(),
         );
     }
     if c.maximal == Some(true) && spec.params.is_empty() {
@@ -432,6 +473,44 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
         negated: c.negated == Some(true),
         notes: c.notes.clone().unwrap_or_default(),
     })
+}
+
+/// `data = "table-4.1.tsv"` (a table file, relative to the claim's file:
+/// read here, so a missing or malformed table is an error of the file) and
+/// `scheme` (the table's own unless given).
+fn interpolant(src: &Source<'_>, c: &RawClaim) -> Result<Check> {
+    let (path, text) = data_file(src, c)?;
+    let data = match DataSet::parse(&text) {
+        Ok(data) => data,
+        Err(e) => {
+            let span = need(src, c, &c.data, "data")?.span();
+            return src.invalid(span, "claims.data", format!("{path}: {e}"));
+        }
+    };
+    let scheme = match &c.scheme {
+        None => data.table.scheme,
+        Some(s) => match s.get_ref().trim().parse::<Scheme>() {
+            Ok(scheme) => scheme,
+            Err(e) => return src.invalid(s.span(), "claims.scheme", e.to_string()),
+        },
+    };
+    Ok(Check::InterpolantNonnegative { path, data, scheme })
+}
+
+/// The table file `data = "…"` names (relative to the claim's file), as
+/// written and as read: a file that cannot be read is an error of the file.
+fn data_file(src: &Source<'_>, c: &RawClaim) -> Result<(String, String)> {
+    let path = need(src, c, &c.data, "data")?;
+    let dir = Path::new(src.file).parent().unwrap_or(Path::new(""));
+    let file = dir.join(path.get_ref().trim());
+    match read_text(&Input::of(&file), MAX_TEXT_BYTES) {
+        Ok(text) => Ok((path.get_ref().trim().to_string(), text)),
+        Err(e) => src.invalid(
+            path.span(),
+            "claims.data",
+            format!("{}: {}", file.display(), e.reason()),
+        ),
+    }
 }
 
 /// `control = "point"` (the control point `P_j`) or a parameter's name

@@ -397,6 +397,55 @@ mod tests {
     }
 
     #[test]
+    fn an_interpolant_claim_reads_its_table_file_beside_the_document() {
+        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../documents/thesis");
+        let file = dir.join("x.toml").display().to_string();
+        let read = |fields: &str, check: &str| {
+            DocumentFile::from_str_in(
+                &format!(
+                    "{HEADER}[bases]\ncubic = \"../../examples/catalog/thesis-cubic.toml\"\n[[claims]]\nid = \"a\"\nsource = \"(1)\"\nstatement = \"s\"\ncheck = \"{check}\"\n{fields}"
+                ),
+                &file,
+                &dir,
+            )
+        };
+        let scheme_of = |doc: DocumentFile| match &doc.claims[0] {
+            DocumentClaim::Stated { claim, .. } => match &claim.check {
+                Check::InterpolantNonnegative { data, scheme, path } => {
+                    assert_eq!(path, "table-4.6.tsv");
+                    assert_eq!(data.f[1], rug::Rational::from((1, 10)));
+                    *scheme
+                }
+                other => panic!("{other:?}"),
+            },
+            DocumentClaim::BuiltIn { .. } => panic!("a stated claim"),
+        };
+        let check = "interpolant-nonnegative";
+        let doc = read("data = \"table-4.6.tsv\"\n", check).unwrap();
+        assert_eq!(
+            scheme_of(doc),
+            trig_interp::Scheme::G1,
+            "the table's own scheme"
+        );
+        let doc = read("data = \"table-4.6.tsv\"\nscheme = \"c2\"\n", check).unwrap();
+        assert_eq!(scheme_of(doc), trig_interp::Scheme::C2);
+        let e = |fields: &str, check: &str| read(fields, check).unwrap_err().to_string();
+        assert!(e("data = \"no-such.tsv\"\n", check).contains("no-such.tsv"));
+        assert!(
+            e("data = \"table-4.6.tsv\"\nscheme = \"c3\"\n", check).contains("unknown scheme `c3`")
+        );
+        assert!(e("", check).contains("needs the field `data`"));
+        assert!(e("data = \"document.toml\"\n", check).contains("expected `FIELD: value`"));
+        assert!(
+            e("data = \"table-4.6.tsv\"\n", "unity")
+                .contains("`data` belongs to `check = \"interpolant-nonnegative`")
+        );
+        assert!(
+            e("at = { m = \"0\" }\ndata = \"table-4.6.tsv\"\n", check).contains("fixes no values")
+        );
+    }
+
+    #[test]
     fn a_document_is_told_apart_from_a_spec_file() {
         assert!(is_document(&catalog()));
         assert!(!is_document(&catalog().join("bernstein3.toml")));

@@ -533,7 +533,9 @@ impl<'a> Substitution<'a> {
             | Check::Continuity { .. }
             | Check::LocalControl { .. }
             | Check::All { .. }
-            | Check::NotPrinted { .. } => {}
+            | Check::NotPrinted { .. }
+            | Check::InterpolantNonnegative { .. }
+            | Check::TableArithmetic { .. } => {}
         }
         Ok(c)
     }

@@ -81,8 +81,15 @@ pub struct RawClaim {
     pub quantifier: Option<Spanned<String>>,
     /// `check = "all"`: the ids of the claims it is the umbrella of.
     pub claims: Option<Vec<Spanned<String>>>,
+    /// `check = "all"`: the parts are reported as claims of their own.
+    pub brief: Option<bool>,
     /// `check = "not-printed"`: what the copy does not print.
     pub reason: Option<Spanned<String>>,
+    /// `check = "interpolant-nonnegative"`: the table file (relative to
+    /// the claim's file) and the scheme (`c1`, `c2`, `g1`, `g2`; the
+    /// table's own unless given).
+    pub data: Option<Spanned<String>>,
+    pub scheme: Option<Spanned<String>>,
     /// The statement is the negation of the check ("is not C⁴").
     pub negated: Option<bool>,
     /// Remarks shown after the evidence (how a print is read, what the

@@ -20,13 +20,11 @@ mod seed004_joins;
 mod shape_effect;
 mod thesis;
 mod thesis_interp;
-mod thesis_interp_point;
 mod thesis_interp_text;
 mod thesis_joins;
 mod thesis_lsq;
 mod thesis_out_of_range;
 mod thesis_survey;
-mod thesis_tables;
 mod thesis_text;
 mod total_positivity;
 
@@ -36,7 +34,6 @@ pub fn all() -> Vec<Claim> {
         thesis::CLAIMS,
         thesis_interp::CLAIMS,
         thesis_joins::CLAIMS,
-        thesis_tables::CLAIMS,
         seed000::CLAIMS,
         seed000_appendix_c::CLAIMS,
         seed000_appendix_e::CLAIMS,

@@ -1,29 +1,23 @@
 //! Seed 001, the thesis, section 4.3: the positivity-preserving
-//! interpolation schemes (4.19)–(4.34) on Tables 4.1–4.6 (claims T20–T24f).
+//! interpolation schemes (4.19)–(4.34) on Tables 4.1–4.6 (claims T20–T23;
+//! the positivity claims T24–T24f are data, `check = "interpolant-nonnegative"`).
 //!
 //! The schemes are built by `trig-interp` on the catalog basis (3.7);
 //! end conditions are decided exactly in the symbolic ring (derivatives in
-//! `x` from `trig_deriv`, π a symbol), knot continuity by exact jumps, and
-//! positivity by a certified minimum per piece (Weierstrass substitution +
-//! Bernstein subdivision, [`trig_certify::nonneg::certify`]).
+//! `x` from `trig_deriv`, π a symbol), knot continuity by exact jumps;
+//! positivity of a built-in table's interpolant (asked by other claims) is
+//! the judge's, [`trig_judge::interpolant::positivity`].
 
-use rug::Rational;
-use trig_certify::algebraic::decimal;
 use trig_core::{Family, Ring};
 use trig_deriv::{End, Wrt, curve_endpoint_derivatives};
 use trig_interp::piece::derivatives_of;
 use trig_interp::scheme::{printed_c1, printed_c2_second, printed_g1, printed_g2_join};
-use trig_interp::{
-    DataSet, Interval, KnotJump, PieceMinimum, Scheme, Spline, Variant, build, certified_minimum,
-    knot_jumps,
-};
+use trig_interp::{DataSet, KnotJump, Scheme, Spline, Variant, knot_jumps};
 use trig_symbolic::Sym;
 
-use super::thesis_interp_point::piece_witness;
-use crate::claim::{Claim, umbrella};
+use crate::claim::Claim;
 use trig_judge::exact::{IDENTITY, identities};
-use trig_judge::memo::Memo;
-use trig_verdict::evidence::{Assignment, Evidence, EvidenceList, Expr, Relation, Value, Witness};
+use trig_verdict::evidence::{Assignment, Evidence, EvidenceList, Expr, Value, Witness};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
@@ -51,34 +45,6 @@ pub const CLAIMS: &[Claim] = &[
     Claim {
         id: "T23",
         check: t23,
-    },
-    Claim {
-        id: "T24",
-        check: t24,
-    },
-    Claim {
-        id: "T24a",
-        check: t24a,
-    },
-    Claim {
-        id: "T24b",
-        check: t24b,
-    },
-    Claim {
-        id: "T24c",
-        check: t24c,
-    },
-    Claim {
-        id: "T24d",
-        check: t24d,
-    },
-    Claim {
-        id: "T24e",
-        check: t24e,
-    },
-    Claim {
-        id: "T24f",
-        check: t24f,
     },
 ];
 
@@ -286,7 +252,7 @@ pub(super) fn sym_spline(
     variant: Variant,
 ) -> Result<Spline<Sym>, String> {
     let data = DataSet::named(name).map_err(|e| e.to_string())?;
-    build(&data, scheme, variant, &Sym::zero()).map_err(|e| e.to_string())
+    trig_judge::interpolant::exact_spline(&data, scheme, variant)
 }
 
 const JUMPS: &str = "exact one-sided derivatives in x at the interior knots (trig-deriv jets, π symbolic), jump = right − left";
@@ -399,137 +365,13 @@ fn sum_of_coefficients(e: &Sym, points: &[&str]) -> Sym {
         .fold(e.clone(), |acc, p| acc.subs(p, &Sym::one()))
 }
 
-/// Describes one piece's certified minimum.
-pub fn describe(name: &str, variant: Variant, m: &PieceMinimum) -> String {
-    let bracket = match &m.lower {
-        Some(l) => format!("[{}, {}]", decimal(l, 6, false), decimal(&m.upper, 6, true)),
-        None => format!(
-            "(undecided: {}) ≤ {}",
-            m.undecided.as_deref().unwrap_or("?"),
-            decimal(&m.upper, 6, true)
-        ),
-    };
-    format!(
-        "{name} ({variant}), piece {}: min P ∈ {bracket} at x ≈ {:.6} (z = tan(θ/2) = {})",
-        m.piece + 1,
-        m.x,
-        m.z
-    )
-}
-
-const CERTIFIED: &str = "certified minimum per piece: control points enclosed for π ∈ [3.14159265358979323846264338327, …328], Weierstrass z = tan(θ/2) + exact Bernstein subdivision lower bound, exact value at a rational point as upper bound";
-
-/// The certified minima of the example `name` with `scheme`/`variant`, as a verdict.
-///
-/// Decided once per process for the same table, scheme and reading (T24
-/// quotes T24a–f, and T58 and the text claims ask again). The key is the
-/// table's name (the evidence names it) and every value read from it.
+/// The certified minima of the built-in table `name` with
+/// `scheme`/`variant`, as a verdict (`trig_judge::interpolant::positivity`).
 pub(super) fn positivity(name: &str, scheme: Scheme, variant: Variant) -> Verdict {
-    static DECIDED: Memo<Verdict> = Memo::new();
-    let data = DataSet::named(name);
-    let key = format!("{name} {data:?} {scheme:?} {variant:?}");
-    DECIDED.get_or_compute(key, || decide_positivity(name, data, scheme, variant))
-}
-
-fn decide_positivity(
-    name: &str,
-    data: Result<DataSet, trig_interp::InterpError>,
-    scheme: Scheme,
-    variant: Variant,
-) -> Verdict {
-    let result = data
-        .and_then(|d| build(&d, scheme, variant, &Interval::point(Rational::new())))
-        .and_then(|s| certified_minimum(&s, &crate::minimum::prove));
-    match result {
+    match DataSet::named(name) {
+        Ok(data) => trig_judge::interpolant::positivity(&data, scheme, variant),
         Err(e) => Verdict::not_checkable(e.to_string()),
-        Ok(minima) => {
-            let status = if minima.iter().all(PieceMinimum::nonnegative) {
-                Status::Holds
-            } else if minima.iter().any(PieceMinimum::negative) {
-                Status::Fails
-            } else {
-                Status::NotCheckable
-            };
-            // the exact interpolant (π symbolic), for the witnesses' formulas
-            let exact = minima
-                .iter()
-                .any(PieceMinimum::negative)
-                .then(|| sym_spline(name, scheme, variant));
-            let evidence = minima.iter().map(|m| {
-                let item = Evidence::note(describe(name, variant, m));
-                if !m.negative() {
-                    return item;
-                }
-                // a simple point near the certified minimum where P is exactly negative
-                let witness = exact
-                    .as_ref()
-                    .and_then(|e| e.as_ref().ok())
-                    .and_then(|spline| {
-                        piece_witness(
-                            spline,
-                            m.piece,
-                            &m.z,
-                            Relation::AtLeast,
-                            ("0", &Rational::new()),
-                        )
-                    });
-                item.witnessed(witness)
-            });
-            Verdict::new(status, CERTIFIED, evidence)
-        }
     }
-}
-
-/// Positivity of an example, decided on the printed scheme (the curve the
-/// thesis computed: for Table 4.4 its printed (4.34) reproduces the text's
-/// peak "approximately 55 near x = 4.5"), with the corrected scheme of
-/// T21/T23 reported beside it for C² and G².
-fn example(name: &str, scheme: Scheme) -> Verdict {
-    let mut v = positivity(name, scheme, Variant::Printed);
-    if matches!(scheme, Scheme::C2 | Scheme::G2) {
-        let corrected = positivity(name, scheme, Variant::Corrected);
-        v.evidence.push(format!(
-            "decided on the printed scheme (what the thesis computes and plots); the corrected scheme ({}) on the same table, for comparison: {}",
-            match scheme {
-                Scheme::C2 => "interior d_i from the C² conditions, T21",
-                _ => "join (4.33) solved in x through the basis, each piece its own m_i, T23",
-            },
-            corrected.status
-        ));
-        v.evidence.extend(corrected.evidence);
-    }
-    v
-}
-
-fn t24a() -> Verdict {
-    example("thesis-table-4.1", Scheme::C1)
-}
-fn t24b() -> Verdict {
-    example("thesis-table-4.2", Scheme::C2)
-}
-fn t24c() -> Verdict {
-    example("thesis-table-4.3", Scheme::G1)
-}
-fn t24d() -> Verdict {
-    example("thesis-table-4.4", Scheme::G2)
-}
-fn t24e() -> Verdict {
-    example("thesis-table-4.5", Scheme::G2)
-}
-fn t24f() -> Verdict {
-    example("thesis-table-4.6", Scheme::G1)
-}
-
-fn t24() -> Verdict {
-    // T24 is listed before its parts, which the other thread then takes in
-    // order: deciding them from the last meets it in the middle
-    let parts: Vec<(String, Verdict)> = [t24a, t24b, t24c, t24d, t24e, t24f]
-        .iter()
-        .zip(["T24a", "T24b", "T24c", "T24d", "T24e", "T24f"])
-        .rev()
-        .map(|(f, id)| (id.to_string(), f()))
-        .collect();
-    umbrella(parts.into_iter().rev().collect())
 }
 
 #[cfg(test)]

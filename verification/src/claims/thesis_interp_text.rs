@@ -13,8 +13,8 @@ use trig_interp::{
 };
 
 use super::thesis_interp::{positivity, sym_spline};
-use super::thesis_interp_point::piece_witness;
 use crate::claim::Claim;
+use trig_judge::interpolant_point::piece_witness;
 use trig_judge::recomputed::decimal;
 use trig_judge::recomputed::{self, Cell, Recomputed};
 use trig_verdict::evidence::{Evidence, Expr, Kind, Relation, Value, Witness};
@@ -56,7 +56,8 @@ fn piece_maxima(spline: &Spline<Interval>) -> Result<Vec<PieceMaximum>, String> 
     for piece in &mut negated.pieces {
         piece.points = piece.points.clone().map(|v| -v);
     }
-    let minima = certified_minimum(&negated, &crate::minimum::prove).map_err(|e| e.to_string())?;
+    let minima =
+        certified_minimum(&negated, &trig_judge::interpolant::prove).map_err(|e| e.to_string())?;
     minima
         .iter()
         .map(|m: &PieceMinimum| match &m.lower {

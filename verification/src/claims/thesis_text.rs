@@ -3,7 +3,7 @@
 //! 6.8 and 6.9 derive from Tables 6.2–6.16, recomputed from the printed
 //! cells.
 //!
-//! The tables are those of claim T32 (`thesis_tables.txt`, each cell an
+//! The tables are those of claim T32 (`documents/thesis/tables-6.2-6.17.txt`, each cell an
 //! exact rational read from its printed decimal); the statements in words
 //! are `thesis_text_quotes.txt`, each with the reading it is decided under.
 //! A quoted figure is judged by [`trig_judge::quoted`]: it holds when it
@@ -12,7 +12,10 @@
 use rug::Rational;
 use trig_symbolic::Sym;
 
-use super::thesis_tables::{DATA, Num, SCHEMES, SYMBOLS, Table, parse, summary_row, total_row};
+use trig_judge::table_arithmetic::{Num, SCHEMES, SYMBOLS, Table, parse, summary_row, total_row};
+
+/// The tables of claim T32 (the table file beside the thesis's document file).
+const DATA: &str = include_str!("../../../documents/thesis/tables-6.2-6.17.txt");
 use crate::claim::Claim;
 use trig_judge::quoted::{QUOTED, quoted_figure, quoted_order};
 use trig_judge::recomputed::decimal;

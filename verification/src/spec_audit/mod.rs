@@ -524,15 +524,23 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
             conditions,
         } => joins::printed_join(spec, *kind, *wrt, *different, factors, conditions),
         Check::Continuity { order } => trig_judge::continuity::bspline_continuity(spec, *order),
-        Check::All { claims } => Verdict::all(
-            UMBRELLA,
-            claims
+        Check::All { claims, brief } => {
+            let parts = claims
                 .iter()
                 .filter_map(|id| spec.claims.iter().find(|c| &c.id == id))
                 .map(|c| (c.id.clone(), decide(spec, c)))
-                .collect(),
-        ),
+                .collect();
+            if *brief {
+                crate::claim::umbrella(parts)
+            } else {
+                Verdict::all(UMBRELLA, parts)
+            }
+        }
         Check::NotPrinted { reason } => Verdict::not_checkable(reason.clone()),
+        Check::InterpolantNonnegative { data, scheme, .. } => {
+            trig_judge::interpolant::nonnegative(spec, data, *scheme)
+        }
+        Check::TableArithmetic { text, .. } => trig_judge::table_arithmetic::decide(text),
         Check::LocalControl { varied, segments } => {
             let control = match varied {
                 Varied::Point => Control::Point,

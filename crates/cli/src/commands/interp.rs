@@ -104,7 +104,7 @@ pub fn run(args: &InterpArgs) -> CmdResult {
     let exact = build(&data, scheme, variant, &Sym::zero()).map_err(usage)?;
     let enclosed =
         build(&data, scheme, variant, &Interval::point(Rational::new())).map_err(usage)?;
-    let minima = certified_minimum(&enclosed, &trig_verification::minimum::prove).map_err(usage)?;
+    let minima = certified_minimum(&enclosed, &trig_judge::interpolant::prove).map_err(usage)?;
     let jumps = knot_jumps(&exact);
     Ok(match args.format {
         InterpFormat::Json => render_json(&exact, &jumps, &minima),

@@ -1,7 +1,8 @@
-//! Thesis Chapter 6, Tables 6.2–6.17 (claim T32): the table arithmetic.
+//! The table-arithmetic judge: printed error tables against their own
+//! arithmetic (the thesis's Tables 6.2–6.17 are `documents/thesis/tables-6.2-6.17.txt`).
 //!
-//! The printed tables are embedded as data (`thesis_tables.txt`, one block
-//! per table with its number). Every printed decimal is read as an exact
+//! The tables are a table file (one block per table with its number, the
+//! layout in the file's header comment). Every printed decimal is read as an exact
 //! rational ([`trig_core::parse_exact`]), so each difference below is exact.
 //! A printed value with `d` decimals stands for a true value within
 //! `½·10⁻ᵈ`; a relation between printed values is *consistent* when the
@@ -22,25 +23,17 @@ use rug::ops::Pow;
 use rug::{Integer, Rational};
 use trig_symbolic::Sym;
 
-use crate::claim::Claim;
-use trig_judge::recomputed::decimal;
-use trig_judge::recomputed::{self, Cell, Recomputed};
+use crate::recomputed::decimal;
+use crate::recomputed::{self, Cell, Recomputed};
 use trig_verdict::evidence::EvidenceList;
 use trig_verdict::evidence::{Evidence, Kind, Relation};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
-pub const CLAIMS: &[Claim] = &[Claim {
-    id: "T32",
-    check: t32,
-}];
-
-pub(super) const DATA: &str = include_str!("thesis_tables.txt");
-
 /// How the tables are checked, as the report states it.
 const METHOD: &str = "exact rational arithmetic on the printed decimals; a relation holds when the exact difference is within the printed rounding (½ unit in the last printed place of every value involved); relations of a segment table: TOTAL before and after total = Σ of the segments, TOTAL max and min = max and min over the segments, TOTAL average = mean of the segment averages, and each figure the text quotes = the TOTAL row; of a summary table: each entry = the TOTAL row of its per-letter table; of Table 6.17: each best scheme = the smallest average error, and its figures = the summaries";
 
-/// A malformed line of the embedded table data.
+/// A malformed line of a table file.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct DataError {
     pub line: usize,
@@ -49,7 +42,7 @@ pub struct DataError {
 
 impl fmt::Display for DataError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "thesis_tables.txt line {}: {}", self.line, self.reason)
+        write!(f, "line {}: {}", self.line, self.reason)
     }
 }
 
@@ -57,14 +50,14 @@ impl std::error::Error for DataError {}
 
 /// A printed number: its text, exact value and rounding allowance.
 #[derive(Debug, Clone)]
-pub(super) struct Num {
-    pub(super) text: String,
-    pub(super) value: Rational,
+pub struct Num {
+    pub text: String,
+    pub value: Rational,
     allowance: Rational,
 }
 
 impl Num {
-    pub(super) fn parse(text: &str, line: usize) -> Result<Num, DataError> {
+    pub fn parse(text: &str, line: usize) -> Result<Num, DataError> {
         let value = trig_core::parse_exact(text).map_err(|e| DataError {
             line,
             reason: e.to_string(),
@@ -86,23 +79,23 @@ impl Num {
 
 /// One printed table.
 #[derive(Debug, Clone, Default)]
-pub(super) struct Table {
-    pub(super) number: String,
-    pub(super) letter: String,
-    pub(super) scheme: String,
+pub struct Table {
+    pub number: String,
+    pub letter: String,
+    pub scheme: String,
     column: String,
     notes: Vec<String>,
     /// Row label and cells (segment tables: segment rows, then TOTAL).
-    pub(super) rows: Vec<(String, Vec<Num>)>,
+    pub rows: Vec<(String, Vec<Num>)>,
     /// Numbers the text states: key and value.
-    pub(super) texts: Vec<(String, Num)>,
+    pub texts: Vec<(String, Num)>,
     /// Summary tables: the per-letter tables of the four columns.
     of: Vec<String>,
     /// Table 6.17: letter, printed best scheme, average, bad points.
     best: Vec<(String, String, Num, Num)>,
 }
 
-pub(super) fn parse(data: &str) -> Result<Vec<Table>, DataError> {
+pub fn parse(data: &str) -> Result<Vec<Table>, DataError> {
     let mut tables: Vec<Table> = Vec::new();
     for (i, raw) in data.lines().enumerate() {
         let line = i + 1;
@@ -212,16 +205,16 @@ const COLUMNS: [&str; 5] = ["before total", "after total", "max", "min", "averag
 
 /// The symbols naming the cells of each column in a witness (`before3`:
 /// the before total of segment 3; `before`: of the TOTAL row).
-pub(super) const SYMBOLS: [&str; 5] = ["before", "after", "max", "min", "ave"];
+pub const SYMBOLS: [&str; 5] = ["before", "after", "max", "min", "ave"];
 
 impl Num {
     /// This printed number as the cell `symbol` of a witness.
-    pub(super) fn cell(&self, symbol: impl Into<String>) -> Cell {
+    pub fn cell(&self, symbol: impl Into<String>) -> Cell {
         Cell::new(symbol, &self.text, &self.value)
     }
 }
 
-pub(super) fn total_row(t: &Table) -> Result<&[Num], String> {
+pub fn total_row(t: &Table) -> Result<&[Num], String> {
     t.rows
         .iter()
         .find(|(l, _)| l == "TOTAL")
@@ -320,7 +313,7 @@ const SUMMARY: [(&str, usize); 4] = [
     ("Min. Error", 3),
     ("Ave. Error", 4),
 ];
-pub(super) const SCHEMES: [&str; 4] = ["proposed", "Majeed", "Han", "Usman"];
+pub const SCHEMES: [&str; 4] = ["proposed", "Majeed", "Han", "Usman"];
 
 fn find<'a>(tables: &'a [Table], number: &str) -> Result<&'a Table, String> {
     tables
@@ -329,7 +322,7 @@ fn find<'a>(tables: &'a [Table], number: &str) -> Result<&'a Table, String> {
         .ok_or_else(|| format!("no Table {number}"))
 }
 
-pub(super) fn summary_row<'a>(t: &'a Table, label: &str) -> Result<&'a [Num], String> {
+pub fn summary_row<'a>(t: &'a Table, label: &str) -> Result<&'a [Num], String> {
     t.rows
         .iter()
         .find(|(l, _)| l == label)
@@ -452,8 +445,11 @@ fn table_verdict(t: &Table, tables: &[Table]) -> Verdict {
     }
 }
 
-fn t32() -> Verdict {
-    let tables = match parse(DATA) {
+/// The arithmetic of every table of the table file `text`: one part per
+/// table (segment, summary or best-scheme table), each holding when every
+/// relation it prints is within the printed rounding.
+pub fn decide(text: &str) -> Verdict {
+    let tables = match parse(text) {
         Ok(t) => t,
         Err(e) => return Verdict::not_checkable(e.to_string()),
     };
@@ -477,8 +473,9 @@ mod tests {
     use super::*;
 
     #[test]
-    fn every_table_6_2_to_6_17_is_embedded() {
-        let tables = parse(DATA).unwrap();
+    fn every_table_6_2_to_6_17_is_read() {
+        let text = include_str!("../../../documents/thesis/tables-6.2-6.17.txt");
+        let tables = parse(text).unwrap();
         let numbers: Vec<&str> = tables.iter().map(|t| t.number.as_str()).collect();
         let want: Vec<String> = (2..=17).map(|k| format!("6.{k}")).collect();
         assert_eq!(numbers, want);

@@ -10,7 +10,7 @@
 //! and sees the sign; the violation is certified here with `π` enclosed.
 
 use rug::Rational;
-use trig_core::Family;
+use trig_interp::BASIS;
 use trig_interp::interval::{pi_hi, pi_lo};
 use trig_interp::{Interval, Spline};
 use trig_symbolic::{Sym, symbolic_atoms};
@@ -83,7 +83,7 @@ pub fn piece_witness(
 ) -> Option<Witness> {
     let piece = spline.pieces.get(i)?;
     let names = ["V", "W", "X", "Y"].map(|l| format!("{l}{i}"));
-    let b = Family::ThesisCubic.eval(&symbolic_atoms(), &[Sym::rational(piece.m.clone())]);
+    let b = BASIS.eval(&symbolic_atoms(), &[Sym::rational(piece.m.clone())]);
     let formula = b.iter().zip(&names).fold(Sym::zero(), |acc, (bj, n)| {
         acc + &(bj.clone() * &Sym::var(n))
     });
