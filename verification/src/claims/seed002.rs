@@ -7,13 +7,10 @@ use trig_deriv::{End, Wrt, curve_endpoint_derivatives};
 use trig_symbolic::{Poly, Sym};
 
 use crate::claim::Claim;
-use trig_certify::ParamBox;
-use trig_judge::certificate::nonnegative_on;
 use trig_judge::exact::{
     IDENTITY, basis, combination, identities, identity, linear_map_parts, reflect, sum, symbols,
 };
 use trig_judge::maxima::exactly_one_maximum;
-use trig_judge::symmetry::reflection_symmetry;
 use trig_verdict::evidence::EvidenceList;
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
@@ -22,18 +19,6 @@ pub const CLAIMS: &[Claim] = &[
     Claim {
         id: "D1",
         check: d1,
-    },
-    Claim {
-        id: "D1b",
-        check: d1b,
-    },
-    Claim {
-        id: "D2",
-        check: d2,
-    },
-    Claim {
-        id: "D3",
-        check: d3,
     },
     Claim {
         id: "D4",
@@ -75,10 +60,6 @@ pub const CLAIMS: &[Claim] = &[
         id: "D11",
         check: d11,
     },
-    Claim {
-        id: "D12",
-        check: d12,
-    },
 ];
 
 fn d1() -> Verdict {
@@ -87,18 +68,6 @@ fn d1() -> Verdict {
         &sum(&basis(Family::Seed002Quartic)),
         &Sym::zero(),
     )
-}
-
-fn d1b() -> Verdict {
-    identity(
-        "Σ b_i − 1",
-        &sum(&basis(Family::Seed002Quartic)),
-        &Sym::one(),
-    )
-}
-
-fn d3() -> Verdict {
-    reflection_symmetry(&Family::Seed002Quartic, 0..3)
 }
 
 /// `R, R', R''` (in θ) of the rational curve at `θ = 0` and `θ = π/2`, with
@@ -147,22 +116,6 @@ fn d5() -> Verdict {
         ("R''(0) − printed".into(), r0[2].clone(), printed_r2_0),
         ("R''(π/2) − printed".into(), r1[2].clone(), printed_r2_1),
     ])
-}
-
-fn d12() -> Verdict {
-    Verdict::not_checkable(
-        "the functions Tb_i(t, α1, α2) of (5) are unreadable in our copy (the printed fraction is garbled: \"T_0(tα1,α2) = 1/Σ_{i=0, i=1, i=1, i=0 …}\"), so their sum cannot be formed",
-    )
-}
-
-fn d2() -> Verdict {
-    let zero = rug::Rational::new();
-    nonnegative_on(
-        &Family::Seed002Quartic,
-        &basis(Family::Seed002Quartic),
-        None,
-        &ParamBox::closed(zero.clone(), zero),
-    )
 }
 
 /// `Σ w_i b_i P_i / Σ w_i b_i` at the symbolic atoms.

@@ -7,13 +7,12 @@ use trig_deriv::{End, Wrt, curve_endpoint_derivatives, endpoint_derivatives};
 use trig_symbolic::Sym;
 
 use crate::claim::Claim;
-use trig_judge::certificate::{nonnegative_on, nonnegative_on_box};
+use trig_judge::certificate::nonnegative_on;
 
 use trig_certify::ParamBox;
 use trig_judge::exact::{
     IDENTITY, basis, combination, identities, identity, linear_map_parts, reflect, sum, symbols,
 };
-use trig_judge::symmetry::reflection_symmetry;
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
@@ -37,18 +36,6 @@ pub const CLAIMS: &[Claim] = &[
     Claim {
         id: "E3b",
         check: e3b,
-    },
-    Claim {
-        id: "E4",
-        check: e4,
-    },
-    Claim {
-        id: "E5",
-        check: e5,
-    },
-    Claim {
-        id: "E6",
-        check: e6,
     },
     Claim {
         id: "E7",
@@ -183,18 +170,6 @@ fn e3b() -> Verdict {
     )
 }
 
-fn e5() -> Verdict {
-    reflection_symmetry(&Family::Eh, 0..4)
-}
-
-fn e6() -> Verdict {
-    identities(vec![(
-        "Σ b_i − 1".into(),
-        sum(&basis(Family::Eh)),
-        Sym::one(),
-    )])
-}
-
 fn e8() -> Verdict {
     let eh = eh_at(0);
     let h = basis(Family::Hermite);
@@ -280,18 +255,6 @@ fn e13() -> Verdict {
         + &(Sym::var("lambda") * &bump * &(p[0].clone() - &p[1]))
         + &(Sym::var("mu") * &bump * &(p[2].clone() - &p[3]));
     identities(vec![("Σ b_j P_j − (4)".into(), curve, rewritten)])
-}
-
-/// Every function on the published box `λ, μ ∈ [−1, 1]` (III(ii) (b)–(c)),
-/// certified with tensor Bernstein boxes in `(t, λ, μ)`.
-fn e4() -> Verdict {
-    let one = rug::Rational::from(1);
-    let unit = ParamBox::closed(-one.clone(), one);
-    nonnegative_on_box(
-        &Family::Eh,
-        &basis(Family::Eh),
-        &[("lambda", unit.clone()), ("mu", unit)],
-    )
 }
 
 fn e2() -> Verdict {
