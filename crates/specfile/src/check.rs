@@ -173,6 +173,59 @@ pub enum Check {
     /// What this copy of the document does not print (a lost formula, an
     /// unpublished data set): `not-checkable` with the reason, as data.
     NotPrinted { reason: String },
+    /// Printed identities in the functions of the basis applied at printed
+    /// arguments (`b2(t) + b3(1 - t) = 1`, `b1'(1/3) = 0`), their
+    /// derivatives in the variable, and the curve `Σ bᵢPᵢ` (optionally
+    /// rational, `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ`) under a printed name: each decided
+    /// exactly.
+    Identity {
+        identities: Vec<Identity>,
+        curve: Option<Curve>,
+    },
+}
+
+/// A printed identity `lhs = rhs`: each side a formula in the variable,
+/// the parameters, the control points and weights of the curve, and the
+/// placeholder symbols of its [`Application`]s.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Identity {
+    /// As printed in the file.
+    pub text: String,
+    pub lhs: Sym,
+    pub rhs: Sym,
+    pub applications: Vec<Application>,
+}
+
+/// `f^(order)(argument)` in a printed identity, standing for its
+/// placeholder `symbol` in the sides.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Application {
+    pub symbol: String,
+    pub applied: Applied,
+    /// Derivative order in the variable (the primes printed).
+    pub order: usize,
+    /// The argument `a·x + b`, linear in the variable `x`.
+    pub argument: crate::formula::Linear,
+    /// The argument as printed.
+    pub argument_text: String,
+}
+
+/// What an [`Application`] applies.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Applied {
+    /// The basis function of this index.
+    Function(usize),
+    /// The curve of the claim.
+    Curve,
+}
+
+/// The curve a printed identity names: `Σ bᵢPᵢ` with control points
+/// `P0, P1, …`, or with `weighted` the rational `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ` with
+/// weights `w0, w1, …`.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Curve {
+    pub name: String,
+    pub weighted: bool,
 }
 
 /// How a printed identity is quantified over the parameter values.

@@ -83,6 +83,12 @@ pub struct RawClaim {
     pub claims: Option<Vec<Spanned<String>>>,
     /// `check = "not-printed"`: what the copy does not print.
     pub reason: Option<Spanned<String>>,
+    /// `check = "identity"`: the printed identities `lhs = rhs`.
+    pub identities: Option<Vec<Spanned<String>>>,
+    /// `check = "identity"`: the printed name of the curve `Σ bᵢPᵢ`.
+    pub curve: Option<Spanned<String>>,
+    /// `check = "identity"`: the curve is rational, `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ`.
+    pub weights: Option<bool>,
     /// The statement is the negation of the check ("is not C⁴").
     pub negated: Option<bool>,
     /// Remarks shown after the evidence (how a print is read, what the

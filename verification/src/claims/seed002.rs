@@ -17,10 +17,6 @@ use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[
     Claim {
-        id: "D1",
-        check: d1,
-    },
-    Claim {
         id: "D4",
         check: d4,
     },
@@ -61,14 +57,6 @@ pub const CLAIMS: &[Claim] = &[
         check: d11,
     },
 ];
-
-fn d1() -> Verdict {
-    identity(
-        "Σ b_i = 0",
-        &sum(&basis(Family::Seed002Quartic)),
-        &Sym::zero(),
-    )
-}
 
 /// `R, R', R''` (in θ) of the rational curve at `θ = 0` and `θ = π/2`, with
 /// control points `P0…P5` and weights `w0…w5` as symbols.

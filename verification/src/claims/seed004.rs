@@ -3,44 +3,18 @@
 //! rewritten form.
 
 use trig_core::{Family, Ring};
-use trig_deriv::{End, Wrt, curve_endpoint_derivatives, endpoint_derivatives};
+use trig_deriv::{End, Wrt, curve_endpoint_derivatives};
 use trig_symbolic::Sym;
 
 use crate::claim::Claim;
 use trig_judge::certificate::nonnegative_on;
 
 use trig_certify::ParamBox;
-use trig_judge::exact::{
-    IDENTITY, basis, combination, identities, identity, linear_map_parts, reflect, sum, symbols,
-};
+use trig_judge::exact::{IDENTITY, basis, combination, identities, linear_map_parts, sum, symbols};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[
-    Claim {
-        id: "E1",
-        check: e1,
-    },
-    Claim {
-        id: "E1b",
-        check: e1b,
-    },
-    Claim {
-        id: "E2",
-        check: e2,
-    },
-    Claim {
-        id: "E3",
-        check: e3,
-    },
-    Claim {
-        id: "E3b",
-        check: e3b,
-    },
-    Claim {
-        id: "E7",
-        check: e7,
-    },
     Claim {
         id: "E8",
         check: e8,
@@ -92,83 +66,7 @@ fn eh_at(v: i64) -> Vec<Sym> {
         .collect()
 }
 
-/// The terminal pattern printed for both the Hermite bases (section II) and
-/// the EH bases (III(i) (a)): values `(1,0), (0,1), (0,0), (0,0)` and first
-/// derivatives `(0,0), (0,0), (1,0), (0,1)` at `t = 0, 1`, for functions
-/// named `names`, parameters as symbols.
-fn terminal_parts(family: Family, names: [&str; 4]) -> Vec<(String, Sym, Sym)> {
-    let params = trig_judge::exact::params(family);
-    let d = |end| endpoint_derivatives::<Sym, 2>(family, &params, end, Wrt::Angle, &Sym::one());
-    let (d0, d1) = (d(End::Start), d(End::End));
-    let mut parts = Vec::new();
-    let mut value = |f: usize, end: &Vec<Vec<Sym>>, at: &str, order: usize, want: i64| {
-        let prime = if order == 1 { "'" } else { "" };
-        parts.push((
-            format!("{}{prime}({at}) = {want}", names[f]),
-            end[f][order].clone(),
-            n(want),
-        ));
-    };
-    for (f, v0, v1) in [(0, 1, 0), (1, 0, 1), (2, 0, 0), (3, 0, 0)] {
-        value(f, &d0, "0", 0, v0);
-        value(f, &d1, "1", 0, v1);
-    }
-    for (f, v0, v1) in [(0, 0, 0), (1, 0, 0), (2, 1, 0), (3, 0, 1)] {
-        value(f, &d0, "0", 1, v0);
-        value(f, &d1, "1", 1, v1);
-    }
-    parts
-}
-
 const HERMITE: [&str; 4] = ["α0", "α1", "β0", "β1"];
-
-fn hermite_parts() -> Vec<(String, Sym, Sym)> {
-    let h = basis(Family::Hermite);
-    let mut parts = terminal_parts(Family::Hermite, HERMITE);
-    parts.push(("α0 + α1 = 1".into(), h[0].clone() + &h[1], Sym::one()));
-    parts
-}
-
-fn e1() -> Verdict {
-    let h = basis(Family::Hermite);
-    let mut parts = hermite_parts();
-    parts.push((
-        "β0(t) + β0(1 − t) = 0".into(),
-        h[2].clone() + &reflect(&h[2], false),
-        Sym::zero(),
-    ));
-    identities(parts)
-}
-
-fn e1b() -> Verdict {
-    let h = basis(Family::Hermite);
-    identities(vec![(
-        "β0(t) + β1(1 − t) = 0".into(),
-        h[2].clone() + &reflect(&h[3], false),
-        Sym::zero(),
-    )])
-}
-
-fn e3() -> Verdict {
-    let b = basis(Family::Eh);
-    identities(vec![
-        ("b0 + b1 − 1".into(), b[0].clone() + &b[1], Sym::one()),
-        (
-            "b2(t) + b3(1 − t) − 1".into(),
-            b[2].clone() + &reflect(&b[3], false),
-            Sym::one(),
-        ),
-    ])
-}
-
-fn e3b() -> Verdict {
-    let b = basis(Family::Eh);
-    identity(
-        "b2(t) + b3(1 − t)",
-        &(b[2].clone() + &reflect(&b[3], false)),
-        &Sym::zero(),
-    )
-}
 
 fn e8() -> Verdict {
     let eh = eh_at(0);
@@ -255,28 +153,6 @@ fn e13() -> Verdict {
         + &(Sym::var("lambda") * &bump * &(p[0].clone() - &p[1]))
         + &(Sym::var("mu") * &bump * &(p[2].clone() - &p[3]));
     identities(vec![("Σ b_j P_j − (4)".into(), curve, rewritten)])
-}
-
-fn e2() -> Verdict {
-    identities(terminal_parts(Family::Eh, ["b0", "b1", "b2", "b3"]))
-}
-
-/// A maximum of `b_i` at an interior `t = i/3` needs `b_i'(i/3) = 0`: tested
-/// exactly for `i = 1, 2` (the end cases `i = 0, 3` are not tested).
-fn e7() -> Verdict {
-    let b = basis(Family::Eh);
-    let third = |k: i64| Sym::rational(rug::Rational::from((k, 3)));
-    let parts = (1..3)
-        .zip(&b[1..3])
-        .map(|(i, bi)| {
-            (
-                format!("b{i}'({i}/3) = 0"),
-                bi.d_t().subs("t", &third(i)),
-                Sym::zero(),
-            )
-        })
-        .collect();
-    identities(parts)
 }
 
 /// `Σ b_i(t; λ, μ) P_i` with symbolic control points.
