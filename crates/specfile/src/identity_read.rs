@@ -7,6 +7,7 @@
 //! identities = ["b2(t) + b3(1 - t) = 1", "b1'(1/3) = 0"]
 //! curve = "R"            # optional: R(x) = Σ bᵢ(x)Pᵢ, control points P0, P1, …
 //! weights = true         # optional: R(x) = Σ wᵢbᵢ(x)Pᵢ / Σ wᵢbᵢ(x), weights w0, w1, …
+//! symbols = ["q"]        # optional: further free symbols (constants of the ring)
 //! ```
 //!
 //! Each application `NAME'…'(ARG)` is cut out of the text and replaced by a
@@ -56,8 +57,8 @@ pub(crate) fn identity(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Ch
         None => None,
     };
     let mut extra: Vec<String> = Vec::new();
+    let mut names = spec.names();
     if curve.is_some() {
-        let mut names = spec.names();
         for prefix in ["P", "w"] {
             if prefix == "w" && !curve.as_ref().is_some_and(|k| k.weighted) {
                 continue;
@@ -73,6 +74,19 @@ pub(crate) fn identity(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Ch
                     })?;
                 extra.push(symbol);
             }
+        }
+    }
+    for symbol in c.symbols.iter().flatten() {
+        let name = symbol.get_ref().trim();
+        names
+            .fixed(name, "a free symbol of the identities")
+            .map_err(|e| crate::error::SpecError::Invalid {
+                at: src.at(symbol.span().start),
+                field: "claims.symbols".into(),
+                message: e.to_string(),
+            })?;
+        if !extra.iter().any(|x| x == name) {
+            extra.push(name.to_string());
         }
     }
     let identities = items
@@ -212,4 +226,55 @@ fn matching(chars: &[char], open: usize) -> Option<usize> {
         }
     }
     None
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::check::{Applied, Check};
+    use crate::spec::Spec;
+
+    fn hermite_with(claim: &str) -> crate::error::Result<Spec> {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../../examples/catalog/hermite.toml");
+        let text = std::fs::read_to_string(path).unwrap();
+        Spec::from_str_named(
+            &format!(
+                "{text}\n[[claims]]\nid = \"h\"\nsource = \"s\"\nstatement = \"s\"\ncheck = \"identity\"\n{claim}\n"
+            ),
+            "hermite.toml",
+        )
+    }
+
+    #[test]
+    fn applications_are_cut_out_with_their_order_and_argument() {
+        let spec =
+            hermite_with("curve = \"H\"\nidentities = [\"beta_0'(1 - t) + H(0) = alpha_0 + P1\"]")
+                .unwrap();
+        let Check::Identity { identities, curve } = &spec.claims[0].check else {
+            panic!("an identity claim");
+        };
+        assert_eq!(curve.as_ref().unwrap().name, "H");
+        let apps = &identities[0].applications;
+        assert_eq!(apps.len(), 2);
+        assert_eq!((apps[0].applied, apps[0].order), (Applied::Function(2), 1));
+        assert_eq!(apps[0].argument_text, "1 - t");
+        assert_eq!((apps[1].applied, apps[1].order), (Applied::Curve, 0));
+        // the bare name is the function at the variable
+        assert_eq!(
+            identities[0].rhs,
+            spec.functions[0].value.clone() + &trig_symbolic::Sym::var("P1")
+        );
+    }
+
+    #[test]
+    fn malformed_identities_are_refused_with_the_reason() {
+        let e = hermite_with("identities = [\"alpha_0(0) = alpha_1(1) = 1\"]").unwrap_err();
+        assert!(e.to_string().contains("expected one `=`"), "{e}");
+        let e = hermite_with("identities = [\"alpha_0(0 = 1\"]").unwrap_err();
+        assert!(e.to_string().contains("unbalanced parentheses"), "{e}");
+        let e = hermite_with("weights = true\nidentities = [\"alpha_0(0) = 1\"]").unwrap_err();
+        assert!(e.to_string().contains("`weights` belongs"), "{e}");
+        // P0 is a control point only with a curve
+        assert!(hermite_with("identities = [\"alpha_0(0) = P0\"]").is_err());
+    }
 }

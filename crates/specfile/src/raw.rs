@@ -87,6 +87,9 @@ pub struct RawClaim {
     pub identities: Option<Vec<Spanned<String>>>,
     /// `check = "identity"`: the printed name of the curve `Σ bᵢPᵢ`.
     pub curve: Option<Spanned<String>>,
+    /// `check = "identity"`: further free symbols of the identities (a
+    /// translation `q`, the entries of a matrix), constants of the ring.
+    pub symbols: Option<Vec<Spanned<String>>>,
     /// `check = "identity"`: the curve is rational, `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ`.
     pub weights: Option<bool>,
     /// The statement is the negation of the check ("is not C⁴").

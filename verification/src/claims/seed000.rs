@@ -33,10 +33,6 @@ pub const CLAIMS: &[Claim] = &[
         id: "M3b",
         check: m3b,
     },
-    Claim {
-        id: "M6",
-        check: m6,
-    },
 ];
 
 fn zeta() -> Sym {
@@ -209,27 +205,6 @@ fn m3b() -> Verdict {
     v.evidence.insert(
         0,
         "uniform knots n_i = i (unit spacing; q_j = q_{j−1} = q_{j−2} as the paper states), span j = 10; Appendix A uses F0 = l0/D, F1 = l1/D, F2 = l2/D, F3 = l3/D with D = 6ζ² − 6ζ + 10",
-    );
-    v
-}
-
-fn m6() -> Verdict {
-    let f = basis(Family::Seed000Uniform);
-    let w: Vec<Sym> = (0..4).map(|i| Sym::var(&format!("w{i}"))).collect();
-    let weighted: Vec<Sym> = f.iter().zip(&w).map(|(fi, wi)| fi.clone() * wi).collect();
-    let den = sum(&weighted);
-    let q: Vec<Sym> = weighted.iter().map(|x| x.clone() / &den).collect();
-    let one = Sym::one();
-    let mut parts: Vec<(String, Sym, Sym)> = (0..4)
-        .map(|j| {
-            let qj = (0..4).fold(q[j].clone(), |acc, i| acc.subs(&format!("w{i}"), &one));
-            (format!("Q{j}(w = 1) − F{j}"), qj, f[j].clone())
-        })
-        .collect();
-    parts.push(("Σ Q_j − 1 (symbolic weights)".into(), sum(&q), one));
-    let mut v = identities(parts);
-    v.evidence.push(
-        "uniform case (Appendix A basis F_j = l_j/(6ζ² − 6ζ + 10)), weights as symbols w0…w3",
     );
     v
 }

@@ -8,7 +8,7 @@ use trig_symbolic::{Poly, Sym};
 
 use crate::claim::Claim;
 use trig_judge::exact::{
-    IDENTITY, basis, combination, identities, identity, linear_map_parts, reflect, sum, symbols,
+    IDENTITY, basis, combination, identities, identity, reflect, sum, symbols,
 };
 use trig_judge::maxima::exactly_one_maximum;
 use trig_verdict::evidence::EvidenceList;
@@ -21,36 +21,16 @@ pub const CLAIMS: &[Claim] = &[
         check: d4,
     },
     Claim {
-        id: "D5",
-        check: d5,
-    },
-    Claim {
         id: "D6",
         check: d6,
-    },
-    Claim {
-        id: "D6b",
-        check: d6b,
     },
     Claim {
         id: "D7",
         check: d7,
     },
     Claim {
-        id: "D9",
-        check: d9,
-    },
-    Claim {
-        id: "D9b",
-        check: d9b,
-    },
-    Claim {
         id: "D10",
         check: d10,
-    },
-    Claim {
-        id: "D10b",
-        check: d10b,
     },
     Claim {
         id: "D11",
@@ -75,37 +55,6 @@ pub(super) fn rational_ends(p: &[Sym], w: &[Sym]) -> (Vec<Sym>, Vec<Sym>) {
     (at(End::Start), at(End::End))
 }
 
-fn d5() -> Verdict {
-    let p: Vec<Sym> = symbols("P", 6);
-    let w: Vec<Sym> = symbols("w", 6);
-    let (r0, r1) = rational_ends(&p, &w);
-    let n = |k: i64| Sym::int(k);
-    let printed_r2_0 = ((n(32) * &w[1].square() - &(n(8) * &w[0] * &w[1]))
-        * &(p[0].clone() - &p[1])
-        - &(n(12) * &w[0] * &w[2] * &(p[0].clone() - &p[2])))
-        / &w[0].square();
-    let printed_r2_1 = ((n(32) * &w[4].square() - &(n(8) * &w[4] * &w[5]))
-        * &(p[5].clone() - &p[4])
-        - &(n(12) * &w[3] * &w[5] * &(p[5].clone() - &p[3])))
-        / &w[5].square();
-    identities(vec![
-        ("R(0) − P0".into(), r0[0].clone(), p[0].clone()),
-        ("R(π/2) − P5".into(), r1[0].clone(), p[5].clone()),
-        (
-            "R'(0) − 4(w1/w0)(P1 − P0)".into(),
-            r0[1].clone(),
-            n(4) * &w[1] / &w[0] * &(p[1].clone() - &p[0]),
-        ),
-        (
-            "R'(π/2) − 4(w4/w5)(P5 − P4)".into(),
-            r1[1].clone(),
-            n(4) * &w[4] / &w[5] * &(p[5].clone() - &p[4]),
-        ),
-        ("R''(0) − printed".into(), r0[2].clone(), printed_r2_0),
-        ("R''(π/2) − printed".into(), r1[2].clone(), printed_r2_1),
-    ])
-}
-
 /// `Σ w_i b_i P_i / Σ w_i b_i` at the symbolic atoms.
 fn rational_curve(points: &[Sym], weights: &[Sym]) -> Sym {
     let b = basis(Family::Seed002Quartic);
@@ -115,30 +64,6 @@ fn rational_curve(points: &[Sym], weights: &[Sym]) -> Sym {
         .map(|(bi, wi)| bi.clone() * wi)
         .collect();
     combination(&wb, points) / &sum(&wb)
-}
-
-fn d9_with(reverse_weights: bool) -> Verdict {
-    let p: Vec<Sym> = symbols("P", 6);
-    let w: Vec<Sym> = symbols("w", 6);
-    let rp: Vec<Sym> = p.iter().rev().cloned().collect();
-    let rw: Vec<Sym> = if reverse_weights {
-        w.iter().rev().cloned().collect()
-    } else {
-        w.clone()
-    };
-    identities(vec![(
-        "R(π/2 − t; reversed) − R(t)".into(),
-        reflect(&rational_curve(&rp, &rw), true),
-        rational_curve(&p, &w),
-    )])
-}
-
-fn d9() -> Verdict {
-    d9_with(false)
-}
-
-fn d9b() -> Verdict {
-    d9_with(true)
 }
 
 /// The print as it stands: the first equation cannot be read; the second,
@@ -168,21 +93,6 @@ fn d10() -> Verdict {
             ("second equation, as printed".into(), second),
         ],
     )
-}
-
-/// The reading: invariance under translation and under linear maps.
-fn d10b() -> Verdict {
-    let p: Vec<Sym> = symbols("P", 6);
-    let w: Vec<Sym> = symbols("w", 6);
-    let q = Sym::var("q");
-    let shifted: Vec<Sym> = p.iter().map(|x| x.clone() + &q).collect();
-    let mut parts = vec![(
-        "R(P_i + q) − (R(P_i) + q)".to_string(),
-        rational_curve(&shifted, &w),
-        rational_curve(&p, &w) + &q,
-    )];
-    parts.extend(linear_map_parts("R", 6, |pts| rational_curve(pts, &w)));
-    identities(parts)
 }
 
 /// Each `b_i` has exactly one maximum on `[0, π/2]`: certified count of the
@@ -249,12 +159,6 @@ fn d6() -> Verdict {
     if v.status == Status::Fails {
         v = v.with_correction("see D6b: 3w1² → 32w1², 3w4² → 32w4², 1/w0² → 1/w5² and w3w3 → w3w5 in R''(π/2), R''_2 → R(π/2)");
     }
-    v
-}
-
-fn d6b() -> Verdict {
-    let mut v = identities(d6_parts(true));
-    v.evidence.push(DESIGN);
     v
 }
 

@@ -2,7 +2,7 @@
 //! bases with shape parameters λ, μ; the EH curve's terminal properties and
 //! rewritten form.
 
-use trig_core::{Family, Ring};
+use trig_core::Family;
 use trig_deriv::{End, Wrt, curve_endpoint_derivatives};
 use trig_symbolic::Sym;
 
@@ -10,15 +10,11 @@ use crate::claim::Claim;
 use trig_judge::certificate::nonnegative_on;
 
 use trig_certify::ParamBox;
-use trig_judge::exact::{IDENTITY, basis, combination, identities, linear_map_parts, sum, symbols};
+use trig_judge::exact::{IDENTITY, basis, combination, identities, sum, symbols};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[
-    Claim {
-        id: "E8",
-        check: e8,
-    },
     Claim {
         id: "E9",
         check: e9,
@@ -28,20 +24,8 @@ pub const CLAIMS: &[Claim] = &[
         check: e10,
     },
     Claim {
-        id: "E11",
-        check: e11,
-    },
-    Claim {
-        id: "E11b",
-        check: e11b,
-    },
-    Claim {
         id: "E12",
         check: e12,
-    },
-    Claim {
-        id: "E13",
-        check: e13,
     },
     Claim {
         id: "E1c",
@@ -64,29 +48,6 @@ fn eh_at(v: i64) -> Vec<Sym> {
         .iter()
         .map(|b| b.subs("lambda", &x).subs("mu", &x))
         .collect()
-}
-
-const HERMITE: [&str; 4] = ["α0", "α1", "β0", "β1"];
-
-fn e8() -> Verdict {
-    let eh = eh_at(0);
-    let h = basis(Family::Hermite);
-    let names = HERMITE;
-    let mut v = identities(
-        (0..4)
-            .map(|i| {
-                (
-                    format!("b{i}(λ = μ = 0) − {}", names[i]),
-                    eh[i].clone(),
-                    h[i].clone(),
-                )
-            })
-            .collect(),
-    );
-    v.evidence.push(
-        "the second sentence (λ = μ gives the single-parameter bases of its reference [20]) cites a basis not printed in the paper and is not checked",
-    );
-    v
 }
 
 /// `R''` at both ends as printed, and with the μ-terms' indices shifted down
@@ -142,19 +103,6 @@ fn e9() -> Verdict {
     )
 }
 
-fn e13() -> Verdict {
-    let p: Vec<Sym> = symbols("P", 4);
-    let b = basis(Family::Eh);
-    let c = basis(Family::Hermite);
-    let t = Sym::var("t");
-    let bump = t.square() * &(Sym::one() + &t.square() - &(n(2) * &t));
-    let curve = combination(&b, &p);
-    let rewritten = combination(&c, &p)
-        + &(Sym::var("lambda") * &bump * &(p[0].clone() - &p[1]))
-        + &(Sym::var("mu") * &bump * &(p[2].clone() - &p[3]));
-    identities(vec![("Σ b_j P_j − (4)".into(), curve, rewritten)])
-}
-
 /// `Σ b_i(t; λ, μ) P_i` with symbolic control points.
 fn eh_curve(points: &[Sym], lambda: &Sym, mu: &Sym, t: &Sym) -> Sym {
     let atoms = trig_core::Atoms {
@@ -178,34 +126,6 @@ fn e10() -> Verdict {
         eh_curve(&p, &l, &m, &t),
         eh_curve(&reversed, &m, &l, &(Sym::one() - &t)),
     )])
-}
-
-fn e11() -> Verdict {
-    let p: Vec<Sym> = symbols("P", 4);
-    let q = Sym::var("q");
-    let shifted: Vec<Sym> = p.iter().map(|pi| pi.clone() + &q).collect();
-    let (l, m, t) = (Sym::var("lambda"), Sym::var("mu"), Sym::var("t"));
-    let mut parts = vec![(
-        "T(P_i + q) − (T(P_i) + q)".to_string(),
-        eh_curve(&shifted, &l, &m, &t),
-        eh_curve(&p, &l, &m, &t) + &q,
-    )];
-    parts.extend(eh_linear_map());
-    let mut v = identities(parts);
-    v.evidence.push("translation invariance needs Σ b_i = 1, which fails (E6); linear invariance holds for any basis (E11b)");
-    v
-}
-
-/// `T(P_i M) = T(P_i) M` for plane control points and a 2 × 2 matrix (a
-/// d × d matrix acts on each output coordinate through the same row
-/// combination, so d = 2 shows every case).
-fn eh_linear_map() -> Vec<(String, Sym, Sym)> {
-    let (l, m, t) = (Sym::var("lambda"), Sym::var("mu"), Sym::var("t"));
-    linear_map_parts("T", 4, |p| eh_curve(p, &l, &m, &t))
-}
-
-fn e11b() -> Verdict {
-    identities(eh_linear_map())
 }
 
 fn e12() -> Verdict {
