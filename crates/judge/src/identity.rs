@@ -12,10 +12,17 @@
 //! `cos(ω(ax + b)) = c·cos ωb − a·s·sin ωb`, `t ↦ at + b`,
 //! `E ↦ exp(κb)·E^a`. Each identity is then `lhs − rhs = 0` exactly, a
 //! failure shown with its residual and a witness.
+//!
+//! A reading of a print (a garbled or mistyped identity read as the
+//! document means it) is decided beside the print: where the print fails
+//! and every failing print has a reading that holds, the claim holds after
+//! the correction print → reading; otherwise the print's verdict stands,
+//! the readings shown with it.
 
 use trig_core::{Affine, Basis};
-use trig_specfile::{Applied, Curve, Identity};
+use trig_specfile::{Applied, Curve, Identity, Reading};
 use trig_symbolic::Sym;
+use trig_verdict::status::Status;
 
 use crate::domain::param_symbols;
 use crate::exact::{ExactBasis, identities, symbols};
@@ -28,11 +35,11 @@ pub fn printed_identities<B: ExactBasis>(
     basis: &B,
     items: &[Identity],
     curve: Option<&Curve>,
+    readings: &[Reading],
 ) -> Verdict {
     let functions = basis.exact_functions();
     let curve_value = curve.map(|k| curve_of(&functions, k.weighted));
-    let mut parts = Vec::new();
-    for item in items {
+    let sides = |item: &Identity| -> Result<(Sym, Sym), Verdict> {
         let (mut lhs, mut rhs) = (item.lhs.clone(), item.rhs.clone());
         for a in &item.applications {
             let f = match a.applied {
@@ -40,17 +47,61 @@ pub fn printed_identities<B: ExactBasis>(
                 Applied::Curve => curve_value.as_ref().expect("a curve read with its name"),
             };
             let Some(value) = applied(basis, f, a.order, &a.argument.x, &a.argument.rest) else {
-                return Verdict::not_checkable(format!(
+                return Err(Verdict::not_checkable(format!(
                     "in `{}`, the argument `{}` is not formed exactly (a slope other than 0, ±1 in the variable, or atoms not exact at that point)",
                     item.text, a.argument_text
-                ));
+                )));
             };
             lhs = lhs.subs(&a.symbol, &value);
             rhs = rhs.subs(&a.symbol, &value);
         }
-        parts.push((item.text.clone(), lhs, rhs));
+        Ok((lhs, rhs))
+    };
+    let mut parts = Vec::new();
+    for item in items {
+        match sides(item) {
+            Ok((lhs, rhs)) => parts.push((item.label.clone(), lhs, rhs)),
+            Err(v) => return v,
+        }
     }
-    identities(parts)
+    let printed = identities(parts);
+    if printed.status == Status::Holds || readings.is_empty() {
+        return printed;
+    }
+    let mut read = Vec::new();
+    for r in readings {
+        match sides(&r.identity) {
+            Ok((lhs, rhs)) => read.push((
+                format!("reading of {}: {}", items[r.of].label, r.identity.label),
+                lhs,
+                rhs,
+            )),
+            Err(v) => return v,
+        }
+    }
+    let decided = identities(read);
+    let failing: Vec<usize> = printed
+        .evidence
+        .iter()
+        .enumerate()
+        .filter(|(_, e)| e.status == Some(Status::Fails))
+        .map(|(i, _)| i)
+        .collect();
+    let every_failing_read = failing.iter().all(|i| readings.iter().any(|r| r.of == *i));
+    let corrected = decided.status == Status::Holds && every_failing_read;
+    let correction = readings
+        .iter()
+        .filter(|r| failing.contains(&r.of))
+        .map(|r| format!("{} → {}", items[r.of].label, r.identity.label))
+        .collect::<Vec<_>>()
+        .join("; ");
+    let mut v = printed;
+    v.evidence.extend(decided.evidence);
+    if corrected {
+        v.status = Status::HoldsAfterCorrection;
+        v = v.with_correction(format!("read {correction}"));
+    }
+    v
 }
 
 /// `Σ bᵢPᵢ`, or `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ`.

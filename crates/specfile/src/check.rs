@@ -181,6 +181,9 @@ pub enum Check {
     Identity {
         identities: Vec<Identity>,
         curve: Option<Curve>,
+        /// Readings of garbled or mistyped prints, each decided beside the
+        /// print it reads.
+        readings: Vec<Reading>,
     },
 }
 
@@ -191,9 +194,22 @@ pub enum Check {
 pub struct Identity {
     /// As printed in the file.
     pub text: String,
+    /// How the report names it: the text before `: ` when the file gives
+    /// one (`"(A1): …"`), else the text.
+    pub label: String,
     pub lhs: Sym,
     pub rhs: Sym,
     pub applications: Vec<Application>,
+}
+
+/// A reading of a printed identity (`readings = [{ of = "…", as = "…" }]`):
+/// where the print fails and every failing print's reading holds, the
+/// claim holds after the correction, shown as print → reading.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Reading {
+    /// The index of the printed identity it reads.
+    pub of: usize,
+    pub identity: Identity,
 }
 
 /// `f^(order)(argument)` in a printed identity, standing for its

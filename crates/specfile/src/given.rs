@@ -528,8 +528,13 @@ impl<'a> Substitution<'a> {
                     *p = self.sym(p, "the printed exchange of parameters")?;
                 }
             }
-            Check::Identity { identities, .. } => {
-                for item in identities.iter_mut() {
+            Check::Identity {
+                identities,
+                readings,
+                ..
+            } => {
+                let read = readings.iter_mut().map(|r| &mut r.identity);
+                for item in identities.iter_mut().chain(read) {
                     let what = format!("the printed identity `{}`", item.text);
                     if item
                         .applications

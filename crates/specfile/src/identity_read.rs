@@ -8,7 +8,11 @@
 //! curve = "R"            # optional: R(x) = Σ bᵢ(x)Pᵢ, control points P0, P1, …
 //! weights = true         # optional: R(x) = Σ wᵢbᵢ(x)Pᵢ / Σ wᵢbᵢ(x), weights w0, w1, …
 //! symbols = ["q"]        # optional: further free symbols (constants of the ring)
+//! readings = [{ of = "b2(t) + b3(1 - t) = 1", as = "b2(t) + b3(1 - t) = 0" }]
 //! ```
+//!
+//! An identity may be named for the report, `"(A1) Σ F_k = 1: F0 + F1 + F2 + F3 = 1"`
+//! (the text before the first `: `; formulas have no colon).
 //!
 //! Each application `NAME'…'(ARG)` is cut out of the text and replaced by a
 //! placeholder symbol; the rest is an ordinary claim formula (the bare
@@ -18,7 +22,7 @@
 
 use toml::Spanned;
 
-use crate::check::{Application, Applied, Check, Curve, Identity};
+use crate::check::{Application, Applied, Check, Curve, Identity, Reading};
 use crate::error::Result;
 use crate::raw::RawClaim;
 use crate::source::Source;
@@ -100,7 +104,28 @@ pub(crate) fn identity(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Ch
             "list at least one identity".into(),
         );
     }
-    Ok(Check::Identity { identities, curve })
+    let mut readings = Vec::new();
+    for r in c.readings.iter().flatten() {
+        let Some(of) = identities
+            .iter()
+            .position(|i| [&i.text, &i.label].contains(&&r.of.get_ref().trim().to_string()))
+        else {
+            return src.invalid(
+                r.of.span(),
+                "claims.readings",
+                format!("`{}` is not one of the claim's identities", r.of.get_ref()),
+            );
+        };
+        readings.push(Reading {
+            of,
+            identity: one(src, spec, &r.read, curve.as_ref(), &extra)?,
+        });
+    }
+    Ok(Check::Identity {
+        identities,
+        curve,
+        readings,
+    })
 }
 
 /// One printed identity: its applications cut out, both sides read.
@@ -112,7 +137,11 @@ fn one(
     extra: &[String],
 ) -> Result<Identity> {
     let text = item.get_ref();
-    let (rest, applications) = applications(src, spec, item, curve)?;
+    let (label, formula) = match text.split_once(": ") {
+        Some((label, formula)) => (label.trim(), formula),
+        None => (text.trim(), text.as_str()),
+    };
+    let (rest, applications) = applications(src, spec, formula, item, curve)?;
     let sides: Vec<&str> = rest.split('=').collect();
     if sides.len() != 2 {
         return src.invalid(
@@ -130,6 +159,7 @@ fn one(
     };
     Ok(Identity {
         text: text.trim().to_string(),
+        label: label.to_string(),
         lhs: side(sides[0])?,
         rhs: side(sides[1])?,
         applications,
@@ -141,10 +171,11 @@ fn one(
 fn applications(
     src: &Source<'_>,
     spec: &Spec,
+    formula: &str,
     item: &Spanned<String>,
     curve: Option<&Curve>,
 ) -> Result<(String, Vec<Application>)> {
-    let chars: Vec<char> = item.get_ref().chars().collect();
+    let chars: Vec<char> = formula.chars().collect();
     let mut out = String::new();
     let mut found: Vec<Application> = Vec::new();
     let mut i = 0;

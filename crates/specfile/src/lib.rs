@@ -56,7 +56,7 @@ pub use any::{AnyBasis, OpenError};
 pub use ast::Grammar;
 pub use check::{
     Application, Applied, Check, Condition, Curve, Direction, Identity, Monotone, Printed,
-    Quantifier, SpecClaim, Varied,
+    Quantifier, Reading, SpecClaim, Varied,
 };
 pub use check::{Between, Fixed, Given};
 pub use document::{DocumentClaim, DocumentFile};

@@ -533,9 +533,11 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
                 .collect(),
         ),
         Check::NotPrinted { reason } => Verdict::not_checkable(reason.clone()),
-        Check::Identity { identities, curve } => {
-            trig_judge::identity::printed_identities(spec, identities, curve.as_ref())
-        }
+        Check::Identity {
+            identities,
+            curve,
+            readings,
+        } => trig_judge::identity::printed_identities(spec, identities, curve.as_ref(), readings),
         Check::LocalControl { varied, segments } => {
             let control = match varied {
                 Varied::Point => Control::Point,
