@@ -173,6 +173,9 @@ pub enum Check {
     /// What this copy of the document does not print (a lost formula, an
     /// unpublished data set): `not-checkable` with the reason, as data.
     NotPrinted { reason: String },
+    /// Each function has exactly one maximum on the domain ("each bᵢ has
+    /// one maximum value").
+    OneMaximum,
     /// Printed identities in the functions of the basis applied at printed
     /// arguments (`b2(t) + b3(1 - t) = 1`, `b1'(1/3) = 0`), their
     /// derivatives in the variable, and the curve `Σ bᵢPᵢ` (optionally

@@ -10,20 +10,11 @@ use crate::claim::Claim;
 use trig_judge::exact::{
     IDENTITY, basis, combination, identities, identity, reflect, sum, symbols,
 };
-use trig_judge::maxima::exactly_one_maximum;
 use trig_verdict::evidence::EvidenceList;
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[
-    Claim {
-        id: "D4",
-        check: d4,
-    },
-    Claim {
-        id: "D6",
-        check: d6,
-    },
     Claim {
         id: "D7",
         check: d7,
@@ -93,73 +84,6 @@ fn d10() -> Verdict {
             ("second equation, as printed".into(), second),
         ],
     )
-}
-
-/// Each `b_i` has exactly one maximum on `[0, π/2]`: certified count of the
-/// sign changes of `b_i'`.
-fn d4() -> Verdict {
-    exactly_one_maximum(&Family::Seed002Quartic, &basis(Family::Seed002Quartic))
-}
-
-/// The six left-hand sides of (3) against the curve's own derivatives: as
-/// printed, or (`reading`) with the typos of D6b corrected.
-fn d6_parts(reading: bool) -> Vec<(String, Sym, Sym)> {
-    let p: Vec<Sym> = symbols("P", 6);
-    let w: Vec<Sym> = symbols("w", 6);
-    let (r0, r1) = rational_ends(&p, &w);
-    let n = |k: i64| Sym::int(k);
-    let k = n(if reading { 32 } else { 3 });
-    let (den_end, w35) = if reading {
-        (w[5].square(), w[3].clone() * &w[5])
-    } else {
-        (w[0].square(), w[3].clone() * &w[3])
-    };
-    let r2_0 = ((k.clone() * &w[1].square() - &(n(8) * &w[0] * &w[1]) - &(n(12) * &w[0] * &w[2]))
-        * &p[0]
-        + &((n(8) * &w[0] * &w[1] - &(n(32) * &w[1].square())) * &p[1])
-        + &(n(12) * &w[0] * &w[2] * &p[2]))
-        / &w[0].square();
-    let r2_1 = (n(12) * &w35 * &p[3]
-        + &((n(8) * &w[4] * &w[5] - &(n(32) * &w[4].square())) * &p[4])
-        + &((k * &w[4].square() - &(n(8) * &w[4] * &w[5]) - &(n(12) * &w35)) * &p[5]))
-        / &den_end;
-    let last = if reading {
-        ("R(π/2) − P5".to_string(), r1[0].clone(), p[5].clone())
-    } else {
-        (
-            "R''(π/2) − P5 (\"R''_2 = P5\" as printed)".to_string(),
-            r1[2].clone(),
-            p[5].clone(),
-        )
-    };
-    let label = if reading { "reading" } else { "printed" };
-    vec![
-        ("R(0) − P0".into(), r0[0].clone(), p[0].clone()),
-        (
-            "R'(0) − 4(w1/w0)(P1 − P0)".into(),
-            r0[1].clone(),
-            n(4) * &w[1] / &w[0] * &(p[1].clone() - &p[0]),
-        ),
-        (format!("R''(0) − {label}"), r0[2].clone(), r2_0),
-        (format!("R''(π/2) − {label}"), r1[2].clone(), r2_1),
-        (
-            "R'(π/2) − (4w4/w5)(P5 − P4)".into(),
-            r1[1].clone(),
-            n(4) * &w[4] / &w[5] * &(p[5].clone() - &p[4]),
-        ),
-        last,
-    ]
-}
-
-const DESIGN: &str = "the right-hand sides V1, α1(V2 − V0), α1(V0 − 2V1 + V2), α2(V1 − 2V2 + V3), α2(V3 − V1), V2 are design conditions that define P0…P5 (solvable for w_i > 0: each new P enters with a nonzero coefficient), not identities; the left-hand sides are checked against the curve (2)";
-
-fn d6() -> Verdict {
-    let mut v = identities(d6_parts(false));
-    v.evidence.push(DESIGN);
-    if v.status == Status::Fails {
-        v = v.with_correction("see D6b: 3w1² → 32w1², 3w4² → 32w4², 1/w0² → 1/w5² and w3w3 → w3w5 in R''(π/2), R''_2 → R(π/2)");
-    }
-    v
 }
 
 /// The knot relations (8) for `k = 0, 1, 2` follow from the end conditions

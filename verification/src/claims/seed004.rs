@@ -3,7 +3,6 @@
 //! rewritten form.
 
 use trig_core::Family;
-use trig_deriv::{End, Wrt, curve_endpoint_derivatives};
 use trig_symbolic::Sym;
 
 use crate::claim::Claim;
@@ -15,10 +14,6 @@ use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[
-    Claim {
-        id: "E9",
-        check: e9,
-    },
     Claim {
         id: "E10",
         check: e10,
@@ -37,10 +32,6 @@ pub const CLAIMS: &[Claim] = &[
     },
 ];
 
-fn n(k: i64) -> Sym {
-    Sym::int(k)
-}
-
 /// The EH bases at `λ = μ = v`.
 fn eh_at(v: i64) -> Vec<Sym> {
     let x = Sym::int(v);
@@ -48,59 +39,6 @@ fn eh_at(v: i64) -> Vec<Sym> {
         .iter()
         .map(|b| b.subs("lambda", &x).subs("mu", &x))
         .collect()
-}
-
-/// `R''` at both ends as printed, and with the μ-terms' indices shifted down
-/// by one (P3 → P2, P4 → P3).
-fn e9() -> Verdict {
-    let p: Vec<Sym> = symbols("P", 5);
-    let (lambda, mu) = (Sym::var("lambda"), Sym::var("mu"));
-    let params = [lambda.clone(), mu.clone()];
-    let at = |end| {
-        curve_endpoint_derivatives::<Sym, 3>(
-            Family::Eh,
-            &params,
-            &p[..4],
-            None,
-            end,
-            Wrt::Angle,
-            &Sym::one(),
-        )
-    };
-    let (r0, r1) = (at(End::Start), at(End::End));
-    let r2 = |a: usize, b: usize| {
-        let left = (n(2) * &lambda - &n(6)) * &(p[0].clone() - &p[1])
-            + &(n(2) * &mu * &(p[a].clone() - &p[b]))
-            - &(n(2) * &(n(2) * &p[a] + &p[b]));
-        let right = (n(2) * &lambda + &n(6)) * &(p[0].clone() - &p[1])
-            + &(n(2) * &mu * &(p[a].clone() - &p[b]))
-            + &(n(2) * &(p[a].clone() + &(n(2) * &p[b])));
-        (left, right)
-    };
-    let common = |r2: (Sym, Sym), label: &str| {
-        vec![
-            ("R(0) − P0".to_string(), r0[0].clone(), p[0].clone()),
-            ("R(1) − P1".into(), r1[0].clone(), p[1].clone()),
-            ("R'(0) − P2".into(), r0[1].clone(), p[2].clone()),
-            ("R'(1) − P3".into(), r1[1].clone(), p[3].clone()),
-            (format!("R''(0) − {label}"), r0[2].clone(), r2.0),
-            (format!("R''(1) − {label}"), r1[2].clone(), r2.1),
-        ]
-    };
-    let printed = identities(common(r2(3, 4), "printed"));
-    if printed.status == Status::Holds {
-        return printed;
-    }
-    let shifted = identities(common(r2(2, 3), "printed with P3, P4 → P2, P3"));
-    if shifted.status != Status::Holds {
-        return printed;
-    }
-    let mut evidence = printed.evidence;
-    evidence.extend(shifted.evidence.into_iter().filter(|e| e.contains("→")));
-    evidence.push("the segment has only P0…P3; the printed R'' formulas use P4");
-    Verdict::new(Status::HoldsAfterCorrection, IDENTITY, evidence).with_correction(
-        "index shift in both R'' formulas: 2μ(P2 − P3) − 2(2P2 + P3) and 2μ(P2 − P3) + 2(P2 + 2P3)",
-    )
 }
 
 /// `Σ b_i(t; λ, μ) P_i` with symbolic control points.

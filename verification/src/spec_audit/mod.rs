@@ -533,6 +533,9 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
                 .collect(),
         ),
         Check::NotPrinted { reason } => Verdict::not_checkable(reason.clone()),
+        Check::OneMaximum => {
+            trig_judge::maxima::exactly_one_maximum(spec, &trig_judge::exact::basis_of(spec))
+        }
         Check::Identity {
             identities,
             curve,
