@@ -279,9 +279,14 @@ mod tests {
     #[test]
     fn applications_are_cut_out_with_their_order_and_argument() {
         let spec =
-            hermite_with("curve = \"H\"\nidentities = [\"beta_0'(1 - t) + H(0) = alpha_0 + P1\"]")
+            hermite_with("curve = \"H\"\nidentities = [\"beta_0'(1 - t) + H(0) = alpha_0 + P1\", \"step: alpha_0(0) = 2\"]\nreadings = [{ of = \"step\", as = \"alpha_0(0) = 1\" }]")
                 .unwrap();
-        let Check::Identity { identities, curve } = &spec.claims[0].check else {
+        let Check::Identity {
+            identities,
+            curve,
+            readings,
+        } = &spec.claims[0].check
+        else {
             panic!("an identity claim");
         };
         assert_eq!(curve.as_ref().unwrap().name, "H");
@@ -290,6 +295,12 @@ mod tests {
         assert_eq!((apps[0].applied, apps[0].order), (Applied::Function(2), 1));
         assert_eq!(apps[0].argument_text, "1 - t");
         assert_eq!((apps[1].applied, apps[1].order), (Applied::Curve, 0));
+        // a name for the report, and a reading of the named identity
+        assert_eq!(identities[1].label, "step");
+        assert_eq!(
+            (readings[0].of, readings[0].identity.label.as_str()),
+            (1, "alpha_0(0) = 1")
+        );
         // the bare name is the function at the variable
         assert_eq!(
             identities[0].rhs,
