@@ -171,3 +171,23 @@ proptest! {
         }
     }
 }
+
+/// The identity check's readings: a print that fails is corrected only
+/// where every failing print has a reading that holds (E9, M1), and the
+/// correction names print → reading; a print without readings stays
+/// refuted (D6, its reading D6b a claim of its own).
+#[test]
+fn identity_readings_correct_only_what_they_read() {
+    for id in ["E9", "M1"] {
+        let v = verdict(id);
+        assert_eq!(v.status, Status::HoldsAfterCorrection, "{id}");
+        assert!(
+            v.correction.as_deref().is_some_and(|c| c.contains(" → ")),
+            "{id}: {:?}",
+            v.correction
+        );
+        assert!(has(&v, "reading of "), "{id}");
+    }
+    assert_eq!(verdict("D6").status, Status::Fails);
+    assert_eq!(verdict("D6b").status, Status::Holds);
+}

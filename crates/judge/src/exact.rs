@@ -288,36 +288,6 @@ pub fn combination(coeffs: &[Sym], points: &[Sym]) -> Sym {
         .collect::<Vec<_>>())
 }
 
-/// Invariance under a linear map of plane curves, `C(P_i·M) = C(P_i)·M`
-/// for points `P_i = (x_i, y_i)` as row vectors and a symbolic matrix
-/// `M = [[M11, M12], [M21, M22]]`: the two coordinates as identities, for a
-/// curve given as a function of its control points (one coordinate at a
-/// time; weights or parameters stay inside `curve`).
-pub fn linear_map_parts(
-    name: &str,
-    n: usize,
-    curve: impl Fn(&[Sym]) -> Sym,
-) -> Vec<(String, Sym, Sym)> {
-    let (x, y) = (symbols("x", n), symbols("y", n));
-    let m = |i: usize, j: usize| Sym::var(&format!("M{i}{j}"));
-    let column = |j: usize| -> Vec<Sym> {
-        x.iter()
-            .zip(&y)
-            .map(|(xi, yi)| xi.clone() * &m(1, j) + &(yi.clone() * &m(2, j)))
-            .collect()
-    };
-    let (cx, cy) = (curve(&x), curve(&y));
-    (1..=2)
-        .map(|j| {
-            (
-                format!("coordinate {j} of {name}(P_i·M) − {name}(P_i)·M"),
-                curve(&column(j)),
-                cx.clone() * &m(1, j) + &(cy.clone() * &m(2, j)),
-            )
-        })
-        .collect()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -193,6 +193,78 @@ pub enum Check {
     /// totals, extremes and means of the segment rows, summaries against
     /// the tables they summarise, the best scheme against the summaries.
     TableArithmetic { path: String, text: String },
+    /// Each function has exactly one maximum on the domain ("each bᵢ has
+    /// one maximum value").
+    OneMaximum,
+    /// Printed identities in the functions of the basis applied at printed
+    /// arguments (`b2(t) + b3(1 - t) = 1`, `b1'(1/3) = 0`), their
+    /// derivatives in the variable, and the curve `Σ bᵢPᵢ` (optionally
+    /// rational, `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ`) under a printed name: each decided
+    /// exactly.
+    Identity {
+        identities: Vec<Identity>,
+        curve: Option<Curve>,
+        /// Readings of garbled or mistyped prints, each decided beside the
+        /// print it reads.
+        readings: Vec<Reading>,
+    },
+}
+
+/// A printed identity `lhs = rhs`: each side a formula in the variable,
+/// the parameters, the control points and weights of the curve, and the
+/// placeholder symbols of its [`Application`]s.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Identity {
+    /// As printed in the file.
+    pub text: String,
+    /// How the report names it: the text before `: ` when the file gives
+    /// one (`"(A1): …"`), else the text.
+    pub label: String,
+    pub lhs: Sym,
+    pub rhs: Sym,
+    pub applications: Vec<Application>,
+}
+
+/// A reading of a printed identity (`readings = [{ of = "…", as = "…" }]`):
+/// where the print fails and every failing print's reading holds, the
+/// claim holds after the correction, shown as print → reading.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Reading {
+    /// The index of the printed identity it reads.
+    pub of: usize,
+    pub identity: Identity,
+}
+
+/// `f^(order)(argument)` in a printed identity, standing for its
+/// placeholder `symbol` in the sides.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Application {
+    pub symbol: String,
+    pub applied: Applied,
+    /// Derivative order in the variable (the primes printed).
+    pub order: usize,
+    /// The argument `a·x + b`, linear in the variable `x`.
+    pub argument: crate::formula::Linear,
+    /// The argument as printed.
+    pub argument_text: String,
+}
+
+/// What an [`Application`] applies.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Applied {
+    /// The basis function of this index.
+    Function(usize),
+    /// The curve of the claim.
+    Curve,
+}
+
+/// The curve a printed identity names: `Σ bᵢPᵢ` with control points
+/// `P0, P1, …`, or with `weighted` the rational `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ` with
+/// weights `w0, w1, …`.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Curve {
+    pub name: String,
+    pub weighted: bool,
 }
 
 /// How a printed identity is quantified over the parameter values.

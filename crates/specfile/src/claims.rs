@@ -306,6 +306,8 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             }
         }
         "local-control" => local_control(src, spec, c)?,
+        "identity" => crate::identity_read::identity(src, spec, c)?,
+        "one-maximum" => Check::OneMaximum,
         "all" => Check::All {
             claims: need(src, c, &c.claims, "claims")?
                 .iter()
@@ -335,7 +337,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             return src.invalid(
                 c.check.span(),
                 "claims.check",
-                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, continuity, local-control, all, not-printed, interpolant-nonnegative or table-arithmetic"),
+                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, continuity, local-control, identity, one-maximum, all, not-printed, interpolant-nonnegative or table-arithmetic"),
             );
         }
     };

@@ -528,7 +528,30 @@ impl<'a> Substitution<'a> {
                     *p = self.sym(p, "the printed exchange of parameters")?;
                 }
             }
+            Check::Identity {
+                identities,
+                readings,
+                ..
+            } => {
+                let read = readings.iter_mut().map(|r| &mut r.identity);
+                for item in identities.iter_mut().chain(read) {
+                    let what = format!("the printed identity `{}`", item.text);
+                    if item
+                        .applications
+                        .iter()
+                        .any(|a| !a.argument.rest.params.is_empty())
+                    {
+                        return Err(GivenError::Refused {
+                            what,
+                            why: "an argument in the parameters is not decided at fixed values (state the argument with the value)".into(),
+                        });
+                    }
+                    item.lhs = self.sym(&item.lhs, &what)?;
+                    item.rhs = self.sym(&item.rhs, &what)?;
+                }
+            }
             Check::Unity
+            | Check::OneMaximum
             | Check::ShapeEffect { .. }
             | Check::Continuity { .. }
             | Check::LocalControl { .. }

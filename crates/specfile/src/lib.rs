@@ -43,6 +43,7 @@ pub mod formula;
 pub mod frequencies;
 pub mod given;
 mod given_read;
+mod identity_read;
 mod load;
 mod names;
 pub mod nonvanishing;
@@ -53,8 +54,11 @@ pub mod spec;
 
 pub use any::{AnyBasis, OpenError};
 pub use ast::Grammar;
+pub use check::{
+    Application, Applied, Check, Condition, Curve, Direction, Identity, Monotone, Printed,
+    Quantifier, Reading, SpecClaim, Varied,
+};
 pub use check::{Between, Fixed, Given};
-pub use check::{Check, Condition, Direction, Monotone, Printed, Quantifier, SpecClaim, Varied};
 pub use document::{DocumentClaim, DocumentFile};
 pub use error::{FormulaError, Location, SpecError};
 pub use exact_range::{ExactEnd, ExactRange};

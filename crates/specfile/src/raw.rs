@@ -90,6 +90,17 @@ pub struct RawClaim {
     /// table's own unless given).
     pub data: Option<Spanned<String>>,
     pub scheme: Option<Spanned<String>>,
+    /// `check = "identity"`: the printed identities `lhs = rhs`.
+    pub identities: Option<Vec<Spanned<String>>>,
+    /// `check = "identity"`: the printed name of the curve `Σ bᵢPᵢ`.
+    pub curve: Option<Spanned<String>>,
+    /// `check = "identity"`: further free symbols of the identities (a
+    /// translation `q`, the entries of a matrix), constants of the ring.
+    pub symbols: Option<Vec<Spanned<String>>>,
+    /// `check = "identity"`: readings of printed identities.
+    pub readings: Option<Vec<RawReading>>,
+    /// `check = "identity"`: the curve is rational, `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ`.
+    pub weights: Option<bool>,
     /// The statement is the negation of the check ("is not C⁴").
     pub negated: Option<bool>,
     /// Remarks shown after the evidence (how a print is read, what the
@@ -98,4 +109,13 @@ pub struct RawClaim {
     /// In a document file: the basis the claim is about (a name of its
     /// `[bases]`).
     pub basis: Option<Spanned<String>>,
+}
+
+/// `readings = [{ of = "printed identity", as = "its reading" }]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawReading {
+    pub of: Spanned<String>,
+    #[serde(rename = "as")]
+    pub read: Spanned<String>,
 }

@@ -14,7 +14,6 @@ mod seed000_appendix_c;
 mod seed000_appendix_e;
 mod seed000_appendix_print;
 mod seed002;
-mod seed003;
 mod seed004;
 mod seed004_joins;
 mod shape_effect;
@@ -39,7 +38,6 @@ pub fn all() -> Vec<Claim> {
         seed000_appendix_e::CLAIMS,
         seed000_appendix_b::CLAIMS,
         seed002::CLAIMS,
-        seed003::CLAIMS,
         seed004::CLAIMS,
         seed004_joins::CLAIMS,
         properties::CLAIMS,

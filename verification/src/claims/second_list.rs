@@ -38,22 +38,6 @@ pub const CLAIMS: &[Claim] = &[
         check: t60,
     },
     Claim {
-        id: "M22",
-        check: m22,
-    },
-    Claim {
-        id: "D20",
-        check: d20,
-    },
-    Claim {
-        id: "D22",
-        check: d22,
-    },
-    Claim {
-        id: "S6",
-        check: s6,
-    },
-    Claim {
         id: "S7",
         check: s7,
     },
@@ -62,16 +46,8 @@ pub const CLAIMS: &[Claim] = &[
         check: s8,
     },
     Claim {
-        id: "S9",
-        check: s9,
-    },
-    Claim {
         id: "E18",
         check: e18,
-    },
-    Claim {
-        id: "E20",
-        check: e20,
     },
     Claim {
         id: "E22",
@@ -290,30 +266,6 @@ fn t60() -> Verdict {
     v
 }
 
-fn m22() -> Verdict {
-    Verdict::not_checkable(
-        "neither \"parametric range\" nor \"the existing scheme\" is defined in the paper, and no range of another scheme is printed to compare with (the paper's own range ζ is decided in the first list)",
-    )
-}
-
-fn d20() -> Verdict {
-    Verdict::not_checkable(
-        "the shape-preserving condition on α is not printed in this copy (§V gives the interpolation set-up (8) but no inequality on α_i), so neither the condition nor \"every α satisfying it\" can be decided",
-    )
-}
-
-fn d22() -> Verdict {
-    Verdict::not_checkable(
-        "the rational quartic trigonometric Bézier surface is absent from this copy: no surface formula or property is printed (only the keyword and the sentence of §I)",
-    )
-}
-
-fn s6() -> Verdict {
-    Verdict::not_checkable(
-        "the basis functions of seed 003 are missing from this copy (see S1): the maximality of [0.3, 0.5] needs their formulas",
-    )
-}
-
 /// The implication from the basis symmetry is exact; its premise needs the
 /// lost formulas.
 fn s7() -> Verdict {
@@ -364,12 +316,6 @@ fn s8() -> Verdict {
         "A = Σ∫H_i² ≥ 0: for A > 0 the quadratic is convex, so its minimum on [0.3, 0.5] is the extreme point when it lies inside and the nearer end otherwise — the printed cases (i)/(ii) are right (in (ii) the comparison with F(0.3) and F(0.5) is redundant); their comparison signs are lost in this copy",
     );
     v
-}
-
-fn s9() -> Verdict {
-    Verdict::not_checkable(
-        "equation (10) is missing from this copy (only \"… rewritten as,\" remains, and the control points it uses are lost with the basis): whether a = b gives a circle and a ≠ b an ellipse cannot be checked",
-    )
 }
 
 /// The EH basis is polynomial in t: the circle is not in its span, and no
@@ -451,12 +397,6 @@ fn eh_cylinder(lambda: Rational, mu: Rational) -> TensorSurface<Family> {
     let text = circle("0") + &circle("1") + height + height;
     let net = ControlNet::parse(&text, "the EH cylinder net").expect("a 4 × 4 net");
     TensorSurface::new(direction(), direction(), net).expect("a 4 × 4 net for the EH bases")
-}
-
-fn e20() -> Verdict {
-    Verdict::not_checkable(
-        "the paper prints no approximation error, test function, norm or comparison table: \"approximate better\" depends on the function, the data, the parameters and the norm, none of which is given",
-    )
 }
 
 /// The printed product of two points read as the net point

@@ -3,24 +3,20 @@
 //! the rational basis (Theorems 5, 6).
 
 use rug::Rational;
-use trig_core::families::seed000::{blending, s_of_xi, uniform_normaliser};
+use trig_core::Family;
+use trig_core::families::seed000::uniform_normaliser;
 use trig_core::families::seed000_nonuniform::NonUniform;
-use trig_core::{Family, Ring};
 use trig_symbolic::Sym;
 
 use super::seed000_appendix_c::{NONUNIFORM_J, nonuniform_knots};
 use crate::claim::Claim;
 use trig_certify::ParamBox;
 use trig_judge::certificate::nonnegative_on;
-use trig_judge::exact::{IDENTITY, basis, identities, residual_verdict, sum};
+use trig_judge::exact::{IDENTITY, basis, residual_verdict, sum};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[
-    Claim {
-        id: "M1",
-        check: m1,
-    },
     Claim {
         id: "M2",
         check: m2,
@@ -33,81 +29,10 @@ pub const CLAIMS: &[Claim] = &[
         id: "M3b",
         check: m3b,
     },
-    Claim {
-        id: "M6",
-        check: m6,
-    },
 ];
 
 fn zeta() -> Sym {
     Sym::var("zeta")
-}
-
-fn m1() -> Verdict {
-    let (s, c, z) = (Sym::var("s"), Sym::var("c"), zeta());
-    let k = s_of_xi(&z);
-    let one = Sym::one();
-    let l = blending(&s, &c, &z);
-    let total = sum(&l);
-    let d = uniform_normaliser(&z);
-    // Each l_k expanded as printed: S ∓ (1 + 2S)x + (2 + S)x² ∓ x³ with x = sin or cos.
-    let expanded = |x: &Sym, sign: i64| {
-        let sg = Sym::int(sign);
-        k.clone()
-            + &(sg.clone() * &(one.clone() + &(Sym::int(2) * &k)) * x)
-            + &((Sym::int(2) + &k) * &x.square())
-            + &(sg * &x.powi(3))
-    };
-    let z2 = z.square();
-    let printed_step =
-        Sym::int(4) * &z2 - &(Sym::int(4) * &z) + &Sym::int(8) + &(Sym::int(2) * &z2) - &z
-            + &Sym::int(2);
-    let corrected_step = printed_step.clone() - &z;
-    let mut parts = vec![
-        (
-            "(A1) Σ_k F_k − 1".to_string(),
-            sum(&basis(Family::Seed000Uniform)),
-            one.clone(),
-        ),
-        ("expansion of l0".into(), expanded(&s, -1), l[0].clone()),
-        ("expansion of l1".into(), expanded(&c, 1), l[1].clone()),
-        ("expansion of l2".into(), expanded(&s, 1), l[2].clone()),
-        ("expansion of l3".into(), expanded(&c, -1), l[3].clone()),
-        (
-            "[4(ζ²−ζ+1) + (2+ζ²−ζ+1) + (2+ζ²−ζ+1)] − Σ l_k".into(),
-            Sym::int(4) * &k + &(Sym::int(2) * &(Sym::int(2) + &k)),
-            total.clone(),
-        ),
-        (
-            "[4ζ² − 4ζ + 4 + 4 + 2ζ² − ζ + 2] − Σ l_k".into(),
-            printed_step,
-            total.clone(),
-        ),
-        ("[6ζ² − 6ζ + 10] − Σ l_k".into(), d, total.clone()),
-    ];
-    let v = identities(parts.clone());
-    if v.status == Status::Holds {
-        return v;
-    }
-    parts[6] = (
-        "corrected step [4ζ² − 4ζ + 4 + 4 + 2ζ² − 2ζ + 2] − Σ l_k".into(),
-        corrected_step,
-        total,
-    );
-    let corrected = identities(parts);
-    if corrected.status != Status::Holds {
-        return v;
-    }
-    let mut evidence = v.evidence;
-    evidence.extend(
-        corrected
-            .evidence
-            .into_iter()
-            .filter(|e| e.line().starts_with("corrected")),
-    );
-    Verdict::new(Status::HoldsAfterCorrection, IDENTITY, evidence).with_correction(
-        "the theorem holds; in the proof's step \"4ζ² − 4ζ + 4 + 4 + 2ζ² − ζ + 2\" the term −ζ must be −2ζ (2(2 + ζ² − ζ + 1) = 2ζ² − 2ζ + 6)",
-    )
 }
 
 /// Σ of the four segment functions of (5) on span `j` minus 1, exactly, or
@@ -209,27 +134,6 @@ fn m3b() -> Verdict {
     v.evidence.insert(
         0,
         "uniform knots n_i = i (unit spacing; q_j = q_{j−1} = q_{j−2} as the paper states), span j = 10; Appendix A uses F0 = l0/D, F1 = l1/D, F2 = l2/D, F3 = l3/D with D = 6ζ² − 6ζ + 10",
-    );
-    v
-}
-
-fn m6() -> Verdict {
-    let f = basis(Family::Seed000Uniform);
-    let w: Vec<Sym> = (0..4).map(|i| Sym::var(&format!("w{i}"))).collect();
-    let weighted: Vec<Sym> = f.iter().zip(&w).map(|(fi, wi)| fi.clone() * wi).collect();
-    let den = sum(&weighted);
-    let q: Vec<Sym> = weighted.iter().map(|x| x.clone() / &den).collect();
-    let one = Sym::one();
-    let mut parts: Vec<(String, Sym, Sym)> = (0..4)
-        .map(|j| {
-            let qj = (0..4).fold(q[j].clone(), |acc, i| acc.subs(&format!("w{i}"), &one));
-            (format!("Q{j}(w = 1) − F{j}"), qj, f[j].clone())
-        })
-        .collect();
-    parts.push(("Σ Q_j − 1 (symbolic weights)".into(), sum(&q), one));
-    let mut v = identities(parts);
-    v.evidence.push(
-        "uniform case (Appendix A basis F_j = l_j/(6ζ² − 6ζ + 10)), weights as symbols w0…w3",
     );
     v
 }

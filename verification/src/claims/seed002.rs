@@ -7,99 +7,27 @@ use trig_deriv::{End, Wrt, curve_endpoint_derivatives};
 use trig_symbolic::{Poly, Sym};
 
 use crate::claim::Claim;
-use trig_certify::ParamBox;
-use trig_judge::certificate::nonnegative_on;
 use trig_judge::exact::{
-    IDENTITY, basis, combination, identities, identity, linear_map_parts, reflect, sum, symbols,
+    IDENTITY, basis, combination, identities, identity, reflect, sum, symbols,
 };
-use trig_judge::maxima::exactly_one_maximum;
-use trig_judge::symmetry::reflection_symmetry;
 use trig_verdict::evidence::EvidenceList;
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[
     Claim {
-        id: "D1",
-        check: d1,
-    },
-    Claim {
-        id: "D1b",
-        check: d1b,
-    },
-    Claim {
-        id: "D2",
-        check: d2,
-    },
-    Claim {
-        id: "D3",
-        check: d3,
-    },
-    Claim {
-        id: "D4",
-        check: d4,
-    },
-    Claim {
-        id: "D5",
-        check: d5,
-    },
-    Claim {
-        id: "D6",
-        check: d6,
-    },
-    Claim {
-        id: "D6b",
-        check: d6b,
-    },
-    Claim {
         id: "D7",
         check: d7,
-    },
-    Claim {
-        id: "D9",
-        check: d9,
-    },
-    Claim {
-        id: "D9b",
-        check: d9b,
     },
     Claim {
         id: "D10",
         check: d10,
     },
     Claim {
-        id: "D10b",
-        check: d10b,
-    },
-    Claim {
         id: "D11",
         check: d11,
     },
-    Claim {
-        id: "D12",
-        check: d12,
-    },
 ];
-
-fn d1() -> Verdict {
-    identity(
-        "Σ b_i = 0",
-        &sum(&basis(Family::Seed002Quartic)),
-        &Sym::zero(),
-    )
-}
-
-fn d1b() -> Verdict {
-    identity(
-        "Σ b_i − 1",
-        &sum(&basis(Family::Seed002Quartic)),
-        &Sym::one(),
-    )
-}
-
-fn d3() -> Verdict {
-    reflection_symmetry(&Family::Seed002Quartic, 0..3)
-}
 
 /// `R, R', R''` (in θ) of the rational curve at `θ = 0` and `θ = π/2`, with
 /// control points `P0…P5` and weights `w0…w5` as symbols.
@@ -118,53 +46,6 @@ pub(super) fn rational_ends(p: &[Sym], w: &[Sym]) -> (Vec<Sym>, Vec<Sym>) {
     (at(End::Start), at(End::End))
 }
 
-fn d5() -> Verdict {
-    let p: Vec<Sym> = symbols("P", 6);
-    let w: Vec<Sym> = symbols("w", 6);
-    let (r0, r1) = rational_ends(&p, &w);
-    let n = |k: i64| Sym::int(k);
-    let printed_r2_0 = ((n(32) * &w[1].square() - &(n(8) * &w[0] * &w[1]))
-        * &(p[0].clone() - &p[1])
-        - &(n(12) * &w[0] * &w[2] * &(p[0].clone() - &p[2])))
-        / &w[0].square();
-    let printed_r2_1 = ((n(32) * &w[4].square() - &(n(8) * &w[4] * &w[5]))
-        * &(p[5].clone() - &p[4])
-        - &(n(12) * &w[3] * &w[5] * &(p[5].clone() - &p[3])))
-        / &w[5].square();
-    identities(vec![
-        ("R(0) − P0".into(), r0[0].clone(), p[0].clone()),
-        ("R(π/2) − P5".into(), r1[0].clone(), p[5].clone()),
-        (
-            "R'(0) − 4(w1/w0)(P1 − P0)".into(),
-            r0[1].clone(),
-            n(4) * &w[1] / &w[0] * &(p[1].clone() - &p[0]),
-        ),
-        (
-            "R'(π/2) − 4(w4/w5)(P5 − P4)".into(),
-            r1[1].clone(),
-            n(4) * &w[4] / &w[5] * &(p[5].clone() - &p[4]),
-        ),
-        ("R''(0) − printed".into(), r0[2].clone(), printed_r2_0),
-        ("R''(π/2) − printed".into(), r1[2].clone(), printed_r2_1),
-    ])
-}
-
-fn d12() -> Verdict {
-    Verdict::not_checkable(
-        "the functions Tb_i(t, α1, α2) of (5) are unreadable in our copy (the printed fraction is garbled: \"T_0(tα1,α2) = 1/Σ_{i=0, i=1, i=1, i=0 …}\"), so their sum cannot be formed",
-    )
-}
-
-fn d2() -> Verdict {
-    let zero = rug::Rational::new();
-    nonnegative_on(
-        &Family::Seed002Quartic,
-        &basis(Family::Seed002Quartic),
-        None,
-        &ParamBox::closed(zero.clone(), zero),
-    )
-}
-
 /// `Σ w_i b_i P_i / Σ w_i b_i` at the symbolic atoms.
 fn rational_curve(points: &[Sym], weights: &[Sym]) -> Sym {
     let b = basis(Family::Seed002Quartic);
@@ -174,30 +55,6 @@ fn rational_curve(points: &[Sym], weights: &[Sym]) -> Sym {
         .map(|(bi, wi)| bi.clone() * wi)
         .collect();
     combination(&wb, points) / &sum(&wb)
-}
-
-fn d9_with(reverse_weights: bool) -> Verdict {
-    let p: Vec<Sym> = symbols("P", 6);
-    let w: Vec<Sym> = symbols("w", 6);
-    let rp: Vec<Sym> = p.iter().rev().cloned().collect();
-    let rw: Vec<Sym> = if reverse_weights {
-        w.iter().rev().cloned().collect()
-    } else {
-        w.clone()
-    };
-    identities(vec![(
-        "R(π/2 − t; reversed) − R(t)".into(),
-        reflect(&rational_curve(&rp, &rw), true),
-        rational_curve(&p, &w),
-    )])
-}
-
-fn d9() -> Verdict {
-    d9_with(false)
-}
-
-fn d9b() -> Verdict {
-    d9_with(true)
 }
 
 /// The print as it stands: the first equation cannot be read; the second,
@@ -227,94 +84,6 @@ fn d10() -> Verdict {
             ("second equation, as printed".into(), second),
         ],
     )
-}
-
-/// The reading: invariance under translation and under linear maps.
-fn d10b() -> Verdict {
-    let p: Vec<Sym> = symbols("P", 6);
-    let w: Vec<Sym> = symbols("w", 6);
-    let q = Sym::var("q");
-    let shifted: Vec<Sym> = p.iter().map(|x| x.clone() + &q).collect();
-    let mut parts = vec![(
-        "R(P_i + q) − (R(P_i) + q)".to_string(),
-        rational_curve(&shifted, &w),
-        rational_curve(&p, &w) + &q,
-    )];
-    parts.extend(linear_map_parts("R", 6, |pts| rational_curve(pts, &w)));
-    identities(parts)
-}
-
-/// Each `b_i` has exactly one maximum on `[0, π/2]`: certified count of the
-/// sign changes of `b_i'`.
-fn d4() -> Verdict {
-    exactly_one_maximum(&Family::Seed002Quartic, &basis(Family::Seed002Quartic))
-}
-
-/// The six left-hand sides of (3) against the curve's own derivatives: as
-/// printed, or (`reading`) with the typos of D6b corrected.
-fn d6_parts(reading: bool) -> Vec<(String, Sym, Sym)> {
-    let p: Vec<Sym> = symbols("P", 6);
-    let w: Vec<Sym> = symbols("w", 6);
-    let (r0, r1) = rational_ends(&p, &w);
-    let n = |k: i64| Sym::int(k);
-    let k = n(if reading { 32 } else { 3 });
-    let (den_end, w35) = if reading {
-        (w[5].square(), w[3].clone() * &w[5])
-    } else {
-        (w[0].square(), w[3].clone() * &w[3])
-    };
-    let r2_0 = ((k.clone() * &w[1].square() - &(n(8) * &w[0] * &w[1]) - &(n(12) * &w[0] * &w[2]))
-        * &p[0]
-        + &((n(8) * &w[0] * &w[1] - &(n(32) * &w[1].square())) * &p[1])
-        + &(n(12) * &w[0] * &w[2] * &p[2]))
-        / &w[0].square();
-    let r2_1 = (n(12) * &w35 * &p[3]
-        + &((n(8) * &w[4] * &w[5] - &(n(32) * &w[4].square())) * &p[4])
-        + &((k * &w[4].square() - &(n(8) * &w[4] * &w[5]) - &(n(12) * &w35)) * &p[5]))
-        / &den_end;
-    let last = if reading {
-        ("R(π/2) − P5".to_string(), r1[0].clone(), p[5].clone())
-    } else {
-        (
-            "R''(π/2) − P5 (\"R''_2 = P5\" as printed)".to_string(),
-            r1[2].clone(),
-            p[5].clone(),
-        )
-    };
-    let label = if reading { "reading" } else { "printed" };
-    vec![
-        ("R(0) − P0".into(), r0[0].clone(), p[0].clone()),
-        (
-            "R'(0) − 4(w1/w0)(P1 − P0)".into(),
-            r0[1].clone(),
-            n(4) * &w[1] / &w[0] * &(p[1].clone() - &p[0]),
-        ),
-        (format!("R''(0) − {label}"), r0[2].clone(), r2_0),
-        (format!("R''(π/2) − {label}"), r1[2].clone(), r2_1),
-        (
-            "R'(π/2) − (4w4/w5)(P5 − P4)".into(),
-            r1[1].clone(),
-            n(4) * &w[4] / &w[5] * &(p[5].clone() - &p[4]),
-        ),
-        last,
-    ]
-}
-
-const DESIGN: &str = "the right-hand sides V1, α1(V2 − V0), α1(V0 − 2V1 + V2), α2(V1 − 2V2 + V3), α2(V3 − V1), V2 are design conditions that define P0…P5 (solvable for w_i > 0: each new P enters with a nonzero coefficient), not identities; the left-hand sides are checked against the curve (2)";
-
-fn d6() -> Verdict {
-    let mut v = identities(d6_parts(false));
-    v.evidence.push(DESIGN);
-    if v.status == Status::Fails {
-        v = v.with_correction("see D6b: 3w1² → 32w1², 3w4² → 32w4², 1/w0² → 1/w5² and w3w3 → w3w5 in R''(π/2), R''_2 → R(π/2)");
-    }
-    v
-}
-
-fn d6b() -> Verdict {
-    let mut v = identities(d6_parts(true));
-    v.evidence.push(DESIGN);
-    v
 }
 
 /// The knot relations (8) for `k = 0, 1, 2` follow from the end conditions

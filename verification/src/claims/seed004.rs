@@ -2,85 +2,25 @@
 //! bases with shape parameters λ, μ; the EH curve's terminal properties and
 //! rewritten form.
 
-use trig_core::{Family, Ring};
-use trig_deriv::{End, Wrt, curve_endpoint_derivatives, endpoint_derivatives};
+use trig_core::Family;
 use trig_symbolic::Sym;
 
 use crate::claim::Claim;
-use trig_judge::certificate::{nonnegative_on, nonnegative_on_box};
+use trig_judge::certificate::nonnegative_on;
 
 use trig_certify::ParamBox;
-use trig_judge::exact::{
-    IDENTITY, basis, combination, identities, identity, linear_map_parts, reflect, sum, symbols,
-};
-use trig_judge::symmetry::reflection_symmetry;
+use trig_judge::exact::{IDENTITY, basis, combination, identities, sum, symbols};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[
     Claim {
-        id: "E1",
-        check: e1,
-    },
-    Claim {
-        id: "E1b",
-        check: e1b,
-    },
-    Claim {
-        id: "E2",
-        check: e2,
-    },
-    Claim {
-        id: "E3",
-        check: e3,
-    },
-    Claim {
-        id: "E3b",
-        check: e3b,
-    },
-    Claim {
-        id: "E4",
-        check: e4,
-    },
-    Claim {
-        id: "E5",
-        check: e5,
-    },
-    Claim {
-        id: "E6",
-        check: e6,
-    },
-    Claim {
-        id: "E7",
-        check: e7,
-    },
-    Claim {
-        id: "E8",
-        check: e8,
-    },
-    Claim {
-        id: "E9",
-        check: e9,
-    },
-    Claim {
         id: "E10",
         check: e10,
     },
     Claim {
-        id: "E11",
-        check: e11,
-    },
-    Claim {
-        id: "E11b",
-        check: e11b,
-    },
-    Claim {
         id: "E12",
         check: e12,
-    },
-    Claim {
-        id: "E13",
-        check: e13,
     },
     Claim {
         id: "E1c",
@@ -92,10 +32,6 @@ pub const CLAIMS: &[Claim] = &[
     },
 ];
 
-fn n(k: i64) -> Sym {
-    Sym::int(k)
-}
-
 /// The EH bases at `λ = μ = v`.
 fn eh_at(v: i64) -> Vec<Sym> {
     let x = Sym::int(v);
@@ -103,217 +39,6 @@ fn eh_at(v: i64) -> Vec<Sym> {
         .iter()
         .map(|b| b.subs("lambda", &x).subs("mu", &x))
         .collect()
-}
-
-/// The terminal pattern printed for both the Hermite bases (section II) and
-/// the EH bases (III(i) (a)): values `(1,0), (0,1), (0,0), (0,0)` and first
-/// derivatives `(0,0), (0,0), (1,0), (0,1)` at `t = 0, 1`, for functions
-/// named `names`, parameters as symbols.
-fn terminal_parts(family: Family, names: [&str; 4]) -> Vec<(String, Sym, Sym)> {
-    let params = trig_judge::exact::params(family);
-    let d = |end| endpoint_derivatives::<Sym, 2>(family, &params, end, Wrt::Angle, &Sym::one());
-    let (d0, d1) = (d(End::Start), d(End::End));
-    let mut parts = Vec::new();
-    let mut value = |f: usize, end: &Vec<Vec<Sym>>, at: &str, order: usize, want: i64| {
-        let prime = if order == 1 { "'" } else { "" };
-        parts.push((
-            format!("{}{prime}({at}) = {want}", names[f]),
-            end[f][order].clone(),
-            n(want),
-        ));
-    };
-    for (f, v0, v1) in [(0, 1, 0), (1, 0, 1), (2, 0, 0), (3, 0, 0)] {
-        value(f, &d0, "0", 0, v0);
-        value(f, &d1, "1", 0, v1);
-    }
-    for (f, v0, v1) in [(0, 0, 0), (1, 0, 0), (2, 1, 0), (3, 0, 1)] {
-        value(f, &d0, "0", 1, v0);
-        value(f, &d1, "1", 1, v1);
-    }
-    parts
-}
-
-const HERMITE: [&str; 4] = ["α0", "α1", "β0", "β1"];
-
-fn hermite_parts() -> Vec<(String, Sym, Sym)> {
-    let h = basis(Family::Hermite);
-    let mut parts = terminal_parts(Family::Hermite, HERMITE);
-    parts.push(("α0 + α1 = 1".into(), h[0].clone() + &h[1], Sym::one()));
-    parts
-}
-
-fn e1() -> Verdict {
-    let h = basis(Family::Hermite);
-    let mut parts = hermite_parts();
-    parts.push((
-        "β0(t) + β0(1 − t) = 0".into(),
-        h[2].clone() + &reflect(&h[2], false),
-        Sym::zero(),
-    ));
-    identities(parts)
-}
-
-fn e1b() -> Verdict {
-    let h = basis(Family::Hermite);
-    identities(vec![(
-        "β0(t) + β1(1 − t) = 0".into(),
-        h[2].clone() + &reflect(&h[3], false),
-        Sym::zero(),
-    )])
-}
-
-fn e3() -> Verdict {
-    let b = basis(Family::Eh);
-    identities(vec![
-        ("b0 + b1 − 1".into(), b[0].clone() + &b[1], Sym::one()),
-        (
-            "b2(t) + b3(1 − t) − 1".into(),
-            b[2].clone() + &reflect(&b[3], false),
-            Sym::one(),
-        ),
-    ])
-}
-
-fn e3b() -> Verdict {
-    let b = basis(Family::Eh);
-    identity(
-        "b2(t) + b3(1 − t)",
-        &(b[2].clone() + &reflect(&b[3], false)),
-        &Sym::zero(),
-    )
-}
-
-fn e5() -> Verdict {
-    reflection_symmetry(&Family::Eh, 0..4)
-}
-
-fn e6() -> Verdict {
-    identities(vec![(
-        "Σ b_i − 1".into(),
-        sum(&basis(Family::Eh)),
-        Sym::one(),
-    )])
-}
-
-fn e8() -> Verdict {
-    let eh = eh_at(0);
-    let h = basis(Family::Hermite);
-    let names = HERMITE;
-    let mut v = identities(
-        (0..4)
-            .map(|i| {
-                (
-                    format!("b{i}(λ = μ = 0) − {}", names[i]),
-                    eh[i].clone(),
-                    h[i].clone(),
-                )
-            })
-            .collect(),
-    );
-    v.evidence.push(
-        "the second sentence (λ = μ gives the single-parameter bases of its reference [20]) cites a basis not printed in the paper and is not checked",
-    );
-    v
-}
-
-/// `R''` at both ends as printed, and with the μ-terms' indices shifted down
-/// by one (P3 → P2, P4 → P3).
-fn e9() -> Verdict {
-    let p: Vec<Sym> = symbols("P", 5);
-    let (lambda, mu) = (Sym::var("lambda"), Sym::var("mu"));
-    let params = [lambda.clone(), mu.clone()];
-    let at = |end| {
-        curve_endpoint_derivatives::<Sym, 3>(
-            Family::Eh,
-            &params,
-            &p[..4],
-            None,
-            end,
-            Wrt::Angle,
-            &Sym::one(),
-        )
-    };
-    let (r0, r1) = (at(End::Start), at(End::End));
-    let r2 = |a: usize, b: usize| {
-        let left = (n(2) * &lambda - &n(6)) * &(p[0].clone() - &p[1])
-            + &(n(2) * &mu * &(p[a].clone() - &p[b]))
-            - &(n(2) * &(n(2) * &p[a] + &p[b]));
-        let right = (n(2) * &lambda + &n(6)) * &(p[0].clone() - &p[1])
-            + &(n(2) * &mu * &(p[a].clone() - &p[b]))
-            + &(n(2) * &(p[a].clone() + &(n(2) * &p[b])));
-        (left, right)
-    };
-    let common = |r2: (Sym, Sym), label: &str| {
-        vec![
-            ("R(0) − P0".to_string(), r0[0].clone(), p[0].clone()),
-            ("R(1) − P1".into(), r1[0].clone(), p[1].clone()),
-            ("R'(0) − P2".into(), r0[1].clone(), p[2].clone()),
-            ("R'(1) − P3".into(), r1[1].clone(), p[3].clone()),
-            (format!("R''(0) − {label}"), r0[2].clone(), r2.0),
-            (format!("R''(1) − {label}"), r1[2].clone(), r2.1),
-        ]
-    };
-    let printed = identities(common(r2(3, 4), "printed"));
-    if printed.status == Status::Holds {
-        return printed;
-    }
-    let shifted = identities(common(r2(2, 3), "printed with P3, P4 → P2, P3"));
-    if shifted.status != Status::Holds {
-        return printed;
-    }
-    let mut evidence = printed.evidence;
-    evidence.extend(shifted.evidence.into_iter().filter(|e| e.contains("→")));
-    evidence.push("the segment has only P0…P3; the printed R'' formulas use P4");
-    Verdict::new(Status::HoldsAfterCorrection, IDENTITY, evidence).with_correction(
-        "index shift in both R'' formulas: 2μ(P2 − P3) − 2(2P2 + P3) and 2μ(P2 − P3) + 2(P2 + 2P3)",
-    )
-}
-
-fn e13() -> Verdict {
-    let p: Vec<Sym> = symbols("P", 4);
-    let b = basis(Family::Eh);
-    let c = basis(Family::Hermite);
-    let t = Sym::var("t");
-    let bump = t.square() * &(Sym::one() + &t.square() - &(n(2) * &t));
-    let curve = combination(&b, &p);
-    let rewritten = combination(&c, &p)
-        + &(Sym::var("lambda") * &bump * &(p[0].clone() - &p[1]))
-        + &(Sym::var("mu") * &bump * &(p[2].clone() - &p[3]));
-    identities(vec![("Σ b_j P_j − (4)".into(), curve, rewritten)])
-}
-
-/// Every function on the published box `λ, μ ∈ [−1, 1]` (III(ii) (b)–(c)),
-/// certified with tensor Bernstein boxes in `(t, λ, μ)`.
-fn e4() -> Verdict {
-    let one = rug::Rational::from(1);
-    let unit = ParamBox::closed(-one.clone(), one);
-    nonnegative_on_box(
-        &Family::Eh,
-        &basis(Family::Eh),
-        &[("lambda", unit.clone()), ("mu", unit)],
-    )
-}
-
-fn e2() -> Verdict {
-    identities(terminal_parts(Family::Eh, ["b0", "b1", "b2", "b3"]))
-}
-
-/// A maximum of `b_i` at an interior `t = i/3` needs `b_i'(i/3) = 0`: tested
-/// exactly for `i = 1, 2` (the end cases `i = 0, 3` are not tested).
-fn e7() -> Verdict {
-    let b = basis(Family::Eh);
-    let third = |k: i64| Sym::rational(rug::Rational::from((k, 3)));
-    let parts = (1..3)
-        .zip(&b[1..3])
-        .map(|(i, bi)| {
-            (
-                format!("b{i}'({i}/3) = 0"),
-                bi.d_t().subs("t", &third(i)),
-                Sym::zero(),
-            )
-        })
-        .collect();
-    identities(parts)
 }
 
 /// `Σ b_i(t; λ, μ) P_i` with symbolic control points.
@@ -339,34 +64,6 @@ fn e10() -> Verdict {
         eh_curve(&p, &l, &m, &t),
         eh_curve(&reversed, &m, &l, &(Sym::one() - &t)),
     )])
-}
-
-fn e11() -> Verdict {
-    let p: Vec<Sym> = symbols("P", 4);
-    let q = Sym::var("q");
-    let shifted: Vec<Sym> = p.iter().map(|pi| pi.clone() + &q).collect();
-    let (l, m, t) = (Sym::var("lambda"), Sym::var("mu"), Sym::var("t"));
-    let mut parts = vec![(
-        "T(P_i + q) − (T(P_i) + q)".to_string(),
-        eh_curve(&shifted, &l, &m, &t),
-        eh_curve(&p, &l, &m, &t) + &q,
-    )];
-    parts.extend(eh_linear_map());
-    let mut v = identities(parts);
-    v.evidence.push("translation invariance needs Σ b_i = 1, which fails (E6); linear invariance holds for any basis (E11b)");
-    v
-}
-
-/// `T(P_i M) = T(P_i) M` for plane control points and a 2 × 2 matrix (a
-/// d × d matrix acts on each output coordinate through the same row
-/// combination, so d = 2 shows every case).
-fn eh_linear_map() -> Vec<(String, Sym, Sym)> {
-    let (l, m, t) = (Sym::var("lambda"), Sym::var("mu"), Sym::var("t"));
-    linear_map_parts("T", 4, |p| eh_curve(p, &l, &m, &t))
-}
-
-fn e11b() -> Verdict {
-    identities(eh_linear_map())
 }
 
 fn e12() -> Verdict {

@@ -541,6 +541,14 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
             trig_judge::interpolant::nonnegative(spec, data, *scheme)
         }
         Check::TableArithmetic { text, .. } => trig_judge::table_arithmetic::decide(text),
+        Check::OneMaximum => {
+            trig_judge::maxima::exactly_one_maximum(spec, &trig_judge::exact::basis_of(spec))
+        }
+        Check::Identity {
+            identities,
+            curve,
+            readings,
+        } => trig_judge::identity::printed_identities(spec, identities, curve.as_ref(), readings),
         Check::LocalControl { varied, segments } => {
             let control = match varied {
                 Varied::Point => Control::Point,
