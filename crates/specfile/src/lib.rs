@@ -55,7 +55,7 @@ pub use any::{AnyBasis, OpenError};
 pub use ast::Grammar;
 pub use check::{Between, Fixed, Given};
 pub use check::{Check, Condition, Direction, Monotone, Printed, Quantifier, SpecClaim, Varied};
-pub use document::{DocumentClaim, DocumentFile};
+pub use document::{DocumentClaim, DocumentFile, Part};
 pub use error::{FormulaError, Location, SpecError};
 pub use exact_range::{ExactEnd, ExactRange};
 pub use expression::Expression;
