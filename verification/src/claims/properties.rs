@@ -10,12 +10,20 @@ use trig_symbolic::Sym;
 use super::properties_formulas::{e19, e23, m21, t45, t63};
 use crate::claim::Claim;
 use trig_judge::exact::IDENTITY;
-use trig_judge::{endpoint, nonnegative, unity};
+use trig_judge::{endpoint, nonnegative, span, unity};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
 /// In report order (after each document's first-list claims).
 pub const CLAIMS: &[Claim] = &[
+    Claim {
+        id: "T40",
+        check: t40,
+    },
+    Claim {
+        id: "S3",
+        check: s3,
+    },
     Claim {
         id: "T43",
         check: t43,
@@ -267,6 +275,42 @@ fn m23() -> Verdict {
             ("F_j(ζ) = F_j(1 − ζ)".into(), symmetric),
             ("exceptions of the knot continuity in pairs".into(), pairs),
         ],
+    )
+}
+
+/// A claim that a basis cannot trace a curve, decided by the span judge:
+/// refuted by the control points that trace it.
+fn cannot_trace(family: Family, curve: &str, targets: &[(&str, Sym)], why: &str) -> Verdict {
+    let mut v = span::reproduces(&family, curve, targets);
+    v.status = match v.status {
+        Status::Holds => Status::Fails,
+        Status::Fails => Status::Holds,
+        other => other,
+    };
+    v.evidence.insert(0, why.to_string());
+    v
+}
+
+/// The parabola `(t, t²)`, a conic, is a polynomial curve: the cubic
+/// Bernstein basis traces it.
+fn t40() -> Verdict {
+    let t = Sym::var("t");
+    cannot_trace(
+        Family::Bernstein3,
+        "parabola arc (t, t²), t ∈ [0, 1]",
+        &[("x", t.clone()), ("y", t.clone() * &t)],
+        "a parabola, a conic, is a polynomial curve: traced by the cubic Bézier basis",
+    )
+}
+
+/// The parabola `(t, t²)` is traced by the uniform cubic B-spline segment.
+fn s3() -> Verdict {
+    let t = Sym::var("t");
+    cannot_trace(
+        Family::BSpline3,
+        "parabola arc (t, t²), t ∈ [0, 1]",
+        &[("x", t.clone()), ("y", t.clone() * &t)],
+        "a parabola is a polynomial curve (refutes the parabola part; no ellipse arc is polynomial)",
     )
 }
 

@@ -5,25 +5,24 @@
 use rug::Rational;
 use trig_core::families::thesis::{surface_matrix_a, surface_row_t};
 use trig_core::{Family, Variable};
-use trig_deriv::End;
 use trig_symbolic::Sym;
 
 use crate::claim::Claim;
 use trig_certify::ParamBox;
 use trig_judge::certificate::nonnegative_on;
-use trig_judge::exact::{at_end, basis, combination, identities, residual_verdict, sum, symbols};
+use trig_judge::exact::{basis, identities, residual_verdict, sum, symbols};
 use trig_verdict::evidence::Evidence;
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[
     Claim {
-        id: "T5",
-        check: t5,
+        id: "T31",
+        check: t31,
     },
     Claim {
-        id: "T5b",
-        check: t5b,
+        id: "T27",
+        check: t27,
     },
     Claim {
         id: "T25",
@@ -38,62 +37,13 @@ pub const CLAIMS: &[Claim] = &[
         check: t30,
     },
     Claim {
-        id: "T31",
-        check: t31,
-    },
-    Claim {
         id: "T37",
         check: t37,
-    },
-    Claim {
-        id: "T38",
-        check: t38,
     },
 ];
 
 fn points(n: usize) -> Vec<Sym> {
     symbols("P", n)
-}
-
-/// `Σ b_i P_i` with symbolic control points.
-fn curve(b: &[Sym]) -> Sym {
-    combination(b, &points(b.len()))
-}
-
-fn quadratic_curve_ends() -> (Sym, Sym) {
-    let f = curve(&basis(Family::ThesisQuadratic));
-    (at_end(&f, End::Start), at_end(&f, End::End))
-}
-
-fn t5() -> Verdict {
-    let (f0, f1) = quadratic_curve_ends();
-    let k = Sym::one() / &(Sym::var("beta") + &Sym::one());
-    let [p0, p1, p2]: [Sym; 3] = points(3).try_into().expect("three points");
-    identities(vec![
-        (
-            "F(0) − P0 = (P1 − P0)/(β+1)".into(),
-            f0 - &p0,
-            (p1.clone() - &p0) * &k,
-        ),
-        (
-            "F(1) − P2 = (P1 − P2)/(β+1)".into(),
-            f1 - &p2,
-            (p1 - &p2) * &k,
-        ),
-    ])
-}
-
-fn t5b() -> Verdict {
-    let (f0, f1) = quadratic_curve_ends();
-    let [p0, _, p2]: [Sym; 3] = points(3).try_into().expect("three points");
-    let mut v = identities(vec![
-        ("F(0) = P0".into(), f0, p0),
-        ("F(1) = P2".into(), f1, p2),
-    ]);
-    v.evidence.push(
-        "the residuals are (P1 − P0)/(β+1) and (P1 − P2)/(β+1): nonzero for every finite β ≥ 0 unless P1 coincides with the end point; e.g. β = 1, P0 = (0,0), P1 = (1.5,1.5) (3.2.3) gives F(0) = (0.75, 0.75)",
-    );
-    v
 }
 
 fn t25() -> Verdict {
@@ -197,23 +147,35 @@ fn t37() -> Verdict {
     Verdict::new(status, trig_judge::exact::IDENTITY, evidence)
 }
 
-fn t38() -> Verdict {
-    let (f0, f1) = quadratic_curve_ends();
-    let one = Sym::one();
-    let [p0, p1, p2]: [Sym; 3] = points(3).try_into().expect("three points");
-    let half = Sym::rational(Rational::from((1, 2)));
-    identities(vec![
+fn t27() -> Verdict {
+    let residual = sum(&basis(Family::ThesisCubic)) - &Sym::one();
+    let (status, reading) = if residual.is_zero() {
         (
-            "F(0; β=1) − (P0 + P1)/2".into(),
-            f0.subs("beta", &one),
-            (p0 + &p1) * &half,
-        ),
-        (
-            "F(1; β=1) − (P1 + P2)/2".into(),
-            f1.subs("beta", &one),
-            (p1 + &p2) * &half,
-        ),
-    ])
+            Status::Fails,
+            "identically in m: the functions sum to 1 for every real m; outside [−2, 1] what can fail is nonnegativity, not normalisation",
+        )
+    } else {
+        (Status::Holds, "not identically zero in m")
+    };
+    // at a parameter outside the range, the sum is 1 at every point
+    let two = Rational::from(2);
+    let point = [
+        ("m".to_string(), two.clone()),
+        ("s".to_string(), Rational::from((3, 5))),
+        ("c".to_string(), Rational::from((4, 5))),
+    ];
+    let total = sum(&basis(Family::ThesisCubic));
+    let witness = trig_verdict::witness::of_exprs(
+        &point,
+        &["m".into(), "s".into(), "c".into()],
+        &[("Σ b_i (claimed ≠ 1)", &total)],
+    );
+    Verdict::new(
+        status,
+        trig_judge::exact::IDENTITY,
+        [Evidence::note(format!("Σ b_i − 1 = {residual}, {reading}"))
+            .witnessed(witness.filter(|_| status == Status::Fails))],
+    )
 }
 
 /// For (6.2) at λ = −1, −2: nonnegative and summing to 1 (so every curve
