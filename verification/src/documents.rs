@@ -7,7 +7,7 @@
 use std::path::{Path, PathBuf};
 
 use trig_specfile::document::{Header, read_set};
-use trig_specfile::{DocumentClaim, DocumentFile, Spec, SpecClaim, SpecError};
+use trig_specfile::{DocumentClaim, DocumentFile, Part, Spec, SpecClaim, SpecError};
 use trig_verdict::Verdict;
 
 use crate::claim::Claim;
@@ -56,6 +56,8 @@ pub fn document(header: &Header, order: usize) -> Document {
 /// What decides one claim.
 enum Decider<'a> {
     Stated(&'a Spec, &'a SpecClaim),
+    /// An umbrella over parts about the document's bases, with its notes.
+    Parts(Vec<(&'a Spec, &'a Part)>, &'a [String]),
     Rust(Claim),
 }
 
@@ -82,6 +84,10 @@ pub fn audit(
                 DocumentClaim::Stated { basis, claim } => {
                     Decider::Stated(&doc.bases[*basis].1, claim)
                 }
+                DocumentClaim::Parts { parts, notes, .. } => Decider::Parts(
+                    parts.iter().map(|p| (&doc.bases[p.basis].1, p)).collect(),
+                    notes,
+                ),
                 DocumentClaim::BuiltIn { id, .. } => {
                     Decider::Rust(*rust.iter().find(|r| r.id == id).ok_or_else(|| {
                         DocumentsError::NoChecker {
@@ -104,6 +110,7 @@ pub fn audit(
     }
     let verdicts = trig_core::parallel::map(&chosen, |(_, decider)| match decider {
         Decider::Stated(spec, claim) => crate::spec_audit::decide_in(spec, claim),
+        Decider::Parts(parts, notes) => crate::spec_audit::decide_parts(parts, notes),
         Decider::Rust(claim) => (claim.check)(),
     });
     Ok(chosen

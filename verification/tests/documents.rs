@@ -39,3 +39,39 @@ fn one_document_folder_audits_as_its_part_of_the_whole() {
         part.iter().map(strip).collect::<Vec<_>>()
     );
 }
+
+/// An umbrella of parts about several bases: each part decided on its own
+/// basis; a part shown for information keeps its verdict and never decides.
+#[test]
+fn an_umbrella_of_parts_is_decided_part_by_part() {
+    let catalog = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/catalog");
+    let umbrella = |shown: bool| {
+        let text = format!(
+            "[document]\nid = \"x\"\nheading = \"x\"\ntitle = \"t\"\nlocation = \"x.pdf\"\n\
+             [bases]\nhan = \"han.toml\"\nmq = \"majeed-qayyum.toml\"\n\
+             [[claims]]\nid = \"U\"\nsource = \"(1)\"\nstatement = \"s\"\ncheck = \"all\"\nnotes = [\"a remark\"]\n\
+             [[claims.parts]]\nid = \"a\"\nsource = \"(6.2)\"\nstatement = \"han: sum 1\"\nbasis = \"han\"\ncheck = \"unity\"\n\
+             [[claims.parts]]\nid = \"b\"\nsource = \"(6.1)\"\nstatement = \"mq: maximal\"\nbasis = \"mq\"\ncheck = \"nonnegative\"\nmaximal = true\nshown = {shown}\n"
+        );
+        let doc = trig_specfile::DocumentFile::from_str_in(&text, "x.toml", &catalog)
+            .expect("a document of parts");
+        audit(&[doc], None, None)
+            .expect("audited")
+            .remove(0)
+            .verdict
+    };
+    // (6.1) is nonnegative exactly on [−1, 2], wider than its printed (1/2, 2]
+    let counted = umbrella(false);
+    assert_eq!(counted.status, trig_verdict::status::Status::Fails);
+    let shown = umbrella(true);
+    assert_eq!(shown.status, trig_verdict::status::Status::Holds);
+    let lines: Vec<String> = shown.evidence.iter().map(|e| e.line()).collect();
+    assert!(lines[0].starts_with("han: sum 1: holds"), "{lines:?}");
+    assert!(
+        lines
+            .iter()
+            .any(|l| l.starts_with("mq: maximal (shown, not a condition of the claim): fails")),
+        "{lines:?}"
+    );
+    assert_eq!(lines.last().map(String::as_str), Some("a remark"));
+}

@@ -8,7 +8,7 @@ use trig_certify::{Bound, ParamBox, describe_z};
 use crate::exact::ExactBasis;
 use crate::exact::basis_of;
 use trig_certify::nonneg::{BoxCertificate, Certificate, certify, certify_box};
-use trig_certify::range::{EndPoint, MaximalRange, Outside, certify_all, maximal_range};
+use trig_certify::range::{EndPoint, MaximalRange, Outside, maximal_range};
 use trig_verdict::evidence::EvidenceList;
 use trig_verdict::evidence::{Evidence, Kind, Witness};
 use trig_verdict::status::Status;
@@ -455,24 +455,6 @@ fn end_status(found: &EndPoint, printed: &Bound, lower: bool) -> Status {
         },
         EndPoint::Undecided { .. } => Status::NotCheckable,
     }
-}
-
-/// Certifies a whole basis on its published parameter range (one
-/// parameter; open and infinite ends excluded exactly, see
-/// [`trig_certify::domain`]).
-pub fn on_published_range<B: ExactBasis>(basis: &B) -> Verdict {
-    let p = &basis.parameters()[0];
-    let bx = ParamBox::from_range(&p.range);
-    let trig = trigonometric(basis);
-    let cert = certify_all(&basis_of(basis), trig, &p.name, &bx);
-    let (status, line) = describe(
-        &format!("all functions, {} ∈ {}", p.symbol, p.range),
-        None,
-        &cert,
-        trig,
-        Some(&p.name),
-    );
-    Verdict::new(status, CERTIFIED, vec![line])
 }
 
 /// Monotonicity of function `index` of `basis` on its whole domain for

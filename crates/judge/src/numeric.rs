@@ -2,31 +2,12 @@
 //! symbolic ring (e.g. a reflection `u ↦ π/2 − u` of a variable that is not
 //! the angle).
 
-use rug::Rational;
-use trig_core::{Family, Mpfr, Real, Ring};
+use trig_core::{Mpfr, Real, Ring};
 
 use trig_verdict::evidence::{Assignment, Evidence, Expr, Kind, Value, Witness};
 
 /// Working precision of every counterexample.
 pub const PREC: u32 = 256;
-
-/// `f_i(x)` at 256 bits, parameters exact, outside the domain if need be.
-pub fn value(family: Family, params: &[Rational], i: usize, x: &Mpfr) -> Mpfr {
-    let values = family
-        .eval_at(x, params, true)
-        .expect("counterexample points are finite and parameters valid");
-    values[i].clone()
-}
-
-/// A rational point at 256 bits.
-pub fn point(q: (i64, i64)) -> Mpfr {
-    Mpfr::from_rational(PREC, &Rational::from(q))
-}
-
-/// `π/2 − x` at 256 bits.
-pub fn half_pi_minus(x: &Mpfr) -> Mpfr {
-    x.pi() * &x.ratio(1, 2) - x
-}
 
 /// Prints a value with 30 significant digits.
 pub fn show(x: &Mpfr) -> String {

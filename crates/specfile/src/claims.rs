@@ -241,6 +241,13 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             format!("math marks ⟪…⟫ (character positions counted from the statement's first): {e}"),
         );
     }
+    if c.parts.is_some() || c.shown.is_some() {
+        return src.invalid(
+            c.id.span(),
+            "claims.parts",
+            "`parts` and `shown` belong to a document file's umbrella (`check = \"all\"` with `[[claims.parts]]`, parts about several bases), not to a claim of one basis".into(),
+        );
+    }
     let check = match c.check.get_ref().trim() {
         "unity" => Check::Unity,
         "nonnegative" => Check::Nonnegative {

@@ -84,6 +84,28 @@ pub enum DocumentClaim {
         source: String,
         statement: String,
     },
+    /// An umbrella over printed parts about several bases (`check = "all"`
+    /// with `[[claims.parts]]`): it holds when every counted part holds,
+    /// fails when one fails, otherwise it is not-checkable.
+    Parts {
+        id: String,
+        source: String,
+        statement: String,
+        parts: Vec<Part>,
+        /// Remarks shown after the parts' evidence.
+        notes: Vec<String>,
+    },
+}
+
+/// One part of a [`DocumentClaim::Parts`] umbrella: a claim of the spec
+/// language about the basis `basis`, shown under its statement.
+#[derive(Debug, Clone)]
+pub struct Part {
+    pub basis: usize,
+    pub claim: SpecClaim,
+    /// Shown for information (`shown = true`, "their maximal ranges"): its
+    /// verdict is reported and never decides the umbrella.
+    pub shown: bool,
 }
 
 impl DocumentClaim {
@@ -91,6 +113,7 @@ impl DocumentClaim {
         match self {
             DocumentClaim::Stated { claim, .. } => &claim.id,
             DocumentClaim::BuiltIn { id, .. } => id,
+            DocumentClaim::Parts { id, .. } => id,
         }
     }
 
@@ -98,6 +121,7 @@ impl DocumentClaim {
         match self {
             DocumentClaim::Stated { claim, .. } => &claim.source,
             DocumentClaim::BuiltIn { source, .. } => source,
+            DocumentClaim::Parts { source, .. } => source,
         }
     }
 
@@ -105,6 +129,7 @@ impl DocumentClaim {
         match self {
             DocumentClaim::Stated { claim, .. } => &claim.statement,
             DocumentClaim::BuiltIn { statement, .. } => statement,
+            DocumentClaim::Parts { statement, .. } => statement,
         }
     }
 }
@@ -186,6 +211,9 @@ fn document_claim(
     bases: &mut [(String, Spec)],
     c: &RawClaim,
 ) -> Result<DocumentClaim> {
+    if c.parts.is_some() {
+        return umbrella_of_parts(src, bases, c);
+    }
     if c.check.get_ref().trim() == BUILT_IN {
         if let Err(e) = trig_tex::marked::check(c.statement.get_ref()) {
             return src.invalid(
@@ -200,7 +228,99 @@ fn document_claim(
             statement: c.statement.get_ref().clone(),
         });
     }
-    let basis = match &c.basis {
+    let basis = basis_of(src, bases, c)?;
+    let spec = &mut bases[basis].1;
+    let claim = claim(src, spec, c)?;
+    spec.claims.push(claim.clone());
+    Ok(DocumentClaim::Stated {
+        basis,
+        claim: Box::new(claim),
+    })
+}
+
+/// An umbrella over parts about several bases: each part read against the
+/// basis it names, none of them a claim of the file (their ids are labels).
+fn umbrella_of_parts(
+    src: &Source<'_>,
+    bases: &[(String, Spec)],
+    c: &RawClaim,
+) -> Result<DocumentClaim> {
+    if c.check.get_ref().trim() != "all" {
+        return src.invalid(
+            c.check.span(),
+            "claims.check",
+            format!(
+                "`{}`: `[[claims.parts]]` belong to `check = \"all\"`",
+                c.check.get_ref()
+            ),
+        );
+    }
+    let stray = [
+        ("basis", c.basis.is_some()),
+        ("claims", c.claims.is_some()),
+        ("shown", c.shown.is_some()),
+        ("negated", c.negated.is_some()),
+        ("at", c.at.is_some()),
+        ("range", c.range.is_some()),
+        ("ranges", c.ranges.is_some()),
+        ("region", c.region.is_some()),
+    ];
+    if let Some((field, _)) = stray.iter().find(|(_, given)| *given) {
+        return src.invalid(
+            c.id.span(),
+            &format!("claims.{field}"),
+            format!("`{field}` on an umbrella of parts: each part states its own basis and values"),
+        );
+    }
+    if let Err(e) = trig_tex::marked::check(c.statement.get_ref()) {
+        return src.invalid(
+            c.statement.span(),
+            "claims.statement",
+            format!("math marks ⟪…⟫: {e}"),
+        );
+    }
+    let raw = c.parts.as_deref().unwrap_or_default();
+    if raw.is_empty() {
+        return src.invalid(
+            c.id.span(),
+            "claims.parts",
+            "an umbrella lists at least one part".into(),
+        );
+    }
+    let mut parts = Vec::new();
+    for p in raw {
+        let basis = basis_of(src, bases, p)?;
+        let shown = p.shown.unwrap_or(false);
+        let unflagged = RawClaim {
+            shown: None,
+            ..p.clone()
+        };
+        let claim = claim(src, &bases[basis].1, &unflagged)?;
+        if matches!(claim.check, crate::check::Check::All { .. }) {
+            return src.invalid(
+                p.check.span(),
+                "claims.parts.check",
+                "a part is one check of one basis, not an umbrella".into(),
+            );
+        }
+        parts.push(Part {
+            basis,
+            claim,
+            shown,
+        });
+    }
+    Ok(DocumentClaim::Parts {
+        id: c.id.get_ref().trim().to_string(),
+        source: c.source.clone(),
+        statement: c.statement.get_ref().clone(),
+        parts,
+        notes: c.notes.clone().unwrap_or_default(),
+    })
+}
+
+/// The basis a claim names (the file's only basis when it names none).
+fn basis_of(src: &Source<'_>, bases: &[(String, Spec)], c: &RawClaim) -> Result<usize> {
+    Ok(match &c.basis {
         Some(name) => bases
             .iter()
             .position(|(n, _)| n == name.get_ref().trim())
@@ -235,13 +355,6 @@ fn document_claim(
                 ),
             );
         }
-    };
-    let spec = &mut bases[basis].1;
-    let claim = claim(src, spec, c)?;
-    spec.claims.push(claim.clone());
-    Ok(DocumentClaim::Stated {
-        basis,
-        claim: Box::new(claim),
     })
 }
 
@@ -392,6 +505,88 @@ mod tests {
         .unwrap_err();
         assert!(
             e.to_string().contains("a spec file states one basis"),
+            "{e}"
+        );
+    }
+
+    fn part(id: &str, basis: &str, check: &str, extra: &str) -> String {
+        format!(
+            "[[claims.parts]]\nid = \"{id}\"\nsource = \"(1)\"\nstatement = \"{id} as printed\"\nbasis = \"{basis}\"\ncheck = \"{check}\"\n{extra}"
+        )
+    }
+
+    #[test]
+    fn an_umbrella_of_parts_reads_each_part_against_its_own_basis() {
+        let bases = "[bases]\ncubic = \"thesis-cubic.toml\"\nhan = \"han.toml\"\n";
+        let doc = read(&format!(
+            "{bases}{}{}{}",
+            claim("u", None, "all"),
+            part("p", "han", "unity", ""),
+            part(
+                "q",
+                "cubic",
+                "nonnegative",
+                "maximal = true\nshown = true\n"
+            ),
+        ))
+        .unwrap();
+        let DocumentClaim::Parts { id, parts, .. } = &doc.claims[0] else {
+            panic!("an umbrella of parts");
+        };
+        assert_eq!(id, "u");
+        let labels: Vec<(&str, &str, bool)> = parts
+            .iter()
+            .map(|p| {
+                (
+                    doc.bases[p.basis].0.as_str(),
+                    p.claim.statement.as_str(),
+                    p.shown,
+                )
+            })
+            .collect();
+        assert_eq!(
+            labels,
+            [
+                ("han", "p as printed", false),
+                ("cubic", "q as printed", true)
+            ]
+        );
+        // the parts are not claims of their bases (no umbrella lists them)
+        assert!(doc.bases.iter().all(|(_, spec)| spec.claims.is_empty()));
+        // parts belong to `all`, and a part is one check
+        let e = read(&format!(
+            "{bases}{}{}",
+            claim("u", None, "unity"),
+            part("p", "han", "unity", "")
+        ))
+        .unwrap_err();
+        assert!(e.to_string().contains("belong to `check = \"all\"`"), "{e}");
+        let e = read(&format!(
+            "{bases}{}{}",
+            claim("u", None, "all"),
+            part("p", "han", "all", "claims = [\"x\"]\n")
+        ))
+        .unwrap_err();
+        assert!(e.to_string().contains("not an umbrella"), "{e}");
+        let e = read(&format!(
+            "{bases}{}{}",
+            claim("u", Some("han"), "all"),
+            part("p", "han", "unity", "")
+        ))
+        .unwrap_err();
+        assert!(
+            e.to_string().contains("each part states its own basis"),
+            "{e}"
+        );
+        // `shown` outside the parts of an umbrella is refused
+        let e = read(&format!(
+            "{bases}{}shown = true\n",
+            claim("u", Some("han"), "unity")
+        ))
+        .unwrap_err();
+        assert!(
+            e.to_string()
+                .contains("belong to a document file's umbrella"),
             "{e}"
         );
     }

@@ -59,7 +59,7 @@ pub use check::{
     Quantifier, Reading, SpecClaim, Varied,
 };
 pub use check::{Between, Fixed, Given};
-pub use document::{DocumentClaim, DocumentFile};
+pub use document::{DocumentClaim, DocumentFile, Part};
 pub use error::{FormulaError, Location, SpecError};
 pub use exact_range::{ExactEnd, ExactRange};
 pub use expression::Expression;

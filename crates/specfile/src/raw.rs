@@ -46,7 +46,7 @@ pub struct RawFunction {
 }
 
 /// `[[claims]]`: common fields, then the fields of each kind of check.
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RawClaim {
     pub id: Spanned<String>,
@@ -109,10 +109,15 @@ pub struct RawClaim {
     /// In a document file: the basis the claim is about (a name of its
     /// `[bases]`).
     pub basis: Option<Spanned<String>>,
+    /// In a document file, `check = "all"`: the parts of the umbrella, each
+    /// a claim of its own basis (`[[claims.parts]]`).
+    pub parts: Option<Vec<RawClaim>>,
+    /// A part shown for information (its verdict never decides the umbrella).
+    pub shown: Option<bool>,
 }
 
 /// `readings = [{ of = "printed identity", as = "its reading" }]`.
-#[derive(Debug, Deserialize)]
+#[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RawReading {
     pub of: Spanned<String>,

@@ -10,7 +10,7 @@ use trig_symbolic::Sym;
 use super::properties_formulas::{e19, e23, m21, t45, t63};
 use crate::claim::Claim;
 use trig_judge::exact::IDENTITY;
-use trig_judge::{endpoint, independence, nonnegative, span, unity};
+use trig_judge::{endpoint, nonnegative, span, unity};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
@@ -21,8 +21,8 @@ pub const CLAIMS: &[Claim] = &[
         check: t40,
     },
     Claim {
-        id: "T41",
-        check: t41,
+        id: "S3",
+        check: s3,
     },
     Claim {
         id: "T43",
@@ -33,36 +33,12 @@ pub const CLAIMS: &[Claim] = &[
         check: t45,
     },
     Claim {
-        id: "T46",
-        check: t46,
-    },
-    Claim {
         id: "T49",
         check: t49,
     },
     Claim {
-        id: "T50",
-        check: t50,
-    },
-    Claim {
-        id: "T62",
-        check: t62,
-    },
-    Claim {
         id: "T63",
         check: t63,
-    },
-    Claim {
-        id: "M16",
-        check: m16,
-    },
-    Claim {
-        id: "M17",
-        check: m17,
-    },
-    Claim {
-        id: "M18",
-        check: m18,
     },
     Claim {
         id: "M19",
@@ -77,14 +53,6 @@ pub const CLAIMS: &[Claim] = &[
         check: m23,
     },
     Claim {
-        id: "S3",
-        check: s3,
-    },
-    Claim {
-        id: "D13",
-        check: d13,
-    },
-    Claim {
         id: "E19",
         check: e19,
     },
@@ -92,86 +60,7 @@ pub const CLAIMS: &[Claim] = &[
         id: "E23",
         check: e23,
     },
-    Claim {
-        id: "D18",
-        check: d18,
-    },
 ];
-
-/// Every `m`: the judge's exact decision does not depend on a range when
-/// the Wronskian's coefficients have no common factor. The printed claims
-/// of the documents keep the Wronskian's evidence (the rank judge agrees:
-/// its tests).
-fn t50() -> Verdict {
-    independence::by_wronskian(&Family::ThesisCubic, None)
-}
-
-/// Unity and nonnegativity of the segment functions on the published
-/// range of ζ: the convex-hull property of every segment of (6).
-fn m16() -> Verdict {
-    nonnegative::convex_hull(&Family::Seed000Uniform, None)
-}
-
-/// An affine map `L(x) = Ax + b` commutes with `Σ S_j F_j` for every `S_j`
-/// exactly when `Σ F_j = 1` (the translation part): decided as the
-/// partition of unity of the segment functions.
-fn m17() -> Verdict {
-    let mut v = unity::unity(&Family::Seed000Uniform);
-    v.evidence.insert(
-        0,
-        "L(Σ S_j F_j) = A Σ S_j F_j + b and Σ L(S_j) F_j = A Σ S_j F_j + b Σ F_j: equal for every affine L exactly when Σ F_j = 1",
-    );
-    v
-}
-
-fn d18() -> Verdict {
-    independence::by_wronskian(&Family::Seed002Quartic, None)
-}
-
-/// A claim that a basis cannot trace a curve, decided by the span judge:
-/// refuted by the control points that trace it.
-fn cannot_trace(family: Family, curve: &str, targets: &[(&str, Sym)], why: &str) -> Verdict {
-    let mut v = span::reproduces(&family, curve, targets);
-    v.status = match v.status {
-        Status::Holds => Status::Fails,
-        Status::Fails => Status::Holds,
-        other => other,
-    };
-    v.evidence.insert(0, why.to_string());
-    v
-}
-
-/// The parabola `(t, t²)`, a conic, is a polynomial curve: the cubic
-/// Bernstein basis traces it.
-fn t40() -> Verdict {
-    let t = Sym::var("t");
-    cannot_trace(
-        Family::Bernstein3,
-        "parabola arc (t, t²), t ∈ [0, 1]",
-        &[("x", t.clone()), ("y", t.clone() * &t)],
-        "a parabola, a conic, is a polynomial curve: traced by the cubic Bézier basis",
-    )
-}
-
-/// The unit circle `(cos θ, sin θ)` in the span of (3.7): for which `m`.
-fn t41() -> Verdict {
-    span::reproduces(
-        &Family::ThesisCubic,
-        "unit circle arc (cos θ, sin θ), θ ∈ [0, π/2]",
-        &[("x", Sym::var("c")), ("y", Sym::var("s"))],
-    )
-}
-
-/// The parabola `(t, t²)` is traced by the uniform cubic B-spline segment.
-fn s3() -> Verdict {
-    let t = Sym::var("t");
-    cannot_trace(
-        Family::BSpline3,
-        "parabola arc (t, t²), t ∈ [0, 1]",
-        &[("x", t.clone()), ("y", t.clone() * &t)],
-        "a parabola is a polynomial curve (refutes the parabola part; no ellipse arc is polynomial)",
-    )
-}
 
 /// The rational functions `Rⱼ = wⱼbⱼ / Σ wₖbₖ` of a basis with symbolic
 /// weights `w0, w1, …`.
@@ -186,30 +75,6 @@ fn rational(family: Family) -> Vec<Sym> {
     weighted.iter().map(|f| f.clone() / &total).collect()
 }
 
-/// Convex hull (unity and nonnegativity for `β ∈ [0, ∞)`, the printed
-/// range) and geometric (affine) invariance, which is the unity part.
-fn t46() -> Verdict {
-    let range = trig_core::ParamRange::parse("[0, inf)").expect("a valid range");
-    let mut v = nonnegative::convex_hull(&Family::ThesisQuadratic, Some(&range));
-    v.evidence.insert(
-        0,
-        "geometric (affine) invariance is the partition of unity (an affine map commutes with Σ H_i P_i exactly when Σ H_i = 1), decided below with the convex hull",
-    );
-    v
-}
-
-/// With weights `w ≥ 0` the rational functions have the signs of the
-/// `F_j` (all weights 1 gives the `F_j` themselves): the convex hull needs
-/// the segment functions nonnegative on the published range.
-fn m18() -> Verdict {
-    let mut v = nonnegative::convex_hull(&Family::Seed000Uniform, None);
-    v.evidence.insert(
-        0,
-        "R_j = w_j F_j / Σ w_k F_k with w ≥ 0 sum to 1; with all weights 1 they are the F_j, so a negative F_j refutes the convex hull for rational curves too",
-    );
-    v
-}
-
 /// `Σ Rⱼ = 1` identically for symbolic weights: affine invariance.
 fn m19() -> Verdict {
     trig_judge::exact::identity(
@@ -217,17 +82,6 @@ fn m19() -> Verdict {
         &trig_judge::exact::sum(&rational(Family::Seed000Uniform)),
         &Sym::one(),
     )
-}
-
-/// For `wᵢ > 0` the rational functions are nonnegative and sum to 1 when
-/// the quartic functions are: the convex hull of the rational curve.
-fn d13() -> Verdict {
-    let mut v = nonnegative::convex_hull(&Family::Seed002Quartic, None);
-    v.evidence.insert(
-        0,
-        "R_i = w_i b_i / Σ w_j b_j with every w_i > 0 is ≥ 0 where the b_i are, and Σ R_i = 1: decided on the b_i",
-    );
-    v
 }
 
 /// The quadratic basis (3.1) at `β = 0`, exactly.
@@ -243,44 +97,6 @@ fn t43() -> Verdict {
             .map(|((name, want), h)| (format!("{name} at β = 0 ≡ {want}"), h, Sym::int(*want)))
             .collect(),
     )
-}
-
-/// 0.6 in each printed interval, and every function of each basis
-/// certified ≥ 0 at the parameter 0.6 (admissible: the basis is
-/// nonnegative there, whatever the printed interval says).
-fn t62() -> Verdict {
-    let value = rug::Rational::from((3, 5));
-    let methods = [
-        (Family::ThesisCubic, "m", "(-2, 1]"),
-        (Family::MajeedQayyum, "eta", "(1/2, 2]"),
-        (Family::Han, "lambda", "[-2, 1]"),
-        (Family::Usman, "alpha", "(0, 2)"),
-    ];
-    let parts = methods
-        .iter()
-        .map(|(family, name, printed)| {
-            let range = trig_core::ParamRange::parse(printed).expect("a valid range");
-            let inside = range.contains(&value);
-            let mut v = trig_judge::certificate::nonnegative_on(
-                family,
-                &trig_judge::exact::basis(*family),
-                Some(name),
-                &trig_certify::ParamBox::closed(value.clone(), value.clone()),
-            );
-            v.evidence.insert(
-                0,
-                format!(
-                    "{name} = 3/5 {} the printed interval {range}",
-                    if inside { "lies in" } else { "lies outside" }
-                ),
-            );
-            if !inside {
-                v.status = Status::Fails;
-            }
-            (format!("{} at {name} = 3/5", family.info().id), v)
-        })
-        .collect();
-    Verdict::all(trig_judge::certificate::CERTIFIED, parts)
 }
 
 /// The Bézier properties of (3.7) on `m ∈ (−2, 1]`, each by its judge:
@@ -459,6 +275,42 @@ fn m23() -> Verdict {
             ("F_j(ζ) = F_j(1 − ζ)".into(), symmetric),
             ("exceptions of the knot continuity in pairs".into(), pairs),
         ],
+    )
+}
+
+/// A claim that a basis cannot trace a curve, decided by the span judge:
+/// refuted by the control points that trace it.
+fn cannot_trace(family: Family, curve: &str, targets: &[(&str, Sym)], why: &str) -> Verdict {
+    let mut v = span::reproduces(&family, curve, targets);
+    v.status = match v.status {
+        Status::Holds => Status::Fails,
+        Status::Fails => Status::Holds,
+        other => other,
+    };
+    v.evidence.insert(0, why.to_string());
+    v
+}
+
+/// The parabola `(t, t²)`, a conic, is a polynomial curve: the cubic
+/// Bernstein basis traces it.
+fn t40() -> Verdict {
+    let t = Sym::var("t");
+    cannot_trace(
+        Family::Bernstein3,
+        "parabola arc (t, t²), t ∈ [0, 1]",
+        &[("x", t.clone()), ("y", t.clone() * &t)],
+        "a parabola, a conic, is a polynomial curve: traced by the cubic Bézier basis",
+    )
+}
+
+/// The parabola `(t, t²)` is traced by the uniform cubic B-spline segment.
+fn s3() -> Verdict {
+    let t = Sym::var("t");
+    cannot_trace(
+        Family::BSpline3,
+        "parabola arc (t, t²), t ∈ [0, 1]",
+        &[("x", t.clone()), ("y", t.clone() * &t)],
+        "a parabola is a polynomial curve (refutes the parabola part; no ellipse arc is polynomial)",
     )
 }
 

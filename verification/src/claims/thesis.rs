@@ -5,182 +5,45 @@
 use rug::Rational;
 use trig_core::families::thesis::{surface_matrix_a, surface_row_t};
 use trig_core::{Family, Variable};
-use trig_deriv::End;
 use trig_symbolic::Sym;
 
 use crate::claim::Claim;
 use trig_certify::ParamBox;
-use trig_judge::certificate::{
-    maximal_versus_published, monotone, nonnegative_on, on_published_range,
-};
-use trig_judge::exact::{at_end, basis, combination, identities, residual_verdict, sum, symbols};
-use trig_judge::numeric::{counterexample_item, differ, half_pi_minus, point, show, value};
-use trig_judge::symmetry::reflection_symmetry;
+use trig_judge::certificate::nonnegative_on;
+use trig_judge::exact::{basis, identities, residual_verdict, sum, symbols};
 use trig_verdict::evidence::Evidence;
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[
     Claim {
-        id: "T2",
-        check: t2,
-    },
-    Claim {
-        id: "T3",
-        check: t3,
-    },
-    Claim {
-        id: "T4",
-        check: t4,
-    },
-    Claim {
-        id: "T4b",
-        check: t4b,
-    },
-    Claim {
-        id: "T5",
-        check: t5,
-    },
-    Claim {
-        id: "T5b",
-        check: t5b,
-    },
-    Claim {
-        id: "T25",
-        check: t25,
+        id: "T31",
+        check: t31,
     },
     Claim {
         id: "T27",
         check: t27,
     },
     Claim {
-        id: "T28",
-        check: t28,
+        id: "T25",
+        check: t25,
     },
     Claim {
-        id: "T29",
-        check: t29,
+        id: "T28",
+        check: t28,
     },
     Claim {
         id: "T30",
         check: t30,
     },
     Claim {
-        id: "T31",
-        check: t31,
-    },
-    Claim {
         id: "T37",
         check: t37,
-    },
-    Claim {
-        id: "T38",
-        check: t38,
     },
 ];
 
 fn points(n: usize) -> Vec<Sym> {
     symbols("P", n)
-}
-
-/// `Σ b_i P_i` with symbolic control points.
-fn curve(b: &[Sym]) -> Sym {
-    combination(b, &points(b.len()))
-}
-
-/// A counterexample to `f_i(x) = f_j(π/2 − x)` for a family in `u`.
-fn reflection_counterexample(family: Family, param: (i64, i64), i: usize, j: usize) -> Verdict {
-    let p = [Rational::from(param)];
-    let x = point((1, 2));
-    let y = half_pi_minus(&x);
-    let (a, b) = (value(family, &p, i, &x), value(family, &p, j, &y));
-    let name = family.info().params[0].symbol;
-    let f = family.info().functions;
-    // the two values as expressions of the exact basis, at their points
-    let param = Sym::var(family.info().params[0].name).to_sympy();
-    let functions = trig_judge::exact::basis(family);
-    let of = |k: usize, x: &str| {
-        let f = functions[k].subs(family.info().params[0].name, &Sym::rational(p[0].clone()));
-        trig_judge::numeric::at_sympy(&f, trig_core::Described::variable(&family), x)
-    };
-    let status = if differ(&a, &b) {
-        Status::Fails
-    } else {
-        Status::Holds
-    };
-    let item = counterexample_item(
-        format!(
-            "{name} = {}, u = 1/2: {}(1/2) = {}, but {}(π/2 − 1/2) = {} (π/2 − 1/2 ≈ 1.0708 lies outside u ∈ [0, 1])",
-            p[0],
-            f[i],
-            show(&a),
-            f[j],
-            show(&b)
-        ),
-        &[
-            (name.to_string(), param.clone(), p[0].to_string()),
-            ("u".into(), "u".into(), "1/2".into()),
-        ],
-        [
-            (format!("{}(1/2)", f[i]), &a, of(i, "1/2")),
-            (format!("{}(π/2 − 1/2)", f[j]), &b, of(j, "pi/2 - (1/2)")),
-        ],
-    );
-    Verdict::new(
-        status,
-        "counterexample evaluated in 256-bit MPFR (difference far above rounding)",
-        [
-            item,
-            "the statement holds in the angle θ = πu/2 (θ ↦ π/2 − θ), i.e. for u ↦ 1 − u; see the reading".into(),
-        ],
-    )
-}
-
-fn t4() -> Verdict {
-    trig_judge::exact::defined_by(
-        reflection_counterexample(Family::ThesisQuadratic, (1, 1), 0, 2),
-        &Family::ThesisQuadratic,
-    )
-}
-
-fn t4b() -> Verdict {
-    reflection_symmetry(&Family::ThesisQuadratic, 0..3)
-}
-
-fn quadratic_curve_ends() -> (Sym, Sym) {
-    let f = curve(&basis(Family::ThesisQuadratic));
-    (at_end(&f, End::Start), at_end(&f, End::End))
-}
-
-fn t5() -> Verdict {
-    let (f0, f1) = quadratic_curve_ends();
-    let k = Sym::one() / &(Sym::var("beta") + &Sym::one());
-    let [p0, p1, p2]: [Sym; 3] = points(3).try_into().expect("three points");
-    identities(vec![
-        (
-            "F(0) − P0 = (P1 − P0)/(β+1)".into(),
-            f0 - &p0,
-            (p1.clone() - &p0) * &k,
-        ),
-        (
-            "F(1) − P2 = (P1 − P2)/(β+1)".into(),
-            f1 - &p2,
-            (p1 - &p2) * &k,
-        ),
-    ])
-}
-
-fn t5b() -> Verdict {
-    let (f0, f1) = quadratic_curve_ends();
-    let [p0, _, p2]: [Sym; 3] = points(3).try_into().expect("three points");
-    let mut v = identities(vec![
-        ("F(0) = P0".into(), f0, p0),
-        ("F(1) = P2".into(), f1, p2),
-    ]);
-    v.evidence.push(
-        "the residuals are (P1 − P0)/(β+1) and (P1 − P2)/(β+1): nonzero for every finite β ≥ 0 unless P1 coincides with the end point; e.g. β = 1, P0 = (0,0), P1 = (1.5,1.5) (3.2.3) gives F(0) = (0.75, 0.75)",
-    );
-    v
 }
 
 fn t25() -> Verdict {
@@ -202,37 +65,6 @@ fn t25() -> Verdict {
         );
     }
     v
-}
-
-fn t27() -> Verdict {
-    let residual = sum(&basis(Family::ThesisCubic)) - &Sym::one();
-    let (status, reading) = if residual.is_zero() {
-        (
-            Status::Fails,
-            "identically in m: the functions sum to 1 for every real m; outside [−2, 1] what can fail is nonnegativity, not normalisation",
-        )
-    } else {
-        (Status::Holds, "not identically zero in m")
-    };
-    // at a parameter outside the range, the sum is 1 at every point
-    let two = Rational::from(2);
-    let point = [
-        ("m".to_string(), two.clone()),
-        ("s".to_string(), Rational::from((3, 5))),
-        ("c".to_string(), Rational::from((4, 5))),
-    ];
-    let total = sum(&basis(Family::ThesisCubic));
-    let witness = trig_verdict::witness::of_exprs(
-        &point,
-        &["m".into(), "s".into(), "c".into()],
-        &[("Σ b_i (claimed ≠ 1)", &total)],
-    );
-    Verdict::new(
-        status,
-        trig_judge::exact::IDENTITY,
-        [Evidence::note(format!("Σ b_i − 1 = {residual}, {reading}"))
-            .witnessed(witness.filter(|_| status == Status::Fails))],
-    )
 }
 
 fn t28() -> Verdict {
@@ -315,90 +147,34 @@ fn t37() -> Verdict {
     Verdict::new(status, trig_judge::exact::IDENTITY, evidence)
 }
 
-fn t38() -> Verdict {
-    let (f0, f1) = quadratic_curve_ends();
-    let one = Sym::one();
-    let [p0, p1, p2]: [Sym; 3] = points(3).try_into().expect("three points");
-    let half = Sym::rational(Rational::from((1, 2)));
-    identities(vec![
+fn t27() -> Verdict {
+    let residual = sum(&basis(Family::ThesisCubic)) - &Sym::one();
+    let (status, reading) = if residual.is_zero() {
         (
-            "F(0; β=1) − (P0 + P1)/2".into(),
-            f0.subs("beta", &one),
-            (p0 + &p1) * &half,
-        ),
-        (
-            "F(1; β=1) − (P1 + P2)/2".into(),
-            f1.subs("beta", &one),
-            (p1 + &p2) * &half,
-        ),
-    ])
-}
-
-fn t2() -> Verdict {
-    nonnegative_on(
-        &Family::ThesisQuadratic,
-        &basis(Family::ThesisQuadratic),
-        Some("beta"),
-        &ParamBox::from_closed(Rational::new()),
-    )
-}
-
-fn t29() -> Verdict {
-    let mut parts = Vec::new();
-    for family in [Family::MajeedQayyum, Family::Han, Family::Usman] {
-        let id = family.info().id;
-        parts.push((
-            format!("{id}: Σ − 1"),
-            residual_verdict(&sum(&basis(family)), &Sym::one()),
-        ));
-        parts.push((
-            format!("{id}: nonnegative on the published range"),
-            on_published_range(&family),
-        ));
-        let (_, maximal) = maximal_versus_published(&family);
-        // the maximal range is evidence, not a condition of this claim
-        let note = if maximal.status == Status::Holds {
-            "the published range is the maximal one"
-        } else {
-            "the published range is not the maximal one"
-        };
-        let mut m = maximal;
-        m.status = Status::Holds;
-        m.evidence.push(note);
-        parts.push((format!("{id}: maximal range (evidence)"), m));
-    }
-    Verdict::all(trig_judge::certificate::CERTIFIED, parts)
-}
-
-fn beta_half_line() -> ParamBox {
-    ParamBox::from_closed(Rational::new())
-}
-
-fn t3() -> Verdict {
-    Verdict::all(
-        trig_judge::certificate::CERTIFIED,
-        vec![
-            (
-                "H0".into(),
-                monotone(
-                    &Family::ThesisQuadratic,
-                    0,
-                    false,
-                    Some("beta"),
-                    &beta_half_line(),
-                ),
-            ),
-            (
-                "H2".into(),
-                monotone(
-                    &Family::ThesisQuadratic,
-                    2,
-                    true,
-                    Some("beta"),
-                    &beta_half_line(),
-                ),
-            ),
-        ],
+            Status::Fails,
+            "identically in m: the functions sum to 1 for every real m; outside [−2, 1] what can fail is nonnegativity, not normalisation",
+        )
+    } else {
+        (Status::Holds, "not identically zero in m")
+    };
+    // at a parameter outside the range, the sum is 1 at every point
+    let two = Rational::from(2);
+    let point = [
+        ("m".to_string(), two.clone()),
+        ("s".to_string(), Rational::from((3, 5))),
+        ("c".to_string(), Rational::from((4, 5))),
+    ];
+    let total = sum(&basis(Family::ThesisCubic));
+    let witness = trig_verdict::witness::of_exprs(
+        &point,
+        &["m".into(), "s".into(), "c".into()],
+        &[("Σ b_i (claimed ≠ 1)", &total)],
+    );
+    Verdict::new(
+        status,
+        trig_judge::exact::IDENTITY,
+        [Evidence::note(format!("Σ b_i − 1 = {residual}, {reading}"))
+            .witnessed(witness.filter(|_| status == Status::Fails))],
     )
 }
 

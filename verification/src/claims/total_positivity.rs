@@ -8,105 +8,26 @@ use rug::Rational;
 use trig_certify::ParamBox;
 use trig_certify::nonneg::{Certificate, certify as certify_nonnegative};
 use trig_certify::total_positivity::certify as certify_tp;
-use trig_core::{Family, ParamRange};
 use trig_symbolic::Sym;
 
 use crate::claim::Claim;
 use trig_judge::certificate::CERTIFIED;
 use trig_judge::exact::{IDENTITY, identities, symbols};
-use trig_judge::total_positivity::{CONSEQUENCES, normalized_totally_positive};
-use trig_judge::{endpoint, nonnegative, unity};
+use trig_judge::total_positivity::CONSEQUENCES;
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
 /// In report order (after the other second-list claims).
 pub const CLAIMS: &[Claim] = &[
     Claim {
-        id: "T42",
-        check: t42,
-    },
-    Claim {
         id: "T70",
         check: t70,
-    },
-    Claim {
-        id: "D14",
-        check: d14,
-    },
-    Claim {
-        id: "D16",
-        check: d16,
     },
     Claim {
         id: "S4",
         check: s4,
     },
 ];
-
-/// The four bases of T42 with their printed ranges.
-const T42_BASES: [(Family, &str, &str); 4] = [
-    (Family::ThesisCubic, "(3.7)", "(-2, 1]"),
-    (Family::MajeedQayyum, "(6.1)", "(1/2, 2]"),
-    (Family::Han, "(6.2)", "[-2, 1]"),
-    (Family::Usman, "(6.3)", "(0, 2)"),
-];
-
-/// Each basis on its printed range, each property by its judge.
-fn t42() -> Verdict {
-    let parts = T42_BASES
-        .iter()
-        .map(|(family, eq, printed)| {
-            let range = ParamRange::parse(printed).expect("a valid range");
-            let symbol = &family.info().params[0].symbol;
-            let v = Verdict::all(
-                CERTIFIED,
-                vec![
-                    (
-                        "endpoint interpolation".into(),
-                        endpoint::interpolation(family),
-                    ),
-                    (
-                        "convex hull".into(),
-                        nonnegative::convex_hull(family, Some(&range)),
-                    ),
-                    (
-                        "variation diminishing".into(),
-                        normalized_totally_positive(family, Some(&range)),
-                    ),
-                    ("affine invariance (Σ b_i = 1)".into(), unity::unity(family)),
-                ],
-            );
-            (format!("{eq} on {symbol} ∈ {range}"), v)
-        })
-        .collect();
-    let mut v = Verdict::all(CERTIFIED, parts);
-    v.evidence.insert(
-        0,
-        "affine invariance: A(Σ b_i P_i) + q = Σ b_i (A P_i + q) for every affine map exactly when Σ b_i = 1",
-    );
-    v
-}
-
-/// The rational basis `R_i = w_i b_i / Σ w_j b_j`, `w_i > 0`, decided on
-/// the `b_i`.
-fn d14() -> Verdict {
-    let mut v = normalized_totally_positive(&Family::Seed002Quartic, None);
-    v.evidence.insert(
-        0,
-        "R_i = w_i b_i / Σ w_j b_j with every w_i > 0: a collocation matrix of (R_i) is diag(1/Σ_j w_j b_j(x_k)) · (b_i(x_k)) · diag(w_i), so each of its minors is a positive multiple of the same minor of (b_i); (R_i) is totally positive exactly when (b_i) is, and Σ R_i = 1 always — decided on the b_i, for every choice of positive weights",
-    );
-    v
-}
-
-/// Convexity preservation as the consequence of D14.
-fn d16() -> Verdict {
-    let mut v = d14();
-    v.evidence.insert(
-        0,
-        "follows from D14 (decided below): the printed reason is right — a normalized totally positive basis is variation diminishing, and a planar curve Σ R_i P_i that no line crosses more often than its convex control polygon (at most twice) is convex",
-    );
-    v
-}
 
 /// No formula, no decision; the inference as printed is also incomplete.
 fn s4() -> Verdict {

@@ -23,6 +23,7 @@ use crate::budget::{Stopped, bounded};
 use crate::entry::{Document, Entry};
 use trig_judge::endpoint::TABLE_ORDERS;
 use trig_judge::local_control::Control;
+use trig_verdict::evidence::Evidence;
 use trig_verdict::real_witness::{RealPoints, with_real_points};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
@@ -279,6 +280,44 @@ pub fn decide(spec: &Spec, claim: &SpecClaim) -> Verdict {
     v.evidence.extend(claim.notes.iter().map(String::as_str));
     v
 }
+
+/// The verdict of an umbrella over parts about several bases (a document
+/// file's `[[claims.parts]]`): each part decided on its own basis as it is
+/// stated and shown under its statement; the umbrella holds when every
+/// counted part holds, fails when one fails, otherwise it is not-checkable.
+/// A part shown for information (`shown = true`) keeps its own verdict in
+/// its label and never decides. The notes follow the evidence.
+pub fn decide_parts(parts: &[(&Spec, &trig_specfile::Part)], notes: &[String]) -> Verdict {
+    let decided: Vec<(String, bool, Verdict)> = parts
+        .iter()
+        .map(|(spec, part)| {
+            let v = decide_in(spec, &part.claim);
+            (part.claim.statement.clone(), part.shown, v)
+        })
+        .collect();
+    let status = Status::conjunction(
+        decided
+            .iter()
+            .filter(|(_, shown, _)| !shown)
+            .map(|(_, _, v)| v.status),
+    );
+    let evidence: Vec<Evidence> = decided
+        .into_iter()
+        .flat_map(|(name, shown, v)| {
+            let name = if shown {
+                format!("{name} (shown, not a condition of the claim)")
+            } else {
+                name
+            };
+            v.into_part(&name)
+        })
+        .collect();
+    let mut v = Verdict::new(status, PARTS, evidence);
+    v.evidence.extend(notes.iter().map(String::as_str));
+    v
+}
+
+const PARTS: &str = "every part decided on its own basis as it is stated: the claim holds when every part holds, fails when one fails";
 
 /// The negation of a check's verdict: holds where the check fails (its
 /// counterexample proves the negation) and fails where it holds (its proof
