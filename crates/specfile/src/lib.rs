@@ -43,6 +43,7 @@ pub mod formula;
 pub mod frequencies;
 pub mod given;
 mod given_read;
+mod join_read;
 mod load;
 mod names;
 pub mod nonvanishing;
@@ -54,7 +55,9 @@ pub mod spec;
 pub use any::{AnyBasis, OpenError};
 pub use ast::Grammar;
 pub use check::{Between, Fixed, Given};
-pub use check::{Check, Condition, Direction, Monotone, Printed, Quantifier, SpecClaim, Varied};
+pub use check::{
+    Check, Condition, Direction, JoinSegments, Monotone, Printed, Quantifier, SpecClaim, Varied,
+};
 pub use document::{DocumentClaim, DocumentFile};
 pub use error::{FormulaError, Location, SpecError};
 pub use exact_range::{ExactEnd, ExactRange};

@@ -519,10 +519,23 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
         Check::Join {
             kind,
             wrt,
+            declared,
             different,
             factors,
             conditions,
-        } => joins::printed_join(spec, *kind, *wrt, *different, factors, conditions),
+            segments,
+        } => joins::printed_join(
+            spec,
+            joins::Stated {
+                kind: *kind,
+                wrt: *wrt,
+                declared: *declared,
+                different: *different,
+                segments,
+            },
+            factors,
+            conditions,
+        ),
         Check::Continuity { order } => trig_judge::continuity::bspline_continuity(spec, *order),
         Check::All { claims } => Verdict::all(
             UMBRELLA,
