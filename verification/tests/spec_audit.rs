@@ -412,3 +412,95 @@ fn the_maximal_set_of_independence_with_one_parameter() {
     assert_eq!(w.status, Status::Fails, "{w:?}");
     assert!(format!("{w:?}").contains("alpha = π"), "{w:?}");
 }
+
+/// A join claim names its segments as the paper prints them — the
+/// thesis's `P0…P3` and `P4…P7`, `m2` on the first curve and `m1` on the
+/// second — and is decided as the same join in the default names: the
+/// sign typo of (4.7) named in the printed names.
+#[test]
+fn a_join_with_segments_named_as_printed_is_the_join_in_the_default_names() {
+    let printed = "[[claims]]\nid = \"printed\"\nsource = \"(4.7)\"\nstatement = \"C1\"\ncheck = \"join\"\njoin = \"C1\"\nwrt = \"angle\"\ndifferent = true\npoints = [[\"P0\", \"P1\", \"P2\", \"P3\"], [\"P4\", \"P5\", \"P6\", \"P7\"]]\nsegment-params = [{ m = \"m2\" }, { m = \"m1\" }]\nconditions = [\"P5 = ((m2 + 2)*P3 - (m1 + 2)*P3 - (m2 + 2)*P2)/(m1 + 2)\"]\n";
+    let default = "[[claims]]\nid = \"default\"\nsource = \"(4.7)\"\nstatement = \"C1\"\ncheck = \"join\"\njoin = \"C1\"\nwrt = \"angle\"\ndifferent = true\nconditions = [\"Q1 = ((m1 + 2)*P3 - (m2 + 2)*P3 - (m1 + 2)*P2)/(m2 + 2)\"]\n";
+    let entries = spec_audit::audit(&thesis_cubic_with(&format!("{printed}\n{default}")));
+    let (p, d) = (
+        &entry(&entries, "printed").verdict,
+        &entry(&entries, "default").verdict,
+    );
+    assert_eq!(p.status, Status::HoldsAfterCorrection);
+    assert_eq!(d.status, p.status);
+    assert_eq!(
+        p.correction.as_deref(),
+        Some("flip the sign of the printed term (−m₁ − 2)·P₃ in the formula for P₅")
+    );
+    assert_eq!(
+        d.correction.as_deref(),
+        Some("flip the sign of the printed term (−m₂ − 2)·P₃ in the formula for Q₁")
+    );
+}
+
+/// The printed terms of a formula are its additive terms and, inside a
+/// bracket of control points times a scalar, the bracket's own terms; the
+/// sign in front of the bracket is one printed sign too. `P3 − (P3 − P2)`
+/// for `Q1 = 2P3 − P2` is one flipped bracket; `α(P3 + P2) + P3` for the
+/// G¹ join one flipped term inside it.
+#[test]
+fn a_sign_typo_is_one_printed_term_or_one_bracket() {
+    let claim = |id: &str, kind: &str, formula: &str| {
+        format!(
+            "[[claims]]\nid = \"{id}\"\nsource = \"test\"\nstatement = \"test\"\ncheck = \"join\"\njoin = \"{kind}\"\nwrt = \"angle\"\nconditions = [\"Q0 = P3\", \"{formula}\"]\n"
+        )
+    };
+    let entries = spec_audit::audit(&thesis_cubic_with(&format!(
+        "{}\n{}\n{}",
+        claim("bracket", "C1", "Q1 = P3 - 1*(P3 - P2)"),
+        claim("inside", "G1", "Q1 = alpha*(P3 + P2) + P3"),
+        claim("holds", "G1", "Q1 = alpha*(P3 - P2) + P3"),
+    )));
+    let bracket = &entry(&entries, "bracket").verdict;
+    assert_eq!(bracket.status, Status::HoldsAfterCorrection);
+    let fix = bracket.correction.as_deref().expect("a correction");
+    assert!(
+        fix.contains("P₃") && fix.contains("P₂") && fix.ends_with("in the formula for Q₁"),
+        "{fix}"
+    );
+    let inside = &entry(&entries, "inside").verdict;
+    assert_eq!(inside.status, Status::HoldsAfterCorrection);
+    assert_eq!(
+        inside.correction.as_deref(),
+        Some("flip the sign of the printed term α·P₂ in the formula for Q₁")
+    );
+    assert_eq!(entry(&entries, "holds").verdict.status, Status::Holds);
+}
+
+/// `wrt = "unstated"`: a paper that does not say with respect to what it
+/// differentiates. Every convention of the basis is judged (a print that
+/// holds only in another one would hold after that correction); a declared
+/// convention shows the others for information only.
+#[test]
+fn an_unstated_convention_is_a_correction_where_another_one_holds() {
+    let claim = |id: &str, wrt: &str, kind: &str, formula: &str| {
+        format!(
+            "[[claims]]\nid = \"{id}\"\nsource = \"test\"\nstatement = \"test\"\ncheck = \"join\"\njoin = \"{kind}\"\nwrt = \"{wrt}\"\nconditions = [\"Q0 = P3\", \"{formula}\"]\n"
+        )
+    };
+    let entries = spec_audit::audit(&thesis_cubic_with(&format!(
+        "{}\n{}",
+        claim("declared", "angle", "C1", "Q1 = 2*P3 - P2"),
+        claim("unstated", "unstated", "C1", "Q1 = 2*P3 - P2"),
+    )));
+    for id in ["declared", "unstated"] {
+        assert_eq!(entry(&entries, id).verdict.status, Status::Holds, "{id}");
+    }
+    let texts = |id: &str| {
+        entry(&entries, id)
+            .verdict
+            .evidence
+            .iter()
+            .map(|e| e.text.clone())
+            .collect::<Vec<_>>()
+            .join("\n")
+    };
+    // the declared convention shows the others for information only
+    assert!(texts("declared").contains("for information, not a verdict"));
+    assert!(!texts("unstated").contains("for information, not a verdict"));
+}
