@@ -504,3 +504,43 @@ fn an_unstated_convention_is_a_correction_where_another_one_holds() {
     assert!(texts("declared").contains("for information, not a verdict"));
     assert!(!texts("unstated").contains("for information, not a verdict"));
 }
+
+/// `also-scope`: a local-control claim decided under the other reading of
+/// its parameter's scope too, for information. The thesis's `m_i` enters
+/// its own segment only (T48 holds); one `m` for the whole curve enters
+/// every segment, so that reading fails — and the other way round.
+#[test]
+fn the_other_reading_of_a_scope_is_decided_for_information() {
+    let claim = |id: &str, scope: &str, also: &str| {
+        format!(
+            "[[claims]]\nid = \"{id}\"\nsource = \"test\"\nstatement = \"test\"\ncheck = \"local-control\"\ncontrol = \"m\"\nscope = \"{scope}\"\nalso-scope = \"{also}\"\nsegments = [0]\n"
+        )
+    };
+    let entries = spec_audit::audit(&thesis_cubic_with(&format!(
+        "{}\n{}",
+        claim("segment", "segment", "curve"),
+        claim("curve", "curve", "segment"),
+    )));
+    let line = |id: &str| {
+        let v = &entry(&entries, id).verdict;
+        let last = v.evidence.iter().last().expect("evidence").text.clone();
+        (v.status, last)
+    };
+    assert_eq!(
+        line("segment"),
+        (
+            Status::Holds,
+            "for information, not a verdict: the other reading, one m for the whole curve, fails"
+                .into()
+        )
+    );
+    assert_eq!(
+        line("curve"),
+        (
+            Status::Fails,
+            "for information, not a verdict: the other reading, one m per segment, holds".into()
+        )
+    );
+    let t48 = &run(None, Some("T48")).expect("the document files")[0].verdict;
+    assert_eq!(t48.status, Status::Holds);
+}

@@ -203,7 +203,13 @@ pub enum Check {
     /// Local control of that B-spline (segment `i` is `Σ b_k P_{i+k}`):
     /// the varied control enters exactly the printed segments `j + o`,
     /// `o ∈ segments`.
-    LocalControl { varied: Varied, segments: Vec<i64> },
+    LocalControl {
+        varied: Varied,
+        segments: Vec<i64>,
+        /// Another reading of a parameter's scope (`also-scope`), decided
+        /// too, for information.
+        also: Option<Varied>,
+    },
     /// Every listed claim of the file, each decided as it is stated: an
     /// umbrella over printed parts (a theorem whose conditions the file
     /// states one claim each).

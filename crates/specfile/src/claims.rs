@@ -453,24 +453,44 @@ fn local_control(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check> {
                 ),
             );
         }
-        let scope = need(src, c, &c.scope, "scope")?;
-        let per_segment = match scope.get_ref().trim() {
-            "segment" => true,
-            "curve" => false,
-            other => {
-                return src.invalid(
-                    scope.span(),
-                    "claims.scope",
-                    format!("`{other}`: expected `segment` (one value per segment) or `curve` (one value for the whole curve)"),
-                );
-            }
-        };
         Varied::Parameter {
             name: name.to_string(),
-            per_segment,
+            per_segment: scope_field(src, need(src, c, &c.scope, "scope")?, "scope")?,
         }
     };
-    Ok(Check::LocalControl { varied, segments })
+    let also = match (&c.also_scope, &varied) {
+        (None, _) => None,
+        (Some(scope), Varied::Parameter { name, .. }) => Some(Varied::Parameter {
+            name: name.clone(),
+            per_segment: scope_field(src, scope, "also-scope")?,
+        }),
+        (Some(scope), Varied::Point) => {
+            return src.invalid(
+                scope.span(),
+                "claims.also-scope",
+                "`also-scope` belongs to a parameter".into(),
+            );
+        }
+    };
+    Ok(Check::LocalControl {
+        varied,
+        segments,
+        also,
+    })
+}
+
+/// `segment` (one value per segment: true) or `curve` (one value for the
+/// whole curve).
+fn scope_field(src: &Source<'_>, scope: &Spanned<String>, field: &str) -> Result<bool> {
+    match scope.get_ref().trim() {
+        "segment" => Ok(true),
+        "curve" => Ok(false),
+        other => src.invalid(
+            scope.span(),
+            &format!("claims.{field}"),
+            format!("`{other}`: expected `segment` (one value per segment) or `curve` (one value for the whole curve)"),
+        ),
+    }
 }
 
 /// `values = ["P0 = (x, y)", …]` (one point per function, in order) and

@@ -85,6 +85,10 @@ pub struct RawClaim {
     pub control: Option<Spanned<String>>,
     pub scope: Option<Spanned<String>>,
     pub segments: Option<Vec<i64>>,
+    /// `check = "local-control"`: another reading of `scope`, decided for
+    /// information.
+    #[serde(rename = "also-scope")]
+    pub also_scope: Option<Spanned<String>>,
     /// `for = "some value"` or `"no value"`.
     #[serde(rename = "for")]
     pub quantifier: Option<Spanned<String>>,

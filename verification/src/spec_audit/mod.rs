@@ -546,8 +546,12 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
                 .collect(),
         ),
         Check::NotPrinted { reason } => Verdict::not_checkable(reason.clone()),
-        Check::LocalControl { varied, segments } => {
-            let control = match varied {
+        Check::LocalControl {
+            varied,
+            segments,
+            also,
+        } => {
+            let control = |varied: &Varied| match varied {
                 Varied::Point => Control::Point,
                 Varied::Parameter {
                     name,
@@ -558,7 +562,16 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
                 },
                 Varied::Parameter { name, .. } => Control::CurveParameter { name: name.clone() },
             };
-            trig_judge::local_control::local_control(spec, &control, 0, segments)
+            let mut v =
+                trig_judge::local_control::local_control(spec, &control(varied), 0, segments);
+            if let Some(also) = also {
+                v.evidence.push(trig_judge::local_control::other_reading(
+                    spec,
+                    &control(also),
+                    segments,
+                ));
+            }
+            v
         }
     }
 }
