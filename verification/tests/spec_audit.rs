@@ -544,3 +544,35 @@ fn the_other_reading_of_a_scope_is_decided_for_information() {
     let t48 = &run(None, Some("T48")).expect("the document files")[0].verdict;
     assert_eq!(t48.status, Status::Holds);
 }
+
+/// `join-singular`: where the joins of a basis break, from the pivots of
+/// every join's exact solution. The thesis's joins break at `m = −2`
+/// (T39 holds); printing `m = 1` instead fails, the singular set shown.
+#[test]
+fn the_joins_break_at_the_printed_values_only() {
+    let claim = |id: &str, value: &str| {
+        format!(
+            "[[claims]]\nid = \"{id}\"\nsource = \"test\"\nstatement = \"test\"\ncheck = \"join-singular\"\nvalues = [\"m = {value}\"]\n"
+        )
+    };
+    let text = std::fs::read_to_string(
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../examples/thesis-cubic.toml"),
+    )
+    .expect("read");
+    let spec = Spec::from_str_named(
+        &format!("{text}\n{}\n{}", claim("right", "-2"), claim("wrong", "1")),
+        "thesis-cubic-singular.toml",
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let entries = spec_audit::audit(&spec);
+    assert_eq!(entry(&entries, "right").verdict.status, Status::Holds);
+    let wrong = &entry(&entries, "wrong").verdict;
+    assert_eq!(wrong.status, Status::Fails);
+    let last = wrong.evidence.iter().last().expect("evidence").text.clone();
+    assert!(
+        last.starts_with("singular set over all joins: ") && last.contains("= −2"),
+        "{last}"
+    );
+    let t39 = &run(None, Some("T39")).expect("the document files")[0].verdict;
+    assert_eq!(t39.status, Status::Holds);
+}

@@ -32,6 +32,7 @@ pub mod exact_ends;
 pub mod exceptional;
 pub mod independence;
 pub mod join;
+pub mod join_singular;
 pub mod local_control;
 pub mod maxima;
 pub mod memo;

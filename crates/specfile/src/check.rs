@@ -148,6 +148,16 @@ pub enum Check {
         conditions: Vec<Condition>,
         segments: JoinSegments,
     },
+    /// Every join of the basis (each kind, same and different parameters)
+    /// breaks exactly at printed parameter values: its pivots vanish there
+    /// and nowhere else.
+    JoinSingular {
+        wrt: Wrt,
+        /// Each segment's copies of the parameters (different parameters).
+        copies: [Vec<Sym>; 2],
+        /// The printed values `(parameter index, value)`.
+        values: Vec<(usize, Sym)>,
+    },
     /// Unity and nonnegativity on the range: the convex-hull property of
     /// every curve `Σ bᵢPᵢ` (the standard sufficient condition).
     ConvexHull {

@@ -278,6 +278,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             }
         }
         "join" => crate::join_read::join(src, spec, c)?,
+        "join-singular" => crate::join_read::join_singular(src, spec, c)?,
         "continuity" => {
             if spec.functions.len() < 2 {
                 return src.invalid(c.check.span(), "claims.check", "continuity at knots needs at least two segment functions (piece k of the B-spline is function n − 1 − k)".into());
@@ -310,7 +311,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             return src.invalid(
                 c.check.span(),
                 "claims.check",
-                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, continuity, local-control, all or not-printed"),
+                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, all or not-printed"),
             );
         }
     };

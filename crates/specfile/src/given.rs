@@ -532,6 +532,8 @@ impl<'a> Substitution<'a> {
             | Check::Continuity { .. }
             | Check::LocalControl { .. }
             | Check::All { .. }
+            // read without fixed values or ranges (its values index the parameters)
+            | Check::JoinSingular { .. }
             | Check::NotPrinted { .. } => {}
         }
         Ok(c)

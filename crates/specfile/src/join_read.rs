@@ -254,3 +254,60 @@ fn param_tables(
     }
     Ok(out)
 }
+
+/// `check = "join-singular"`: `values = ["m = -2"]`, the printed parameter
+/// values where the joins break; each segment's copies as printed
+/// (`segment-params`) or `p1`, `p2`.
+pub(crate) fn join_singular(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check> {
+    if c.at.is_some() || c.ranges.is_some() || c.region.is_some() || c.range.is_some() {
+        return src.invalid(
+            c.check.span(),
+            "claims.check",
+            "`join-singular` is about the whole declared range: no fixed values or ranges".into(),
+        );
+    }
+    let copies = match &c.segment_params {
+        Some(tables) => param_tables(src, spec, c, tables, "segment-params")?,
+        None => JoinSegments {
+            points: [Vec::new(), Vec::new()],
+            printed: None,
+            also: None,
+        }
+        .param_copies(spec),
+    };
+    let values = need(src, c, &c.values, "values")?
+        .iter()
+        .map(|item| {
+            let text = item.get_ref();
+            let parsed = text.split_once('=').and_then(|(name, value)| {
+                spec.params
+                    .iter()
+                    .position(|p| p.name == name.trim() || p.symbol == name.trim())
+                    .map(|i| (i, value))
+            });
+            let Some((i, value)) = parsed else {
+                return src.invalid(
+                    item.span(),
+                    "claims.values",
+                    format!("`{text}`: expected `parameter = value`"),
+                );
+            };
+            let value = spec
+                .parse_formula(value, &[])
+                .map_err(|e| src.formula_error(item, e))?;
+            if !value.variables().is_empty() {
+                return src.invalid(
+                    item.span(),
+                    "claims.values",
+                    format!("`{text}`: the value is a number"),
+                );
+            }
+            Ok((i, value))
+        })
+        .collect::<Result<Vec<_>>>()?;
+    Ok(Check::JoinSingular {
+        wrt: wrt_field(src, spec, c.wrt.as_ref())?,
+        copies,
+        values,
+    })
+}

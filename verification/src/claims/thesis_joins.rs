@@ -1,25 +1,20 @@
 //! Seed 001, the thesis: the endpoint lists of Chapter 4 and (4.30), the
-//! curve join formulas (4.6)–(4.18), the revised range (−2, 1], and the
-//! surface joins of Chapter 5 ((5.13)–(5.47), the cylinder of 5.4.3 and the
-//! Appendix 1 listing).
+//! cylinder of 5.4.3 and the Appendix 1 listing, and the umbrella T26 over
+//! the surface joins (the curve and surface join formulas (4.6)–(4.18),
+//! (5.13)–(5.47) and the revised range (−2, 1] are data: the thesis's
+//! document file).
 //!
 //! Conventions, as the text states them: the first curve `Q₁` has control
 //! points `P₀…P₃`, the second `Q₂` has `P₄…P₇`; with different parameters the
-//! text gives `m₁` to `Q₂` and `m₂` to `Q₁`. Surfaces `S₁(u, v; m₁, m₂)`,
-//! `S₂(u, v; m₁*, m₂*)` join across `v` with, per the theorems, `m₁ = m₁*`;
-//! with different parameters the proofs' equations (5.20)–(5.22) give the
-//! cross-boundary parameter `m₁*` to `S₂` and `m₂` to `S₁`, as for curves
-//! (see [`surface`]); the printed point formulas apply to every column.
+//! text gives `m₁` to `Q₂` and `m₂` to `Q₁`.
 
 use rug::Rational;
 use trig_core::Family;
-use trig_deriv::{End, JoinKind, Wrt, curve_endpoint_derivatives, endpoint_derivatives};
+use trig_deriv::{End, Wrt, curve_endpoint_derivatives, endpoint_derivatives};
 use trig_symbolic::Sym;
 
 use crate::claim::{Claim, umbrella};
 use trig_judge::exact::{identities, symbols};
-use trig_judge::join::{Printed, PrintedJoin};
-use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
 mod cylinder;
@@ -45,10 +40,6 @@ pub const CLAIMS: &[Claim] = &[
         id: "T26",
         check: t26,
     },
-    Claim {
-        id: "T39",
-        check: t39,
-    },
 ];
 
 fn v(name: &str) -> Sym {
@@ -66,23 +57,6 @@ fn lin(a: i64, m: &Sym, b: i64) -> Sym {
 
 fn p(i: usize) -> Sym {
     v(&format!("P{i}"))
-}
-
-/// A thesis curve join: `(m, m)` for Condition 1, the text's `(m2, m1)`
-/// (first curve `m2`, second `m1`) for Condition 2.
-fn thesis_join(kind: JoinKind, same: bool, printed: Vec<Printed>) -> PrintedJoin<Family> {
-    let (first, second) = if same {
-        (v("m"), v("m"))
-    } else {
-        (v("m2"), v("m1"))
-    };
-    PrintedJoin::new(
-        Family::ThesisCubic,
-        kind,
-        (vec![first], vec![second]),
-        (symbols("P", 4), (4..8).map(p).collect()),
-        printed,
-    )
 }
 
 /// The umbrella over the surface joins: T26a–T26i are data (decided by
@@ -230,63 +204,4 @@ fn t11() -> Verdict {
         }
     }
     identities(parts)
-}
-
-/// The pivots of every join of the thesis basis vanish exactly at `m = −2`.
-fn t39() -> Verdict {
-    let mut evidence = Vec::new();
-    let mut singular = std::collections::BTreeSet::new();
-    for kind in JoinKind::ALL {
-        for same in [true, false] {
-            let join = thesis_join(kind, same, vec![]);
-            let setup = trig_deriv::JoinSetup {
-                basis: join.basis,
-                first_params: &join.first_params,
-                second_params: &join.second_params,
-                wrt: Wrt::Angle,
-                h: (Sym::one(), Sym::one()),
-                factors: trig_deriv::default_factors(),
-            };
-            match trig_deriv::solve_join(&setup, kind, &join.first, &join.second) {
-                Ok(solved) => {
-                    let conditions: Vec<String> = solved
-                        .forced
-                        .iter()
-                        .flat_map(|f| trig_deriv::vanishing(&f.pivot))
-                        .collect();
-                    singular.extend(conditions.iter().cloned());
-                    evidence.push(format!(
-                        "{kind} ({}): pivots vanish where {}",
-                        if same { "same m" } else { "different m" },
-                        if conditions.is_empty() {
-                            "never".to_string()
-                        } else {
-                            conditions.join(", ")
-                        }
-                    ));
-                }
-                Err(e) => evidence.push(format!("{kind}: {e}")),
-            }
-        }
-    }
-    // each shape parameter at −2, described by the same function
-    let expected: std::collections::BTreeSet<String> = ["m", "m1", "m2"]
-        .iter()
-        .flat_map(|name| trig_deriv::vanishing(&(v(name) + &n(2))))
-        .collect();
-    let only_minus_two = singular.is_subset(&expected);
-    let status = if only_minus_two && !singular.is_empty() {
-        Status::Holds
-    } else {
-        Status::Fails
-    };
-    evidence.push(format!(
-        "singular set over all joins: {}",
-        singular.into_iter().collect::<Vec<_>>().join(", ")
-    ));
-    Verdict::new(
-        status,
-        "pivots of the exact join solution (Gauss–Jordan over Q(m, α, β)) and where they vanish",
-        evidence,
-    )
 }

@@ -9,6 +9,7 @@ use trig_symbolic::Sym;
 
 use trig_judge::domain::param_symbols;
 use trig_judge::join::{Printed, PrintedJoin, audit, conventions, other_reading};
+use trig_judge::join_singular::{Segments, join_singularities};
 use trig_verdict::verdict::Verdict;
 
 /// What a join claim states besides its conditions.
@@ -83,4 +84,39 @@ fn list(xs: &[Sym]) -> String {
         .map(ToString::to_string)
         .collect::<Vec<_>>()
         .join(", ")
+}
+
+/// Where the joins of the basis break, against the printed values (each
+/// of the parameter and of its segment copies).
+pub fn join_singular(
+    spec: &Spec,
+    wrt: Wrt,
+    copies: &[Vec<Sym>; 2],
+    values: &[(usize, Sym)],
+) -> Verdict {
+    let same = param_symbols(spec);
+    let printed: Vec<(Sym, Sym)> = values
+        .iter()
+        .flat_map(|(i, v)| {
+            [
+                same[*i].clone(),
+                copies[0][*i].clone(),
+                copies[1][*i].clone(),
+            ]
+            .map(|p| (p, v.clone()))
+        })
+        .collect();
+    let label = spec
+        .params
+        .iter()
+        .map(|p| p.symbol.clone())
+        .collect::<Vec<_>>()
+        .join(", ");
+    let factors = spec.join_factors().map(|f| Sym::var(&f));
+    let segments = Segments {
+        same,
+        different: copies.clone(),
+        label,
+    };
+    join_singularities(spec, wrt, factors, &segments, &printed)
 }

@@ -536,6 +536,11 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
             factors,
             conditions,
         ),
+        Check::JoinSingular {
+            wrt,
+            copies,
+            values,
+        } => joins::join_singular(spec, *wrt, copies, values),
         Check::Continuity { order } => trig_judge::continuity::bspline_continuity(spec, *order),
         Check::All { claims } => Verdict::all(
             UMBRELLA,
