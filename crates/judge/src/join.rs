@@ -217,6 +217,11 @@ impl<B: ExactBasis + Clone> PrintedJoin<B> {
         self.conventions[0]
     }
 
+    /// The printed convention as the evidence names it (`the angle θ`).
+    pub fn convention(&self) -> String {
+        the(&label(&self.basis.domain(), self.printed_wrt()))
+    }
+
     /// How the verdict is decided, as the report states it.
     pub fn method(&self) -> String {
         if self.basis.variable() == Some(Variable::UnitAngle) {
@@ -482,38 +487,6 @@ pub fn holds_as_printed<B: ExactBasis + Clone>(join: &PrintedJoin<B>) -> bool {
     join.residuals(join.printed_wrt(), &join.printed)
         .iter()
         .all(Sym::is_zero)
-}
-
-/// For information, not a verdict: whether the printed formulas hold in
-/// the printed convention when the segments carry the parameters `first`,
-/// `second` instead (another reading of the print).
-pub fn other_reading<B: ExactBasis + Clone>(
-    join: &PrintedJoin<B>,
-    first: &[Sym],
-    second: &[Sym],
-) -> String {
-    let reading = PrintedJoin {
-        first_params: first.to_vec(),
-        second_params: second.to_vec(),
-        ..join.clone()
-    };
-    let list = |xs: &[Sym]| {
-        xs.iter()
-            .map(Sym::to_unicode)
-            .collect::<Vec<_>>()
-            .join(", ")
-    };
-    format!(
-        "for information, not a verdict: read with {} on the first segment and {} on the second, the printed formulas {} with derivatives in {}",
-        list(first),
-        list(second),
-        if holds_as_printed(&reading) {
-            "hold"
-        } else {
-            "fail"
-        },
-        the(&label(&join.basis.domain(), join.printed_wrt()))
-    )
 }
 
 /// Decides a printed curve join, or a surface join by one column (see the

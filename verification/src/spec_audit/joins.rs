@@ -8,7 +8,7 @@ use trig_specfile::{Condition, JoinSegments, Spec};
 use trig_symbolic::Sym;
 
 use trig_judge::domain::param_symbols;
-use trig_judge::join::{Printed, PrintedJoin, audit, conventions, other_reading};
+use trig_judge::join::{Printed, PrintedJoin, audit, conventions, holds_as_printed};
 use trig_judge::join_singular::{Segments, join_singularities};
 use trig_verdict::verdict::Verdict;
 
@@ -77,6 +77,34 @@ pub fn printed_join(
         verdict.evidence.push(other_reading(&join, first, second));
     }
     verdict
+}
+
+/// For information, not a verdict: whether the printed formulas hold in
+/// the printed convention when the segments carry the parameters `first`,
+/// `second` instead (another reading of the print).
+fn other_reading(join: &PrintedJoin<&Spec>, first: &[Sym], second: &[Sym]) -> String {
+    let reading = PrintedJoin {
+        first_params: first.to_vec(),
+        second_params: second.to_vec(),
+        ..join.clone()
+    };
+    let list = |xs: &[Sym]| {
+        xs.iter()
+            .map(Sym::to_unicode)
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    format!(
+        "for information, not a verdict: read with {} on the first segment and {} on the second, the printed formulas {} with derivatives in {}",
+        list(first),
+        list(second),
+        if holds_as_printed(&reading) {
+            "hold"
+        } else {
+            "fail"
+        },
+        join.convention()
+    )
 }
 
 fn list(xs: &[Sym]) -> String {
