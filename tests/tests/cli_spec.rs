@@ -233,3 +233,84 @@ fn an_edited_printed_formula_in_a_copied_spec_file_is_caught() {
         "{md}"
     );
 }
+
+/// The thesis's document file copied to a scratch directory with its
+/// `[bases]` pointing at the shipped spec files, and the printed C¹ join
+/// formula (4.6) of claim T12 edited: the copy is audited anew, no Rust
+/// touched — a flipped sign is a correctable misprint (the sign to flip and
+/// a witness named), a wrong coefficient fails with the witness `P3 = 1,
+/// P2 = 0`: printed 3, derived 2.
+#[test]
+fn an_edited_printed_formula_in_a_copied_document_file_is_caught() {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../documents/thesis");
+    let text =
+        std::fs::read_to_string(dir.join("document.toml")).expect("the thesis's document file");
+    // every basis by its absolute path, so the copy reads the shipped spec files
+    let mut in_bases = false;
+    let absolute: String = text
+        .lines()
+        .map(|line| {
+            if line.starts_with('[') {
+                in_bases = line == "[bases]";
+            }
+            match line.split_once(" = \"") {
+                Some((name, path)) if in_bases => {
+                    let path = path.trim_end_matches('"');
+                    format!("{name} = \"{}\"\n", dir.join(path).display())
+                }
+                _ => format!("{line}\n"),
+            }
+        })
+        .collect();
+    assert_ne!(absolute, text, "the [bases] paths rewritten");
+    let start = absolute.find("id = \"T12\"").expect("claim T12");
+    let end = start
+        + absolute[start..]
+            .find("[[claims]]")
+            .expect("the next claim");
+    let printed = r#""P5 = 2*P3 - P2""#;
+    assert!(absolute[start..end].contains(printed), "the printed (4.6)");
+    let audit = |edited: &str, name: &str| {
+        let copy = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
+            .join("cli_spec_document")
+            .join(name);
+        std::fs::create_dir_all(&copy).expect("scratch dir");
+        // the data files beside the document file (the printed tables) come along
+        for entry in std::fs::read_dir(&dir).expect("the thesis's folder") {
+            let path = entry.expect("a file of the folder").path();
+            if let Some(name) = path.file_name().filter(|n| *n != "document.toml") {
+                std::fs::copy(&path, copy.join(name)).expect("copy a data file");
+            }
+        }
+        let file = copy.join("document.toml");
+        let block = absolute[start..end].replace(printed, edited);
+        std::fs::write(
+            &file,
+            format!("{}{block}{}", &absolute[..start], &absolute[end..]),
+        )
+        .expect("write the copy");
+        stdout_ok(&[
+            "audit",
+            "--spec",
+            &file.display().to_string(),
+            "--claim",
+            "T12",
+        ])
+    };
+    let md = audit(r#""P5 = 2*P3 + P2""#, "sign");
+    assert!(
+        md.contains("T12 — holds-after-correction")
+            && md.contains("flip the sign of the printed term P₂ in the formula for P₅")
+            && md.contains("**Witness:** derived (angle θ) at `P₂ = 1, P₃ = 0`: printed P₅ = `1`, derived P₅ = `−1`"),
+        "{md}"
+    );
+    let md = audit(r#""P5 = 3*P3 - P2""#, "coefficient");
+    assert!(
+        md.contains("T12 — fails")
+            && md.contains("use the derived formula: P₄ = P₃; P₅ = −P₂ + 2·P₃")
+            && md.contains("at `P₃ = 1, P₂ = 0`: printed P₅ = `3`, derived P₅ = `2`"),
+        "{md}"
+    );
+    // the copy as shipped holds, as the document file does
+    assert!(audit(printed, "as-printed").contains("T12 — holds\n"));
+}

@@ -412,3 +412,167 @@ fn the_maximal_set_of_independence_with_one_parameter() {
     assert_eq!(w.status, Status::Fails, "{w:?}");
     assert!(format!("{w:?}").contains("alpha = π"), "{w:?}");
 }
+
+/// A join claim names its segments as the paper prints them — the
+/// thesis's `P0…P3` and `P4…P7`, `m2` on the first curve and `m1` on the
+/// second — and is decided as the same join in the default names: the
+/// sign typo of (4.7) named in the printed names.
+#[test]
+fn a_join_with_segments_named_as_printed_is_the_join_in_the_default_names() {
+    let printed = "[[claims]]\nid = \"printed\"\nsource = \"(4.7)\"\nstatement = \"C1\"\ncheck = \"join\"\njoin = \"C1\"\nwrt = \"angle\"\ndifferent = true\npoints = [[\"P0\", \"P1\", \"P2\", \"P3\"], [\"P4\", \"P5\", \"P6\", \"P7\"]]\nsegment-params = [{ m = \"m2\" }, { m = \"m1\" }]\nconditions = [\"P5 = ((m2 + 2)*P3 - (m1 + 2)*P3 - (m2 + 2)*P2)/(m1 + 2)\"]\n";
+    let default = "[[claims]]\nid = \"default\"\nsource = \"(4.7)\"\nstatement = \"C1\"\ncheck = \"join\"\njoin = \"C1\"\nwrt = \"angle\"\ndifferent = true\nconditions = [\"Q1 = ((m1 + 2)*P3 - (m2 + 2)*P3 - (m1 + 2)*P2)/(m2 + 2)\"]\n";
+    let entries = spec_audit::audit(&thesis_cubic_with(&format!("{printed}\n{default}")));
+    let (p, d) = (
+        &entry(&entries, "printed").verdict,
+        &entry(&entries, "default").verdict,
+    );
+    assert_eq!(p.status, Status::HoldsAfterCorrection);
+    assert_eq!(d.status, p.status);
+    assert_eq!(
+        p.correction.as_deref(),
+        Some("flip the sign of the printed term (−m₁ − 2)·P₃ in the formula for P₅")
+    );
+    assert_eq!(
+        d.correction.as_deref(),
+        Some("flip the sign of the printed term (−m₂ − 2)·P₃ in the formula for Q₁")
+    );
+}
+
+/// The printed terms of a formula are its additive terms and, inside a
+/// bracket of control points times a scalar, the bracket's own terms; the
+/// sign in front of the bracket is one printed sign too. `P3 − (P3 − P2)`
+/// for `Q1 = 2P3 − P2` is one flipped bracket; `α(P3 + P2) + P3` for the
+/// G¹ join one flipped term inside it.
+#[test]
+fn a_sign_typo_is_one_printed_term_or_one_bracket() {
+    let claim = |id: &str, kind: &str, formula: &str| {
+        format!(
+            "[[claims]]\nid = \"{id}\"\nsource = \"test\"\nstatement = \"test\"\ncheck = \"join\"\njoin = \"{kind}\"\nwrt = \"angle\"\nconditions = [\"Q0 = P3\", \"{formula}\"]\n"
+        )
+    };
+    let entries = spec_audit::audit(&thesis_cubic_with(&format!(
+        "{}\n{}\n{}",
+        claim("bracket", "C1", "Q1 = P3 - 1*(P3 - P2)"),
+        claim("inside", "G1", "Q1 = alpha*(P3 + P2) + P3"),
+        claim("holds", "G1", "Q1 = alpha*(P3 - P2) + P3"),
+    )));
+    let bracket = &entry(&entries, "bracket").verdict;
+    assert_eq!(bracket.status, Status::HoldsAfterCorrection);
+    let fix = bracket.correction.as_deref().expect("a correction");
+    assert!(
+        fix.contains("P₃") && fix.contains("P₂") && fix.ends_with("in the formula for Q₁"),
+        "{fix}"
+    );
+    let inside = &entry(&entries, "inside").verdict;
+    assert_eq!(inside.status, Status::HoldsAfterCorrection);
+    assert_eq!(
+        inside.correction.as_deref(),
+        Some("flip the sign of the printed term α·P₂ in the formula for Q₁")
+    );
+    assert_eq!(entry(&entries, "holds").verdict.status, Status::Holds);
+}
+
+/// `wrt = "unstated"`: a paper that does not say with respect to what it
+/// differentiates. Every convention of the basis is judged (a print that
+/// holds only in another one would hold after that correction); a declared
+/// convention shows the others for information only.
+#[test]
+fn an_unstated_convention_is_a_correction_where_another_one_holds() {
+    let claim = |id: &str, wrt: &str, kind: &str, formula: &str| {
+        format!(
+            "[[claims]]\nid = \"{id}\"\nsource = \"test\"\nstatement = \"test\"\ncheck = \"join\"\njoin = \"{kind}\"\nwrt = \"{wrt}\"\nconditions = [\"Q0 = P3\", \"{formula}\"]\n"
+        )
+    };
+    let entries = spec_audit::audit(&thesis_cubic_with(&format!(
+        "{}\n{}",
+        claim("declared", "angle", "C1", "Q1 = 2*P3 - P2"),
+        claim("unstated", "unstated", "C1", "Q1 = 2*P3 - P2"),
+    )));
+    for id in ["declared", "unstated"] {
+        assert_eq!(entry(&entries, id).verdict.status, Status::Holds, "{id}");
+    }
+    let texts = |id: &str| {
+        entry(&entries, id)
+            .verdict
+            .evidence
+            .iter()
+            .map(|e| e.text.clone())
+            .collect::<Vec<_>>()
+            .join("\n")
+    };
+    // the declared convention shows the others for information only
+    assert!(texts("declared").contains("for information, not a verdict"));
+    assert!(!texts("unstated").contains("for information, not a verdict"));
+}
+
+/// `also-scope`: a local-control claim decided under the other reading of
+/// its parameter's scope too, for information. The thesis's `m_i` enters
+/// its own segment only (T48 holds); one `m` for the whole curve enters
+/// every segment, so that reading fails — and the other way round.
+#[test]
+fn the_other_reading_of_a_scope_is_decided_for_information() {
+    let claim = |id: &str, scope: &str, also: &str| {
+        format!(
+            "[[claims]]\nid = \"{id}\"\nsource = \"test\"\nstatement = \"test\"\ncheck = \"local-control\"\ncontrol = \"m\"\nscope = \"{scope}\"\nalso-scope = \"{also}\"\nsegments = [0]\n"
+        )
+    };
+    let entries = spec_audit::audit(&thesis_cubic_with(&format!(
+        "{}\n{}",
+        claim("segment", "segment", "curve"),
+        claim("curve", "curve", "segment"),
+    )));
+    let line = |id: &str| {
+        let v = &entry(&entries, id).verdict;
+        let last = v.evidence.iter().last().expect("evidence").text.clone();
+        (v.status, last)
+    };
+    assert_eq!(
+        line("segment"),
+        (
+            Status::Holds,
+            "for information, not a verdict: the other reading, one m for the whole curve, fails"
+                .into()
+        )
+    );
+    assert_eq!(
+        line("curve"),
+        (
+            Status::Fails,
+            "for information, not a verdict: the other reading, one m per segment, holds".into()
+        )
+    );
+    let t48 = &run(None, Some("T48")).expect("the document files")[0].verdict;
+    assert_eq!(t48.status, Status::Holds);
+}
+
+/// `join-singular`: where the joins of a basis break, from the pivots of
+/// every join's exact solution. The thesis's joins break at `m = −2`
+/// (T39 holds); printing `m = 1` instead fails, the singular set shown.
+#[test]
+fn the_joins_break_at_the_printed_values_only() {
+    let claim = |id: &str, value: &str| {
+        format!(
+            "[[claims]]\nid = \"{id}\"\nsource = \"test\"\nstatement = \"test\"\ncheck = \"join-singular\"\nvalues = [\"m = {value}\"]\n"
+        )
+    };
+    let text = std::fs::read_to_string(
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../examples/thesis-cubic.toml"),
+    )
+    .expect("read");
+    let spec = Spec::from_str_named(
+        &format!("{text}\n{}\n{}", claim("right", "-2"), claim("wrong", "1")),
+        "thesis-cubic-singular.toml",
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let entries = spec_audit::audit(&spec);
+    assert_eq!(entry(&entries, "right").verdict.status, Status::Holds);
+    let wrong = &entry(&entries, "wrong").verdict;
+    assert_eq!(wrong.status, Status::Fails);
+    let last = wrong.evidence.iter().last().expect("evidence").text.clone();
+    assert!(
+        last.starts_with("singular set over all joins: ") && last.contains("= −2"),
+        "{last}"
+    );
+    let t39 = &run(None, Some("T39")).expect("the document files")[0].verdict;
+    assert_eq!(t39.status, Status::Holds);
+}

@@ -29,6 +29,8 @@
 //! are linearly independent, so neither a `Bᵢ` nor their sum is zero, in
 //! an integral domain. So [`audit`] decides a surface join too.
 
+use std::ops::Range;
+
 use trig_core::{Domain, Variable};
 use trig_deriv::{
     EndDerivatives, JoinKind, JoinSetup, Wrt, rate, solve_join, solve_join_for, solve_join_with,
@@ -55,6 +57,9 @@ pub struct Printed {
     pub point: usize,
     pub terms: Vec<Sym>,
     pub denominator: Sym,
+    /// Ranges of `terms` printed as one bracket (`α(P3 − P2)`), whose sign
+    /// is one printed sign too.
+    pub brackets: Vec<Range<usize>>,
     /// Where the printed formula divides by zero inside the printed
     /// ranges (stated with the claim): it gives no join there.
     pub singular: Vec<String>,
@@ -72,8 +77,15 @@ impl Printed {
             point,
             terms,
             denominator,
+            brackets: Vec::new(),
             singular: Vec::new(),
         }
+    }
+
+    /// The same formula with the printed brackets `brackets`.
+    pub fn brackets(mut self, brackets: Vec<Range<usize>>) -> Self {
+        self.brackets = brackets;
+        self
     }
 
     /// The same formula, singular where stated.
@@ -86,10 +98,19 @@ impl Printed {
         sum(&self.terms) / &self.denominator
     }
 
-    /// The same formula with term `k`'s sign flipped.
-    fn flipped(&self, k: usize) -> Printed {
+    /// The printed signs: each term, then each bracket of several terms.
+    fn signs(&self) -> impl Iterator<Item = Range<usize>> + '_ {
+        (0..self.terms.len())
+            .map(|k| k..k + 1)
+            .chain(self.brackets.iter().filter(|r| r.len() > 1).cloned())
+    }
+
+    /// The same formula with the sign of the terms `k` flipped.
+    fn flipped(&self, k: Range<usize>) -> Printed {
         let mut terms = self.terms.clone();
-        terms[k] = -terms[k].clone();
+        for t in &mut terms[k] {
+            *t = -t.clone();
+        }
         Printed {
             terms,
             ..self.clone()
@@ -194,6 +215,11 @@ impl<B: ExactBasis + Clone> PrintedJoin<B> {
     /// The printed convention.
     fn printed_wrt(&self) -> Wrt {
         self.conventions[0]
+    }
+
+    /// The printed convention as the evidence names it (`the angle θ`).
+    pub fn convention(&self) -> String {
+        the(&label(&self.basis.domain(), self.printed_wrt()))
     }
 
     /// How the verdict is decided, as the report states it.
@@ -598,37 +624,37 @@ fn sign_fix<B: ExactBasis + Clone>(
 ) -> Option<String> {
     let names = join.names();
     let wrt = join.printed_wrt();
-    let flips: Vec<(usize, usize)> = join
+    let flips: Vec<(usize, Range<usize>)> = join
         .printed
         .iter()
         .enumerate()
-        .flat_map(|(i, p)| (0..p.terms.len()).map(move |k| (i, k)))
+        .flat_map(|(i, p)| p.signs().map(move |k| (i, k)))
         .collect();
-    let with = |chosen: &[(usize, usize)]| {
+    let with = |chosen: &[(usize, Range<usize>)]| {
         let mut printed = join.printed.clone();
-        for &(i, k) in chosen {
-            printed[i] = printed[i].flipped(k);
+        for (i, k) in chosen {
+            printed[*i] = printed[*i].flipped(k.clone());
         }
         printed
     };
     let zero = |r: &[Sym]| r.iter().all(Sym::is_zero);
-    let singles = flips.iter().map(|f| vec![*f]);
+    let singles = flips.iter().map(|f| vec![f.clone()]);
     let pairs = flips.iter().enumerate().flat_map(|(a, f)| {
         flips[a + 1..]
             .iter()
             .filter(move |g| g.0 != f.0)
-            .map(move |g| vec![*f, *g])
+            .map(move |g| vec![f.clone(), g.clone()])
     });
     let found = singles
         .chain(pairs)
         .find(|chosen| zero(&residuals(wrt, &with(chosen))))?;
     let terms: Vec<String> = found
         .iter()
-        .map(|&(i, k)| {
-            let p = &join.printed[i];
+        .map(|(i, k)| {
+            let p = &join.printed[*i];
             format!(
                 "the printed term {} in the formula for {}",
-                p.terms[k].to_combination(&names),
+                sum(&p.terms[k.clone()]).to_combination(&names),
                 join.second[p.point].to_unicode()
             )
         })

@@ -35,6 +35,7 @@ pub mod independence;
 pub mod interpolant;
 pub mod interpolant_point;
 pub mod join;
+pub mod join_singular;
 pub mod local_control;
 pub mod maxima;
 pub mod memo;

@@ -301,6 +301,29 @@ pub fn local_control<B: ExactBasis>(
     v
 }
 
+/// For information, not a verdict: the printed claim decided under
+/// another reading of what is varied (one value of a parameter per segment
+/// or for the whole curve), as one line.
+pub fn other_reading<B: ExactBasis>(basis: &B, control: &Control, printed: &[i64]) -> Evidence {
+    let v = local_control(basis, control, 0, printed);
+    let params = basis.parameters();
+    let symbol = |name: &str| {
+        params
+            .iter()
+            .find(|p| p.name == name)
+            .map_or_else(|| name.to_string(), |p| p.symbol.clone())
+    };
+    let reading = match control {
+        Control::Point => "the control point P_j".to_string(),
+        Control::SegmentParameter { name, .. } => format!("one {} per segment", symbol(name)),
+        Control::CurveParameter { name } => format!("one {} for the whole curve", symbol(name)),
+    };
+    Evidence::note(format!(
+        "for information, not a verdict: the other reading, {reading}, {}",
+        v.status
+    ))
+}
+
 /// A parameter with one value for the whole curve: it enters every
 /// segment when one `∂b_k/∂p ≢ 0`, so a finite printed set fails with the
 /// first segment past it (the same weights in every segment).

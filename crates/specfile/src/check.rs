@@ -43,9 +43,42 @@ pub struct Condition {
     /// printed denominator: `value = Σ terms / denominator`.
     pub terms: Vec<Sym>,
     pub denominator: Sym,
+    /// Ranges of `terms` printed as one bracket of control points times a
+    /// scalar (`α(P3 − P2)`): its sign is one printed sign too.
+    pub brackets: Vec<std::ops::Range<usize>>,
     /// Divisions of the printed formula not proved nonzero over the ranges
     /// (why, with the witness): the formula is singular there.
     pub singular: Vec<String>,
+}
+
+/// The two segments of a printed join as the paper names them: each
+/// segment's control points (`P0…`, `Q0…` unless printed otherwise) and,
+/// with different parameters, each segment's own copies of the parameters
+/// as printed (`p1`, `p2` unless printed otherwise).
+#[derive(Debug, Clone, PartialEq)]
+pub struct JoinSegments {
+    pub points: [Vec<String>; 2],
+    /// The copies as printed (`segment-params`); `None`: `p1`, `p2`.
+    pub printed: Option<[Vec<Sym>; 2]>,
+    /// Another reading of the segments' parameters (`also-params`): the
+    /// printed formulas are decided under it too, for information.
+    pub also: Option<[Vec<Sym>; 2]>,
+}
+
+impl JoinSegments {
+    /// Each segment's copies of the parameters of `spec` (with different
+    /// parameters): as printed, else `p1` on the first and `p2` on the
+    /// second for each parameter `p`.
+    pub fn param_copies(&self, spec: &crate::spec::Spec) -> [Vec<Sym>; 2] {
+        self.printed.clone().unwrap_or_else(|| {
+            [1, 2].map(|k| {
+                spec.params
+                    .iter()
+                    .map(|p| Sym::var(&format!("{}{k}", p.name)))
+                    .collect()
+            })
+        })
+    }
 }
 
 /// What a claim of the file asserts, in a form the audit can decide.
@@ -107,9 +140,24 @@ pub enum Check {
     Join {
         kind: JoinKind,
         wrt: Wrt,
+        /// The claim declares `wrt` (judged there alone); without it
+        /// (`wrt = "unstated"`) a formula that holds in another convention
+        /// holds after that correction.
+        declared: bool,
         different: bool,
         factors: [String; 2],
         conditions: Vec<Condition>,
+        segments: JoinSegments,
+    },
+    /// Every join of the basis (each kind, same and different parameters)
+    /// breaks exactly at printed parameter values: its pivots vanish there
+    /// and nowhere else.
+    JoinSingular {
+        wrt: Wrt,
+        /// Each segment's copies of the parameters (different parameters).
+        copies: [Vec<Sym>; 2],
+        /// The printed values `(parameter index, value)`.
+        values: Vec<(usize, Sym)>,
     },
     /// Unity and nonnegativity on the range: the convex-hull property of
     /// every curve `Σ bᵢPᵢ` (the standard sufficient condition).
@@ -166,7 +214,13 @@ pub enum Check {
     /// Local control of that B-spline (segment `i` is `Σ b_k P_{i+k}`):
     /// the varied control enters exactly the printed segments `j + o`,
     /// `o ∈ segments`.
-    LocalControl { varied: Varied, segments: Vec<i64> },
+    LocalControl {
+        varied: Varied,
+        segments: Vec<i64>,
+        /// Another reading of a parameter's scope (`also-scope`), decided
+        /// too, for information.
+        also: Option<Varied>,
+    },
     /// Every listed claim of the file, each decided as it is stated: an
     /// umbrella over printed parts (a theorem whose conditions the file
     /// states one claim each).

@@ -4,10 +4,10 @@
 use rug::Rational;
 use toml::Spanned;
 use trig_core::{Affine, parse_exact};
-use trig_deriv::{End, JoinKind, Wrt};
+use trig_deriv::{End, Wrt};
 use trig_symbolic::{Names, Sym};
 
-use crate::check::{Check, Condition, Direction, Monotone, Printed, Quantifier, SpecClaim, Varied};
+use crate::check::{Check, Direction, Monotone, Printed, Quantifier, SpecClaim, Varied};
 use crate::error::{Result, SpecError};
 use crate::given_read::{given, one_param_range};
 use crate::raw::RawClaim;
@@ -41,24 +41,9 @@ impl Spec {
     pub fn join_factors(&self) -> [String; 2] {
         self.names().factors().map(|f| f.to_string())
     }
-
-    /// The parameters of the two segments of a join with different
-    /// parameters: `p1`, `p2` for each parameter `p`.
-    pub fn segment_params(&self, segment: usize) -> Vec<Sym> {
-        self.params
-            .iter()
-            .map(|p| Sym::var(&format!("{}{segment}", p.name)))
-            .collect()
-    }
-
-    fn control_points(&self) -> Vec<String> {
-        (0..self.functions.len())
-            .flat_map(|i| [format!("P{i}"), format!("Q{i}")])
-            .collect()
-    }
 }
 
-fn need<'r, T>(
+pub(crate) fn need<'r, T>(
     src: &Source<'_>,
     c: &'r RawClaim,
     field: &'r Option<T>,
@@ -303,7 +288,8 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                 value: formula_in(src, spec, item, "", item.get_ref(), &points)?,
             }
         }
-        "join" => join(src, spec, c)?,
+        "join" => crate::join_read::join(src, spec, c)?,
+        "join-singular" => crate::join_read::join_singular(src, spec, c)?,
         "continuity" => {
             if spec.functions.len() < 2 {
                 return src.invalid(c.check.span(), "claims.check", "continuity at knots needs at least two segment functions (piece k of the B-spline is function n − 1 − k)".into());
@@ -344,7 +330,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             return src.invalid(
                 c.check.span(),
                 "claims.check",
-                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, continuity, local-control, identity, one-maximum, all, not-printed, interpolant-nonnegative or table-arithmetic"),
+                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, all, not-printed, interpolant-nonnegative or table-arithmetic"),
             );
         }
     };
@@ -556,24 +542,44 @@ fn local_control(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check> {
                 ),
             );
         }
-        let scope = need(src, c, &c.scope, "scope")?;
-        let per_segment = match scope.get_ref().trim() {
-            "segment" => true,
-            "curve" => false,
-            other => {
-                return src.invalid(
-                    scope.span(),
-                    "claims.scope",
-                    format!("`{other}`: expected `segment` (one value per segment) or `curve` (one value for the whole curve)"),
-                );
-            }
-        };
         Varied::Parameter {
             name: name.to_string(),
-            per_segment,
+            per_segment: scope_field(src, need(src, c, &c.scope, "scope")?, "scope")?,
         }
     };
-    Ok(Check::LocalControl { varied, segments })
+    let also = match (&c.also_scope, &varied) {
+        (None, _) => None,
+        (Some(scope), Varied::Parameter { name, .. }) => Some(Varied::Parameter {
+            name: name.clone(),
+            per_segment: scope_field(src, scope, "also-scope")?,
+        }),
+        (Some(scope), Varied::Point) => {
+            return src.invalid(
+                scope.span(),
+                "claims.also-scope",
+                "`also-scope` belongs to a parameter".into(),
+            );
+        }
+    };
+    Ok(Check::LocalControl {
+        varied,
+        segments,
+        also,
+    })
+}
+
+/// `segment` (one value per segment: true) or `curve` (one value for the
+/// whole curve).
+fn scope_field(src: &Source<'_>, scope: &Spanned<String>, field: &str) -> Result<bool> {
+    match scope.get_ref().trim() {
+        "segment" => Ok(true),
+        "curve" => Ok(false),
+        other => src.invalid(
+            scope.span(),
+            &format!("claims.{field}"),
+            format!("`{other}`: expected `segment` (one value per segment) or `curve` (one value for the whole curve)"),
+        ),
+    }
 }
 
 /// `values = ["P0 = (x, y)", …]` (one point per function, in order) and
@@ -804,85 +810,6 @@ fn symmetry(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check> {
     })
 }
 
-fn join(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check> {
-    let kind_field = need(src, c, &c.join, "join")?;
-    let kind: JoinKind = kind_field
-        .get_ref()
-        .trim()
-        .parse()
-        .map_err(|_| SpecError::Invalid {
-            at: src.at(kind_field.span().start),
-            field: "claims.join".into(),
-            message: format!(
-                "`{}`: expected C0, C1, C2, C3, G1 or G2",
-                kind_field.get_ref().trim()
-            ),
-        })?;
-    let different = c.different.unwrap_or(false);
-    let n = spec.functions.len();
-    // the names a printed condition may use, each reading as one thing
-    let mut names = spec.names();
-    let clash = |e: trig_symbolic::NameClash| SpecError::Invalid {
-        at: src.at(c.check.span().start),
-        field: "claims".into(),
-        message: format!("claim `{}`: {e}", c.id.get_ref().trim()),
-    };
-    let mut extra = Vec::new();
-    for point in spec.control_points() {
-        names.fixed(&point, "a control point").map_err(clash)?;
-        extra.push(point);
-    }
-    let factors = names.factors().map(|f| f.to_string());
-    extra.extend(factors.iter().cloned());
-    let mut segment_ranges = Vec::new();
-    if different {
-        for k in [1, 2] {
-            for (p, s) in spec.params.iter().zip(spec.segment_params(k)) {
-                let copy = s.to_string();
-                let what = format!("`{}` on segment {k}", p.name);
-                names.fixed(&copy, &what).map_err(clash)?;
-                extra.push(copy.clone());
-                segment_ranges.push((copy, p.range.clone()));
-            }
-        }
-    }
-    let conditions = need(src, c, &c.conditions, "conditions")?
-        .iter()
-        .map(|item| {
-            let text = item.get_ref();
-            let Some((lhs, rhs)) = text.split_once('=') else {
-                return src.invalid(item.span(), "claims.conditions", format!("`{text}`: expected `Qk = formula in P0…P{}, Q0…`", n - 1));
-            };
-            let point = lhs.trim().strip_prefix('Q').and_then(|k| k.parse::<usize>().ok()).filter(|k| *k < n);
-            let Some(point) = point else {
-                return src.invalid(item.span(), "claims.conditions", format!("`{}`: expected a control point Q0…Q{} of the second segment on the left", lhs.trim(), n - 1));
-            };
-            let (value, singular) = spec
-                .parse_claim_formula(rhs, &extra, &segment_ranges)
-                .map_err(|mut e| {
-                    e.position += lhs.chars().count() + 1;
-                    src.formula_error(item, e)
-                })?;
-            if different {
-                if let Some(p) = spec.params.iter().find(|p| value.variables().contains(&p.name)) {
-                    return src.invalid(item.span(), "claims.conditions", format!("`{text}`: with different parameters write {0}1 (first segment) or {0}2 (second), not {0}", p.name));
-                }
-            }
-            let (terms, denominator) = spec
-                .printed_terms(rhs, &extra)
-                .map_err(|e| src.formula_error(item, e))?;
-            Ok(Condition { point, text: text.trim().to_string(), value, terms, denominator, singular })
-        })
-        .collect::<Result<Vec<_>>>()?;
-    Ok(Check::Join {
-        kind,
-        wrt: wrt_field(src, spec, c.wrt.as_ref())?,
-        different,
-        factors,
-        conditions,
-    })
-}
-
 fn end_field(src: &Source<'_>, end: &Spanned<String>) -> Result<End> {
     match end.get_ref().trim() {
         "start" | "0" => Ok(End::Start),
@@ -898,7 +825,11 @@ fn end_field(src: &Source<'_>, end: &Spanned<String>) -> Result<End> {
 /// `wrt`: `angle` (the declared angle of the legacy variables, the angle
 /// of the atoms otherwise), `u` (the unit parameter, `θ = πu/2` for the
 /// thesis), or the variable's own name.
-fn wrt_field(src: &Source<'_>, spec: &Spec, wrt: Option<&Spanned<String>>) -> Result<Wrt> {
+pub(crate) fn wrt_field(
+    src: &Source<'_>,
+    spec: &Spec,
+    wrt: Option<&Spanned<String>>,
+) -> Result<Wrt> {
     let text = wrt.map_or("angle", |w| w.get_ref().trim());
     let span = wrt.map_or(0..0, |w| w.span());
     let angle_is_variable = spec

@@ -613,7 +613,7 @@ mod tests {
                 }
                 other => panic!("{other:?}"),
             },
-            DocumentClaim::BuiltIn { .. } => panic!("a stated claim"),
+            _ => panic!("a stated claim"),
         };
         let check = "interpolant-nonnegative";
         let doc = read("data = \"table-4.6.tsv\"\n", check).unwrap();

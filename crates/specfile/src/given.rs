@@ -213,16 +213,15 @@ impl Spec {
 /// `λ = 0`, and outside a claim's box `λ ∈ [0, 1]`).
 fn singular_again(spec: &Spec, check: &mut Check) {
     let mut ranges = spec.ranges();
-    if matches!(
-        check,
-        Check::Join {
-            different: true,
-            ..
-        }
-    ) {
-        for k in [1, 2] {
-            for p in &spec.params {
-                ranges.push((format!("{}{k}", p.name), p.range.clone()));
+    if let Check::Join {
+        different: true,
+        segments,
+        ..
+    } = check
+    {
+        for copies in segments.param_copies(spec) {
+            for (p, copy) in spec.params.iter().zip(copies) {
+                ranges.push((copy.to_string(), p.range.clone()));
             }
         }
     }
@@ -556,6 +555,8 @@ impl<'a> Substitution<'a> {
             | Check::Continuity { .. }
             | Check::LocalControl { .. }
             | Check::All { .. }
+            // read without fixed values or ranges (its values index the parameters)
+            | Check::JoinSingular { .. }
             | Check::NotPrinted { .. }
             | Check::InterpolantNonnegative { .. }
             | Check::TableArithmetic { .. } => {}

@@ -44,6 +44,7 @@ pub mod frequencies;
 pub mod given;
 mod given_read;
 mod identity_read;
+mod join_read;
 mod load;
 mod names;
 pub mod nonvanishing;
@@ -55,8 +56,8 @@ pub mod spec;
 pub use any::{AnyBasis, OpenError};
 pub use ast::Grammar;
 pub use check::{
-    Application, Applied, Check, Condition, Curve, Direction, Identity, Monotone, Printed,
-    Quantifier, Reading, SpecClaim, Varied,
+    Application, Applied, Check, Condition, Curve, Direction, Identity, JoinSegments, Monotone,
+    Printed, Quantifier, Reading, SpecClaim, Varied,
 };
 pub use check::{Between, Fixed, Given};
 pub use document::{DocumentClaim, DocumentFile, Part};

@@ -71,11 +71,24 @@ pub struct RawClaim {
     pub join: Option<Spanned<String>>,
     pub different: Option<bool>,
     pub conditions: Option<Vec<Spanned<String>>>,
+    /// `check = "join"`: the two segments' control points as printed.
+    pub points: Option<Vec<Vec<Spanned<String>>>>,
+    /// `check = "join"`, `different = true`: each segment's parameters as
+    /// printed (`[{ m = "m2" }, { m = "m1" }]`).
+    #[serde(rename = "segment-params")]
+    pub segment_params: Option<Vec<BTreeMap<String, Spanned<String>>>>,
+    /// Another reading of `segment-params`, decided for information.
+    #[serde(rename = "also-params")]
+    pub also_params: Option<Vec<BTreeMap<String, Spanned<String>>>>,
     pub parameter: Option<Spanned<String>>,
     pub direction: Option<Spanned<String>>,
     pub control: Option<Spanned<String>>,
     pub scope: Option<Spanned<String>>,
     pub segments: Option<Vec<i64>>,
+    /// `check = "local-control"`: another reading of `scope`, decided for
+    /// information.
+    #[serde(rename = "also-scope")]
+    pub also_scope: Option<Spanned<String>>,
     /// `for = "some value"` or `"no value"`.
     #[serde(rename = "for")]
     pub quantifier: Option<Spanned<String>>,

@@ -10,7 +10,7 @@ use toml::Spanned;
 use trig_core::{Affine, Domain, Parameter, Variable};
 use trig_symbolic::Sym;
 
-use crate::ast::{self, Expr};
+use crate::ast::{self, Expr, Node};
 use crate::check::SpecClaim;
 use crate::error::{FormulaError, Result, SpecError};
 use crate::formula::{Scope, linear, lower};
@@ -61,6 +61,63 @@ pub struct Spec {
 
 /// The additive terms of `e` with their signs: `a − (b + c)` is `+a`,
 /// `−b`, `−c`.
+/// The printed terms of `e` (signs included, as `(negated, factors,
+/// divisors, term)`): its additive pieces, and inside a bracket of control
+/// points multiplied or divided by a scalar (`α(P3 − P2)`,
+/// `[… − (4m1 + 4)P5]/2`) the bracket's own pieces, each with the scalar —
+/// a sign typo is one printed term, wherever the print brackets it.
+/// Scalars (`(m2 + 2)P3`) are never split.
+type Term<'e> = (bool, Vec<&'e Expr>, Vec<&'e Expr>, &'e Expr);
+
+/// `brackets` receives the ranges of `out` that are one printed bracket
+/// (flipping a bracket's sign is one typo too).
+fn printed_pieces<'e>(
+    e: &'e Expr,
+    points: &[String],
+    out: &mut Vec<Term<'e>>,
+    brackets: &mut Vec<std::ops::Range<usize>>,
+) {
+    let mut pieces = Vec::new();
+    additive_terms(e, false, &mut pieces);
+    for (negated, piece) in pieces {
+        let has_point = |x: &Expr| {
+            let mut found = false;
+            x.walk(&mut |n| {
+                if let Node::Name(name) = &n.node {
+                    found |= points.contains(name);
+                }
+            });
+            found
+        };
+        let bracket = |x: &Expr| {
+            matches!(x.node, Node::Add(..) | Node::Sub(..) | Node::Neg(..)) && has_point(x)
+        };
+        let (inner, factor, divisor) = match &piece.node {
+            Node::Mul(a, b) if bracket(b) && !has_point(a) => (b.as_ref(), Some(a.as_ref()), None),
+            Node::Mul(a, b) if bracket(a) && !has_point(b) => (a.as_ref(), Some(b.as_ref()), None),
+            Node::Div(a, b) if bracket(a) && !has_point(b) => (a.as_ref(), None, Some(b.as_ref())),
+            _ => {
+                out.push((negated, Vec::new(), Vec::new(), piece));
+                continue;
+            }
+        };
+        let (mut nested, mut inner_brackets) = (Vec::new(), Vec::new());
+        printed_pieces(inner, points, &mut nested, &mut inner_brackets);
+        let start = out.len();
+        brackets.extend(
+            inner_brackets
+                .into_iter()
+                .map(|r| r.start + start..r.end + start),
+        );
+        brackets.push(start..start + nested.len());
+        out.extend(nested.into_iter().map(|(n, mut f, mut d, t)| {
+            f.extend(factor);
+            d.extend(divisor);
+            (n != negated, f, d, t)
+        }));
+    }
+}
+
 fn additive_terms<'e>(e: &'e Expr, negated: bool, out: &mut Vec<(bool, &'e Expr)>) {
     match &e.node {
         ast::Node::Add(a, b) => {
@@ -74,6 +131,15 @@ fn additive_terms<'e>(e: &'e Expr, negated: bool, out: &mut Vec<(bool, &'e Expr)
         ast::Node::Neg(a) => additive_terms(a, !negated, out),
         _ => out.push((negated, e)),
     }
+}
+
+/// A printed formula's terms over its denominator, with its brackets.
+#[derive(Debug)]
+pub struct PrintedTerms {
+    pub terms: Vec<Sym>,
+    pub denominator: Sym,
+    /// Ranges of `terms` printed as one bracket.
+    pub brackets: Vec<std::ops::Range<usize>>,
 }
 
 /// Names a parameter, function or definition may not take.
@@ -147,33 +213,48 @@ impl Spec {
     }
 
     /// A printed claim formula `(t₁ ± t₂ ± …)/d` as printed: its additive
-    /// terms (signs included) and its denominator (`1` when there is none),
-    /// each exact — so that a sign typo in one printed term can be named.
+    /// terms (signs included; a bracket of the control points `points`
+    /// times or over a scalar split into its own terms, each with the
+    /// scalar, the bracket kept as a range of them) and its denominator
+    /// (`1` when there is none), each exact — so that a sign typo in one
+    /// printed term, or in front of one bracket, can be named.
     pub fn printed_terms(
         &self,
         text: &str,
         extra: &[String],
-    ) -> std::result::Result<(Vec<Sym>, Sym), FormulaError> {
+        points: &[String],
+    ) -> std::result::Result<PrintedTerms, FormulaError> {
         let e = ast::parse(text)?;
         let (num, den) = match &e.node {
             ast::Node::Div(a, b) => (a.as_ref(), Some(b.as_ref())),
             _ => (&e, None),
         };
-        let mut terms = Vec::new();
-        additive_terms(num, false, &mut terms);
+        let (mut terms, mut brackets) = (Vec::new(), Vec::new());
+        printed_pieces(num, points, &mut terms, &mut brackets);
         let accept = |_: &Sym| Ok(());
+        let lower = |x: &Expr| self.lower_with(x, extra, &accept);
         let lowered = terms
             .into_iter()
-            .map(|(negated, t)| {
-                let v = self.lower_with(t, extra, &accept)?;
+            .map(|(negated, factors, divisors, t)| {
+                let mut v = lower(t)?;
+                for f in factors {
+                    v = lower(f)? * &v;
+                }
+                for d in divisors {
+                    v = v / &lower(d)?;
+                }
                 Ok(if negated { -v } else { v })
             })
             .collect::<std::result::Result<Vec<Sym>, FormulaError>>()?;
         let den = match den {
-            Some(d) => self.lower_with(d, extra, &accept)?,
+            Some(d) => lower(d)?,
             None => Sym::one(),
         };
-        Ok((lowered, den))
+        Ok(PrintedTerms {
+            terms: lowered,
+            denominator: den,
+            brackets,
+        })
     }
 
     fn parse_with(

@@ -1,6 +1,6 @@
 //! Local control, joins of piecewise curves and the interpolation of the
 //! second list of `shared/claims.md`: which segments a control point, a
-//! weight or a shape parameter enters (T48, M20, D19, decided by the
+//! weight or a shape parameter enters (M20, D19, decided by the
 //! local-control judge), how consecutive segments join (E24, by the
 //! continuity judge), which control points a refinement moves (T65), how a
 //! piecewise curve interpolates (D17), and the printed G² conditions (T51,
@@ -14,17 +14,13 @@ use super::local_control_joins::{d17, seed002_segment, t51, t54, t65};
 use crate::claim::Claim;
 use trig_judge::continuity::at_least;
 use trig_judge::exact::{IDENTITY, basis, identities, symbols};
-use trig_judge::local_control::{self, Control, Entry, compare};
+use trig_judge::local_control::{self, Entry, compare};
 use trig_verdict::evidence::Evidence;
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
 /// In report order (after each document's first-list claims).
 pub const CLAIMS: &[Claim] = &[
-    Claim {
-        id: "T48",
-        check: t48,
-    },
     Claim {
         id: "T51",
         check: t51,
@@ -54,37 +50,6 @@ pub const CLAIMS: &[Claim] = &[
         check: e24,
     },
 ];
-
-/// T48: the spline of (3.7) as the thesis builds it (4.19: segment `i`
-/// is `Σ b_k(u; m_i)` times its own control points, "each value m_i
-/// influences the shape of the i-th curve segment"): `m_i` enters exactly
-/// segment `i`. The other reading — one `m` for the whole curve, as the
-/// figures of 3.3.3 vary it — is decided too and reported as a note.
-fn t48() -> Verdict {
-    let f = Family::ThesisCubic;
-    let m = "m".to_string();
-    let mut v = local_control::local_control(
-        &f,
-        &Control::SegmentParameter {
-            name: m.clone(),
-            shift: 0,
-        },
-        0,
-        &[0],
-    );
-    let global = local_control::local_control(&f, &Control::CurveParameter { name: m }, 0, &[0]);
-    v.evidence.insert(
-        0,
-        Evidence::note(
-            "reading: one m_i per segment, as the thesis's spline is printed (4.19) and used (4.3.1: \"each value m_i influences the shape of the i-th curve segment\"; Tables 4.1–4.6 list m_i per interval); the control points of segment i, (4.21)/(4.25), depend on m_i and the data of [x_i, x_{i+1}] only (the composite curves of 4.1 are another construction: there (4.7) computes the next segment's P5 from m_1 and m_2, so a change of m also moves the next segment)",
-        ),
-    );
-    v.evidence.push(Evidence::note(format!(
-        "the other reading, one m for the whole curve, {}: m then enters every segment (not local shape control)",
-        global.status
-    )));
-    v
-}
 
 /// M20: the rational / NURBS curve of Definition 3 on the knot interval
 /// `[n_i, n_{i+1})` is `Σ_k w_{i−3+k} H_{i−3+k} F_k / Σ_k w_{i−3+k} F_k`
@@ -245,7 +210,8 @@ mod tests {
         let m = entered(&m20());
         assert_eq!(m.len(), 2);
         assert!(m.iter().all(|l| l.contains("exactly: j, j+1, j+2, j+3 (")));
-        assert_eq!(entered(&t48()), ["m_j enters exactly: j (printed: j)"]);
+        let t48 = &crate::run(None, Some("T48")).expect("the document files")[0].verdict;
+        assert_eq!(entered(t48), ["m_j enters exactly: j (printed: j)"]);
         let e = e24();
         assert_eq!(e.status, Status::Holds);
         assert!(e.evidence.iter().any(|i| {

@@ -558,10 +558,28 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
         Check::Join {
             kind,
             wrt,
+            declared,
             different,
             factors,
             conditions,
-        } => joins::printed_join(spec, *kind, *wrt, *different, factors, conditions),
+            segments,
+        } => joins::printed_join(
+            spec,
+            joins::Stated {
+                kind: *kind,
+                wrt: *wrt,
+                declared: *declared,
+                different: *different,
+                segments,
+            },
+            factors,
+            conditions,
+        ),
+        Check::JoinSingular {
+            wrt,
+            copies,
+            values,
+        } => joins::join_singular(spec, *wrt, copies, values),
         Check::Continuity { order } => trig_judge::continuity::bspline_continuity(spec, *order),
         Check::All { claims, brief } => {
             let parts = claims
@@ -588,8 +606,12 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
             curve,
             readings,
         } => trig_judge::identity::printed_identities(spec, identities, curve.as_ref(), readings),
-        Check::LocalControl { varied, segments } => {
-            let control = match varied {
+        Check::LocalControl {
+            varied,
+            segments,
+            also,
+        } => {
+            let control = |varied: &Varied| match varied {
                 Varied::Point => Control::Point,
                 Varied::Parameter {
                     name,
@@ -600,7 +622,16 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
                 },
                 Varied::Parameter { name, .. } => Control::CurveParameter { name: name.clone() },
             };
-            trig_judge::local_control::local_control(spec, &control, 0, segments)
+            let mut v =
+                trig_judge::local_control::local_control(spec, &control(varied), 0, segments);
+            if let Some(also) = also {
+                v.evidence.push(trig_judge::local_control::other_reading(
+                    spec,
+                    &control(also),
+                    segments,
+                ));
+            }
+            v
         }
     }
 }
