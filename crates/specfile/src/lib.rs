@@ -48,6 +48,7 @@ mod join_read;
 mod load;
 mod names;
 pub mod nonvanishing;
+mod property_read;
 mod raw;
 mod region_read;
 mod source;
