@@ -248,12 +248,7 @@ pub fn local_control<B: ExactBasis>(
         ));
     }
     let params = basis.parameters();
-    let symbol = |name: &str| {
-        params
-            .iter()
-            .find(|p| p.name == name)
-            .map_or_else(|| name.to_string(), |p| p.symbol.clone())
-    };
+    let symbol = |name: &str| printed_symbol(&params, name);
     let d = |name: &str, f: &Sym| match index(name) {
         Some(i) => d_param(f, &domain, i, &atoms),
         None => Sym::zero(),
@@ -307,12 +302,7 @@ pub fn local_control<B: ExactBasis>(
 pub fn other_reading<B: ExactBasis>(basis: &B, control: &Control, printed: &[i64]) -> Evidence {
     let v = local_control(basis, control, 0, printed);
     let params = basis.parameters();
-    let symbol = |name: &str| {
-        params
-            .iter()
-            .find(|p| p.name == name)
-            .map_or_else(|| name.to_string(), |p| p.symbol.clone())
-    };
+    let symbol = |name: &str| printed_symbol(&params, name);
     let reading = match control {
         Control::Point => "the control point P_j".to_string(),
         Control::SegmentParameter { name, .. } => format!("one {} per segment", symbol(name)),
@@ -369,6 +359,15 @@ fn curve_parameter(
         )),
     );
     v
+}
+
+/// The printed symbol of the parameter `name` (the name itself when the
+/// basis has no such parameter).
+fn printed_symbol(params: &[trig_core::Parameter], name: &str) -> String {
+    params
+        .iter()
+        .find(|p| p.name == name)
+        .map_or_else(|| name.to_string(), |p| p.symbol.clone())
 }
 
 #[cfg(test)]
