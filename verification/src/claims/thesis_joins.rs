@@ -63,12 +63,16 @@ fn p(i: usize) -> Sym {
 /// the join judge from the thesis's document file), T26j and T26k the
 /// cylinder's Rust.
 fn t26() -> Verdict {
+    // read once; each part decided as its document file states it
+    let documents = crate::documents::load(&crate::documents::default_dir());
     let stated = [
         "T26a", "T26b", "T26c", "T26d", "T26e", "T26f", "T26g", "T26h", "T26i",
     ]
     .map(|id| {
-        let verdict = crate::run(Some("001"), Some(id))
+        let verdict = documents
+            .as_ref()
             .ok()
+            .and_then(|d| crate::documents::audit(d, Some("001"), Some(id)).ok())
             .and_then(|entries| entries.into_iter().next())
             .map_or_else(
                 || {
