@@ -7,7 +7,7 @@
 use std::path::{Path, PathBuf};
 
 use trig_specfile::document::{Header, read_set};
-use trig_specfile::{DocumentClaim, DocumentFile, Part, Spec, SpecClaim, SpecError};
+use trig_specfile::{Check, DocumentClaim, DocumentFile, Part, Spec, SpecClaim, SpecError};
 use trig_verdict::Verdict;
 
 use crate::claim::Claim;
@@ -58,7 +58,81 @@ enum Decider<'a> {
     Stated(&'a Spec, &'a SpecClaim),
     /// An umbrella over parts about the document's bases, with its notes.
     Parts(Vec<(&'a Spec, &'a Part)>, &'a [String]),
+    /// An umbrella over claims of the document (`check = "all"`): decided
+    /// from the verdicts of the claims it lists, after them.
+    Umbrella(&'a DocumentFile, &'a SpecClaim),
     Rust(Claim),
+}
+
+/// What decides `c`, a claim of `doc`.
+fn decider<'a>(
+    doc: &'a DocumentFile,
+    c: &'a DocumentClaim,
+    rust: &[Claim],
+) -> Result<Decider<'a>, DocumentsError> {
+    Ok(match c {
+        DocumentClaim::Stated { claim, .. } if matches!(claim.check, Check::All { .. }) => {
+            Decider::Umbrella(doc, claim)
+        }
+        DocumentClaim::Stated { basis, claim } => Decider::Stated(&doc.bases[*basis].1, claim),
+        DocumentClaim::Parts { parts, notes, .. } => Decider::Parts(
+            parts.iter().map(|p| (&doc.bases[p.basis].1, p)).collect(),
+            notes,
+        ),
+        DocumentClaim::BuiltIn { id, .. } => {
+            Decider::Rust(*rust.iter().find(|r| r.id == id).ok_or_else(|| {
+                DocumentsError::NoChecker {
+                    file: doc.file.clone(),
+                    id: id.clone(),
+                }
+            })?)
+        }
+    })
+}
+
+/// The verdict of a claim that is not an umbrella over claims.
+fn decide(decider: &Decider<'_>) -> Option<Verdict> {
+    match decider {
+        Decider::Stated(spec, claim) => Some(crate::spec_audit::decide_in(spec, claim)),
+        Decider::Parts(parts, notes) => Some(crate::spec_audit::decide_parts(parts, notes)),
+        Decider::Umbrella(..) => None,
+        Decider::Rust(claim) => Some((claim.check)()),
+    }
+}
+
+/// The verdict of an umbrella over claims of `doc`: each listed claim's
+/// verdict from `known` (the claims this audit decided), or decided here
+/// when the audit did not select it.
+fn umbrella(
+    doc: &DocumentFile,
+    claim: &SpecClaim,
+    rust: &[Claim],
+    known: &dyn Fn(&str) -> Option<Verdict>,
+) -> Result<Verdict, DocumentsError> {
+    let Check::All { claims, brief } = &claim.check else {
+        unreachable!("an umbrella is a `check = \"all\"` claim")
+    };
+    let mut parts = Vec::new();
+    for id in claims {
+        let verdict = match known(id) {
+            Some(v) => v,
+            None => {
+                let part = doc
+                    .claims
+                    .iter()
+                    .find(|c| c.id() == id)
+                    .expect("the reader checks that an umbrella lists claims of the file");
+                match decider(doc, part, rust)? {
+                    Decider::Umbrella(d, c) => umbrella(d, c, rust, known)?,
+                    other => decide(&other).expect("not an umbrella"),
+                }
+            }
+        };
+        parts.push((id.clone(), verdict));
+    }
+    let mut v = crate::spec_audit::umbrella_verdict(parts, *brief);
+    v.evidence.extend(claim.notes.iter().map(String::as_str));
+    Ok(v)
 }
 
 /// The claims of `documents` (those of the document with id `only_document`
@@ -80,23 +154,7 @@ pub fn audit(
             if only_claim.is_some_and(|id| !c.id().eq_ignore_ascii_case(id)) {
                 continue;
             }
-            let decider = match c {
-                DocumentClaim::Stated { basis, claim } => {
-                    Decider::Stated(&doc.bases[*basis].1, claim)
-                }
-                DocumentClaim::Parts { parts, notes, .. } => Decider::Parts(
-                    parts.iter().map(|p| (&doc.bases[p.basis].1, p)).collect(),
-                    notes,
-                ),
-                DocumentClaim::BuiltIn { id, .. } => {
-                    Decider::Rust(*rust.iter().find(|r| r.id == id).ok_or_else(|| {
-                        DocumentsError::NoChecker {
-                            file: doc.file.clone(),
-                            id: id.clone(),
-                        }
-                    })?)
-                }
-            };
+            let decider = decider(doc, c, &rust)?;
             let entry = Entry {
                 id: c.id().to_string(),
                 document: report.clone(),
@@ -108,14 +166,26 @@ pub fn audit(
             chosen.push((entry, decider));
         }
     }
-    let verdicts = trig_core::parallel::map(&chosen, |(_, decider)| match decider {
-        Decider::Stated(spec, claim) => crate::spec_audit::decide_in(spec, claim),
-        Decider::Parts(parts, notes) => crate::spec_audit::decide_parts(parts, notes),
-        Decider::Rust(claim) => (claim.check)(),
-    });
+    let mut verdicts = trig_core::parallel::map(&chosen, |(_, d)| decide(d));
+    // the umbrellas over claims last, from their parts' verdicts
+    for i in 0..chosen.len() {
+        if let Decider::Umbrella(doc, claim) = &chosen[i].1 {
+            let known = |id: &str| {
+                chosen
+                    .iter()
+                    .zip(&verdicts)
+                    .find(|((e, _), _)| e.id == id && e.document.id == doc.header.id)
+                    .and_then(|(_, v)| v.clone())
+            };
+            verdicts[i] = Some(umbrella(doc, claim, &rust, &known)?);
+        }
+    }
     Ok(chosen
         .into_iter()
         .zip(verdicts)
-        .map(|((entry, _), verdict)| Entry { verdict, ..entry })
+        .map(|((entry, _), verdict)| Entry {
+            verdict: verdict.expect("every claim decided"),
+            ..entry
+        })
         .collect())
 }

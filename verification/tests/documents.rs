@@ -75,3 +75,31 @@ fn an_umbrella_of_parts_is_decided_part_by_part() {
     );
     assert_eq!(lines.last().map(String::as_str), Some("a remark"));
 }
+
+/// An umbrella of a document file lists claims of the file: built-in ones
+/// too (T26 over T26a–i, stated, and T26j–k, Rust), decided from their
+/// verdicts — the same whether the audit decides the parts or only the
+/// umbrella.
+#[test]
+fn an_umbrella_lists_any_claim_of_its_document() {
+    let thesis = run(Some("001"), None).expect("the document files");
+    let whole = thesis.iter().find(|e| e.id == "T26").expect("T26");
+    let alone = run(None, Some("T26")).expect("the document files");
+    assert_eq!(alone[0].verdict, whole.verdict);
+    for part in ["T26a", "T26i", "T26j", "T26k"] {
+        let status = thesis
+            .iter()
+            .find(|e| e.id == part)
+            .expect("a part")
+            .verdict
+            .status;
+        assert!(
+            whole
+                .verdict
+                .evidence
+                .iter()
+                .any(|e| e.subject.as_deref() == Some(part) && e.status == Some(status)),
+            "{part} is shown with its verdict"
+        );
+    }
+}

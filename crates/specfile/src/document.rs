@@ -29,8 +29,8 @@ use serde::Deserialize;
 use toml::Spanned;
 use trig_core::input::{MAX_TEXT_BYTES, Source as Input, read_text};
 
-use crate::check::SpecClaim;
-use crate::claims::{claim, umbrellas};
+use crate::check::{Check, SpecClaim};
+use crate::claims::claim;
 use crate::error::{Result, SpecError};
 use crate::raw::RawClaim;
 use crate::source::Source;
@@ -192,9 +192,7 @@ impl DocumentFile {
             }
             claims.push(read);
         }
-        for (_, spec) in &bases {
-            umbrellas(&src, spec)?;
-        }
+        umbrellas_of_document(&src, &claims)?;
         Ok(DocumentFile {
             header: raw.document,
             file: file.to_string(),
@@ -356,6 +354,54 @@ fn basis_of(src: &Source<'_>, bases: &[(String, Spec)], c: &RawClaim) -> Result<
             );
         }
     })
+}
+
+/// The umbrellas of a document file (`check = "all"`) list claims of the
+/// file — about any of its bases, or `built-in` — and none lists itself
+/// through others.
+fn umbrellas_of_document(src: &Source<'_>, claims: &[DocumentClaim]) -> Result<()> {
+    let parts = |id: &str| -> Vec<String> {
+        match claims.iter().find(|c| c.id() == id) {
+            Some(DocumentClaim::Stated { claim, .. }) => match &claim.check {
+                Check::All { claims, .. } => claims.clone(),
+                _ => Vec::new(),
+            },
+            _ => Vec::new(),
+        }
+    };
+    let invalid = |message: String| {
+        Err(SpecError::Invalid {
+            at: src.at(0),
+            field: "claims.claims".into(),
+            message,
+        })
+    };
+    for c in claims {
+        let listed = parts(c.id());
+        if let Some(missing) = listed
+            .iter()
+            .find(|id| !claims.iter().any(|d| d.id() == id.as_str()))
+        {
+            return invalid(format!(
+                "`{}` lists `{missing}`, which is not a claim of the file",
+                c.id()
+            ));
+        }
+        let (mut seen, mut todo) = (Vec::<String>::new(), listed);
+        while let Some(id) = todo.pop() {
+            if id == c.id() {
+                return invalid(format!(
+                    "`{}` lists itself (through the claims it lists)",
+                    c.id()
+                ));
+            }
+            if !seen.contains(&id) {
+                todo.extend(parts(&id));
+                seen.push(id);
+            }
+        }
+    }
+    Ok(())
 }
 
 fn names(bases: &[(String, Spec)]) -> String {
@@ -644,5 +690,35 @@ mod tests {
     fn a_document_is_told_apart_from_a_spec_file() {
         assert!(is_document(&catalog()));
         assert!(!is_document(&catalog().join("bernstein3.toml")));
+    }
+
+    #[test]
+    fn an_umbrella_lists_claims_of_the_file_and_not_itself() {
+        let bases = "[bases]\ncubic = \"thesis-cubic.toml\"\n";
+        let umbrella = |id: &str, parts: &str| {
+            format!(
+                "[[claims]]\nid = \"{id}\"\nsource = \"(1)\"\nstatement = \"s\"\ncheck = \"all\"\nclaims = [{parts}]\n"
+            )
+        };
+        // a built-in claim may be a part
+        let doc = read(&format!(
+            "{bases}{}{}",
+            claim("a", None, BUILT_IN),
+            umbrella("u", "\"a\"")
+        ));
+        assert!(doc.is_ok(), "{doc:?}");
+        let e = read(&format!("{bases}{}", umbrella("u", "\"b\""))).unwrap_err();
+        assert!(
+            e.to_string()
+                .contains("lists `b`, which is not a claim of the file"),
+            "{e}"
+        );
+        let e = read(&format!(
+            "{bases}{}{}",
+            umbrella("u", "\"v\""),
+            umbrella("v", "\"u\"")
+        ))
+        .unwrap_err();
+        assert!(e.to_string().contains("lists itself"), "{e}");
     }
 }

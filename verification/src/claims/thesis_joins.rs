@@ -13,7 +13,7 @@ use trig_core::Family;
 use trig_deriv::{End, Wrt, curve_endpoint_derivatives, endpoint_derivatives};
 use trig_symbolic::Sym;
 
-use crate::claim::{Claim, umbrella};
+use crate::claim::Claim;
 use trig_judge::exact::{identities, symbols};
 use trig_verdict::verdict::Verdict;
 
@@ -36,10 +36,6 @@ pub const CLAIMS: &[Claim] = &[
         id: "T26k",
         check: cylinder::t26k,
     },
-    Claim {
-        id: "T26",
-        check: t26,
-    },
 ];
 
 fn v(name: &str) -> Sym {
@@ -57,39 +53,6 @@ fn lin(a: i64, m: &Sym, b: i64) -> Sym {
 
 fn p(i: usize) -> Sym {
     v(&format!("P{i}"))
-}
-
-/// The umbrella over the surface joins: T26a–T26i are data (decided by
-/// the join judge from the thesis's document file), T26j and T26k the
-/// cylinder's Rust.
-fn t26() -> Verdict {
-    // read once; each part decided as its document file states it
-    let documents = crate::documents::load(&crate::documents::default_dir());
-    let stated = [
-        "T26a", "T26b", "T26c", "T26d", "T26e", "T26f", "T26g", "T26h", "T26i",
-    ]
-    .map(|id| {
-        let verdict = documents
-            .as_ref()
-            .ok()
-            .and_then(|d| crate::documents::audit(d, Some("001"), Some(id)).ok())
-            .and_then(|entries| entries.into_iter().next())
-            .map_or_else(
-                || {
-                    Verdict::not_checkable(format!(
-                        "claim {id} of the thesis's document file could not be read"
-                    ))
-                },
-                |e| e.verdict,
-            );
-        (id.to_string(), verdict)
-    });
-    let rust = [
-        ("T26j", cylinder::t26j as fn() -> Verdict),
-        ("T26k", cylinder::t26k),
-    ]
-    .map(|(id, check)| (id.to_string(), check()));
-    umbrella(stated.into_iter().chain(rust).collect())
 }
 
 /// Printed endpoint derivatives against computed ones, in the angle θ.

@@ -457,6 +457,17 @@ fn exact_ends(spec: &Spec, claim: &SpecClaim) -> Verdict {
 /// How an umbrella claim is decided, as the report states it.
 const UMBRELLA: &str = "every listed claim of the file, each decided as it is stated: the umbrella holds when every part holds, fails when one fails";
 
+/// An umbrella's verdict from its parts' (`brief`: each part's verdict and
+/// the first witness of one that does not hold, the parts being reported
+/// as claims of their own).
+pub fn umbrella_verdict(parts: Vec<(String, Verdict)>, brief: bool) -> Verdict {
+    if brief {
+        crate::claim::umbrella(parts)
+    } else {
+        Verdict::all(UMBRELLA, parts)
+    }
+}
+
 /// The verdict of one check on the spec as it is.
 fn decide_check(spec: &Spec, check: &Check) -> Verdict {
     match check {
@@ -581,18 +592,14 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
             values,
         } => joins::join_singular(spec, *wrt, copies, values),
         Check::Continuity { order } => trig_judge::continuity::bspline_continuity(spec, *order),
-        Check::All { claims, brief } => {
-            let parts = claims
+        Check::All { claims, brief } => umbrella_verdict(
+            claims
                 .iter()
                 .filter_map(|id| spec.claims.iter().find(|c| &c.id == id))
                 .map(|c| (c.id.clone(), decide(spec, c)))
-                .collect();
-            if *brief {
-                crate::claim::umbrella(parts)
-            } else {
-                Verdict::all(UMBRELLA, parts)
-            }
-        }
+                .collect(),
+            *brief,
+        ),
         Check::NotPrinted { reason } => Verdict::not_checkable(reason.clone()),
         Check::InterpolantNonnegative { data, scheme, .. } => {
             trig_judge::interpolant::nonnegative(spec, data, *scheme)
