@@ -65,22 +65,6 @@ pub struct JoinSegments {
     pub also: Option<[Vec<Sym>; 2]>,
 }
 
-impl JoinSegments {
-    /// Each segment's copies of the parameters of `spec` (with different
-    /// parameters): as printed, else `p1` on the first and `p2` on the
-    /// second for each parameter `p`.
-    pub fn param_copies(&self, spec: &crate::spec::Spec) -> [Vec<Sym>; 2] {
-        self.printed.clone().unwrap_or_else(|| {
-            [1, 2].map(|k| {
-                spec.params
-                    .iter()
-                    .map(|p| Sym::var(&format!("{}{k}", p.name)))
-                    .collect()
-            })
-        })
-    }
-}
-
 /// What a claim of the file asserts, in a form the audit can decide.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Check {

@@ -2,11 +2,12 @@
 //! ([`crate::check`]), after the functions ([`crate::spec`]).
 
 use toml::Spanned;
-use trig_deriv::{End, Wrt};
-use trig_symbolic::{Names, Sym};
+use trig_deriv::End;
+use trig_symbolic::Names;
 
 use crate::check::{Check, Printed, SpecClaim, Varied};
 use crate::error::{Result, SpecError};
+use crate::fields::{formula_in, function_index, need, wrt_field};
 use crate::given_read::{given, one_param_range};
 use crate::property_read::{conic, monotone, shape_effect, symmetry};
 use crate::raw::RawClaim;
@@ -39,63 +40,6 @@ impl Spec {
     pub fn join_factors(&self) -> [String; 2] {
         self.names().factors().map(|f| f.to_string())
     }
-}
-
-pub(crate) fn need<'r, T>(
-    src: &Source<'_>,
-    c: &'r RawClaim,
-    field: &'r Option<T>,
-    name: &str,
-) -> Result<&'r T> {
-    field.as_ref().ok_or_else(|| SpecError::Invalid {
-        at: src.at(c.check.span().start),
-        field: format!("claims.{name}"),
-        message: format!(
-            "check `{}` of claim `{}` needs the field `{name}`",
-            c.check.get_ref(),
-            c.id.get_ref()
-        ),
-    })
-}
-
-pub(crate) fn function_index(
-    src: &Source<'_>,
-    spec: &Spec,
-    name: &Spanned<String>,
-    text: &str,
-) -> Result<usize> {
-    spec.functions
-        .iter()
-        .position(|f| f.name == text.trim())
-        .ok_or_else(|| SpecError::Invalid {
-            at: src.at(name.span().start),
-            field: "claims".into(),
-            message: format!(
-                "`{}`: unknown function (expected one of {})",
-                text.trim(),
-                spec.functions
-                    .iter()
-                    .map(|f| f.name.as_str())
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            ),
-        })
-}
-
-/// A formula after `prefix` in the string `item` (`NAME = formula`):
-/// errors point into the item.
-pub(crate) fn formula_in(
-    src: &Source<'_>,
-    spec: &Spec,
-    item: &Spanned<String>,
-    prefix: &str,
-    text: &str,
-    extra: &[String],
-) -> Result<Sym> {
-    spec.parse_formula(text, extra).map_err(|mut e| {
-        e.position += prefix.chars().count();
-        src.formula_error(item, e)
-    })
 }
 
 /// `name = formula` entries.
@@ -589,53 +533,5 @@ fn end_field(src: &Source<'_>, end: &Spanned<String>) -> Result<End> {
             "claims.end",
             format!("`{other}`: expected `start` or `end`"),
         ),
-    }
-}
-
-/// `wrt`: `angle` (the declared angle of the legacy variables, the angle
-/// of the atoms otherwise), `u` (the unit parameter, `θ = πu/2` for the
-/// thesis), or the variable's own name.
-pub(crate) fn wrt_field(
-    src: &Source<'_>,
-    spec: &Spec,
-    wrt: Option<&Spanned<String>>,
-) -> Result<Wrt> {
-    let text = wrt.map_or("angle", |w| w.get_ref().trim());
-    let span = wrt.map_or(0..0, |w| w.span());
-    let angle_is_variable = spec
-        .legacy
-        .is_some_and(|v| v != trig_core::Variable::UnitAngle);
-    let refined = spec.shorthand.is_some_and(|k| k != 1);
-    let angle = if refined && angle_is_variable {
-        // the declared angle is t itself; the atoms' angle is a fraction of it
-        Wrt::Variable
-    } else {
-        Wrt::Angle
-    };
-    let refuse = |other: &str| {
-        src.invalid(
-            span.clone(),
-            "claims.wrt",
-            format!(
-                "`{other}`: expected `angle`, `u` (the unit parameter) or the basis variable `{}`",
-                spec.var_name
-            ),
-        )
-    };
-    match text {
-        _ if wrt.is_none() && spec.legacy.is_none() => Ok(Wrt::Variable),
-        "angle" | "theta" | "θ" if refined && !angle_is_variable => src.invalid(
-            span,
-            "claims.wrt",
-            "derivatives in the declared angle πu/2 are not available when the formulas use other multiples of it: use wrt = \"u\"".into(),
-        ),
-        "angle" | "theta" | "θ" if spec.domain.is_trigonometric() || spec.legacy.is_some() => {
-            Ok(angle)
-        }
-        "u" if spec.legacy == Some(trig_core::Variable::UnitAngle) => Ok(Wrt::U),
-        t if t == spec.var_name && angle_is_variable => Ok(angle),
-        t if t == spec.var_name => Ok(Wrt::Variable),
-        "u" if spec.legacy.is_none() => Ok(Wrt::U),
-        other => refuse(other),
     }
 }

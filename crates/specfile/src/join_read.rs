@@ -17,8 +17,8 @@ use trig_deriv::JoinKind;
 use trig_symbolic::Sym;
 
 use crate::check::{Check, Condition, JoinSegments};
-use crate::claims::{need, wrt_field};
 use crate::error::{Result, SpecError};
+use crate::fields::{need, wrt_field};
 use crate::raw::RawClaim;
 use crate::source::Source;
 use crate::spec::Spec;

@@ -39,6 +39,7 @@ pub mod document;
 pub mod error;
 pub mod exact_range;
 mod expression;
+mod fields;
 pub mod formula;
 pub mod frequencies;
 pub mod given;

@@ -7,8 +7,8 @@ use trig_core::{Affine, ParamRange, parse_exact};
 use trig_symbolic::Sym;
 
 use crate::check::{Check, Direction, Monotone, Quantifier};
-use crate::claims::{formula_in, function_index, need};
 use crate::error::{Result, SpecError};
+use crate::fields::{formula_in, function_index, need};
 use crate::given_read::one_param_range;
 use crate::raw::RawClaim;
 use crate::source::Source;

@@ -11,7 +11,7 @@ use trig_core::{Affine, Domain, Parameter, Variable};
 use trig_symbolic::Sym;
 
 use crate::ast::{self, Expr, Node};
-use crate::check::SpecClaim;
+use crate::check::{JoinSegments, SpecClaim};
 use crate::error::{FormulaError, Result, SpecError};
 use crate::formula::{Scope, linear, lower};
 use crate::frequencies::{Usage, domain};
@@ -722,5 +722,21 @@ impl Lowerer<'_> {
         };
         self.states.borrow_mut()[i] = result.clone();
         result
+    }
+}
+
+impl JoinSegments {
+    /// Each segment's copies of the parameters of `spec` (with different
+    /// parameters): as printed, else `p1` on the first and `p2` on the
+    /// second for each parameter `p`.
+    pub fn param_copies(&self, spec: &Spec) -> [Vec<Sym>; 2] {
+        self.printed.clone().unwrap_or_else(|| {
+            [1, 2].map(|k| {
+                spec.params
+                    .iter()
+                    .map(|p| Sym::var(&format!("{}{k}", p.name)))
+                    .collect()
+            })
+        })
     }
 }
