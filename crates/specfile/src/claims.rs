@@ -108,12 +108,23 @@ pub(crate) fn attach(src: &Source<'_>, spec: &mut Spec, raw: &[RawClaim]) -> Res
 /// The claims an umbrella (`check = "all"`) lists exist, and no umbrella
 /// lists itself through others.
 pub(crate) fn umbrellas(src: &Source<'_>, spec: &Spec) -> Result<()> {
-    let parts = |id: &str| -> Vec<String> {
+    let ids: Vec<&str> = spec.claims.iter().map(|c| c.id.as_str()).collect();
+    umbrellas_among(src, &ids, |id| {
         match spec.claims.iter().find(|c| c.id == id).map(|c| &c.check) {
-            Some(Check::All { claims, .. }) => claims.clone(),
-            _ => Vec::new(),
+            Some(Check::All { claims, .. }) => Some(claims.clone()),
+            _ => None,
         }
-    };
+    })
+}
+
+/// The umbrellas among the claims `ids` (`parts`: the claims an umbrella
+/// lists, `None` for a claim that is not one) list claims of `ids`, at
+/// least one, and none lists itself through others.
+pub(crate) fn umbrellas_among(
+    src: &Source<'_>,
+    ids: &[&str],
+    parts: impl Fn(&str) -> Option<Vec<String>>,
+) -> Result<()> {
     let invalid = |message: String| {
         Err(SpecError::Invalid {
             at: src.at(0),
@@ -121,35 +132,27 @@ pub(crate) fn umbrellas(src: &Source<'_>, spec: &Spec) -> Result<()> {
             message,
         })
     };
-    for c in &spec.claims {
-        let Check::All { claims, .. } = &c.check else {
+    for &id in ids {
+        let Some(listed) = parts(id) else {
             continue;
         };
-        if claims.is_empty() {
-            return invalid(format!("`{}` lists no claim", c.id));
+        if listed.is_empty() {
+            return invalid(format!("`{id}` lists no claim"));
         }
-        if let Some(missing) = claims
-            .iter()
-            .find(|id| !spec.claims.iter().any(|d| &d.id == *id))
-        {
+        if let Some(missing) = listed.iter().find(|l| !ids.contains(&l.as_str())) {
             return invalid(format!(
-                "`{}` lists `{missing}`, which is not a claim of the file",
-                c.id
+                "`{id}` lists `{missing}`, which is not a claim of the file"
             ));
         }
-        // every claim reached from `c` through umbrellas
-        let mut seen: Vec<String> = Vec::new();
-        let mut todo = claims.clone();
-        while let Some(id) = todo.pop() {
-            if id == c.id {
-                return invalid(format!(
-                    "`{}` lists itself (through the claims it lists)",
-                    c.id
-                ));
+        // every claim reached from `id` through umbrellas
+        let (mut seen, mut todo) = (Vec::<String>::new(), listed);
+        while let Some(part) = todo.pop() {
+            if part == id {
+                return invalid(format!("`{id}` lists itself (through the claims it lists)"));
             }
-            if !seen.contains(&id) {
-                todo.extend(parts(&id));
-                seen.push(id);
+            if !seen.contains(&part) {
+                todo.extend(parts(&part).unwrap_or_default());
+                seen.push(part);
             }
         }
     }

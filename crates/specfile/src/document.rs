@@ -30,7 +30,7 @@ use toml::Spanned;
 use trig_core::input::{MAX_TEXT_BYTES, Source as Input, read_text};
 
 use crate::check::{Check, SpecClaim};
-use crate::claims::claim;
+use crate::claims::{claim, umbrellas_among};
 use crate::error::{Result, SpecError};
 use crate::raw::RawClaim;
 use crate::source::Source;
@@ -360,48 +360,14 @@ fn basis_of(src: &Source<'_>, bases: &[(String, Spec)], c: &RawClaim) -> Result<
 /// file — about any of its bases, or `built-in` — and none lists itself
 /// through others.
 fn umbrellas_of_document(src: &Source<'_>, claims: &[DocumentClaim]) -> Result<()> {
-    let parts = |id: &str| -> Vec<String> {
-        match claims.iter().find(|c| c.id() == id) {
-            Some(DocumentClaim::Stated { claim, .. }) => match &claim.check {
-                Check::All { claims, .. } => claims.clone(),
-                _ => Vec::new(),
-            },
-            _ => Vec::new(),
-        }
-    };
-    let invalid = |message: String| {
-        Err(SpecError::Invalid {
-            at: src.at(0),
-            field: "claims.claims".into(),
-            message,
-        })
-    };
-    for c in claims {
-        let listed = parts(c.id());
-        if let Some(missing) = listed
-            .iter()
-            .find(|id| !claims.iter().any(|d| d.id() == id.as_str()))
-        {
-            return invalid(format!(
-                "`{}` lists `{missing}`, which is not a claim of the file",
-                c.id()
-            ));
-        }
-        let (mut seen, mut todo) = (Vec::<String>::new(), listed);
-        while let Some(id) = todo.pop() {
-            if id == c.id() {
-                return invalid(format!(
-                    "`{}` lists itself (through the claims it lists)",
-                    c.id()
-                ));
-            }
-            if !seen.contains(&id) {
-                todo.extend(parts(&id));
-                seen.push(id);
-            }
-        }
-    }
-    Ok(())
+    let ids: Vec<&str> = claims.iter().map(DocumentClaim::id).collect();
+    umbrellas_among(src, &ids, |id| match claims.iter().find(|c| c.id() == id) {
+        Some(DocumentClaim::Stated { claim, .. }) => match &claim.check {
+            Check::All { claims, .. } => Some(claims.clone()),
+            _ => None,
+        },
+        _ => None,
+    })
 }
 
 fn names(bases: &[(String, Spec)]) -> String {
