@@ -50,6 +50,7 @@ pub mod surface;
 pub mod symmetry;
 pub mod table_arithmetic;
 pub mod total_positivity;
+pub(crate) mod tp_conditions;
 pub mod tp_maximal;
 pub mod tp_maximal_box;
 pub mod tp_wronskian;

@@ -25,7 +25,7 @@ use trig_core::{End, Parameter};
 use super::nonnegative::pieces;
 use super::region::{self, Axis};
 use super::total_positivity::normalized_totally_positive;
-use super::tp_maximal::{METHOD, necessary_functions, totally_positive_at};
+use super::tp_conditions::{METHOD, necessary_functions, totally_positive_at};
 use super::tp_wronskian::continuous;
 use crate::exact::{ExactBasis, basis_of};
 use trig_verdict::evidence::Evidence;
