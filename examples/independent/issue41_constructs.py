@@ -254,3 +254,32 @@ check(sp.cancel(sol2[Y4] - (P[2] + (2 + m2) / (2 + m1) * (P[2] - P[1]))) == 0,
 check(sp.cancel(sol2[Y4] - (2 * P[2] - P[1])) != 0,
       "GB2 with the quadratic Bézier rule P4 = 2P2 − P1: not C¹ (unless λ1 = λ2), so 'is not C²' holds")
 print("all GB2 join checks passed")
+
+# ---------------------------------------------------------------- 10. residuals the audit prints
+print("residuals of the failing conditions (as the audit prints them, expanded):")
+# GB3 with the Bézier rules (same λ): Q'(0) − P'(1) with Q0 = P3, Q1 = 2P3 − P2
+Pl = sum(f * p for f, p in zip(B, P[:4]))
+Ql = sum(f * p for f, p in zip(B, (P[3], 2 * P[3] - P[2], P[1] - 4 * P[2] + 4 * P[3], P[7])))
+r1 = sp.expand(sp.diff(Ql, t).subs(t, 0) - sp.diff(Pl, t).subs(t, 1))
+r2 = sp.expand(sp.diff(Ql, t, 2).subs(t, 0) - sp.diff(Pl, t, 2).subs(t, 1))
+print("  GB3 Bézier rules: order 1:", sp.collect(r1, P), "  order 2:", sp.collect(r2, P))
+check(sp.expand(r1 - (l1 - l3) * (P[3] - P[2])) == 0, "GB3 order-1 residual (λ1 − λ3)(P3 − P2)")
+check(sp.expand(r2 - (4 * l2 * P[1] + (6 * l1 - 8 * l2 + 6 * l3) * P[2] + (-6 * l1 + 4 * l2 - 6 * l3) * P[3])) == 0,
+      "GB3 order-2 residual 4λ2·P1 + (6λ1 − 8λ2 + 6λ3)·P2 + (−6λ1 + 4λ2 − 6λ3)·P3")
+Qb = sum(f * p for f, p in zip(G2, (P[2], 2 * P[2] - P[1], P[0] - 4 * P[1] + 4 * P[2])))
+g_r1 = sp.expand(sp.diff(Qb, t).subs(t, 0) - sp.diff(Pg, t).subs(t, 1))
+g_r2 = sp.expand(sp.diff(Qb, t, 2).subs(t, 0) - sp.diff(Pg, t, 2).subs(t, 1))
+print("  GB2 Bézier rules: order 1:", sp.collect(g_r1, P), "  order 2:", sp.collect(g_r2, P))
+check(sp.expand(g_r1 - (m1 - m2) * (P[2] - P[1])) == 0, "GB2 order-1 residual (λ1 − λ2)(P2 − P1)")
+check(sp.expand(g_r2 - ((2 * m1 - 2 * m2) * P[0] + (2 * m1 + 10 * m2) * P[1] + (-4 * m1 - 8 * m2) * P[2])) == 0,
+      "GB2 order-2 residual (2λ1 − 2λ2)P0 + (2λ1 + 10λ2)P1 + (−4λ1 − 8λ2)P2")
+# the C² sign typo: residual of the order-2 condition 2(3 + v2)·(printed P6 − derived P6)
+Qs = sp.diff(Qc, t, 2).subs(t, 0)
+typo = sp.factor(sp.expand(Qs.subs({P[4]: P[3], P[6]: C2_sign}) - Qs.subs({P[4]: P[3], P[6]: C2_print})))
+print("  C2 typo residual:", typo)
+check(sp.expand(typo - (4 * u2 - 12) * P[1] - (-4 * u2 + 12) * P[2]) == 0,
+      "GB3 C² typo: residual of the order-2 condition (4u2 − 12)P1 + (−4u2 + 12)P2")
+# the reading of R''(0) that is wrong too: residual 2λ1(P0 − P1)
+rd = sp.expand(R2_0 - (2 * (3 + 2 * l1) * (P[0] - P[1]) + 2 * (3 + l2) * (P[2] - P[1])))
+check(sp.expand(rd - 2 * l1 * (P[0] - P[1])) == 0, "the wrong reading of R''(0): residual 2λ1(P0 − P1)")
+print("all residual checks passed")

@@ -22,7 +22,11 @@ fn named_variable_is_counted(d: &Domain) -> Option<bool> {
         return None;
     }
     match &d.angle {
-        None => d.end.as_rational().is_some_and(|b| *b == 1).then_some(false),
+        None => d
+            .end
+            .as_rational()
+            .is_some_and(|b| *b == 1)
+            .then_some(false),
         Some(omega) => (!d.uses_variable
             && omega.times(&d.end).and_then(|e| e.quarter_turns()) == Some(1))
         .then_some(true),
@@ -42,7 +46,7 @@ pub fn exactly_one_maximum<B: Described>(basis: &B, fs: &[Sym]) -> Verdict {
             None => {
                 return Verdict::not_checkable(
                     "maxima are counted on the catalog's domains only ([0, π/2] in the angle, [0, 1] in t)",
-                )
+                );
             }
         },
     };
