@@ -339,8 +339,8 @@ fn joins_of_segments_named_as_printed_with_their_own_parameters() {
 }
 
 /// The C² print with one term's sign flipped inside the bracket over
-/// (3 + v2): holds after correction. SymPy: P6 = P5 + [3(1 + v1)(P5 − P3)
-/// + 3(1 + u3)(P3 − P2) + (3 − u2)(P1 − P2)]/(3 + v2), P5 as derived; the
+/// (3 + v2): holds after correction. SymPy: P6 = P5 + [3(1 + v1)(P5 − P3) +
+/// 3(1 + u3)(P3 − P2) + (3 − u2)(P1 − P2)]/(3 + v2), P5 as derived; the
 /// derived points divide by 3 + v1 (P5) and 3 + v2 (P6).
 #[test]
 fn a_sign_typo_inside_a_bracket_of_a_c2_join() {
