@@ -283,3 +283,16 @@ check(sp.expand(typo - (4 * u2 - 12) * P[1] - (-4 * u2 + 12) * P[2]) == 0,
 rd = sp.expand(R2_0 - (2 * (3 + 2 * l1) * (P[0] - P[1]) + 2 * (3 + l2) * (P[2] - P[1])))
 check(sp.expand(rd - 2 * l1 * (P[0] - P[1])) == 0, "the wrong reading of R''(0): residual 2λ1(P0 − P1)")
 print("all residual checks passed")
+
+# ---------------------------------------------------------------- 11. symmetry (claims GB3-symmetry*)
+print("symmetry:")
+S = [f.subs(t, 1 - t) for f in gb3(l3, -l2, l1)]
+check(all(sp.expand(B[i] - S[3 - i]) == 0 for i in range(4)),
+      "b_i(t; λ1, λ2, λ3) = b_{3−i}(1 − t; λ3, −λ2, λ1) (λ2 negated)")
+S2 = [f.subs(t, 1 - t) for f in gb3(l3, l2, l1)]
+res_s = sp.factor(B[1] - S2[2])
+print("  with λ2 kept: b1(t) − b2(1 − t; λ3, λ2, λ1) =", res_s)
+check(sp.expand(res_s + 2 * l2 * t**2 * (1 - t) ** 2) == 0, "  residual −2λ2·t²(1 − t)²: fails unless λ2 = 0")
+check(B[1].subs({l1: 0, l2: -3, t: R(1, 2)}) == R(9, 16) and S2[2].subs({l1: 0, l2: -3, l3: 0, t: R(1, 2)}) == R(3, 16),
+      "  e.g. at λ = (0, −3, 0), t = 1/2: 9/16 against 3/16")
+print("all symmetry checks passed")

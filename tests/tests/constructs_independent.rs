@@ -477,3 +477,25 @@ fn umbrellas_across_two_bases_of_a_document() {
         "(-lambda1 + lambda2)*P1 + (lambda1 - lambda2)*P2"
     );
 }
+
+/// SymPy: b_i(t; λ1, λ2, λ3) = b_{3−i}(1 − t; λ3, −λ2, λ1); with λ2 kept,
+/// b1(t) − b2(1 − t; λ3, λ2, λ1) = −2λ2·t²(1 − t)².
+#[test]
+fn the_exchange_symmetry_negates_the_middle_parameter() {
+    assert_eq!(verdict(spec(), "GB3-symmetry"), "holds");
+    let c = claim(spec(), "GB3-symmetry-unsigned");
+    assert_eq!(c["verdict"], "fails", "{c}");
+    let w = Witness::of(c);
+    let (l1, l2, l3, t) = (w.at("lamda1"), w.at("lamda2"), w.at("lamda3"), w.at("t"));
+    let s = int(1) - &t;
+    // b1(t; λ1, λ2) and b2(1 − t; λ2, λ3 ↦ λ1)
+    let b1 = t.clone() * s.clone() * s.clone() * (int(3) + &l1 - l1.clone() * &t - l2.clone() * &t);
+    let b2 = s.clone() * s.clone() * t.clone() * (int(3) + &l2 - l2.clone() * &s + l1.clone() * &s);
+    assert_eq!(w.value("value"), b1);
+    assert_eq!(w.value("target"), b2);
+    assert_eq!(
+        b1 - b2,
+        int(-2) * l2 * t.clone() * t * s.clone() * s,
+        "λ3 = {l3} plays no part"
+    );
+}
