@@ -25,6 +25,7 @@ mod cli_surface_plot;
 mod cli_table;
 mod cli_tp_wronskian;
 mod cli_witness_points;
+mod constructs_independent;
 mod fuzz;
 mod latex_statements;
 mod paper;

@@ -401,11 +401,21 @@ impl<B: ExactBasis + Clone> PrintedJoin<B> {
             }
         };
         let shown = self.second_points(wrt, printed);
+        // every forced point's singular values, in order, each once (the
+        // last point's alone would drop the earlier pivots: P₆ of a C²
+        // join beside P₅'s division)
+        let mut all_singular: Vec<&String> = Vec::new();
         for (i, value, singular) in &points {
             let name = self.second[*i].to_unicode();
             item = item.with(name.clone(), Expr::combination(value, &names));
-            if !singular.is_empty() {
-                item.text = format!("singular where {}", singular.join(", "));
+            for s in singular {
+                if !all_singular.contains(&s) {
+                    all_singular.push(s);
+                }
+            }
+            if !all_singular.is_empty() {
+                let all: Vec<&str> = all_singular.iter().map(|s| s.as_str()).collect();
+                item.text = format!("singular where {}", all.join(", "));
             }
             if item.witness.is_none() && !(shown[*i].clone() - value).is_zero() {
                 item.witness = witness::find(
@@ -789,5 +799,48 @@ mod tests {
         );
         let derived = v.evidence.iter().find(|e| e.kind == Kind::Derived).unwrap();
         assert!(derived.witness.is_some(), "{derived:?}");
+    }
+
+    /// The derived item of a C² join names the singular values of every
+    /// forced point, not the last one's alone: the generalized Bernstein
+    /// basis of degree 3 (`examples/gb3-three-shape.toml`) forces `P₅` with
+    /// the pivot `3 + v₁` and `P₆` with `2(3 + v₂)` (second segment `v`).
+    #[test]
+    fn the_derived_item_names_every_forced_points_singular_values() {
+        let text = "id = \"gb3\"\ncitation = \"test\"\nvariable = \"t\"\ndomain = \"[0, 1]\"\n\
+            [[parameters]]\nname = \"l1\"\nrange = \"[-3, 1]\"\n\
+            [[parameters]]\nname = \"l2\"\nrange = \"[-3, 3]\"\n\
+            [[parameters]]\nname = \"l3\"\nrange = \"[-3, 1]\"\n\
+            [[functions]]\nname = \"b0\"\nformula = \"(1 - t)^3*(1 - l1*t)\"\n\
+            [[functions]]\nname = \"b1\"\nformula = \"t*(1 - t)^2*(3 + l1 - l1*t - l2*t)\"\n\
+            [[functions]]\nname = \"b2\"\nformula = \"t^2*(1 - t)*(3 + l2 - l2*t + l3*t)\"\n\
+            [[functions]]\nname = \"b3\"\nformula = \"t^3*(1 - l3 + l3*t)\"\n";
+        let spec = trig_specfile::Spec::from_str_named(text, "gb3.toml").expect("spec");
+        let p = symbols("P", 4);
+        let vars = |names: [&str; 3]| names.iter().map(|n| Sym::var(n)).collect::<Vec<_>>();
+        let join = PrintedJoin::new(
+            spec,
+            JoinKind::C(2),
+            (vars(["u1", "u2", "u3"]), vars(["v1", "v2", "v3"])),
+            (
+                symbols("P", 4),
+                (4..8).map(|i| Sym::var(&format!("P{i}"))).collect(),
+            ),
+            // the Bézier rules P₅ = 2P₃ − P₂, P₆ = P₁ − 4P₂ + 4P₃: wrong here
+            vec![
+                Printed::new(1, vec![Sym::int(2) * &p[3], -p[2].clone()]),
+                Printed::new(
+                    2,
+                    vec![p[1].clone(), Sym::int(-4) * &p[2], Sym::int(4) * &p[3]],
+                ),
+            ],
+        );
+        let v = audit(&join);
+        assert_eq!(v.status, Status::Fails);
+        let derived = v.evidence.iter().find(|e| e.kind == Kind::Derived).unwrap();
+        assert!(
+            derived.text.contains("v₁ = −3") && derived.text.contains("v₂ = −3"),
+            "{derived:?}"
+        );
     }
 }
