@@ -44,6 +44,7 @@ pub mod numeric;
 pub mod quoted;
 pub mod recomputed;
 pub mod region;
+pub mod same_basis;
 pub mod shape_effect;
 pub mod span;
 pub mod surface;

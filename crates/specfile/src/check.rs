@@ -246,6 +246,19 @@ pub enum Check {
         /// print it reads.
         readings: Vec<Reading>,
     },
+    /// The basis equals another basis (a spec file, `path` as written,
+    /// relative to the claim's file) under a change of parameter — each of
+    /// the other's parameters a printed formula in this basis's — and of
+    /// the variable through the ring's atoms: `bᵢ = gᵢ` for every `i`.
+    SameBasis {
+        path: String,
+        other: Box<crate::Spec>,
+        /// `(other's parameter, formula in this basis's parameters)`, one
+        /// for each of the other's parameters.
+        params: Vec<(String, Sym)>,
+        /// The substitution as printed (`λ = m`).
+        params_text: String,
+    },
 }
 
 /// A printed identity `lhs = rhs`: each side a formula in the variable,

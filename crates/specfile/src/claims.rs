@@ -271,11 +271,12 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             let (path, text) = data_file(src, c)?;
             Check::TableArithmetic { path, text }
         }
+        "same-basis" => same_basis(src, spec, c)?,
         other => {
             return src.invalid(
                 c.check.span(),
                 "claims.check",
-                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, all, not-printed, interpolant-nonnegative or table-arithmetic"),
+                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, all, not-printed, interpolant-nonnegative, table-arithmetic or same-basis"),
             );
         }
     };
@@ -310,6 +311,11 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             c.scheme.as_ref().map(Spanned::span),
             matches!(check, Check::InterpolantNonnegative { .. }),
         ),
+        (
+            "other",
+            c.other.as_ref().map(Spanned::span),
+            matches!(check, Check::SameBasis { .. }),
+        ),
     ] {
         if let (Some(span), false) = (given, taken) {
             return src.invalid(
@@ -321,6 +327,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                         "claims" | "brief" => "all",
                         "reason" => "not-printed",
                         "data" => "interpolant-nonnegative` or `check = \"table-arithmetic",
+                        "other" => "same-basis",
                         _ => "interpolant-nonnegative",
                     }
                 ),
@@ -451,6 +458,58 @@ fn data_file(src: &Source<'_>, c: &RawClaim) -> Result<(String, String)> {
             format!("{}: {}", file.display(), e.reason()),
         ),
     }
+}
+
+/// `other = "han.toml"` (a spec file, relative to the claim's file: read
+/// here, its basis only) and `params = { lambda = "m" }`: each of its
+/// parameters as a formula in this basis's parameters.
+fn same_basis(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check> {
+    let path = need(src, c, &c.other, "other")?;
+    let dir = Path::new(src.file).parent().unwrap_or(Path::new(""));
+    let other = Spec::basis_from_file(&dir.join(path.get_ref().trim())).map_err(|e| {
+        SpecError::Invalid {
+            at: src.at(path.span().start),
+            field: "claims.other".into(),
+            message: e.to_string(),
+        }
+    })?;
+    let empty = std::collections::BTreeMap::new();
+    let map = c.params.as_ref().unwrap_or(&empty);
+    if let Some((name, value)) = map
+        .iter()
+        .find(|(name, _)| !other.params.iter().any(|p| &p.name == *name))
+    {
+        return src.invalid(
+            value.span(),
+            "claims.params",
+            format!("`{name}`: not a parameter of {}", other.id),
+        );
+    }
+    let mut params = Vec::new();
+    let mut shown = Vec::new();
+    for p in &other.params {
+        let Some(value) = map.get(&p.name) else {
+            return src.invalid(
+                path.span(),
+                "claims.params",
+                format!(
+                    "`{}` of {} needs a value in `params` (a formula in this basis's parameters)",
+                    p.name, other.id
+                ),
+            );
+        };
+        params.push((
+            p.name.clone(),
+            formula_in(src, spec, value, "", value.get_ref(), &[])?,
+        ));
+        shown.push(format!("{} = {}", p.symbol, value.get_ref().trim()));
+    }
+    Ok(Check::SameBasis {
+        path: path.get_ref().trim().to_string(),
+        other: Box::new(other),
+        params,
+        params_text: shown.join(", "),
+    })
 }
 
 /// `control = "point"` (the control point `P_j`) or a parameter's name

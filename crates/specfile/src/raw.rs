@@ -114,6 +114,9 @@ pub struct RawClaim {
     pub readings: Option<Vec<RawReading>>,
     /// `check = "identity"`: the curve is rational, `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ`.
     pub weights: Option<bool>,
+    /// `check = "same-basis"`: the other basis (a spec file, relative to
+    /// the claim's file).
+    pub other: Option<Spanned<String>>,
     /// The statement is the negation of the check ("is not C⁴").
     pub negated: Option<bool>,
     /// Remarks shown after the evidence (how a print is read, what the

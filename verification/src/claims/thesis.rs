@@ -3,7 +3,6 @@
 //! and the Appendix 2 listing.
 
 use rug::Rational;
-use trig_core::families::thesis::{surface_matrix_a, surface_row_t};
 use trig_core::{Family, Variable};
 use trig_symbolic::Sym;
 
@@ -25,10 +24,6 @@ pub const CLAIMS: &[Claim] = &[
         check: t27,
     },
     Claim {
-        id: "T25",
-        check: t25,
-    },
-    Claim {
         id: "T28",
         check: t28,
     },
@@ -44,27 +39,6 @@ pub const CLAIMS: &[Claim] = &[
 
 fn points(n: usize) -> Vec<Sym> {
     symbols("P", n)
-}
-
-fn t25() -> Verdict {
-    let (s, c, m) = (Sym::var("s"), Sym::var("c"), Sym::var("m"));
-    let t = surface_row_t(&s, &c);
-    let a = surface_matrix_a(&m);
-    let b = basis(Family::ThesisCubic);
-    let mut v = identities(
-        (0..4)
-            .map(|col| {
-                let entry = (0..7).fold(Sym::zero(), |acc, r| acc + &(t[r].clone() * &a[r][col]));
-                (format!("([T][A])_{col} − b{col}"), entry, b[col].clone())
-            })
-            .collect(),
-    );
-    if v.status == Status::Holds {
-        v.evidence.push(
-            "hence [T][A][V][A]^T[U] = [b(u)] V [b(v)]^T = Σ_i Σ_j b_i(u) b_j(v) V_{ij}, the double sum (5.3) with P_{i,j} = V_{ij}",
-        );
-    }
-    v
 }
 
 fn t28() -> Verdict {

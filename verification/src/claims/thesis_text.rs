@@ -37,10 +37,6 @@ pub const CLAIMS: &[Claim] = &[
         id: "T68",
         check: t68,
     },
-    Claim {
-        id: "T71",
-        check: t71,
-    },
 ];
 
 const QUOTES: &str = include_str!("thesis_text_quotes.txt");
@@ -627,41 +623,6 @@ fn t68() -> Verdict {
         ),
         Err(why) => Verdict::not_checkable(why),
     }
-}
-
-fn t71() -> Verdict {
-    let tables = match tables() {
-        Ok(t) => t,
-        Err(e) => return Verdict::not_checkable(e),
-    };
-    let mut counts: Vec<String> = Vec::new();
-    for t in tables
-        .iter()
-        .filter(|t| SCHEMES.contains(&t.scheme.as_str()))
-    {
-        let n = segments(t).map_or(0, |s| s.len());
-        let line = format!("{} {n}", t.letter);
-        if !counts.contains(&line) {
-            counts.push(line);
-        }
-    }
-    let letters: Vec<&str> = tables.iter().map(|t| t.letter.as_str()).collect();
-    let varies = letters.iter().any(|l| {
-        counts
-            .iter()
-            .filter(|c| c.split(' ').next() == Some(l))
-            .count()
-            > 1
-    });
-    if varies {
-        return Verdict::not_checkable(
-            "a letter appears with two segment counts, but the tables do not say the segmentation is the only change",
-        );
-    }
-    Verdict::not_checkable(format!(
-        "no table varies the number of segments of a shape: each letter is fitted with one segmentation only (segments per letter: {}), so no printed error belongs to a finer partition of the same outline; the claim needs the errors of one outline at two segment counts",
-        counts.join(", ")
-    ))
 }
 
 #[cfg(test)]

@@ -18,23 +18,10 @@ use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
 /// In report order (after the other second-list claims).
-pub const CLAIMS: &[Claim] = &[
-    Claim {
-        id: "T70",
-        check: t70,
-    },
-    Claim {
-        id: "S4",
-        check: s4,
-    },
-];
-
-/// No formula, no decision; the inference as printed is also incomplete.
-fn s4() -> Verdict {
-    Verdict::not_checkable(
-        "the α-B-spline basis functions of seed 003 (Methodology, after \"the following\") are missing from our copy (catalog entry `seed003` has no formulas), so neither property can be decided. Note on the printed inference: nonnegativity and mixing (Σ = 1) give the convex hull, but not convexity preservation — that needs variation diminishing (e.g. a totally positive basis); a nonnegative partition of unity need not be totally positive (squares-han at λ = 5/4, verification/tests/total_positivity.rs)",
-    )
-}
+pub const CLAIMS: &[Claim] = &[Claim {
+    id: "T70",
+    check: t70,
+}];
 
 /// Degrees of the Bernstein checks of T70.
 const T70_DEGREES: std::ops::RangeInclusive<usize> = 1..=6;

@@ -613,6 +613,12 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
             curve,
             readings,
         } => trig_judge::identity::printed_identities(spec, identities, curve.as_ref(), readings),
+        Check::SameBasis {
+            other,
+            params,
+            params_text,
+            ..
+        } => trig_judge::same_basis::same_basis(spec, other.as_ref(), params, params_text),
         Check::LocalControl {
             varied,
             segments,
