@@ -10,6 +10,7 @@
 //! is the exact recomputed value rounded to the quoted decimals.
 
 use rug::Rational;
+use trig_core::Family;
 use trig_symbolic::Sym;
 
 use trig_judge::table_arithmetic::{Num, SCHEMES, SYMBOLS, Table, parse, summary_row, total_row};
@@ -17,9 +18,11 @@ use trig_judge::table_arithmetic::{Num, SCHEMES, SYMBOLS, Table, parse, summary_
 /// The tables of claim T32 (the table file beside the thesis's document file).
 const DATA: &str = include_str!("../../../documents/thesis/tables-6.2-6.17.txt");
 use crate::claim::Claim;
+use trig_judge::exact::IDENTITY;
 use trig_judge::quoted::{QUOTED, quoted_figure, quoted_order};
 use trig_judge::recomputed::decimal;
 use trig_judge::recomputed::{self, Cell, Recomputed};
+use trig_judge::same_basis::same_basis;
 use trig_verdict::evidence::{Evidence, Kind, Relation, Witness};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
@@ -547,12 +550,31 @@ fn same(a: &[Segment], b: &[Segment], column: usize) -> Result<Vec<bool>, String
 /// epsilon segments" (the Before columns).
 const T68_COUNT: &str = "10";
 
+/// T28, the premise of T68: (3.7) is (6.2) with `λ = m` and (6.1) with
+/// `η = m + 1`, decided by the same-basis judge.
+fn t28() -> Verdict {
+    let m = Sym::var("m");
+    let same = |other: Family, name: &str, value: Sym, text: &str| {
+        same_basis(&Family::ThesisCubic, &other, &[(name.into(), value)], text)
+    };
+    Verdict::all(
+        IDENTITY,
+        vec![
+            (
+                "(6.2)".into(),
+                same(Family::Han, "lambda", m.clone(), "λ = m"),
+            ),
+            (
+                "(6.1)".into(),
+                same(Family::MajeedQayyum, "eta", m + &Sym::one(), "η = m + 1"),
+            ),
+        ],
+    )
+}
+
 fn t68() -> Verdict {
-    let t28 = super::thesis::CLAIMS
-        .iter()
-        .find(|c| c.id == "T28")
-        .map(|c| (c.check)());
-    let Some(t28) = t28.filter(|v| v.status == Status::Holds) else {
+    let t28 = t28();
+    let Some(t28) = Some(t28).filter(|v| v.status == Status::Holds) else {
         return Verdict::not_checkable(
             "T28 (the identities (3.7)(m) ≡ (6.2)(λ = m) ≡ (6.1)(η = m + 1)) does not hold, so the expected equalities have no basis",
         );
