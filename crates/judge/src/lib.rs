@@ -50,6 +50,7 @@ pub mod span;
 pub mod surface;
 pub mod symmetry;
 pub mod table_arithmetic;
+pub mod table_quotes;
 pub mod total_positivity;
 pub mod tp_maximal;
 pub mod tp_maximal_box;

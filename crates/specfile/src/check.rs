@@ -231,6 +231,16 @@ pub enum Check {
     /// totals, extremes and means of the segment rows, summaries against
     /// the tables they summarise, the best scheme against the summaries.
     TableArithmetic { path: String, text: String },
+    /// The figures and statements in words a document's text quotes from
+    /// printed error tables (a table file, `path`; `quotes_path` a quotes
+    /// file of the statements in words, each with its reading; both as
+    /// written, relative to the claim's file, and as read), recomputed.
+    TableQuotes {
+        path: String,
+        text: String,
+        quotes_path: String,
+        quotes: String,
+    },
     /// Each function has exactly one maximum on the domain ("each bᵢ has
     /// one maximum value").
     OneMaximum,

@@ -272,11 +272,22 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             Check::TableArithmetic { path, text }
         }
         "same-basis" => same_basis(src, spec, c)?,
+        "table-quotes" => {
+            let (path, text) = data_file(src, c)?;
+            let (quotes_path, quotes) =
+                file_field(src, need(src, c, &c.quotes, "quotes")?, "quotes")?;
+            Check::TableQuotes {
+                path,
+                text,
+                quotes_path,
+                quotes,
+            }
+        }
         other => {
             return src.invalid(
                 c.check.span(),
                 "claims.check",
-                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, all, not-printed, interpolant-nonnegative, table-arithmetic or same-basis"),
+                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, all, not-printed, interpolant-nonnegative, table-arithmetic, table-quotes or same-basis"),
             );
         }
     };
@@ -303,8 +314,15 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             c.data.as_ref().map(Spanned::span),
             matches!(
                 check,
-                Check::InterpolantNonnegative { .. } | Check::TableArithmetic { .. }
+                Check::InterpolantNonnegative { .. }
+                    | Check::TableArithmetic { .. }
+                    | Check::TableQuotes { .. }
             ),
+        ),
+        (
+            "quotes",
+            c.quotes.as_ref().map(Spanned::span),
+            matches!(check, Check::TableQuotes { .. }),
         ),
         (
             "scheme",
@@ -326,8 +344,9 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                     match field {
                         "claims" | "brief" => "all",
                         "reason" => "not-printed",
-                        "data" => "interpolant-nonnegative` or `check = \"table-arithmetic",
+                        "data" => "interpolant-nonnegative`, `check = \"table-arithmetic` or `check = \"table-quotes",
                         "other" => "same-basis",
+                        "quotes" => "table-quotes",
                         _ => "interpolant-nonnegative",
                     }
                 ),
@@ -371,7 +390,9 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
     }
     if matches!(
         check,
-        Check::InterpolantNonnegative { .. } | Check::TableArithmetic { .. }
+        Check::InterpolantNonnegative { .. }
+            | Check::TableArithmetic { .. }
+            | Check::TableQuotes { .. }
     ) && !given.is_empty()
     {
         return src.invalid(
@@ -447,14 +468,19 @@ fn interpolant(src: &Source<'_>, c: &RawClaim) -> Result<Check> {
 /// The table file `data = "…"` names (relative to the claim's file), as
 /// written and as read: a file that cannot be read is an error of the file.
 fn data_file(src: &Source<'_>, c: &RawClaim) -> Result<(String, String)> {
-    let path = need(src, c, &c.data, "data")?;
+    file_field(src, need(src, c, &c.data, "data")?, "data")
+}
+
+/// The file a field names (relative to the claim's file), as written and
+/// as read: a file that cannot be read is an error of the file.
+fn file_field(src: &Source<'_>, path: &Spanned<String>, field: &str) -> Result<(String, String)> {
     let dir = Path::new(src.file).parent().unwrap_or(Path::new(""));
     let file = dir.join(path.get_ref().trim());
     match read_text(&Input::of(&file), MAX_TEXT_BYTES) {
         Ok(text) => Ok((path.get_ref().trim().to_string(), text)),
         Err(e) => src.invalid(
             path.span(),
-            "claims.data",
+            &format!("claims.{field}"),
             format!("{}: {}", file.display(), e.reason()),
         ),
     }

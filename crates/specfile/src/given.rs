@@ -564,7 +564,8 @@ impl<'a> Substitution<'a> {
             | Check::JoinSingular { .. }
             | Check::NotPrinted { .. }
             | Check::InterpolantNonnegative { .. }
-            | Check::TableArithmetic { .. } => {}
+            | Check::TableArithmetic { .. }
+            | Check::TableQuotes { .. } => {}
         }
         Ok(c)
     }

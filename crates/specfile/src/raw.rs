@@ -103,6 +103,9 @@ pub struct RawClaim {
     /// table's own unless given).
     pub data: Option<Spanned<String>>,
     pub scheme: Option<Spanned<String>>,
+    /// `check = "table-quotes"`: the quotes file (relative to the claim's
+    /// file): the statements in words about the tables of `data`.
+    pub quotes: Option<Spanned<String>>,
     /// `check = "identity"`: the printed identities `lhs = rhs`.
     pub identities: Option<Vec<Spanned<String>>>,
     /// `check = "identity"`: the printed name of the curve `Σ bᵢPᵢ`.
