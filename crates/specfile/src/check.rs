@@ -231,6 +231,16 @@ pub enum Check {
     /// totals, extremes and means of the segment rows, summaries against
     /// the tables they summarise, the best scheme against the summaries.
     TableArithmetic { path: String, text: String },
+    /// The figures and statements in words a document's text quotes from
+    /// printed error tables (a table file, `path`; `quotes_path` a quotes
+    /// file of the statements in words, each with its reading; both as
+    /// written, relative to the claim's file, and as read), recomputed.
+    TableQuotes {
+        path: String,
+        text: String,
+        quotes_path: String,
+        quotes: String,
+    },
     /// Each function has exactly one maximum on the domain ("each bᵢ has
     /// one maximum value").
     OneMaximum,
@@ -245,6 +255,19 @@ pub enum Check {
         /// Readings of garbled or mistyped prints, each decided beside the
         /// print it reads.
         readings: Vec<Reading>,
+    },
+    /// The basis equals another basis (a spec file, `path` as written,
+    /// relative to the claim's file) under a change of parameter — each of
+    /// the other's parameters a printed formula in this basis's — and of
+    /// the variable through the ring's atoms: `bᵢ = gᵢ` for every `i`.
+    SameBasis {
+        path: String,
+        other: Box<crate::Spec>,
+        /// `(other's parameter, formula in this basis's parameters)`, one
+        /// for each of the other's parameters.
+        params: Vec<(String, Sym)>,
+        /// The substitution as printed (`λ = m`).
+        params_text: String,
     },
 }
 

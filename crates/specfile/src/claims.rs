@@ -271,11 +271,23 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             let (path, text) = data_file(src, c)?;
             Check::TableArithmetic { path, text }
         }
+        "same-basis" => same_basis(src, spec, c)?,
+        "table-quotes" => {
+            let (path, text) = data_file(src, c)?;
+            let (quotes_path, quotes) =
+                file_field(src, need(src, c, &c.quotes, "quotes")?, "quotes")?;
+            Check::TableQuotes {
+                path,
+                text,
+                quotes_path,
+                quotes,
+            }
+        }
         other => {
             return src.invalid(
                 c.check.span(),
                 "claims.check",
-                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, all, not-printed, interpolant-nonnegative or table-arithmetic"),
+                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, all, not-printed, interpolant-nonnegative, table-arithmetic, table-quotes or same-basis"),
             );
         }
     };
@@ -302,13 +314,25 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             c.data.as_ref().map(Spanned::span),
             matches!(
                 check,
-                Check::InterpolantNonnegative { .. } | Check::TableArithmetic { .. }
+                Check::InterpolantNonnegative { .. }
+                    | Check::TableArithmetic { .. }
+                    | Check::TableQuotes { .. }
             ),
+        ),
+        (
+            "quotes",
+            c.quotes.as_ref().map(Spanned::span),
+            matches!(check, Check::TableQuotes { .. }),
         ),
         (
             "scheme",
             c.scheme.as_ref().map(Spanned::span),
             matches!(check, Check::InterpolantNonnegative { .. }),
+        ),
+        (
+            "other",
+            c.other.as_ref().map(Spanned::span),
+            matches!(check, Check::SameBasis { .. }),
         ),
     ] {
         if let (Some(span), false) = (given, taken) {
@@ -320,7 +344,9 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                     match field {
                         "claims" | "brief" => "all",
                         "reason" => "not-printed",
-                        "data" => "interpolant-nonnegative` or `check = \"table-arithmetic",
+                        "data" => "interpolant-nonnegative`, `check = \"table-arithmetic` or `check = \"table-quotes",
+                        "other" => "same-basis",
+                        "quotes" => "table-quotes",
                         _ => "interpolant-nonnegative",
                     }
                 ),
@@ -364,7 +390,9 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
     }
     if matches!(
         check,
-        Check::InterpolantNonnegative { .. } | Check::TableArithmetic { .. }
+        Check::InterpolantNonnegative { .. }
+            | Check::TableArithmetic { .. }
+            | Check::TableQuotes { .. }
     ) && !given.is_empty()
     {
         return src.invalid(
@@ -440,17 +468,74 @@ fn interpolant(src: &Source<'_>, c: &RawClaim) -> Result<Check> {
 /// The table file `data = "…"` names (relative to the claim's file), as
 /// written and as read: a file that cannot be read is an error of the file.
 fn data_file(src: &Source<'_>, c: &RawClaim) -> Result<(String, String)> {
-    let path = need(src, c, &c.data, "data")?;
+    file_field(src, need(src, c, &c.data, "data")?, "data")
+}
+
+/// The file a field names (relative to the claim's file), as written and
+/// as read: a file that cannot be read is an error of the file.
+fn file_field(src: &Source<'_>, path: &Spanned<String>, field: &str) -> Result<(String, String)> {
     let dir = Path::new(src.file).parent().unwrap_or(Path::new(""));
     let file = dir.join(path.get_ref().trim());
     match read_text(&Input::of(&file), MAX_TEXT_BYTES) {
         Ok(text) => Ok((path.get_ref().trim().to_string(), text)),
         Err(e) => src.invalid(
             path.span(),
-            "claims.data",
+            &format!("claims.{field}"),
             format!("{}: {}", file.display(), e.reason()),
         ),
     }
+}
+
+/// `other = "han.toml"` (a spec file, relative to the claim's file: read
+/// here, its basis only) and `params = { lambda = "m" }`: each of its
+/// parameters as a formula in this basis's parameters.
+fn same_basis(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check> {
+    let path = need(src, c, &c.other, "other")?;
+    let dir = Path::new(src.file).parent().unwrap_or(Path::new(""));
+    let other = Spec::basis_from_file(&dir.join(path.get_ref().trim())).map_err(|e| {
+        SpecError::Invalid {
+            at: src.at(path.span().start),
+            field: "claims.other".into(),
+            message: e.to_string(),
+        }
+    })?;
+    let empty = std::collections::BTreeMap::new();
+    let map = c.params.as_ref().unwrap_or(&empty);
+    if let Some((name, value)) = map
+        .iter()
+        .find(|(name, _)| !other.params.iter().any(|p| &p.name == *name))
+    {
+        return src.invalid(
+            value.span(),
+            "claims.params",
+            format!("`{name}`: not a parameter of {}", other.id),
+        );
+    }
+    let mut params = Vec::new();
+    let mut shown = Vec::new();
+    for p in &other.params {
+        let Some(value) = map.get(&p.name) else {
+            return src.invalid(
+                path.span(),
+                "claims.params",
+                format!(
+                    "`{}` of {} needs a value in `params` (a formula in this basis's parameters)",
+                    p.name, other.id
+                ),
+            );
+        };
+        params.push((
+            p.name.clone(),
+            formula_in(src, spec, value, "", value.get_ref(), &[])?,
+        ));
+        shown.push(format!("{} = {}", p.symbol, value.get_ref().trim()));
+    }
+    Ok(Check::SameBasis {
+        path: path.get_ref().trim().to_string(),
+        other: Box::new(other),
+        params,
+        params_text: shown.join(", "),
+    })
 }
 
 /// `control = "point"` (the control point `P_j`) or a parameter's name

@@ -549,6 +549,11 @@ impl<'a> Substitution<'a> {
                     item.rhs = self.sym(&item.rhs, &what)?;
                 }
             }
+            Check::SameBasis { params, .. } => {
+                for (_, f) in params.iter_mut() {
+                    *f = self.sym(f, "the printed change of parameter")?;
+                }
+            }
             Check::Unity
             | Check::OneMaximum
             | Check::ShapeEffect { .. }
@@ -559,7 +564,8 @@ impl<'a> Substitution<'a> {
             | Check::JoinSingular { .. }
             | Check::NotPrinted { .. }
             | Check::InterpolantNonnegative { .. }
-            | Check::TableArithmetic { .. } => {}
+            | Check::TableArithmetic { .. }
+            | Check::TableQuotes { .. } => {}
         }
         Ok(c)
     }

@@ -103,6 +103,9 @@ pub struct RawClaim {
     /// table's own unless given).
     pub data: Option<Spanned<String>>,
     pub scheme: Option<Spanned<String>>,
+    /// `check = "table-quotes"`: the quotes file (relative to the claim's
+    /// file): the statements in words about the tables of `data`.
+    pub quotes: Option<Spanned<String>>,
     /// `check = "identity"`: the printed identities `lhs = rhs`.
     pub identities: Option<Vec<Spanned<String>>>,
     /// `check = "identity"`: the printed name of the curve `Σ bᵢPᵢ`.
@@ -114,6 +117,9 @@ pub struct RawClaim {
     pub readings: Option<Vec<RawReading>>,
     /// `check = "identity"`: the curve is rational, `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ`.
     pub weights: Option<bool>,
+    /// `check = "same-basis"`: the other basis (a spec file, relative to
+    /// the claim's file).
+    pub other: Option<Spanned<String>>,
     /// The statement is the negation of the check ("is not C⁴").
     pub negated: Option<bool>,
     /// Remarks shown after the evidence (how a print is read, what the

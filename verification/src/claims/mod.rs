@@ -25,7 +25,6 @@ mod thesis_lsq;
 mod thesis_out_of_range;
 mod thesis_survey;
 mod thesis_text;
-mod total_positivity;
 
 /// The Rust checkers of the claims still marked `built-in`.
 pub fn all() -> Vec<Claim> {
@@ -49,7 +48,6 @@ pub fn all() -> Vec<Claim> {
         thesis_lsq::CLAIMS,
         shape_effect::CLAIMS,
         local_control::CLAIMS,
-        total_positivity::CLAIMS,
     ]
     .concat()
 }

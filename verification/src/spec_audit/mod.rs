@@ -605,6 +605,7 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
             trig_judge::interpolant::nonnegative(spec, data, *scheme)
         }
         Check::TableArithmetic { text, .. } => trig_judge::table_arithmetic::decide(text),
+        Check::TableQuotes { text, quotes, .. } => trig_judge::table_quotes::decide(text, quotes),
         Check::OneMaximum => {
             trig_judge::maxima::exactly_one_maximum(spec, &trig_judge::exact::basis_of(spec))
         }
@@ -613,6 +614,12 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
             curve,
             readings,
         } => trig_judge::identity::printed_identities(spec, identities, curve.as_ref(), readings),
+        Check::SameBasis {
+            other,
+            params,
+            params_text,
+            ..
+        } => trig_judge::same_basis::same_basis(spec, other.as_ref(), params, params_text),
         Check::LocalControl {
             varied,
             segments,
