@@ -182,6 +182,7 @@ impl DocumentFile {
         }
         let mut claims: Vec<DocumentClaim> = Vec::new();
         for c in &raw.claims {
+            let c = &other_as_path(c, &raw.bases);
             let read = document_claim(&src, &mut bases, c)?;
             if claims.iter().any(|d| d.id() == read.id()) {
                 return src.invalid(
@@ -200,6 +201,23 @@ impl DocumentFile {
             claims,
         })
     }
+}
+
+/// `other = "han"` (a same-basis claim, or part, naming a basis of the
+/// file) read as that basis's spec file; any other `other` is a path.
+fn other_as_path(c: &RawClaim, bases: &BTreeMap<String, Spanned<String>>) -> RawClaim {
+    let mut c = c.clone();
+    if let Some(other) = &c.other
+        && let Some(path) = bases.get(other.get_ref().trim())
+    {
+        c.other = Some(Spanned::new(other.span(), path.get_ref().clone()));
+    }
+    if let Some(parts) = &mut c.parts {
+        for p in parts.iter_mut() {
+            *p = other_as_path(p, bases);
+        }
+    }
+    c
 }
 
 /// One claim, read against the basis it names (the file's only basis when
