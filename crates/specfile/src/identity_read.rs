@@ -24,7 +24,7 @@ use toml::Spanned;
 
 use crate::check::{Application, Applied, Check, Curve, Identity, Reading};
 use crate::error::Result;
-use crate::raw::RawClaim;
+use crate::raw::{RawClaim, RawCurve};
 use crate::source::Source;
 use crate::spec::{MAX_ORDER, Spec};
 
@@ -43,14 +43,13 @@ pub(crate) fn identity(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Ch
             ),
         );
     };
-    let curve = match &c.curve {
-        Some(name) => {
-            let name = name.get_ref().trim().to_string();
-            Some(Curve {
-                name,
-                weighted: c.weights.unwrap_or(false),
-            })
-        }
+    let mut curves: Vec<Curve> = Vec::new();
+    match &c.curve {
+        Some(name) => curves.push(Curve {
+            name: name.get_ref().trim().to_string(),
+            weighted: c.weights.unwrap_or(false),
+            points: None,
+        }),
         None if c.weights.is_some() => {
             return src.invalid(
                 c.check.span(),
@@ -58,13 +57,13 @@ pub(crate) fn identity(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Ch
                 "`weights` belongs to a claim with a `curve`".into(),
             );
         }
-        None => None,
-    };
+        None => {}
+    }
     let mut extra: Vec<String> = Vec::new();
     let mut names = spec.names();
-    if curve.is_some() {
+    if let Some(curve) = curves.first() {
         for prefix in ["P", "w"] {
-            if prefix == "w" && !curve.as_ref().is_some_and(|k| k.weighted) {
+            if prefix == "w" && !curve.weighted {
                 continue;
             }
             for i in 0..spec.functions.len() {
@@ -93,9 +92,12 @@ pub(crate) fn identity(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Ch
             extra.push(name.to_string());
         }
     }
+    for raw in c.curves.iter().flatten() {
+        curves.push(printed_curve(src, spec, raw, &curves, &extra)?);
+    }
     let identities = items
         .iter()
-        .map(|item| one(src, spec, item, curve.as_ref(), &extra))
+        .map(|item| one(src, spec, item, &curves, &extra))
         .collect::<Result<Vec<_>>>()?;
     if identities.is_empty() {
         return src.invalid(
@@ -118,13 +120,61 @@ pub(crate) fn identity(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Ch
         };
         readings.push(Reading {
             of,
-            identity: one(src, spec, &r.read, curve.as_ref(), &extra)?,
+            identity: one(src, spec, &r.read, &curves, &extra)?,
         });
     }
     Ok(Check::Identity {
         identities,
-        curve,
+        curves,
         readings,
+    })
+}
+
+/// A curve of printed control points: one formula per function, in the
+/// parameters and the free symbols; its name unlike every other name.
+fn printed_curve(
+    src: &Source<'_>,
+    spec: &Spec,
+    raw: &RawCurve,
+    before: &[Curve],
+    extra: &[String],
+) -> Result<Curve> {
+    let name = raw.name.get_ref().trim().to_string();
+    let taken = spec.names().fixed(&name, "a curve of the identities");
+    if let Err(e) = taken {
+        return src.invalid(raw.name.span(), "claims.curves", e.to_string());
+    }
+    if before.iter().any(|k| k.name == name) || extra.contains(&name) {
+        return src.invalid(
+            raw.name.span(),
+            "claims.curves",
+            format!("`{name}` names another curve or symbol of the claim"),
+        );
+    }
+    if raw.points.len() != spec.functions.len() {
+        return src.invalid(
+            raw.name.span(),
+            "claims.curves",
+            format!(
+                "curve `{name}`: {} control points for {} functions",
+                raw.points.len(),
+                spec.functions.len()
+            ),
+        );
+    }
+    let points = raw
+        .points
+        .iter()
+        .map(|p| {
+            spec.parse_claim_formula(p.get_ref(), extra, &[])
+                .map(|(v, _)| v)
+                .map_err(|e| src.formula_error(p, e))
+        })
+        .collect::<Result<Vec<_>>>()?;
+    Ok(Curve {
+        name,
+        weighted: false,
+        points: Some(points),
     })
 }
 
@@ -133,7 +183,7 @@ fn one(
     src: &Source<'_>,
     spec: &Spec,
     item: &Spanned<String>,
-    curve: Option<&Curve>,
+    curves: &[Curve],
     extra: &[String],
 ) -> Result<Identity> {
     let text = item.get_ref();
@@ -141,7 +191,7 @@ fn one(
         Some((label, formula)) => (label.trim(), formula),
         None => (text.trim(), text.as_str()),
     };
-    let (rest, applications) = applications(src, spec, formula, item, curve)?;
+    let (rest, applications) = applications(src, spec, formula, item, curves)?;
     let sides: Vec<&str> = rest.split('=').collect();
     if sides.len() != 2 {
         return src.invalid(
@@ -173,7 +223,7 @@ fn applications(
     spec: &Spec,
     formula: &str,
     item: &Spanned<String>,
-    curve: Option<&Curve>,
+    curves: &[Curve],
 ) -> Result<(String, Vec<Application>)> {
     let chars: Vec<char> = formula.chars().collect();
     let mut out = String::new();
@@ -195,8 +245,8 @@ fn applications(
         while j < chars.len() && chars[j] == '\'' {
             j += 1;
         }
-        let applied = if curve.is_some_and(|k| k.name == name) {
-            Some(Applied::Curve)
+        let applied = if let Some(k) = curves.iter().position(|k| k.name == name) {
+            Some(Applied::Curve(k))
         } else {
             spec.functions
                 .iter()
@@ -283,18 +333,18 @@ mod tests {
                 .unwrap();
         let Check::Identity {
             identities,
-            curve,
+            curves,
             readings,
         } = &spec.claims[0].check
         else {
             panic!("an identity claim");
         };
-        assert_eq!(curve.as_ref().unwrap().name, "H");
+        assert_eq!(curves[0].name, "H");
         let apps = &identities[0].applications;
         assert_eq!(apps.len(), 2);
         assert_eq!((apps[0].applied, apps[0].order), (Applied::Function(2), 1));
         assert_eq!(apps[0].argument_text, "1 - t");
-        assert_eq!((apps[1].applied, apps[1].order), (Applied::Curve, 0));
+        assert_eq!((apps[1].applied, apps[1].order), (Applied::Curve(0), 0));
         // a name for the report, and a reading of the named identity
         assert_eq!(identities[1].label, "step");
         assert_eq!(
@@ -318,5 +368,35 @@ mod tests {
         assert!(e.to_string().contains("`weights` belongs"), "{e}");
         // P0 is a control point only with a curve
         assert!(hermite_with("identities = [\"alpha_0(0) = P0\"]").is_err());
+    }
+
+    #[test]
+    fn printed_curves_are_read_with_one_point_per_function() {
+        let spec = hermite_with(
+            "symbols = [\"q\"]\ncurves = [{ name = \"R\", points = [\"q\", \"0\", \"1\", \"2*q\"] }]\nidentities = [\"R(0) = q\"]",
+        )
+        .unwrap();
+        let Check::Identity {
+            curves, identities, ..
+        } = &spec.claims[0].check
+        else {
+            panic!("an identity claim");
+        };
+        assert_eq!(curves[0].name, "R");
+        assert_eq!(
+            curves[0].points.as_ref().unwrap()[3],
+            trig_symbolic::Sym::var("q") * &trig_symbolic::Sym::int(2)
+        );
+        assert_eq!(identities[0].applications[0].applied, Applied::Curve(0));
+        let e = hermite_with(
+            "curves = [{ name = \"R\", points = [\"0\", \"1\"] }]\nidentities = [\"R(0) = 0\"]",
+        )
+        .unwrap_err();
+        assert!(
+            e.to_string().contains("2 control points for 4 functions"),
+            "{e}"
+        );
+        let e = hermite_with("curve = \"R\"\ncurves = [{ name = \"R\", points = [\"0\", \"0\", \"0\", \"0\"] }]\nidentities = [\"R(0) = 0\"]").unwrap_err();
+        assert!(e.to_string().contains("another curve"), "{e}");
     }
 }

@@ -610,9 +610,9 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
         }
         Check::Identity {
             identities,
-            curve,
+            curves,
             readings,
-        } => trig_judge::identity::printed_identities(spec, identities, curve.as_ref(), readings),
+        } => trig_judge::identity::printed_identities(spec, identities, curves, readings),
         Check::LocalControl {
             varied,
             segments,
