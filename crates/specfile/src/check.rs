@@ -226,6 +226,15 @@ pub enum Check {
         data: DataSet,
         scheme: Scheme,
     },
+    /// The interpolant of a printed data table (as for
+    /// [`Check::InterpolantNonnegative`]) is `C^order` at every interior
+    /// knot: the jumps of its derivatives of orders `0…order` vanish.
+    InterpolantContinuity {
+        path: String,
+        data: DataSet,
+        scheme: Scheme,
+        order: usize,
+    },
     /// Printed error tables (a table file, `path` as written, relative to
     /// the claim's file; `text` as read) against their own arithmetic:
     /// totals, extremes and means of the segment rows, summaries against

@@ -266,7 +266,20 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                 reason: reason.get_ref().trim().to_string(),
             }
         }
-        "interpolant-nonnegative" => interpolant(src, c)?,
+        "interpolant-nonnegative" => {
+            let (path, data, scheme) = interpolant(src, c)?;
+            Check::InterpolantNonnegative { path, data, scheme }
+        }
+        "interpolant-continuity" => {
+            let (path, data, scheme) = interpolant(src, c)?;
+            let order = order_field(src, c, need(src, c, &c.order, "order")?)?;
+            Check::InterpolantContinuity {
+                path,
+                data,
+                scheme,
+                order,
+            }
+        }
         "table-arithmetic" => {
             let (path, text) = data_file(src, c)?;
             Check::TableArithmetic { path, text }
@@ -275,7 +288,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             return src.invalid(
                 c.check.span(),
                 "claims.check",
-                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, all, not-printed, interpolant-nonnegative or table-arithmetic"),
+                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, all, not-printed, interpolant-nonnegative, interpolant-continuity or table-arithmetic"),
             );
         }
     };
@@ -302,13 +315,18 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             c.data.as_ref().map(Spanned::span),
             matches!(
                 check,
-                Check::InterpolantNonnegative { .. } | Check::TableArithmetic { .. }
+                Check::InterpolantNonnegative { .. }
+                    | Check::InterpolantContinuity { .. }
+                    | Check::TableArithmetic { .. }
             ),
         ),
         (
             "scheme",
             c.scheme.as_ref().map(Spanned::span),
-            matches!(check, Check::InterpolantNonnegative { .. }),
+            matches!(
+                check,
+                Check::InterpolantNonnegative { .. } | Check::InterpolantContinuity { .. }
+            ),
         ),
     ] {
         if let (Some(span), false) = (given, taken) {
@@ -321,7 +339,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                         "claims" | "brief" => "all",
                         "reason" => "not-printed",
                         "data" => "interpolant-nonnegative` or `check = \"table-arithmetic",
-                        _ => "interpolant-nonnegative",
+                        _ => "interpolant-nonnegative` or `check = \"interpolant-continuity",
                     }
                 ),
             );
@@ -364,7 +382,9 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
     }
     if matches!(
         check,
-        Check::InterpolantNonnegative { .. } | Check::TableArithmetic { .. }
+        Check::InterpolantNonnegative { .. }
+            | Check::InterpolantContinuity { .. }
+            | Check::TableArithmetic { .. }
     ) && !given.is_empty()
     {
         return src.invalid(
@@ -417,8 +437,9 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
 
 /// `data = "table-4.1.tsv"` (a table file, relative to the claim's file:
 /// read here, so a missing or malformed table is an error of the file) and
-/// `scheme` (the table's own unless given).
-fn interpolant(src: &Source<'_>, c: &RawClaim) -> Result<Check> {
+/// `scheme` (the table's own unless given): the path as written, the table,
+/// the scheme.
+fn interpolant(src: &Source<'_>, c: &RawClaim) -> Result<(String, DataSet, Scheme)> {
     let (path, text) = data_file(src, c)?;
     let data = match DataSet::parse(&text) {
         Ok(data) => data,
@@ -434,7 +455,7 @@ fn interpolant(src: &Source<'_>, c: &RawClaim) -> Result<Check> {
             Err(e) => return src.invalid(s.span(), "claims.scheme", e.to_string()),
         },
     };
-    Ok(Check::InterpolantNonnegative { path, data, scheme })
+    Ok((path, data, scheme))
 }
 
 /// The table file `data = "…"` names (relative to the claim's file), as

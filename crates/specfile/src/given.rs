@@ -562,6 +562,7 @@ impl<'a> Substitution<'a> {
             | Check::JoinSingular { .. }
             | Check::NotPrinted { .. }
             | Check::InterpolantNonnegative { .. }
+            | Check::InterpolantContinuity { .. }
             | Check::TableArithmetic { .. } => {}
         }
         Ok(c)

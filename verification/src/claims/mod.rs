@@ -31,7 +31,6 @@ mod total_positivity;
 pub fn all() -> Vec<Claim> {
     [
         thesis::CLAIMS,
-        thesis_interp::CLAIMS,
         thesis_joins::CLAIMS,
         seed000::CLAIMS,
         seed000_appendix_c::CLAIMS,

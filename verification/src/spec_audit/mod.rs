@@ -604,6 +604,12 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
         Check::InterpolantNonnegative { data, scheme, .. } => {
             trig_judge::interpolant::nonnegative(spec, data, *scheme)
         }
+        Check::InterpolantContinuity {
+            data,
+            scheme,
+            order,
+            ..
+        } => trig_judge::interpolant_jumps::continuity(spec, data, *scheme, *order),
         Check::TableArithmetic { text, .. } => trig_judge::table_arithmetic::decide(text),
         Check::OneMaximum => {
             trig_judge::maxima::exactly_one_maximum(spec, &trig_judge::exact::basis_of(spec))
