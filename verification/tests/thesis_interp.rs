@@ -1,4 +1,5 @@
-//! The interpolation claims T20–T24f (thesis 4.3): verdicts against hand
+//! The interpolation claims T20–T24f (thesis 4.3) and the least-squares
+//! identities T64 (6.5): verdicts against hand
 //! derivations (see the comments) and the evidence they must carry.
 
 use trig_verification::{Status, Verdict, run};
@@ -73,4 +74,22 @@ fn positivity_of_each_example() {
         &verdict("T24d"),
         "(corrected), piece 4: min P ∈ [-8.320263"
     ));
+}
+
+#[test]
+fn the_least_squares_normal_equations_are_the_gradient_but_two_prints() {
+    // (6.12)'s first line drops − Pᵢ, (6.15)'s second row repeats row 1's right side
+    let t64 = verdict("T64");
+    assert_eq!(t64.status, Status::HoldsAfterCorrection);
+    let failing: Vec<&str> = t64
+        .evidence
+        .iter()
+        .filter(|e| e.status == Some(Status::Fails))
+        .filter_map(|e| e.subject.as_deref())
+        .collect();
+    assert_eq!(failing.len(), 2, "{failing:?}");
+    assert!(failing[0].starts_with("(6.12) first line"));
+    assert!(failing[1].starts_with("(6.15) row 2 as printed"));
+    // by hand: ∂S/∂V1 − 2 Σ b1(tᵢ)F(tᵢ) = −2 Σ Pᵢ b1(tᵢ)
+    assert!(has(&t64, "-2*P_1*b1_1 - 2*P_2*b1_2"), "{:?}", t64.evidence);
 }

@@ -12,7 +12,7 @@
 //! ```
 //!
 //! An identity may be named for the report, `"(A1) Σ F_k = 1: F0 + F1 + F2 + F3 = 1"`
-//! (the text before the first `: `; formulas have no colon).
+//! (the text before the last `: `, which may itself contain `: `; formulas have no colon).
 //!
 //! Each application `NAME'…'(ARG)` is cut out of the text and replaced by a
 //! placeholder symbol; the rest is an ordinary claim formula (the bare
@@ -27,10 +27,13 @@ use crate::error::Result;
 use crate::raw::{RawClaim, RawCurve};
 use crate::source::Source;
 use crate::spec::{MAX_ORDER, Spec};
+use trig_symbolic::Sym;
 
 /// The prefix of the placeholder symbols (never a name of a file: the
 /// formula names of a file do not start with two underscores).
 const PLACEHOLDER: &str = "__at";
+/// The prefix of the placeholders of partial derivatives `diff(EXPR, NAME)`.
+const PARTIAL: &str = "__diff";
 
 pub(crate) fn identity(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check> {
     let Some(items) = &c.identities else {
@@ -187,11 +190,12 @@ fn one(
     extra: &[String],
 ) -> Result<Identity> {
     let text = item.get_ref();
-    let (label, formula) = match text.split_once(": ") {
+    let (label, formula) = match text.rsplit_once(": ") {
         Some((label, formula)) => (label.trim(), formula),
         None => (text.trim(), text.as_str()),
     };
-    let (rest, applications) = applications(src, spec, formula, item, curves)?;
+    let (formula, partials) = partials(src, spec, formula, item, extra)?;
+    let (rest, applications) = applications(src, spec, &formula, item, curves)?;
     let sides: Vec<&str> = rest.split('=').collect();
     if sides.len() != 2 {
         return src.invalid(
@@ -202,9 +206,14 @@ fn one(
     }
     let mut names: Vec<String> = extra.to_vec();
     names.extend(applications.iter().map(|a| a.symbol.clone()));
+    names.extend(partials.iter().map(|(symbol, _)| symbol.clone()));
     let side = |s: &str| {
         spec.parse_claim_formula(s, &names, &[])
-            .map(|(v, _)| v)
+            .map(|(v, _)| {
+                partials
+                    .iter()
+                    .fold(v, |v, (symbol, value)| v.subs(symbol, value))
+            })
             .map_err(|e| src.formula_error(item, e))
     };
     Ok(Identity {
@@ -214,6 +223,61 @@ fn one(
         rhs: side(sides[1])?,
         applications,
     })
+}
+
+/// The text with every partial derivative `diff(EXPR, NAME)` (`EXPR` a
+/// formula without applications, `NAME` a free symbol of the claim)
+/// replaced by a placeholder, and each placeholder's value `∂EXPR/∂NAME`,
+/// formed exactly in the ring.
+fn partials(
+    src: &Source<'_>,
+    spec: &Spec,
+    formula: &str,
+    item: &Spanned<String>,
+    extra: &[String],
+) -> Result<(String, Vec<(String, Sym)>)> {
+    let chars: Vec<char> = formula.chars().collect();
+    let mut out = String::new();
+    let mut found: Vec<(String, Sym)> = Vec::new();
+    let mut i = 0;
+    while i < chars.len() {
+        let starts = chars[i..].starts_with(&['d', 'i', 'f', 'f', '('])
+            && (i == 0 || !(chars[i - 1].is_alphanumeric() || chars[i - 1] == '_'));
+        if !starts {
+            out.push(chars[i]);
+            i += 1;
+            continue;
+        }
+        let open = i + 4;
+        let refuse = |why: String| {
+            src.invalid::<(String, Vec<(String, Sym)>)>(
+                item.span(),
+                "claims.identities",
+                format!("`{}`: {why}", item.get_ref()),
+            )
+        };
+        let Some(close) = matching(&chars, open) else {
+            return refuse("unbalanced parentheses after `diff`".into());
+        };
+        let inner: String = chars[open + 1..close].iter().collect();
+        let Some((expr, name)) = inner.rsplit_once(',') else {
+            return refuse("expected `diff(EXPR, NAME)`".into());
+        };
+        let name = name.trim();
+        if !extra.iter().any(|x| x == name) {
+            return refuse(format!(
+                "`diff(…, {name})`: `{name}` is not a free symbol of the claim (`symbols`)"
+            ));
+        }
+        let (value, _) = spec
+            .parse_claim_formula(expr, extra, &[])
+            .map_err(|e| src.formula_error(item, e))?;
+        let symbol = format!("{PARTIAL}{}", found.len());
+        out.push_str(&format!(" {symbol} "));
+        found.push((symbol, value.diff(name)));
+        i = close + 1;
+    }
+    Ok((out, found))
 }
 
 /// The text with every application `NAME'…'(ARG)` of a function (or the
@@ -398,5 +462,21 @@ mod tests {
         );
         let e = hermite_with("curve = \"R\"\ncurves = [{ name = \"R\", points = [\"0\", \"0\", \"0\", \"0\"] }]\nidentities = [\"R(0) = 0\"]").unwrap_err();
         assert!(e.to_string().contains("another curve"), "{e}");
+    }
+
+    #[test]
+    fn partial_derivatives_in_free_symbols_are_formed_exactly() {
+        let spec = hermite_with(
+            "symbols = [\"q\", \"r\"]\nidentities = [\"diff((q*r - 1)^2, q)/2 = r*(q*r - 1)\"]",
+        )
+        .unwrap();
+        let Check::Identity { identities, .. } = &spec.claims[0].check else {
+            panic!("an identity claim");
+        };
+        assert!((identities[0].lhs.clone() - &identities[0].rhs).is_zero());
+        let e = hermite_with("symbols = [\"q\"]\nidentities = [\"diff(q^2, z) = 0\"]").unwrap_err();
+        assert!(e.to_string().contains("not a free symbol"), "{e}");
+        let e = hermite_with("symbols = [\"q\"]\nidentities = [\"diff(q^2) = 0\"]").unwrap_err();
+        assert!(e.to_string().contains("expected `diff(EXPR, NAME)`"), "{e}");
     }
 }

@@ -21,7 +21,6 @@ mod thesis;
 mod thesis_interp;
 mod thesis_interp_text;
 mod thesis_joins;
-mod thesis_lsq;
 mod thesis_out_of_range;
 mod thesis_survey;
 mod thesis_text;
@@ -45,7 +44,6 @@ pub fn all() -> Vec<Claim> {
         thesis_text::CLAIMS,
         thesis_survey::CLAIMS,
         thesis_interp_text::CLAIMS,
-        thesis_lsq::CLAIMS,
         shape_effect::CLAIMS,
         local_control::CLAIMS,
         total_positivity::CLAIMS,
