@@ -1,4 +1,5 @@
-//! The interpolation claims T20–T24f (thesis 4.3): verdicts against hand
+//! The interpolation claims T20–T24f (thesis 4.3) and the least-squares
+//! identities T64 (6.5): verdicts against hand
 //! derivations (see the comments) and the evidence they must carry.
 
 use trig_verification::{Status, Verdict, run};
@@ -29,7 +30,9 @@ fn the_c2_scheme_is_only_c1_and_its_d_i_are_u_derivatives() {
     assert!(has(&t21, "(corrected), knot x = 4") && t21.correction.is_some());
     let t21b = verdict("T21b");
     assert_eq!(t21b.status, Status::HoldsAfterCorrection);
-    assert!(has(&t21b, "D_i − d²P/du²(0): holds"));
+    // the printed (4.23), (4.24) read as derivatives in u hold
+    assert!(has(&t21b, "D_i = d²P/du²(0)"));
+    assert!(t21b.correction.is_some());
 }
 
 #[test]
@@ -42,7 +45,8 @@ fn the_g1_scheme_has_slope_jumps_and_the_g2_formula_drops_a_term() {
     assert_eq!(t23.status, Status::HoldsAfterCorrection);
     // (π²/4)·2·(2m + 1)V₃ in u
     assert!(has(&t23, "m*pi^2*V3 + 1/2*pi^2*V3"));
-    assert!(has(&t23, "sum to 2*m + 2"));
+    // the term 2(1 + m)(α + 1)V₃ read as (1 + 2(1 + m)α)V₃ holds
+    assert!(has(&t23, "(1 + 2(1+m)α)V_3^1 for 2(1+m)(α+1)V_3^1: holds"));
 }
 
 #[test]
@@ -70,4 +74,22 @@ fn positivity_of_each_example() {
         &verdict("T24d"),
         "(corrected), piece 4: min P ∈ [-8.320263"
     ));
+}
+
+#[test]
+fn the_least_squares_normal_equations_are_the_gradient_but_two_prints() {
+    // (6.12)'s first line drops − Pᵢ, (6.15)'s second row repeats row 1's right side
+    let t64 = verdict("T64");
+    assert_eq!(t64.status, Status::HoldsAfterCorrection);
+    let failing: Vec<&str> = t64
+        .evidence
+        .iter()
+        .filter(|e| e.status == Some(Status::Fails))
+        .filter_map(|e| e.subject.as_deref())
+        .collect();
+    assert_eq!(failing.len(), 2, "{failing:?}");
+    assert!(failing[0].starts_with("(6.12) first line"));
+    assert!(failing[1].starts_with("(6.15) row 2 as printed"));
+    // by hand: ∂S/∂V1 − 2 Σ b1(tᵢ)F(tᵢ) = −2 Σ Pᵢ b1(tᵢ)
+    assert!(has(&t64, "-2*P_1*b1_1 - 2*P_2*b1_2"), "{:?}", t64.evidence);
 }

@@ -99,29 +99,6 @@ pub fn printed_g1<T: Ring>(
     ))
 }
 
-/// (4.23), (4.24) as printed: `(D_i, D_{i+1})`; the `m` without index in
-/// (4.24) is read as `m_i`.
-pub fn printed_c2_second<T: Ring>(
-    f0: &T,
-    f1: &T,
-    d0: &T,
-    d1: &T,
-    h: &T,
-    m: &T,
-) -> Result<(T, T), InterpError> {
-    let pi2 = h.pi() * &h.pi();
-    let (w, x) = printed_c1(f0, f1, d0, d1, h, m)?;
-    let d_start = (pi2.clone() + &(m.int(2) * m * &pi2)) / &m.int(2) * f0
-        + &(pi2.clone() * &(m.int(-1) - m) * &w)
-        + &(pi2.clone() / &m.int(2) * &x);
-    // (4.24) writes the first term's denominator as mπ + 2π
-    let w_print = h.int(2) * h * d0 / &(m.clone() * &h.pi() + &(h.int(2) * &h.pi())) + f0;
-    let d_end = pi2.clone() / &m.int(2) * &w_print
-        + &(pi2.clone() * &(m.int(-1) - m) * &x)
-        + &((pi2.clone() / &m.int(2) + &(m.clone() * &pi2)) * f1);
-    Ok((d_start, d_end))
-}
-
 /// (4.34) as printed: `(V^2_1, V^2_2)` from `V^1_1, V^1_2, V^1_3`.
 pub fn printed_g2_join<T: Ring>(v1: &T, v2: &T, v3: &T, m: &T, alpha: &T, beta: &T) -> (T, T) {
     let two_over_pi = v1.int(2) / &v1.pi();

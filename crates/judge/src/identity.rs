@@ -34,17 +34,17 @@ use trig_verdict::verdict::Verdict;
 pub fn printed_identities<B: ExactBasis>(
     basis: &B,
     items: &[Identity],
-    curve: Option<&Curve>,
+    curves: &[Curve],
     readings: &[Reading],
 ) -> Verdict {
     let functions = basis.exact_functions();
-    let curve_value = curve.map(|k| curve_of(&functions, k.weighted));
+    let curve_values: Vec<Sym> = curves.iter().map(|k| curve_of(&functions, k)).collect();
     let sides = |item: &Identity| -> Result<(Sym, Sym), Verdict> {
         let (mut lhs, mut rhs) = (item.lhs.clone(), item.rhs.clone());
         for a in &item.applications {
             let f = match a.applied {
                 Applied::Function(i) => &functions[i],
-                Applied::Curve => curve_value.as_ref().expect("a curve read with its name"),
+                Applied::Curve(k) => &curve_values[k],
             };
             let Some(value) = applied(basis, f, a.order, &a.argument.x, &a.argument.rest) else {
                 return Err(Verdict::not_checkable(format!(
@@ -104,10 +104,14 @@ pub fn printed_identities<B: ExactBasis>(
     v
 }
 
-/// `Σ bᵢPᵢ`, or `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ`.
-fn curve_of(functions: &[Sym], weighted: bool) -> Sym {
+/// `Σ bᵢPᵢ`, `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ`, or `Σ bᵢ·pointᵢ` of printed points.
+fn curve_of(functions: &[Sym], curve: &Curve) -> Sym {
     let n = functions.len();
-    let (p, w) = (symbols("P", n), symbols("w", n));
+    let weighted = curve.weighted;
+    let (p, w) = match &curve.points {
+        Some(points) => (points.clone(), Vec::new()),
+        None => (symbols("P", n), symbols("w", n)),
+    };
     let weight = |i: usize| {
         if weighted {
             functions[i].clone() * &w[i]
@@ -211,5 +215,46 @@ mod tests {
         assert_eq!(applied(&family, &b[1], 0, &one, &zero).unwrap(), b[1]);
         let two = Affine::rational(Rational::from(2));
         assert!(applied(&family, &b[1], 0, &two, &zero).is_none());
+    }
+
+    /// The thesis cubic with one identity claim about the piece of printed
+    /// control points `points` (the C¹ interpolant (4.21) of seed 001).
+    fn piece_claim(points: &str) -> Verdict {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../../examples/catalog/thesis-cubic.toml");
+        let text = std::fs::read_to_string(path).unwrap();
+        let spec = trig_specfile::Spec::from_str_named(
+            &format!(
+                "{text}\n[[claims]]\nid = \"c1\"\nsource = \"s\"\nstatement = \"s\"\ncheck = \"identity\"\nsymbols = [\"f0\", \"f1\", \"d0\", \"d1\", \"h\"]\ncurves = [{{ name = \"P\", points = [{points}] }}]\nidentities = [\"P(0) = f0\", \"P(1) = f1\", \"P'(0)/h = d0\", \"P'(1)/h = d1\"]\n"
+            ),
+            "c1.toml",
+        )
+        .unwrap_or_else(|e| panic!("{e}"));
+        let trig_specfile::Check::Identity {
+            identities,
+            curves,
+            readings,
+        } = &spec.claims[0].check
+        else {
+            panic!("an identity claim");
+        };
+        printed_identities(&spec, identities, curves, readings)
+    }
+
+    #[test]
+    fn a_curve_of_printed_control_points_is_decided_through_them() {
+        let c1 = r#""f0", "2*h*d0/(pi*(m + 2)) + f0", "-2*h*d1/(pi*(m + 2)) + f1", "f1""#;
+        assert_eq!(piece_claim(c1).status, Status::Holds);
+        // a sign flipped in X fails the end slope
+        let wrong = r#""f0", "2*h*d0/(pi*(m + 2)) + f0", "2*h*d1/(pi*(m + 2)) + f1", "f1""#;
+        let v = piece_claim(wrong);
+        assert_eq!(v.status, Status::Fails);
+        let failing: Vec<_> = v
+            .evidence
+            .iter()
+            .filter(|e| e.status == Some(Status::Fails))
+            .filter_map(|e| e.subject.as_deref())
+            .collect();
+        assert_eq!(failing, ["P'(1)/h = d1"]);
     }
 }

@@ -158,7 +158,7 @@ pub fn nonnegative<B: ExactBasis>(basis: &B, data: &DataSet, scheme: Scheme) -> 
 
 /// Why the schemes do not apply to `basis`: it is not exactly the basis
 /// they are built on.
-fn other_basis<B: ExactBasis>(basis: &B) -> Option<String> {
+pub(crate) fn other_basis<B: ExactBasis>(basis: &B) -> Option<String> {
     let theirs = trig_interp::BASIS.exact_functions();
     let ours = basis.exact_functions();
     let same = ours.len() == theirs.len()

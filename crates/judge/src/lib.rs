@@ -33,6 +33,7 @@ pub mod exceptional;
 pub mod identity;
 pub mod independence;
 pub mod interpolant;
+pub mod interpolant_jumps;
 pub mod interpolant_point;
 pub mod join;
 pub mod join_singular;

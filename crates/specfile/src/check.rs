@@ -226,6 +226,15 @@ pub enum Check {
         data: DataSet,
         scheme: Scheme,
     },
+    /// The interpolant of a printed data table (as for
+    /// [`Check::InterpolantNonnegative`]) is `C^order` at every interior
+    /// knot: the jumps of its derivatives of orders `0…order` vanish.
+    InterpolantContinuity {
+        path: String,
+        data: DataSet,
+        scheme: Scheme,
+        order: usize,
+    },
     /// Printed error tables (a table file, `path` as written, relative to
     /// the claim's file; `text` as read) against their own arithmetic:
     /// totals, extremes and means of the segment rows, summaries against
@@ -246,12 +255,12 @@ pub enum Check {
     OneMaximum,
     /// Printed identities in the functions of the basis applied at printed
     /// arguments (`b2(t) + b3(1 - t) = 1`, `b1'(1/3) = 0`), their
-    /// derivatives in the variable, and the curve `Σ bᵢPᵢ` (optionally
-    /// rational, `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ`) under a printed name: each decided
-    /// exactly.
+    /// derivatives in the variable, and curves `Σ bᵢPᵢ` (optionally
+    /// rational, `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ`, or of printed control points) under
+    /// printed names: each decided exactly.
     Identity {
         identities: Vec<Identity>,
-        curve: Option<Curve>,
+        curves: Vec<Curve>,
         /// Readings of garbled or mistyped prints, each decided beside the
         /// print it reads.
         readings: Vec<Reading>,
@@ -315,17 +324,21 @@ pub struct Application {
 pub enum Applied {
     /// The basis function of this index.
     Function(usize),
-    /// The curve of the claim.
-    Curve,
+    /// The curve of the claim of this index.
+    Curve(usize),
 }
 
 /// The curve a printed identity names: `Σ bᵢPᵢ` with control points
 /// `P0, P1, …`, or with `weighted` the rational `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ` with
-/// weights `w0, w1, …`.
-#[derive(Debug, Clone, PartialEq, Eq)]
+/// weights `w0, w1, …`; or with `points` the curve `Σ bᵢ·pointᵢ` of
+/// printed control points (formulas in the parameters and free symbols).
+#[derive(Debug, Clone, PartialEq)]
 pub struct Curve {
     pub name: String,
     pub weighted: bool,
+    /// The printed control points, one per function; `None`: the free
+    /// `P0, P1, …`.
+    pub points: Option<Vec<Sym>>,
 }
 
 /// How a printed identity is quantified over the parameter values.

@@ -266,7 +266,20 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                 reason: reason.get_ref().trim().to_string(),
             }
         }
-        "interpolant-nonnegative" => interpolant(src, c)?,
+        "interpolant-nonnegative" => {
+            let (path, data, scheme) = interpolant(src, c)?;
+            Check::InterpolantNonnegative { path, data, scheme }
+        }
+        "interpolant-continuity" => {
+            let (path, data, scheme) = interpolant(src, c)?;
+            let order = order_field(src, c, need(src, c, &c.order, "order")?)?;
+            Check::InterpolantContinuity {
+                path,
+                data,
+                scheme,
+                order,
+            }
+        }
         "table-arithmetic" => {
             let (path, text) = data_file(src, c)?;
             Check::TableArithmetic { path, text }
@@ -287,7 +300,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             return src.invalid(
                 c.check.span(),
                 "claims.check",
-                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, all, not-printed, interpolant-nonnegative, table-arithmetic, table-quotes or same-basis"),
+                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, all, not-printed, interpolant-nonnegative, interpolant-continuity, table-arithmetic, table-quotes or same-basis"),
             );
         }
     };
@@ -315,6 +328,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             matches!(
                 check,
                 Check::InterpolantNonnegative { .. }
+                    | Check::InterpolantContinuity { .. }
                     | Check::TableArithmetic { .. }
                     | Check::TableQuotes { .. }
             ),
@@ -327,7 +341,10 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
         (
             "scheme",
             c.scheme.as_ref().map(Spanned::span),
-            matches!(check, Check::InterpolantNonnegative { .. }),
+            matches!(
+                check,
+                Check::InterpolantNonnegative { .. } | Check::InterpolantContinuity { .. }
+            ),
         ),
         (
             "other",
@@ -344,10 +361,10 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                     match field {
                         "claims" | "brief" => "all",
                         "reason" => "not-printed",
-                        "data" => "interpolant-nonnegative`, `check = \"table-arithmetic` or `check = \"table-quotes",
+                        "data" => "interpolant-nonnegative`, `check = \"interpolant-continuity`, `check = \"table-arithmetic` or `check = \"table-quotes",
                         "other" => "same-basis",
                         "quotes" => "table-quotes",
-                        _ => "interpolant-nonnegative",
+                        _ => "interpolant-nonnegative` or `check = \"interpolant-continuity",
                     }
                 ),
             );
@@ -391,6 +408,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
     if matches!(
         check,
         Check::InterpolantNonnegative { .. }
+            | Check::InterpolantContinuity { .. }
             | Check::TableArithmetic { .. }
             | Check::TableQuotes { .. }
     ) && !given.is_empty()
@@ -445,8 +463,9 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
 
 /// `data = "table-4.1.tsv"` (a table file, relative to the claim's file:
 /// read here, so a missing or malformed table is an error of the file) and
-/// `scheme` (the table's own unless given).
-fn interpolant(src: &Source<'_>, c: &RawClaim) -> Result<Check> {
+/// `scheme` (the table's own unless given): the path as written, the table,
+/// the scheme.
+fn interpolant(src: &Source<'_>, c: &RawClaim) -> Result<(String, DataSet, Scheme)> {
     let (path, text) = data_file(src, c)?;
     let data = match DataSet::parse(&text) {
         Ok(data) => data,
@@ -462,7 +481,7 @@ fn interpolant(src: &Source<'_>, c: &RawClaim) -> Result<Check> {
             Err(e) => return src.invalid(s.span(), "claims.scheme", e.to_string()),
         },
     };
-    Ok(Check::InterpolantNonnegative { path, data, scheme })
+    Ok((path, data, scheme))
 }
 
 /// The table file `data = "…"` names (relative to the claim's file), as

@@ -668,6 +668,31 @@ mod tests {
         assert!(
             e("at = { m = \"0\" }\ndata = \"table-4.6.tsv\"\n", check).contains("fixes no values")
         );
+        // the knot continuity of the same interpolant: the table, the scheme and the order
+        let doc = read(
+            "data = \"table-4.2.tsv\"\norder = 2\n",
+            "interpolant-continuity",
+        )
+        .unwrap();
+        match &doc.claims[0] {
+            DocumentClaim::Stated { claim, .. } => match &claim.check {
+                Check::InterpolantContinuity {
+                    scheme,
+                    order,
+                    path,
+                    ..
+                } => {
+                    assert_eq!(path, "table-4.2.tsv");
+                    assert_eq!((*scheme, *order), (trig_interp::Scheme::C2, 2));
+                }
+                other => panic!("{other:?}"),
+            },
+            _ => panic!("a stated claim"),
+        }
+        assert!(
+            e("data = \"table-4.2.tsv\"\n", "interpolant-continuity")
+                .contains("needs the field `order`")
+        );
     }
 
     #[test]

@@ -529,9 +529,12 @@ impl<'a> Substitution<'a> {
             }
             Check::Identity {
                 identities,
+                curves,
                 readings,
-                ..
             } => {
+                for point in curves.iter_mut().flat_map(|k| k.points.iter_mut().flatten()) {
+                    *point = self.sym(point, "a printed control point of a curve")?;
+                }
                 let read = readings.iter_mut().map(|r| &mut r.identity);
                 for item in identities.iter_mut().chain(read) {
                     let what = format!("the printed identity `{}`", item.text);
@@ -564,6 +567,7 @@ impl<'a> Substitution<'a> {
             | Check::JoinSingular { .. }
             | Check::NotPrinted { .. }
             | Check::InterpolantNonnegative { .. }
+            | Check::InterpolantContinuity { .. }
             | Check::TableArithmetic { .. }
             | Check::TableQuotes { .. } => {}
         }

@@ -12,7 +12,7 @@
 //! ```
 //!
 //! An identity may be named for the report, `"(A1) Σ F_k = 1: F0 + F1 + F2 + F3 = 1"`
-//! (the text before the first `: `; formulas have no colon).
+//! (the text before the last `: `, which may itself contain `: `; formulas have no colon).
 //!
 //! Each application `NAME'…'(ARG)` is cut out of the text and replaced by a
 //! placeholder symbol; the rest is an ordinary claim formula (the bare
@@ -24,13 +24,16 @@ use toml::Spanned;
 
 use crate::check::{Application, Applied, Check, Curve, Identity, Reading};
 use crate::error::Result;
-use crate::raw::RawClaim;
+use crate::raw::{RawClaim, RawCurve};
 use crate::source::Source;
 use crate::spec::{MAX_ORDER, Spec};
+use trig_symbolic::Sym;
 
 /// The prefix of the placeholder symbols (never a name of a file: the
 /// formula names of a file do not start with two underscores).
 const PLACEHOLDER: &str = "__at";
+/// The prefix of the placeholders of partial derivatives `diff(EXPR, NAME)`.
+const PARTIAL: &str = "__diff";
 
 pub(crate) fn identity(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check> {
     let Some(items) = &c.identities else {
@@ -43,14 +46,13 @@ pub(crate) fn identity(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Ch
             ),
         );
     };
-    let curve = match &c.curve {
-        Some(name) => {
-            let name = name.get_ref().trim().to_string();
-            Some(Curve {
-                name,
-                weighted: c.weights.unwrap_or(false),
-            })
-        }
+    let mut curves: Vec<Curve> = Vec::new();
+    match &c.curve {
+        Some(name) => curves.push(Curve {
+            name: name.get_ref().trim().to_string(),
+            weighted: c.weights.unwrap_or(false),
+            points: None,
+        }),
         None if c.weights.is_some() => {
             return src.invalid(
                 c.check.span(),
@@ -58,13 +60,13 @@ pub(crate) fn identity(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Ch
                 "`weights` belongs to a claim with a `curve`".into(),
             );
         }
-        None => None,
-    };
+        None => {}
+    }
     let mut extra: Vec<String> = Vec::new();
     let mut names = spec.names();
-    if curve.is_some() {
+    if let Some(curve) = curves.first() {
         for prefix in ["P", "w"] {
-            if prefix == "w" && !curve.as_ref().is_some_and(|k| k.weighted) {
+            if prefix == "w" && !curve.weighted {
                 continue;
             }
             for i in 0..spec.functions.len() {
@@ -93,9 +95,12 @@ pub(crate) fn identity(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Ch
             extra.push(name.to_string());
         }
     }
+    for raw in c.curves.iter().flatten() {
+        curves.push(printed_curve(src, spec, raw, &curves, &extra)?);
+    }
     let identities = items
         .iter()
-        .map(|item| one(src, spec, item, curve.as_ref(), &extra))
+        .map(|item| one(src, spec, item, &curves, &extra))
         .collect::<Result<Vec<_>>>()?;
     if identities.is_empty() {
         return src.invalid(
@@ -118,13 +123,61 @@ pub(crate) fn identity(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Ch
         };
         readings.push(Reading {
             of,
-            identity: one(src, spec, &r.read, curve.as_ref(), &extra)?,
+            identity: one(src, spec, &r.read, &curves, &extra)?,
         });
     }
     Ok(Check::Identity {
         identities,
-        curve,
+        curves,
         readings,
+    })
+}
+
+/// A curve of printed control points: one formula per function, in the
+/// parameters and the free symbols; its name unlike every other name.
+fn printed_curve(
+    src: &Source<'_>,
+    spec: &Spec,
+    raw: &RawCurve,
+    before: &[Curve],
+    extra: &[String],
+) -> Result<Curve> {
+    let name = raw.name.get_ref().trim().to_string();
+    let taken = spec.names().fixed(&name, "a curve of the identities");
+    if let Err(e) = taken {
+        return src.invalid(raw.name.span(), "claims.curves", e.to_string());
+    }
+    if before.iter().any(|k| k.name == name) || extra.contains(&name) {
+        return src.invalid(
+            raw.name.span(),
+            "claims.curves",
+            format!("`{name}` names another curve or symbol of the claim"),
+        );
+    }
+    if raw.points.len() != spec.functions.len() {
+        return src.invalid(
+            raw.name.span(),
+            "claims.curves",
+            format!(
+                "curve `{name}`: {} control points for {} functions",
+                raw.points.len(),
+                spec.functions.len()
+            ),
+        );
+    }
+    let points = raw
+        .points
+        .iter()
+        .map(|p| {
+            spec.parse_claim_formula(p.get_ref(), extra, &[])
+                .map(|(v, _)| v)
+                .map_err(|e| src.formula_error(p, e))
+        })
+        .collect::<Result<Vec<_>>>()?;
+    Ok(Curve {
+        name,
+        weighted: false,
+        points: Some(points),
     })
 }
 
@@ -133,15 +186,16 @@ fn one(
     src: &Source<'_>,
     spec: &Spec,
     item: &Spanned<String>,
-    curve: Option<&Curve>,
+    curves: &[Curve],
     extra: &[String],
 ) -> Result<Identity> {
     let text = item.get_ref();
-    let (label, formula) = match text.split_once(": ") {
+    let (label, formula) = match text.rsplit_once(": ") {
         Some((label, formula)) => (label.trim(), formula),
         None => (text.trim(), text.as_str()),
     };
-    let (rest, applications) = applications(src, spec, formula, item, curve)?;
+    let (formula, partials) = partials(src, spec, formula, item, extra)?;
+    let (rest, applications) = applications(src, spec, &formula, item, curves)?;
     let sides: Vec<&str> = rest.split('=').collect();
     if sides.len() != 2 {
         return src.invalid(
@@ -152,9 +206,14 @@ fn one(
     }
     let mut names: Vec<String> = extra.to_vec();
     names.extend(applications.iter().map(|a| a.symbol.clone()));
+    names.extend(partials.iter().map(|(symbol, _)| symbol.clone()));
     let side = |s: &str| {
         spec.parse_claim_formula(s, &names, &[])
-            .map(|(v, _)| v)
+            .map(|(v, _)| {
+                partials
+                    .iter()
+                    .fold(v, |v, (symbol, value)| v.subs(symbol, value))
+            })
             .map_err(|e| src.formula_error(item, e))
     };
     Ok(Identity {
@@ -166,6 +225,61 @@ fn one(
     })
 }
 
+/// The text with every partial derivative `diff(EXPR, NAME)` (`EXPR` a
+/// formula without applications, `NAME` a free symbol of the claim)
+/// replaced by a placeholder, and each placeholder's value `∂EXPR/∂NAME`,
+/// formed exactly in the ring.
+fn partials(
+    src: &Source<'_>,
+    spec: &Spec,
+    formula: &str,
+    item: &Spanned<String>,
+    extra: &[String],
+) -> Result<(String, Vec<(String, Sym)>)> {
+    let chars: Vec<char> = formula.chars().collect();
+    let mut out = String::new();
+    let mut found: Vec<(String, Sym)> = Vec::new();
+    let mut i = 0;
+    while i < chars.len() {
+        let starts = chars[i..].starts_with(&['d', 'i', 'f', 'f', '('])
+            && (i == 0 || !(chars[i - 1].is_alphanumeric() || chars[i - 1] == '_'));
+        if !starts {
+            out.push(chars[i]);
+            i += 1;
+            continue;
+        }
+        let open = i + 4;
+        let refuse = |why: String| {
+            src.invalid::<(String, Vec<(String, Sym)>)>(
+                item.span(),
+                "claims.identities",
+                format!("`{}`: {why}", item.get_ref()),
+            )
+        };
+        let Some(close) = matching(&chars, open) else {
+            return refuse("unbalanced parentheses after `diff`".into());
+        };
+        let inner: String = chars[open + 1..close].iter().collect();
+        let Some((expr, name)) = inner.rsplit_once(',') else {
+            return refuse("expected `diff(EXPR, NAME)`".into());
+        };
+        let name = name.trim();
+        if !extra.iter().any(|x| x == name) {
+            return refuse(format!(
+                "`diff(…, {name})`: `{name}` is not a free symbol of the claim (`symbols`)"
+            ));
+        }
+        let (value, _) = spec
+            .parse_claim_formula(expr, extra, &[])
+            .map_err(|e| src.formula_error(item, e))?;
+        let symbol = format!("{PARTIAL}{}", found.len());
+        out.push_str(&format!(" {symbol} "));
+        found.push((symbol, value.diff(name)));
+        i = close + 1;
+    }
+    Ok((out, found))
+}
+
 /// The text with every application `NAME'…'(ARG)` of a function (or the
 /// curve) replaced by a placeholder, and the applications in order.
 fn applications(
@@ -173,7 +287,7 @@ fn applications(
     spec: &Spec,
     formula: &str,
     item: &Spanned<String>,
-    curve: Option<&Curve>,
+    curves: &[Curve],
 ) -> Result<(String, Vec<Application>)> {
     let chars: Vec<char> = formula.chars().collect();
     let mut out = String::new();
@@ -195,8 +309,8 @@ fn applications(
         while j < chars.len() && chars[j] == '\'' {
             j += 1;
         }
-        let applied = if curve.is_some_and(|k| k.name == name) {
-            Some(Applied::Curve)
+        let applied = if let Some(k) = curves.iter().position(|k| k.name == name) {
+            Some(Applied::Curve(k))
         } else {
             spec.functions
                 .iter()
@@ -283,18 +397,18 @@ mod tests {
                 .unwrap();
         let Check::Identity {
             identities,
-            curve,
+            curves,
             readings,
         } = &spec.claims[0].check
         else {
             panic!("an identity claim");
         };
-        assert_eq!(curve.as_ref().unwrap().name, "H");
+        assert_eq!(curves[0].name, "H");
         let apps = &identities[0].applications;
         assert_eq!(apps.len(), 2);
         assert_eq!((apps[0].applied, apps[0].order), (Applied::Function(2), 1));
         assert_eq!(apps[0].argument_text, "1 - t");
-        assert_eq!((apps[1].applied, apps[1].order), (Applied::Curve, 0));
+        assert_eq!((apps[1].applied, apps[1].order), (Applied::Curve(0), 0));
         // a name for the report, and a reading of the named identity
         assert_eq!(identities[1].label, "step");
         assert_eq!(
@@ -318,5 +432,51 @@ mod tests {
         assert!(e.to_string().contains("`weights` belongs"), "{e}");
         // P0 is a control point only with a curve
         assert!(hermite_with("identities = [\"alpha_0(0) = P0\"]").is_err());
+    }
+
+    #[test]
+    fn printed_curves_are_read_with_one_point_per_function() {
+        let spec = hermite_with(
+            "symbols = [\"q\"]\ncurves = [{ name = \"R\", points = [\"q\", \"0\", \"1\", \"2*q\"] }]\nidentities = [\"R(0) = q\"]",
+        )
+        .unwrap();
+        let Check::Identity {
+            curves, identities, ..
+        } = &spec.claims[0].check
+        else {
+            panic!("an identity claim");
+        };
+        assert_eq!(curves[0].name, "R");
+        assert_eq!(
+            curves[0].points.as_ref().unwrap()[3],
+            trig_symbolic::Sym::var("q") * &trig_symbolic::Sym::int(2)
+        );
+        assert_eq!(identities[0].applications[0].applied, Applied::Curve(0));
+        let e = hermite_with(
+            "curves = [{ name = \"R\", points = [\"0\", \"1\"] }]\nidentities = [\"R(0) = 0\"]",
+        )
+        .unwrap_err();
+        assert!(
+            e.to_string().contains("2 control points for 4 functions"),
+            "{e}"
+        );
+        let e = hermite_with("curve = \"R\"\ncurves = [{ name = \"R\", points = [\"0\", \"0\", \"0\", \"0\"] }]\nidentities = [\"R(0) = 0\"]").unwrap_err();
+        assert!(e.to_string().contains("another curve"), "{e}");
+    }
+
+    #[test]
+    fn partial_derivatives_in_free_symbols_are_formed_exactly() {
+        let spec = hermite_with(
+            "symbols = [\"q\", \"r\"]\nidentities = [\"diff((q*r - 1)^2, q)/2 = r*(q*r - 1)\"]",
+        )
+        .unwrap();
+        let Check::Identity { identities, .. } = &spec.claims[0].check else {
+            panic!("an identity claim");
+        };
+        assert!((identities[0].lhs.clone() - &identities[0].rhs).is_zero());
+        let e = hermite_with("symbols = [\"q\"]\nidentities = [\"diff(q^2, z) = 0\"]").unwrap_err();
+        assert!(e.to_string().contains("not a free symbol"), "{e}");
+        let e = hermite_with("symbols = [\"q\"]\nidentities = [\"diff(q^2) = 0\"]").unwrap_err();
+        assert!(e.to_string().contains("expected `diff(EXPR, NAME)`"), "{e}");
     }
 }

@@ -120,6 +120,9 @@ pub struct RawClaim {
     /// `check = "same-basis"`: the other basis (a spec file, relative to
     /// the claim's file).
     pub other: Option<Spanned<String>>,
+    /// `check = "identity"`: curves with printed control points,
+    /// `[{ name = "P", points = ["f0", "f0 + 2*h*d0/(pi*(m + 2))", …] }]`.
+    pub curves: Option<Vec<RawCurve>>,
     /// The statement is the negation of the check ("is not C⁴").
     pub negated: Option<bool>,
     /// Remarks shown after the evidence (how a print is read, what the
@@ -133,6 +136,15 @@ pub struct RawClaim {
     pub parts: Option<Vec<RawClaim>>,
     /// A part shown for information (its verdict never decides the umbrella).
     pub shown: Option<bool>,
+}
+
+/// `curves = [{ name = "P", points = ["f0", …] }]`: the curve `Σ bᵢ·pointᵢ`
+/// of printed control points, one formula per function.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawCurve {
+    pub name: Spanned<String>,
+    pub points: Vec<Spanned<String>>,
 }
 
 /// `readings = [{ of = "printed identity", as = "its reading" }]`.

@@ -21,7 +21,6 @@ mod thesis;
 mod thesis_interp;
 mod thesis_interp_text;
 mod thesis_joins;
-mod thesis_lsq;
 mod thesis_out_of_range;
 mod thesis_survey;
 mod thesis_text;
@@ -30,7 +29,6 @@ mod thesis_text;
 pub fn all() -> Vec<Claim> {
     [
         thesis::CLAIMS,
-        thesis_interp::CLAIMS,
         thesis_joins::CLAIMS,
         seed000::CLAIMS,
         seed000_appendix_c::CLAIMS,
@@ -45,7 +43,6 @@ pub fn all() -> Vec<Claim> {
         thesis_text::CLAIMS,
         thesis_survey::CLAIMS,
         thesis_interp_text::CLAIMS,
-        thesis_lsq::CLAIMS,
         shape_effect::CLAIMS,
         local_control::CLAIMS,
     ]

@@ -12,7 +12,7 @@ use trig_interp::{
     DataSet, Interval, PieceMinimum, Scheme, Spline, Variant, build, certified_minimum,
 };
 
-use super::thesis_interp::{positivity, sym_spline};
+use super::thesis_interp::sym_spline;
 use crate::claim::Claim;
 use trig_judge::interpolant_point::piece_witness;
 use trig_judge::recomputed::decimal;
@@ -29,10 +29,6 @@ pub const CLAIMS: &[Claim] = &[
     Claim {
         id: "T56",
         check: t56,
-    },
-    Claim {
-        id: "T57",
-        check: t57,
     },
 ];
 
@@ -288,44 +284,6 @@ fn t56() -> Verdict {
         }
         Err(why) => Verdict::not_checkable(why),
     }
-}
-
-/// "The interpolant dips below zero": the negation of its certified
-/// positivity (a certified negative value holds, a certified
-/// nonnegativity fails).
-fn dips(name: &str, scheme: Scheme, variant: Variant) -> Verdict {
-    let v = positivity(name, scheme, variant);
-    let st = match v.status {
-        Status::Fails => Status::Holds,
-        Status::Holds => Status::Fails,
-        other => other,
-    };
-    let mut out = Verdict::new(st, v.method, v.evidence);
-    if st == Status::Fails {
-        out.evidence
-            .push("every piece is certified ≥ 0 (above): the curve never dips below zero");
-    }
-    out
-}
-
-fn t57() -> Verdict {
-    let mut parts = Vec::new();
-    for (name, set) in [("thesis-table-4.5", "V"), ("thesis-table-4.6", "VI")] {
-        for (scheme, label) in [(Scheme::C1, "C¹ (4.21)"), (Scheme::C2, "C² (4.25)")] {
-            parts.push((
-                format!("data set {set}, {label}"),
-                dips(name, scheme, Variant::Printed),
-            ));
-        }
-    }
-    let mut v = Verdict::all(
-        "certified minimum per piece of the printed schemes on the printed data, with the tables' m_i; \"dips below zero\" holds when some piece is certified negative somewhere, fails when every piece is certified ≥ 0",
-        parts,
-    );
-    v.evidence.push(
-        "the printed C² scheme (4.25) uses the control points of (4.21) (its (4.23)/(4.24) only compute D_i), so its curve is the C¹ curve (T21)",
-    );
-    v
 }
 
 #[cfg(test)]

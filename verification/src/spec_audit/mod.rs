@@ -604,6 +604,12 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
         Check::InterpolantNonnegative { data, scheme, .. } => {
             trig_judge::interpolant::nonnegative(spec, data, *scheme)
         }
+        Check::InterpolantContinuity {
+            data,
+            scheme,
+            order,
+            ..
+        } => trig_judge::interpolant_jumps::continuity(spec, data, *scheme, *order),
         Check::TableArithmetic { text, .. } => trig_judge::table_arithmetic::decide(text),
         Check::TableQuotes { text, quotes, .. } => trig_judge::table_quotes::decide(text, quotes),
         Check::OneMaximum => {
@@ -611,9 +617,9 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
         }
         Check::Identity {
             identities,
-            curve,
+            curves,
             readings,
-        } => trig_judge::identity::printed_identities(spec, identities, curve.as_ref(), readings),
+        } => trig_judge::identity::printed_identities(spec, identities, curves, readings),
         Check::SameBasis {
             other,
             params,
