@@ -2,32 +2,20 @@
 //! the rational curve.
 
 use rug::Rational;
-use trig_core::{Family, Ring};
+use trig_core::Family;
 use trig_deriv::{End, Wrt, curve_endpoint_derivatives};
 use trig_symbolic::{Poly, Sym};
 
 use crate::claim::Claim;
-use trig_judge::exact::{
-    IDENTITY, basis, combination, identities, identity, reflect, sum, symbols,
-};
+use trig_judge::exact::basis;
 use trig_verdict::evidence::EvidenceList;
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
-pub const CLAIMS: &[Claim] = &[
-    Claim {
-        id: "D7",
-        check: d7,
-    },
-    Claim {
-        id: "D10",
-        check: d10,
-    },
-    Claim {
-        id: "D11",
-        check: d11,
-    },
-];
+pub const CLAIMS: &[Claim] = &[Claim {
+    id: "D11",
+    check: d11,
+}];
 
 /// `R, R', R''` (in θ) of the rational curve at `θ = 0` and `θ = π/2`, with
 /// control points `P0…P5` and weights `w0…w5` as symbols.
@@ -44,96 +32,6 @@ pub(super) fn rational_ends(p: &[Sym], w: &[Sym]) -> (Vec<Sym>, Vec<Sym>) {
         )
     };
     (at(End::Start), at(End::End))
-}
-
-/// `Σ w_i b_i P_i / Σ w_i b_i` at the symbolic atoms.
-fn rational_curve(points: &[Sym], weights: &[Sym]) -> Sym {
-    let b = basis(Family::Seed002Quartic);
-    let wb: Vec<Sym> = b
-        .iter()
-        .zip(weights)
-        .map(|(bi, wi)| bi.clone() * wi)
-        .collect();
-    combination(&wb, points) / &sum(&wb)
-}
-
-/// The print as it stands: the first equation cannot be read; the second,
-/// with the points as printed (`P3, P4, P3, P2, P1, P3` at `π/2 − t`), is an
-/// identity that can be decided (a matrix `T` acting on both sides; `T = k`
-/// times the identity is enough to refute it).
-fn d10() -> Verdict {
-    let p: Vec<Sym> = symbols("P", 6);
-    let w: Vec<Sym> = symbols("w", 6);
-    let k = Sym::var("k");
-    let printed: Vec<Sym> = [3, 4, 3, 2, 1, 3].iter().map(|&i| p[i].clone()).collect();
-    let scaled: Vec<Sym> = p.iter().map(|x| x.clone() * &k).collect();
-    let second = identity(
-        "R(π/2 − t, P3, P4, P3, P2, P1, P3)·k − R(t, P0·k, …, P5·k) (T = k·I)",
-        &(reflect(&rational_curve(&printed, &w), true) * &k),
-        &rational_curve(&scaled, &w),
-    );
-    Verdict::all(
-        IDENTITY,
-        vec![
-            (
-                "first equation".into(),
-                Verdict::not_checkable(
-                    "unreadable in our copy (\"R_2^π − t, P, …\"); its obvious reading is D10b",
-                ),
-            ),
-            ("second equation, as printed".into(), second),
-        ],
-    )
-}
-
-/// The knot relations (8) for `k = 0, 1, 2` follow from the end conditions
-/// (3) (corrected reading D6b) and the chain rule of (7); the third-order
-/// relation needs `Q'''` at the segment ends, which (3) does not fix.
-fn d7() -> Verdict {
-    let v: Vec<Sym> = symbols("V", 4); // V_{i−1}, V_i, V_{i+1}, V_{i+2}
-    let a = Sym::var("alpha_i1"); // α_{i+1}, shared by both segments
-    let (du0, du1) = (Sym::var("du_i"), Sym::var("du_i1"));
-    let two = Sym::int(2);
-    // segment i = Q_i(t, α_i, α_{i+1}) at t = π/2, local V0…V3 = V_{i−1}…V_{i+2}
-    let left_t = [
-        v[2].clone(),
-        a.clone() * &(v[3].clone() - &v[1]),
-        a.clone() * &(v[1].clone() - &(two.clone() * &v[2]) + &v[3]),
-    ];
-    // segment i+1 = Q_{i+1}(t, α_{i+1}, α_{i+2}) at t = 0, local V0…V2 = V_i…V_{i+2}
-    let right_t = [
-        v[2].clone(),
-        a.clone() * &(v[3].clone() - &v[1]),
-        a.clone() * &(v[1].clone() - &(two.clone() * &v[2]) + &v[3]),
-    ];
-    let rate = |du: &Sym| Sym::pi() / &(two.clone() * du);
-    let chain = |x: &[Sym; 3], du: &Sym| -> Vec<Sym> {
-        (0..3)
-            .map(|k| x[k].clone() * &rate(du).powi(k as u32))
-            .collect()
-    };
-    let (l, r) = (chain(&left_t, &du0), chain(&right_t, &du1));
-    let ratio = du0.clone() / &du1;
-    let low = identities(vec![
-        ("Q(u⁺) − Q(u⁻)".into(), r[0].clone(), l[0].clone()),
-        (
-            "Q'(u⁺) − (Δu_i/Δu_{i+1}) Q'(u⁻)".into(),
-            r[1].clone(),
-            ratio.clone() * &l[1],
-        ),
-        (
-            "Q''(u⁺) − (Δu_i/Δu_{i+1})² Q''(u⁻)".into(),
-            r[2].clone(),
-            ratio.square() * &l[2],
-        ),
-    ]);
-    let mut evidence = EvidenceList::from(vec![
-        "segments from (6): Q_i(t, α_i, α_{i+1}) on V_{i−1}…V_{i+2}; both sides of the knot u_{i+1} use α_{i+1}; their values and t-derivatives at the knot are the end conditions (3) (reading D6b), Q^(k)(u) = (π/(2Δu_i))^k Q_i^(k)(t) by (7)".to_string(),
-    ]);
-    evidence.extend(low.into_part("orders 0–2 of (8)"));
-    evidence.push("order 3 of (8) is not checkable: (3) fixes only orders 0–2 at each end; Q_i''' at the ends depends on the blending functions Tb_i(t, α1, α2) of (5), whose printed fraction is unreadable in our copy (see D12), i.e. on the weights w_i and control points the construction actually uses");
-    evidence.push("so F³ (a third-order connection relation) can be neither proved nor refuted; the readable part, (8) for k = 0, 1, 2, is G²/C²-type continuity in u and holds exactly");
-    Verdict::new(Status::NotCheckable, trig_judge::exact::IDENTITY, evidence)
 }
 
 /// `cos kθ`, `sin kθ` for `k = 0…n` as polynomials in `s`, `c`:

@@ -6,22 +6,11 @@ use trig_core::Family;
 use trig_symbolic::Sym;
 
 use crate::claim::Claim;
-use trig_judge::certificate::nonnegative_on;
-
-use trig_certify::ParamBox;
-use trig_judge::exact::{IDENTITY, basis, combination, identities, sum, symbols};
+use trig_judge::exact::{IDENTITY, combination, identities};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[
-    Claim {
-        id: "E10",
-        check: e10,
-    },
-    Claim {
-        id: "E12",
-        check: e12,
-    },
     Claim {
         id: "E1c",
         check: e1c,
@@ -31,62 +20,6 @@ pub const CLAIMS: &[Claim] = &[
         check: e1cb,
     },
 ];
-
-/// The EH bases at `λ = μ = v`.
-fn eh_at(v: i64) -> Vec<Sym> {
-    let x = Sym::int(v);
-    basis(Family::Eh)
-        .iter()
-        .map(|b| b.subs("lambda", &x).subs("mu", &x))
-        .collect()
-}
-
-/// `Σ b_i(t; λ, μ) P_i` with symbolic control points.
-fn eh_curve(points: &[Sym], lambda: &Sym, mu: &Sym, t: &Sym) -> Sym {
-    let atoms = trig_core::Atoms {
-        s: Sym::zero(),
-        c: Sym::one(),
-        t: t.clone(),
-        e: Sym::one(),
-    };
-    combination(
-        &Family::Eh.eval(&atoms, &[lambda.clone(), mu.clone()]),
-        points,
-    )
-}
-
-fn e10() -> Verdict {
-    let p: Vec<Sym> = symbols("P", 4);
-    let reversed: Vec<Sym> = p.iter().rev().cloned().collect();
-    let (l, m, t) = (Sym::var("lambda"), Sym::var("mu"), Sym::var("t"));
-    identities(vec![(
-        "T(λ, μ; t; P0..P3) − T(μ, λ; 1 − t; P3..P0)".into(),
-        eh_curve(&p, &l, &m, &t),
-        eh_curve(&reversed, &m, &l, &(Sym::one() - &t)),
-    )])
-}
-
-fn e12() -> Verdict {
-    let mut parts = Vec::new();
-    for v in [-1i64, 0, 1] {
-        let fs = eh_at(v);
-        parts.push((
-            format!("λ = μ = {v}: Σ b_i − 1"),
-            trig_judge::exact::residual_verdict(&sum(&fs), &Sym::one()),
-        ));
-        let zero = rug::Rational::new();
-        parts.push((
-            format!("λ = μ = {v}: nonnegativity"),
-            nonnegative_on(
-                &Family::Eh,
-                &fs,
-                None,
-                &ParamBox::closed(zero.clone(), zero),
-            ),
-        ));
-    }
-    Verdict::all(trig_judge::certificate::CERTIFIED, parts)
-}
 
 /// `H(x) = α0(t)y_i + α1(t)y_{i+1} + β0(t)h_i d_i + β1(t)·hd·d_{i+1}` for a
 /// given `t(x)` and the factor `hd` of `d_{i+1}`, and the four interpolation

@@ -23,16 +23,8 @@ use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[
     Claim {
-        id: "E14",
-        check: e14,
-    },
-    Claim {
         id: "E15",
         check: e15,
-    },
-    Claim {
-        id: "E15b",
-        check: e15b,
     },
     Claim {
         id: "E16",
@@ -43,10 +35,6 @@ pub const CLAIMS: &[Claim] = &[
         check: e17,
     },
 ];
-
-fn n(k: i64) -> Sym {
-    Sym::int(k)
-}
 
 /// `[R, R', R'']` (in `t`) of `Σ b_i(t; λ, μ) X_i` at `end`.
 fn eh_end(points: &[Sym], lambda: &Sym, mu: &Sym, end: End) -> Vec<Sym> {
@@ -99,19 +87,6 @@ fn omega_factors() -> [Sym; 2] {
     ]
 }
 
-/// `Q0 = P3`, `Q1 = 2P3 − P2` (C¹ read off `P3 − P2 = Q1 − Q0`).
-fn printed_c1() -> Vec<Printed> {
-    let p = symbols("P", 4);
-    vec![
-        Printed::new(0, vec![p[3].clone()]),
-        Printed::new(1, vec![n(2) * &p[3], -p[2].clone()]),
-    ]
-}
-
-fn e14() -> Verdict {
-    audit(&eh_join(JoinKind::C(1), false, printed_c1()))
-}
-
 fn e15() -> Verdict {
     let mut v = Verdict::not_checkable(
         "the printed formula is truncated: its last term −(2μ + 2λ + 6) carries no control point (a scalar added to points), and it does not say which curve's λ, μ it uses; the obvious reading is E15b",
@@ -122,25 +97,6 @@ fn e15() -> Verdict {
         "derived C² join (λ1, μ1 on R1; λ2, μ2 on R2): {}",
         join.derived_for(&[3])
     ));
-    v
-}
-
-fn e15b() -> Verdict {
-    let p = symbols("P", 4);
-    let (l, m) = (Sym::var("lambda1"), Sym::var("mu1"));
-    let mut printed = printed_c1();
-    printed.push(Printed::new(
-        3,
-        vec![
-            n(4) * &l * &p[0],
-            (n(6) - &(n(2) * &l)) * &p[1],
-            -(n(6) * &p[2]),
-            -((n(2) * &m + &(n(2) * &l) + &n(6)) * &p[3]),
-        ],
-    ));
-    let mut v = audit(&eh_join(JoinKind::C(2), true, printed));
-    v.evidence
-        .insert(0, "one λ = λ1 = λ2, μ = μ1 = μ2 for both curves");
     v
 }
 
