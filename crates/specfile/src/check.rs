@@ -130,6 +130,10 @@ pub enum Check {
         declared: bool,
         different: bool,
         factors: [String; 2],
+        /// The printed `G` factors give the first segment's derivatives
+        /// from the second's (`orientation = "reversed"`: `P' = αQ'`,
+        /// `P'' = α²Q'' + βQ'`), not the second's from the first's.
+        reversed: bool,
         conditions: Vec<Condition>,
         segments: JoinSegments,
     },

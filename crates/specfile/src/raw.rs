@@ -80,6 +80,11 @@ pub struct RawClaim {
     /// Another reading of `segment-params`, decided for information.
     #[serde(rename = "also-params")]
     pub also_params: Option<Vec<BTreeMap<String, Spanned<String>>>>,
+    /// `check = "join"`: the `G` factors as printed (`["omega", "beta"]`).
+    pub factors: Option<Vec<Spanned<String>>>,
+    /// `check = "join"`: `"reversed"` when the printed factors give the
+    /// first segment's derivatives from the second's.
+    pub orientation: Option<Spanned<String>>,
     pub parameter: Option<Spanned<String>>,
     pub direction: Option<Spanned<String>>,
     pub control: Option<Spanned<String>>,

@@ -572,6 +572,7 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
             declared,
             different,
             factors,
+            reversed,
             conditions,
             segments,
         } => joins::printed_join(
@@ -581,6 +582,7 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
                 wrt: *wrt,
                 declared: *declared,
                 different: *different,
+                reversed: *reversed,
                 segments,
             },
             factors,
