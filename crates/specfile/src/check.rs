@@ -238,6 +238,10 @@ pub enum Check {
     /// Each function has exactly one maximum on the domain ("each bᵢ has
     /// one maximum value").
     OneMaximum,
+    /// Every function lies in the printed span of harmonics
+    /// (`span = ["1", "sin(t)", "cos(2*t)"]`): each element as printed,
+    /// with its value in the exact ring.
+    FourierSpan { span: Vec<(String, Sym)> },
     /// Printed identities in the functions of the basis applied at printed
     /// arguments (`b2(t) + b3(1 - t) = 1`, `b1'(1/3) = 0`), their
     /// derivatives in the variable, and the curve `Σ bᵢPᵢ` (optionally

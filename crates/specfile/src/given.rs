@@ -551,6 +551,7 @@ impl<'a> Substitution<'a> {
             }
             Check::Unity
             | Check::OneMaximum
+            | Check::FourierSpan { .. }
             | Check::ShapeEffect { .. }
             | Check::Continuity { .. }
             | Check::LocalControl { .. }

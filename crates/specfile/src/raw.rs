@@ -108,6 +108,8 @@ pub struct RawClaim {
     /// table's own unless given).
     pub data: Option<Spanned<String>>,
     pub scheme: Option<Spanned<String>>,
+    /// `check = "fourier-span"`: the printed span, one harmonic each.
+    pub span: Option<Vec<Spanned<String>>>,
     /// `check = "identity"`: the printed identities `lhs = rhs`.
     pub identities: Option<Vec<Spanned<String>>>,
     /// `check = "identity"`: the printed name of the curve `Σ bᵢPᵢ`.

@@ -607,6 +607,7 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
             trig_judge::interpolant::nonnegative(spec, data, *scheme)
         }
         Check::TableArithmetic { text, .. } => trig_judge::table_arithmetic::decide(text),
+        Check::FourierSpan { span } => trig_judge::fourier::in_span(spec, span),
         Check::OneMaximum => {
             trig_judge::maxima::exactly_one_maximum(spec, &trig_judge::exact::basis_of(spec))
         }
