@@ -56,16 +56,25 @@ fn a_span_without_a_harmonic_of_the_functions_is_refuted() {
     let span = |items: &str| {
         let spec = crate::common::example_with(
             "catalog/seed002-quartic",
-            &format!("[[claims]]\nid = \"f\"\nsource = \"s\"\nstatement = \"s\"\ncheck = \"fourier-span\"\nspan = [{items}]\n"),
+            &format!(
+                "[[claims]]\nid = \"f\"\nsource = \"s\"\nstatement = \"s\"\ncheck = \"fourier-span\"\nspan = [{items}]\n"
+            ),
         );
         trig_verification::spec_audit::decide(&spec, &spec.claims[0])
     };
     let printed = r#""1", "sin(t)", "cos(t)", "cos(2*t)", "sin(3*t)", "cos(3*t)", "sin(4*t)""#;
     let short = span(printed);
     assert_eq!(short.status, Status::Fails);
-    assert!(has(&short, "outside the printed span: cos 4t: 1/8"), "{:?}", short.evidence);
+    assert!(
+        has(&short, "outside the printed span: cos 4t: 1/8"),
+        "{:?}",
+        short.evidence
+    );
     assert!(has(&short, "omits sin 2t, cos 4t"), "{:?}", short.evidence);
-    assert_eq!(span(&format!("{printed}, \"cos(4*t)\"")).status, Status::Holds);
+    assert_eq!(
+        span(&format!("{printed}, \"cos(4*t)\"")).status,
+        Status::Holds
+    );
     // an element that is not one harmonic
     assert_eq!(span(r#""sin(t)^2""#).status, Status::NotCheckable);
 }

@@ -253,7 +253,22 @@ pub enum Check {
         /// Readings of garbled or mistyped prints, each decided beside the
         /// print it reads.
         readings: Vec<Reading>,
+        /// The identities are in another variable (`change`).
+        change: Option<Change>,
     },
+}
+
+/// A change of variable of printed identities (`change = { x = "(x - x_i)/h_i" }`):
+/// the basis's variable is the printed formula `φ` in the new variable;
+/// `f(ARG)` is `f(φ(ARG))` and each prime a derivative in the new variable.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Change {
+    /// The new variable.
+    pub variable: String,
+    /// `φ` as printed.
+    pub text: String,
+    /// `φ` in the new variable, the parameters and the claim's symbols.
+    pub value: Sym,
 }
 
 /// A printed identity `lhs = rhs`: each side a formula in the variable,
@@ -289,10 +304,19 @@ pub struct Application {
     pub applied: Applied,
     /// Derivative order in the variable (the primes printed).
     pub order: usize,
-    /// The argument `a·x + b`, linear in the variable `x`.
-    pub argument: crate::formula::Linear,
+    pub argument: Argument,
     /// The argument as printed.
     pub argument_text: String,
+}
+
+/// The argument of an [`Application`].
+#[derive(Debug, Clone, PartialEq)]
+pub enum Argument {
+    /// `a·x + b`, linear in the basis's variable `x`.
+    Linear(crate::formula::Linear),
+    /// Under a [`Change`] of variable: a formula in the new variable, the
+    /// parameters and the claim's symbols.
+    Formula(Sym),
 }
 
 /// What an [`Application`] applies.

@@ -121,6 +121,8 @@ pub struct RawClaim {
     pub readings: Option<Vec<RawReading>>,
     /// `check = "identity"`: the curve is rational, `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ`.
     pub weights: Option<bool>,
+    /// `check = "identity"`: a change of variable, `{ x = "(x - x_i)/h_i" }`.
+    pub change: Option<BTreeMap<String, Spanned<String>>>,
     /// The statement is the negation of the check ("is not C⁴").
     pub negated: Option<bool>,
     /// Remarks shown after the evidence (how a print is read, what the

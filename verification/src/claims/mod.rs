@@ -36,7 +36,6 @@ pub fn all() -> Vec<Claim> {
         seed000_appendix_c::CLAIMS,
         seed000_appendix_e::CLAIMS,
         seed000_appendix_b::CLAIMS,
-        seed004::CLAIMS,
         properties::CLAIMS,
         second_list::CLAIMS,
         thesis_out_of_range::CLAIMS,

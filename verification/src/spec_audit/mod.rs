@@ -615,7 +615,14 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
             identities,
             curve,
             readings,
-        } => trig_judge::identity::printed_identities(spec, identities, curve.as_ref(), readings),
+            change,
+        } => trig_judge::identity::printed_identities(
+            spec,
+            identities,
+            curve.as_ref(),
+            readings,
+            change.as_ref(),
+        ),
         Check::LocalControl {
             varied,
             segments,
