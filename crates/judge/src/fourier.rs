@@ -170,7 +170,7 @@ pub fn in_span<B: ExactBasis>(basis: &B, span: &[(String, Sym)]) -> Verdict {
     }
     let missing: Vec<String> = (0..=degree)
         .flat_map(|k| [false, true].map(|sine| Harmonic { sine, k }))
-        .filter(|h| !(h.sine && h.k == 0) && !printed.contains(h))
+        .filter(|h| (!h.sine || h.k > 0) && !printed.contains(h))
         .map(|h| h.label(&angle))
         .collect();
     let space = format!(
