@@ -49,6 +49,36 @@ fn seed002_verdicts() {
     );
 }
 
+/// The Fourier-span check: the quartic basis lies in the printed span of
+/// D11; without `cos 4t` it does not, and the harmonic is named.
+#[test]
+fn a_span_without_a_harmonic_of_the_functions_is_refuted() {
+    let span = |items: &str| {
+        let spec = crate::common::example_with(
+            "catalog/seed002-quartic",
+            &format!(
+                "[[claims]]\nid = \"f\"\nsource = \"s\"\nstatement = \"s\"\ncheck = \"fourier-span\"\nspan = [{items}]\n"
+            ),
+        );
+        trig_verification::spec_audit::decide(&spec, &spec.claims[0])
+    };
+    let printed = r#""1", "sin(t)", "cos(t)", "cos(2*t)", "sin(3*t)", "cos(3*t)", "sin(4*t)""#;
+    let short = span(printed);
+    assert_eq!(short.status, Status::Fails);
+    assert!(
+        has(&short, "outside the printed span: cos 4t: 1/8"),
+        "{:?}",
+        short.evidence
+    );
+    assert!(has(&short, "omits sin 2t, cos 4t"), "{:?}", short.evidence);
+    assert_eq!(
+        span(&format!("{printed}, \"cos(4*t)\"")).status,
+        Status::Holds
+    );
+    // an element that is not one harmonic
+    assert_eq!(span(r#""sin(t)^2""#).status, Status::NotCheckable);
+}
+
 #[test]
 fn unimodality_is_refuted_for_a_function_with_two_maxima() {
     // b0 + b5 of seed 002 is 1 at both ends and smaller inside
@@ -79,7 +109,31 @@ fn seed004_join_and_interpolation_verdicts() {
     assert_eq!(verdict("E16").status, Status::Fails);
     let e17 = verdict("E17");
     assert_eq!(e17.status, Status::Fails);
-    assert!(has(&e17, "R2(0) − R1(1) = 2"));
+    assert!(has(&e17, "-P1 + P3"), "{:?}", e17.evidence);
+}
+
+/// `orientation = "reversed"`: the printed factor gives the first
+/// segment's tangent from the second's (`P'(1) = ωQ'(0)`). The EH curve
+/// ends at `P1` with tangent `P3` and starts at `Q0` with tangent `Q2`, so
+/// `Q2 = P3/ω` is the G¹ join in that orientation and not in the judge's
+/// own (`Q'(0) = ωP'(1)`).
+#[test]
+fn a_reversed_g1_factor_is_decided_in_the_printed_orientation() {
+    let g1 = |orientation: &str| {
+        let spec = crate::common::example_with(
+            "catalog/eh",
+            &format!(
+                "[[claims]]\nid = \"g\"\nsource = \"s\"\nstatement = \"s\"\ncheck = \"join\"\njoin = \"G1\"\nfactors = [\"omega\", \"beta\"]\n{orientation}conditions = [\"Q0 = P1\", \"Q2 = P3/omega\"]\n"
+            ),
+        );
+        trig_verification::spec_audit::decide(&spec, &spec.claims[0])
+    };
+    let reversed = g1("orientation = \"reversed\"\n");
+    assert_eq!(reversed.status, Status::Holds, "{:?}", reversed.evidence);
+    assert!(has(&reversed, "printed orientation"));
+    // ω > 0: the printed division by ω is not singular
+    assert!(!has(&reversed, "singular"), "{:?}", reversed.evidence);
+    assert_eq!(g1("").status, Status::Fails);
 }
 
 #[test]

@@ -13,6 +13,12 @@
 //! `E ↦ exp(κb)·E^a`. Each identity is then `lhs − rhs = 0` exactly, a
 //! failure shown with its residual and a witness.
 //!
+//! Under a change of variable (`change = { x = "(x - x_i)/h_i" }`, a basis
+//! polynomial in its variable `t`) each application `f^(k)(a)` is
+//! `dᵏ/dxᵏ f(φ(x))` at `x = a`, `φ` the printed formula, formed by
+//! substitution and differentiation in the ring (the chain rule exactly);
+//! a bare function name is `f(φ(x))`.
+//!
 //! A reading of a print (a garbled or mistyped identity read as the
 //! document means it) is decided beside the print: where the print fails
 //! and every failing print has a reading that holds, the claim holds after
@@ -20,7 +26,7 @@
 //! the readings shown with it.
 
 use trig_core::{Affine, Basis};
-use trig_specfile::{Applied, Curve, Identity, Reading};
+use trig_specfile::{Applied, Argument, Change, Curve, Identity, Reading};
 use trig_symbolic::Sym;
 use trig_verdict::status::Status;
 
@@ -36,8 +42,15 @@ pub fn printed_identities<B: ExactBasis>(
     items: &[Identity],
     curves: &[Curve],
     readings: &[Reading],
+    change: Option<&Change>,
 ) -> Verdict {
     let functions = basis.exact_functions();
+    let domain = basis.domain();
+    if change.is_some() && (domain.angle.is_some() || domain.exp.is_some()) {
+        return Verdict::not_checkable(
+            "a change of variable is formed exactly for a basis polynomial in its variable only",
+        );
+    }
     let curve_values: Vec<Sym> = curves.iter().map(|k| curve_of(&functions, k)).collect();
     let sides = |item: &Identity| -> Result<(Sym, Sym), Verdict> {
         let (mut lhs, mut rhs) = (item.lhs.clone(), item.rhs.clone());
@@ -46,7 +59,12 @@ pub fn printed_identities<B: ExactBasis>(
                 Applied::Function(i) => &functions[i],
                 Applied::Curve(k) => &curve_values[k],
             };
-            let Some(value) = applied(basis, f, a.order, &a.argument.x, &a.argument.rest) else {
+            let value = match (&a.argument, change) {
+                (Argument::Formula(x), Some(change)) => Some(changed(f, a.order, change, x)),
+                (Argument::Linear(l), None) => applied(basis, f, a.order, &l.x, &l.rest),
+                _ => None,
+            };
+            let Some(value) = value else {
                 return Err(Verdict::not_checkable(format!(
                     "in `{}`, the argument `{}` is not formed exactly (a slope other than 0, ±1 in the variable, or atoms not exact at that point)",
                     item.text, a.argument_text
@@ -54,6 +72,10 @@ pub fn printed_identities<B: ExactBasis>(
             };
             lhs = lhs.subs(&a.symbol, &value);
             rhs = rhs.subs(&a.symbol, &value);
+        }
+        if let Some(change) = change {
+            lhs = lhs.subs(VARIABLE, &change.value);
+            rhs = rhs.subs(VARIABLE, &change.value);
         }
         Ok((lhs, rhs))
     };
@@ -66,7 +88,7 @@ pub fn printed_identities<B: ExactBasis>(
     }
     let printed = identities(parts);
     if printed.status == Status::Holds || readings.is_empty() {
-        return printed;
+        return with_change(printed, change);
     }
     let mut read = Vec::new();
     for r in readings {
@@ -101,7 +123,34 @@ pub fn printed_identities<B: ExactBasis>(
         v.status = Status::HoldsAfterCorrection;
         v = v.with_correction(format!("read {correction}"));
     }
+    with_change(v, change)
+}
+
+/// The verdict with the change of variable stated first.
+fn with_change(mut v: Verdict, change: Option<&Change>) -> Verdict {
+    if let Some(change) = change {
+        v.evidence.insert(
+            0,
+            format!(
+                "change of variable: {VARIABLE} = {} = {} in {x}, derivatives in {x}",
+                change.text,
+                change.value.to_unicode(),
+                x = change.variable
+            ),
+        );
+    }
     v
+}
+
+/// The ring's symbol of the variable of a basis polynomial in it.
+const VARIABLE: &str = "t";
+
+/// `dᵏ/dxᵏ f(φ(x))` at `x = at` (`x` the new variable of the change, `φ`
+/// its printed formula), for `f` polynomial in the variable.
+fn changed(f: &Sym, order: usize, change: &Change, at: &Sym) -> Sym {
+    let x = change.variable.as_str();
+    let composed = f.subs(VARIABLE, &change.value);
+    (0..order).fold(composed, |g, _| g.diff(x)).subs(x, at)
 }
 
 /// `Σ bᵢPᵢ`, `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ`, or `Σ bᵢ·pointᵢ` of printed points.

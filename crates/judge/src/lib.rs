@@ -30,6 +30,7 @@ pub mod endpoint;
 pub mod exact;
 pub mod exact_ends;
 pub mod exceptional;
+pub mod fourier;
 pub mod identity;
 pub mod independence;
 pub mod interpolant;

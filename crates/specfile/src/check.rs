@@ -130,6 +130,10 @@ pub enum Check {
         declared: bool,
         different: bool,
         factors: [String; 2],
+        /// The printed `G` factors give the first segment's derivatives
+        /// from the second's (`orientation = "reversed"`: `P' = αQ'`,
+        /// `P'' = α²Q'' + βQ'`), not the second's from the first's.
+        reversed: bool,
         conditions: Vec<Condition>,
         segments: JoinSegments,
     },
@@ -253,6 +257,10 @@ pub enum Check {
     /// Each function has exactly one maximum on the domain ("each bᵢ has
     /// one maximum value").
     OneMaximum,
+    /// Every function lies in the printed span of harmonics
+    /// (`span = ["1", "sin(t)", "cos(2*t)"]`): each element as printed,
+    /// with its value in the exact ring.
+    FourierSpan { span: Vec<(String, Sym)> },
     /// Printed identities in the functions of the basis applied at printed
     /// arguments (`b2(t) + b3(1 - t) = 1`, `b1'(1/3) = 0`), their
     /// derivatives in the variable, and curves `Σ bᵢPᵢ` (optionally
@@ -264,6 +272,8 @@ pub enum Check {
         /// Readings of garbled or mistyped prints, each decided beside the
         /// print it reads.
         readings: Vec<Reading>,
+        /// The identities are in another variable (`change`).
+        change: Option<Change>,
     },
     /// The basis equals another basis (a spec file, `path` as written,
     /// relative to the claim's file) under a change of parameter — each of
@@ -278,6 +288,19 @@ pub enum Check {
         /// The substitution as printed (`λ = m`).
         params_text: String,
     },
+}
+
+/// A change of variable of printed identities (`change = { x = "(x - x_i)/h_i" }`):
+/// the basis's variable is the printed formula `φ` in the new variable;
+/// `f(ARG)` is `f(φ(ARG))` and each prime a derivative in the new variable.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Change {
+    /// The new variable.
+    pub variable: String,
+    /// `φ` as printed.
+    pub text: String,
+    /// `φ` in the new variable, the parameters and the claim's symbols.
+    pub value: Sym,
 }
 
 /// A printed identity `lhs = rhs`: each side a formula in the variable,
@@ -313,10 +336,19 @@ pub struct Application {
     pub applied: Applied,
     /// Derivative order in the variable (the primes printed).
     pub order: usize,
-    /// The argument `a·x + b`, linear in the variable `x`.
-    pub argument: crate::formula::Linear,
+    pub argument: Argument,
     /// The argument as printed.
     pub argument_text: String,
+}
+
+/// The argument of an [`Application`].
+#[derive(Debug, Clone, PartialEq)]
+pub enum Argument {
+    /// `a·x + b`, linear in the basis's variable `x`.
+    Linear(crate::formula::Linear),
+    /// Under a [`Change`] of variable: a formula in the new variable, the
+    /// parameters and the claim's symbols.
+    Formula(Sym),
 }
 
 /// What an [`Application`] applies.

@@ -246,6 +246,15 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
         "local-control" => local_control(src, spec, c)?,
         "identity" => crate::identity_read::identity(src, spec, c)?,
         "one-maximum" => Check::OneMaximum,
+        "fourier-span" => Check::FourierSpan {
+            span: need(src, c, &c.span, "span")?
+                .iter()
+                .map(|item| {
+                    let text = item.get_ref().trim().to_string();
+                    formula_in(src, spec, item, "", &text, &[]).map(|v| (text, v))
+                })
+                .collect::<Result<_>>()?,
+        },
         "all" => Check::All {
             claims: need(src, c, &c.claims, "claims")?
                 .iter()
@@ -300,7 +309,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             return src.invalid(
                 c.check.span(),
                 "claims.check",
-                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, all, not-printed, interpolant-nonnegative, interpolant-continuity, table-arithmetic, table-quotes or same-basis"),
+                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, fourier-span, all, not-printed, interpolant-nonnegative, interpolant-continuity, table-arithmetic, table-quotes or same-basis"),
             );
         }
     };

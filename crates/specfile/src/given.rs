@@ -531,18 +531,26 @@ impl<'a> Substitution<'a> {
                 identities,
                 curves,
                 readings,
+                change,
+                ..
             } => {
                 for point in curves.iter_mut().flat_map(|k| k.points.iter_mut().flatten()) {
                     *point = self.sym(point, "a printed control point of a curve")?;
                 }
+                if let Some(change) = change {
+                    change.value = self.sym(&change.value, "the printed change of variable")?;
+                }
                 let read = readings.iter_mut().map(|r| &mut r.identity);
                 for item in identities.iter_mut().chain(read) {
                     let what = format!("the printed identity `{}`", item.text);
-                    if item
-                        .applications
-                        .iter()
-                        .any(|a| !a.argument.rest.params.is_empty())
-                    {
+                    for a in &mut item.applications {
+                        if let crate::check::Argument::Formula(x) = &mut a.argument {
+                            *x = self.sym(x, &what)?;
+                        }
+                    }
+                    if item.applications.iter().any(|a| {
+                        matches!(&a.argument, crate::check::Argument::Linear(l) if !l.rest.params.is_empty())
+                    }) {
                         return Err(GivenError::Refused {
                             what,
                             why: "an argument in the parameters is not decided at fixed values (state the argument with the value)".into(),
@@ -559,6 +567,7 @@ impl<'a> Substitution<'a> {
             }
             Check::Unity
             | Check::OneMaximum
+            | Check::FourierSpan { .. }
             | Check::ShapeEffect { .. }
             | Check::Continuity { .. }
             | Check::LocalControl { .. }

@@ -22,7 +22,7 @@
 
 use toml::Spanned;
 
-use crate::check::{Application, Applied, Check, Curve, Identity, Reading};
+use crate::check::{Application, Applied, Argument, Change, Check, Curve, Identity, Reading};
 use crate::error::Result;
 use crate::raw::{RawClaim, RawCurve};
 use crate::source::Source;
@@ -98,9 +98,11 @@ pub(crate) fn identity(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Ch
     for raw in c.curves.iter().flatten() {
         curves.push(printed_curve(src, spec, raw, &curves, &extra)?);
     }
+    let change = change(src, spec, c, &mut names, &mut extra)?;
+    let changed = change.is_some();
     let identities = items
         .iter()
-        .map(|item| one(src, spec, item, &curves, &extra))
+        .map(|item| one(src, spec, item, &curves, &extra, changed))
         .collect::<Result<Vec<_>>>()?;
     if identities.is_empty() {
         return src.invalid(
@@ -123,13 +125,14 @@ pub(crate) fn identity(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Ch
         };
         readings.push(Reading {
             of,
-            identity: one(src, spec, &r.read, &curves, &extra)?,
+            identity: one(src, spec, &r.read, &curves, &extra, changed)?,
         });
     }
     Ok(Check::Identity {
         identities,
         curves,
         readings,
+        change,
     })
 }
 
@@ -181,6 +184,45 @@ fn printed_curve(
     })
 }
 
+/// `change = { x = "(x - x_i)/h_i" }`: the identities are in the new
+/// variable `x` (a free symbol beside the claim's `symbols`), the basis's
+/// variable being the printed formula in it.
+fn change(
+    src: &Source<'_>,
+    spec: &Spec,
+    c: &RawClaim,
+    names: &mut trig_symbolic::Names,
+    extra: &mut Vec<String>,
+) -> Result<Option<Change>> {
+    let Some(given) = &c.change else {
+        return Ok(None);
+    };
+    let mut entries = given.iter();
+    let (Some((variable, formula)), None) = (entries.next(), entries.next()) else {
+        return src.invalid(
+            c.check.span(),
+            "claims.change",
+            "expected one new variable: `change = { x = \"formula in x\" }`".into(),
+        );
+    };
+    names
+        .fixed(variable, "the variable of a change of variable")
+        .map_err(|e| crate::error::SpecError::Invalid {
+            at: src.at(formula.span().start),
+            field: "claims.change".into(),
+            message: e.to_string(),
+        })?;
+    extra.push(variable.clone());
+    let (value, _) = spec
+        .parse_claim_formula(formula.get_ref(), extra, &[])
+        .map_err(|e| src.formula_error(formula, e))?;
+    Ok(Some(Change {
+        variable: variable.clone(),
+        text: formula.get_ref().trim().to_string(),
+        value,
+    }))
+}
+
 /// One printed identity: its applications cut out, both sides read.
 fn one(
     src: &Source<'_>,
@@ -188,6 +230,7 @@ fn one(
     item: &Spanned<String>,
     curves: &[Curve],
     extra: &[String],
+    changed: bool,
 ) -> Result<Identity> {
     let text = item.get_ref();
     let (label, formula) = match text.rsplit_once(": ") {
@@ -195,7 +238,8 @@ fn one(
         None => (text.trim(), text.as_str()),
     };
     let (formula, partials) = partials(src, spec, formula, item, extra)?;
-    let (rest, applications) = applications(src, spec, &formula, item, curves)?;
+    let arguments = changed.then_some(extra);
+    let (rest, applications) = applications(src, spec, &formula, item, curves, arguments)?;
     let sides: Vec<&str> = rest.split('=').collect();
     if sides.len() != 2 {
         return src.invalid(
@@ -288,6 +332,7 @@ fn applications(
     formula: &str,
     item: &Spanned<String>,
     curves: &[Curve],
+    changed: Option<&[String]>,
 ) -> Result<(String, Vec<Application>)> {
     let chars: Vec<char> = formula.chars().collect();
     let mut out = String::new();
@@ -338,9 +383,18 @@ fn applications(
                 format!("`{name}`: derivative order {order} above {MAX_ORDER}"),
             );
         }
-        let argument = spec
-            .parse_linear(&argument_text, "the argument of a function in an identity")
-            .map_err(|e| src.formula_error(item, e))?;
+        let argument = match changed {
+            // under a change of variable: any formula in the new variable
+            Some(names) => Argument::Formula(
+                spec.parse_claim_formula(&argument_text, names, &[])
+                    .map_err(|e| src.formula_error(item, e))?
+                    .0,
+            ),
+            None => Argument::Linear(
+                spec.parse_linear(&argument_text, "the argument of a function in an identity")
+                    .map_err(|e| src.formula_error(item, e))?,
+            ),
+        };
         let symbol = format!("{PLACEHOLDER}{}", found.len());
         out.push_str(&format!(" {symbol} "));
         found.push(Application {
@@ -399,6 +453,7 @@ mod tests {
             identities,
             curves,
             readings,
+            ..
         } = &spec.claims[0].check
         else {
             panic!("an identity claim");

@@ -13,6 +13,7 @@
 use std::collections::BTreeMap;
 
 use toml::Spanned;
+use trig_core::{End, ParamRange};
 use trig_deriv::JoinKind;
 use trig_symbolic::Sym;
 
@@ -57,8 +58,12 @@ pub(crate) fn join(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check>
         names.fixed(point, "a control point").map_err(clash)?;
         extra.push(point.clone());
     }
-    let factors = names.factors().map(|f| f.to_string());
+    let factors = match &c.factors {
+        Some(given) => printed_factors(src, c, given, &mut names)?,
+        None => names.factors().map(|f| f.to_string()),
+    };
     extra.extend(factors.iter().cloned());
+    let reversed = orientation(src, c, kind)?;
     let printed = printed_params(src, spec, c, different)?;
     let segments = JoinSegments {
         points: points.clone(),
@@ -77,6 +82,15 @@ pub(crate) fn join(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check>
                 segment_ranges.push((copy, p.range.clone()));
             }
         }
+    }
+    if matches!(kind, JoinKind::G1 | JoinKind::G2) {
+        // the tangents point the same way: the first G factor is positive
+        let positive = ParamRange {
+            lo: End::Open(rug::Rational::new()),
+            hi: End::Unbounded,
+            pi: false,
+        };
+        segment_ranges.push((factors[0].clone(), positive));
     }
     let all_points: Vec<String> = points.iter().flatten().cloned().collect();
     let second = &points[1];
@@ -128,9 +142,65 @@ pub(crate) fn join(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check>
         declared: unstated.is_none(),
         different,
         factors,
+        reversed,
         conditions,
         segments: JoinSegments { also, ..segments },
     })
+}
+
+/// The `G` factors as printed (`factors = ["omega", "beta"]`): two names,
+/// each reading as nothing else of the file.
+fn printed_factors(
+    src: &Source<'_>,
+    c: &RawClaim,
+    given: &[Spanned<String>],
+    names: &mut trig_symbolic::Names,
+) -> Result<[String; 2]> {
+    let [first, second] = given else {
+        return src.invalid(
+            c.check.span(),
+            "claims.factors",
+            format!(
+                "expected the two G factors as printed, found {}",
+                given.len()
+            ),
+        );
+    };
+    let mut out = [first, second].map(|f| f.get_ref().trim().to_string());
+    for (name, item) in out.iter_mut().zip([first, second]) {
+        names
+            .fixed(name, "a G factor")
+            .map_err(|e| SpecError::Invalid {
+                at: src.at(item.span().start),
+                field: "claims.factors".into(),
+                message: e.to_string(),
+            })?;
+    }
+    Ok(out)
+}
+
+/// `orientation = "reversed"`: the printed `G` factors give the first
+/// segment's derivatives from the second's (`P'(1) = ωQ'(0)`); only for
+/// `G¹`, `G²`.
+fn orientation(src: &Source<'_>, c: &RawClaim, kind: JoinKind) -> Result<bool> {
+    let Some(given) = &c.orientation else {
+        return Ok(false);
+    };
+    if given.get_ref().trim() != "reversed" {
+        return src.invalid(
+            given.span(),
+            "claims.orientation",
+            format!("`{}`: expected \"reversed\"", given.get_ref().trim()),
+        );
+    }
+    if !matches!(kind, JoinKind::G1 | JoinKind::G2) {
+        return src.invalid(
+            given.span(),
+            "claims.orientation",
+            "`orientation` orients the factors of a G¹ or G² join".into(),
+        );
+    }
+    Ok(true)
 }
 
 /// The two segments' control points: `points` as printed, else `P0…`,

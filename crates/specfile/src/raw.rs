@@ -80,6 +80,11 @@ pub struct RawClaim {
     /// Another reading of `segment-params`, decided for information.
     #[serde(rename = "also-params")]
     pub also_params: Option<Vec<BTreeMap<String, Spanned<String>>>>,
+    /// `check = "join"`: the `G` factors as printed (`["omega", "beta"]`).
+    pub factors: Option<Vec<Spanned<String>>>,
+    /// `check = "join"`: `"reversed"` when the printed factors give the
+    /// first segment's derivatives from the second's.
+    pub orientation: Option<Spanned<String>>,
     pub parameter: Option<Spanned<String>>,
     pub direction: Option<Spanned<String>>,
     pub control: Option<Spanned<String>>,
@@ -106,6 +111,8 @@ pub struct RawClaim {
     /// `check = "table-quotes"`: the quotes file (relative to the claim's
     /// file): the statements in words about the tables of `data`.
     pub quotes: Option<Spanned<String>>,
+    /// `check = "fourier-span"`: the printed span, one harmonic each.
+    pub span: Option<Vec<Spanned<String>>>,
     /// `check = "identity"`: the printed identities `lhs = rhs`.
     pub identities: Option<Vec<Spanned<String>>>,
     /// `check = "identity"`: the printed name of the curve `Σ bᵢPᵢ`.
@@ -123,6 +130,8 @@ pub struct RawClaim {
     /// `check = "identity"`: curves with printed control points,
     /// `[{ name = "P", points = ["f0", "f0 + 2*h*d0/(pi*(m + 2))", …] }]`.
     pub curves: Option<Vec<RawCurve>>,
+    /// `check = "identity"`: a change of variable, `{ x = "(x - x_i)/h_i" }`.
+    pub change: Option<BTreeMap<String, Spanned<String>>>,
     /// The statement is the negation of the check ("is not C⁴").
     pub negated: Option<bool>,
     /// Remarks shown after the evidence (how a print is read, what the

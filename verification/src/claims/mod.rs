@@ -15,7 +15,6 @@ mod seed000_appendix_e;
 mod seed000_appendix_print;
 mod seed002;
 mod seed004;
-mod seed004_joins;
 mod shape_effect;
 mod thesis;
 mod thesis_interp;
@@ -34,9 +33,6 @@ pub fn all() -> Vec<Claim> {
         seed000_appendix_c::CLAIMS,
         seed000_appendix_e::CLAIMS,
         seed000_appendix_b::CLAIMS,
-        seed002::CLAIMS,
-        seed004::CLAIMS,
-        seed004_joins::CLAIMS,
         properties::CLAIMS,
         second_list::CLAIMS,
         thesis_out_of_range::CLAIMS,

@@ -1,99 +1,11 @@
-//! Seed 004 (Dube & Mishra 2016): the standard cubic Hermite bases and the EH
-//! bases with shape parameters λ, μ; the EH curve's terminal properties and
-//! rewritten form.
+//! Seed 004 (Dube & Mishra 2016): the Hermite-type interpolant segment of
+//! a basis, for the property checkers that still need it in Rust (its
+//! claims are data: documents/eh-bspline2016/document.toml).
 
 use trig_core::Family;
 use trig_symbolic::Sym;
 
-use crate::claim::Claim;
-use trig_judge::certificate::nonnegative_on;
-
-use trig_certify::ParamBox;
-use trig_judge::exact::{IDENTITY, basis, combination, identities, sum, symbols};
-use trig_verdict::status::Status;
-use trig_verdict::verdict::Verdict;
-
-pub const CLAIMS: &[Claim] = &[
-    Claim {
-        id: "E10",
-        check: e10,
-    },
-    Claim {
-        id: "E12",
-        check: e12,
-    },
-    Claim {
-        id: "E1c",
-        check: e1c,
-    },
-    Claim {
-        id: "E1cb",
-        check: e1cb,
-    },
-];
-
-/// The EH bases at `λ = μ = v`.
-fn eh_at(v: i64) -> Vec<Sym> {
-    let x = Sym::int(v);
-    basis(Family::Eh)
-        .iter()
-        .map(|b| b.subs("lambda", &x).subs("mu", &x))
-        .collect()
-}
-
-/// `Σ b_i(t; λ, μ) P_i` with symbolic control points.
-fn eh_curve(points: &[Sym], lambda: &Sym, mu: &Sym, t: &Sym) -> Sym {
-    let atoms = trig_core::Atoms {
-        s: Sym::zero(),
-        c: Sym::one(),
-        t: t.clone(),
-        e: Sym::one(),
-    };
-    combination(
-        &Family::Eh.eval(&atoms, &[lambda.clone(), mu.clone()]),
-        points,
-    )
-}
-
-fn e10() -> Verdict {
-    let p: Vec<Sym> = symbols("P", 4);
-    let reversed: Vec<Sym> = p.iter().rev().cloned().collect();
-    let (l, m, t) = (Sym::var("lambda"), Sym::var("mu"), Sym::var("t"));
-    identities(vec![(
-        "T(λ, μ; t; P0..P3) − T(μ, λ; 1 − t; P3..P0)".into(),
-        eh_curve(&p, &l, &m, &t),
-        eh_curve(&reversed, &m, &l, &(Sym::one() - &t)),
-    )])
-}
-
-fn e12() -> Verdict {
-    let mut parts = Vec::new();
-    for v in [-1i64, 0, 1] {
-        let fs = eh_at(v);
-        parts.push((
-            format!("λ = μ = {v}: Σ b_i − 1"),
-            trig_judge::exact::residual_verdict(&sum(&fs), &Sym::one()),
-        ));
-        let zero = rug::Rational::new();
-        parts.push((
-            format!("λ = μ = {v}: nonnegativity"),
-            nonnegative_on(
-                &Family::Eh,
-                &fs,
-                None,
-                &ParamBox::closed(zero.clone(), zero),
-            ),
-        ));
-    }
-    Verdict::all(trig_judge::certificate::CERTIFIED, parts)
-}
-
-/// `H(x) = α0(t)y_i + α1(t)y_{i+1} + β0(t)h_i d_i + β1(t)·hd·d_{i+1}` for a
-/// given `t(x)` and the factor `hd` of `d_{i+1}`, and the four interpolation
-/// conditions at `x_i`, `x_{i+1} = x_i + h_i` (derivatives in `x`).
-fn hermite_conditions(t: &Sym, hd: &Sym) -> Vec<(String, Sym, Sym)> {
-    interpolation_conditions(Family::Hermite, &[], t, hd)
-}
+use trig_judge::exact::combination;
 
 /// The segment `H_i(x) = b0(t)y_i + b1(t)y_{i+1} + b2(t)h_i d_i + b3(t)·hd·d_{i+1}`
 /// of a Hermite-type `family` (parameters `params`) at `t` (an expression in
@@ -150,35 +62,4 @@ pub(super) fn interpolation_conditions(
         ("H_i'(x_i) − d_i".into(), dh.subs("x", &x0), d0),
         ("H_i'(x_{i+1}) − d_{i+1}".into(), dh.subs("x", &x1), d1),
     ]
-}
-
-/// As printed: `t = (x_{i+1} − x_i)/h_i`, which is the constant 1.
-fn e1c() -> Verdict {
-    let (x0, hi) = (Sym::var("x_i"), Sym::var("h_i"));
-    let t = (x0.clone() + &hi - &x0) / &hi;
-    let mut v = identities(hermite_conditions(&t, &Sym::var("h_i1")));
-    v.evidence.insert(
-        0,
-        format!("x_{{i+1}} = x_i + h_i; the printed t = (x_{{i+1}} − x_i)/h_i equals {t} for every x, so H_i(x) = α0(1)y_i + α1(1)y_{{i+1}} + β0(1)h_i d_i + β1(1)h_{{i+1}}d_{{i+1}} is the constant y_{{i+1}}"),
-    );
-    v
-}
-
-/// Reading: `t = (x − x_i)/h_i`; the printed factor `h_{i+1}` of `d_{i+1}`
-/// is kept, and the correction `h_{i+1} → h_i` is checked.
-fn e1cb() -> Verdict {
-    let hi = Sym::var("h_i");
-    let t = (Sym::var("x") - &Sym::var("x_i")) / &hi;
-    let printed = identities(hermite_conditions(&t, &Sym::var("h_i1")));
-    if printed.status == Status::Holds {
-        return printed;
-    }
-    let corrected = identities(hermite_conditions(&t, &hi));
-    if corrected.status != Status::Holds {
-        return printed;
-    }
-    let mut evidence = printed.evidence;
-    evidence.extend(corrected.into_part("with h_i d_{i+1}"));
-    Verdict::new(Status::HoldsAfterCorrection, IDENTITY, evidence)
-        .with_correction("β1(t) h_i d_{i+1} instead of β1(t) h_{i+1} d_{i+1} (t is measured in units of h_i on [x_i, x_{i+1}])")
 }

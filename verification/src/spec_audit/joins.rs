@@ -19,6 +19,9 @@ pub struct Stated<'a> {
     /// The claim declares its convention (`wrt` not `unstated`).
     pub declared: bool,
     pub different: bool,
+    /// The printed factors give the first segment's derivatives from the
+    /// second's.
+    pub reversed: bool,
     pub segments: &'a JoinSegments,
 }
 
@@ -67,8 +70,19 @@ pub fn printed_join(
             list(&second)
         ));
     }
+    let [a, b] = factors.each_ref().map(|f| Sym::var(f));
+    if stated.reversed {
+        let (a, b) = (a.to_unicode(), b.to_unicode());
+        notes.push(format!(
+            "printed orientation (R1, R2 the first and second segment): R1'(1) = {a}·R2'(0), R1''(1) = {a}²·R2''(0) + {b}·R2'(0); decided as R2'(0) = (1/{a})·R1'(1), R2''(0) = (1/{a}²)·R1''(1) − ({b}/{a}³)·R1'(1)"
+        ));
+    }
     let mut join = PrintedJoin::new(spec, stated.kind, (first, second), (p, q), printed);
-    join.factors = [Sym::var(&factors[0]), Sym::var(&factors[1])];
+    join.factors = if stated.reversed {
+        [Sym::one() / &a, -(b / &(a.clone() * &a * &a))]
+    } else {
+        [a, b]
+    };
     join.conventions = conventions(spec, stated.wrt);
     join.declared = stated.declared;
     join.notes = notes;

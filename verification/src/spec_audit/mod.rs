@@ -572,6 +572,7 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
             declared,
             different,
             factors,
+            reversed,
             conditions,
             segments,
         } => joins::printed_join(
@@ -581,6 +582,7 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
                 wrt: *wrt,
                 declared: *declared,
                 different: *different,
+                reversed: *reversed,
                 segments,
             },
             factors,
@@ -612,6 +614,7 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
         } => trig_judge::interpolant_jumps::continuity(spec, data, *scheme, *order),
         Check::TableArithmetic { text, .. } => trig_judge::table_arithmetic::decide(text),
         Check::TableQuotes { text, quotes, .. } => trig_judge::table_quotes::decide(text, quotes),
+        Check::FourierSpan { span } => trig_judge::fourier::in_span(spec, span),
         Check::OneMaximum => {
             trig_judge::maxima::exactly_one_maximum(spec, &trig_judge::exact::basis_of(spec))
         }
@@ -619,7 +622,14 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
             identities,
             curves,
             readings,
-        } => trig_judge::identity::printed_identities(spec, identities, curves, readings),
+            change,
+        } => trig_judge::identity::printed_identities(
+            spec,
+            identities,
+            curves,
+            readings,
+            change.as_ref(),
+        ),
         Check::SameBasis {
             other,
             params,
