@@ -15,6 +15,41 @@ pub struct Printed {
     pub value: Sym,
 }
 
+/// A printed endpoint derivative `f⁽ᵏ⁾(end) = value` of a function or of
+/// a [`NamedCurve`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct PrintedDerivative {
+    pub of: Differentiated,
+    pub order: usize,
+    pub end: End,
+    /// How the report names it (`b0'(0)`, `Condition 1, Q2(0)`); `None`:
+    /// the judge's own label (function, order, end and convention).
+    pub label: Option<String>,
+    /// The parameters printed with it (`Q2'(0; m1)`: the basis at `m = m1`),
+    /// one per parameter of the basis; `None`: the basis's own.
+    pub params: Option<Vec<Sym>>,
+    /// The printed value as written.
+    pub printed: String,
+    pub value: Sym,
+}
+
+/// What a [`PrintedDerivative`] differentiates.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Differentiated {
+    /// The basis function of this index.
+    Function(usize),
+    /// The claim's curve of this index.
+    Curve(usize),
+}
+
+/// A curve `Σ bᵢPᵢ` a claim names (`Q2`), with its control points as
+/// printed (`P4…P7`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct NamedCurve {
+    pub name: String,
+    pub points: Vec<String>,
+}
+
 /// A printed monotonicity statement about one function.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Monotone {
@@ -101,12 +136,13 @@ pub enum Check {
     },
     /// Printed function values at one end.
     EndpointValues { end: End, values: Vec<Printed> },
-    /// Printed derivatives of one order at one end.
+    /// Printed derivatives at the ends of the domain, each of its own
+    /// order and end (and parameters, where printed): of the functions, and
+    /// of curves `Σ bᵢPᵢ` named with their control points as printed.
     EndpointDerivatives {
-        end: End,
-        order: usize,
         wrt: Wrt,
-        values: Vec<Printed>,
+        values: Vec<PrintedDerivative>,
+        curves: Vec<NamedCurve>,
     },
     /// Printed derivative of the curve `Σ bᵢPᵢ` at one end, a combination
     /// of the control points (terminal tangents `r'(0) = 3(P1 − P0)`).

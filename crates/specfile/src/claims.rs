@@ -65,7 +65,7 @@ fn printed(src: &Source<'_>, spec: &Spec, items: &[Spanned<String>]) -> Result<V
         .collect()
 }
 
-fn order_field(src: &Source<'_>, c: &RawClaim, order: &Spanned<i64>) -> Result<usize> {
+pub(crate) fn order_field(src: &Source<'_>, c: &RawClaim, order: &Spanned<i64>) -> Result<usize> {
     usize::try_from(*order.get_ref())
         .ok()
         .filter(|k| *k <= MAX_ORDER)
@@ -204,12 +204,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             end: end_field(src, need(src, c, &c.end, "end")?)?,
             values: printed(src, spec, need(src, c, &c.values, "values")?)?,
         },
-        "endpoint-derivatives" => Check::EndpointDerivatives {
-            end: end_field(src, need(src, c, &c.end, "end")?)?,
-            order: order_field(src, c, need(src, c, &c.order, "order")?)?,
-            wrt: wrt_field(src, spec, c.wrt.as_ref())?,
-            values: printed(src, spec, need(src, c, &c.values, "values")?)?,
-        },
+        "endpoint-derivatives" => crate::derivative_read::endpoint_derivatives(src, spec, c)?,
         "curve-derivative" => {
             let item = need(src, c, &c.value, "value")?;
             let mut names = spec.names();
@@ -310,6 +305,13 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             c.scheme.as_ref().map(Spanned::span),
             matches!(check, Check::InterpolantNonnegative { .. }),
         ),
+        (
+            "curves",
+            c.curves
+                .as_ref()
+                .map(|v| v.first().map_or(c.check.span(), |k| k.name.span())),
+            matches!(check, Check::EndpointDerivatives { .. }),
+        ),
     ] {
         if let (Some(span), false) = (given, taken) {
             return src.invalid(
@@ -321,6 +323,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                         "claims" | "brief" => "all",
                         "reason" => "not-printed",
                         "data" => "interpolant-nonnegative` or `check = \"table-arithmetic",
+                        "curves" => "endpoint-derivatives",
                         _ => "interpolant-nonnegative",
                     }
                 ),
@@ -527,7 +530,7 @@ fn scope_field(src: &Source<'_>, scope: &Spanned<String>, field: &str) -> Result
     }
 }
 
-fn end_field(src: &Source<'_>, end: &Spanned<String>) -> Result<End> {
+pub(crate) fn end_field(src: &Source<'_>, end: &Spanned<String>) -> Result<End> {
     match end.get_ref().trim() {
         "start" | "0" => Ok(End::Start),
         "end" | "1" => Ok(End::End),

@@ -495,8 +495,11 @@ impl<'a> Substitution<'a> {
             | Check::Independent { range, .. }
             | Check::TotalPositivity { range, .. }
             | Check::Monotone { range, .. } => *range = None,
-            Check::EndpointValues { values, .. } | Check::EndpointDerivatives { values, .. } => {
-                *values = self.printed(values)?;
+            Check::EndpointValues { values, .. } => *values = self.printed(values)?,
+            Check::EndpointDerivatives { values, .. } => {
+                for v in values.iter_mut() {
+                    v.value = self.sym(&v.value, &format!("the printed `{}`", v.printed))?;
+                }
             }
             Check::CurveDerivative { value, text, .. } => {
                 *value = self.sym(value, &format!("the printed `{text}`"))?;

@@ -35,6 +35,7 @@ mod ast;
 mod budget;
 pub mod check;
 mod claims;
+mod derivative_read;
 pub mod document;
 pub mod error;
 pub mod exact_range;
@@ -58,8 +59,9 @@ pub mod spec;
 pub use any::{AnyBasis, OpenError};
 pub use ast::Grammar;
 pub use check::{
-    Application, Applied, Check, Condition, Curve, Direction, Identity, JoinSegments, Monotone,
-    Printed, Quantifier, Reading, SpecClaim, Varied,
+    Application, Applied, Check, Condition, Curve, Differentiated, Direction, Identity,
+    JoinSegments, Monotone, NamedCurve, Printed, PrintedDerivative, Quantifier, Reading, SpecClaim,
+    Varied,
 };
 pub use check::{Between, Fixed, Given};
 pub use document::{DocumentClaim, DocumentFile, Part};

@@ -108,12 +108,17 @@ pub struct RawClaim {
     /// `check = "identity"`: the printed name of the curve `Σ bᵢPᵢ`.
     pub curve: Option<Spanned<String>>,
     /// `check = "identity"`: further free symbols of the identities (a
-    /// translation `q`, the entries of a matrix), constants of the ring.
+    /// translation `q`, the entries of a matrix), constants of the ring;
+    /// `check = "endpoint-derivatives"`: the printed parameters' names
+    /// (`m1` in `Q2'(0; m1)`).
     pub symbols: Option<Vec<Spanned<String>>>,
     /// `check = "identity"`: readings of printed identities.
     pub readings: Option<Vec<RawReading>>,
     /// `check = "identity"`: the curve is rational, `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ`.
     pub weights: Option<bool>,
+    /// `check = "endpoint-derivatives"`: the curves the printed values
+    /// name, with their control points as printed.
+    pub curves: Option<Vec<RawCurve>>,
     /// The statement is the negation of the check ("is not C⁴").
     pub negated: Option<bool>,
     /// Remarks shown after the evidence (how a print is read, what the
@@ -136,4 +141,12 @@ pub struct RawReading {
     pub of: Spanned<String>,
     #[serde(rename = "as")]
     pub read: Spanned<String>,
+}
+
+/// `curves = [{ name = "Q2", points = ["P4", …] }]`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawCurve {
+    pub name: Spanned<String>,
+    pub points: Vec<Spanned<String>>,
 }

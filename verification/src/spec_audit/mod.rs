@@ -554,11 +554,10 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
             trig_judge::endpoint::endpoint_values(spec, *end, values)
         }
         Check::EndpointDerivatives {
-            end,
-            order,
             wrt,
             values,
-        } => trig_judge::endpoint::endpoint_derivative_values(spec, *end, *order, *wrt, values),
+            curves,
+        } => trig_judge::endpoint::endpoint_derivative_values(spec, *wrt, values, curves),
         Check::CurveDerivative {
             end,
             order,
