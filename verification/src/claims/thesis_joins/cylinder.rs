@@ -13,58 +13,12 @@ use trig_core::Family;
 use trig_deriv::{JoinKind, JoinSetup, Wrt};
 use trig_symbolic::Sym;
 
-use super::{lin, n, v};
+use super::{lin, n};
 use crate::claim::shared;
-use trig_judge::exact::{sum, symbols};
-use trig_judge::join::{Printed, PrintedJoin, audit};
+use trig_judge::exact::sum;
 use trig_verdict::evidence::{Evidence, EvidenceList, Witness};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
-
-/// A seam from the end of `from` (points `from0…from3`) to the start of `to`.
-fn seam(from: &str, to: &str) -> PrintedJoin<Family> {
-    let (a, b) = (symbols(from, 4), symbols(to, 4));
-    let m = v("m");
-    let printed = vec![
-        Printed::new(0, vec![a[3].clone()]),
-        Printed::new(1, vec![n(2) * &a[3], -a[2].clone()]),
-        Printed::new(
-            2,
-            vec![
-                a[1].clone(),
-                -(lin(4, &m, 4) * &a[2]),
-                lin(4, &m, 4) * &a[3],
-            ],
-        ),
-    ];
-    PrintedJoin::new(
-        Family::ThesisCubic,
-        JoinKind::C(2),
-        (vec![m.clone()], vec![m]),
-        (a, b),
-        printed,
-    )
-}
-
-/// The printed seam formulas of 5.4.3 (C⁰, C¹, C² rows).
-pub fn t26j() -> Verdict {
-    static VERDICT: OnceLock<Verdict> = OnceLock::new();
-    shared(&VERDICT, || {
-        Verdict::all(
-            trig_judge::join::METHOD,
-            vec![
-                (
-                    "seam P → Q (Q0 = P3, Q1 = 2P3 − P2, Q2 = P1 − (4m+4)P2 + (4m+4)P3)".into(),
-                    audit(&seam("P", "Q")),
-                ),
-                (
-                    "seam Q → P (P0 = Q3, P1 = 2Q3 − Q2, P2 = Q1 − (4m+4)Q2 + (4m+4)Q3)".into(),
-                    audit(&seam("Q", "P")),
-                ),
-            ],
-        )
-    })
-}
 
 type Point = [Sym; 3];
 
