@@ -47,6 +47,7 @@ pub mod region;
 pub mod shape_effect;
 pub mod span;
 pub mod surface;
+pub mod surface_join;
 pub mod symmetry;
 pub mod table_arithmetic;
 pub mod total_positivity;

@@ -50,6 +50,34 @@ pub struct NamedCurve {
     pub points: Vec<String>,
 }
 
+/// A control net a listing builds: `points[i][j]` is `P_{i,j}` (row `i`
+/// with the functions of the first surface variable), each coordinate
+/// exact (numbers, or formulas in the parameters).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ListedNet {
+    pub name: String,
+    pub points: Vec<Vec<[Sym; 3]>>,
+}
+
+/// Where two patches meet: the end of net `first` and the start of net
+/// `second` (indices into the claim's nets).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Seam {
+    pub label: String,
+    pub first: usize,
+    pub second: usize,
+    pub across: Across,
+}
+
+/// The side of a seam: `Columns` (`A | B`: the last column of `A` meets
+/// the first of `B`, across the second surface variable) or `Rows`
+/// (`A ; B`: the last row of `A` meets the first of `B`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Across {
+    Columns,
+    Rows,
+}
+
 /// A printed monotonicity statement about one function.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Monotone {
@@ -267,6 +295,16 @@ pub enum Check {
     /// totals, extremes and means of the segment rows, summaries against
     /// the tables they summarise, the best scheme against the summaries.
     TableArithmetic { path: String, text: String },
+    /// Tensor-product patches of the basis (in both directions) over the
+    /// control nets a printed listing builds (a listing file, `path` as
+    /// written, relative to the claim's file), `Cᵏ` across each seam.
+    SurfaceJoin {
+        path: String,
+        kind: JoinKind,
+        wrt: Wrt,
+        nets: Vec<ListedNet>,
+        seams: Vec<Seam>,
+    },
     /// Each function has exactly one maximum on the domain ("each bᵢ has
     /// one maximum value").
     OneMaximum,

@@ -241,6 +241,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
         "local-control" => local_control(src, spec, c)?,
         "identity" => crate::identity_read::identity(src, spec, c)?,
         "one-maximum" => Check::OneMaximum,
+        "surface-join" => crate::listing::surface_join(src, spec, c)?,
         "all" => Check::All {
             claims: need(src, c, &c.claims, "claims")?
                 .iter()
@@ -270,7 +271,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             return src.invalid(
                 c.check.span(),
                 "claims.check",
-                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, all, not-printed, interpolant-nonnegative or table-arithmetic"),
+                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, surface-join, all, not-printed, interpolant-nonnegative or table-arithmetic"),
             );
         }
     };
@@ -297,7 +298,9 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             c.data.as_ref().map(Spanned::span),
             matches!(
                 check,
-                Check::InterpolantNonnegative { .. } | Check::TableArithmetic { .. }
+                Check::InterpolantNonnegative { .. }
+                    | Check::TableArithmetic { .. }
+                    | Check::SurfaceJoin { .. }
             ),
         ),
         (
@@ -322,7 +325,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                     match field {
                         "claims" | "brief" => "all",
                         "reason" => "not-printed",
-                        "data" => "interpolant-nonnegative` or `check = \"table-arithmetic",
+                        "data" => "interpolant-nonnegative`, `check = \"table-arithmetic` or `check = \"surface-join",
                         "curves" => "endpoint-derivatives",
                         _ => "interpolant-nonnegative",
                     }
@@ -442,7 +445,7 @@ fn interpolant(src: &Source<'_>, c: &RawClaim) -> Result<Check> {
 
 /// The table file `data = "…"` names (relative to the claim's file), as
 /// written and as read: a file that cannot be read is an error of the file.
-fn data_file(src: &Source<'_>, c: &RawClaim) -> Result<(String, String)> {
+pub(crate) fn data_file(src: &Source<'_>, c: &RawClaim) -> Result<(String, String)> {
     let path = need(src, c, &c.data, "data")?;
     let dir = Path::new(src.file).parent().unwrap_or(Path::new(""));
     let file = dir.join(path.get_ref().trim());

@@ -552,6 +552,11 @@ impl<'a> Substitution<'a> {
                     item.rhs = self.sym(&item.rhs, &what)?;
                 }
             }
+            Check::SurfaceJoin { nets, .. } => {
+                for x in nets.iter_mut().flat_map(|n| n.points.iter_mut().flatten().flatten()) {
+                    *x = self.sym(x, "a point of the listing")?;
+                }
+            }
             Check::Unity
             | Check::OneMaximum
             | Check::ShapeEffect { .. }

@@ -47,6 +47,7 @@ pub mod given;
 mod given_read;
 mod identity_read;
 mod join_read;
+mod listing;
 mod load;
 mod names;
 pub mod nonvanishing;
@@ -59,9 +60,9 @@ pub mod spec;
 pub use any::{AnyBasis, OpenError};
 pub use ast::Grammar;
 pub use check::{
-    Application, Applied, Check, Condition, Curve, Differentiated, Direction, Identity,
-    JoinSegments, Monotone, NamedCurve, Printed, PrintedDerivative, Quantifier, Reading, SpecClaim,
-    Varied,
+    Across, Application, Applied, Check, Condition, Curve, Differentiated, Direction, Identity,
+    JoinSegments, ListedNet, Monotone, NamedCurve, Printed, PrintedDerivative, Quantifier, Reading,
+    Seam, SpecClaim, Varied,
 };
 pub use check::{Between, Fixed, Given};
 pub use document::{DocumentClaim, DocumentFile, Part};

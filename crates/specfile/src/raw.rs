@@ -119,6 +119,9 @@ pub struct RawClaim {
     /// `check = "endpoint-derivatives"`: the curves the printed values
     /// name, with their control points as printed.
     pub curves: Option<Vec<RawCurve>>,
+    /// `check = "surface-join"`: the seams, `"label: A | B"` (B beside A)
+    /// or `"label: A ; B"` (B below A), nets of the listing.
+    pub seams: Option<Vec<Spanned<String>>>,
     /// The statement is the negation of the check ("is not C⁴").
     pub negated: Option<bool>,
     /// Remarks shown after the evidence (how a print is read, what the

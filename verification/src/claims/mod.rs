@@ -20,7 +20,6 @@ mod shape_effect;
 mod thesis;
 mod thesis_interp;
 mod thesis_interp_text;
-mod thesis_joins;
 mod thesis_lsq;
 mod thesis_out_of_range;
 mod thesis_survey;
@@ -32,7 +31,6 @@ pub fn all() -> Vec<Claim> {
     [
         thesis::CLAIMS,
         thesis_interp::CLAIMS,
-        thesis_joins::CLAIMS,
         seed000::CLAIMS,
         seed000_appendix_c::CLAIMS,
         seed000_appendix_e::CLAIMS,

@@ -604,6 +604,13 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
             trig_judge::interpolant::nonnegative(spec, data, *scheme)
         }
         Check::TableArithmetic { text, .. } => trig_judge::table_arithmetic::decide(text),
+        Check::SurfaceJoin {
+            path,
+            kind,
+            wrt,
+            nets,
+            seams,
+        } => trig_judge::surface_join::surface_join(spec, *kind, *wrt, path, nets, seams),
         Check::OneMaximum => {
             trig_judge::maxima::exactly_one_maximum(spec, &trig_judge::exact::basis_of(spec))
         }
