@@ -4,7 +4,7 @@
 //! differentiation).
 
 use trig_deriv::{End, Wrt, endpoint_derivatives};
-use trig_specfile::Printed;
+use trig_specfile::{Differentiated, NamedCurve, Printed, PrintedDerivative};
 use trig_symbolic::Sym;
 
 use crate::domain::{describe_wrt, end_text, param_symbols, value_at};
@@ -81,34 +81,79 @@ pub fn endpoint_values<B: ExactBasis>(basis: &B, end: End, values: &[Printed]) -
     v.with_correction(format!("{text} (the computed values)"))
 }
 
-/// Exact endpoint derivatives (jets over the symbolic ring) against the
-/// printed values.
+/// Printed endpoint derivatives — of the functions and of the curves the
+/// claim names (`Σ bᵢPᵢ` with its control points), each of its own order
+/// and end, with the basis's parameters or the printed ones — against the
+/// exact ones (Taylor jets over the symbolic ring). A failure names the computed
+/// value of every printed one that differs as the correction.
 pub fn endpoint_derivative_values<B: ExactBasis>(
     basis: &B,
-    end: End,
-    order: usize,
     wrt: Wrt,
-    values: &[Printed],
+    values: &[PrintedDerivative],
+    curves: &[NamedCurve],
 ) -> Verdict {
     let names = basis.function_names();
-    let table = endpoint_derivatives::<Sym, K>(basis, &param_symbols(basis), end, wrt, &Sym::one());
-    let e = end_text(basis, end);
-    let parts = values
-        .iter()
-        .map(|p| {
-            let printed = p.text.split_once('=').map_or("", |(_, v)| v.trim());
-            (
-                format!(
-                    "{}^({order})({e}) [{}] = {printed}",
-                    names[p.function],
-                    describe_wrt(basis, wrt)
-                ),
-                table[p.function][order].clone(),
-                p.value.clone(),
+    let own = param_symbols(basis);
+    let at =
+        |params: &[Sym], end| endpoint_derivatives::<Sym, K>(basis, params, end, wrt, &Sym::one());
+    let own_table = [End::Start, End::End].map(|end| at(&own, end));
+    let mut parts = Vec::new();
+    let mut corrections = Vec::new();
+    for p in values {
+        let e = end_text(basis, p.end);
+        let printed_table;
+        let table = match &p.params {
+            None => &own_table[usize::from(p.end == End::End)],
+            Some(params) => {
+                printed_table = at(params, p.end);
+                &printed_table
+            }
+        };
+        let (computed, shown) = match p.of {
+            Differentiated::Function(i) => {
+                let d = table[i][p.order].clone();
+                let shown = d.to_string();
+                (d, shown)
+            }
+            Differentiated::Curve(k) => {
+                let points = &curves[k].points;
+                let d = crate::exact::sum(
+                    &table
+                        .iter()
+                        .zip(points)
+                        .map(|(f, q)| f[p.order].clone() * &Sym::var(q))
+                        .collect::<Vec<_>>(),
+                );
+                let shown = d.to_combination(points);
+                (d, shown)
+            }
+        };
+        let name = match p.of {
+            Differentiated::Function(i) => &names[i],
+            Differentiated::Curve(k) => &curves[k].name,
+        };
+        let label = p.label.clone().unwrap_or_else(|| {
+            format!(
+                "{name}^({})({e}) [{}] = {}",
+                p.order,
+                describe_wrt(basis, wrt),
+                p.printed
             )
-        })
-        .collect();
-    defined_by(identities(parts), basis)
+        });
+        if !computed.equals(&p.value) {
+            corrections.push(format!("{} = {shown}", derivative_label(name, p.order, &e)));
+        }
+        parts.push((label, computed, p.value.clone()));
+    }
+    let v = defined_by(identities(parts), basis);
+    if v.status == Status::Holds || corrections.is_empty() {
+        return v;
+    }
+    v.with_correction(format!(
+        "{} (computed, {})",
+        corrections.join("; "),
+        describe_wrt(basis, wrt)
+    ))
 }
 
 /// One exact derivative in the table's convention: `d/dθ` (`s ↦ c`,
@@ -186,5 +231,49 @@ pub fn derivative_table<B: ExactBasis>(basis: &B, wrt: Wrt) -> Verdict {
         Verdict::new(Status::Holds, method, evidence)
     } else {
         identities(parts)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use trig_specfile::{Check, Spec};
+
+    /// The thesis cubic with one `endpoint-derivatives` claim listing `values`.
+    fn decided(values: &str) -> Verdict {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../../examples/catalog/thesis-cubic.toml");
+        let text = std::fs::read_to_string(path).unwrap();
+        let spec = Spec::from_str_named(
+            &format!(
+                "{text}\n[[claims]]\nid = \"d\"\nsource = \"s\"\nstatement = \"s\"\ncheck = \"endpoint-derivatives\"\nwrt = \"angle\"\ncurves = [{{ name = \"Q\", points = [\"P4\", \"P5\", \"P6\", \"P7\"] }}]\nsymbols = [\"m1\"]\nvalues = [{values}]\n"
+            ),
+            "thesis-cubic.toml",
+        )
+        .unwrap_or_else(|e| panic!("{e}"));
+        let Check::EndpointDerivatives {
+            wrt,
+            values,
+            curves,
+        } = &spec.claims[0].check
+        else {
+            panic!("an endpoint-derivatives claim");
+        };
+        endpoint_derivative_values(&spec, *wrt, values, curves)
+    }
+
+    #[test]
+    fn listed_derivatives_of_several_orders_ends_and_curves() {
+        // thesis 4.2.1, Condition 2: Q2 with m1, derivatives in the angle
+        let v = decided(
+            "\"Q'(0; m1) = (m1 + 2)*P5 - (m1 + 2)*P4\", \"Q''(0) = 2*P6 - (4*m + 4)*P5 + (4*m + 2)*P4\", \"b3'(1) = m + 2\"",
+        );
+        assert_eq!(v.status, Status::Holds, "{v:?}");
+        // a wrong sign fails, the computed value its correction
+        let v = decided("\"b0'(0) = m + 2\", \"b3'(1) = m + 2\"");
+        assert_eq!(v.status, Status::Fails);
+        let correction = v.correction.expect("the computed values");
+        assert!(correction.contains("b0′(0) = -m - 2"), "{correction}");
+        assert!(!correction.contains("b3"), "{correction}");
     }
 }

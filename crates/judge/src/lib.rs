@@ -50,6 +50,7 @@ pub mod same_basis;
 pub mod shape_effect;
 pub mod span;
 pub mod surface;
+pub mod surface_join;
 pub mod symmetry;
 pub mod table_arithmetic;
 pub mod table_quotes;

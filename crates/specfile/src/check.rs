@@ -15,6 +15,69 @@ pub struct Printed {
     pub value: Sym,
 }
 
+/// A printed endpoint derivative `f⁽ᵏ⁾(end) = value` of a function or of
+/// a [`NamedCurve`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct PrintedDerivative {
+    pub of: Differentiated,
+    pub order: usize,
+    pub end: End,
+    /// How the report names it (`b0'(0)`, `Condition 1, Q2(0)`); `None`:
+    /// the judge's own label (function, order, end and convention).
+    pub label: Option<String>,
+    /// The parameters printed with it (`Q2'(0; m1)`: the basis at `m = m1`),
+    /// one per parameter of the basis; `None`: the basis's own.
+    pub params: Option<Vec<Sym>>,
+    /// The printed value as written.
+    pub printed: String,
+    pub value: Sym,
+}
+
+/// What a [`PrintedDerivative`] differentiates.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Differentiated {
+    /// The basis function of this index.
+    Function(usize),
+    /// The claim's curve of this index.
+    Curve(usize),
+}
+
+/// A curve `Σ bᵢPᵢ` a claim names (`Q2`), with its control points as
+/// printed (`P4…P7`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct NamedCurve {
+    pub name: String,
+    pub points: Vec<String>,
+}
+
+/// A control net a listing builds: `points[i][j]` is `P_{i,j}` (row `i`
+/// with the functions of the first surface variable), each coordinate
+/// exact (numbers, or formulas in the parameters).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ListedNet {
+    pub name: String,
+    pub points: Vec<Vec<[Sym; 3]>>,
+}
+
+/// Where two patches meet: the end of net `first` and the start of net
+/// `second` (indices into the claim's nets).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Seam {
+    pub label: String,
+    pub first: usize,
+    pub second: usize,
+    pub across: Across,
+}
+
+/// The side of a seam: `Columns` (`A | B`: the last column of `A` meets
+/// the first of `B`, across the second surface variable) or `Rows`
+/// (`A ; B`: the last row of `A` meets the first of `B`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Across {
+    Columns,
+    Rows,
+}
+
 /// A printed monotonicity statement about one function.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Monotone {
@@ -101,12 +164,13 @@ pub enum Check {
     },
     /// Printed function values at one end.
     EndpointValues { end: End, values: Vec<Printed> },
-    /// Printed derivatives of one order at one end.
+    /// Printed derivatives at the ends of the domain, each of its own
+    /// order and end (and parameters, where printed): of the functions, and
+    /// of curves `Σ bᵢPᵢ` named with their control points as printed.
     EndpointDerivatives {
-        end: End,
-        order: usize,
         wrt: Wrt,
-        values: Vec<Printed>,
+        values: Vec<PrintedDerivative>,
+        curves: Vec<NamedCurve>,
     },
     /// Printed derivative of the curve `Σ bᵢPᵢ` at one end, a combination
     /// of the control points (terminal tangents `r'(0) = 3(P1 − P0)`).
@@ -253,6 +317,16 @@ pub enum Check {
         text: String,
         quotes_path: String,
         quotes: String,
+    },
+    /// Tensor-product patches of the basis (in both directions) over the
+    /// control nets a printed listing builds (a listing file, `path` as
+    /// written, relative to the claim's file), `Cᵏ` across each seam.
+    SurfaceJoin {
+        path: String,
+        kind: JoinKind,
+        wrt: Wrt,
+        nets: Vec<ListedNet>,
+        seams: Vec<Seam>,
     },
     /// Each function has exactly one maximum on the domain ("each bᵢ has
     /// one maximum value").

@@ -65,7 +65,7 @@ fn printed(src: &Source<'_>, spec: &Spec, items: &[Spanned<String>]) -> Result<V
         .collect()
 }
 
-fn order_field(src: &Source<'_>, c: &RawClaim, order: &Spanned<i64>) -> Result<usize> {
+pub(crate) fn order_field(src: &Source<'_>, c: &RawClaim, order: &Spanned<i64>) -> Result<usize> {
     usize::try_from(*order.get_ref())
         .ok()
         .filter(|k| *k <= MAX_ORDER)
@@ -204,12 +204,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             end: end_field(src, need(src, c, &c.end, "end")?)?,
             values: printed(src, spec, need(src, c, &c.values, "values")?)?,
         },
-        "endpoint-derivatives" => Check::EndpointDerivatives {
-            end: end_field(src, need(src, c, &c.end, "end")?)?,
-            order: order_field(src, c, need(src, c, &c.order, "order")?)?,
-            wrt: wrt_field(src, spec, c.wrt.as_ref())?,
-            values: printed(src, spec, need(src, c, &c.values, "values")?)?,
-        },
+        "endpoint-derivatives" => crate::derivative_read::endpoint_derivatives(src, spec, c)?,
         "curve-derivative" => {
             let item = need(src, c, &c.value, "value")?;
             let mut names = spec.names();
@@ -255,6 +250,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                 })
                 .collect::<Result<_>>()?,
         },
+        "surface-join" => crate::listing::surface_join(src, spec, c)?,
         "all" => Check::All {
             claims: need(src, c, &c.claims, "claims")?
                 .iter()
@@ -309,7 +305,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             return src.invalid(
                 c.check.span(),
                 "claims.check",
-                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, fourier-span, all, not-printed, interpolant-nonnegative, interpolant-continuity, table-arithmetic, table-quotes or same-basis"),
+                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, fourier-span, all, not-printed, interpolant-nonnegative, interpolant-continuity, table-arithmetic, table-quotes, same-basis or surface-join"),
             );
         }
     };
@@ -340,6 +336,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                     | Check::InterpolantContinuity { .. }
                     | Check::TableArithmetic { .. }
                     | Check::TableQuotes { .. }
+                    | Check::SurfaceJoin { .. }
             ),
         ),
         (
@@ -360,6 +357,16 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             c.other.as_ref().map(Spanned::span),
             matches!(check, Check::SameBasis { .. }),
         ),
+        (
+            "curves",
+            c.curves
+                .as_ref()
+                .map(|v| v.first().map_or(c.check.span(), |k| k.name.span())),
+            matches!(
+                check,
+                Check::EndpointDerivatives { .. } | Check::Identity { .. }
+            ),
+        ),
     ] {
         if let (Some(span), false) = (given, taken) {
             return src.invalid(
@@ -370,9 +377,10 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                     match field {
                         "claims" | "brief" => "all",
                         "reason" => "not-printed",
-                        "data" => "interpolant-nonnegative`, `check = \"interpolant-continuity`, `check = \"table-arithmetic` or `check = \"table-quotes",
+                        "data" => "interpolant-nonnegative`, `check = \"interpolant-continuity`, `check = \"table-arithmetic`, `check = \"table-quotes` or `check = \"surface-join",
                         "other" => "same-basis",
                         "quotes" => "table-quotes",
+                        "curves" => "identity` or `check = \"endpoint-derivatives",
                         _ => "interpolant-nonnegative` or `check = \"interpolant-continuity",
                     }
                 ),
@@ -495,7 +503,7 @@ fn interpolant(src: &Source<'_>, c: &RawClaim) -> Result<(String, DataSet, Schem
 
 /// The table file `data = "…"` names (relative to the claim's file), as
 /// written and as read: a file that cannot be read is an error of the file.
-fn data_file(src: &Source<'_>, c: &RawClaim) -> Result<(String, String)> {
+pub(crate) fn data_file(src: &Source<'_>, c: &RawClaim) -> Result<(String, String)> {
     file_field(src, need(src, c, &c.data, "data")?, "data")
 }
 
@@ -640,7 +648,7 @@ fn scope_field(src: &Source<'_>, scope: &Spanned<String>, field: &str) -> Result
     }
 }
 
-fn end_field(src: &Source<'_>, end: &Spanned<String>) -> Result<End> {
+pub(crate) fn end_field(src: &Source<'_>, end: &Spanned<String>) -> Result<End> {
     match end.get_ref().trim() {
         "start" | "0" => Ok(End::Start),
         "end" | "1" => Ok(End::End),

@@ -495,8 +495,11 @@ impl<'a> Substitution<'a> {
             | Check::Independent { range, .. }
             | Check::TotalPositivity { range, .. }
             | Check::Monotone { range, .. } => *range = None,
-            Check::EndpointValues { values, .. } | Check::EndpointDerivatives { values, .. } => {
-                *values = self.printed(values)?;
+            Check::EndpointValues { values, .. } => *values = self.printed(values)?,
+            Check::EndpointDerivatives { values, .. } => {
+                for v in values.iter_mut() {
+                    v.value = self.sym(&v.value, &format!("the printed `{}`", v.printed))?;
+                }
             }
             Check::CurveDerivative { value, text, .. } => {
                 *value = self.sym(value, &format!("the printed `{text}`"))?;
@@ -563,6 +566,11 @@ impl<'a> Substitution<'a> {
             Check::SameBasis { params, .. } => {
                 for (_, f) in params.iter_mut() {
                     *f = self.sym(f, "the printed change of parameter")?;
+                }
+            }
+            Check::SurfaceJoin { nets, .. } => {
+                for x in nets.iter_mut().flat_map(|n| n.points.iter_mut().flatten().flatten()) {
+                    *x = self.sym(x, "a point of the listing")?;
                 }
             }
             Check::Unity

@@ -35,6 +35,7 @@ mod ast;
 mod budget;
 pub mod check;
 mod claims;
+mod derivative_read;
 pub mod document;
 pub mod error;
 pub mod exact_range;
@@ -46,6 +47,7 @@ pub mod given;
 mod given_read;
 mod identity_read;
 mod join_read;
+mod listing;
 mod load;
 mod names;
 pub mod nonvanishing;
@@ -58,8 +60,9 @@ pub mod spec;
 pub use any::{AnyBasis, OpenError};
 pub use ast::Grammar;
 pub use check::{
-    Application, Applied, Argument, Change, Check, Condition, Curve, Direction, Identity,
-    JoinSegments, Monotone, Printed, Quantifier, Reading, SpecClaim, Varied,
+    Across, Application, Applied, Argument, Change, Check, Condition, Curve, Differentiated, Direction,
+    Identity, JoinSegments, ListedNet, Monotone, NamedCurve, Printed, PrintedDerivative, Quantifier,
+    Reading, Seam, SpecClaim, Varied,
 };
 pub use check::{Between, Fixed, Given};
 pub use document::{DocumentClaim, DocumentFile, Part};

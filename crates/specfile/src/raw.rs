@@ -118,7 +118,9 @@ pub struct RawClaim {
     /// `check = "identity"`: the printed name of the curve `Σ bᵢPᵢ`.
     pub curve: Option<Spanned<String>>,
     /// `check = "identity"`: further free symbols of the identities (a
-    /// translation `q`, the entries of a matrix), constants of the ring.
+    /// translation `q`, the entries of a matrix), constants of the ring;
+    /// `check = "endpoint-derivatives"`: the printed parameters' names
+    /// (`m1` in `Q2'(0; m1)`).
     pub symbols: Option<Vec<Spanned<String>>>,
     /// `check = "identity"`: readings of printed identities.
     pub readings: Option<Vec<RawReading>>,
@@ -127,11 +129,14 @@ pub struct RawClaim {
     /// `check = "same-basis"`: the other basis (a spec file, relative to
     /// the claim's file).
     pub other: Option<Spanned<String>>,
-    /// `check = "identity"`: curves with printed control points,
+    /// `check = "identity"` or `"endpoint-derivatives"`: curves with printed control points,
     /// `[{ name = "P", points = ["f0", "f0 + 2*h*d0/(pi*(m + 2))", …] }]`.
     pub curves: Option<Vec<RawCurve>>,
     /// `check = "identity"`: a change of variable, `{ x = "(x - x_i)/h_i" }`.
     pub change: Option<BTreeMap<String, Spanned<String>>>,
+    /// `check = "surface-join"`: the seams, `"label: A | B"` (B beside A)
+    /// or `"label: A ; B"` (B below A), nets of the listing.
+    pub seams: Option<Vec<Spanned<String>>>,
     /// The statement is the negation of the check ("is not C⁴").
     pub negated: Option<bool>,
     /// Remarks shown after the evidence (how a print is read, what the
@@ -148,7 +153,8 @@ pub struct RawClaim {
 }
 
 /// `curves = [{ name = "P", points = ["f0", …] }]`: the curve `Σ bᵢ·pointᵢ`
-/// of printed control points, one formula per function.
+/// of printed control points, one formula per function (`identity`;
+/// `endpoint-derivatives`: `curves = [{ name = "Q2", points = ["P4", …] }]`).
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RawCurve {
@@ -164,3 +170,4 @@ pub struct RawReading {
     #[serde(rename = "as")]
     pub read: Spanned<String>,
 }
+

@@ -19,7 +19,6 @@ mod shape_effect;
 mod thesis;
 mod thesis_interp;
 mod thesis_interp_text;
-mod thesis_joins;
 mod thesis_out_of_range;
 mod thesis_survey;
 mod thesis_text;
@@ -28,7 +27,6 @@ mod thesis_text;
 pub fn all() -> Vec<Claim> {
     [
         thesis::CLAIMS,
-        thesis_joins::CLAIMS,
         seed000::CLAIMS,
         seed000_appendix_c::CLAIMS,
         seed000_appendix_e::CLAIMS,

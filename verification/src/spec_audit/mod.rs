@@ -554,11 +554,10 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
             trig_judge::endpoint::endpoint_values(spec, *end, values)
         }
         Check::EndpointDerivatives {
-            end,
-            order,
             wrt,
             values,
-        } => trig_judge::endpoint::endpoint_derivative_values(spec, *end, *order, *wrt, values),
+            curves,
+        } => trig_judge::endpoint::endpoint_derivative_values(spec, *wrt, values, curves),
         Check::CurveDerivative {
             end,
             order,
@@ -615,6 +614,13 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
         Check::TableArithmetic { text, .. } => trig_judge::table_arithmetic::decide(text),
         Check::TableQuotes { text, quotes, .. } => trig_judge::table_quotes::decide(text, quotes),
         Check::FourierSpan { span } => trig_judge::fourier::in_span(spec, span),
+        Check::SurfaceJoin {
+            path,
+            kind,
+            wrt,
+            nets,
+            seams,
+        } => trig_judge::surface_join::surface_join(spec, *kind, *wrt, path, nets, seams),
         Check::OneMaximum => {
             trig_judge::maxima::exactly_one_maximum(spec, &trig_judge::exact::basis_of(spec))
         }
