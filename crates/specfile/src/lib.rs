@@ -59,7 +59,7 @@ pub use any::{AnyBasis, OpenError};
 pub use ast::Grammar;
 pub use check::{
     Application, Applied, Check, Condition, Curve, Direction, Identity, JoinSegments, Monotone,
-    Printed, Quantifier, Reading, SpecClaim, Varied,
+    Polygons, Printed, Quantifier, RationalCurve, Reading, SpecClaim, Varied,
 };
 pub use check::{Between, Fixed, Given};
 pub use document::{DocumentClaim, DocumentFile, Part};
