@@ -29,7 +29,7 @@ use std::collections::BTreeSet;
 use trig_certify::atoms::{d_param, param_atoms};
 use trig_symbolic::Sym;
 
-use crate::exact::{ExactBasis, basis_of};
+use crate::exact::{ExactBasis, basis_of, symbols};
 use trig_verdict::evidence::{Evidence, Expr, Kind};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
@@ -296,6 +296,64 @@ pub fn local_control<B: ExactBasis>(
     v
 }
 
+/// The printed local-control claim about the rational uniform B-spline
+/// assembled from the functions of `basis` (a NURBS curve): segment `i` is
+/// `Zᵢ = Σ_k w_{i+f+k} b_k P_{i+f+k} / Σ_k w_{i+f+k} b_k` (`curve`: the printed
+/// name `Z`, `point`: that of the control points `P`, `first`: `f`). The
+/// control point `P_j` and the weight `w_j` enter segment `i` through the
+/// local index `k = j − i − f`, with the weights `∂Z/∂P_k = w_k b_k / Σ w b`
+/// and `∂Z/∂w_k = b_k (P_k − Z) / Σ w b`; each is decided exactly as for a
+/// polynomial curve, against the printed segments `j + o`, `o ∈ printed`.
+pub fn rational_local_control<B: ExactBasis>(
+    basis: &B,
+    curve: &str,
+    point: &str,
+    first: i64,
+    printed: &[i64],
+) -> Verdict {
+    let functions = basis_of(basis);
+    let n = functions.len();
+    let (p, w) = (symbols(point, n), symbols("w", n));
+    let sum = |f: &dyn Fn(usize) -> Sym| (0..n).fold(Sym::zero(), |acc, k| acc + &f(k));
+    let z =
+        sum(&|k| w[k].clone() * &p[k] * &functions[k]) / &sum(&|k| w[k].clone() * &functions[k]);
+    let entries = |name: &str| -> Vec<Entry> {
+        (0..n)
+            .map(|k| Entry {
+                offset: -(k as i64) - first,
+                weights: vec![(
+                    format!("∂{curve}/∂{name}{k}"),
+                    z.diff(&format!("{name}{k}")),
+                )],
+            })
+            .collect()
+    };
+    let mut v = Verdict::all(
+        METHOD,
+        vec![
+            (
+                format!("control point {point}_j"),
+                compare(&format!("{point}_j"), &entries(point), printed),
+            ),
+            ("weight w_j".into(), compare("w_j", &entries("w"), printed)),
+        ],
+    );
+    v.evidence.insert(
+        0,
+        Evidence::note(format!(
+            "segment i is {curve}_i = Σ_{{k=0}}^{{{last}}} w_{{i{f}+k}} b_k(x) {point}_{{i{f}+k}} / Σ_{{k=0}}^{{{last}}} w_{{i{f}+k}} b_k(x) (rational uniform B-spline of the {n} functions; piece k is function {last} − k): {point}_j and w_j enter it as the local {point}_k, w_k, k = j − i{back}, with the weights ∂{curve}/∂{point}_k, ∂{curve}/∂w_k",
+            last = n - 1,
+            f = signed(first),
+            back = match first {
+                0 => String::new(),
+                f if f < 0 => format!(" + {}", -f),
+                f => format!(" − {f}"),
+            },
+        )),
+    );
+    v
+}
+
 /// For information, not a verdict: the printed claim decided under
 /// another reading of what is varied (one value of a parameter per segment
 /// or for the whole curve), as one line.
@@ -412,6 +470,35 @@ mod tests {
         let per = Control::SegmentParameter { name, shift: 0 };
         assert_eq!(local_control(&f, &per, 0, &[0]).status, Status::Holds);
         assert_eq!(local_control(&f, &per, 0, &[0, 1]).status, Status::Fails);
+    }
+
+    #[test]
+    fn a_point_and_its_weight_of_a_rational_curve_enter_the_same_four_segments() {
+        let f = Family::ThesisCubic;
+        let v = rational_local_control(&f, "Z", "H", -3, &[0, 1, 2, 3]);
+        assert_eq!(v.status, Status::Holds, "{:?}", v.evidence);
+        let sets: Vec<String> = v
+            .evidence
+            .iter()
+            .filter(|e| e.text.contains("enters exactly"))
+            .map(|e| e.text.clone())
+            .collect();
+        assert_eq!(
+            sets,
+            [
+                "H_j enters exactly: j, j+1, j+2, j+3 (printed: j, j+1, j+2, j+3)",
+                "w_j enters exactly: j, j+1, j+2, j+3 (printed: j, j+1, j+2, j+3)"
+            ]
+        );
+        // a segment left out fails with the witness of its nonzero weight
+        let short = rational_local_control(&f, "Z", "H", -3, &[0, 1, 2]);
+        assert_eq!(short.status, Status::Fails);
+        assert!(
+            short
+                .evidence
+                .iter()
+                .any(|e| e.status == Some(Status::Fails) && e.witness.is_some())
+        );
     }
 
     #[test]

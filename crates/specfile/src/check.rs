@@ -95,6 +95,20 @@ pub enum Direction {
     AwayFromPolygon,
 }
 
+/// The control polygons a shape-effect claim prints (its figures), with
+/// where their distance from the curve `Σ bᵢPᵢ` is shown: the curve point
+/// at one exact point of the variable, for each printed parameter value.
+/// An illustration beside the verdict; the weights decide.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Polygons {
+    /// Each polygon's vertices, exact.
+    pub polygons: Vec<Vec<(Rational, Rational)>>,
+    /// The point of the variable: its atoms (`s`, `c` or `t`) and values.
+    pub at: Vec<(String, Rational)>,
+    /// The values of the varied parameter, in order.
+    pub values: Vec<Rational>,
+}
+
 /// A printed join condition `Qk = formula in P0…, Q0…`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Condition {
@@ -251,6 +265,8 @@ pub enum Check {
         parameter: String,
         direction: Direction,
         range: Option<ParamRange>,
+        /// Printed polygons, shown with their distance from the curve.
+        polygons: Option<Polygons>,
     },
     /// The basis is normalized totally positive (hence variation
     /// diminishing) for every parameter value of the range (the declared
@@ -272,6 +288,12 @@ pub enum Check {
         /// Another reading of a parameter's scope (`also-scope`), decided
         /// too, for information.
         also: Option<Varied>,
+        /// The index of segment 0's first control point (segment `i` is
+        /// `Σ b_k P_{i+first+k}`).
+        first: i64,
+        /// The curve is rational (`weights = true`), `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ`:
+        /// the control point and its weight are decided.
+        rational: Option<RationalCurve>,
     },
     /// Every listed claim of the file, each decided as it is stated: an
     /// umbrella over printed parts (a theorem whose conditions the file
@@ -454,6 +476,14 @@ pub enum Quantifier {
     Some,
     /// "for no value of λ".
     No,
+}
+
+/// The printed names of a rational local-control curve: the curve (`Z`)
+/// and its control points (`H`; the weights are `w`).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct RationalCurve {
+    pub curve: String,
+    pub point: String,
 }
 
 /// What a local-control claim varies.

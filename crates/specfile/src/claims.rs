@@ -5,7 +5,7 @@ use toml::Spanned;
 use trig_deriv::End;
 use trig_symbolic::Names;
 
-use crate::check::{Check, Printed, SpecClaim, Varied};
+use crate::check::{Check, Printed, RationalCurve, SpecClaim, Varied};
 use crate::error::{Result, SpecError};
 use crate::fields::{formula_in, function_index, need, wrt_field};
 use crate::given_read::{given, one_param_range};
@@ -367,6 +367,11 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                 Check::EndpointDerivatives { .. } | Check::Identity { .. }
             ),
         ),
+        (
+            "polygons",
+            c.polygons.as_ref().map(|_| c.check.span()),
+            matches!(check, Check::ShapeEffect { .. }),
+        ),
     ] {
         if let (Some(span), false) = (given, taken) {
             return src.invalid(
@@ -379,6 +384,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                         "reason" => "not-printed",
                         "data" => "interpolant-nonnegative`, `check = \"interpolant-continuity`, `check = \"table-arithmetic`, `check = \"table-quotes` or `check = \"surface-join",
                         "other" => "same-basis",
+                        "polygons" => "shape-effect",
                         "quotes" => "table-quotes",
                         "curves" => "identity` or `check = \"endpoint-derivatives",
                         _ => "interpolant-nonnegative` or `check = \"interpolant-continuity",
@@ -627,10 +633,49 @@ fn local_control(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check> {
             );
         }
     };
+    let rational = match (c.weights, &c.curve, &c.point) {
+        (Some(true), curve, point) => {
+            if varied != Varied::Point {
+                return src.invalid(
+                    c.check.span(),
+                    "claims.weights",
+                    "`weights = true` (a rational curve) is decided for `control = \"point\"`: the control point and its weight".into(),
+                );
+            }
+            let curve = curve.as_ref().map_or("r", |n| n.get_ref().trim());
+            let point = point.as_ref().map_or("P", |n| n.get_ref().trim());
+            let mut names = spec.names();
+            for (prefix, what) in [(point, "a control point"), ("w", "a weight")] {
+                for i in 0..spec.functions.len() {
+                    names
+                        .fixed(&format!("{prefix}{i}"), what)
+                        .map_err(|e| SpecError::Invalid {
+                            at: src.at(c.check.span().start),
+                            field: "claims.point".into(),
+                            message: e.to_string(),
+                        })?;
+                }
+            }
+            Some(RationalCurve {
+                curve: curve.to_string(),
+                point: point.to_string(),
+            })
+        }
+        (_, None, None) => None,
+        _ => {
+            return src.invalid(
+                c.check.span(),
+                "claims.curve",
+                "`curve` and `point` name the parts of a rational curve (`weights = true`)".into(),
+            );
+        }
+    };
     Ok(Check::LocalControl {
         varied,
         segments,
         also,
+        first: c.first_point.unwrap_or(0),
+        rational,
     })
 }
 

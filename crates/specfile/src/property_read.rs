@@ -3,10 +3,11 @@
 //! parameter (`shape-effect`) and symmetry (`symmetry`).
 
 use rug::Rational;
+use toml::Spanned;
 use trig_core::{Affine, ParamRange, parse_exact};
 use trig_symbolic::Sym;
 
-use crate::check::{Check, Direction, Monotone, Quantifier};
+use crate::check::{Check, Direction, Monotone, Polygons, Quantifier};
 use crate::error::{Result, SpecError};
 use crate::fields::{formula_in, function_index, need};
 use crate::given_read::one_param_range;
@@ -174,7 +175,115 @@ pub(crate) fn shape_effect(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Resul
         parameter: p.name.clone(),
         direction,
         range,
+        polygons: polygons(src, spec, c)?,
     })
+}
+
+/// `polygons = [["(0, 0)", "(1, 2)", …], …]` with `curve-at = { s = "4/5",
+/// c = "3/5" }` (the atoms of the variable; `s² + c² = 1`) and `values`
+/// (the varied parameter's values): each exact.
+fn polygons(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Option<Polygons>> {
+    let Some(printed) = &c.polygons else {
+        if let Some(at) = c.curve_at.as_ref().and_then(|m| m.values().next()) {
+            return src.invalid(
+                at.span(),
+                "claims.curve-at",
+                "`curve-at` places the curve point of printed `polygons`".into(),
+            );
+        }
+        if let Some(v) = c.values.as_ref().and_then(|v| v.first()) {
+            return src.invalid(
+                v.span(),
+                "claims.values",
+                "`values` of a shape-effect claim are the parameter values of printed `polygons`"
+                    .into(),
+            );
+        }
+        return Ok(None);
+    };
+    let number = |item: &Spanned<String>, text: &str, field: &str| -> Result<Rational> {
+        let value = formula_in(src, spec, item, "", text, &[])?;
+        value.as_rational().map_or_else(
+            || {
+                src.invalid(
+                    item.span(),
+                    &format!("claims.{field}"),
+                    format!("`{}`: expected a rational number", text.trim()),
+                )
+            },
+            Ok,
+        )
+    };
+    let mut polygons = Vec::new();
+    for polygon in printed {
+        let mut vertices = Vec::new();
+        for item in polygon {
+            let text = item.get_ref();
+            let pair = text
+                .trim()
+                .strip_prefix('(')
+                .and_then(|r| r.strip_suffix(')'));
+            let Some((x, y)) = pair.and_then(|p| p.split_once(',')) else {
+                return src.invalid(
+                    item.span(),
+                    "claims.polygons",
+                    format!("`{text}`: expected a point `(x, y)`"),
+                );
+            };
+            vertices.push((number(item, x, "polygons")?, number(item, y, "polygons")?));
+        }
+        if vertices.len() < 2 {
+            return src.invalid(
+                c.check.span(),
+                "claims.polygons",
+                "a polygon has at least two points".into(),
+            );
+        }
+        polygons.push(vertices);
+    }
+    let atoms: Vec<String> = spec
+        .functions
+        .iter()
+        .flat_map(|f| f.value.variables())
+        .filter(|v| !spec.params.iter().any(|p| &p.name == v))
+        .collect::<std::collections::BTreeSet<_>>()
+        .into_iter()
+        .collect();
+    let mut at = Vec::new();
+    for (name, value) in need(src, c, &c.curve_at, "curve-at")? {
+        if !atoms.contains(name) {
+            return src.invalid(
+                value.span(),
+                "claims.curve-at",
+                format!(
+                    "`{name}`: not an atom of the functions ({})",
+                    atoms.join(", ")
+                ),
+            );
+        }
+        at.push((name.clone(), number(value, value.get_ref(), "curve-at")?));
+    }
+    // the sine before the cosine, as a point of the angle is written
+    at.sort_by_key(|(name, _)| (name != "s", name != "c"));
+    let value = |n: &str| at.iter().find(|(a, _)| a == n).map(|(_, v)| v.clone());
+    if let (Some(s), Some(cos)) = (value("s"), value("c"))
+        && Rational::from(&s * &s) + Rational::from(&cos * &cos) != 1
+    {
+        return src.invalid(
+            c.check.span(),
+            "claims.curve-at",
+            format!("s = {s}, c = {cos} is not a point of the angle (s² + c² ≠ 1)"),
+        );
+    }
+    let values = need(src, c, &c.values, "values")?
+        .iter()
+        .map(|v| number(v, v.get_ref(), "values"))
+        .collect::<Result<Vec<_>>>()?;
+    Ok(Some(Polygons {
+        polygons,
+        at,
+        values,
+    }))
 }
 
 pub(crate) fn symmetry(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check> {
@@ -240,4 +349,62 @@ pub(crate) fn symmetry(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Ch
         params,
         params_text: shown.join(", "),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use rug::Rational;
+
+    use crate::check::Check;
+    use crate::spec::Spec;
+
+    fn thesis_cubic_with(claim: &str) -> crate::error::Result<Spec> {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../../examples/catalog/thesis-cubic.toml");
+        let text = std::fs::read_to_string(path).unwrap();
+        Spec::from_str_named(
+            &format!(
+                "{text}\n[[claims]]\nid = \"e\"\nsource = \"s\"\nstatement = \"s\"\ncheck = \"shape-effect\"\nparameter = \"m\"\ndirection = \"towards-polygon\"\n{claim}\n"
+            ),
+            "thesis-cubic.toml",
+        )
+    }
+
+    #[test]
+    fn printed_polygons_are_read_exactly_with_their_curve_point() {
+        let spec = thesis_cubic_with(
+            "polygons = [[\"(0, 0)\", \"(10.5, 8)\"]]\ncurve-at = { c = \"3/5\", s = \"4/5\" }\nvalues = [\"-1\", \"1/2\"]",
+        )
+        .unwrap();
+        let Check::ShapeEffect {
+            polygons: Some(p), ..
+        } = &spec.claims[0].check
+        else {
+            panic!("a shape-effect claim with polygons");
+        };
+        let q = |n: i64, d: i64| Rational::from((n, d));
+        assert_eq!(p.polygons, [vec![(q(0, 1), q(0, 1)), (q(21, 2), q(8, 1))]]);
+        // the sine first, as a point of the angle is written
+        assert_eq!(
+            p.at,
+            [("s".to_string(), q(4, 5)), ("c".to_string(), q(3, 5))]
+        );
+        assert_eq!(p.values, [q(-1, 1), q(1, 2)]);
+    }
+
+    #[test]
+    fn a_curve_point_off_the_angle_or_a_stray_field_is_refused() {
+        let off = "polygons = [[\"(0, 0)\", \"(1, 2)\"]]\ncurve-at = { s = \"1/2\", c = \"1/2\" }\nvalues = [\"0\"]";
+        let e = thesis_cubic_with(off).unwrap_err();
+        assert!(e.to_string().contains("s² + c² ≠ 1"), "{e}");
+        let e = thesis_cubic_with("polygons = [[\"(0, 0)\", \"1, 2\"]]\ncurve-at = { s = \"4/5\", c = \"3/5\" }\nvalues = [\"0\"]").unwrap_err();
+        assert!(e.to_string().contains("expected a point"), "{e}");
+        let e = thesis_cubic_with("values = [\"0\"]").unwrap_err();
+        assert!(e.to_string().contains("printed `polygons`"), "{e}");
+        let e = thesis_cubic_with(
+            "polygons = [[\"(0, 0)\", \"(1, 2)\"]]\ncurve-at = { q = \"1\" }\nvalues = [\"0\"]",
+        )
+        .unwrap_err();
+        assert!(e.to_string().contains("not an atom"), "{e}");
+    }
 }

@@ -87,6 +87,13 @@ pub struct RawClaim {
     pub orientation: Option<Spanned<String>>,
     pub parameter: Option<Spanned<String>>,
     pub direction: Option<Spanned<String>>,
+    /// `check = "shape-effect"`: printed control polygons (each a list of
+    /// points `"(x, y)"`), shown with their distance from the curve.
+    pub polygons: Option<Vec<Vec<Spanned<String>>>>,
+    /// `check = "shape-effect"` with `polygons`: the point of the variable
+    /// where the curve point is taken, by its atoms (`s`, `c` or `t`).
+    #[serde(rename = "curve-at")]
+    pub curve_at: Option<BTreeMap<String, Spanned<String>>>,
     pub control: Option<Spanned<String>>,
     pub scope: Option<Spanned<String>>,
     pub segments: Option<Vec<i64>>,
@@ -94,6 +101,13 @@ pub struct RawClaim {
     /// information.
     #[serde(rename = "also-scope")]
     pub also_scope: Option<Spanned<String>>,
+    /// `check = "local-control"`: the index of segment 0's first control
+    /// point (`0` unless given).
+    #[serde(rename = "first-point")]
+    pub first_point: Option<i64>,
+    /// `check = "local-control"` with `weights = true`: the printed name of
+    /// the control points (`P` unless given).
+    pub point: Option<Spanned<String>>,
     /// `for = "some value"` or `"no value"`.
     #[serde(rename = "for")]
     pub quantifier: Option<Spanned<String>>,

@@ -1,20 +1,20 @@
 //! Local control, joins of piecewise curves and the interpolation of the
-//! second list of `shared/claims.md`: which segments a control point, a
-//! weight or a shape parameter enters (M20, D19, decided by the
-//! local-control judge), how consecutive segments join (E24, by the
-//! continuity judge), which control points a refinement moves (T65), how a
-//! piecewise curve interpolates (D17), and the printed G² conditions (T51,
-//! T54). Each states what is printed and computes the verdict.
+//! second list of `shared/claims.md`: which segments a shape parameter of
+//! seed 002's segments enters (D19, decided by the local-control judge),
+//! how consecutive segments join (E24, by the continuity judge), which
+//! control points a refinement moves (T65), how a piecewise curve
+//! interpolates (D17), and the printed G² condition (T51). Each states what
+//! is printed and computes the verdict.
 
 use trig_core::{Family, Ring};
 use trig_deriv::continuity::{Piece, continuity, curve_piece};
 use trig_symbolic::Sym;
 
-use super::local_control_joins::{d17, seed002_segment, t51, t54, t65};
+use super::local_control_joins::{d17, seed002_segment, t51, t65};
 use crate::claim::Claim;
 use trig_judge::continuity::at_least;
-use trig_judge::exact::{IDENTITY, basis, identities, symbols};
-use trig_judge::local_control::{self, Entry, compare};
+use trig_judge::exact::{IDENTITY, identities, symbols};
+use trig_judge::local_control::{Entry, compare};
 use trig_verdict::evidence::Evidence;
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
@@ -26,16 +26,8 @@ pub const CLAIMS: &[Claim] = &[
         check: t51,
     },
     Claim {
-        id: "T54",
-        check: t54,
-    },
-    Claim {
         id: "T65",
         check: t65,
-    },
-    Claim {
-        id: "M20",
-        check: m20,
     },
     Claim {
         id: "D17",
@@ -50,49 +42,6 @@ pub const CLAIMS: &[Claim] = &[
         check: e24,
     },
 ];
-
-/// M20: the rational / NURBS curve of Definition 3 on the knot interval
-/// `[n_i, n_{i+1})` is `Σ_k w_{i−3+k} H_{i−3+k} F_k / Σ_k w_{i−3+k} F_k`
-/// ((1): `F_j` is `0` outside `[n_j, n_{j+4})`, its four pieces are
-/// `F3 … F0` of (5)); `H_j` and `w_j` enter the interval `j + o` through
-/// the local index `k = 3 − o`, with the weights `∂Z/∂H_k`, `∂Z/∂w_k`.
-fn m20() -> Verdict {
-    let f = basis(Family::Seed000Uniform);
-    let h = symbols("H", 4);
-    let w = symbols("w", 4);
-    let num = (0..4).fold(Sym::zero(), |acc, k| acc + &(w[k].clone() * &h[k] * &f[k]));
-    let den = (0..4).fold(Sym::zero(), |acc, k| acc + &(w[k].clone() * &f[k]));
-    let z = num / &den;
-    let entries = |name: &str, of: &[Sym]| -> Vec<Entry> {
-        (0..4)
-            .map(|k| Entry {
-                offset: 3 - k as i64,
-                weights: vec![(format!("∂Z/∂{name}{k}"), z.diff(&of[k].to_string()))],
-            })
-            .collect()
-    };
-    let printed = [0, 1, 2, 3];
-    let mut v = Verdict::all(
-        local_control::METHOD,
-        vec![
-            (
-                "control point H_j".into(),
-                compare("H_j", &entries("H", &h), &printed),
-            ),
-            (
-                "weight w_j".into(),
-                compare("w_j", &entries("w", &w), &printed),
-            ),
-        ],
-    );
-    v.evidence.insert(
-        0,
-        Evidence::note(
-            "segment j + o is the knot interval [n_{j+o}, n_{j+o+1}) with the uniform pieces F0…F3 of (5) and the local control points H_{j+o−3+k}, weights w_{j+o−3+k}; [n_j, n_{j+4}) is segments j … j+3; local symbols H_k, w_k (k = 3 − o) stand for H_j, w_j",
-        ),
-    );
-    v
-}
 
 /// D19: segment `Q_i(t, α_i, α_{i+1})` of (6) uses `α_i` as its first
 /// parameter and `Q_{i−1}` as its second; every other segment has neither.
@@ -207,7 +156,8 @@ mod tests {
             entered(&d19()),
             ["α_j enters exactly: j−1, j (printed: j−1, j)"]
         );
-        let m = entered(&m20());
+        let m20 = &crate::run(None, Some("M20")).expect("the document files")[0].verdict;
+        let m = entered(m20);
         assert_eq!(m.len(), 2);
         assert!(m.iter().all(|l| l.contains("exactly: j, j+1, j+2, j+3 (")));
         let t48 = &crate::run(None, Some("T48")).expect("the document files")[0].verdict;

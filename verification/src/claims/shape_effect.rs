@@ -2,8 +2,9 @@
 //! shape parameter ("the curve approaches the control polygon as `m`
 //! increases"): each states what is printed and calls the shape-effect
 //! judge ([`trig_judge::shape_effect`]), which decides under the weakest
-//! reasonable definition and states it; printed polygons give an explicit
-//! quantity beside the verdict.
+//! reasonable definition and states it (E21: weights moving onto a
+//! segment, concurrent parameters), or compares curves where the document
+//! names no shape parameter (D15, D21).
 
 use rug::Rational;
 use trig_core::{Described, Family, Ring};
@@ -11,15 +12,10 @@ use trig_deriv::continuity::quotient_derivatives;
 use trig_specfile::Direction;
 use trig_symbolic::Sym;
 
-use super::thesis_out_of_range::thesis_surface;
 use crate::claim::Claim;
 use trig_judge::certificate::CERTIFIED;
 use trig_judge::exact::{IDENTITY, identity_item};
-use trig_judge::nonnegative::convex_hull;
-use trig_judge::shape_effect::{
-    Move, Point, SHAPE, TOWARDS, moves, polygon_distances, shape_effect, weights_move,
-};
-use trig_judge::surface::inside_net;
+use trig_judge::shape_effect::{Move, Point, SHAPE, TOWARDS, moves, weights_move};
 use trig_verdict::evidence::{Evidence, Expr};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
@@ -27,32 +23,12 @@ use trig_verdict::verdict::Verdict;
 /// In report order (after the second list's other claims).
 pub const CLAIMS: &[Claim] = &[
     Claim {
-        id: "T44",
-        check: t44,
-    },
-    Claim {
-        id: "T47",
-        check: t47,
-    },
-    Claim {
-        id: "T53",
-        check: t53,
-    },
-    Claim {
-        id: "T61",
-        check: t61,
-    },
-    Claim {
         id: "D15",
         check: d15,
     },
     Claim {
         id: "D21",
         check: d21,
-    },
-    Claim {
-        id: "S5",
-        check: s5,
     },
     Claim {
         id: "E21",
@@ -69,142 +45,6 @@ fn polygon(points: &[(i64, i64, i64, i64)]) -> Vec<Point> {
         .iter()
         .map(|&(a, b, c, d)| (q(a, b), q(c, d)))
         .collect()
-}
-
-/// `(0,0), (1,2), (3,2), (4,0)`: the polygon of thesis Figure 6.3.
-fn figure_6_3() -> Vec<Point> {
-    polygon(&[(0, 1, 0, 1), (1, 1, 2, 1), (3, 1, 2, 1), (4, 1, 0, 1)])
-}
-
-/// The rational point `θ = 2 arctan(1/2)` of the angle, `(s, c) = (4/5, 3/5)`,
-/// where the explicit quantities are evaluated.
-fn near_middle() -> Vec<(&'static str, Rational)> {
-    vec![("s", q(4, 5)), ("c", q(3, 5))]
-}
-
-/// The judge's verdict with explicit quantities on printed polygons
-/// appended.
-fn with_polygons(mut v: Verdict, quantities: Vec<Evidence>) -> Verdict {
-    v.evidence.extend(quantities);
-    v
-}
-
-/// (3.1) with `β ≥ 0`: the end weights `H0 = β/(β+1)(1 − s)²`,
-/// `H2 = β/(β+1)(1 − c)²` grow with `β` (at `β = 0` the curve is `P1`).
-fn t44() -> Verdict {
-    let family = Family::ThesisQuadratic;
-    let printed = polygon(&[(0, 1, 0, 1), (3, 2, 3, 2), (3, 1, 0, 1)]);
-    let v = shape_effect(&family, "beta", Direction::AwayFromPolygon, None);
-    let at = near_middle();
-    let values = [q(1, 2), q(1, 1), q(2, 1)];
-    with_polygons(
-        v,
-        vec![polygon_distances(&family, &printed, &at, "beta", &values)],
-    )
-}
-
-/// (3.7) on its range: towards the polygon as `m` increases, and the
-/// convex hull (unity and certified nonnegativity).
-fn t47() -> Verdict {
-    let family = Family::ThesisCubic;
-    let polygons = [
-        polygon(&[(0, 1, 0, 1), (7, 1, 3, 1), (21, 2, 8, 1), (12, 1, 16, 1)]),
-        polygon(&[(0, 1, 0, 1), (3, 2, 3, 2), (3, 1, 0, 1), (9, 2, 3, 2)]),
-        figure_6_3(),
-    ];
-    let (at, values) = (near_middle(), [q(-1, 1), q(0, 1), q(1, 1)]);
-    let quantities = polygons
-        .iter()
-        .map(|p| polygon_distances(&family, p, &at, "m", &values))
-        .collect();
-    let approaches = with_polygons(
-        shape_effect(&family, "m", Direction::TowardsPolygon, None),
-        quantities,
-    );
-    Verdict::all(
-        format!("{SHAPE}{CERTIFIED}"),
-        vec![
-            ("approaches the polygon as m increases".into(), approaches),
-            (
-                "all curves within the convex hull".into(),
-                convex_hull(&family, None),
-            ),
-        ],
-    )
-}
-
-/// The surface `S(u, v) = Σᵢ Σⱼ bᵢ(u) bⱼ(v) Pᵢⱼ` of (3.7): along every
-/// isoparametric line a curve of (3.7) whose control points are curves of
-/// (3.7), so both statements reduce to the curve basis.
-fn t53() -> Verdict {
-    let family = Family::ThesisCubic;
-    let mut pulls = shape_effect(&family, "m", Direction::TowardsPolygon, None);
-    pulls.evidence.insert(
-        0,
-        "the surface is the tensor product S(u, v) = Σ_i Σ_j b_i(u) b_j(v) P_ij with the same m: for fixed v a curve of (3.7) in u with control points Q_i(v) = Σ_j b_j(v) P_ij, and the same in v; \"pulls toward the net\" is read as the curve effect in each direction (then the corner weights b_0 b_0, … decrease and the four inner weights b_i b_j, i, j ∈ {1, 2}, increase, by the product rule with b ≥ 0)",
-    );
-    let mut parts = vec![(
-        "increasing m pulls the surface toward the net".into(),
-        pulls,
-    )];
-    for (m, shown) in [
-        (q(-9, 5), "-9/5"),
-        (q(-1, 1), "-1"),
-        (q(0, 1), "0"),
-        (q(1, 1), "1"),
-    ] {
-        parts.push((
-            format!("inside the control net at m = {shown}"),
-            inside_net(&thesis_surface(&m)),
-        ));
-    }
-    Verdict::all(format!("{SHAPE}{CERTIFIED}"), parts)
-}
-
-/// Figure 6.3 (b), (d): (6.1) in `η`, (6.3) in `α` (its variable is the
-/// printed `η ∈ [0, 1]`).
-fn t61() -> Verdict {
-    let v = figure_6_3();
-    let at = near_middle();
-    let eta = with_polygons(
-        shape_effect(
-            &Family::MajeedQayyum,
-            "eta",
-            Direction::TowardsPolygon,
-            None,
-        ),
-        vec![polygon_distances(
-            &Family::MajeedQayyum,
-            &v,
-            &at,
-            "eta",
-            &[q(3, 4), q(1, 1), q(2, 1)],
-        )],
-    );
-    let alpha = with_polygons(
-        shape_effect(&Family::Usman, "alpha", Direction::AwayFromPolygon, None),
-        vec![polygon_distances(
-            &Family::Usman,
-            &v,
-            &at,
-            "alpha",
-            &[q(1, 2), q(1, 1), q(3, 2)],
-        )],
-    );
-    Verdict::all(
-        format!("{SHAPE}{CERTIFIED}"),
-        vec![
-            ("(6.1): approaches the polygon as η increases".into(), eta),
-            (
-                "(6.3): all curves for η ∈ [0, 1] within the convex hull".into(),
-                convex_hull(&Family::Usman, None),
-            ),
-            (
-                "(6.3): a larger α moves the curve farther from the polygon".into(),
-                alpha,
-            ),
-        ],
-    )
 }
 
 /// A printed alternative "as `p` increases (or decreases)": holds when one
@@ -368,42 +208,6 @@ fn d21() -> Verdict {
         "the weights w_i change the shape with P0 … P5 fixed, but the document names α1, α2 the shape parameters; the interpolation form (4), Σ Tb_i(t, α1, α2) V_i, has its functions Tb_i garbled in this copy",
     ));
     Verdict::new(status, IDENTITY, evidence)
-}
-
-/// The standard cubic B-spline at `t = 1/2`: `r(1/2) − p* = (1/48)(p0 + p3
-/// − p1 − p2)` with `p* = (p1 + p2)/2` — the printed comparison value;
-/// seed 003's own basis (2) and `κ(α)` of (9) are not legible here.
-fn s5() -> Verdict {
-    let half = Sym::rational(q(1, 2));
-    let b: Vec<Sym> = trig_judge::exact::basis(Family::BSpline3)
-        .iter()
-        .map(|f| f.subs("t", &half))
-        .collect();
-    let p = trig_judge::exact::symbols("p", 4);
-    let r = trig_judge::exact::combination(&b, &p);
-    let star = (p[1].clone() + &p[2]) * &half;
-    let kappa = Sym::rational(q(1, 48));
-    let item = identity_item(
-        "standard cubic B-spline: r(1/2) − p* = (1/48)(p_i + p_{i+3} − p_{i+1} − p_{i+2})",
-        &(r - &star),
-        &(kappa * &(p[0].clone() + &p[3] - &p[1] - &p[2])),
-    );
-    // a wrong printed comparison value refutes the claim; otherwise the
-    // missing κ(α) decides
-    let status = match item.status {
-        Some(Status::Fails) => Status::Fails,
-        _ => Status::NotCheckable,
-    };
-    Verdict::new(
-        status,
-        IDENTITY,
-        vec![
-            Evidence::note(
-                "not decided: the α-B-spline basis (2) and the factor κ(α) of (9) are lost in this copy (only fragments of (9) remain), so neither κ(α) nor its monotonicity in α can be formed; this missing part decides the verdict unless the printed comparison value κ = 1/48 of the standard cubic B-spline is wrong (checked below)",
-            ),
-            item,
-        ],
-    )
 }
 
 /// The curvature at the start `P0 = (0, 0)` of the curve `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ`

@@ -529,7 +529,19 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
             parameter,
             direction,
             range,
-        } => trig_judge::shape_effect::shape_effect(spec, parameter, *direction, range.as_ref()),
+            polygons,
+        } => {
+            let mut v =
+                trig_judge::shape_effect::shape_effect(spec, parameter, *direction, range.as_ref());
+            if let Some(p) = polygons {
+                let at: Vec<(&str, rug::Rational)> =
+                    p.at.iter().map(|(n, x)| (n.as_str(), x.clone())).collect();
+                v.evidence.extend(p.polygons.iter().map(|q| {
+                    trig_judge::shape_effect::polygon_distances(spec, q, &at, parameter, &p.values)
+                }));
+            }
+            v
+        }
         Check::Symmetry {
             map_text,
             map,
@@ -643,9 +655,23 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
             ..
         } => trig_judge::same_basis::same_basis(spec, other.as_ref(), params, params_text),
         Check::LocalControl {
+            rational: Some(curve),
+            segments,
+            first,
+            ..
+        } => trig_judge::local_control::rational_local_control(
+            spec,
+            &curve.curve,
+            &curve.point,
+            *first,
+            segments,
+        ),
+        Check::LocalControl {
             varied,
             segments,
             also,
+            first,
+            rational: None,
         } => {
             let control = |varied: &Varied| match varied {
                 Varied::Point => Control::Point,
@@ -659,7 +685,7 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
                 Varied::Parameter { name, .. } => Control::CurveParameter { name: name.clone() },
             };
             let mut v =
-                trig_judge::local_control::local_control(spec, &control(varied), 0, segments);
+                trig_judge::local_control::local_control(spec, &control(varied), *first, segments);
             if let Some(also) = also {
                 v.evidence.push(trig_judge::local_control::other_reading(
                     spec,
