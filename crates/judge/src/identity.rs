@@ -40,7 +40,7 @@ pub fn printed_identities<B: ExactBasis>(
     let functions = basis.exact_functions();
     let curve_value = curve.map(|k| curve_of(&functions, k.weighted));
     let sides = |item: &Identity| -> Result<(Sym, Sym), Verdict> {
-        let (mut lhs, mut rhs) = (item.lhs.clone(), item.rhs.clone());
+        let mut values: Vec<(&str, Sym)> = Vec::new();
         for a in &item.applications {
             let f = match a.applied {
                 Applied::Function(i) => &functions[i],
@@ -52,10 +52,18 @@ pub fn printed_identities<B: ExactBasis>(
                     item.text, a.argument_text
                 )));
             };
-            lhs = lhs.subs(&a.symbol, &value);
-            rhs = rhs.subs(&a.symbol, &value);
+            values.push((&a.symbol, value));
         }
-        Ok((lhs, rhs))
+        match (
+            substituted(&item.lhs, &values),
+            substituted(&item.rhs, &values),
+        ) {
+            (Ok(lhs), Ok(rhs)) => Ok((lhs, rhs)),
+            (Err(e), _) | (_, Err(e)) => Err(Verdict::not_checkable(format!(
+                "in `{}`, a denominator vanishes identically once the functions are applied: {e}",
+                item.text
+            ))),
+        }
     };
     let mut parts = Vec::new();
     for item in items {
@@ -102,6 +110,25 @@ pub fn printed_identities<B: ExactBasis>(
         v = v.with_correction(format!("read {correction}"));
     }
     v
+}
+
+/// `side` with every placeholder replaced by its value at once: the side
+/// evaluated in the exact ring, each other symbol standing for itself (one
+/// pass; substituting one placeholder after another would normalise every
+/// intermediate rational function).
+fn substituted(side: &Sym, values: &[(&str, Sym)]) -> Result<Sym, trig_symbolic::SymError> {
+    if values.is_empty() {
+        return Ok(side.clone());
+    }
+    let value = |name: &str| {
+        Some(
+            values
+                .iter()
+                .find(|(n, _)| *n == name)
+                .map_or_else(|| Sym::var(name), |(_, v)| v.clone()),
+        )
+    };
+    side.eval(&Sym::one(), &value)
 }
 
 /// `Σ bᵢPᵢ`, or `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ`.
@@ -186,6 +213,21 @@ mod tests {
     use super::*;
     use rug::Rational;
     use trig_core::Family;
+
+    #[test]
+    fn placeholders_are_substituted_at_once() {
+        let (x, y, w) = (Sym::var("__at0"), Sym::var("__at1"), Sym::var("w"));
+        let (a, b) = (Sym::var("s") + &Sym::one(), Sym::var("c"));
+        let side = w.clone() * &x / &(x.clone() + &y);
+        let values = [("__at0", a.clone()), ("__at1", b.clone())];
+        assert_eq!(
+            substituted(&side, &values).unwrap(),
+            w * &a / &(a.clone() + &b)
+        );
+        // a denominator that vanishes once applied is an error, not a panic
+        let pole = Sym::one() / &(x - &y);
+        assert!(substituted(&pole, &[("__at0", a.clone()), ("__at1", a)]).is_err());
+    }
 
     #[test]
     fn applications_at_points_and_reflections() {

@@ -227,6 +227,17 @@ fn applications(
         let argument = spec
             .parse_linear(&argument_text, "the argument of a function in an identity")
             .map_err(|e| src.formula_error(item, e))?;
+        i = close + 1;
+        // one placeholder per distinct application: a print that repeats
+        // `F0(t)` (a sum over a common denominator) reads as one symbol, so
+        // the sides simplify before anything is substituted
+        if let Some(same) = found
+            .iter()
+            .find(|a| a.applied == applied && a.order == order && a.argument == argument)
+        {
+            out.push_str(&format!(" {} ", same.symbol));
+            continue;
+        }
         let symbol = format!("{PLACEHOLDER}{}", found.len());
         out.push_str(&format!(" {symbol} "));
         found.push(Application {
@@ -236,7 +247,6 @@ fn applications(
             argument,
             argument_text: argument_text.trim().to_string(),
         });
-        i = close + 1;
     }
     Ok((out, found))
 }
@@ -306,6 +316,21 @@ mod tests {
             identities[0].rhs,
             spec.functions[0].value.clone() + &trig_symbolic::Sym::var("P1")
         );
+    }
+
+    #[test]
+    fn a_repeated_application_is_one_symbol() {
+        let spec = hermite_with(
+            "identities = [\"alpha_0(0)/(alpha_0(0) + alpha_1(0)) + alpha_0'(0) = alpha_0(0)\"]",
+        )
+        .unwrap();
+        let Check::Identity { identities, .. } = &spec.claims[0].check else {
+            panic!("an identity claim");
+        };
+        let apps = &identities[0].applications;
+        // alpha_0(0) three times, alpha_1(0) once, alpha_0'(0) once
+        assert_eq!(apps.len(), 3);
+        assert_eq!(identities[0].rhs, trig_symbolic::Sym::var(&apps[0].symbol));
     }
 
     #[test]

@@ -12,7 +12,7 @@ use super::seed000_appendix_c::{NONUNIFORM_J, nonuniform_knots};
 use crate::claim::Claim;
 use trig_certify::ParamBox;
 use trig_judge::certificate::nonnegative_on;
-use trig_judge::exact::{IDENTITY, basis, identities, residual_verdict, sum};
+use trig_judge::exact::{IDENTITY, basis, residual_verdict, sum};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
@@ -28,10 +28,6 @@ pub const CLAIMS: &[Claim] = &[
     Claim {
         id: "M3b",
         check: m3b,
-    },
-    Claim {
-        id: "M6",
-        check: m6,
     },
 ];
 
@@ -170,30 +166,5 @@ fn m2() -> Verdict {
         v.status = Status::Fails;
     }
     v.evidence.push(line);
-    v
-}
-
-/// Theorems 5, 6: the rational basis `Q_j = w_j F_j / Σ w_i F_i` equals
-/// `F_j` at unit weights and sums to 1 (weights as symbols). Stated in Rust:
-/// the `identity` check decides the same identities, but its substitution
-/// of the four functions into the symbolic-weights sum takes 15 s.
-fn m6() -> Verdict {
-    let f = basis(Family::Seed000Uniform);
-    let w: Vec<Sym> = (0..4).map(|i| Sym::var(&format!("w{i}"))).collect();
-    let weighted: Vec<Sym> = f.iter().zip(&w).map(|(fi, wi)| fi.clone() * wi).collect();
-    let den = sum(&weighted);
-    let q: Vec<Sym> = weighted.iter().map(|x| x.clone() / &den).collect();
-    let one = Sym::one();
-    let mut parts: Vec<(String, Sym, Sym)> = (0..4)
-        .map(|j| {
-            let qj = (0..4).fold(q[j].clone(), |acc, i| acc.subs(&format!("w{i}"), &one));
-            (format!("Q{j}(w = 1) − F{j}"), qj, f[j].clone())
-        })
-        .collect();
-    parts.push(("Σ Q_j − 1 (symbolic weights)".into(), sum(&q), one));
-    let mut v = identities(parts);
-    v.evidence.push(
-        "uniform case (Appendix A basis F_j = l_j/(6ζ² − 6ζ + 10)), weights as symbols w0…w3",
-    );
     v
 }
