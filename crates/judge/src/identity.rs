@@ -20,7 +20,7 @@
 //! the readings shown with it.
 
 use trig_core::{Affine, Basis};
-use trig_specfile::{Applied, Curve, Identity, Reading};
+use trig_specfile::{Applied, Curve, Identity, Let, Reading};
 use trig_symbolic::Sym;
 use trig_verdict::status::Status;
 
@@ -28,7 +28,8 @@ use crate::domain::param_symbols;
 use crate::exact::{ExactBasis, identities, symbols};
 use trig_verdict::verdict::Verdict;
 
-/// Decides every printed identity; an application the exact ring cannot
+/// Decides every printed identity (the claim's `let` names substituted
+/// with the applications); an application the exact ring cannot
 /// form (an argument not linear with slope 0 or ±1, atoms not exact at
 /// the point) leaves the claim `not-checkable` with the reason.
 pub fn printed_identities<B: ExactBasis>(
@@ -36,14 +37,19 @@ pub fn printed_identities<B: ExactBasis>(
     items: &[Identity],
     curve: Option<&Curve>,
     readings: &[Reading],
+    lets: &[Let],
 ) -> Verdict {
     let functions = basis.exact_functions();
     let curve_value = curve.map(|k| curve_of(&functions, k.weighted));
     let sides = |item: &Identity| -> Result<(Sym, Sym), Verdict> {
-        let mut values: Vec<(&str, Sym)> = Vec::new();
+        let mut values: Vec<(&str, Sym)> = lets
+            .iter()
+            .map(|l| (l.name.as_str(), l.value.clone()))
+            .collect();
         for a in &item.applications {
             let f = match a.applied {
                 Applied::Function(i) => &functions[i],
+                Applied::Let(i) => &lets[i].value,
                 Applied::Curve => curve_value.as_ref().expect("a curve read with its name"),
             };
             let Some(value) = applied(basis, f, a.order, &a.argument.x, &a.argument.rest) else {

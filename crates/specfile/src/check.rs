@@ -245,6 +245,10 @@ pub enum Check {
         /// Readings of garbled or mistyped prints, each decided beside the
         /// print it reads.
         readings: Vec<Reading>,
+        /// The claim's `let` names with their values (in the variable, the
+        /// parameters and the claim's symbols): symbols of the sides,
+        /// substituted with the applications, and applied like functions.
+        lets: Vec<Let>,
     },
 }
 
@@ -287,11 +291,21 @@ pub struct Application {
     pub argument_text: String,
 }
 
+/// A name an identity claim defines (`let = ["S = zeta^2 - zeta + 1"]`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Let {
+    pub name: String,
+    /// The formula read, earlier names substituted.
+    pub value: Sym,
+}
+
 /// What an [`Application`] applies.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Applied {
     /// The basis function of this index.
     Function(usize),
+    /// The claim's `let` name of this index.
+    Let(usize),
     /// The curve of the claim.
     Curve,
 }

@@ -530,8 +530,12 @@ impl<'a> Substitution<'a> {
             Check::Identity {
                 identities,
                 readings,
+                lets,
                 ..
             } => {
+                for l in lets.iter_mut() {
+                    l.value = self.sym(&l.value, &format!("the claim's `let` name `{}`", l.name))?;
+                }
                 let read = readings.iter_mut().map(|r| &mut r.identity);
                 for item in identities.iter_mut().chain(read) {
                     let what = format!("the printed identity `{}`", item.text);

@@ -9,7 +9,12 @@
 //! weights = true         # optional: R(x) = Σ wᵢbᵢ(x)Pᵢ / Σ wᵢbᵢ(x), weights w0, w1, …
 //! symbols = ["q"]        # optional: further free symbols (constants of the ring)
 //! readings = [{ of = "b2(t) + b3(1 - t) = 1", as = "b2(t) + b3(1 - t) = 0" }]
+//! let = ["S = lambda^2 + 1", "Q = w0*b0/(w0*b0 + b1)"]   # optional, in order
 //! ```
+//!
+//! A `let` name stands for its formula (over the functions at the
+//! variable, the parameters, the symbols and earlier names) in every
+//! identity, and is applied like a function, `Q''(0)`.
 //!
 //! An identity may be named for the report, `"(A1) Σ F_k = 1: F0 + F1 + F2 + F3 = 1"`
 //! (the text before the first `: `; formulas have no colon).
@@ -22,7 +27,9 @@
 
 use toml::Spanned;
 
-use crate::check::{Application, Applied, Check, Curve, Identity, Reading};
+use trig_symbolic::Sym;
+
+use crate::check::{Application, Applied, Check, Curve, Identity, Let, Reading};
 use crate::error::Result;
 use crate::raw::RawClaim;
 use crate::source::Source;
@@ -93,9 +100,40 @@ pub(crate) fn identity(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Ch
             extra.push(name.to_string());
         }
     }
+    let mut lets: Vec<Let> = Vec::new();
+    for item in c.lets.iter().flatten() {
+        let Some((name, formula)) = item.get_ref().split_once('=') else {
+            return src.invalid(
+                item.span(),
+                "claims.let",
+                format!("`{}`: expected `NAME = formula`", item.get_ref()),
+            );
+        };
+        let name = name.trim();
+        names
+            .fixed(name, "a name the claim's `let` defines")
+            .map_err(|e| crate::error::SpecError::Invalid {
+                at: src.at(item.span().start),
+                field: "claims.let".into(),
+                message: e.to_string(),
+            })?;
+        let (read, _) = spec
+            .parse_claim_formula(formula, &extra, &[])
+            .map_err(|e| src.formula_error(item, e))?;
+        let value = substituted(&read, &lets).map_err(|e| crate::error::SpecError::Invalid {
+            at: src.at(item.span().start),
+            field: "claims.let".into(),
+            message: format!("`{}`: {e}", item.get_ref()),
+        })?;
+        extra.push(name.to_string());
+        lets.push(Let {
+            name: name.to_string(),
+            value,
+        });
+    }
     let identities = items
         .iter()
-        .map(|item| one(src, spec, item, curve.as_ref(), &extra))
+        .map(|item| one(src, spec, item, curve.as_ref(), &extra, &lets))
         .collect::<Result<Vec<_>>>()?;
     if identities.is_empty() {
         return src.invalid(
@@ -118,13 +156,29 @@ pub(crate) fn identity(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Ch
         };
         readings.push(Reading {
             of,
-            identity: one(src, spec, &r.read, curve.as_ref(), &extra)?,
+            identity: one(src, spec, &r.read, curve.as_ref(), &extra, &lets)?,
         });
     }
     Ok(Check::Identity {
         identities,
         curve,
         readings,
+        lets,
+    })
+}
+
+/// `formula` with the earlier `let` names replaced by their values, in
+/// one pass (their values hold no `let` name).
+fn substituted(formula: &Sym, lets: &[Let]) -> std::result::Result<Sym, trig_symbolic::SymError> {
+    if lets.is_empty() {
+        return Ok(formula.clone());
+    }
+    formula.eval(&Sym::one(), &|name| {
+        Some(
+            lets.iter()
+                .find(|l| l.name == name)
+                .map_or_else(|| Sym::var(name), |l| l.value.clone()),
+        )
     })
 }
 
@@ -135,13 +189,14 @@ fn one(
     item: &Spanned<String>,
     curve: Option<&Curve>,
     extra: &[String],
+    lets: &[Let],
 ) -> Result<Identity> {
     let text = item.get_ref();
     let (label, formula) = match text.split_once(": ") {
         Some((label, formula)) => (label.trim(), formula),
         None => (text.trim(), text.as_str()),
     };
-    let (rest, applications) = applications(src, spec, formula, item, curve)?;
+    let (rest, applications) = applications(src, spec, formula, item, curve, lets)?;
     let sides: Vec<&str> = rest.split('=').collect();
     if sides.len() != 2 {
         return src.invalid(
@@ -174,6 +229,7 @@ fn applications(
     formula: &str,
     item: &Spanned<String>,
     curve: Option<&Curve>,
+    lets: &[Let],
 ) -> Result<(String, Vec<Application>)> {
     let chars: Vec<char> = formula.chars().collect();
     let mut out = String::new();
@@ -202,6 +258,7 @@ fn applications(
                 .iter()
                 .position(|f| f.name == name)
                 .map(Applied::Function)
+                .or_else(|| lets.iter().position(|l| l.name == name).map(Applied::Let))
         };
         let (Some(applied), Some('(')) = (applied, chars.get(j)) else {
             out.push_str(&name);
@@ -295,6 +352,7 @@ mod tests {
             identities,
             curve,
             readings,
+            ..
         } = &spec.claims[0].check
         else {
             panic!("an identity claim");
@@ -331,6 +389,32 @@ mod tests {
         // alpha_0(0) three times, alpha_1(0) once, alpha_0'(0) once
         assert_eq!(apps.len(), 3);
         assert_eq!(identities[0].rhs, trig_symbolic::Sym::var(&apps[0].symbol));
+    }
+
+    #[test]
+    fn let_names_are_symbols_of_the_sides_and_applied_like_functions() {
+        let spec = hermite_with(
+            "symbols = [\"w\"]\nlet = [\"K = w + 1\", \"Q = K*alpha_0\"]\nidentities = [\"Q'(0) + K = alpha_0'(0)\"]",
+        )
+        .unwrap();
+        let Check::Identity {
+            identities, lets, ..
+        } = &spec.claims[0].check
+        else {
+            panic!("an identity claim");
+        };
+        // K's value is substituted into Q's; the sides keep the names
+        let k = trig_symbolic::Sym::var("w") + &trig_symbolic::Sym::one();
+        assert_eq!(lets[0].value, k);
+        assert_eq!(lets[1].value, k * &spec.functions[0].value);
+        assert_eq!(identities[0].applications[0].applied, Applied::Let(1));
+        assert!(identities[0].lhs.variables().contains("K"));
+        // a name that clashes, or a line without `=`, is refused
+        assert!(
+            hermite_with("let = [\"alpha_0 = 1\"]\nidentities = [\"alpha_0(0) = 1\"]").is_err()
+        );
+        let e = hermite_with("let = [\"K\"]\nidentities = [\"alpha_0(0) = 1\"]").unwrap_err();
+        assert!(e.to_string().contains("expected `NAME = formula`"), "{e}");
     }
 
     #[test]

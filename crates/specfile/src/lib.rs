@@ -58,8 +58,8 @@ pub mod spec;
 pub use any::{AnyBasis, OpenError};
 pub use ast::Grammar;
 pub use check::{
-    Application, Applied, Check, Condition, Curve, Direction, Identity, JoinSegments, Monotone,
-    Printed, Quantifier, Reading, SpecClaim, Varied,
+    Application, Applied, Check, Condition, Curve, Direction, Identity, JoinSegments, Let,
+    Monotone, Printed, Quantifier, Reading, SpecClaim, Varied,
 };
 pub use check::{Between, Fixed, Given};
 pub use document::{DocumentClaim, DocumentFile, Part};

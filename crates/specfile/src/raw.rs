@@ -114,6 +114,11 @@ pub struct RawClaim {
     pub readings: Option<Vec<RawReading>>,
     /// `check = "identity"`: the curve is rational, `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ`.
     pub weights: Option<bool>,
+    /// `check = "identity"`: names the identities use, `"NAME = formula"`
+    /// in order (a shorthand of the print, a function built from the
+    /// basis's, applied like one).
+    #[serde(rename = "let")]
+    pub lets: Option<Vec<Spanned<String>>>,
     /// The statement is the negation of the check ("is not C⁴").
     pub negated: Option<bool>,
     /// Remarks shown after the evidence (how a print is read, what the

@@ -612,7 +612,14 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
             identities,
             curve,
             readings,
-        } => trig_judge::identity::printed_identities(spec, identities, curve.as_ref(), readings),
+            lets,
+        } => trig_judge::identity::printed_identities(
+            spec,
+            identities,
+            curve.as_ref(),
+            readings,
+            lets,
+        ),
         Check::LocalControl {
             varied,
             segments,
