@@ -26,7 +26,7 @@
 //! the readings shown with it.
 
 use trig_core::{Affine, Basis};
-use trig_specfile::{Applied, Argument, Change, Curve, Identity, Reading};
+use trig_specfile::{Applied, Argument, Change, Curve, Identity, Let, Reading};
 use trig_symbolic::Sym;
 use trig_verdict::status::Status;
 
@@ -34,7 +34,8 @@ use crate::domain::param_symbols;
 use crate::exact::{ExactBasis, identities, symbols};
 use trig_verdict::verdict::Verdict;
 
-/// Decides every printed identity; an application the exact ring cannot
+/// Decides every printed identity (the claim's `let` names substituted
+/// with the applications); an application the exact ring cannot
 /// form (an argument not linear with slope 0 or ±1, atoms not exact at
 /// the point) leaves the claim `not-checkable` with the reason.
 pub fn printed_identities<B: ExactBasis>(
@@ -42,6 +43,7 @@ pub fn printed_identities<B: ExactBasis>(
     items: &[Identity],
     curves: &[Curve],
     readings: &[Reading],
+    lets: &[Let],
     change: Option<&Change>,
 ) -> Verdict {
     let functions = basis.exact_functions();
@@ -53,11 +55,15 @@ pub fn printed_identities<B: ExactBasis>(
     }
     let curve_values: Vec<Sym> = curves.iter().map(|k| curve_of(&functions, k)).collect();
     let sides = |item: &Identity| -> Result<(Sym, Sym), Verdict> {
-        let (mut lhs, mut rhs) = (item.lhs.clone(), item.rhs.clone());
+        let mut values: Vec<(&str, Sym)> = lets
+            .iter()
+            .map(|l| (l.name.as_str(), l.value.clone()))
+            .collect();
         for a in &item.applications {
             let f = match a.applied {
                 Applied::Function(i) => &functions[i],
                 Applied::Curve(k) => &curve_values[k],
+                Applied::Let(i) => &lets[i].value,
             };
             let value = match (&a.argument, change) {
                 (Argument::Formula(x), Some(change)) => Some(changed(f, a.order, change, x)),
@@ -70,9 +76,20 @@ pub fn printed_identities<B: ExactBasis>(
                     item.text, a.argument_text
                 )));
             };
-            lhs = lhs.subs(&a.symbol, &value);
-            rhs = rhs.subs(&a.symbol, &value);
+            values.push((&a.symbol, value));
         }
+        let (mut lhs, mut rhs) = match (
+            substituted(&item.lhs, &values),
+            substituted(&item.rhs, &values),
+        ) {
+            (Ok(lhs), Ok(rhs)) => (lhs, rhs),
+            (Err(e), _) | (_, Err(e)) => {
+                return Err(Verdict::not_checkable(format!(
+                    "in `{}`, a denominator vanishes identically once the functions are applied: {e}",
+                    item.text
+                )));
+            }
+        };
         if let Some(change) = change {
             lhs = lhs.subs(VARIABLE, &change.value);
             rhs = rhs.subs(VARIABLE, &change.value);
@@ -140,6 +157,25 @@ fn with_change(mut v: Verdict, change: Option<&Change>) -> Verdict {
         );
     }
     v
+}
+
+/// `side` with every placeholder replaced by its value at once: the side
+/// evaluated in the exact ring, each other symbol standing for itself (one
+/// pass; substituting one placeholder after another would normalise every
+/// intermediate rational function).
+fn substituted(side: &Sym, values: &[(&str, Sym)]) -> Result<Sym, trig_symbolic::SymError> {
+    if values.is_empty() {
+        return Ok(side.clone());
+    }
+    let value = |name: &str| {
+        Some(
+            values
+                .iter()
+                .find(|(n, _)| *n == name)
+                .map_or_else(|| Sym::var(name), |(_, v)| v.clone()),
+        )
+    };
+    side.eval(&Sym::one(), &value)
 }
 
 /// The ring's symbol of the variable of a basis polynomial in it.
@@ -239,6 +275,21 @@ mod tests {
     use super::*;
     use rug::Rational;
     use trig_core::Family;
+
+    #[test]
+    fn placeholders_are_substituted_at_once() {
+        let (x, y, w) = (Sym::var("__at0"), Sym::var("__at1"), Sym::var("w"));
+        let (a, b) = (Sym::var("s") + &Sym::one(), Sym::var("c"));
+        let side = w.clone() * &x / &(x.clone() + &y);
+        let values = [("__at0", a.clone()), ("__at1", b.clone())];
+        assert_eq!(
+            substituted(&side, &values).unwrap(),
+            w * &a / &(a.clone() + &b)
+        );
+        // a denominator that vanishes once applied is an error, not a panic
+        let pole = Sym::one() / &(x - &y);
+        assert!(substituted(&pole, &[("__at0", a.clone()), ("__at1", a)]).is_err());
+    }
 
     #[test]
     fn applications_at_points_and_reflections() {

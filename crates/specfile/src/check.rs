@@ -370,6 +370,10 @@ pub enum Check {
         readings: Vec<Reading>,
         /// The identities are in another variable (`change`).
         change: Option<Change>,
+        /// The claim's `let` names with their values (in the variable, the
+        /// parameters and the claim's symbols): symbols of the sides,
+        /// substituted with the applications, and applied like functions.
+        lets: Vec<Let>,
     },
     /// The basis equals another basis (a spec file, `path` as written,
     /// relative to the claim's file) under a change of parameter — each of
@@ -447,6 +451,14 @@ pub enum Argument {
     Formula(Sym),
 }
 
+/// A name an identity claim defines (`let = ["S = zeta^2 - zeta + 1"]`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Let {
+    pub name: String,
+    /// The formula read, earlier names substituted.
+    pub value: Sym,
+}
+
 /// What an [`Application`] applies.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Applied {
@@ -454,6 +466,8 @@ pub enum Applied {
     Function(usize),
     /// The curve of the claim of this index.
     Curve(usize),
+    /// The claim's `let` name of this index.
+    Let(usize),
 }
 
 /// The curve a printed identity names: `Σ bᵢPᵢ` with control points

@@ -535,8 +535,12 @@ impl<'a> Substitution<'a> {
                 curves,
                 readings,
                 change,
+                lets,
                 ..
             } => {
+                for l in lets.iter_mut() {
+                    l.value = self.sym(&l.value, &format!("the claim's `let` name `{}`", l.name))?;
+                }
                 for point in curves.iter_mut().flat_map(|k| k.points.iter_mut().flatten()) {
                     *point = self.sym(point, "a printed control point of a curve")?;
                 }

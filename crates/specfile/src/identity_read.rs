@@ -9,7 +9,12 @@
 //! weights = true         # optional: R(x) = Σ wᵢbᵢ(x)Pᵢ / Σ wᵢbᵢ(x), weights w0, w1, …
 //! symbols = ["q"]        # optional: further free symbols (constants of the ring)
 //! readings = [{ of = "b2(t) + b3(1 - t) = 1", as = "b2(t) + b3(1 - t) = 0" }]
+//! let = ["S = lambda^2 + 1", "Q = w0*b0/(w0*b0 + b1)"]   # optional, in order
 //! ```
+//!
+//! A `let` name stands for its formula (over the functions at the
+//! variable, the parameters, the symbols and earlier names) in every
+//! identity, and is applied like a function, `Q''(0)`.
 //!
 //! An identity may be named for the report, `"(A1) Σ F_k = 1: F0 + F1 + F2 + F3 = 1"`
 //! (the text before the last `: `, which may itself contain `: `; formulas have no colon).
@@ -22,12 +27,13 @@
 
 use toml::Spanned;
 
-use crate::check::{Application, Applied, Argument, Change, Check, Curve, Identity, Reading};
+use trig_symbolic::Sym;
+
+use crate::check::{Application, Applied, Argument, Change, Check, Curve, Identity, Let, Reading};
 use crate::error::Result;
 use crate::raw::{RawClaim, RawCurve};
 use crate::source::Source;
 use crate::spec::{MAX_ORDER, Spec};
-use trig_symbolic::Sym;
 
 /// The prefix of the placeholder symbols (never a name of a file: the
 /// formula names of a file do not start with two underscores).
@@ -100,9 +106,40 @@ pub(crate) fn identity(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Ch
     }
     let change = change(src, spec, c, &mut names, &mut extra)?;
     let changed = change.is_some();
+    let mut lets: Vec<Let> = Vec::new();
+    for item in c.lets.iter().flatten() {
+        let Some((name, formula)) = item.get_ref().split_once('=') else {
+            return src.invalid(
+                item.span(),
+                "claims.let",
+                format!("`{}`: expected `NAME = formula`", item.get_ref()),
+            );
+        };
+        let name = name.trim();
+        names
+            .fixed(name, "a name the claim's `let` defines")
+            .map_err(|e| crate::error::SpecError::Invalid {
+                at: src.at(item.span().start),
+                field: "claims.let".into(),
+                message: e.to_string(),
+            })?;
+        let (read, _) = spec
+            .parse_claim_formula(formula, &extra, &[])
+            .map_err(|e| src.formula_error(item, e))?;
+        let value = substituted(&read, &lets).map_err(|e| crate::error::SpecError::Invalid {
+            at: src.at(item.span().start),
+            field: "claims.let".into(),
+            message: format!("`{}`: {e}", item.get_ref()),
+        })?;
+        extra.push(name.to_string());
+        lets.push(Let {
+            name: name.to_string(),
+            value,
+        });
+    }
     let identities = items
         .iter()
-        .map(|item| one(src, spec, item, &curves, &extra, changed))
+        .map(|item| one(src, spec, item, &curves, &extra, changed, &lets))
         .collect::<Result<Vec<_>>>()?;
     if identities.is_empty() {
         return src.invalid(
@@ -125,7 +162,7 @@ pub(crate) fn identity(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Ch
         };
         readings.push(Reading {
             of,
-            identity: one(src, spec, &r.read, &curves, &extra, changed)?,
+            identity: one(src, spec, &r.read, &curves, &extra, changed, &lets)?,
         });
     }
     Ok(Check::Identity {
@@ -133,6 +170,22 @@ pub(crate) fn identity(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Ch
         curves,
         readings,
         change,
+        lets,
+    })
+}
+
+/// `formula` with the earlier `let` names replaced by their values, in
+/// one pass (their values hold no `let` name).
+fn substituted(formula: &Sym, lets: &[Let]) -> std::result::Result<Sym, trig_symbolic::SymError> {
+    if lets.is_empty() {
+        return Ok(formula.clone());
+    }
+    formula.eval(&Sym::one(), &|name| {
+        Some(
+            lets.iter()
+                .find(|l| l.name == name)
+                .map_or_else(|| Sym::var(name), |l| l.value.clone()),
+        )
     })
 }
 
@@ -231,6 +284,7 @@ fn one(
     curves: &[Curve],
     extra: &[String],
     changed: bool,
+    lets: &[Let],
 ) -> Result<Identity> {
     let text = item.get_ref();
     let (label, formula) = match text.rsplit_once(": ") {
@@ -239,7 +293,8 @@ fn one(
     };
     let (formula, partials) = partials(src, spec, formula, item, extra)?;
     let arguments = changed.then_some(extra);
-    let (rest, applications) = applications(src, spec, &formula, item, curves, arguments)?;
+    let (rest, applications) =
+        applications(src, spec, &formula, item, curves, arguments, lets)?;
     let sides: Vec<&str> = rest.split('=').collect();
     if sides.len() != 2 {
         return src.invalid(
@@ -333,6 +388,7 @@ fn applications(
     item: &Spanned<String>,
     curves: &[Curve],
     changed: Option<&[String]>,
+    lets: &[Let],
 ) -> Result<(String, Vec<Application>)> {
     let chars: Vec<char> = formula.chars().collect();
     let mut out = String::new();
@@ -361,6 +417,7 @@ fn applications(
                 .iter()
                 .position(|f| f.name == name)
                 .map(Applied::Function)
+                .or_else(|| lets.iter().position(|l| l.name == name).map(Applied::Let))
         };
         let (Some(applied), Some('(')) = (applied, chars.get(j)) else {
             out.push_str(&name);
@@ -395,6 +452,17 @@ fn applications(
                     .map_err(|e| src.formula_error(item, e))?,
             ),
         };
+        i = close + 1;
+        // one placeholder per distinct application: a print that repeats
+        // `F0(t)` (a sum over a common denominator) reads as one symbol, so
+        // the sides simplify before anything is substituted
+        if let Some(same) = found
+            .iter()
+            .find(|a| a.applied == applied && a.order == order && a.argument == argument)
+        {
+            out.push_str(&format!(" {} ", same.symbol));
+            continue;
+        }
         let symbol = format!("{PLACEHOLDER}{}", found.len());
         out.push_str(&format!(" {symbol} "));
         found.push(Application {
@@ -404,7 +472,6 @@ fn applications(
             argument,
             argument_text: argument_text.trim().to_string(),
         });
-        i = close + 1;
     }
     Ok((out, found))
 }
@@ -475,6 +542,47 @@ mod tests {
             identities[0].rhs,
             spec.functions[0].value.clone() + &trig_symbolic::Sym::var("P1")
         );
+    }
+
+    #[test]
+    fn a_repeated_application_is_one_symbol() {
+        let spec = hermite_with(
+            "identities = [\"alpha_0(0)/(alpha_0(0) + alpha_1(0)) + alpha_0'(0) = alpha_0(0)\"]",
+        )
+        .unwrap();
+        let Check::Identity { identities, .. } = &spec.claims[0].check else {
+            panic!("an identity claim");
+        };
+        let apps = &identities[0].applications;
+        // alpha_0(0) three times, alpha_1(0) once, alpha_0'(0) once
+        assert_eq!(apps.len(), 3);
+        assert_eq!(identities[0].rhs, trig_symbolic::Sym::var(&apps[0].symbol));
+    }
+
+    #[test]
+    fn let_names_are_symbols_of_the_sides_and_applied_like_functions() {
+        let spec = hermite_with(
+            "symbols = [\"w\"]\nlet = [\"K = w + 1\", \"Q = K*alpha_0\"]\nidentities = [\"Q'(0) + K = alpha_0'(0)\"]",
+        )
+        .unwrap();
+        let Check::Identity {
+            identities, lets, ..
+        } = &spec.claims[0].check
+        else {
+            panic!("an identity claim");
+        };
+        // K's value is substituted into Q's; the sides keep the names
+        let k = trig_symbolic::Sym::var("w") + &trig_symbolic::Sym::one();
+        assert_eq!(lets[0].value, k);
+        assert_eq!(lets[1].value, k * &spec.functions[0].value);
+        assert_eq!(identities[0].applications[0].applied, Applied::Let(1));
+        assert!(identities[0].lhs.variables().contains("K"));
+        // a name that clashes, or a line without `=`, is refused
+        assert!(
+            hermite_with("let = [\"alpha_0 = 1\"]\nidentities = [\"alpha_0(0) = 1\"]").is_err()
+        );
+        let e = hermite_with("let = [\"K\"]\nidentities = [\"alpha_0(0) = 1\"]").unwrap_err();
+        assert!(e.to_string().contains("expected `NAME = formula`"), "{e}");
     }
 
     #[test]

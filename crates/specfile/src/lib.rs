@@ -61,8 +61,8 @@ pub use any::{AnyBasis, OpenError};
 pub use ast::Grammar;
 pub use check::{
     Across, Application, Applied, Argument, Change, Check, Condition, Curve, Differentiated, Direction,
-    Identity, JoinSegments, ListedNet, Monotone, NamedCurve, Polygons, Printed, PrintedDerivative,
-    Quantifier, RationalCurve, Reading, Seam, SpecClaim, Varied,
+    Identity, JoinSegments, Let, ListedNet, Monotone, NamedCurve, Polygons, Printed,
+    PrintedDerivative, Quantifier, RationalCurve, Reading, Seam, SpecClaim, Varied,
 };
 pub use check::{Between, Fixed, Given};
 pub use document::{DocumentClaim, DocumentFile, Part};

@@ -151,6 +151,11 @@ pub struct RawClaim {
     /// `check = "surface-join"`: the seams, `"label: A | B"` (B beside A)
     /// or `"label: A ; B"` (B below A), nets of the listing.
     pub seams: Option<Vec<Spanned<String>>>,
+    /// `check = "identity"`: names the identities use, `"NAME = formula"`
+    /// in order (a shorthand of the print, a function built from the
+    /// basis's, applied like one).
+    #[serde(rename = "let")]
+    pub lets: Option<Vec<Spanned<String>>>,
     /// The statement is the negation of the check ("is not C⁴").
     pub negated: Option<bool>,
     /// Remarks shown after the evidence (how a print is read, what the

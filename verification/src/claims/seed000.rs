@@ -1,26 +1,19 @@
-//! Seed 000 (Majeed et al. 2020): uniform partition of unity and its proof
-//! (Appendix A), the printed non-uniform coefficients in the uniform case, and
-//! the rational basis (Theorems 5, 6).
+//! Seed 000 (Majeed et al. 2020): the partition of unity of the printed
+//! non-uniform coefficients (2)–(3) (M3), and those coefficients in the
+//! uniform case (M3b).
 
 use rug::Rational;
-use trig_core::Family;
 use trig_core::families::seed000::uniform_normaliser;
 use trig_core::families::seed000_nonuniform::NonUniform;
 use trig_symbolic::Sym;
 
 use super::seed000_appendix_c::{NONUNIFORM_J, nonuniform_knots};
 use crate::claim::Claim;
-use trig_certify::ParamBox;
-use trig_judge::certificate::nonnegative_on;
-use trig_judge::exact::{IDENTITY, basis, identities, residual_verdict, sum};
+use trig_judge::exact::{IDENTITY, residual_verdict, sum};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[
-    Claim {
-        id: "M2",
-        check: m2,
-    },
     Claim {
         id: "M3",
         check: m3,
@@ -28,10 +21,6 @@ pub const CLAIMS: &[Claim] = &[
     Claim {
         id: "M3b",
         check: m3b,
-    },
-    Claim {
-        id: "M6",
-        check: m6,
     },
 ];
 
@@ -138,62 +127,6 @@ fn m3b() -> Verdict {
     v.evidence.insert(
         0,
         "uniform knots n_i = i (unit spacing; q_j = q_{j−1} = q_{j−2} as the paper states), span j = 10; Appendix A uses F0 = l0/D, F1 = l1/D, F2 = l2/D, F3 = l3/D with D = 6ζ² − 6ζ + 10",
-    );
-    v
-}
-
-/// `F_j > 0` for `ζ ∈ [0, 4]`: `F_j` is `F3, F2, F1, F0` on its four
-/// intervals; each piece is certified `≥ 0` or refuted by a counterexample.
-/// A negative value refutes `F_j > 0` on the open support `(n_j, n_{j+4})`
-/// (the support ends have the value 0, computed here). When every piece is
-/// certified, `≥ 0` does not prove `> 0`, and the exact zeros at the
-/// support ends refute it on the closed support.
-fn m2() -> Verdict {
-    let f = basis(Family::Seed000Uniform);
-    let mut v = nonnegative_on(
-        &Family::Seed000Uniform,
-        &f,
-        Some("zeta"),
-        &ParamBox::closed(Rational::new(), Rational::from(4)),
-    );
-    let at = |g: &Sym, s: i64, c: i64| g.subs("s", &Sym::int(s)).subs("c", &Sym::int(c));
-    let (first, last) = (at(&f[3], 0, 1), at(&f[0], 1, 0));
-    let mut line = format!(
-        "the B-spline basis function F_j is F3, F2, F1, F0 on [n_j, n_{{j+1}}), …, [n_{{j+3}}, n_{{j+4}}) (uniform case, Appendix A); at its support ends F_j(n_j) = F3(θ = 0) = {first} and F_j(n_{{j+4}}) = F0(θ = π/2) = {last} for every ζ, so \"> 0\" can hold only on the open support (n_j, n_{{j+4}})"
-    );
-    if v.status == Status::Fails {
-        line.push_str(
-            "; the negative values above lie inside it and refute F_j > 0 there too (M11 decides the strict positivity of the middle pieces F2, F1)",
-        );
-    } else if first.is_zero() && last.is_zero() {
-        line.push_str("; F_j ≥ 0 is certified, and F_j > 0 fails on the closed support");
-        v.status = Status::Fails;
-    }
-    v.evidence.push(line);
-    v
-}
-
-/// Theorems 5, 6: the rational basis `Q_j = w_j F_j / Σ w_i F_i` equals
-/// `F_j` at unit weights and sums to 1 (weights as symbols). Stated in Rust:
-/// the `identity` check decides the same identities, but its substitution
-/// of the four functions into the symbolic-weights sum takes 15 s.
-fn m6() -> Verdict {
-    let f = basis(Family::Seed000Uniform);
-    let w: Vec<Sym> = (0..4).map(|i| Sym::var(&format!("w{i}"))).collect();
-    let weighted: Vec<Sym> = f.iter().zip(&w).map(|(fi, wi)| fi.clone() * wi).collect();
-    let den = sum(&weighted);
-    let q: Vec<Sym> = weighted.iter().map(|x| x.clone() / &den).collect();
-    let one = Sym::one();
-    let mut parts: Vec<(String, Sym, Sym)> = (0..4)
-        .map(|j| {
-            let qj = (0..4).fold(q[j].clone(), |acc, i| acc.subs(&format!("w{i}"), &one));
-            (format!("Q{j}(w = 1) − F{j}"), qj, f[j].clone())
-        })
-        .collect();
-    parts.push(("Σ Q_j − 1 (symbolic weights)".into(), sum(&q), one));
-    let mut v = identities(parts);
-    v.evidence.push(
-        "uniform case (Appendix A basis F_j = l_j/(6ζ² − 6ζ + 10)), weights as symbols w0…w3",
     );
     v
 }

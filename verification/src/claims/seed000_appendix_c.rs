@@ -1,21 +1,19 @@
-//! Seed 000, Appendices C and D: the printed one-sided derivatives of the
-//! B-spline pieces (M5) and of the curve (M9, M9b), and Theorems 3, 4, 7
-//! (M4, M4b, M8) decided by the exact knot-jump computation of
-//! [`crate::continuity`].
+//! Seed 000, Theorems 3, 4, 7 (M4, M4b, M8) decided by the exact
+//! knot-jump computation of [`trig_deriv::continuity`]; the non-uniform knot
+//! vector the seed's Rust claims share.
 
 use std::sync::OnceLock;
 
 use trig_core::Family;
-use trig_deriv::{End, Wrt, endpoint_derivatives};
 use trig_symbolic::Sym;
 
-use super::seed000_appendix_print::{printed_part, zeta};
+use super::seed000_appendix_print::zeta;
 use crate::claim::{Claim, shared};
 use trig_deriv::continuity::{
     self, KnotContinuity, curve_jumps, nonuniform_bspline, uniform_bspline,
 };
 use trig_judge::continuity::{METHOD, at_least, describe, knot_witness};
-use trig_judge::exact::{IDENTITY, symbols};
+use trig_judge::exact::symbols;
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
@@ -32,18 +30,6 @@ pub const CLAIMS: &[Claim] = &[
         id: "M8",
         check: m8,
     },
-    Claim {
-        id: "M5",
-        check: m5,
-    },
-    Claim {
-        id: "M9",
-        check: m9,
-    },
-    Claim {
-        id: "M9b",
-        check: m9b,
-    },
 ];
 
 /// A non-uniform knot vector with distinct integer knots and unequal
@@ -58,306 +44,6 @@ pub(super) fn nonuniform_knots() -> Vec<Sym> {
 
 /// The basis function examined on [`nonuniform_knots`].
 pub(super) const NONUNIFORM_J: i64 = 8;
-
-/// Derivatives of orders 0–6 of `l₀…l₃` at an end, in `u` (factor `(π/2)^k`,
-/// the print's convention), as `[k][order]`.
-fn blending_at(end: End) -> Vec<Vec<Sym>> {
-    endpoint_derivatives::<Sym, 7>(Family::Seed000Blending, &[zeta()], end, Wrt::U, &Sym::one())
-}
-
-/// `Σ_k coef_k l_k^{(r)}` at `end`, orders 0–6.
-fn piece_at(coef: &[Sym; 4], end: End) -> Vec<Sym> {
-    let l = blending_at(end);
-    (0..7)
-        .map(|r| (0..4).fold(Sym::zero(), |acc, k| acc + &(coef[k].clone() * &l[k][r])))
-        .collect()
-}
-
-fn m5() -> Verdict {
-    let z = Sym::zero();
-    let v = |n: &str| Sym::var(n);
-    let a = [z.clone(), z.clone(), z.clone(), v("a")];
-    let c = [v("c0"), v("c1"), v("c2"), v("c3")];
-    let b = [v("b0"), v("b1"), v("b2"), v("b3")];
-    let d = [v("d"), z.clone(), z.clone(), z];
-    // (location, piece coefficients, end of that piece, printed values by order)
-    let table: [(&str, &[Sym; 4], End, [&str; 6]); 7] = [
-        (
-            "n_{j+1}^-",
-            &a,
-            End::End,
-            [
-                "S a",
-                "(pi/2)(1 + 2S) a",
-                "(pi/2)^2 (2 + S) a",
-                "(pi/2)^3 (5 - 2S) a",
-                "(-pi/2)^4 [8(2 + S) a]",
-                "(pi/2)^5 [(2S - 59) a]",
-            ],
-        ),
-        // "all other derivative vanishes at this knot except the fourth", and (A3)
-        (
-            "n_j^+",
-            &a,
-            End::Start,
-            ["0", "0", "0", "0", "(pi/2)^4 [(6 + 6S) a]", "0"],
-        ),
-        (
-            "n_{j+1}^+",
-            &c,
-            End::Start,
-            [
-                "S(c0 + c2) + 4(S + 1)c1",
-                "(pi/2)(1 + 2S)(c2 - c0)",
-                "(pi/2)^2 (2(2 + S))(c0 - 2c1 + c2)",
-                "(pi/2)^3 (2S - 5)(c0 - c2)",
-                "(-pi/2)^4 [8(2 + S)(c0 - c1 + c2 - c3) - 2(S + 11)(c1 - c3)]",
-                "(-pi/2)^5 [(2S - 59)(c0 - c2)]",
-            ],
-        ),
-        (
-            "n_{j+2}^-",
-            &c,
-            End::End,
-            [
-                "S(c1 + c3) + 4(S + 1)c2",
-                "(pi/2)(1 + 2S)(c3 - c1)",
-                "(pi/2)^2 (2(2 + S))(c1 - 2c2 + c3)",
-                "(pi/2)^3 (2S - 5)(c1 - c3)",
-                "(-pi/2)^4 [8(2 + S)(c3 - c2 - c0) - 2(S + 11)(c2 - c0)]",
-                "(-pi/2)^5 [(2S - 59)(c1 - c3)]",
-            ],
-        ),
-        (
-            "n_{j+2}^+",
-            &b,
-            End::Start,
-            [
-                "S(b0 + b2) + 4(S + 1)b1",
-                "(pi/2)(1 + 2S)(b2 - b0)",
-                "(pi/2)^2 (2(2 + S))(b0 - 2b1 + b2)",
-                "(pi/2)^3 (2S - 5)(b0 - b2)",
-                "(pi/2)^4 [8(2 + S)(b1 - b0 - b2 + b3) + 2(S + 11)(b1 - b3)]",
-                "(pi/2)^5 [(2S - 59)(b2 - b0)]",
-            ],
-        ),
-        (
-            "n_{j+3}^-",
-            &b,
-            End::End,
-            [
-                "S(b1 + b3) + 4(S + 1)b2",
-                "(pi/2)(1 + 2S)(b3 - b1)",
-                "(pi/2)^2 (2(2 + S))(b1 - 2b2 + b3)",
-                "(pi/2)^3 (2S - 5)(b1 - b3)",
-                "(pi/2)^4 [8(2 + S)(b0 - b1 + b2 - b3) + 2(S + 11)(b2 - b0)]",
-                "(pi/2)^5 [(2S - 59)(b3 - b1)]",
-            ],
-        ),
-        (
-            "n_{j+3}^+",
-            &d,
-            End::Start,
-            [
-                "S d",
-                "(-pi/2)(1 + 2S) d",
-                "(pi/2)^2 (2(2 + S)) d",
-                "(pi/2)^3 (2S - 5) d",
-                "(-pi/2)^4 [8(2 + S) d]",
-                "(pi/2)^5 [(59 - 2S) d]",
-            ],
-        ),
-    ];
-    let mut parts = Vec::new();
-    for (at, coef, end, values) in table {
-        let computed = piece_at(coef, end);
-        for (r, text) in values.iter().enumerate() {
-            parts.push(printed_part(
-                format!("F_j^({r})({at})"),
-                text,
-                &[],
-                &computed[r],
-            ));
-        }
-    }
-    let mut v = Verdict::all(IDENTITY, parts);
-    v.evidence.insert(
-        0,
-        "pieces of (1) with the coefficients as symbols: a = a_j (piece a_j l3 on [n_j, n_{j+1})), c_k = c_{j+1,k}, b_k = b_{j+2,k}, d = d_{j+3}; S = s(ξ) = ξ² − ξ + 1; derivatives in the local variable u = (n − n_i)/q_i, t = πu/2 (the print's factors (π/2)^k)",
-    );
-    v
-}
-
-/// The curve `T(n) = Σ_i F_i(n) S_i` of (6) on `[n_j, n_{j+1})`, with the
-/// segment functions of (5) (`F_0 = d_j l₀`, `F_1 = Σ_k b_{j,k} l_k`,
-/// `F_2 = Σ_k c_{j,k} l_k`, `F_3 = a_j l₃`, coefficients and control points
-/// `S_i` as symbols): its derivatives of orders 0–6 at `end`, in `u`.
-fn curve_at(end: End) -> Vec<Sym> {
-    let z = Sym::zero();
-    let (b, c, s) = (symbols("b", 4), symbols("c", 4), symbols("S", 4));
-    let coef: [[Sym; 4]; 4] = [
-        [Sym::var("d"), z.clone(), z.clone(), z.clone()],
-        [b[0].clone(), b[1].clone(), b[2].clone(), b[3].clone()],
-        [c[0].clone(), c[1].clone(), c[2].clone(), c[3].clone()],
-        [z.clone(), z.clone(), z, Sym::var("a")],
-    ];
-    let pieces: Vec<Vec<Sym>> = coef.iter().map(|k| piece_at(k, end)).collect();
-    (0..7)
-        .map(|r| (0..4).fold(Sym::zero(), |acc, i| acc + &(pieces[i][r].clone() * &s[i])))
-        .collect()
-}
-
-/// One printed line of Appendix D: its label as printed, the end of the
-/// span, the order it stands for in its list, the value as printed, and why
-/// it cannot be checked as printed (if so).
-#[derive(Clone, Copy)]
-struct DLine {
-    label: &'static str,
-    end: End,
-    order: usize,
-    text: &'static str,
-    garbled: Option<&'static str>,
-}
-
-const MISLABELLED: &str = "garbled label: T_{j+1}''(n_j^-) names neither the knot of its list (n_{j+1}^-) nor the segment T_j of this appendix (n_j^- lies outside [n_j, n_{j+1}), and T_{j+1} is not given); M9b checks the reading T''(n_{j+1}^-)";
-
-/// Appendix D as printed (`S` = s(ξ); `d, b_k, c_k, a` = `d_j, b_{j,k},
-/// c_{j,k}, a_j`; control points `S0…S3`).
-const APPENDIX_D: [DLine; 12] = [
-    DLine {
-        label: "T(n_j^+)",
-        end: End::Start,
-        order: 0,
-        text: "S d S0 + [S b0 + 4(S + 1)b1 + S b2]S1 + [S c0 + 4(S + 1)c1 + S c2]S2",
-        garbled: None,
-    },
-    DLine {
-        label: "T_j'(n_j^+)",
-        end: End::Start,
-        order: 1,
-        text: "(pi/2){(1 + 2S)[-d S0 + (b2 - b0)S1 + (c2 - c0)S2]}",
-        garbled: None,
-    },
-    DLine {
-        label: "T_j''(n_j^+)",
-        end: End::Start,
-        order: 2,
-        text: "(pi/2)^2 {2((2 + S))[d S0 + (b0 - 2b1 + b2)S1 + (c0 - 2c1 + c2)S2]}",
-        garbled: None,
-    },
-    DLine {
-        label: "T_j'''(n_j^+)",
-        end: End::Start,
-        order: 3,
-        text: "(pi/2)^3 {(5 + 2S)[d S0 + (b0 - b2)S1 + (c0 - c2)S2]}",
-        garbled: None,
-    },
-    DLine {
-        label: "T_j^iv(n_j^+)",
-        end: End::Start,
-        order: 4,
-        text: "-(pi/2)^4 {[8(2 + S)(d S0 + (b0 - b1 + b2 - b3)S1 + (c0 - c1 + c2 - c3)S2 + a S3) + 2(S + 11)[(b1 - b3)S1 + (c1 - c3)S2 - a S3]]}",
-        garbled: None,
-    },
-    DLine {
-        label: "T_j^v(n_j^+)",
-        end: End::Start,
-        order: 5,
-        text: "-(pi/2)^5 {[(59 - 2S)(d S0 + (b0 - b2)S1 + (c0 - c2 + c2)S2)]}",
-        garbled: None,
-    },
-    DLine {
-        label: "T(n_{j+1}^-)",
-        end: End::End,
-        order: 0,
-        text: "[S b1 + 4(S + 1)b2 + S b3]S1 + [S c1 + 4(S + 1)c2 + S c3]S2 + S a S3",
-        garbled: None,
-    },
-    DLine {
-        label: "T_j'(n_{j+1}^-)",
-        end: End::End,
-        order: 1,
-        text: "(pi/2){(1 + 2S)[(b3 - b1)S1 + (c3 - c1)S2 + a S3]}",
-        garbled: None,
-    },
-    DLine {
-        label: "T_{j+1}''(n_j^-)",
-        end: End::End,
-        order: 2,
-        text: "(pi/2)^2 {2((2 + S))[(b1 - 2b2 + b3)S1 + (c1 - 2c2 + c3)S2 + a S3]}",
-        garbled: Some(MISLABELLED),
-    },
-    DLine {
-        label: "T_j'''(n_{j+1}^-)",
-        end: End::End,
-        order: 3,
-        text: "(pi/2)^3 {(1 + 2S)[(b1 - b3)S1 + (c1 - c3)S2 + a S3]}",
-        garbled: None,
-    },
-    DLine {
-        label: "T_j^iv(n_{j+1}^-)",
-        end: End::End,
-        order: 4,
-        text: "(pi/2)^4 {[8(2 + S)(d S0 + (b0 - b1 + b2 - b3)S1 + (c0 - c1 + c2 - c3)S2 - a S3) + 2(S + 11)[d S0 + (b2 - b0)S1 + (c2 - c0)S2]]}",
-        garbled: None,
-    },
-    DLine {
-        label: "T_j^v(n_{j+1}^-)",
-        end: End::End,
-        order: 5,
-        text: "(pi/2)^5 {[(2S - 59)((b3 - b1)S1 + (c3 - c1)S2) + a S3]}",
-        garbled: None,
-    },
-];
-
-const APPENDIX_D_SETUP: &str = "curve T(n) = Σ_i F_i(n) S_i of (6) on [n_j, n_{j+1}) with F_0 = d l0, F_1 = Σ b_k l_k, F_2 = Σ c_k l_k, F_3 = a l3 of (5); coefficients d = d_j, b_k = b_{j,k}, c_k = c_{j,k}, a = a_j and control points S0…S3 as symbols; S = s(ξ); derivatives in the local variable u (the print's factors (π/2)^k, as in Appendix C)";
-
-/// Each line whose label is readable compared with the computed derivative
-/// of its order at its end; the others recorded as not checkable.
-fn appendix_d(lines: impl Iterator<Item = DLine>, label: impl Fn(&DLine) -> String) -> Verdict {
-    let computed = [curve_at(End::Start), curve_at(End::End)];
-    let (mut parts, mut garbled) = (Vec::new(), Vec::new());
-    for line in lines {
-        match line.garbled {
-            None => {
-                let at = usize::from(line.end == End::End);
-                parts.push(printed_part(
-                    label(&line),
-                    line.text,
-                    &[],
-                    &computed[at][line.order],
-                ));
-            }
-            Some(reason) => garbled.push((
-                format!("{} printed {}", label(&line), line.text),
-                Verdict::not_checkable(reason),
-            )),
-        }
-    }
-    let mut v = Verdict::all(IDENTITY, parts);
-    v.evidence.insert(0, APPENDIX_D_SETUP);
-    v.evidence.extend(Verdict::all(IDENTITY, garbled).evidence);
-    v
-}
-
-fn m9() -> Verdict {
-    let mut v = appendix_d(APPENDIX_D.into_iter(), |l| l.label.to_string());
-    v.evidence.insert(
-        1,
-        "read as printed: the stray comma in \"S_1, + [...]S_2\" of T(n_j^+) is punctuation; the unmatched \"[\" opening both T^iv values is closed before \"}\" (it groups a sum: any closing gives the same value); \"(c_{j,0} − c_{j,2} + c_{j,2})\" in T^v(n_j^+) is kept as printed",
-    );
-    v
-}
-
-fn m9b() -> Verdict {
-    appendix_d(
-        APPENDIX_D
-            .into_iter()
-            .filter(|l| l.garbled.is_some())
-            .map(|l| DLine { garbled: None, ..l }),
-        |l| format!("{} read as T''(n_{{j+1}}^-)", l.label),
-    )
-}
 
 /// The claim "C⁵ for ξ ≠ 1": it fails when some knot is below C⁵ for
 /// generic ξ (then every ξ outside the finitely many exceptions is a
@@ -537,7 +223,6 @@ fn m8() -> Verdict {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::claims::seed000_appendix_print::{compare, read};
     use trig_deriv::continuity::Smoothness;
 
     #[test]
@@ -559,49 +244,6 @@ mod tests {
                 .exceptions
                 .iter()
                 .all(|e| e.smoothness == Smoothness::Exactly(5))
-        );
-    }
-
-    #[test]
-    fn appendix_d_checks_readable_lines_and_records_the_mislabelled_one() {
-        let v = m9();
-        assert_eq!(v.status, Status::Fails);
-        let line = |label: &str| {
-            v.evidence
-                .iter()
-                .map(|e| e.line())
-                .find(|e| e.starts_with(&format!("{label} printed")))
-                .unwrap_or_else(|| panic!("{label}: {:?}", v.evidence))
-        };
-        assert!(line("T(n_j^+)").contains(": holds"));
-        // T'''(n_j^+) = (π/2)³ (2S − 5)[…] (Appendix C's factor), printed (5 + 2S)
-        assert!(line("T_j'''(n_j^+)").contains(": fails"));
-        assert!(line("T_{j+1}''(n_j^-)").contains(": not-checkable — garbled label"));
-        assert_eq!(m9b().status, Status::Holds);
-        let want = read("(pi/2)^3 (2S - 5)[d S0 + (b0 - b2)S1 + (c0 - c2)S2]", &[]).unwrap();
-        assert_eq!(
-            compare(&want, &curve_at(End::Start)[3]).status,
-            Status::Holds
-        );
-    }
-
-    #[test]
-    fn appendix_c_has_the_known_a3_misprint() {
-        let v = m5();
-        assert_eq!(v.status, Status::Fails);
-        let a3: Vec<String> = v
-            .evidence
-            .iter()
-            .map(|e| e.line())
-            .filter(|e| e.contains("(6 + 6S)"))
-            .collect();
-        assert_eq!(a3.len(), 1);
-        assert!(a3[0].contains(": fails"), "{a3:?}");
-        // the first value at n_{j+1}^- is right
-        assert!(
-            v.evidence
-                .iter()
-                .any(|e| e.contains("F_j^(0)(n_{j+1}^-) printed S a: holds"))
         );
     }
 }

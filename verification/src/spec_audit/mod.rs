@@ -640,12 +640,14 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
             identities,
             curves,
             readings,
+            lets,
             change,
         } => trig_judge::identity::printed_identities(
             spec,
             identities,
             curves,
             readings,
+            lets,
             change.as_ref(),
         ),
         Check::SameBasis {
