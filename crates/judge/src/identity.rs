@@ -37,48 +37,30 @@ pub fn printed_identities<B: ExactBasis>(
     curve: Option<&Curve>,
     readings: &[Reading],
 ) -> Verdict {
-    let functions = basis.exact_functions();
-    let curve_value = curve.map(|k| curve_of(&functions, k.weighted));
-    let sides = |item: &Identity| -> Result<(Sym, Sym), Verdict> {
-        let (mut lhs, mut rhs) = (item.lhs.clone(), item.rhs.clone());
-        for a in &item.applications {
-            let f = match a.applied {
-                Applied::Function(i) => &functions[i],
-                Applied::Curve => curve_value.as_ref().expect("a curve read with its name"),
-            };
-            let Some(value) = applied(basis, f, a.order, &a.argument.x, &a.argument.rest) else {
-                return Err(Verdict::not_checkable(format!(
-                    "in `{}`, the argument `{}` is not formed exactly (a slope other than 0, ±1 in the variable, or atoms not exact at that point)",
-                    item.text, a.argument_text
-                )));
-            };
-            lhs = lhs.subs(&a.symbol, &value);
-            rhs = rhs.subs(&a.symbol, &value);
-        }
-        Ok((lhs, rhs))
+    let parts = match sides(basis, items, curve) {
+        Ok(parts) => parts,
+        Err(v) => return v,
     };
-    let mut parts = Vec::new();
-    for item in items {
-        match sides(item) {
-            Ok((lhs, rhs)) => parts.push((item.label.clone(), lhs, rhs)),
-            Err(v) => return v,
-        }
-    }
     let printed = identities(parts);
     if printed.status == Status::Holds || readings.is_empty() {
         return printed;
     }
-    let mut read = Vec::new();
-    for r in readings {
-        match sides(&r.identity) {
-            Ok((lhs, rhs)) => read.push((
-                format!("reading of {}: {}", items[r.of].label, r.identity.label),
+    let read_items: Vec<Identity> = readings.iter().map(|r| r.identity.clone()).collect();
+    let read = match sides(basis, &read_items, curve) {
+        Ok(read) => read,
+        Err(v) => return v,
+    };
+    let read = read
+        .into_iter()
+        .zip(readings)
+        .map(|((label, lhs, rhs), r)| {
+            (
+                format!("reading of {}: {label}", items[r.of].label),
                 lhs,
                 rhs,
-            )),
-            Err(v) => return v,
-        }
-    }
+            )
+        })
+        .collect();
     let decided = identities(read);
     let failing: Vec<usize> = printed
         .evidence
@@ -102,6 +84,41 @@ pub fn printed_identities<B: ExactBasis>(
         v = v.with_correction(format!("read {correction}"));
     }
     v
+}
+
+/// Each printed identity as `(label, lhs, rhs)` with its applications
+/// formed in the exact ring; `Err` with the `not-checkable` verdict where
+/// an argument is not formed exactly (a slope other than 0, ±1, atoms not
+/// exact at the point).
+pub fn sides<B: ExactBasis>(
+    basis: &B,
+    items: &[Identity],
+    curve: Option<&Curve>,
+) -> Result<Vec<(String, Sym, Sym)>, Verdict> {
+    let functions = basis.exact_functions();
+    let curve_value = curve.map(|k| curve_of(&functions, k.weighted));
+    items
+        .iter()
+        .map(|item| {
+            let (mut lhs, mut rhs) = (item.lhs.clone(), item.rhs.clone());
+            for a in &item.applications {
+                let f = match a.applied {
+                    Applied::Function(i) => &functions[i],
+                    Applied::Curve => curve_value.as_ref().expect("a curve read with its name"),
+                };
+                let Some(value) = applied(basis, f, a.order, &a.argument.x, &a.argument.rest)
+                else {
+                    return Err(Verdict::not_checkable(format!(
+                        "in `{}`, the argument `{}` is not formed exactly (a slope other than 0, ±1 in the variable, or atoms not exact at that point)",
+                        item.text, a.argument_text
+                    )));
+                };
+                lhs = lhs.subs(&a.symbol, &value);
+                rhs = rhs.subs(&a.symbol, &value);
+            }
+            Ok((item.label.clone(), lhs, rhs))
+        })
+        .collect()
 }
 
 /// `Σ bᵢPᵢ`, or `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ`.

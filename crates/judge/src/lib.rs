@@ -32,6 +32,7 @@ pub mod exact_ends;
 pub mod exceptional;
 pub mod identity;
 pub mod independence;
+pub mod instance;
 pub mod interpolant;
 pub mod interpolant_point;
 pub mod join;

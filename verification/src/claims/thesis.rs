@@ -21,10 +21,6 @@ pub const CLAIMS: &[Claim] = &[
         check: t31,
     },
     Claim {
-        id: "T27",
-        check: t27,
-    },
-    Claim {
         id: "T25",
         check: t25,
     },
@@ -145,37 +141,6 @@ fn t37() -> Verdict {
         .witnessed(witness.filter(|_| status == Status::Fails)),
     );
     Verdict::new(status, trig_judge::exact::IDENTITY, evidence)
-}
-
-fn t27() -> Verdict {
-    let residual = sum(&basis(Family::ThesisCubic)) - &Sym::one();
-    let (status, reading) = if residual.is_zero() {
-        (
-            Status::Fails,
-            "identically in m: the functions sum to 1 for every real m; outside [−2, 1] what can fail is nonnegativity, not normalisation",
-        )
-    } else {
-        (Status::Holds, "not identically zero in m")
-    };
-    // at a parameter outside the range, the sum is 1 at every point
-    let two = Rational::from(2);
-    let point = [
-        ("m".to_string(), two.clone()),
-        ("s".to_string(), Rational::from((3, 5))),
-        ("c".to_string(), Rational::from((4, 5))),
-    ];
-    let total = sum(&basis(Family::ThesisCubic));
-    let witness = trig_verdict::witness::of_exprs(
-        &point,
-        &["m".into(), "s".into(), "c".into()],
-        &[("Σ b_i (claimed ≠ 1)", &total)],
-    );
-    Verdict::new(
-        status,
-        trig_judge::exact::IDENTITY,
-        [Evidence::note(format!("Σ b_i − 1 = {residual}, {reading}"))
-            .witnessed(witness.filter(|_| status == Status::Fails))],
-    )
 }
 
 /// For (6.2) at λ = −1, −2: nonnegative and summing to 1 (so every curve
