@@ -20,10 +20,7 @@ pub type Side = (String, Sym);
 /// functions, the curve) are given at the same point beside it, for the
 /// reader. `None` when no real point is known (outside a spec decision)
 /// or a value is undefined there.
-pub fn instance(
-    sides: &[(Side, Side)],
-    shown: &[Side],
-) -> Option<Evidence> {
+pub fn instance(sides: &[(Side, Side)], shown: &[Side]) -> Option<Evidence> {
     let exprs: Vec<(&str, &Sym)> = sides
         .iter()
         .flat_map(|((l, lhs), (r, rhs))| [(l.as_str(), lhs), (r.as_str(), rhs)])

@@ -172,9 +172,10 @@ pub fn instance(exprs: &[(&str, &Sym)]) -> Option<Witness> {
         note: Some(note(exact)),
         values: exprs
             .iter()
+            .zip(&values)
             .zip(&at.values)
-            .map(|((label, _), v)| Value {
-                of: None,
+            .map(|(((label, _), of), v)| Value {
+                of: Some(Expr::new(of)),
                 label: label.to_string(),
                 value: real_value(v),
             })
