@@ -576,3 +576,50 @@ fn the_joins_break_at_the_printed_values_only() {
     let t39 = &run(None, Some("T39")).expect("the document files")[0].verdict;
     assert_eq!(t39.status, Status::Holds);
 }
+
+/// A negated identity that holds fails with an instance as its witness:
+/// both sides at the simplest real point of the claim's set, equal where
+/// the negation says they differ (the thesis's T27 on `m ∈ (1, ∞)`:
+/// `m = 2`, `u = 1/2`); a negated check proved over a set (nonnegativity)
+/// has no such point, and a negated identity that fails holds.
+#[test]
+fn a_failing_negation_of_an_identity_shows_an_instance() {
+    let t27 = &run(None, Some("T27")).expect("the document files")[0];
+    assert_eq!(t27.verdict.status, Status::Fails);
+    let (_, w) = t27.witness().expect("an instance");
+    let point: Vec<(&str, &str)> = w
+        .point
+        .iter()
+        .map(|a| (a.name.as_str(), a.value.as_str()))
+        .collect();
+    assert_eq!(point, [("m", "2"), ("u", "1/2")]);
+    let values: Vec<(&str, &str)> = w
+        .values
+        .iter()
+        .map(|v| (v.label.as_str(), v.value.unicode.as_str()))
+        .collect();
+    assert_eq!(values, [("Σ b_i", "1"), ("1", "1")]);
+    assert_eq!(w.stated, Some(trig_verdict::evidence::Relation::Differ));
+    let spec = thesis_cubic_with(
+        "[[claims]]\nid = \"NOT-ONE\"\nsource = \"test\"\nstatement = \"b0(0) ≠ 1\"\ncheck = \"identity\"\nidentities = [\"b0(0) = 1\"]\nnegated = true\n\n[[claims]]\nid = \"NOT-TWO\"\nsource = \"test\"\nstatement = \"b0(0) ≠ 2\"\ncheck = \"identity\"\nidentities = [\"b0(0) = 2\"]\nnegated = true\n\n[[claims]]\nid = \"NOT-NONNEG\"\nsource = \"test\"\nstatement = \"not nonnegative\"\ncheck = \"nonnegative\"\nnegated = true\n",
+    );
+    let decided = |id: &str| {
+        let claim = spec.claims.iter().find(|c| c.id == id).expect("the claim");
+        spec_audit::decide(&spec, claim)
+    };
+    let one = decided("NOT-ONE");
+    assert_eq!(one.status, Status::Fails);
+    let w = one
+        .evidence
+        .iter()
+        .find_map(|e| e.witness.as_ref())
+        .expect("an instance");
+    // m = 0, the simplest value of (−2, 1]: both sides 1
+    assert_eq!(w.point[0].value, "0");
+    let values: Vec<&str> = w.values.iter().map(|v| v.value.unicode.as_str()).collect();
+    assert_eq!(values, ["1", "1"]);
+    assert_eq!(decided("NOT-TWO").status, Status::Holds);
+    let nonnegative = decided("NOT-NONNEG");
+    assert_eq!(nonnegative.status, Status::Fails);
+    assert!(nonnegative.evidence.iter().all(|e| e.witness.is_none()));
+}

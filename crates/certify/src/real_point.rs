@@ -212,6 +212,97 @@ pub fn differ(left: &Sym, right: &Sym, domain: &Domain, axes: &[Axis]) -> Option
     None
 }
 
+/// The values of expressions at one real point: the parameters, the
+/// variable and the values there (exact or certified enclosures).
+#[derive(Debug, Clone)]
+pub struct Instance {
+    /// The parameter values (rationals or rational multiples of π).
+    pub params: Vec<Sym>,
+    /// The variable `x`.
+    pub x: Sym,
+    /// The value of each expression, in order.
+    pub values: Vec<RealValue>,
+}
+
+/// The simplest rational strictly between `a < b` (smallest denominator,
+/// then smallest size), by the Stern–Brocot descent: `x = ⌊a⌋ + 1/y` with
+/// `y` the simplest strictly between `1/(b − ⌊a⌋)` and `1/(a − ⌊a⌋)`.
+fn simplest_strictly_between(a: &Rational, b: &Rational) -> Rational {
+    let zero = Rational::new();
+    if *a < zero && *b > zero {
+        return zero;
+    }
+    if *b <= zero {
+        return -simplest_strictly_between(&-b.clone(), &-a.clone());
+    }
+    let next = a.clone().floor() + 1u32;
+    if next < *b {
+        return next;
+    }
+    // a < b ≤ next: both in [next − 1, next]
+    let floor = next - 1u32;
+    let lo = Rational::from(1) / (b.clone() - &floor);
+    let y = if *a == floor {
+        lo.floor() + 1u32
+    } else {
+        simplest_strictly_between(&lo, &(Rational::from(1) / (a.clone() - &floor)))
+    };
+    floor + Rational::from(1) / y
+}
+
+/// The simplest value of an axis (its open ends excluded).
+fn simplest(axis: &Axis) -> Rational {
+    if axis.lo == axis.hi {
+        return axis.lo.clone();
+    }
+    let v = simplest_between(&axis.lo, &axis.hi);
+    let open = (v == axis.lo && axis.lo_open) || (v == axis.hi && axis.hi_open);
+    if open {
+        simplest_strictly_between(&axis.lo, &axis.hi)
+    } else {
+        v
+    }
+}
+
+/// The values of `exprs` at one real point, the simplest there is: each
+/// parameter the simplest rational of its axis (open ends excluded; in
+/// units of π on a π axis), `x` the middle of the domain. Exact when every
+/// atom is exact there (angles at multiples of π/12), else certified
+/// enclosures; `None` when an expression is not defined there. An
+/// instance of what holds everywhere, shown at a point a reader can check.
+pub fn simplest_point(exprs: &[&Sym], domain: &Domain, axes: &[Axis]) -> Option<Instance> {
+    let p: Vec<Rational> = axes.iter().map(simplest).collect();
+    let params: Vec<Sym> = p.iter().zip(axes).map(|(q, a)| param_value(q, a)).collect();
+    let half = Rational::from((1, 2));
+    let x_affine = constant_at(
+        &domain.start.scale(&half).plus(&domain.end.scale(&half)),
+        &p,
+        axes,
+    );
+    let x = x_affine.eval(&Sym::one(), &params);
+    let exact: Option<Vec<RealValue>> = exprs
+        .iter()
+        .map(|f| exactly(f, domain, &params, &x_affine).map(RealValue::Exact))
+        .collect();
+    let values = match exact {
+        Some(values) => values,
+        None => {
+            let coords = Coordinates::new(domain, axes);
+            let mut cell = vec![(half.clone(), half.clone())];
+            cell.extend(p.iter().map(|q| (q.clone(), q.clone())));
+            exprs
+                .iter()
+                .map(|f| {
+                    coords
+                        .enclose(&coords.function(f), &cell)
+                        .map(RealValue::Enclosure)
+                })
+                .collect::<Option<Vec<_>>>()?
+        }
+    };
+    Some(Instance { params, x, values })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -294,5 +385,32 @@ mod tests {
         assert_eq!(diff.x, Sym::pi() / &Sym::int(4));
         assert_eq!(r.to_string(), "1/2*sqrt(2)");
         assert!(!(l.clone() - r).is_zero());
+    }
+
+    #[test]
+    fn the_simplest_point_avoids_open_ends() {
+        let axis = |lo: Rational, hi: Rational, lo_open, hi_open| Axis {
+            lo,
+            hi,
+            lo_open,
+            hi_open,
+            pi: false,
+        };
+        assert_eq!(simplest(&axis(q(-2, 1), q(1, 1), false, false)), q(0, 1));
+        assert_eq!(simplest(&axis(q(1, 1), q(101, 1), true, false)), q(2, 1));
+        assert_eq!(simplest(&axis(q(0, 1), q(1, 1), true, true)), q(1, 2));
+        assert_eq!(simplest(&axis(q(1, 3), q(1, 2), true, true)), q(2, 5));
+        assert_eq!(simplest(&axis(q(-1, 2), q(-1, 3), true, true)), q(-2, 5));
+        // e^t − 1 at α = 1 (the simplest of [1/2, 4]), t = α/2: enclosed, not exact
+        let d = exponential();
+        let e = Sym::var("E") - &Sym::one();
+        let at =
+            simplest_point(&[&e], &d, &[axis(q(1, 2), q(4, 1), false, false)]).expect("defined");
+        assert_eq!(at.params, [Sym::one()]);
+        let RealValue::Enclosure(v) = &at.values[0] else {
+            panic!("{at:?}")
+        };
+        let want = 0.5f64.exp() - 1.0;
+        assert!(v.lo().to_f64() <= want && want <= v.hi().to_f64());
     }
 }

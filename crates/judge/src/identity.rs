@@ -46,78 +46,30 @@ pub fn printed_identities<B: ExactBasis>(
     lets: &[Let],
     change: Option<&Change>,
 ) -> Verdict {
-    let functions = basis.exact_functions();
-    let domain = basis.domain();
-    if change.is_some() && (domain.angle.is_some() || domain.exp.is_some()) {
-        return Verdict::not_checkable(
-            "a change of variable is formed exactly for a basis polynomial in its variable only",
-        );
-    }
-    let curve_values: Vec<Sym> = curves.iter().map(|k| curve_of(&functions, k)).collect();
-    let sides = |item: &Identity| -> Result<(Sym, Sym), Verdict> {
-        let mut values: Vec<(&str, Sym)> = lets
-            .iter()
-            .map(|l| (l.name.as_str(), l.value.clone()))
-            .collect();
-        for a in &item.applications {
-            let f = match a.applied {
-                Applied::Function(i) => &functions[i],
-                Applied::Curve(k) => &curve_values[k],
-                Applied::Let(i) => &lets[i].value,
-            };
-            let value = match (&a.argument, change) {
-                (Argument::Formula(x), Some(change)) => Some(changed(f, a.order, change, x)),
-                (Argument::Linear(l), None) => applied(basis, f, a.order, &l.x, &l.rest),
-                _ => None,
-            };
-            let Some(value) = value else {
-                return Err(Verdict::not_checkable(format!(
-                    "in `{}`, the argument `{}` is not formed exactly (a slope other than 0, ±1 in the variable, or atoms not exact at that point)",
-                    item.text, a.argument_text
-                )));
-            };
-            values.push((&a.symbol, value));
-        }
-        let (mut lhs, mut rhs) = match (
-            substituted(&item.lhs, &values),
-            substituted(&item.rhs, &values),
-        ) {
-            (Ok(lhs), Ok(rhs)) => (lhs, rhs),
-            (Err(e), _) | (_, Err(e)) => {
-                return Err(Verdict::not_checkable(format!(
-                    "in `{}`, a denominator vanishes identically once the functions are applied: {e}",
-                    item.text
-                )));
-            }
-        };
-        if let Some(change) = change {
-            lhs = lhs.subs(VARIABLE, &change.value);
-            rhs = rhs.subs(VARIABLE, &change.value);
-        }
-        Ok((lhs, rhs))
+    let parts = match sides(basis, items, curves, lets, change) {
+        Ok(parts) => parts,
+        Err(v) => return v,
     };
-    let mut parts = Vec::new();
-    for item in items {
-        match sides(item) {
-            Ok((lhs, rhs)) => parts.push((item.label.clone(), lhs, rhs)),
-            Err(v) => return v,
-        }
-    }
     let printed = identities(parts);
     if printed.status == Status::Holds || readings.is_empty() {
         return with_change(printed, change);
     }
-    let mut read = Vec::new();
-    for r in readings {
-        match sides(&r.identity) {
-            Ok((lhs, rhs)) => read.push((
-                format!("reading of {}: {}", items[r.of].label, r.identity.label),
+    let read_items: Vec<Identity> = readings.iter().map(|r| r.identity.clone()).collect();
+    let read = match sides(basis, &read_items, curves, lets, change) {
+        Ok(read) => read,
+        Err(v) => return v,
+    };
+    let read = read
+        .into_iter()
+        .zip(readings)
+        .map(|((label, lhs, rhs), r)| {
+            (
+                format!("reading of {}: {label}", items[r.of].label),
                 lhs,
                 rhs,
-            )),
-            Err(v) => return v,
-        }
-    }
+            )
+        })
+        .collect();
     let decided = identities(read);
     let failing: Vec<usize> = printed
         .evidence
@@ -141,6 +93,75 @@ pub fn printed_identities<B: ExactBasis>(
         v = v.with_correction(format!("read {correction}"));
     }
     with_change(v, change)
+}
+
+/// Each printed identity as `(label, lhs, rhs)` with its applications
+/// (and the claim's `let` names) formed in the exact ring; `Err` with the
+/// `not-checkable` verdict where an argument is not formed exactly (a
+/// slope other than 0, ±1, atoms not exact at the point), a denominator
+/// vanishes once the functions are applied, or a change of variable is
+/// asked of a basis not polynomial in its variable.
+pub fn sides<B: ExactBasis>(
+    basis: &B,
+    items: &[Identity],
+    curves: &[Curve],
+    lets: &[Let],
+    change: Option<&Change>,
+) -> Result<Vec<(String, Sym, Sym)>, Verdict> {
+    let functions = basis.exact_functions();
+    let domain = basis.domain();
+    if change.is_some() && (domain.angle.is_some() || domain.exp.is_some()) {
+        return Err(Verdict::not_checkable(
+            "a change of variable is formed exactly for a basis polynomial in its variable only",
+        ));
+    }
+    let curve_values: Vec<Sym> = curves.iter().map(|k| curve_of(&functions, k)).collect();
+    items
+        .iter()
+        .map(|item| {
+                let mut values: Vec<(&str, Sym)> = lets
+                    .iter()
+                    .map(|l| (l.name.as_str(), l.value.clone()))
+                    .collect();
+                for a in &item.applications {
+                    let f = match a.applied {
+                        Applied::Function(i) => &functions[i],
+                        Applied::Curve(k) => &curve_values[k],
+                        Applied::Let(i) => &lets[i].value,
+                    };
+                    let value = match (&a.argument, change) {
+                        (Argument::Formula(x), Some(change)) => Some(changed(f, a.order, change, x)),
+                        (Argument::Linear(l), None) => applied(basis, f, a.order, &l.x, &l.rest),
+                        _ => None,
+                    };
+                    let Some(value) = value else {
+                        return Err(Verdict::not_checkable(format!(
+                            "in `{}`, the argument `{}` is not formed exactly (a slope other than 0, ±1 in the variable, or atoms not exact at that point)",
+                            item.text, a.argument_text
+                        )));
+                    };
+                    values.push((&a.symbol, value));
+                }
+                let (mut lhs, mut rhs) = match (
+                    substituted(&item.lhs, &values),
+                    substituted(&item.rhs, &values),
+                ) {
+                    (Ok(lhs), Ok(rhs)) => (lhs, rhs),
+                    (Err(e), _) | (_, Err(e)) => {
+                        return Err(Verdict::not_checkable(format!(
+                            "in `{}`, a denominator vanishes identically once the functions are applied: {e}",
+                            item.text
+                        )));
+                    }
+                };
+                if let Some(change) = change {
+                    lhs = lhs.subs(VARIABLE, &change.value);
+                    rhs = rhs.subs(VARIABLE, &change.value);
+                }
+                Ok((item.label.clone(), lhs, rhs))
+
+        })
+        .collect()
 }
 
 /// The verdict with the change of variable stated first.

@@ -33,6 +33,7 @@ pub mod exceptional;
 pub mod fourier;
 pub mod identity;
 pub mod independence;
+pub mod instance;
 pub mod interpolant;
 pub mod interpolant_jumps;
 pub mod interpolant_point;

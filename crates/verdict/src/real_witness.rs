@@ -20,11 +20,11 @@ use rug::Rational;
 use trig_certify::algebraic::decimal;
 use trig_certify::atoms::param_atoms;
 use trig_certify::branch::Axis;
-use trig_certify::real_point::{Difference, RealValue, differ};
+use trig_certify::real_point::{Difference, RealValue, differ, simplest_point};
 use trig_core::Domain;
 use trig_symbolic::Sym;
 
-use crate::evidence::{Assignment, Expr, Value, Witness};
+use crate::evidence::{Assignment, Expr, Relation, Value, Witness};
 
 /// Decimal places of an enclosed value as printed.
 const DIGITS: usize = 15;
@@ -120,6 +120,71 @@ pub fn find(left: &Sym, right: &Sym, labels: (&str, &str)) -> Option<Option<Witn
     Some(None)
 }
 
+/// An instance of what holds everywhere, when a spec decision runs: the
+/// values of `exprs` (labelled) at the simplest real point of the domain
+/// and the parameter sets ([`simplest_point`]; the point names the
+/// variable too), paired in order — a claim that some pair differs (the
+/// negation of an identity) is seen to fail there (`stated` differ). Other
+/// symbols (control points) take small rational values. `None` outside a
+/// spec decision or where an expression is not defined at that point.
+pub fn instance(exprs: &[(&str, &Sym)]) -> Option<Witness> {
+    let points = current()?;
+    let atoms = point_names(&points);
+    let names: BTreeSet<String> = exprs
+        .iter()
+        .flat_map(|(_, e)| e.variables())
+        .filter(|n| n != "pi" && !n.starts_with("sqrt("))
+        .collect();
+    let others: Vec<String> = names
+        .iter()
+        .filter(|n| !atoms.contains(*n))
+        .cloned()
+        .collect();
+    let fixed = others_at(&others, 0);
+    let set = |x: &Sym| {
+        fixed.iter().fold(x.clone(), |acc, (n, q)| {
+            acc.subs(n, &Sym::rational(q.clone()))
+        })
+    };
+    let values: Vec<Sym> = exprs.iter().map(|(_, e)| set(e)).collect();
+    let at = simplest_point(
+        &values.iter().collect::<Vec<_>>(),
+        &points.domain,
+        &points.axes,
+    )?;
+    let mut point: Vec<Assignment> = points
+        .symbols
+        .iter()
+        .zip(&points.domain.param_names)
+        .zip(&at.params)
+        .map(|((symbol, name), v)| assignment(symbol, name, v))
+        .collect();
+    let x = &points.domain.name;
+    point.push(assignment(x, x, &at.x));
+    point.extend(
+        fixed
+            .iter()
+            .map(|(n, q)| Assignment::exact(n, &Sym::rational(q.clone()))),
+    );
+    let exact = at.values.iter().all(|v| matches!(v, RealValue::Exact(_)));
+    Some(Witness {
+        point,
+        note: Some(note(exact)),
+        values: exprs
+            .iter()
+            .zip(&values)
+            .zip(&at.values)
+            .map(|(((label, _), of), v)| Value {
+                of: Some(Expr::new(of)),
+                label: label.to_string(),
+                value: real_value(v),
+            })
+            .collect(),
+        exact,
+        stated: Some(Relation::Differ),
+    })
+}
+
 fn witness(
     points: &RealPoints,
     fixed: &[(String, Rational)],
@@ -144,38 +209,51 @@ fn witness(
             .map(|(n, q)| Assignment::exact(n, &Sym::rational(q.clone()))),
     );
     let exact = matches!(d.left, RealValue::Exact(_)) && matches!(d.right, RealValue::Exact(_));
-    let value = |v: &RealValue| match v {
+    let mut note = note(exact);
+    if !exact {
+        note.push_str(" (disjoint)");
+    }
+    Witness {
+        point,
+        note: Some(note),
+        values: vec![
+            Value {
+                of: None,
+                label: labels.0.to_string(),
+                value: real_value(&d.left),
+            },
+            Value {
+                of: None,
+                label: labels.1.to_string(),
+                value: real_value(&d.right),
+            },
+        ],
+        exact,
+        stated: None,
+    }
+}
+
+/// What a real point's values are.
+fn note(exact: bool) -> String {
+    if exact {
+        "a real point: every atom computed from it, values exact".into()
+    } else {
+        "a real point: every atom computed from it, values enclosed in 128-bit MPFR with outward rounding".into()
+    }
+}
+
+/// A value at a real point as printed: exact, or its enclosure rounded
+/// outward (every printed digit is certified).
+fn real_value(v: &RealValue) -> Expr {
+    match v {
         RealValue::Exact(x) => Expr::new(x),
         RealValue::Enclosure(i) => {
-            // rounded outward: every printed digit is certified
             let end = |f: &rug::Float, up: bool| {
                 f.to_rational()
                     .map_or_else(|| f.to_string(), |q| decimal(&q, DIGITS, up))
             };
             Expr::enclosure(&end(i.lo(), false), &end(i.hi(), true))
         }
-    };
-    Witness {
-        point,
-        note: Some(if exact {
-            "a real point: every atom computed from it, values exact".into()
-        } else {
-            "a real point: every atom computed from it, values enclosed in 128-bit MPFR with outward rounding (disjoint)".into()
-        }),
-        values: vec![
-            Value {
-                of: None,
-                label: labels.0.to_string(),
-                value: value(&d.left),
-            },
-            Value {
-                of: None,
-                label: labels.1.to_string(),
-                value: value(&d.right),
-            },
-        ],
-        exact,
-        stated: None,
     }
 }
 

@@ -10,24 +10,12 @@ use trig_symbolic::Sym;
 use super::properties_formulas::{e19, e23, m21, t45, t63};
 use crate::claim::Claim;
 use trig_judge::exact::IDENTITY;
-use trig_judge::{endpoint, nonnegative, span, unity};
+use trig_judge::{endpoint, nonnegative, unity};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
 /// In report order (after each document's first-list claims).
 pub const CLAIMS: &[Claim] = &[
-    Claim {
-        id: "T40",
-        check: t40,
-    },
-    Claim {
-        id: "S3",
-        check: s3,
-    },
-    Claim {
-        id: "T43",
-        check: t43,
-    },
     Claim {
         id: "T45",
         check: t45,
@@ -39,10 +27,6 @@ pub const CLAIMS: &[Claim] = &[
     Claim {
         id: "T63",
         check: t63,
-    },
-    Claim {
-        id: "M19",
-        check: m19,
     },
     Claim {
         id: "M21",
@@ -61,43 +45,6 @@ pub const CLAIMS: &[Claim] = &[
         check: e23,
     },
 ];
-
-/// The rational functions `Rⱼ = wⱼbⱼ / Σ wₖbₖ` of a basis with symbolic
-/// weights `w0, w1, …`.
-fn rational(family: Family) -> Vec<Sym> {
-    let b = trig_judge::exact::basis(family);
-    let weighted: Vec<Sym> = b
-        .iter()
-        .enumerate()
-        .map(|(j, f)| Sym::var(&format!("w{j}")) * f)
-        .collect();
-    let total = trig_judge::exact::sum(&weighted);
-    weighted.iter().map(|f| f.clone() / &total).collect()
-}
-
-/// `Σ Rⱼ = 1` identically for symbolic weights: affine invariance.
-fn m19() -> Verdict {
-    trig_judge::exact::identity(
-        "Σ w_j F_j / Σ w_k F_k − 1 (weights symbolic)",
-        &trig_judge::exact::sum(&rational(Family::Seed000Uniform)),
-        &Sym::one(),
-    )
-}
-
-/// The quadratic basis (3.1) at `β = 0`, exactly.
-fn t43() -> Verdict {
-    let at_zero: Vec<Sym> = trig_judge::exact::basis(Family::ThesisQuadratic)
-        .iter()
-        .map(|h| h.subs("beta", &Sym::zero()))
-        .collect();
-    trig_judge::exact::identities(
-        [("H0", 0), ("H1", 1), ("H2", 0)]
-            .iter()
-            .zip(at_zero)
-            .map(|((name, want), h)| (format!("{name} at β = 0 ≡ {want}"), h, Sym::int(*want)))
-            .collect(),
-    )
-}
 
 /// The Bézier properties of (3.7) on `m ∈ (−2, 1]`, each by its judge:
 /// interpolation of the end points, the end tangents `Q'(0) = c·(P1 − P0)`,
@@ -275,42 +222,6 @@ fn m23() -> Verdict {
             ("F_j(ζ) = F_j(1 − ζ)".into(), symmetric),
             ("exceptions of the knot continuity in pairs".into(), pairs),
         ],
-    )
-}
-
-/// A claim that a basis cannot trace a curve, decided by the span judge:
-/// refuted by the control points that trace it.
-fn cannot_trace(family: Family, curve: &str, targets: &[(&str, Sym)], why: &str) -> Verdict {
-    let mut v = span::reproduces(&family, curve, targets);
-    v.status = match v.status {
-        Status::Holds => Status::Fails,
-        Status::Fails => Status::Holds,
-        other => other,
-    };
-    v.evidence.insert(0, why.to_string());
-    v
-}
-
-/// The parabola `(t, t²)`, a conic, is a polynomial curve: the cubic
-/// Bernstein basis traces it.
-fn t40() -> Verdict {
-    let t = Sym::var("t");
-    cannot_trace(
-        Family::Bernstein3,
-        "parabola arc (t, t²), t ∈ [0, 1]",
-        &[("x", t.clone()), ("y", t.clone() * &t)],
-        "a parabola, a conic, is a polynomial curve: traced by the cubic Bézier basis",
-    )
-}
-
-/// The parabola `(t, t²)` is traced by the uniform cubic B-spline segment.
-fn s3() -> Verdict {
-    let t = Sym::var("t");
-    cannot_trace(
-        Family::BSpline3,
-        "parabola arc (t, t²), t ∈ [0, 1]",
-        &[("x", t.clone()), ("y", t.clone() * &t)],
-        "a parabola is a polynomial curve (refutes the parabola part; no ellipse arc is polynomial)",
     )
 }
 

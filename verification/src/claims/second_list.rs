@@ -10,12 +10,11 @@ use trig_core::net::ControlNet;
 use trig_core::surface::{Direction, TensorSurface};
 use trig_core::{Affine, Family};
 use trig_deriv::{End, Wrt};
-use trig_interp::{Scheme, Variant};
 use trig_symbolic::Sym;
 
-use super::thesis_interp::{derivs, positivity};
+use super::thesis_interp::derivs;
 use crate::claim::Claim;
-use trig_judge::exact::{IDENTITY, basis, identities, identity_item, sum, symbols};
+use trig_judge::exact::{IDENTITY, basis, identity_item, sum, symbols};
 use trig_judge::surface::cylinder_distance;
 use trig_judge::{nonnegative, span};
 use trig_verdict::evidence::Evidence;
@@ -26,16 +25,8 @@ use trig_verdict::witness;
 /// In report order (after the other second-list claims of each document).
 pub const CLAIMS: &[Claim] = &[
     Claim {
-        id: "T58",
-        check: t58,
-    },
-    Claim {
         id: "T59",
         check: t59,
-    },
-    Claim {
-        id: "T60",
-        check: t60,
     },
     Claim {
         id: "S7",
@@ -54,28 +45,6 @@ pub const CLAIMS: &[Claim] = &[
         check: e22,
     },
 ];
-
-/// The examples the summary names (Figures 4.14, 4.15), decided by
-/// certified minima; the "adequate conditions" themselves are not printed.
-fn t58() -> Verdict {
-    let parts = vec![
-        (
-            "Figure 4.14 (G², Table 4.5)".to_string(),
-            positivity("thesis-table-4.5", Scheme::G2, Variant::Printed),
-        ),
-        (
-            "Figure 4.15 (G¹, Table 4.6)".to_string(),
-            positivity("thesis-table-4.6", Scheme::G1, Variant::Printed),
-        ),
-    ];
-    let method = parts[0].1.method.clone();
-    let mut v = Verdict::all(method, parts);
-    v.evidence.insert(
-        0,
-        "no positivity condition is printed (none on m, n, α, β): the general statement cannot be decided; the two instances the summary names are, on the printed schemes (as T24e and T24f)",
-    );
-    v
-}
 
 /// `P` at one end of the thesis cubic (3.7), derivatives of order 0–2 in
 /// `wrt`, for control points `points` (one coordinate).
@@ -202,68 +171,6 @@ fn t59() -> Verdict {
             ("C¹ ⇒ identical normal curvature".into(), d),
         ],
     )
-}
-
-/// (5.12) with derivatives in `wrt`: the printed values against the
-/// boundary curves in v of (3.7).
-fn terminal(wrt: Wrt) -> Verdict {
-    let m = Sym::var("m");
-    let p = |k: i64| Sym::var(&format!("P{k}"));
-    let lin = |a: i64, b: i64| q(a) * &m + &q(b);
-    let end = cubic_end(&m, &symbols("P", 4), End::End, wrt);
-    let start = cubic_end(&m, &[p(4), p(5), p(6), p(7)], End::Start, wrt);
-    identities(vec![
-        ("S(0; m) − P4".into(), start[0].clone(), p(4)),
-        ("S(1; m) − P3".into(), end[0].clone(), p(3)),
-        (
-            "S'(0; m)".into(),
-            start[1].clone(),
-            lin(1, 2) * &(p(5) - &p(4)),
-        ),
-        (
-            "S'(1; m)".into(),
-            end[1].clone(),
-            lin(1, 2) * &(p(3) - &p(2)),
-        ),
-        (
-            "S''(0; m)".into(),
-            start[2].clone(),
-            q(2) * &p(6) - &(lin(4, 4) * &p(5)) + &(lin(4, 2) * &p(4)),
-        ),
-        (
-            "S''(1; m)".into(),
-            end[2].clone(),
-            q(2) * &p(1) - &(lin(4, 4) * &p(2)) + &(lin(4, 2) * &p(3)),
-        ),
-    ])
-}
-
-/// As printed ("with respect to u") and with the derivatives in the angle
-/// θ = πu/2, the convention of 4.2.1 (T10).
-fn t60() -> Verdict {
-    let in_u = terminal(Wrt::U);
-    let in_angle = terminal(Wrt::Angle);
-    let status = match (in_u.status, in_angle.status) {
-        (Status::Holds, _) => Status::Holds,
-        (Status::Fails, Status::Holds) => Status::HoldsAfterCorrection,
-        (s, _) => s,
-    };
-    let mut v = Verdict::all(
-        IDENTITY,
-        vec![
-            ("as printed, d/du".into(), in_u),
-            ("d/dθ, θ = πu/2".into(), in_angle),
-        ],
-    );
-    v.status = status;
-    v.evidence.insert(
-        0,
-        "read as the boundary curves in v of (5.11) (the printed S(0; m) drops the u-dependence: each column of the net is a curve of (3.7)); decided together with T10, whose values are the same",
-    );
-    if status == Status::HoldsAfterCorrection {
-        v = v.with_correction("the primes of (5.12) are derivatives with respect to the angle θ = πu/2 (as in 4.2.1, T10), not u; in u they carry the factors π/2 and (π/2)²");
-    }
-    v
 }
 
 /// The implication from the basis symmetry is exact; its premise needs the

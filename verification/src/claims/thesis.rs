@@ -7,16 +7,12 @@ use trig_core::Family;
 use trig_symbolic::Sym;
 
 use crate::claim::Claim;
-use trig_judge::exact::{basis, identities, sum, symbols};
+use trig_judge::exact::{basis, identities, symbols};
 use trig_verdict::evidence::Evidence;
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
 pub const CLAIMS: &[Claim] = &[
-    Claim {
-        id: "T27",
-        check: t27,
-    },
     Claim {
         id: "T37",
         check: t37,
@@ -61,35 +57,4 @@ fn t37() -> Verdict {
         .witnessed(witness.filter(|_| status == Status::Fails)),
     );
     Verdict::new(status, trig_judge::exact::IDENTITY, evidence)
-}
-
-fn t27() -> Verdict {
-    let residual = sum(&basis(Family::ThesisCubic)) - &Sym::one();
-    let (status, reading) = if residual.is_zero() {
-        (
-            Status::Fails,
-            "identically in m: the functions sum to 1 for every real m; outside [−2, 1] what can fail is nonnegativity, not normalisation",
-        )
-    } else {
-        (Status::Holds, "not identically zero in m")
-    };
-    // at a parameter outside the range, the sum is 1 at every point
-    let two = Rational::from(2);
-    let point = [
-        ("m".to_string(), two.clone()),
-        ("s".to_string(), Rational::from((3, 5))),
-        ("c".to_string(), Rational::from((4, 5))),
-    ];
-    let total = sum(&basis(Family::ThesisCubic));
-    let witness = trig_verdict::witness::of_exprs(
-        &point,
-        &["m".into(), "s".into(), "c".into()],
-        &[("Σ b_i (claimed ≠ 1)", &total)],
-    );
-    Verdict::new(
-        status,
-        trig_judge::exact::IDENTITY,
-        [Evidence::note(format!("Σ b_i − 1 = {residual}, {reading}"))
-            .witnessed(witness.filter(|_| status == Status::Fails))],
-    )
 }

@@ -12,6 +12,7 @@
 //! (test `spec_thesis_cubic_matches_builtin`).
 
 mod joins;
+mod negation;
 
 use std::sync::Arc;
 use std::time::Duration;
@@ -276,7 +277,11 @@ pub fn decide_in(spec: &Spec, claim: &SpecClaim) -> Verdict {
 /// The file's notes follow the evidence.
 pub fn decide(spec: &Spec, claim: &SpecClaim) -> Verdict {
     let v = decide_stated(spec, claim);
-    let mut v = if claim.negated { negation(v) } else { v };
+    let mut v = if claim.negated {
+        negation::negation(v, || negation::instance(spec, claim))
+    } else {
+        v
+    };
     v.evidence.extend(claim.notes.iter().map(String::as_str));
     v
 }
@@ -318,34 +323,6 @@ pub fn decide_parts(parts: &[(&Spec, &trig_specfile::Part)], notes: &[String]) -
 }
 
 const PARTS: &str = "every part decided on its own basis as it is stated: the claim holds when every part holds, fails when one fails";
-
-/// The negation of a check's verdict: holds where the check fails (its
-/// counterexample proves the negation) and fails where it holds (its proof
-/// refutes it); a check that holds only after a correction of its print
-/// leaves the negation undecided, and an undecided check stays undecided.
-fn negation(v: Verdict) -> Verdict {
-    let (status, line) = match v.status {
-        Status::Fails => (
-            Status::Holds,
-            "the claim is the negation of the check, which fails: the counterexample below proves the claim",
-        ),
-        Status::Holds => (
-            Status::Fails,
-            "the claim is the negation of the check, which holds: the proof below refutes the claim",
-        ),
-        Status::HoldsAfterCorrection => (
-            Status::NotCheckable,
-            "the claim is the negation of the check, whose print fails but holds after the correction below: which of the two the negation is about is not decided",
-        ),
-        Status::NotCheckable => (
-            Status::NotCheckable,
-            "the claim is the negation of the check, which is not decided",
-        ),
-    };
-    let mut out = Verdict::new(status, v.method.clone(), vec![line.to_string()]);
-    out.evidence.extend(v.evidence);
-    out
-}
 
 fn decide_stated(spec: &Spec, claim: &SpecClaim) -> Verdict {
     if claim.given.is_empty() {
