@@ -355,11 +355,13 @@ mod tests {
             identities,
             curves,
             readings,
+            lets,
+            change,
         } = &spec.claims[0].check
         else {
             panic!("an identity claim");
         };
-        printed_identities(&spec, identities, curves, readings)
+        printed_identities(&spec, identities, curves, readings, lets, change.as_ref())
     }
 
     #[test]

@@ -293,8 +293,7 @@ fn one(
     };
     let (formula, partials) = partials(src, spec, formula, item, extra)?;
     let arguments = changed.then_some(extra);
-    let (rest, applications) =
-        applications(src, spec, &formula, item, curves, arguments, lets)?;
+    let (rest, applications) = applications(src, spec, &formula, item, curves, arguments, lets)?;
     let sides: Vec<&str> = rest.split('=').collect();
     if sides.len() != 2 {
         return src.invalid(

@@ -189,4 +189,3 @@ pub struct RawReading {
     #[serde(rename = "as")]
     pub read: Spanned<String>,
 }
-

@@ -12,12 +12,10 @@ use trig_verdict::evidence::Evidence;
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
-pub const CLAIMS: &[Claim] = &[
-    Claim {
-        id: "T37",
-        check: t37,
-    },
-];
+pub const CLAIMS: &[Claim] = &[Claim {
+    id: "T37",
+    check: t37,
+}];
 
 fn points(n: usize) -> Vec<Sym> {
     symbols("P", n)

@@ -125,7 +125,8 @@ fn sides(spec: &Spec, check: &Check) -> Option<Identities> {
             ..
         } => {
             let sides =
-                trig_judge::identity::sides(spec, identities, curves, lets, change.as_ref()).ok()?;
+                trig_judge::identity::sides(spec, identities, curves, lets, change.as_ref())
+                    .ok()?;
             Some((
                 sides
                     .into_iter()
