@@ -51,7 +51,11 @@ fn signed_numerator(g: &Sym, trigonometric: bool) -> Result<UPoly, String> {
         }
     }
     UPoly::from_poly(gz.numerator(), "z")
-        .ok_or_else(|| format!("the derivative depends on symbols other than z: {gz}"))
+        .ok_or_else(|| {
+            format!(
+                "the derivative depends on symbols other than the variable (z = tan(θ/2), or t): the maxima are counted for fixed parameter values (a claim's `at`): {gz}"
+            )
+        })
 }
 
 /// The derivative's sign profile and the maxima of `f` on its domain.
