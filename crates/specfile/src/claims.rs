@@ -2,20 +2,20 @@
 //! ([`crate::check`]), after the functions ([`crate::spec`]).
 
 use toml::Spanned;
-use trig_deriv::End;
 use trig_symbolic::Names;
 
 use crate::check::{Check, Printed, RationalCurve, SpecClaim, Varied};
 use crate::error::{Result, SpecError};
-use crate::fields::{formula_in, function_index, need, wrt_field};
+use crate::fields::{
+    data_file, end_field, file_field, formula_in, function_index, need, order_field, wrt_field,
+};
 use crate::given_read::{given, one_param_range};
 use crate::property_read::{conic, monotone, shape_effect, symmetry};
 use crate::raw::RawClaim;
 use crate::source::Source;
-use crate::spec::{MAX_ORDER, Spec};
+use crate::spec::Spec;
 use std::path::Path;
 
-use trig_core::input::{MAX_TEXT_BYTES, Source as Input, read_text};
 use trig_interp::{DataSet, Scheme};
 
 impl Spec {
@@ -63,21 +63,6 @@ fn printed(src: &Source<'_>, spec: &Spec, items: &[Spanned<String>]) -> Result<V
             })
         })
         .collect()
-}
-
-pub(crate) fn order_field(src: &Source<'_>, c: &RawClaim, order: &Spanned<i64>) -> Result<usize> {
-    usize::try_from(*order.get_ref())
-        .ok()
-        .filter(|k| *k <= MAX_ORDER)
-        .ok_or_else(|| SpecError::Invalid {
-            at: src.at(order.span().start),
-            field: "claims.order".into(),
-            message: format!(
-                "{}: expected an order from 0 to {MAX_ORDER} (claim `{}`)",
-                order.get_ref(),
-                c.id.get_ref()
-            ),
-        })
 }
 
 /// Reads the claims of the file into `spec`, whose functions are read;
@@ -507,27 +492,6 @@ fn interpolant(src: &Source<'_>, c: &RawClaim) -> Result<(String, DataSet, Schem
     Ok((path, data, scheme))
 }
 
-/// The table file `data = "…"` names (relative to the claim's file), as
-/// written and as read: a file that cannot be read is an error of the file.
-pub(crate) fn data_file(src: &Source<'_>, c: &RawClaim) -> Result<(String, String)> {
-    file_field(src, need(src, c, &c.data, "data")?, "data")
-}
-
-/// The file a field names (relative to the claim's file), as written and
-/// as read: a file that cannot be read is an error of the file.
-fn file_field(src: &Source<'_>, path: &Spanned<String>, field: &str) -> Result<(String, String)> {
-    let dir = Path::new(src.file).parent().unwrap_or(Path::new(""));
-    let file = dir.join(path.get_ref().trim());
-    match read_text(&Input::of(&file), MAX_TEXT_BYTES) {
-        Ok(text) => Ok((path.get_ref().trim().to_string(), text)),
-        Err(e) => src.invalid(
-            path.span(),
-            &format!("claims.{field}"),
-            format!("{}: {}", file.display(), e.reason()),
-        ),
-    }
-}
-
 /// `other = "han.toml"` (a spec file, relative to the claim's file: read
 /// here, its basis only) and `params = { lambda = "m" }`: each of its
 /// parameters as a formula in this basis's parameters.
@@ -689,18 +653,6 @@ fn scope_field(src: &Source<'_>, scope: &Spanned<String>, field: &str) -> Result
             scope.span(),
             &format!("claims.{field}"),
             format!("`{other}`: expected `segment` (one value per segment) or `curve` (one value for the whole curve)"),
-        ),
-    }
-}
-
-pub(crate) fn end_field(src: &Source<'_>, end: &Spanned<String>) -> Result<End> {
-    match end.get_ref().trim() {
-        "start" | "0" => Ok(End::Start),
-        "end" | "1" => Ok(End::End),
-        other => src.invalid(
-            end.span(),
-            "claims.end",
-            format!("`{other}`: expected `start` or `end`"),
         ),
     }
 }

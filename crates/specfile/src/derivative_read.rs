@@ -37,8 +37,8 @@ pub(crate) fn endpoint_derivatives(src: &Source<'_>, spec: &Spec, c: &RawClaim) 
                 let span = curves.first().map_or(c.check.span(), |k| k.name.span());
                 return src.invalid(span, "claims.curves", "curves are named in values of the form `NAME'(END) = formula`, not with `end` and `order`".into());
             }
-            let end = crate::claims::end_field(src, end)?;
-            let order = crate::claims::order_field(src, c, order)?;
+            let end = crate::fields::end_field(src, end)?;
+            let order = crate::fields::order_field(src, c, order)?;
             one_order(src, spec, items, end, order)?
         }
         (None, None) => {

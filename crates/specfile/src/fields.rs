@@ -1,16 +1,19 @@
 //! The fields every kind of claim reads alike: a required field, a
 //! function by name, a formula inside a printed item, the convention of a
-//! derivative (`wrt`). Shared by the readers of the checks (`claims.rs`,
-//! `property_read.rs`, `join_read.rs`).
+//! derivative (`wrt`), a derivative order, an end, a file beside the claim's
+//! file. Shared by the readers of the checks (`claims.rs`,
+//! `property_read.rs`, `join_read.rs`, `derivative_read.rs`, `listing.rs`).
 
+use std::path::Path;
 use toml::Spanned;
-use trig_deriv::Wrt;
+use trig_core::input::{MAX_TEXT_BYTES, Source as Input, read_text};
+use trig_deriv::{End, Wrt};
 use trig_symbolic::Sym;
 
 use crate::error::{Result, SpecError};
 use crate::raw::RawClaim;
 use crate::source::Source;
-use crate::spec::Spec;
+use crate::spec::{MAX_ORDER, Spec};
 
 pub(crate) fn need<'r, T>(
     src: &Source<'_>,
@@ -114,5 +117,59 @@ pub(crate) fn wrt_field(
         t if t == spec.var_name => Ok(Wrt::Variable),
         "u" if spec.legacy.is_none() => Ok(Wrt::U),
         other => refuse(other),
+    }
+}
+
+/// `order = k`: a derivative order from 0 to [`MAX_ORDER`].
+pub(crate) fn order_field(src: &Source<'_>, c: &RawClaim, order: &Spanned<i64>) -> Result<usize> {
+    usize::try_from(*order.get_ref())
+        .ok()
+        .filter(|k| *k <= MAX_ORDER)
+        .ok_or_else(|| SpecError::Invalid {
+            at: src.at(order.span().start),
+            field: "claims.order".into(),
+            message: format!(
+                "{}: expected an order from 0 to {MAX_ORDER} (claim `{}`)",
+                order.get_ref(),
+                c.id.get_ref()
+            ),
+        })
+}
+
+/// `end = "start"` or `"end"` (also `0`, `1`).
+pub(crate) fn end_field(src: &Source<'_>, end: &Spanned<String>) -> Result<End> {
+    match end.get_ref().trim() {
+        "start" | "0" => Ok(End::Start),
+        "end" | "1" => Ok(End::End),
+        other => src.invalid(
+            end.span(),
+            "claims.end",
+            format!("`{other}`: expected `start` or `end`"),
+        ),
+    }
+}
+
+/// The table file `data = "…"` names (relative to the claim's file), as
+/// written and as read: a file that cannot be read is an error of the file.
+pub(crate) fn data_file(src: &Source<'_>, c: &RawClaim) -> Result<(String, String)> {
+    file_field(src, need(src, c, &c.data, "data")?, "data")
+}
+
+/// The file a field names (relative to the claim's file), as written and
+/// as read: a file that cannot be read is an error of the file.
+pub(crate) fn file_field(
+    src: &Source<'_>,
+    path: &Spanned<String>,
+    field: &str,
+) -> Result<(String, String)> {
+    let dir = Path::new(src.file).parent().unwrap_or(Path::new(""));
+    let file = dir.join(path.get_ref().trim());
+    match read_text(&Input::of(&file), MAX_TEXT_BYTES) {
+        Ok(text) => Ok((path.get_ref().trim().to_string(), text)),
+        Err(e) => src.invalid(
+            path.span(),
+            &format!("claims.{field}"),
+            format!("{}: {}", file.display(), e.reason()),
+        ),
     }
 }

@@ -46,7 +46,7 @@ pub(crate) fn surface_join(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Resul
             );
         }
     };
-    let (path, text) = crate::claims::data_file(src, c)?;
+    let (path, text) = crate::fields::data_file(src, c)?;
     let data_span = need(src, c, &c.data, "data")?.span();
     let nets = listing(spec, &text).map_err(|(line, message)| SpecError::Invalid {
         at: src.at(data_span.start),
