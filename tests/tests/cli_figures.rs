@@ -1,5 +1,5 @@
-//! The figures the audit report links (`trig_verification::figures`): each is
-//! drawn by the `trig-audit` command it states, into a scratch directory here
+//! The figures the audit report links (`[claims.figure]` of the document
+//! files): each is drawn by the `trig-audit` command the report states, into a scratch directory here
 //! (or over the committed file with `TRIG_AUDIT_REDRAW_FIGURES=1`, which is
 //! what `./run.sh figures` does), and the committed file exists, with its
 //! data (`.csv`) and its pgfplots code (`.tex`) beside it; the pgfplots code
@@ -7,8 +7,6 @@
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
-
-use trig_verification::figures::FIGURES;
 
 fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -22,11 +20,17 @@ fn every_linked_figure_is_drawn_by_its_command_and_committed() {
     let redraw = std::env::var_os("TRIG_AUDIT_REDRAW_FIGURES").is_some();
     let scratch = std::env::temp_dir().join(format!("trig-audit-figures-{}", std::process::id()));
     std::fs::create_dir_all(&scratch).expect("scratch directory");
-    for f in FIGURES {
+    let entries = trig_verification::run(None, None).expect("the document files");
+    let figures: Vec<_> = entries
+        .iter()
+        .filter_map(|e| e.figure.as_ref().map(|f| (e.id.as_str(), f)))
+        .collect();
+    assert!(!figures.is_empty(), "the report links no figure");
+    for (claim, f) in figures {
         let target = if redraw {
-            root().join(f.path)
+            root().join(&f.path)
         } else {
-            scratch.join(Path::new(f.path).file_name().expect("file name"))
+            scratch.join(Path::new(&f.path).file_name().expect("file name"))
         };
         let target = target.to_string_lossy().into_owned();
         let args: Vec<&str> = f
@@ -35,26 +39,24 @@ fn every_linked_figure_is_drawn_by_its_command_and_committed() {
             .map(|a| if a == f.path { target.as_str() } else { a })
             .collect();
         let out = trig_e2e::written(&args);
-        assert!(out.contains("wrote"), "{}: {out}", f.claim);
+        assert!(out.contains("wrote"), "{claim}: {out}");
         let svg = std::fs::read_to_string(&target).expect("figure written");
         assert!(
             svg.starts_with("<svg") || svg.starts_with("<?xml"),
-            "{}",
-            f.claim
+            "{claim}"
         );
         let data = std::fs::read_to_string(Path::new(&target).with_extension("csv"))
             .expect("the data written beside the figure");
-        assert!(data.starts_with("series,point,x,y\n"), "{}", f.claim);
+        assert!(data.starts_with("series,point,x,y\n"), "{claim}");
         let pgf = Path::new(&target).with_extension("tex");
         let tex = std::fs::read_to_string(&pgf).expect("the pgfplots code beside the figure");
-        assert!(tex.is_ascii(), "{}: non-ASCII pgfplots code", f.claim);
+        assert!(tex.is_ascii(), "{claim}: non-ASCII pgfplots code");
         assert!(
             tex.contains("\\begin{axis}") && tex.contains("\\addlegendentry{"),
-            "{}",
-            f.claim
+            "{claim}"
         );
-        compiles(&pgf, &scratch, f.claim);
-        for path in [f.path.to_string(), f.data_path(), f.pgf_path()] {
+        compiles(&pgf, &scratch, claim);
+        for path in [f.path.clone(), f.data_path(), f.pgf_path()] {
             assert!(root().join(&path).exists(), "{path} is not committed");
         }
     }

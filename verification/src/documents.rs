@@ -12,7 +12,7 @@ use trig_verdict::Verdict;
 
 use crate::claim::Claim;
 use crate::entry::{Document, Entry};
-use crate::figures;
+use crate::figures::Figure;
 
 /// Why the document files cannot be audited.
 #[derive(Debug, thiserror::Error)]
@@ -137,9 +137,11 @@ fn umbrella(
 
 /// The claims of `documents` (those of the document with id `only_document`
 /// and the claim with id `only_claim`, case-insensitive, when given),
-/// decided on every available core, in the files' order.
+/// decided on every available core, in the files' order. Figures are
+/// linked by their path from `root` (the folder above `documents/`).
 pub fn audit(
     documents: &[DocumentFile],
+    root: &Path,
     only_document: Option<&str>,
     only_claim: Option<&str>,
 ) -> Result<Vec<Entry>, DocumentsError> {
@@ -161,7 +163,7 @@ pub fn audit(
                 source: c.source().to_string(),
                 statement: c.statement().to_string(),
                 verdict: Verdict::not_checkable("not decided yet"),
-                figure: figures::for_claim(c.id()),
+                figure: c.figure().map(|f| Figure::of(f, root)),
             };
             chosen.push((entry, decider));
         }

@@ -39,7 +39,7 @@ pub struct Entry {
     pub statement: String,
     pub verdict: Verdict,
     /// A figure supporting the verdict ([`crate::figures`]).
-    pub figure: Option<&'static Figure>,
+    pub figure: Option<Figure>,
 }
 
 impl Entry {

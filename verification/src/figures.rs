@@ -1,52 +1,45 @@
 //! Figures that support a verdict where a picture helps, linked from the
-//! report. Each is drawn by `trig-audit plot` into `docs/figures/` with the
-//! command stated here (`./run.sh figures` redraws them all), without a
-//! title (the caption says what each shows); the test
-//! `tests/tests/cli_figures.rs` checks that every file exists.
+//! report. A claim's file gives its figure (`[claims.figure]`: the file,
+//! the caption, the `trig-audit plot` arguments that draw it, without a
+//! title: the caption says what it shows); `./run.sh figures` redraws those
+//! of the document files, and the test `tests/tests/cli_figures.rs` checks
+//! that every one is drawn by its command and committed.
 
-use std::path::{Component, Path};
+use std::path::{Component, Path, PathBuf};
 
-/// A figure supporting the verdict of one claim: the SVG, with its
-/// pgfplots code (`.tex`) and its data (`.csv`) beside it.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+use trig_specfile::ClaimFigure;
+
+/// A figure supporting the verdict of a claim (`[claims.figure]` of its
+/// file): the SVG, with its pgfplots code (`.tex`) and its data (`.csv`)
+/// beside it.
+#[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Figure {
-    pub claim: &'static str,
-    /// Path from the repository root.
-    pub path: &'static str,
-    pub caption: &'static str,
+    /// Path from the root the report's paths start at (the repository
+    /// root for the audit of `documents/`).
+    pub path: String,
+    pub caption: String,
     /// The `trig-audit` arguments that draw it.
-    pub command: &'static str,
+    pub command: String,
 }
 
-/// Every figure, by claim.
-pub const FIGURES: &[Figure] = &[
-    Figure {
-        claim: "T7",
-        path: "docs/figures/audit-T7-thesis-cubic-outside-range.svg",
-        caption: "the thesis cubic basis at m = −5/2, 0, 3/2: outside [−2, 1] functions dip below 0",
-        command: "plot basis --family thesis-cubic --values=-2.5,0,1.5 --allow-outside-range --no-title --output docs/figures/audit-T7-thesis-cubic-outside-range.svg",
-    },
-    Figure {
-        claim: "T30",
-        path: "docs/figures/audit-T30-han-versus-listing.svg",
-        caption: "the Appendix 2 listing's functions (wide, light; b20 with sin) under Han's (6.2) as printed (thin) at λ = −1 (solid), 0 (dashed), 1 (dotted): b0, b1, b3 coincide, b2 differs except at λ = 0",
-        command: "plot basis --family han-listing --versus han --values=-1,0,1 --no-title --output docs/figures/audit-T30-han-versus-listing.svg",
-    },
-    Figure {
-        claim: "T24f",
-        path: "docs/figures/audit-T24f-table-4.6-g1.svg",
-        caption: "the G¹ interpolant of Table 4.6 as printed: it dips below 0 near x = 1.57",
-        command: "plot interp --data thesis-table-4.6 --scheme g1 --no-title --output docs/figures/audit-T24f-table-4.6-g1.svg",
-    },
-    Figure {
-        claim: "M2",
-        path: "docs/figures/audit-M2-seed000-uniform.svg",
-        caption: "the seed 000 uniform segment functions at ζ = 0, 1/2, 4",
-        command: "plot basis --family seed000-uniform --values=0,0.5,4 --no-title --output docs/figures/audit-M2-seed000-uniform.svg",
-    },
-];
-
 impl Figure {
+    /// The figure of a claim's file, its path given from `root` (when it
+    /// lies under it; otherwise as the file gives it), both simplified.
+    pub fn of(figure: &ClaimFigure, root: &Path) -> Figure {
+        let at = simplified(&figure.path);
+        let root = simplified(root);
+        let path = at
+            .strip_prefix(&root)
+            .unwrap_or(&at)
+            .to_string_lossy()
+            .into_owned();
+        Figure {
+            command: format!("plot {} --no-title --output {path}", figure.plot),
+            caption: figure.caption.clone(),
+            path,
+        }
+    }
+
     /// The file beside the figure with extension `ext`.
     fn beside(&self, ext: &str) -> String {
         match self.path.rsplit_once('.') {
@@ -66,9 +59,20 @@ impl Figure {
     }
 }
 
-/// The figure of a claim, if any.
-pub fn for_claim(id: &str) -> Option<&'static Figure> {
-    FIGURES.iter().find(|f| f.claim == id)
+/// `path` with `.` dropped and each `dir/..` folded, without reading the
+/// file system (`documents/thesis/../../docs/x.svg` → `docs/x.svg`).
+fn simplified(path: &Path) -> PathBuf {
+    let mut out: Vec<Component> = Vec::new();
+    for c in path.components() {
+        match c {
+            Component::CurDir => {}
+            Component::ParentDir if matches!(out.last(), Some(Component::Normal(_))) => {
+                out.pop();
+            }
+            other => out.push(other),
+        }
+    }
+    out.iter().collect()
 }
 
 /// `target` (a path from the current directory) relative to the directory
@@ -107,5 +111,31 @@ mod tests {
         assert_eq!(relative("src/lib.rs", Some(&here)), "src/lib.rs");
         assert_eq!(relative("src/lib.rs", None), "src/lib.rs");
         assert_eq!(relative("no/such/file", Some(&dir)), "no/such/file");
+    }
+
+    #[test]
+    fn a_figure_is_given_from_the_root_with_its_command() {
+        let spec = ClaimFigure {
+            path: PathBuf::from("/r/./documents/thesis/../../docs/figures/a.svg"),
+            caption: "c".into(),
+            plot: "basis --family f".into(),
+        };
+        let f = Figure::of(&spec, Path::new("/r/documents/.."));
+        assert_eq!(f.path, "docs/figures/a.svg");
+        assert_eq!(
+            f.command,
+            "plot basis --family f --no-title --output docs/figures/a.svg"
+        );
+        assert_eq!(f.data_path(), "docs/figures/a.csv");
+        let elsewhere = Figure::of(&spec, Path::new("/elsewhere"));
+        assert_eq!(elsewhere.path, "/r/docs/figures/a.svg");
+        let relative_file = ClaimFigure {
+            path: PathBuf::from("documents/thesis/../../docs/figures/a.svg"),
+            ..spec
+        };
+        assert_eq!(
+            Figure::of(&relative_file, Path::new("")).path,
+            "docs/figures/a.svg"
+        );
     }
 }

@@ -34,8 +34,10 @@ pub fn checkers() -> Vec<Claim> {
 /// and the claim with id `claim`, case-insensitive, when given), decided,
 /// in report order.
 pub fn run(document: Option<&str>, claim: Option<&str>) -> Result<Vec<Entry>, DocumentsError> {
+    let dir = documents::default_dir();
     documents::audit(
-        &documents::load(&documents::default_dir())?,
+        &documents::load(&dir)?,
+        dir.parent().unwrap_or(std::path::Path::new("")),
         document,
         claim,
     )

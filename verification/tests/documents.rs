@@ -30,7 +30,7 @@ fn every_rust_checker_is_a_built_in_claim_of_one_document() {
 fn one_document_folder_audits_as_its_part_of_the_whole() {
     let dir = default_dir().join("c3-bspline");
     let document = trig_specfile::DocumentFile::from_path(&dir).expect("the seed 003 file");
-    let alone = audit(&[document], None, None).expect("audited");
+    let alone = audit(&[document], std::path::Path::new(""), None, None).expect("audited");
     let part = run(Some("003"), None).expect("the document files");
     let strip =
         |e: &trig_verification::Entry| (e.id.clone(), e.statement.clone(), e.verdict.clone());
@@ -55,7 +55,7 @@ fn an_umbrella_of_parts_is_decided_part_by_part() {
         );
         let doc = trig_specfile::DocumentFile::from_str_in(&text, "x.toml", &catalog)
             .expect("a document of parts");
-        audit(&[doc], None, None)
+        audit(&[doc], std::path::Path::new(""), None, None)
             .expect("audited")
             .remove(0)
             .verdict

@@ -157,9 +157,9 @@ pub fn json_entries(entries: &[Entry], intro: &str, view: &View) -> Report {
                 verdict: e.verdict.status,
                 method: e.verdict.method.clone(),
                 correction: e.verdict.correction.clone(),
-                figure: e.figure.map(|f| f.path.to_string()),
-                figure_data: e.figure.map(|f| f.data_path()),
-                figure_pgf: e.figure.map(|f| f.pgf_path()),
+                figure: e.figure.as_ref().map(|f| f.path.to_string()),
+                figure_data: e.figure.as_ref().map(|f| f.data_path()),
+                figure_pgf: e.figure.as_ref().map(|f| f.pgf_path()),
                 witness: (e.verdict.status != Status::Holds)
                     .then(|| e.witness().map(|(_, w)| w.clone()))
                     .flatten(),

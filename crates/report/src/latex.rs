@@ -130,7 +130,7 @@ fn figure_file(f: &Figure) -> Option<(String, bool)> {
         .path
         .rsplit_once('.')
         .map(|(stem, _)| stem)
-        .unwrap_or(f.path);
+        .unwrap_or(&f.path);
     [
         (format!("{pdf}.pdf"), true),
         (format!("{pdf}.png"), true),
@@ -201,11 +201,11 @@ impl Format for Latex<'_> {
         let base = self.options.output_dir.as_deref();
         let reference = format!(
             "\\texttt{{{}}}; data \\texttt{{{}}}; pgfplots \\texttt{{{}}}",
-            breakable(&relative(f.path, base)),
+            breakable(&relative(&f.path, base)),
             breakable(&relative(&f.data_path(), base)),
             breakable(&relative(&f.pgf_path(), base))
         );
-        let caption = prose(f.caption);
+        let caption = prose(&f.caption);
         match figure_file(f) {
             None => format!("{caption} ({reference})"),
             Some((file, true)) => {

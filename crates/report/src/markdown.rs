@@ -116,8 +116,8 @@ impl Format for Markdown<'_> {
     fn figure(&self, f: &Figure) -> String {
         format!(
             "[{}]({}) (drawn by `trig-audit {}`; data: `{}`; pgfplots: `{}`)",
-            md_text(f.caption),
-            relative(f.path, self.output_dir),
+            md_text(&f.caption),
+            relative(&f.path, self.output_dir),
             f.command,
             relative(&f.data_path(), self.output_dir),
             relative(&f.pgf_path(), self.output_dir)

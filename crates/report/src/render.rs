@@ -165,7 +165,7 @@ fn entry<F: Format>(f: &F, out: &mut String, e: &Entry, method: usize) {
         let line = f.witnessed(&subject.join(F::NESTED), &witness_line(f, w));
         f.field(out, "Witness", &line);
     }
-    if let Some(fig) = e.figure {
+    if let Some(fig) = &e.figure {
         f.field(out, "Figure", &f.figure(fig));
     }
     evidence(f, out, &v.evidence, witness.map(|(item, _)| item));

@@ -528,6 +528,22 @@ pub struct SpecClaim {
     /// print is read, what the document says beside the claim; they never
     /// change the verdict.
     pub notes: Vec<String>,
+    /// A figure supporting the verdict (`[claims.figure]`).
+    pub figure: Option<ClaimFigure>,
+}
+
+/// A figure supporting a claim's verdict: an SVG drawn by `trig-audit
+/// plot`, with its data (`.csv`) and pgfplots code (`.tex`) beside it.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ClaimFigure {
+    /// Where the figure is: the claim's file's directory joined with the
+    /// path written (`../../docs/figures/T7.svg`), not simplified.
+    pub path: std::path::PathBuf,
+    /// What it shows.
+    pub caption: String,
+    /// The arguments of `trig-audit plot` that draw it, without the output
+    /// (`basis --family thesis-cubic --values=-2.5,0,1.5`).
+    pub plot: String,
 }
 
 /// A parameter value fixed by a claim.

@@ -466,6 +466,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
         given,
         negated: c.negated == Some(true),
         notes: c.notes.clone().unwrap_or_default(),
+        figure: crate::fields::figure_field(src, c)?,
     })
 }
 

@@ -29,7 +29,7 @@ use serde::Deserialize;
 use toml::Spanned;
 use trig_core::input::{MAX_TEXT_BYTES, Source as Input, read_text};
 
-use crate::check::{Check, SpecClaim};
+use crate::check::{Check, ClaimFigure, SpecClaim};
 use crate::claims::{claim, umbrellas_among};
 use crate::error::{Result, SpecError};
 use crate::raw::RawClaim;
@@ -94,6 +94,8 @@ pub enum DocumentClaim {
         parts: Vec<Part>,
         /// Remarks shown after the parts' evidence.
         notes: Vec<String>,
+        /// A figure supporting the verdict.
+        figure: Option<ClaimFigure>,
     },
 }
 
@@ -130,6 +132,15 @@ impl DocumentClaim {
             DocumentClaim::Stated { claim, .. } => &claim.statement,
             DocumentClaim::BuiltIn { statement, .. } => statement,
             DocumentClaim::Parts { statement, .. } => statement,
+        }
+    }
+
+    /// The figure supporting the claim's verdict, if the file gives one.
+    pub fn figure(&self) -> Option<&ClaimFigure> {
+        match self {
+            DocumentClaim::Stated { claim, .. } => claim.figure.as_ref(),
+            DocumentClaim::BuiltIn { .. } => None,
+            DocumentClaim::Parts { figure, .. } => figure.as_ref(),
         }
     }
 }
@@ -331,6 +342,7 @@ fn umbrella_of_parts(
         statement: c.statement.get_ref().clone(),
         parts,
         notes: c.notes.clone().unwrap_or_default(),
+        figure: crate::fields::figure_field(src, c)?,
     })
 }
 
@@ -487,6 +499,27 @@ mod tests {
         // each basis holds the document's claims about it, and only those
         assert_eq!(doc.bases[0].1.claims.len(), 1);
         assert_eq!(doc.bases[0].1.claims[0].id, "c");
+    }
+
+    #[test]
+    fn a_figure_is_read_relative_to_the_file_and_must_exist() {
+        let with = |file: &str, plot: &str| {
+            read(&format!(
+                "[bases]\ncubic = \"thesis-cubic.toml\"\n{}[claims.figure]\nfile = \"{file}\"\ncaption = \" c \"\nplot = \"{plot}\"\n",
+                claim("a", None, "unity")
+            ))
+        };
+        let doc = with("Cargo.toml", "basis --family f").unwrap();
+        let figure = doc.claims[0].figure().expect("the figure");
+        assert_eq!(figure.path, Path::new("Cargo.toml"));
+        assert_eq!(
+            (figure.caption.as_str(), figure.plot.as_str()),
+            ("c", "basis --family f")
+        );
+        let e = with("no-such.svg", "basis").unwrap_err();
+        assert!(e.to_string().contains("no-such.svg: no such file"), "{e}");
+        let e = with("Cargo.toml", "basis --output x.svg").unwrap_err();
+        assert!(e.to_string().contains("without `--output`"), "{e}");
     }
 
     #[test]

@@ -1,7 +1,7 @@
 //! The fields every kind of claim reads alike: a required field, a
 //! function by name, a formula inside a printed item, the convention of a
 //! derivative (`wrt`), a derivative order, an end, a file beside the claim's
-//! file. Shared by the readers of the checks (`claims.rs`,
+//! file, a figure. Shared by the readers of the checks (`claims.rs`,
 //! `property_read.rs`, `join_read.rs`, `derivative_read.rs`, `listing.rs`).
 
 use std::path::Path;
@@ -10,6 +10,7 @@ use trig_core::input::{MAX_TEXT_BYTES, Source as Input, read_text};
 use trig_deriv::{End, Wrt};
 use trig_symbolic::Sym;
 
+use crate::check::ClaimFigure;
 use crate::error::{Result, SpecError};
 use crate::raw::RawClaim;
 use crate::source::Source;
@@ -172,4 +173,33 @@ pub(crate) fn file_field(
             format!("{}: {}", file.display(), e.reason()),
         ),
     }
+}
+
+/// `[claims.figure]`, when given: its file must exist (a figure is drawn
+/// before it is linked, by its own `plot` arguments).
+pub(crate) fn figure_field(src: &Source<'_>, c: &RawClaim) -> Result<Option<ClaimFigure>> {
+    let Some(f) = &c.figure else {
+        return Ok(None);
+    };
+    let dir = Path::new(src.file).parent().unwrap_or(Path::new(""));
+    let path = dir.join(f.file.get_ref().trim());
+    if !path.is_file() {
+        return src.invalid(
+            f.file.span(),
+            "claims.figure.file",
+            format!("{}: no such file", path.display()),
+        );
+    }
+    if f.plot.contains("--output") {
+        return src.invalid(
+            f.file.span(),
+            "claims.figure.plot",
+            "`plot` gives the arguments without `--output` (the figure's `file`)".into(),
+        );
+    }
+    Ok(Some(ClaimFigure {
+        path,
+        caption: f.caption.trim().to_string(),
+        plot: f.plot.trim().to_string(),
+    }))
 }

@@ -60,9 +60,10 @@ pub mod spec;
 pub use any::{AnyBasis, OpenError};
 pub use ast::Grammar;
 pub use check::{
-    Across, Application, Applied, Argument, Change, Check, Condition, Curve, Differentiated,
-    Direction, Identity, JoinSegments, Let, ListedNet, Monotone, NamedCurve, Polygons, Printed,
-    PrintedDerivative, Quantifier, RationalCurve, Reading, Seam, SpecClaim, Varied,
+    Across, Application, Applied, Argument, Change, Check, ClaimFigure, Condition, Curve,
+    Differentiated, Direction, Identity, JoinSegments, Let, ListedNet, Monotone, NamedCurve,
+    Polygons, Printed, PrintedDerivative, Quantifier, RationalCurve, Reading, Seam, SpecClaim,
+    Varied,
 };
 pub use check::{Between, Fixed, Given};
 pub use document::{DocumentClaim, DocumentFile, Part};

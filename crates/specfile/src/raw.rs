@@ -169,6 +169,18 @@ pub struct RawClaim {
     pub parts: Option<Vec<RawClaim>>,
     /// A part shown for information (its verdict never decides the umbrella).
     pub shown: Option<bool>,
+    /// A figure supporting the verdict (`[claims.figure]`).
+    pub figure: Option<RawFigure>,
+}
+
+/// `[claims.figure]`: `file` (relative to the claim's file), `caption`, and
+/// `plot`, the `trig-audit plot` arguments that draw it.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawFigure {
+    pub file: Spanned<String>,
+    pub caption: String,
+    pub plot: String,
 }
 
 /// `curves = [{ name = "P", points = ["f0", …] }]`: the curve `Σ bᵢ·pointᵢ`

@@ -238,8 +238,15 @@ pub fn audit_within(
             Box::new(move |s: &Spec| (String::new(), decide(s, &claim))),
         );
     }
-    // the file's claims first, the battery after them
+    // the file's claims first, the battery after them, each claim with the
+    // figure its file gives (from the current directory)
     audit.entries.sort_by_key(|e| e.document.battery);
+    for e in audit.entries.iter_mut().filter(|e| !e.document.battery) {
+        let claim = spec.claims.iter().find(|c| c.id == e.id);
+        e.figure = claim
+            .and_then(|c| c.figure.as_ref())
+            .map(|f| crate::figures::Figure::of(f, std::path::Path::new("")));
+    }
     audit
 }
 

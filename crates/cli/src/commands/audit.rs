@@ -1,7 +1,7 @@
 //! `trig-audit audit`: decide the published claims and print (or write) the
 //! report. Exit status 0 whenever the audit ran, whatever the verdicts.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::time::Duration;
 
 use clap::{Args, ValueEnum};
@@ -114,7 +114,7 @@ pub fn run(args: &AuditArgs) -> CmdResult {
         Some(path) if trig_specfile::document::is_document(path) => {
             let document = DocumentFile::from_path(path)
                 .map_err(|e| CliError::Usage(e.to_string().replace('\n', " ")))?;
-            let entries = documents::audit(&[document], None, args.claim.as_deref())
+            let entries = documents::audit(&[document], Path::new(""), None, args.claim.as_deref())
                 .map_err(|e| CliError::Usage(e.to_string()))?;
             (entries, report::document_intro(&path.display().to_string()))
         }
@@ -253,6 +253,7 @@ fn builtin(args: &AuditArgs) -> Result<Vec<Entry>, CliError> {
             Some(id)
         }
     };
-    documents::audit(&files, seed, args.claim.as_deref())
+    let root = dir.parent().unwrap_or(Path::new(""));
+    documents::audit(&files, root, seed, args.claim.as_deref())
         .map_err(|e| CliError::Usage(e.to_string()))
 }
