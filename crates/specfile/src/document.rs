@@ -346,7 +346,12 @@ fn umbrella_of_parts(
     })
 }
 
-/// The basis a claim names (the file's only basis when it names none).
+/// The checks that use no basis: in a file with several bases their claims
+/// need not name one.
+pub const BASIS_FREE: &[&str] = &["all", "not-printed", "table-arithmetic", "table-quotes"];
+
+/// The basis a claim names (the file's only basis when it names none, the
+/// first for a check of [`BASIS_FREE`]).
 fn basis_of(src: &Source<'_>, bases: &[(String, Spec)], c: &RawClaim) -> Result<usize> {
     Ok(match &c.basis {
         Some(name) => bases
@@ -362,6 +367,9 @@ fn basis_of(src: &Source<'_>, bases: &[(String, Spec)], c: &RawClaim) -> Result<
                 ),
             })?,
         None if bases.len() == 1 => 0,
+        // a check about no basis (an umbrella, a reason, printed tables) is
+        // read against the first: it uses none of it
+        None if !bases.is_empty() && BASIS_FREE.contains(&c.check.get_ref().trim()) => 0,
         None if bases.is_empty() => {
             return src.invalid(
                 c.id.span(),
@@ -531,6 +539,9 @@ mod tests {
                 .contains("names no basis: expected one of `cubic`, `quadratic`"),
             "{e}"
         );
+        let reason = "reason = \"not in this copy\"\n";
+        let doc = read(&format!("{two}{}{reason}", claim("a", None, "not-printed"))).unwrap();
+        assert_eq!(doc.claims[0].id(), "a");
         let e = read(&format!("{two}{}", claim("a", Some("quartic"), "unity"))).unwrap_err();
         assert!(
             e.to_string()
