@@ -16,7 +16,6 @@ mod seed000_appendix_print;
 mod seed002;
 mod seed004;
 mod shape_effect;
-mod thesis;
 mod thesis_interp;
 mod thesis_interp_text;
 mod thesis_out_of_range;
@@ -26,7 +25,6 @@ mod thesis_text;
 /// The Rust checkers of the claims still marked `built-in`.
 pub fn all() -> Vec<Claim> {
     [
-        thesis::CLAIMS,
         seed000::CLAIMS,
         seed000_appendix_c::CLAIMS,
         seed000_appendix_e::CLAIMS,
