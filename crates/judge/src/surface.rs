@@ -17,8 +17,10 @@
 
 use rug::Rational;
 use trig_certify::bernstein::{Tensor, tensor_to_bernstein};
+use trig_core::net::ControlNet;
 use trig_core::surface::{Direction, TensorSurface};
 use trig_core::{Affine, Interval, ParamRange, Ring};
+use trig_specfile::ListedNet;
 use trig_symbolic::{Poly, Sym};
 use trig_verdict::evidence::Evidence;
 use trig_verdict::status::Status;
@@ -370,11 +372,58 @@ pub fn cylinder_distance<B: ExactBasis>(surface: &TensorSurface<B>, radius: &Rat
     )
 }
 
+/// [`cylinder_distance`] of the tensor-product surface of `basis` in both
+/// directions over a printed net (a listing's, `check = "cylinder"`): its
+/// points rational, every parameter of the basis fixed (the claim's `at`);
+/// otherwise `not-checkable`, saying which.
+pub fn net_cylinder_distance<B: ExactBasis + Clone>(
+    basis: &B,
+    net: &ListedNet,
+    radius: &Rational,
+) -> Verdict {
+    if !basis.parameters().is_empty() {
+        return Verdict::not_checkable(
+            "the surface is formed at fixed parameter values: fix every parameter with `at`",
+        );
+    }
+    let points: Option<Vec<Vec<[Rational; 3]>>> = net
+        .points
+        .iter()
+        .map(|row| {
+            row.iter()
+                .map(|p| {
+                    Some([
+                        p[0].as_rational()?,
+                        p[1].as_rational()?,
+                        p[2].as_rational()?,
+                    ])
+                })
+                .collect()
+        })
+        .collect();
+    let Some(points) = points else {
+        return Verdict::not_checkable(format!(
+            "the points of net {} are not all rational numbers",
+            net.name
+        ));
+    };
+    let direction = || Direction {
+        basis: basis.clone(),
+        params: Vec::new(),
+    };
+    match ControlNet::new(points)
+        .map_err(|e| e.to_string())
+        .and_then(|n| TensorSurface::new(direction(), direction(), n).map_err(|e| e.to_string()))
+    {
+        Ok(surface) => cylinder_distance(&surface, radius),
+        Err(why) => Verdict::not_checkable(format!("net {}: {why}", net.name)),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use trig_core::Family;
-    use trig_core::net::ControlNet;
 
     fn q(n: i64, d: i64) -> Rational {
         Rational::from((n, d))
@@ -454,5 +503,45 @@ mod tests {
             &q(1, 1),
         );
         assert_eq!(trig.status, Status::NotCheckable);
+    }
+
+    #[test]
+    fn a_listed_net_is_decided_against_the_cylinder_with_every_parameter_fixed() {
+        let point = |x: &str, y: &str, z: i64| {
+            [x, y]
+                .map(|c| Sym::rational(c.parse::<Rational>().unwrap()))
+                .into_iter()
+                .chain([Sym::int(z)])
+        };
+        let net = |columns: [(&str, &str); 4]| ListedNet {
+            name: "S".into(),
+            points: (0..4)
+                .map(|z| {
+                    columns
+                        .iter()
+                        .map(|(x, y)| {
+                            let p: Vec<Sym> = point(x, y, z).collect();
+                            [p[0].clone(), p[1].clone(), p[2].clone()]
+                        })
+                        .collect()
+                })
+                .collect(),
+        };
+        // a vertical line on the cylinder, and the Bézier quarter circle off it
+        let line = net([("3/5", "4/5"); 4]);
+        let v = net_cylinder_distance(&Family::Bernstein3, &line, &q(1, 1));
+        assert_eq!(v.status, Status::Holds, "{v:?}");
+        let arc = net([("1", "0"), ("1", "1/2"), ("1/2", "1"), ("0", "1")]);
+        assert_eq!(
+            net_cylinder_distance(&Family::Bernstein3, &arc, &q(1, 1)).status,
+            Status::Fails
+        );
+        // a free parameter or a symbolic point: not decided
+        let v = net_cylinder_distance(&Family::Eh, &line, &q(1, 1));
+        assert_eq!(v.status, Status::NotCheckable, "{v:?}");
+        let mut symbolic = line.clone();
+        symbolic.points[0][0][0] = Sym::var("a");
+        let v = net_cylinder_distance(&Family::Bernstein3, &symbolic, &q(1, 1));
+        assert_eq!(v.status, Status::NotCheckable, "{v:?}");
     }
 }

@@ -350,6 +350,15 @@ pub enum Check {
         nets: Vec<ListedNet>,
         seams: Vec<Seam>,
     },
+    /// A tensor-product surface of the basis (in both directions) over the
+    /// one net a listing file builds (`path` as written, relative to the
+    /// claim's file), against the cylinder `x² + y² = radius²` about the
+    /// `z` axis (a surface of revolution).
+    Cylinder {
+        path: String,
+        net: ListedNet,
+        radius: Rational,
+    },
     /// Each function has exactly one maximum on the domain ("each bᵢ has
     /// one maximum value").
     OneMaximum,

@@ -236,6 +236,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                 .collect::<Result<_>>()?,
         },
         "surface-join" => crate::listing::surface_join(src, spec, c)?,
+        "cylinder" => crate::listing::cylinder(src, spec, c)?,
         "all" => Check::All {
             claims: need(src, c, &c.claims, "claims")?
                 .iter()
@@ -322,6 +323,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                     | Check::TableArithmetic { .. }
                     | Check::TableQuotes { .. }
                     | Check::SurfaceJoin { .. }
+                    | Check::Cylinder { .. }
             ),
         ),
         (
@@ -367,7 +369,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                     match field {
                         "claims" | "brief" => "all",
                         "reason" => "not-printed",
-                        "data" => "interpolant-nonnegative`, `check = \"interpolant-continuity`, `check = \"table-arithmetic`, `check = \"table-quotes` or `check = \"surface-join",
+                        "data" => "interpolant-nonnegative`, `check = \"interpolant-continuity`, `check = \"table-arithmetic`, `check = \"table-quotes`, `check = \"surface-join` or `check = \"cylinder",
                         "other" => "same-basis",
                         "polygons" => "shape-effect",
                         "quotes" => "table-quotes",

@@ -577,6 +577,11 @@ impl<'a> Substitution<'a> {
                     *x = self.sym(x, "a point of the listing")?;
                 }
             }
+            Check::Cylinder { net, .. } => {
+                for x in net.points.iter_mut().flatten().flatten() {
+                    *x = self.sym(x, "a point of the listing")?;
+                }
+            }
             Check::Unity
             | Check::OneMaximum
             | Check::FourierSpan { .. }

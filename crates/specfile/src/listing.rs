@@ -107,6 +107,44 @@ pub(crate) fn surface_join(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Resul
     })
 }
 
+/// `check = "cylinder"`: the one net a listing file builds (the last one
+/// it assigns under any name when it builds several: a listing's final
+/// net is the one it draws) and the radius `r > 0` of the cylinder
+/// `x² + y² = r²`, a number of the formula language.
+pub(crate) fn cylinder(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check> {
+    let (path, text) = crate::fields::data_file(src, c)?;
+    let data_span = need(src, c, &c.data, "data")?.span();
+    let invalid = |message: String| SpecError::Invalid {
+        at: src.at(data_span.start),
+        field: "claims.data".into(),
+        message,
+    };
+    let nets =
+        listing(spec, &text).map_err(|(line, m)| invalid(format!("{path} line {line}: {m}")))?;
+    let Some(net) = nets.into_iter().last() else {
+        return Err(invalid(format!(
+            "{path}: the listing builds no net (`net NAME = …`)"
+        )));
+    };
+    let field = need(src, c, &c.radius, "radius")?;
+    let radius = spec
+        .parse_claim_formula(field.get_ref(), &[], &[])
+        .ok()
+        .and_then(|(r, _)| r.as_rational())
+        .filter(|r| *r > 0);
+    let Some(radius) = radius else {
+        return src.invalid(
+            field.span(),
+            "claims.radius",
+            format!(
+                "`{}`: expected a positive rational number",
+                field.get_ref().trim()
+            ),
+        );
+    };
+    Ok(Check::Cylinder { path, net, radius })
+}
+
 /// The nets a listing builds; an error is `(line, why)`.
 fn listing(spec: &Spec, text: &str) -> std::result::Result<Vec<ListedNet>, (usize, String)> {
     let n = spec.functions.len();
@@ -241,18 +279,31 @@ mod tests {
     use crate::spec::Spec;
 
     fn quadratic_listing(listing: &str, seams: &str) -> crate::error::Result<Spec> {
+        quadratic_claim(
+            listing,
+            &format!(
+                "check = \"surface-join\"\ndata = \"nets.txt\"\njoin = \"C1\"\nseams = [{seams}]\n"
+            ),
+        )
+    }
+
+    /// A claim (`fields`, the check and its fields) on the quadratic
+    /// Bernstein basis with the listing as `nets.txt` beside it.
+    fn quadratic_claim(listing: &str, fields: &str) -> crate::error::Result<Spec> {
         // one folder per listing: the tests run in parallel
         let key = listing
             .bytes()
             .fold(0u64, |h, b| h.wrapping_mul(31).wrapping_add(u64::from(b)));
+        let key = fields
+            .bytes()
+            .fold(key, |h, b| h.wrapping_mul(31).wrapping_add(u64::from(b)));
         let dir = std::env::temp_dir().join(format!("listing-{}-{key}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
         std::fs::write(dir.join("nets.txt"), listing).unwrap();
         let spec = "id = \"b2\"\ncitation = \"c\"\nvariable = \"polynomial\"\n[[functions]]\nname = \"B0\"\nformula = \"(1 - t)^2\"\n[[functions]]\nname = \"B1\"\nformula = \"2*t*(1 - t)\"\n[[functions]]\nname = \"B2\"\nformula = \"t^2\"\n";
         let file = dir.join("b2.toml");
-        let text = format!(
-            "{spec}[[claims]]\nid = \"s\"\nsource = \"s\"\nstatement = \"s\"\ncheck = \"surface-join\"\ndata = \"nets.txt\"\njoin = \"C1\"\nseams = [{seams}]\n"
-        );
+        let text =
+            format!("{spec}[[claims]]\nid = \"s\"\nsource = \"s\"\nstatement = \"s\"\n{fields}");
         Spec::from_str_named(&text, file.to_str().unwrap())
     }
 
@@ -291,5 +342,33 @@ mod tests {
         let e = quadratic_listing("A = (0, 0, 0)\nnet P = A A A; A A A; A A A\n", "\"P | P\"")
             .unwrap_err();
         assert!(e.to_string().contains("two different nets"), "{e}");
+    }
+
+    #[test]
+    fn a_cylinder_claim_takes_the_last_net_and_a_positive_radius() {
+        let listing = "A = (1, 0, 0)\nB = (1, 0, 1)\nnet P = A A A; A A A; A A A\nnet Q = A B A; A B A; A B A\n";
+        let spec = quadratic_claim(
+            listing,
+            "check = \"cylinder\"\ndata = \"nets.txt\"\nradius = \"3/2\"\n",
+        )
+        .unwrap();
+        let Check::Cylinder { net, radius, .. } = &spec.claims[0].check else {
+            panic!("a cylinder claim");
+        };
+        assert_eq!(net.name, "Q");
+        assert_eq!(net.points[0][1][2], trig_symbolic::Sym::int(1));
+        assert_eq!(*radius, rug::Rational::from((3, 2)));
+        for (radius, why) in [("0", "positive rational"), ("pi", "positive rational")] {
+            let fields =
+                format!("check = \"cylinder\"\ndata = \"nets.txt\"\nradius = \"{radius}\"\n");
+            let e = quadratic_claim(listing, &fields).unwrap_err();
+            assert!(e.to_string().contains(why), "{e}");
+        }
+        let e = quadratic_claim(
+            "A = (1, 0, 0)\n",
+            "check = \"cylinder\"\ndata = \"nets.txt\"\nradius = \"1\"\n",
+        )
+        .unwrap_err();
+        assert!(e.to_string().contains("builds no net"), "{e}");
     }
 }

@@ -151,6 +151,8 @@ pub struct RawClaim {
     /// `check = "surface-join"`: the seams, `"label: A | B"` (B beside A)
     /// or `"label: A ; B"` (B below A), nets of the listing.
     pub seams: Option<Vec<Spanned<String>>>,
+    /// `check = "cylinder"`: the radius of the cylinder `x² + y² = r²`.
+    pub radius: Option<Spanned<String>>,
     /// `check = "identity"`: names the identities use, `"NAME = formula"`
     /// in order (a shorthand of the print, a function built from the
     /// basis's, applied like one).

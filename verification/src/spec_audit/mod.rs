@@ -617,6 +617,9 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
             nets,
             seams,
         } => trig_judge::surface_join::surface_join(spec, *kind, *wrt, path, nets, seams),
+        Check::Cylinder { net, radius, .. } => {
+            trig_judge::surface::net_cylinder_distance(spec, net, radius)
+        }
         Check::OneMaximum => {
             trig_judge::maxima::exactly_one_maximum(spec, &trig_judge::exact::basis_of(spec))
         }
