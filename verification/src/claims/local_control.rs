@@ -10,7 +10,7 @@ use trig_core::{Family, Ring};
 use trig_deriv::continuity::{Piece, continuity, curve_piece};
 use trig_symbolic::Sym;
 
-use super::local_control_joins::{d17, seed002_segment, t51, t65};
+use super::local_control_joins::{d17, seed002_segment};
 use crate::claim::Claim;
 use trig_judge::continuity::at_least;
 use trig_judge::exact::{IDENTITY, identities, symbols};
@@ -21,14 +21,6 @@ use trig_verdict::verdict::Verdict;
 
 /// In report order (after each document's first-list claims).
 pub const CLAIMS: &[Claim] = &[
-    Claim {
-        id: "T51",
-        check: t51,
-    },
-    Claim {
-        id: "T65",
-        check: t65,
-    },
     Claim {
         id: "D17",
         check: d17,

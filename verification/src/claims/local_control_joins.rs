@@ -8,213 +8,14 @@
 
 use std::fmt;
 
-use rug::Rational;
-use trig_core::{Family, Ring};
-use trig_deriv::{End, Wrt};
+use trig_core::Family;
 use trig_symbolic::Sym;
 
 use super::seed002::rational_ends;
-use super::thesis_interp::derivs;
-use trig_judge::exact::{IDENTITY, TARGET, VALUE, basis, identities, identity_item, symbols};
+use trig_judge::exact::{IDENTITY, basis, identities, identity_item, symbols};
 use trig_verdict::evidence::{Evidence, Kind};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
-use trig_verdict::witness;
-
-/// `κ²` of a plane curve from its first and second derivative vectors:
-/// `(x'y'' − y'x'')² / (x'² + y'²)³`.
-fn curvature_squared(d1: &[Sym; 2], d2: &[Sym; 2]) -> Sym {
-    let cross = d1[0].clone() * &d2[1] - &(d1[1].clone() * &d2[0]);
-    let speed = d1[0].square() + &d1[1].square();
-    cross.square() / &speed.powi(3)
-}
-
-/// `lhs = rhs` as a verdict of one item; where it fails, the witness is
-/// taken at `point` when the two sides differ there (a point inside the
-/// printed ranges), else found by the generic search.
-fn one_item(label: &str, lhs: &Sym, rhs: &Sym, point: &[(&str, i64)]) -> Verdict {
-    let mut item = identity_item(label, lhs, rhs);
-    let point: Vec<(String, Rational)> = point
-        .iter()
-        .map(|(n, v)| (n.to_string(), Rational::from(*v)))
-        .collect();
-    let names: Vec<String> = point.iter().map(|(n, _)| n.clone()).collect();
-    if item.status == Some(Status::Fails)
-        && let (Some(l), Some(r)) = (witness::at(lhs, &point), witness::at(rhs, &point))
-        && !(l - &r).is_zero()
-    {
-        item.witness = witness::of_exprs(&point, &names, &[(VALUE, lhs), (TARGET, rhs)]);
-    }
-    Verdict::new(
-        item.status.unwrap_or(Status::NotCheckable),
-        IDENTITY,
-        [item],
-    )
-}
-
-/// T51: with `P'(1) = λQ'(0)`, `P''(1) = μQ''(0) + γQ'(0)` at the joint,
-/// `P' × P'' = λμ (Q' × Q'')` and `|P'|³ = λ³|Q'|³`, so `κ_P = (μ/λ²) κ_Q`:
-/// the curvatures match for every `Q` exactly when `μ = λ²`. The summary
-/// sentence gives G² "the same velocity and acceleration vector", which
-/// `P' = λQ'` has only for `λ = 1`.
-pub(super) fn t51() -> Verdict {
-    let q1 = [Sym::var("a1"), Sym::var("a2")];
-    let q2 = [Sym::var("c1"), Sym::var("c2")];
-    let (lambda, mu, gamma) = (Sym::var("lambda"), Sym::var("mu"), Sym::var("gamma"));
-    let p1 = [lambda.clone() * &q1[0], lambda.clone() * &q1[1]];
-    let p2 = |mu: &Sym| -> [Sym; 2] {
-        [
-            mu.clone() * &q2[0] + &(gamma.clone() * &q1[0]),
-            mu.clone() * &q2[1] + &(gamma.clone() * &q1[1]),
-        ]
-    };
-    let kq = curvature_squared(&q1, &q2);
-    let kp = curvature_squared(&p1, &p2(&mu));
-    let kp_matched = curvature_squared(&p1, &p2(&lambda.square()));
-    // witnesses inside the printed ranges λ, μ > 0 (the search would try 0)
-    let unit = [("a1", 1), ("a2", 0), ("c1", 0), ("c2", 1), ("gamma", 0)];
-    let printed = one_item(
-        "κ_P(1)² = κ_Q(0)² for every μ > 0 (as printed)",
-        &kp,
-        &kq,
-        &[&unit[..], &[("lambda", 1), ("mu", 2)]].concat(),
-    );
-    let ratio = identities(vec![(
-        "κ_P(1)² = (μ/λ²)² κ_Q(0)² (derived)".into(),
-        kp,
-        (mu.clone() / &lambda.square()).square() * &kq,
-    )]);
-    let matched = identities(vec![(
-        "κ_P(1)² = κ_Q(0)² with μ = λ²".into(),
-        kp_matched,
-        kq,
-    )]);
-    let same = Verdict::all(
-        IDENTITY,
-        vec![
-            (
-                "G²: P'(1) = Q'(0) (\"same velocity\")".into(),
-                one_item(
-                    "P'(1) = λQ'(0) against Q'(0)",
-                    &p1[0],
-                    &q1[0],
-                    &[("lambda", 2), ("a1", 1)],
-                ),
-            ),
-            (
-                "G²: P''(1) = Q''(0) (\"same acceleration\")".into(),
-                one_item(
-                    "P''(1) = μQ''(0) + γQ'(0) against Q''(0)",
-                    &p2(&mu)[0],
-                    &q2[0],
-                    &[("mu", 2), ("gamma", 0), ("a1", 1), ("c1", 1)],
-                ),
-            ),
-        ],
-    );
-    let mut v = Verdict::all(
-        IDENTITY,
-        vec![
-            (
-                "the printed G² condition matches curvatures".into(),
-                printed,
-            ),
-            ("the curvature ratio".into(), ratio),
-            ("curvature continuity exactly when μ = λ²".into(), matched),
-            (
-                "\"C² and G² … have the same velocity and acceleration vector\", read for G²"
-                    .into(),
-                same,
-            ),
-        ],
-    );
-    v.evidence.insert(0, Evidence::note("plane curves, Q'(0) = (a1, a2), Q''(0) = (c1, c2) symbolic; κ² = (x'y'' − y'x'')²/(x'² + y'²)³; λ, μ > 0 keep the sign of x'y'' − y'x'', so κ² decides"));
-    if v.status == Status::Fails {
-        v = v.with_correction("the curvatures match iff μ = λ² (P''(1) = λ²Q''(0) + γQ'(0)); G² has proportional, not equal, velocity and acceleration vectors (equal only for λ = 1, γ = 0: C²)");
-    }
-    v
-}
-
-/// T65: the first curve `Q1` on `P0 … P3`, the next `Q2` on `P4 … P7`,
-/// C⁰ by (4.4) `P4 = P3`, C¹ by (4.5) `Q2'(0) = Q1'(1)`, (4.6)
-/// `P5 = 2P3 − P2`. The refinement (4.6) keeps the corner `P3 = P4` and
-/// moves `P5`, the `V1` of the next curve; a refinement moving only `V3`
-/// of the first and `V0` of the next curve (`P3 = P4 = X`) must put the
-/// corner at `X = (P2 + P5)/2`, so it does not retain it.
-pub(super) fn t65() -> Verdict {
-    let p = symbols("P", 8);
-    let two = Sym::int(2);
-    let q1_end = thesis_tangents(&p[0..4], End::End);
-    let c0 = |q: &[Sym]| -> Vec<Sym> {
-        let mut q = q.to_vec();
-        q[0] = p[3].clone();
-        q
-    };
-    let mut after = c0(&p[4..8]);
-    after[1] = two.clone() * &p[3] - &p[2];
-    let refined = identities(vec![(
-        "(4.5) after (4.4), (4.6): Q2'(0) = Q1'(1)".into(),
-        thesis_tangents(&after, End::Start),
-        q1_end.clone(),
-    )]);
-    // the point (4.6) moves: V1 of the next curve, P5 ↦ 2P3 − P2
-    let kept = identity_item(
-        "V1 of the next curve unchanged by (4.6) (P5 = 2P3 − P2)",
-        &p[5],
-        &after[1],
-    );
-    let moved = Verdict::new(
-        kept.status.unwrap_or(Status::NotCheckable),
-        IDENTITY,
-        [kept],
-    );
-    // moving only V3 and V0: P3 = P4 = X, X solved from (4.5)
-    let x = Sym::var("X");
-    let mut left = p[0..4].to_vec();
-    left[3] = x.clone();
-    let mut right = p[4..8].to_vec();
-    right[0] = x.clone();
-    let residual = thesis_tangents(&right, End::Start) - &thesis_tangents(&left, End::End);
-    let coefficient = residual.diff("X");
-    let corner = -(residual.subs("X", &Sym::zero()) / &coefficient);
-    let only = identities(vec![
-        (
-            "moving only V3, V0: the corner X solving (4.5) equals (P2 + P5)/2".into(),
-            corner.clone(),
-            (p[2].clone() + &p[5]) / &two,
-        ),
-        (
-            "moving only V3, V0: the corner retained (X = P3)".into(),
-            corner,
-            p[3].clone(),
-        ),
-    ]);
-    let only_status = if only.evidence[0].status == Some(Status::Holds) {
-        only.evidence[1].status.unwrap_or(Status::NotCheckable)
-    } else {
-        Status::NotCheckable
-    };
-    let mut parts = vec![
-        (
-            "(4.6) gives C¹ with the corner retained".to_string(),
-            refined,
-        ),
-        (
-            "\"affects only V3 of the first curve and V0 of the next\" under (4.6)".to_string(),
-            moved,
-        ),
-    ];
-    parts.push((
-        "\"retains the corner points\" when only V3, V0 move".to_string(),
-        Verdict {
-            status: only_status,
-            ..only
-        },
-    ));
-    let mut v = Verdict::all(IDENTITY, parts);
-    v.evidence.insert(0, Evidence::note("Q1 = Σ b_k(u; m) P_k (k = 0…3), Q2 = Σ b_k(u; m) P_{4+k}, (3.7) with one m (Condition 1 of 4.1.1, where (4.6) is derived); derivatives in u"));
-    v
-}
 
 /// An index `k·n + c` of seed 002's construction (`n`: the last point).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
@@ -426,12 +227,6 @@ pub(super) fn seed002_segment() -> Sym {
     num / &den
 }
 
-/// The first derivatives in `u` of the thesis cubic at its ends, for the
-/// helpers of the join claims.
-pub(super) fn thesis_tangents(points: &[Sym], end: End) -> Sym {
-    derivs(points, &Sym::var("m"), end, Wrt::U, &Sym::one())[1].clone()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -451,19 +246,5 @@ mod tests {
         assert_eq!(n.plus(1).to_string(), "n+1");
         assert!(contains((Ix::at(0, -1), n.plus(1)), (Ix::at(0, 0), n)));
         assert!(!contains((Ix::at(0, 0), n), (Ix::at(0, -1), n)));
-    }
-
-    #[test]
-    fn the_g2_claims_fail_with_their_corrections() {
-        let v = t51();
-        assert_eq!(v.status, Status::Fails);
-        // the derived ratio and μ = λ² hold exactly
-        let holds: Vec<_> = v
-            .evidence
-            .iter()
-            .filter(|e| e.status == Some(Status::Holds))
-            .collect();
-        assert_eq!(holds.len(), 2, "{:?}", v.evidence);
-        assert_eq!(t65().status, Status::Fails);
     }
 }
