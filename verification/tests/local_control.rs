@@ -146,3 +146,47 @@ fn a_local_control_claim_names_a_point_or_a_declared_parameter() {
     }
     assert!(with("control = \"point\"\nsegments = [-2, -1, 0]").is_ok());
 }
+
+/// The document claims about local control and joins, decided from their
+/// data (identities, negated identity parts): seed 002's α_j enters the
+/// segments j and j − 1, each shown by a point where ∂Q/∂α ≠ 0; the EH
+/// segments join C¹ in t; the thesis's printed G² condition fails while
+/// the derived curvature ratio and μ = λ² hold; the C¹ refinement (4.6)
+/// moves V1 of the next curve.
+#[test]
+fn the_local_and_join_claims_of_the_documents_are_decided() {
+    let verdict = |id: &str| {
+        trig_verification::run(None, Some(id)).expect("the document files")[0]
+            .verdict
+            .clone()
+    };
+    let holding = |v: &Verdict| {
+        v.evidence
+            .iter()
+            .filter(|e| e.status == Some(Status::Holds))
+            .count()
+    };
+    let d19 = verdict("D19");
+    assert_eq!(d19.status, Status::Holds, "{d19:?}");
+    let nonzero: Vec<_> = d19
+        .evidence
+        .iter()
+        .filter(|e| e.status == Some(Status::Fails) && e.witness.is_some())
+        .collect();
+    assert_eq!(nonzero.len(), 2, "{:?}", d19.evidence);
+    for (id, status) in [("D17", Status::Holds), ("E24", Status::Holds)] {
+        let v = verdict(id);
+        assert_eq!(v.status, status, "{id}: {v:?}");
+    }
+    let t51 = verdict("T51");
+    assert_eq!(t51.status, Status::Fails, "{t51:?}");
+    assert_eq!(holding(&t51), 2, "{:?}", t51.evidence);
+    let t65 = verdict("T65");
+    assert_eq!(t65.status, Status::Fails, "{t65:?}");
+    assert_eq!(wrong(&t65).len(), 2, "{:?}", t65.evidence);
+    assert!(
+        wrong(&t65)[0].contains("V1 of the next curve"),
+        "{:?}",
+        wrong(&t65)
+    );
+}

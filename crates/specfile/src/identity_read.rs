@@ -291,7 +291,7 @@ fn one(
         Some((label, formula)) => (label.trim(), formula),
         None => (text.trim(), text.as_str()),
     };
-    let (formula, partials) = partials(src, spec, formula, item, extra)?;
+    let (formula, partials) = partials(src, spec, formula, item, extra, lets)?;
     let arguments = changed.then_some(extra);
     let (rest, applications) = applications(src, spec, &formula, item, curves, arguments, lets)?;
     let sides: Vec<&str> = rest.split('=').collect();
@@ -326,13 +326,15 @@ fn one(
 /// The text with every partial derivative `diff(EXPR, NAME)` (`EXPR` a
 /// formula without applications, `NAME` a free symbol of the claim)
 /// replaced by a placeholder, and each placeholder's value `∂EXPR/∂NAME`,
-/// formed exactly in the ring.
+/// formed exactly in the ring — the claim's `let` names in `EXPR` by their
+/// values first (`diff(P1, alpha1)` with `P1 = P0 + alpha1*d` is `d`).
 fn partials(
     src: &Source<'_>,
     spec: &Spec,
     formula: &str,
     item: &Spanned<String>,
     extra: &[String],
+    lets: &[Let],
 ) -> Result<(String, Vec<(String, Sym)>)> {
     let chars: Vec<char> = formula.chars().collect();
     let mut out = String::new();
@@ -367,9 +369,13 @@ fn partials(
                 "`diff(…, {name})`: `{name}` is not a free symbol of the claim (`symbols`)"
             ));
         }
-        let (value, _) = spec
+        let (read, _) = spec
             .parse_claim_formula(expr, extra, &[])
             .map_err(|e| src.formula_error(item, e))?;
+        let value = match substituted(&read, lets) {
+            Ok(value) => value,
+            Err(e) => return refuse(e.to_string()),
+        };
         let symbol = format!("{PARTIAL}{}", found.len());
         out.push_str(&format!(" {symbol} "));
         found.push((symbol, value.diff(name)));
@@ -624,6 +630,18 @@ mod tests {
         );
         let e = hermite_with("curve = \"R\"\ncurves = [{ name = \"R\", points = [\"0\", \"0\", \"0\", \"0\"] }]\nidentities = [\"R(0) = 0\"]").unwrap_err();
         assert!(e.to_string().contains("another curve"), "{e}");
+    }
+
+    #[test]
+    fn a_partial_derivative_sees_through_the_let_names() {
+        let c = hermite_with(
+            "symbols = [\"q\", \"r\"]\nlet = [\"K = q*r + 1\"]\nidentities = [\"diff(K, q) = r\"]",
+        )
+        .expect("the claim reads");
+        let Check::Identity { identities, .. } = &c.claims[0].check else {
+            panic!("an identity claim");
+        };
+        assert_eq!(identities[0].lhs, trig_symbolic::Sym::var("r"));
     }
 
     #[test]

@@ -3,8 +3,6 @@
 
 use crate::claim::Claim;
 
-mod local_control;
-mod local_control_joins;
 mod properties;
 mod properties_formulas;
 mod seed000;
@@ -12,7 +10,6 @@ mod seed000_appendix_b;
 mod seed000_appendix_c;
 mod seed000_appendix_e;
 mod seed000_appendix_print;
-mod seed002;
 mod seed004;
 mod shape_effect;
 mod thesis_interp;
@@ -34,7 +31,6 @@ pub fn all() -> Vec<Claim> {
         thesis_survey::CLAIMS,
         thesis_interp_text::CLAIMS,
         shape_effect::CLAIMS,
-        local_control::CLAIMS,
     ]
     .concat()
 }

@@ -4,17 +4,16 @@
 //! judge ([`trig_judge::shape_effect`]), which decides under the weakest
 //! reasonable definition and states it (E21: weights moving onto a
 //! segment, concurrent parameters), or compares curves where the document
-//! names no shape parameter (D15, D21).
+//! names no shape parameter (D15).
 
 use rug::Rational;
-use trig_core::{Described, Family, Ring};
+use trig_core::{Family, Ring};
 use trig_deriv::continuity::quotient_derivatives;
 use trig_specfile::Direction;
 use trig_symbolic::Sym;
 
 use crate::claim::Claim;
 use trig_judge::certificate::CERTIFIED;
-use trig_judge::exact::{IDENTITY, identity_item};
 use trig_judge::shape_effect::{Move, Point, SHAPE, TOWARDS, moves, weights_move};
 use trig_verdict::evidence::{Evidence, Expr};
 use trig_verdict::status::Status;
@@ -25,10 +24,6 @@ pub const CLAIMS: &[Claim] = &[
     Claim {
         id: "D15",
         check: d15,
-    },
-    Claim {
-        id: "D21",
-        check: d21,
     },
     Claim {
         id: "E21",
@@ -154,60 +149,6 @@ fn e21() -> Verdict {
     );
     v.evidence.insert(0, DEFINITION);
     v
-}
-
-/// Definition 1 (1) has no parameter; in (3) the printed shape parameters
-/// fix the control points `P1`, `P4` through the end tangents
-/// `4(w1/w0)(P1 − P0) = α1(V2 − V0)`, `4(w4/w5)(P5 − P4) = α2(V3 − V1)`:
-/// solved exactly, `∂P1/∂α1 ≢ 0`.
-fn d21() -> Verdict {
-    let var = |n: &str| Sym::var(n);
-    let four = Sym::int(4);
-    let solve = |equation: &Sym, unknown: &str| -> Sym {
-        // linear in the unknown: a·X + b = 0
-        let a = equation.diff(unknown);
-        let b = equation.subs(unknown, &Sym::zero());
-        -(b / &a)
-    };
-    let e1 = four.clone() * &(var("w1") / &var("w0")) * &(var("P1") - &var("P0"))
-        - &(var("alpha1") * &(var("V2") - &var("V0")));
-    let e4 = four * &(var("w4") / &var("w5")) * &(var("P5") - &var("P4"))
-        - &(var("alpha2") * &(var("V3") - &var("V1")));
-    let p1 = solve(&e1, "P1");
-    let p4 = solve(&e4, "P4");
-    let params = Family::Seed002Quartic.parameters();
-    let mut evidence = vec![Evidence::note(format!(
-        "Definition 1, (1): the basis has {} shape parameter{}: with P0 … P5 and the weights fixed the curve of (2) is fixed",
-        if params.is_empty() {
-            "no".to_string()
-        } else {
-            params.len().to_string()
-        },
-        if params.len() == 1 { "" } else { "s" }
-    ))];
-    evidence.push(Evidence::note(format!(
-        "(3) solved for the control points (one coordinate; the same for each): P1 = {}, P4 = {}",
-        p1.to_unicode(),
-        p4.to_unicode()
-    )));
-    let items = [
-        identity_item(
-            "∂P1/∂α1 = 0 (P1 kept as α1 varies)",
-            &p1.diff("alpha1"),
-            &Sym::zero(),
-        ),
-        identity_item(
-            "∂P4/∂α2 = 0 (P4 kept as α2 varies)",
-            &p4.diff("alpha2"),
-            &Sym::zero(),
-        ),
-    ];
-    let status = Status::conjunction(items.iter().filter_map(|e| e.status));
-    evidence.extend(items);
-    evidence.push(Evidence::note(
-        "the weights w_i change the shape with P0 … P5 fixed, but the document names α1, α2 the shape parameters; the interpolation form (4), Σ Tb_i(t, α1, α2) V_i, has its functions Tb_i garbled in this copy",
-    ));
-    Verdict::new(status, IDENTITY, evidence)
 }
 
 /// The curvature at the start `P0 = (0, 0)` of the curve `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ`
