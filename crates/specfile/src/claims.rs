@@ -357,6 +357,11 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             c.polygons.as_ref().map(|_| c.check.span()),
             matches!(check, Check::ShapeEffect { .. }),
         ),
+        (
+            "correction",
+            c.correction.as_ref().map(|k| k.says.span()),
+            matches!(check, Check::Identity { .. }),
+        ),
     ] {
         if let (Some(span), false) = (given, taken) {
             return src.invalid(
@@ -372,6 +377,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                         "polygons" => "shape-effect",
                         "quotes" => "table-quotes",
                         "curves" => "identity` or `check = \"endpoint-derivatives",
+                        "correction" => "identity",
                         _ => "interpolant-nonnegative` or `check = \"interpolant-continuity",
                     }
                 ),

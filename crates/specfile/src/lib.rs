@@ -59,6 +59,7 @@ pub mod spec;
 
 pub use any::{AnyBasis, OpenError};
 pub use ast::Grammar;
+pub use check::Correction;
 pub use check::{
     Across, Application, Applied, Argument, Change, Check, Condition, Curve, Differentiated,
     Direction, Identity, JoinSegments, Let, ListedNet, Monotone, NamedCurve, Polygons, Printed,

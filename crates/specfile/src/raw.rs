@@ -138,6 +138,8 @@ pub struct RawClaim {
     pub symbols: Option<Vec<Spanned<String>>>,
     /// `check = "identity"`: readings of printed identities.
     pub readings: Option<Vec<RawReading>>,
+    /// `check = "identity"`: the correction of a print that fails.
+    pub correction: Option<RawCorrection>,
     /// `check = "identity"`: the curve is rational, `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ`.
     pub weights: Option<bool>,
     /// `check = "same-basis"`: the other basis (a spec file, relative to
@@ -179,6 +181,18 @@ pub struct RawClaim {
 pub struct RawCurve {
     pub name: Spanned<String>,
     pub points: Vec<Spanned<String>>,
+    /// `identity` with a `change`: the curve's own variable, a formula in
+    /// the claim's new variable (a spline's next segment).
+    pub change: Option<Spanned<String>>,
+}
+
+/// `correction = { says = "…", identities = ["…"] }`: a correction of a
+/// print that fails (`identity`).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawCorrection {
+    pub says: Spanned<String>,
+    pub identities: Vec<Spanned<String>>,
 }
 
 /// `readings = [{ of = "printed identity", as = "its reading" }]`.

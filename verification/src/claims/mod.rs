@@ -14,7 +14,6 @@ mod seed000_appendix_c;
 mod seed000_appendix_e;
 mod seed000_appendix_print;
 mod seed002;
-mod seed004;
 mod shape_effect;
 mod thesis;
 mod thesis_interp;

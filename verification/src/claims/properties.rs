@@ -7,7 +7,7 @@ use trig_core::Family;
 use trig_deriv::{End, Wrt, endpoint_derivatives};
 use trig_symbolic::Sym;
 
-use super::properties_formulas::{e19, e23, m21, t45, t63};
+use super::properties_formulas::t45;
 use crate::claim::Claim;
 use trig_judge::exact::IDENTITY;
 use trig_judge::{endpoint, nonnegative, unity};
@@ -25,24 +25,8 @@ pub const CLAIMS: &[Claim] = &[
         check: t49,
     },
     Claim {
-        id: "T63",
-        check: t63,
-    },
-    Claim {
-        id: "M21",
-        check: m21,
-    },
-    Claim {
         id: "M23",
         check: m23,
-    },
-    Claim {
-        id: "E19",
-        check: e19,
-    },
-    Claim {
-        id: "E23",
-        check: e23,
     },
 ];
 

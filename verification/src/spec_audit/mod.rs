@@ -619,6 +619,7 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
             readings,
             lets,
             change,
+            correction,
         } => trig_judge::identity::printed_identities(
             spec,
             identities,
@@ -626,6 +627,7 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
             readings,
             lets,
             change.as_ref(),
+            correction.as_ref(),
         ),
         Check::SameBasis {
             other,
