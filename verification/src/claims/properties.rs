@@ -24,10 +24,6 @@ pub const CLAIMS: &[Claim] = &[
         id: "T49",
         check: t49,
     },
-    Claim {
-        id: "M23",
-        check: m23,
-    },
 ];
 
 /// The Bézier properties of (3.7) on `m ∈ (−2, 1]`, each by its judge:
@@ -119,94 +115,6 @@ fn positive_on(c: &Sym, var: &str, range: &trig_core::ParamRange) -> Option<bool
     let ok_lo = a > 0 || (a == 0 && lo_open);
     let ok_hi = b > 0 || (b == 0 && hi_open);
     Some(ok_lo && ok_hi)
-}
-
-/// The uniform basis of (4) in `ζ` (the catalog's name for ξ): it moves
-/// with `ζ` (some `∂F_j/∂ζ ≠ 0`), it is unchanged by `ζ ↦ 1 − ζ` (exactly),
-/// and so the exceptional values of its knot continuity come in pairs
-/// `v`, `1 − v` with the same smoothness — `1` among them exactly when `0` is.
-fn m23() -> Verdict {
-    let family = Family::Seed000Uniform;
-    let f = trig_judge::exact::basis(family);
-    let names = family.info().functions;
-    let moves = f.iter().any(|fj| !fj.diff("zeta").is_zero());
-    let changes = Verdict::new(
-        if moves { Status::Holds } else { Status::Fails },
-        IDENTITY,
-        [if moves {
-            "some ∂F_j/∂ζ is not identically 0"
-        } else {
-            "every ∂F_j/∂ζ is identically 0"
-        }],
-    );
-    let reflected = Sym::one() - &Sym::var("zeta");
-    let symmetric = trig_judge::exact::identities(
-        f.iter()
-            .zip(names)
-            .map(|(fj, name)| {
-                (
-                    format!("{name}(ζ) − {name}(1 − ζ)"),
-                    fj.clone(),
-                    fj.subs("zeta", &reflected),
-                )
-            })
-            .collect(),
-    );
-    let pieces = trig_deriv::continuity::uniform_bspline(&family, &[Sym::var("zeta")]);
-    let knots = trig_deriv::continuity::continuity(&pieces, true, Some("zeta"));
-    let mut lines = Vec::new();
-    let mut paired = true;
-    let mut zero_and_one = true;
-    for k in &knots {
-        let values: Vec<&rug::Rational> = k.exceptions.iter().map(|e| &e.value).collect();
-        let smoothness_at = |v: &rug::Rational| {
-            k.exceptions
-                .iter()
-                .find(|e| e.value == *v)
-                .map(|e| e.smoothness)
-        };
-        for e in &k.exceptions {
-            let mirror = rug::Rational::from(1) - &e.value;
-            paired &= smoothness_at(&mirror) == Some(e.smoothness);
-        }
-        let has = |q: i64| values.iter().any(|v| **v == q);
-        zero_and_one &= has(0) == has(1);
-        lines.push(format!(
-            "knot {}: {}; exceptional ζ: {}",
-            k.knot,
-            k.smoothness,
-            if values.is_empty() {
-                "none".to_string()
-            } else {
-                k.exceptions
-                    .iter()
-                    .map(|e| format!("{} ({})", e.value, e.smoothness))
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            }
-        ));
-    }
-    let mut pairs = Verdict::new(
-        if paired && zero_and_one {
-            Status::Holds
-        } else {
-            Status::Fails
-        },
-        trig_judge::continuity::METHOD,
-        lines,
-    );
-    pairs.evidence.insert(
-        0,
-        "the exceptional values of every knot come in pairs v, 1 − v with the same smoothness, so an exception at ξ = 1 is one at ξ = 0 too",
-    );
-    Verdict::all(
-        IDENTITY,
-        vec![
-            ("the shape parameter changes the basis".into(), changes),
-            ("F_j(ζ) = F_j(1 − ζ)".into(), symmetric),
-            ("exceptions of the knot continuity in pairs".into(), pairs),
-        ],
-    )
 }
 
 #[cfg(test)]
