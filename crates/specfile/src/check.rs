@@ -195,6 +195,19 @@ pub enum Check {
         text: String,
         value: Sym,
     },
+    /// The curve `Σ bᵢPᵢ` at one end along a difference of two control
+    /// points, `Q⁽ᵏ⁾(end) − [k = 0]·Pb = c·(Pa − Pb)`, with `c` of a stated
+    /// sign on the range (`range`: the claim's; `None`: the declared) and
+    /// optionally `c → 0` as the parameter tends to `limit` (`∞`, `−∞`).
+    EndDirection {
+        end: End,
+        order: usize,
+        wrt: Wrt,
+        along: (usize, usize),
+        positive: bool,
+        range: Option<ParamRange>,
+        limit: Option<String>,
+    },
     /// Printed conditions making two segments `Σ bᵢPᵢ` (end) and
     /// `Σ bᵢQᵢ` (start) join: `Cᵏ`, `G¹` (`Q'(0) = αP'(1)`), `G²`; with
     /// `different`, the first segment has the parameters `p1`, the second

@@ -275,6 +275,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             Check::TableArithmetic { path, text }
         }
         "same-basis" => same_basis(src, spec, c)?,
+        "end-direction" => crate::direction_read::end_direction(src, spec, c)?,
         "table-quotes" => {
             let (path, text) = data_file(src, c)?;
             let (quotes_path, quotes) =
@@ -290,7 +291,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             return src.invalid(
                 c.check.span(),
                 "claims.check",
-                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, fourier-span, all, not-printed, interpolant-nonnegative, interpolant-continuity, table-arithmetic, table-quotes, same-basis or surface-join"),
+                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, fourier-span, all, not-printed, interpolant-nonnegative, interpolant-continuity, table-arithmetic, table-quotes, same-basis, end-direction or surface-join"),
             );
         }
     };
@@ -362,6 +363,15 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             c.correction.as_ref().map(|k| k.says.span()),
             matches!(check, Check::Identity { .. }),
         ),
+        (
+            "along",
+            [&c.along, &c.sign, &c.limit]
+                .into_iter()
+                .flatten()
+                .next()
+                .map(Spanned::span),
+            matches!(check, Check::EndDirection { .. }),
+        ),
     ] {
         if let (Some(span), false) = (given, taken) {
             return src.invalid(
@@ -378,6 +388,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                         "quotes" => "table-quotes",
                         "curves" => "identity` or `check = \"endpoint-derivatives",
                         "correction" => "identity",
+                        "along" => "end-direction",
                         _ => "interpolant-nonnegative` or `check = \"interpolant-continuity",
                     }
                 ),

@@ -494,7 +494,8 @@ impl<'a> Substitution<'a> {
             | Check::ConvexHull { range, .. }
             | Check::Independent { range, .. }
             | Check::TotalPositivity { range, .. }
-            | Check::Monotone { range, .. } => *range = None,
+            | Check::Monotone { range, .. }
+            | Check::EndDirection { range, .. } => *range = None,
             Check::EndpointValues { values, .. } => *values = self.printed(values)?,
             Check::EndpointDerivatives { values, .. } => {
                 for v in values.iter_mut() {

@@ -36,6 +36,7 @@ mod budget;
 pub mod check;
 mod claims;
 mod derivative_read;
+mod direction_read;
 pub mod document;
 pub mod error;
 pub mod exact_range;

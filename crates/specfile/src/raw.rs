@@ -140,6 +140,13 @@ pub struct RawClaim {
     pub readings: Option<Vec<RawReading>>,
     /// `check = "identity"`: the correction of a print that fails.
     pub correction: Option<RawCorrection>,
+    /// `check = "end-direction"`: the printed difference `"P1 - P0"`.
+    pub along: Option<Spanned<String>>,
+    /// `check = "end-direction"`: the factor's sign, `positive` or `nonzero`.
+    pub sign: Option<Spanned<String>>,
+    /// `check = "end-direction"`: the factor tends to 0 as the parameter
+    /// tends to `inf` (or `-inf`).
+    pub limit: Option<Spanned<String>>,
     /// `check = "identity"`: the curve is rational, `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ`.
     pub weights: Option<bool>,
     /// `check = "same-basis"`: the other basis (a spec file, relative to

@@ -5,8 +5,6 @@ use crate::claim::Claim;
 
 mod local_control;
 mod local_control_joins;
-mod properties;
-mod properties_formulas;
 mod second_list;
 mod seed000;
 mod seed000_appendix_b;
@@ -30,7 +28,6 @@ pub fn all() -> Vec<Claim> {
         seed000_appendix_c::CLAIMS,
         seed000_appendix_e::CLAIMS,
         seed000_appendix_b::CLAIMS,
-        properties::CLAIMS,
         second_list::CLAIMS,
         thesis_out_of_range::CLAIMS,
         thesis_text::CLAIMS,
