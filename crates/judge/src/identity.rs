@@ -26,7 +26,7 @@
 //! the readings shown with it.
 
 use trig_core::{Affine, Basis};
-use trig_specfile::{Applied, Argument, Change, Curve, Identity, Let, Reading};
+use trig_specfile::{Applied, Argument, Change, Correction, Curve, Identity, Let, Reading};
 use trig_symbolic::Sym;
 use trig_verdict::status::Status;
 
@@ -39,6 +39,50 @@ use trig_verdict::verdict::Verdict;
 /// form (an argument not linear with slope 0 or ±1, atoms not exact at
 /// the point) leaves the claim `not-checkable` with the reason.
 pub fn printed_identities<B: ExactBasis>(
+    basis: &B,
+    items: &[Identity],
+    curves: &[Curve],
+    readings: &[Reading],
+    lets: &[Let],
+    change: Option<&Change>,
+    correction: Option<&Correction>,
+) -> Verdict {
+    let v = read_identities(basis, items, curves, readings, lets, change);
+    match correction {
+        Some(correction) if v.status == Status::Fails => {
+            corrected(basis, v, correction, curves, lets, change)
+        }
+        _ => v,
+    }
+}
+
+/// A print that fails with its correction decided beside it: the claim
+/// still fails (the print is wrong, not mistyped); the correction's
+/// identities are shown as its part, and where every one holds the
+/// correction is named.
+fn corrected<B: ExactBasis>(
+    basis: &B,
+    mut v: Verdict,
+    correction: &Correction,
+    curves: &[Curve],
+    lets: &[Let],
+    change: Option<&Change>,
+) -> Verdict {
+    let decided = match sides(basis, &correction.identities, curves, lets, change) {
+        Ok(parts) => identities(parts),
+        Err(not_formed) => not_formed,
+    };
+    let holds = decided.status == Status::Holds;
+    v.evidence.extend(decided.into_part(&correction.says));
+    if holds {
+        v.with_correction(correction.says.clone())
+    } else {
+        v
+    }
+}
+
+/// The printed identities with their readings.
+fn read_identities<B: ExactBasis>(
     basis: &B,
     items: &[Identity],
     curves: &[Curve],
@@ -129,8 +173,16 @@ pub fn sides<B: ExactBasis>(
                         Applied::Curve(k) => &curve_values[k],
                         Applied::Let(i) => &lets[i].value,
                     };
+                    // a curve with its own change of variable (a spline's next segment)
+                    let own = match a.applied {
+                        Applied::Curve(k) => curves[k].change.as_ref(),
+                        _ => None,
+                    };
                     let value = match (&a.argument, change) {
-                        (Argument::Formula(x), Some(change)) => Some(changed(f, a.order, change, x)),
+                        (Argument::Formula(x), Some(change)) => Some(match own {
+                            Some(own) => changed(f, a.order, &Change { value: own.clone(), ..change.clone() }, x),
+                            None => changed(f, a.order, change, x),
+                        }),
                         (Argument::Linear(l), None) => applied(basis, f, a.order, &l.x, &l.rest),
                         _ => None,
                     };
@@ -357,11 +409,20 @@ mod tests {
             readings,
             lets,
             change,
+            correction,
         } = &spec.claims[0].check
         else {
             panic!("an identity claim");
         };
-        printed_identities(&spec, identities, curves, readings, lets, change.as_ref())
+        printed_identities(
+            &spec,
+            identities,
+            curves,
+            readings,
+            lets,
+            change.as_ref(),
+            correction.as_ref(),
+        )
     }
 
     #[test]
@@ -379,5 +440,86 @@ mod tests {
             .filter_map(|e| e.subject.as_deref())
             .collect();
         assert_eq!(failing, ["P'(1)/h = d1"]);
+    }
+
+    /// The Hermite basis (seed 004 §II) with one identity claim `claim`.
+    fn hermite_claim(claim: &str) -> Verdict {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../../examples/catalog/hermite.toml");
+        let text = std::fs::read_to_string(path).unwrap();
+        let spec = trig_specfile::Spec::from_str_named(
+            &format!(
+                "{text}\n[[claims]]\nid = \"h\"\nsource = \"s\"\nstatement = \"s\"\ncheck = \"identity\"\n{claim}\n"
+            ),
+            "h.toml",
+        )
+        .unwrap_or_else(|e| panic!("{e}"));
+        let trig_specfile::Check::Identity {
+            identities,
+            curves,
+            readings,
+            lets,
+            change,
+            correction,
+        } = &spec.claims[0].check
+        else {
+            panic!("an identity claim");
+        };
+        printed_identities(
+            &spec,
+            identities,
+            curves,
+            readings,
+            lets,
+            change.as_ref(),
+            correction.as_ref(),
+        )
+    }
+
+    #[test]
+    fn a_curve_with_its_own_change_is_the_next_segment() {
+        // segment i on [x_i, x_i + h], segment i + 1 with its own t = (x − x_i − h)/k:
+        // C¹ at the knot exactly when the end slopes carry the same factor
+        let claim = |factor: &str| {
+            format!(
+                "symbols = [\"x_i\", \"h\", \"k\", \"y0\", \"y1\", \"y2\", \"d0\", \"d1\", \"d2\"]\nchange = {{ x = \"(x - x_i)/h\" }}\ncurves = [{{ name = \"A\", points = [\"y0\", \"y1\", \"h*d0\", \"{factor}*d1\"] }}, {{ name = \"B\", points = [\"y1\", \"y2\", \"k*d1\", \"k*d2\"], change = \"(x - x_i - h)/k\" }}]\nidentities = [\"B(x_i + h) = A(x_i + h)\", \"B'(x_i + h) = A'(x_i + h)\"]"
+            )
+        };
+        assert_eq!(hermite_claim(&claim("h")).status, Status::Holds);
+        let v = hermite_claim(&claim("k"));
+        assert_eq!(v.status, Status::Fails);
+        let failing: Vec<_> = v
+            .evidence
+            .iter()
+            .filter(|e| e.status == Some(Status::Fails))
+            .filter_map(|e| e.subject.as_deref())
+            .collect();
+        assert_eq!(failing, ["B'(x_i + h) = A'(x_i + h)"]);
+    }
+
+    #[test]
+    fn a_correction_leaves_the_print_failing_and_is_named_where_it_holds() {
+        let claim = |corrected: &str| {
+            format!(
+                "identities = [\"alpha_0(1) = 1\", \"alpha_1(1) = 1\"]\ncorrection = {{ says = \"alpha_0(1) = 0\", identities = [\"{corrected}\"] }}"
+            )
+        };
+        let v = hermite_claim(&claim("alpha_0(1) = 0"));
+        assert_eq!(v.status, Status::Fails);
+        assert_eq!(v.correction.as_deref(), Some("alpha_0(1) = 0"));
+        // a correction that fails too is shown, never named
+        let v = hermite_claim(&claim("alpha_0(1) = 2"));
+        assert_eq!(v.status, Status::Fails);
+        assert_eq!(v.correction, None);
+        assert!(
+            v.evidence
+                .iter()
+                .any(|e| e.subject.as_deref() == Some("alpha_0(1) = 2"))
+        );
+        // a print that holds leaves the correction undecided
+        let v = hermite_claim(
+            "identities = [\"alpha_1(1) = 1\"]\ncorrection = { says = \"x\", identities = [\"alpha_0(1) = 2\"] }",
+        );
+        assert_eq!((v.status, v.evidence.len()), (Status::Holds, 1));
     }
 }

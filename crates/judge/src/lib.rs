@@ -26,6 +26,7 @@ pub mod certificate;
 pub mod continuity;
 pub mod curve;
 pub mod domain;
+pub mod end_direction;
 pub mod endpoint;
 pub mod exact;
 pub mod exact_ends;

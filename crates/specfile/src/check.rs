@@ -195,6 +195,19 @@ pub enum Check {
         text: String,
         value: Sym,
     },
+    /// The curve `Σ bᵢPᵢ` at one end along a difference of two control
+    /// points, `Q⁽ᵏ⁾(end) − [k = 0]·Pb = c·(Pa − Pb)`, with `c` of a stated
+    /// sign on the range (`range`: the claim's; `None`: the declared) and
+    /// optionally `c → 0` as the parameter tends to `limit` (`∞`, `−∞`).
+    EndDirection {
+        end: End,
+        order: usize,
+        wrt: Wrt,
+        along: (usize, usize),
+        positive: bool,
+        range: Option<ParamRange>,
+        limit: Option<String>,
+    },
     /// Printed conditions making two segments `Σ bᵢPᵢ` (end) and
     /// `Σ bᵢQᵢ` (start) join: `Cᵏ`, `G¹` (`Q'(0) = αP'(1)`), `G²`; with
     /// `different`, the first segment has the parameters `p1`, the second
@@ -383,6 +396,8 @@ pub enum Check {
         /// parameters and the claim's symbols): symbols of the sides,
         /// substituted with the applications, and applied like functions.
         lets: Vec<Let>,
+        /// The correction of a print that fails (`correction`).
+        correction: Option<Correction>,
     },
     /// The basis equals another basis (a spec file, `path` as written,
     /// relative to the claim's file) under a change of parameter — each of
@@ -425,6 +440,16 @@ pub struct Identity {
     pub lhs: Sym,
     pub rhs: Sym,
     pub applications: Vec<Application>,
+}
+
+/// The correction of a print that fails (`correction = { says = "…",
+/// identities = ["…"] }`): decided where the print fails; the claim still
+/// fails (the print is wrong, not mistyped), with `says` as its correction
+/// where every corrected identity holds.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Correction {
+    pub says: String,
+    pub identities: Vec<Identity>,
 }
 
 /// A reading of a printed identity (`readings = [{ of = "…", as = "…" }]`):
@@ -490,6 +515,10 @@ pub struct Curve {
     /// The printed control points, one per function; `None`: the free
     /// `P0, P1, …`.
     pub points: Option<Vec<Sym>>,
+    /// Under a claim's change of variable, the curve's own: the basis's
+    /// variable as a formula in the new variable (a spline's next segment,
+    /// `(x - x_i - h_i)/h_i1`); `None`: the claim's.
+    pub change: Option<Sym>,
 }
 
 /// How a printed identity is quantified over the parameter values.

@@ -276,6 +276,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             Check::TableArithmetic { path, text }
         }
         "same-basis" => same_basis(src, spec, c)?,
+        "end-direction" => crate::direction_read::end_direction(src, spec, c)?,
         "table-quotes" => {
             let (path, text) = data_file(src, c)?;
             let (quotes_path, quotes) =
@@ -291,7 +292,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             return src.invalid(
                 c.check.span(),
                 "claims.check",
-                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, fourier-span, all, not-printed, interpolant-nonnegative, interpolant-continuity, table-arithmetic, table-quotes, same-basis or surface-join"),
+                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, fourier-span, all, not-printed, interpolant-nonnegative, interpolant-continuity, table-arithmetic, table-quotes, same-basis, end-direction or surface-join"),
             );
         }
     };
@@ -359,6 +360,20 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             c.polygons.as_ref().map(|_| c.check.span()),
             matches!(check, Check::ShapeEffect { .. }),
         ),
+        (
+            "correction",
+            c.correction.as_ref().map(|k| k.says.span()),
+            matches!(check, Check::Identity { .. }),
+        ),
+        (
+            "along",
+            [&c.along, &c.sign, &c.limit]
+                .into_iter()
+                .flatten()
+                .next()
+                .map(Spanned::span),
+            matches!(check, Check::EndDirection { .. }),
+        ),
     ] {
         if let (Some(span), false) = (given, taken) {
             return src.invalid(
@@ -374,6 +389,8 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                         "polygons" => "shape-effect",
                         "quotes" => "table-quotes",
                         "curves" => "identity` or `check = \"endpoint-derivatives",
+                        "correction" => "identity",
+                        "along" => "end-direction",
                         _ => "interpolant-nonnegative` or `check = \"interpolant-continuity",
                     }
                 ),

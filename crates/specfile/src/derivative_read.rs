@@ -118,6 +118,11 @@ fn curves(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<(Vec<NamedCurve
         let invalid =
             |message: String| -> Result<()> { src.invalid(at.clone(), "claims.curves", message) };
         let name = raw.name.get_ref().trim().to_string();
+        if raw.change.is_some() {
+            invalid(format!(
+                "curve `{name}`: a curve's own `change` belongs to `check = \"identity\"`"
+            ))?;
+        }
         if !ascii_name(&name) || out.iter().any(|k: &NamedCurve| k.name == name) {
             invalid(format!(
                 "`{name}`: a curve is named once, by ASCII letters and digits"

@@ -494,7 +494,8 @@ impl<'a> Substitution<'a> {
             | Check::ConvexHull { range, .. }
             | Check::Independent { range, .. }
             | Check::TotalPositivity { range, .. }
-            | Check::Monotone { range, .. } => *range = None,
+            | Check::Monotone { range, .. }
+            | Check::EndDirection { range, .. } => *range = None,
             Check::EndpointValues { values, .. } => *values = self.printed(values)?,
             Check::EndpointDerivatives { values, .. } => {
                 for v in values.iter_mut() {
@@ -536,7 +537,7 @@ impl<'a> Substitution<'a> {
                 readings,
                 change,
                 lets,
-                ..
+                correction,
             } => {
                 for l in lets.iter_mut() {
                     l.value = self.sym(&l.value, &format!("the claim's `let` name `{}`", l.name))?;
@@ -547,7 +548,11 @@ impl<'a> Substitution<'a> {
                 if let Some(change) = change {
                     change.value = self.sym(&change.value, "the printed change of variable")?;
                 }
+                for own in curves.iter_mut().filter_map(|k| k.change.as_mut()) {
+                    *own = self.sym(own, "a curve's own change of variable")?;
+                }
                 let read = readings.iter_mut().map(|r| &mut r.identity);
+                let read = read.chain(correction.iter_mut().flat_map(|c| c.identities.iter_mut()));
                 for item in identities.iter_mut().chain(read) {
                     let what = format!("the printed identity `{}`", item.text);
                     for a in &mut item.applications {

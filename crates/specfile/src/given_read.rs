@@ -76,12 +76,13 @@ fn between(spec: &Spec, name: &str, text: &str) -> Option<Between> {
 }
 
 /// The checks that are decided over a range of the only parameter.
-const RANGED: [&str; 5] = [
+const RANGED: [&str; 6] = [
     "nonnegative",
     "convex-hull",
     "independent",
     "total-positivity",
     "monotone",
+    "end-direction",
 ];
 
 /// The parameter values a claim fixes and the ranges it narrows: `at`

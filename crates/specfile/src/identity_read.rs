@@ -29,7 +29,9 @@ use toml::Spanned;
 
 use trig_symbolic::Sym;
 
-use crate::check::{Application, Applied, Argument, Change, Check, Curve, Identity, Let, Reading};
+use crate::check::{
+    Application, Applied, Argument, Change, Check, Correction, Curve, Identity, Let, Reading,
+};
 use crate::error::Result;
 use crate::raw::{RawClaim, RawCurve};
 use crate::source::Source;
@@ -58,6 +60,7 @@ pub(crate) fn identity(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Ch
             name: name.get_ref().trim().to_string(),
             weighted: c.weights.unwrap_or(false),
             points: None,
+            change: None,
         }),
         None if c.weights.is_some() => {
             return src.invalid(
@@ -101,11 +104,11 @@ pub(crate) fn identity(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Ch
             extra.push(name.to_string());
         }
     }
-    for raw in c.curves.iter().flatten() {
-        curves.push(printed_curve(src, spec, raw, &curves, &extra)?);
-    }
     let change = change(src, spec, c, &mut names, &mut extra)?;
     let changed = change.is_some();
+    for raw in c.curves.iter().flatten() {
+        curves.push(printed_curve(src, spec, raw, &curves, &extra, changed)?);
+    }
     let mut lets: Vec<Let> = Vec::new();
     for item in c.lets.iter().flatten() {
         let Some((name, formula)) = item.get_ref().split_once('=') else {
@@ -165,12 +168,24 @@ pub(crate) fn identity(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Ch
             identity: one(src, spec, &r.read, &curves, &extra, changed, &lets)?,
         });
     }
+    let correction = match &c.correction {
+        Some(raw) => Some(Correction {
+            says: raw.says.get_ref().trim().to_string(),
+            identities: raw
+                .identities
+                .iter()
+                .map(|item| one(src, spec, item, &curves, &extra, changed, &lets))
+                .collect::<Result<Vec<_>>>()?,
+        }),
+        None => None,
+    };
     Ok(Check::Identity {
         identities,
         curves,
         readings,
         change,
         lets,
+        correction,
     })
 }
 
@@ -190,13 +205,15 @@ fn substituted(formula: &Sym, lets: &[Let]) -> std::result::Result<Sym, trig_sym
 }
 
 /// A curve of printed control points: one formula per function, in the
-/// parameters and the free symbols; its name unlike every other name.
+/// parameters and the free symbols; its name unlike every other name;
+/// under the claim's change of variable (`changed`) optionally its own.
 fn printed_curve(
     src: &Source<'_>,
     spec: &Spec,
     raw: &RawCurve,
     before: &[Curve],
     extra: &[String],
+    changed: bool,
 ) -> Result<Curve> {
     let name = raw.name.get_ref().trim().to_string();
     let taken = spec.names().fixed(&name, "a curve of the identities");
@@ -230,10 +247,28 @@ fn printed_curve(
                 .map_err(|e| src.formula_error(p, e))
         })
         .collect::<Result<Vec<_>>>()?;
+    let change = match &raw.change {
+        Some(formula) if changed => Some(
+            spec.parse_claim_formula(formula.get_ref(), extra, &[])
+                .map_err(|e| src.formula_error(formula, e))?
+                .0,
+        ),
+        Some(formula) => {
+            return src.invalid(
+                formula.span(),
+                "claims.curves",
+                format!(
+                    "curve `{name}`: its own `change` needs the claim's `change` (the new variable)"
+                ),
+            );
+        }
+        None => None,
+    };
     Ok(Curve {
         name,
         weighted: false,
         points: Some(points),
+        change,
     })
 }
 

@@ -36,6 +36,7 @@ mod budget;
 pub mod check;
 mod claims;
 mod derivative_read;
+mod direction_read;
 pub mod document;
 pub mod error;
 pub mod exact_range;
@@ -59,6 +60,7 @@ pub mod spec;
 
 pub use any::{AnyBasis, OpenError};
 pub use ast::Grammar;
+pub use check::Correction;
 pub use check::{
     Across, Application, Applied, Argument, Change, Check, ClaimFigure, Condition, Curve,
     Differentiated, Direction, Identity, JoinSegments, Let, ListedNet, Monotone, NamedCurve,

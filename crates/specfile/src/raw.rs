@@ -138,6 +138,15 @@ pub struct RawClaim {
     pub symbols: Option<Vec<Spanned<String>>>,
     /// `check = "identity"`: readings of printed identities.
     pub readings: Option<Vec<RawReading>>,
+    /// `check = "identity"`: the correction of a print that fails.
+    pub correction: Option<RawCorrection>,
+    /// `check = "end-direction"`: the printed difference `"P1 - P0"`.
+    pub along: Option<Spanned<String>>,
+    /// `check = "end-direction"`: the factor's sign, `positive` or `nonzero`.
+    pub sign: Option<Spanned<String>>,
+    /// `check = "end-direction"`: the factor tends to 0 as the parameter
+    /// tends to `inf` (or `-inf`).
+    pub limit: Option<Spanned<String>>,
     /// `check = "identity"`: the curve is rational, `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ`.
     pub weights: Option<bool>,
     /// `check = "same-basis"`: the other basis (a spec file, relative to
@@ -193,6 +202,18 @@ pub struct RawFigure {
 pub struct RawCurve {
     pub name: Spanned<String>,
     pub points: Vec<Spanned<String>>,
+    /// `identity` with a `change`: the curve's own variable, a formula in
+    /// the claim's new variable (a spline's next segment).
+    pub change: Option<Spanned<String>>,
+}
+
+/// `correction = { says = "…", identities = ["…"] }`: a correction of a
+/// print that fails (`identity`).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawCorrection {
+    pub says: Spanned<String>,
+    pub identities: Vec<Spanned<String>>,
 }
 
 /// `readings = [{ of = "printed identity", as = "its reading" }]`.

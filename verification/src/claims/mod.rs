@@ -3,16 +3,12 @@
 
 use crate::claim::Claim;
 
-mod properties;
-mod properties_formulas;
 mod seed000;
 mod seed000_appendix_b;
 mod seed000_appendix_c;
 mod seed000_appendix_e;
 mod seed000_appendix_print;
-mod seed004;
 mod shape_effect;
-mod thesis_interp;
 mod thesis_interp_text;
 mod thesis_out_of_range;
 mod thesis_survey;
@@ -25,7 +21,6 @@ pub fn all() -> Vec<Claim> {
         seed000_appendix_c::CLAIMS,
         seed000_appendix_e::CLAIMS,
         seed000_appendix_b::CLAIMS,
-        properties::CLAIMS,
         thesis_out_of_range::CLAIMS,
         thesis_text::CLAIMS,
         thesis_survey::CLAIMS,

@@ -629,6 +629,7 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
             readings,
             lets,
             change,
+            correction,
         } => trig_judge::identity::printed_identities(
             spec,
             identities,
@@ -636,6 +637,31 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
             readings,
             lets,
             change.as_ref(),
+            correction.as_ref(),
+        ),
+        Check::EndDirection {
+            end,
+            order,
+            wrt,
+            along,
+            positive,
+            range,
+            limit,
+        } => trig_judge::end_direction::end_direction(
+            spec,
+            &trig_judge::end_direction::Direction {
+                end: *end,
+                order: *order,
+                wrt: *wrt,
+                along: *along,
+                sign: if *positive {
+                    trig_judge::end_direction::FactorSign::Positive
+                } else {
+                    trig_judge::end_direction::FactorSign::Nonzero
+                },
+                range: range.as_ref(),
+                limit: limit.as_deref(),
+            },
         ),
         Check::SameBasis {
             other,
