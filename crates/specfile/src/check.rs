@@ -557,6 +557,10 @@ pub struct Given {
     /// decided through rational ranges next to them and, at the end
     /// itself, exactly (`trig_judge::exact_ends`).
     pub exact: Vec<crate::ExactRange>,
+    /// A knot vector and a span of it (`knots = { … }`): the basis's
+    /// functions combined by a knot family's printed coefficients there
+    /// ([`crate::knots`]).
+    pub knots: Option<crate::knots::Knots>,
 }
 
 /// A parameter between two ends linear in the others: `μ ∈ [lo, hi]`.

@@ -9,7 +9,8 @@ use trig_symbolic::Sym;
 use crate::check::{Between, Fixed, Given};
 use crate::error::{Result, SpecError};
 use crate::exact_range::ExactRange;
-use crate::raw::RawClaim;
+use crate::knots::{KNOT_FAMILIES, Knots};
+use crate::raw::{RawClaim, RawKnots};
 use crate::source::Source;
 use crate::spec::Spec;
 
@@ -142,6 +143,9 @@ pub(crate) fn given(src: &Source<'_>, spec: &Spec, c: &RawClaim, kind: &str) -> 
         });
         Ok(())
     };
+    if let Some(k) = &c.knots {
+        out.knots = Some(knots(src, spec, k)?);
+    }
     if kind != "symmetry" {
         for (name, v) in c.at.iter().flatten() {
             let name = param(name, v.span(), "at")?;
@@ -295,4 +299,48 @@ pub(crate) fn given(src: &Source<'_>, spec: &Spec, c: &RawClaim, kind: &str) -> 
         }
     }
     Ok(out)
+}
+
+/// A claim's knot vector (`knots = { … }`, [`crate::knots`]): a knot family
+/// of the catalog, each knot a number, the knots non-decreasing.
+fn knots(src: &Source<'_>, spec: &Spec, k: &Spanned<RawKnots>) -> Result<Knots> {
+    let raw = k.get_ref();
+    let bad = |message: String| src.invalid(k.span(), "claims.knots", message);
+    if Knots::family(&raw.coefficients).is_none() {
+        return bad(format!(
+            "`{}`: not a knot family (expected one of {})",
+            raw.coefficients,
+            KNOT_FAMILIES.join(", ")
+        ));
+    }
+    let mut values = Vec::new();
+    for text in &raw.values {
+        let value = match spec.parse_formula(text, &[]) {
+            Ok(v) if v.variables().is_empty() => v,
+            _ => return bad(format!("`{text}`: a knot is a rational number")),
+        };
+        values.push(value);
+    }
+    let increasing = values.windows(2).all(|w| {
+        matches!(
+            (w[0].as_rational(), w[1].as_rational()),
+            (Some(a), Some(b)) if a <= b
+        )
+    });
+    if !increasing {
+        return bad("the knots are rational numbers in non-decreasing order".into());
+    }
+    if usize::try_from(raw.span).map_or(true, |j| j + 1 >= values.len()) {
+        return bad(format!(
+            "span {}: the span [n_j, n_(j+1)) lies inside the {} knots",
+            raw.span,
+            values.len()
+        ));
+    }
+    Ok(Knots {
+        coefficients: raw.coefficients.clone(),
+        texts: raw.values.iter().map(|t| t.trim().to_string()).collect(),
+        values,
+        span: raw.span,
+    })
 }

@@ -2,85 +2,22 @@
 //! non-uniform coefficients (2)–(3) (M3), and those coefficients in the
 //! uniform case (M3b).
 
-use rug::Rational;
 use trig_core::families::seed000::uniform_normaliser;
 use trig_core::families::seed000_nonuniform::NonUniform;
 use trig_symbolic::Sym;
 
-use super::seed000_appendix_c::{NONUNIFORM_J, nonuniform_knots};
 use crate::claim::Claim;
-use trig_judge::exact::{IDENTITY, residual_verdict, sum};
+use trig_judge::exact::{IDENTITY, residual_verdict};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
-pub const CLAIMS: &[Claim] = &[
-    Claim {
-        id: "M3",
-        check: m3,
-    },
-    Claim {
-        id: "M3b",
-        check: m3b,
-    },
-];
+pub const CLAIMS: &[Claim] = &[Claim {
+    id: "M3b",
+    check: m3b,
+}];
 
 fn zeta() -> Sym {
     Sym::var("zeta")
-}
-
-/// Σ of the four segment functions of (5) on span `j` minus 1, exactly, or
-/// the typed error of the printed formulas.
-fn unity_residual(knots: Vec<Sym>, j: i64) -> Result<Sym, trig_core::CoreError> {
-    let (s, c) = (Sym::var("s"), Sym::var("c"));
-    let seg = NonUniform::new(knots, zeta()).segment(j, &s, &c)?;
-    Ok(sum(&seg) - &Sym::one())
-}
-
-fn m3() -> Verdict {
-    let knots = nonuniform_knots();
-    let shown = knots
-        .iter()
-        .map(Sym::to_string)
-        .collect::<Vec<_>>()
-        .join(", ");
-    let mut parts = Vec::new();
-    for j in [NONUNIFORM_J, NONUNIFORM_J + 2] {
-        let v = match unity_residual(knots.clone(), j) {
-            Ok(r) if r.is_zero() => residual_verdict(&r, &Sym::zero()),
-            Ok(r) => {
-                // one exact point, re-checkable by hand: ζ = 2, z = tan(θ/2) = 1/2
-                let at = r
-                    .subs("zeta", &Sym::int(2))
-                    .subs("s", &Sym::rational(Rational::from((4, 5))))
-                    .subs("c", &Sym::rational(Rational::from((3, 5))));
-                let mut v = residual_verdict(&(r + &Sym::one()), &Sym::one());
-                v.evidence.push(format!(
-                    "at ζ = 2, θ = 2 arctan(1/2) (s = 4/5, c = 3/5): Σ F − 1 = {at} (exact)"
-                ));
-                v
-            }
-            Err(e) => Verdict::new(
-                Status::Fails,
-                IDENTITY,
-                vec![format!("the printed formulas are undefined: {e}")],
-            ),
-        };
-        parts.push((
-            format!("span [n_{j}, n_{}) of knots {shown}: Σ F − 1", j + 1),
-            v,
-        ));
-    }
-    let uniform: Vec<Sym> = (0..=20).map(Sym::int).collect();
-    let v = match unity_residual(uniform, 10) {
-        Ok(r) => residual_verdict(&(r + &Sym::one()), &Sym::one()),
-        Err(e) => Verdict::new(
-            Status::Fails,
-            IDENTITY,
-            vec![format!("the printed formulas are undefined: {e}")],
-        ),
-    };
-    parts.push(("uniform knots n_i = i, span [n_10, n_11)".into(), v));
-    Verdict::all(IDENTITY, parts)
 }
 
 fn m3b() -> Verdict {

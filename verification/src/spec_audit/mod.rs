@@ -344,7 +344,9 @@ fn decide_stated(spec: &Spec, claim: &SpecClaim) -> Verdict {
                 0,
                 format!(
                     "decided at {given}, as the claim states: {}",
-                    if claim.given.fixed.is_empty() && claim.given.between.is_empty() {
+                    if claim.given.knots.is_some() && claim.given.ranges.is_empty() && claim.given.fixed.is_empty() {
+                        "the segment functions of that span formed from the basis's functions before deciding"
+                    } else if claim.given.fixed.is_empty() && claim.given.between.is_empty() {
                         "these ranges in place of the declared ones"
                     } else {
                         "the values substituted into the formulas of the basis and of the claim before deciding"
@@ -353,9 +355,18 @@ fn decide_stated(spec: &Spec, claim: &SpecClaim) -> Verdict {
             );
             v
         }
+        // the printed construction on the claim's knots is undefined: the
+        // claim about it is refuted by the knots it names
+        Err(e @ trig_specfile::GivenError::Coefficients { .. }) => {
+            Verdict::new(Status::Fails, KNOTS, vec![e.to_string()])
+        }
         Err(e) => Verdict::not_checkable(format!("the claim fixes {given}, where {e}")),
     }
 }
+
+/// How a claim on knots where the printed coefficient formulas are
+/// undefined is decided.
+const KNOTS: &str = "the printed coefficient formulas evaluated exactly on the claim's knots";
 
 /// `maximal = true` on `independent` with the claim's own ranges: the
 /// declared ranges (with the claim's fixed values, if any) against the
