@@ -590,6 +590,7 @@ impl<'a> Substitution<'a> {
             Check::Unity
             | Check::OneMaximum
             | Check::FourierSpan { .. }
+            | Check::KnotCoefficients { .. }
             | Check::ShapeEffect { .. }
             | Check::Continuity { .. }
             | Check::LocalControl { .. }

@@ -6,7 +6,7 @@ use toml::Spanned;
 use trig_core::ParamRange;
 use trig_symbolic::Sym;
 
-use crate::check::{Between, Fixed, Given};
+use crate::check::{Between, Check, Fixed, Given};
 use crate::error::{Result, SpecError};
 use crate::exact_range::ExactRange;
 use crate::knots::{KNOT_FAMILIES, Knots};
@@ -143,7 +143,7 @@ pub(crate) fn given(src: &Source<'_>, spec: &Spec, c: &RawClaim, kind: &str) -> 
         });
         Ok(())
     };
-    if let Some(k) = &c.knots {
+    if let Some(k) = c.knots.as_ref().filter(|_| kind != "knot-coefficients") {
         out.knots = Some(knots(src, spec, k)?);
     }
     if kind != "symmetry" {
@@ -303,7 +303,7 @@ pub(crate) fn given(src: &Source<'_>, spec: &Spec, c: &RawClaim, kind: &str) -> 
 
 /// A claim's knot vector (`knots = { … }`, [`crate::knots`]): a knot family
 /// of the catalog, each knot a number, the knots non-decreasing.
-fn knots(src: &Source<'_>, spec: &Spec, k: &Spanned<RawKnots>) -> Result<Knots> {
+pub(crate) fn knots(src: &Source<'_>, spec: &Spec, k: &Spanned<RawKnots>) -> Result<Knots> {
     let raw = k.get_ref();
     let bad = |message: String| src.invalid(k.span(), "claims.knots", message);
     if Knots::family(&raw.coefficients).is_none() {
@@ -343,4 +343,70 @@ fn knots(src: &Source<'_>, spec: &Spec, k: &Spanned<RawKnots>) -> Result<Knots> 
         values,
         span: raw.span,
     })
+}
+
+/// `check = "knot-coefficients"`: the claim's knots (taken by the check,
+/// not formed into the basis: the check is about the coefficients) and the
+/// printed matrix, a row of one formula per basis function for each
+/// segment function of the knot family.
+pub(crate) fn knot_coefficients(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check> {
+    let field = "claims.knots";
+    let Some(k) = &c.knots else {
+        return src.invalid(
+            c.check.span(),
+            field,
+            "`knot-coefficients` needs `knots`".into(),
+        );
+    };
+    let knots = knots(src, spec, k)?;
+    let Some(rows) = &c.matrix else {
+        return src.invalid(
+            c.check.span(),
+            "claims.matrix",
+            "`knot-coefficients` needs `matrix`, the printed coefficients".into(),
+        );
+    };
+    let (names, _) = Knots::family(&knots.coefficients).unwrap_or_default();
+    if rows.len() != names.len() || rows.iter().any(|r| r.len() != spec.functions.len()) {
+        return src.invalid(
+            c.check.span(),
+            "claims.matrix",
+            format!(
+                "expected {} rows (the segment functions {}) of {} coefficients (of {})",
+                names.len(),
+                names.join(", "),
+                spec.functions.len(),
+                spec.functions
+                    .iter()
+                    .map(|f| f.name.as_str())
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ),
+        );
+    }
+    let matrix = rows
+        .iter()
+        .map(|row| {
+            row.iter()
+                .map(|item| {
+                    let text = item.get_ref().trim().to_string();
+                    match spec.parse_formula(&text, &[]) {
+                        Ok(v)
+                            if !v.variables().iter().any(|n| {
+                                !spec.params.iter().any(|p| &p.name == n) && n != "pi"
+                            }) =>
+                        {
+                            Ok((text, v))
+                        }
+                        _ => src.invalid(
+                            item.span(),
+                            "claims.matrix",
+                            format!("`{text}`: a coefficient is a formula in the parameters"),
+                        ),
+                    }
+                })
+                .collect::<Result<Vec<_>>>()
+        })
+        .collect::<Result<Vec<_>>>()?;
+    Ok(Check::KnotCoefficients { knots, matrix })
 }

@@ -61,19 +61,29 @@ impl Knots {
         })
     }
 
+    /// The rows of the coefficient matrix of the span one by one, each
+    /// with the typed error of the printed formulas where they are
+    /// undefined on the knots (seed 000: `d_j`, `b_{j,·}`, `c_{j,·}`, `a_j`).
+    pub fn rows(&self, param: &Sym) -> Vec<Result<Vec<Sym>, CoreError>> {
+        let f = NonUniform::new(self.values.clone(), param.clone());
+        let j = self.span;
+        let zero = Sym::zero();
+        vec![
+            f.d(j)
+                .map(|d| vec![d, zero.clone(), zero.clone(), zero.clone()]),
+            f.b(j).map(|b| b.to_vec()),
+            f.c(j).map(|c| c.to_vec()),
+            f.a(j)
+                .map(|a| vec![zero.clone(), zero.clone(), zero.clone(), a]),
+        ]
+    }
+
     /// The coefficient matrix `M` of the span (row `i`: `F_i = Σ_k M_{ik} f_k`),
     /// exactly, with the family's parameter as the symbol `param`.
     /// Seed 000, eq. (5): `F₀ = d_j l₀`, `F₁ = Σ b_{j,k} l_k`,
     /// `F₂ = Σ c_{j,k} l_k`, `F₃ = a_j l₃`, the coefficients (2)–(3).
     fn matrix(&self, param: &Sym) -> Result<Vec<Vec<Sym>>, CoreError> {
-        let co = NonUniform::new(self.values.clone(), param.clone()).span(self.span)?;
-        let zero = Sym::zero();
-        Ok(vec![
-            vec![co.d, zero.clone(), zero.clone(), zero.clone()],
-            co.b.to_vec(),
-            co.c.to_vec(),
-            vec![zero.clone(), zero.clone(), zero, co.a],
-        ])
+        self.rows(param).into_iter().collect()
     }
 
     /// The basis of `spec` on the span: its functions replaced by the

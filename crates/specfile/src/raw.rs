@@ -73,6 +73,9 @@ pub struct RawClaim {
     pub at: Option<BTreeMap<String, Spanned<String>>>,
     /// A knot vector and a span of it (`crate::knots`).
     pub knots: Option<Spanned<RawKnots>>,
+    /// `check = "knot-coefficients"`: the printed coefficient matrix, a
+    /// row per segment function.
+    pub matrix: Option<Vec<Vec<Spanned<String>>>>,
     pub params: Option<BTreeMap<String, Spanned<String>>>,
     pub end: Option<Spanned<String>>,
     pub order: Option<Spanned<i64>>,

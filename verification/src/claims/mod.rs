@@ -8,7 +8,6 @@ mod local_control_joins;
 mod properties;
 mod properties_formulas;
 mod second_list;
-mod seed000;
 mod seed000_appendix_b;
 mod seed000_appendix_c;
 mod seed000_appendix_e;
@@ -27,7 +26,6 @@ mod thesis_text;
 pub fn all() -> Vec<Claim> {
     [
         thesis::CLAIMS,
-        seed000::CLAIMS,
         seed000_appendix_c::CLAIMS,
         seed000_appendix_e::CLAIMS,
         seed000_appendix_b::CLAIMS,

@@ -614,6 +614,9 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
         Check::TableArithmetic { text, .. } => trig_judge::table_arithmetic::decide(text),
         Check::TableQuotes { text, quotes, .. } => trig_judge::table_quotes::decide(text, quotes),
         Check::FourierSpan { span } => trig_judge::fourier::in_span(spec, span),
+        Check::KnotCoefficients { knots, matrix } => {
+            trig_judge::knot_coefficients::knot_coefficients(spec, knots, matrix)
+        }
         Check::SurfaceJoin {
             path,
             kind,
