@@ -4,7 +4,7 @@
 use proptest::prelude::*;
 use rug::Rational;
 use trig_core::families::seed000_nonuniform::NonUniform;
-use trig_core::{Family, Mpfr, Ring};
+use trig_core::{Family, Mpfr, Real, Ring};
 use trig_deriv::continuity::{self, Smoothness};
 use trig_deriv::family_derivatives;
 use trig_judge::numeric::{PREC, differ};
@@ -48,11 +48,18 @@ fn printed_a3_differs_from_the_fourth_derivative_in_mpfr() {
     assert!(!differ(&x, &(q4 * &x.int(12))));
 }
 
-/// The exact value after "Σ F − 1 = " in an evidence line.
-fn reported_value(line: &str) -> Rational {
-    let tail = line.split("Σ F − 1 = ").nth(1).expect("a reported value");
-    let text = tail.split(' ').next().unwrap();
-    text.parse::<Rational>().expect("an exact rational")
+/// An exact witness value as the report prints it (`plain`: rationals and
+/// `sqrt(2)`), in MPFR.
+fn reported(plain: &str) -> Mpfr {
+    let text = plain.replace("sqrt(2)", "r");
+    let sym = trig_specfile::Expression::parse(&text, trig_specfile::Grammar::Spec, &["r"])
+        .and_then(|e| e.to_sym())
+        .expect("an exact value");
+    let like = mp(&Rational::new());
+    sym.eval(&like, &|n: &str| {
+        (n == "r").then(|| Mpfr(mp(&Rational::from(2)).0.sqrt()))
+    })
+    .expect("a value")
 }
 
 #[test]
@@ -67,21 +74,34 @@ fn partition_of_unity_counterexample_recomputes_in_mpfr() {
     .iter()
     .map(|&k| mp(&Rational::from(k)))
     .collect();
-    let f = NonUniform::new(knots, mp(&Rational::from(2)));
-    let (s, c) = (mp(&Rational::from((4, 5))), mp(&Rational::from((3, 5))));
-    let lines: Vec<String> = m3
+    // each non-uniform span's witness: ζ and t exact, Σ F − 1 recomputed
+    // from the printed formulas in MPFR
+    let witnesses: Vec<_> = m3
         .evidence
         .iter()
-        .map(|e| e.line())
-        .filter(|l| l.contains("Σ F − 1 = "))
+        .filter_map(|e| e.witness.as_ref())
         .collect();
-    assert_eq!(lines.len(), 2);
-    for (line, j) in lines.into_iter().zip([8, 10]) {
+    assert_eq!(witnesses.len(), 2, "{:?}", m3.evidence);
+    for (w, j) in witnesses.into_iter().zip([8, 10]) {
+        let value = |name: &str| {
+            w.point
+                .iter()
+                .find(|a| a.name == name)
+                .map(|a| a.value.clone())
+                .expect("the witness point")
+        };
+        assert_eq!((value("ζ").as_str(), value("t").as_str()), ("0", "1/4·π"));
+        let f = NonUniform::new(knots.clone(), mp(&Rational::new()));
+        let x = mp(&Rational::new());
+        let (s, c) = (x.pi() * &x.ratio(1, 4)).sin_cos();
         let seg = f.segment(j, &s, &c).unwrap();
-        let total = seg[1..].iter().fold(seg[0].clone(), |a, x| a + x) - &s.int(1);
-        let reported = mp(&reported_value(&line));
-        assert!(!differ(&total, &reported), "span {j}: {line}");
-        assert!(differ(&total, &s.int(0)));
+        let total = seg[1..].iter().fold(seg[0].clone(), |a, x| a + x);
+        let reported = reported(&w.values[0].value.plain);
+        assert!(
+            !differ(&total, &reported),
+            "span {j}: {total:?} {reported:?}"
+        );
+        assert!(differ(&total, &s.int(1)));
     }
 }
 

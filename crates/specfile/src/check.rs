@@ -379,6 +379,14 @@ pub enum Check {
     /// (`span = ["1", "sin(t)", "cos(2*t)"]`): each element as printed,
     /// with its value in the exact ring.
     FourierSpan { span: Vec<(String, Sym)> },
+    /// The coefficients of a basis on a knot vector (`check =
+    /// "knot-coefficients"`, [`crate::knots`]): the matrix `M` of the span
+    /// (`F_i = Σ_k M_{ik} f_k`) against the printed one (`matrix`, row `i`
+    /// the coefficients of `F_i`, each as printed with its exact value).
+    KnotCoefficients {
+        knots: crate::knots::Knots,
+        matrix: Vec<Vec<(String, Sym)>>,
+    },
     /// Printed identities in the functions of the basis applied at printed
     /// arguments (`b2(t) + b3(1 - t) = 1`, `b1'(1/3) = 0`), their
     /// derivatives in the variable, and curves `Σ bᵢPᵢ` (optionally
@@ -611,6 +619,10 @@ pub struct Given {
     /// decided through rational ranges next to them and, at the end
     /// itself, exactly (`trig_judge::exact_ends`).
     pub exact: Vec<crate::ExactRange>,
+    /// A knot vector and a span of it (`knots = { … }`): the basis's
+    /// functions combined by a knot family's printed coefficients there
+    /// ([`crate::knots`]).
+    pub knots: Option<crate::knots::Knots>,
 }
 
 /// A parameter between two ends linear in the others: `μ ∈ [lo, hi]`.

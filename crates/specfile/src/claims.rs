@@ -237,6 +237,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
         },
         "surface-join" => crate::listing::surface_join(src, spec, c)?,
         "cylinder" => crate::listing::cylinder(src, spec, c)?,
+        "knot-coefficients" => crate::given_read::knot_coefficients(src, spec, c)?,
         "all" => Check::All {
             claims: need(src, c, &c.claims, "claims")?
                 .iter()
@@ -292,7 +293,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             return src.invalid(
                 c.check.span(),
                 "claims.check",
-                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, fourier-span, all, not-printed, interpolant-nonnegative, interpolant-continuity, table-arithmetic, table-quotes, same-basis, end-direction or surface-join"),
+                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, fourier-span, all, not-printed, interpolant-nonnegative, interpolant-continuity, table-arithmetic, table-quotes, same-basis, end-direction, surface-join, cylinder or knot-coefficients"),
             );
         }
     };

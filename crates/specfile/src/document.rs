@@ -291,6 +291,7 @@ fn umbrella_of_parts(
         ("range", c.range.is_some()),
         ("ranges", c.ranges.is_some()),
         ("region", c.region.is_some()),
+        ("knots", c.knots.is_some()),
     ];
     if let Some((field, _)) = stray.iter().find(|(_, given)| *given) {
         return src.invalid(

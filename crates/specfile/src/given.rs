@@ -41,6 +41,11 @@ pub enum GivenError {
     /// to each other, a region whose ends are not ordered).
     #[error("{what}: {why}")]
     Refused { what: String, why: String },
+    /// The printed coefficient formulas of a basis on a knot vector are
+    /// undefined on the claim's knots ([`crate::knots`]): the basis the
+    /// claim is about does not exist there.
+    #[error("the printed coefficient formulas are undefined on {knots}: {why}")]
+    Coefficients { knots: String, why: String },
 }
 
 impl Given {
@@ -50,6 +55,7 @@ impl Given {
             && self.ranges.is_empty()
             && self.between.is_empty()
             && self.exact.is_empty()
+            && self.knots.is_none()
     }
 
     /// `λ = 0, μ ∈ [0, 1]` in the parameters' printed symbols.
@@ -83,6 +89,7 @@ impl Given {
                     b.fraction()
                 )
             }))
+            .chain(self.knots.iter().map(crate::knots::Knots::describe))
             .collect::<Vec<_>>()
             .join(", ")
     }
@@ -90,7 +97,10 @@ impl Given {
     /// The spec and the check with the given values substituted and the
     /// given ranges in place of the declared ones.
     pub fn apply(&self, spec: &Spec, check: &Check) -> Result<(Spec, Check), GivenError> {
-        let mut spec = spec.clone();
+        let mut spec = match &self.knots {
+            Some(knots) => knots.apply(spec)?,
+            None => spec.clone(),
+        };
         let mut check = check.clone();
         let segments = matches!(
             check,
@@ -590,6 +600,7 @@ impl<'a> Substitution<'a> {
             Check::Unity
             | Check::OneMaximum
             | Check::FourierSpan { .. }
+            | Check::KnotCoefficients { .. }
             | Check::ShapeEffect { .. }
             | Check::Continuity { .. }
             | Check::LocalControl { .. }

@@ -6,10 +6,11 @@ use toml::Spanned;
 use trig_core::ParamRange;
 use trig_symbolic::Sym;
 
-use crate::check::{Between, Fixed, Given};
+use crate::check::{Between, Check, Fixed, Given};
 use crate::error::{Result, SpecError};
 use crate::exact_range::ExactRange;
-use crate::raw::RawClaim;
+use crate::knots::{KNOT_FAMILIES, Knots};
+use crate::raw::{RawClaim, RawKnots};
 use crate::source::Source;
 use crate::spec::Spec;
 
@@ -143,6 +144,9 @@ pub(crate) fn given(src: &Source<'_>, spec: &Spec, c: &RawClaim, kind: &str) -> 
         });
         Ok(())
     };
+    if let Some(k) = c.knots.as_ref().filter(|_| kind != "knot-coefficients") {
+        out.knots = Some(knots(src, spec, k)?);
+    }
     if kind != "symmetry" {
         for (name, v) in c.at.iter().flatten() {
             let name = param(name, v.span(), "at")?;
@@ -296,4 +300,114 @@ pub(crate) fn given(src: &Source<'_>, spec: &Spec, c: &RawClaim, kind: &str) -> 
         }
     }
     Ok(out)
+}
+
+/// A claim's knot vector (`knots = { … }`, [`crate::knots`]): a knot family
+/// of the catalog, each knot a number, the knots non-decreasing.
+pub(crate) fn knots(src: &Source<'_>, spec: &Spec, k: &Spanned<RawKnots>) -> Result<Knots> {
+    let raw = k.get_ref();
+    let bad = |message: String| src.invalid(k.span(), "claims.knots", message);
+    if Knots::family(&raw.coefficients).is_none() {
+        return bad(format!(
+            "`{}`: not a knot family (expected one of {})",
+            raw.coefficients,
+            KNOT_FAMILIES.join(", ")
+        ));
+    }
+    let mut values = Vec::new();
+    for text in &raw.values {
+        let value = match spec.parse_formula(text, &[]) {
+            Ok(v) if v.variables().is_empty() => v,
+            _ => return bad(format!("`{text}`: a knot is a rational number")),
+        };
+        values.push(value);
+    }
+    let increasing = values.windows(2).all(|w| {
+        matches!(
+            (w[0].as_rational(), w[1].as_rational()),
+            (Some(a), Some(b)) if a <= b
+        )
+    });
+    if !increasing {
+        return bad("the knots are rational numbers in non-decreasing order".into());
+    }
+    if usize::try_from(raw.span).map_or(true, |j| j + 1 >= values.len()) {
+        return bad(format!(
+            "span {}: the span [n_j, n_(j+1)) lies inside the {} knots",
+            raw.span,
+            values.len()
+        ));
+    }
+    Ok(Knots {
+        coefficients: raw.coefficients.clone(),
+        texts: raw.values.iter().map(|t| t.trim().to_string()).collect(),
+        values,
+        span: raw.span,
+    })
+}
+
+/// `check = "knot-coefficients"`: the claim's knots (taken by the check,
+/// not formed into the basis: the check is about the coefficients) and the
+/// printed matrix, a row of one formula per basis function for each
+/// segment function of the knot family.
+pub(crate) fn knot_coefficients(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check> {
+    let field = "claims.knots";
+    let Some(k) = &c.knots else {
+        return src.invalid(
+            c.check.span(),
+            field,
+            "`knot-coefficients` needs `knots`".into(),
+        );
+    };
+    let knots = knots(src, spec, k)?;
+    let Some(rows) = &c.matrix else {
+        return src.invalid(
+            c.check.span(),
+            "claims.matrix",
+            "`knot-coefficients` needs `matrix`, the printed coefficients".into(),
+        );
+    };
+    let (names, _) = Knots::family(&knots.coefficients).unwrap_or_default();
+    if rows.len() != names.len() || rows.iter().any(|r| r.len() != spec.functions.len()) {
+        return src.invalid(
+            c.check.span(),
+            "claims.matrix",
+            format!(
+                "expected {} rows (the segment functions {}) of {} coefficients (of {})",
+                names.len(),
+                names.join(", "),
+                spec.functions.len(),
+                spec.functions
+                    .iter()
+                    .map(|f| f.name.as_str())
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ),
+        );
+    }
+    let matrix = rows
+        .iter()
+        .map(|row| {
+            row.iter()
+                .map(|item| {
+                    let text = item.get_ref().trim().to_string();
+                    match spec.parse_formula(&text, &[]) {
+                        Ok(v)
+                            if !v.variables().iter().any(|n| {
+                                !spec.params.iter().any(|p| &p.name == n) && n != "pi"
+                            }) =>
+                        {
+                            Ok((text, v))
+                        }
+                        _ => src.invalid(
+                            item.span(),
+                            "claims.matrix",
+                            format!("`{text}`: a coefficient is a formula in the parameters"),
+                        ),
+                    }
+                })
+                .collect::<Result<Vec<_>>>()
+        })
+        .collect::<Result<Vec<_>>>()?;
+    Ok(Check::KnotCoefficients { knots, matrix })
 }

@@ -48,6 +48,7 @@ pub mod given;
 mod given_read;
 mod identity_read;
 mod join_read;
+pub mod knots;
 mod listing;
 mod load;
 mod names;

@@ -45,6 +45,15 @@ pub struct RawFunction {
     pub formula: Spanned<String>,
 }
 
+/// `knots = { coefficients = "…", values = ["0", "1", …], span = 8 }`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawKnots {
+    pub coefficients: String,
+    pub values: Vec<String>,
+    pub span: i64,
+}
+
 /// `[[claims]]`: common fields, then the fields of each kind of check.
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -62,6 +71,11 @@ pub struct RawClaim {
     pub map: Option<Spanned<String>>,
     pub index: Option<Spanned<String>>,
     pub at: Option<BTreeMap<String, Spanned<String>>>,
+    /// A knot vector and a span of it (`crate::knots`).
+    pub knots: Option<Spanned<RawKnots>>,
+    /// `check = "knot-coefficients"`: the printed coefficient matrix, a
+    /// row per segment function.
+    pub matrix: Option<Vec<Vec<Spanned<String>>>>,
     pub params: Option<BTreeMap<String, Spanned<String>>>,
     pub end: Option<Spanned<String>>,
     pub order: Option<Spanned<i64>>,

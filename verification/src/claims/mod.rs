@@ -3,7 +3,6 @@
 
 use crate::claim::Claim;
 
-mod seed000;
 mod seed000_appendix_b;
 mod seed000_appendix_c;
 mod seed000_appendix_e;
@@ -17,7 +16,6 @@ mod thesis_text;
 /// The Rust checkers of the claims still marked `built-in`.
 pub fn all() -> Vec<Claim> {
     [
-        seed000::CLAIMS,
         seed000_appendix_c::CLAIMS,
         seed000_appendix_e::CLAIMS,
         seed000_appendix_b::CLAIMS,

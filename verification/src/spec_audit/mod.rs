@@ -351,7 +351,9 @@ fn decide_stated(spec: &Spec, claim: &SpecClaim) -> Verdict {
                 0,
                 format!(
                     "decided at {given}, as the claim states: {}",
-                    if claim.given.fixed.is_empty() && claim.given.between.is_empty() {
+                    if claim.given.knots.is_some() && claim.given.ranges.is_empty() && claim.given.fixed.is_empty() {
+                        "the segment functions of that span formed from the basis's functions before deciding"
+                    } else if claim.given.fixed.is_empty() && claim.given.between.is_empty() {
                         "these ranges in place of the declared ones"
                     } else {
                         "the values substituted into the formulas of the basis and of the claim before deciding"
@@ -360,9 +362,18 @@ fn decide_stated(spec: &Spec, claim: &SpecClaim) -> Verdict {
             );
             v
         }
+        // the printed construction on the claim's knots is undefined: the
+        // claim about it is refuted by the knots it names
+        Err(e @ trig_specfile::GivenError::Coefficients { .. }) => {
+            Verdict::new(Status::Fails, KNOTS, vec![e.to_string()])
+        }
         Err(e) => Verdict::not_checkable(format!("the claim fixes {given}, where {e}")),
     }
 }
+
+/// How a claim on knots where the printed coefficient formulas are
+/// undefined is decided.
+const KNOTS: &str = "the printed coefficient formulas evaluated exactly on the claim's knots";
 
 /// `maximal = true` on `independent` with the claim's own ranges: the
 /// declared ranges (with the claim's fixed values, if any) against the
@@ -610,6 +621,9 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
         Check::TableArithmetic { text, .. } => trig_judge::table_arithmetic::decide(text),
         Check::TableQuotes { text, quotes, .. } => trig_judge::table_quotes::decide(text, quotes),
         Check::FourierSpan { span } => trig_judge::fourier::in_span(spec, span),
+        Check::KnotCoefficients { knots, matrix } => {
+            trig_judge::knot_coefficients::knot_coefficients(spec, knots, matrix)
+        }
         Check::SurfaceJoin {
             path,
             kind,
