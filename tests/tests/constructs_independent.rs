@@ -19,7 +19,7 @@ use rug::Rational;
 use serde_json::Value;
 use trig_e2e::{example, stdout_ok};
 
-fn audit(path: &str) -> Value {
+pub(crate) fn audit(path: &str) -> Value {
     let out = stdout_ok(&[
         "audit",
         "--spec",
@@ -42,7 +42,7 @@ fn document() -> &'static Value {
     REPORT.get_or_init(|| audit(&example("gb-2008/")))
 }
 
-fn claim<'a>(report: &'a Value, id: &str) -> &'a Value {
+pub(crate) fn claim<'a>(report: &'a Value, id: &str) -> &'a Value {
     report["claims"]
         .as_array()
         .expect("claims")
@@ -51,7 +51,7 @@ fn claim<'a>(report: &'a Value, id: &str) -> &'a Value {
         .unwrap_or_else(|| panic!("claim {id}"))
 }
 
-fn verdict(report: &Value, id: &str) -> String {
+pub(crate) fn verdict(report: &Value, id: &str) -> String {
     claim(report, id)["verdict"]
         .as_str()
         .expect("verdict")
@@ -65,19 +65,19 @@ fn q(text: &str) -> Rational {
         .unwrap_or_else(|e| panic!("{text}: {e}"))
 }
 
-fn int(n: i64) -> Rational {
+pub(crate) fn int(n: i64) -> Rational {
     Rational::from(n)
 }
 
 /// The witness of a claim: its point (by SymPy symbol: `lamda1`, `P2`,
 /// `u3`) and its values (by label: `value`, `target`, `printed P₅`).
-struct Witness {
+pub(crate) struct Witness {
     point: HashMap<String, Rational>,
     values: HashMap<String, Rational>,
 }
 
 impl Witness {
-    fn of(c: &Value) -> Witness {
+    pub(crate) fn of(c: &Value) -> Witness {
         let w = &c["witness"];
         assert!(w.is_object(), "a witness: {c}");
         let point = w["point"]
@@ -107,14 +107,14 @@ impl Witness {
 
     /// A coordinate of the point (every coordinate the formulas use is
     /// named, zeros included).
-    fn at(&self, name: &str) -> Rational {
+    pub(crate) fn at(&self, name: &str) -> Rational {
         self.point
             .get(name)
             .cloned()
             .unwrap_or_else(|| panic!("{name} in {:?}", self.point))
     }
 
-    fn value(&self, label: &str) -> Rational {
+    pub(crate) fn value(&self, label: &str) -> Rational {
         self.values
             .get(label)
             .cloned()
@@ -123,7 +123,7 @@ impl Witness {
 }
 
 /// The evidence items of a claim with `subject` and `status`.
-fn evidence_with<'a>(c: &'a Value, subject: &str) -> Vec<&'a Value> {
+pub(crate) fn evidence_with<'a>(c: &'a Value, subject: &str) -> Vec<&'a Value> {
     c["evidence"]
         .as_array()
         .expect("evidence")
@@ -132,7 +132,7 @@ fn evidence_with<'a>(c: &'a Value, subject: &str) -> Vec<&'a Value> {
         .collect()
 }
 
-fn evidence_text(c: &Value) -> String {
+pub(crate) fn evidence_text(c: &Value) -> String {
     c["evidence"].to_string()
 }
 

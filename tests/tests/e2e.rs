@@ -28,6 +28,7 @@ mod cli_witness_points;
 mod constructs_independent;
 mod fuzz;
 mod latex_statements;
+mod options_independent;
 mod paper;
 mod sympy_forms;
 mod witness_lines;

@@ -48,11 +48,14 @@ pub(crate) fn surface_join(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Resul
     };
     let (path, text) = crate::fields::data_file(src, c)?;
     let data_span = need(src, c, &c.data, "data")?.span();
-    let nets = listing(spec, &text).map_err(|(line, message)| SpecError::Invalid {
-        at: src.at(data_span.start),
-        field: "claims.data".into(),
-        message: format!("{path} line {line}: {message}"),
-    })?;
+    let nets =
+        listing(spec, &text, fixes_every_parameter(spec, c)).map_err(|(line, message)| {
+            SpecError::Invalid {
+                at: src.at(data_span.start),
+                field: "claims.data".into(),
+                message: format!("{path} line {line}: {message}"),
+            }
+        })?;
     let seams = need(src, c, &c.seams, "seams")?
         .iter()
         .map(|item| {
@@ -119,8 +122,8 @@ pub(crate) fn cylinder(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Ch
         field: "claims.data".into(),
         message,
     };
-    let nets =
-        listing(spec, &text).map_err(|(line, m)| invalid(format!("{path} line {line}: {m}")))?;
+    let nets = listing(spec, &text, fixes_every_parameter(spec, c))
+        .map_err(|(line, m)| invalid(format!("{path} line {line}: {m}")))?;
     let Some(net) = nets.into_iter().last() else {
         return Err(invalid(format!(
             "{path}: the listing builds no net (`net NAME = …`)"
@@ -145,8 +148,23 @@ pub(crate) fn cylinder(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Ch
     Ok(Check::Cylinder { path, net, radius })
 }
 
-/// The nets a listing builds; an error is `(line, why)`.
-fn listing(spec: &Spec, text: &str) -> std::result::Result<Vec<ListedNet>, (usize, String)> {
+/// Whether the claim fixes every parameter with `at`: a division of the
+/// listing is then decided at the values (a denominator vanishing there is
+/// refused when they are put in).
+fn fixes_every_parameter(spec: &Spec, c: &RawClaim) -> bool {
+    c.at.as_ref()
+        .is_some_and(|at| spec.params.iter().all(|p| at.contains_key(&p.name)))
+}
+
+/// The nets a listing builds; an error is `(line, why)`. A division by a
+/// formula of the parameters that vanishes in their declared ranges is
+/// refused, unless the claim fixes every parameter (`fixed`): then it is
+/// read as printed, the values being put in afterwards.
+fn listing(
+    spec: &Spec,
+    text: &str,
+    fixed: bool,
+) -> std::result::Result<Vec<ListedNet>, (usize, String)> {
     let n = spec.functions.len();
     let mut points: Vec<(String, [Sym; 3])> = Vec::new();
     let mut nets: Vec<ListedNet> = Vec::new();
@@ -218,8 +236,12 @@ fn listing(spec: &Spec, text: &str) -> std::result::Result<Vec<ListedNet>, (usiz
             return Err((at, format!("`{name}`: a name of the basis, not a point")));
         }
         let formula = |t: &str| {
-            spec.parse_formula(t, &names)
-                .map_err(|e| (at, format!("`{}`: {e}", t.trim())))
+            let parsed = if fixed {
+                spec.parse_claim_formula(t, &names, &[]).map(|(v, _)| v)
+            } else {
+                spec.parse_formula(t, &names)
+            };
+            parsed.map_err(|e| (at, format!("`{}`: {e}", t.trim())))
         };
         let rhs = rhs.trim();
         let value: [Sym; 3] = match rhs.strip_prefix('(').and_then(|r| r.strip_suffix(')')) {
@@ -370,5 +392,45 @@ mod tests {
         )
         .unwrap_err();
         assert!(e.to_string().contains("builds no net"), "{e}");
+    }
+
+    /// A listing dividing by `a + 2`, which vanishes at `a = −2` of the
+    /// declared `[−2, 1]`: refused unless the claim fixes `a` with `at`,
+    /// then decided at the value (and refused at `a = −2`).
+    fn listing_with_division(at: &str) -> crate::error::Result<Spec> {
+        let dir = std::env::temp_dir().join(format!(
+            "listing-division-{}-{}",
+            std::process::id(),
+            at.len()
+        ));
+        std::fs::create_dir_all(&dir).unwrap();
+        let listing = "A = (0, 0, 0)\nB = (1, 0, 0)\nC = A + (1/(a + 2))*B\nnet P = A B C; A B C; A B C\nnet Q = C B A; C B A; C B A\n";
+        std::fs::write(dir.join("nets.txt"), listing).unwrap();
+        let spec = "id = \"b2a\"\ncitation = \"c\"\nvariable = \"polynomial\"\n[[parameters]]\nname = \"a\"\nrange = \"[-2, 1]\"\n[[functions]]\nname = \"B0\"\nformula = \"(1 - t)^2*(1 - a*t)\"\n[[functions]]\nname = \"B1\"\nformula = \"t*(1 - t)*(2 + a)\"\n[[functions]]\nname = \"B2\"\nformula = \"t^2*(1 - a + a*t)\"\n";
+        let file = dir.join("b2a.toml");
+        let text = format!(
+            "{spec}[[claims]]\nid = \"s\"\nsource = \"s\"\nstatement = \"s\"\ncheck = \"surface-join\"\ndata = \"nets.txt\"\njoin = \"C1\"\nseams = [\"P | Q\"]\n{at}"
+        );
+        Spec::from_str_named(&text, file.to_str().unwrap())
+    }
+
+    #[test]
+    fn a_division_by_a_parameter_is_read_at_the_fixed_values() {
+        let e = listing_with_division("").unwrap_err();
+        assert!(e.to_string().contains("vanishes"), "{e}");
+        let spec = listing_with_division("at = { a = \"1\" }\n").unwrap();
+        let claim = &spec.claims[0];
+        // C = A + B/(a + 2), read as printed, then at a = 1
+        let (_, fixed) = claim.given.apply(&spec, &claim.check).unwrap();
+        let Check::SurfaceJoin { nets, .. } = &fixed else {
+            panic!("a surface join");
+        };
+        let third = trig_symbolic::Sym::int(1) / trig_symbolic::Sym::int(3);
+        assert_eq!(nets[0].points[0][2][0], third);
+        // at a = −2 the values are refused (the denominator vanishes there)
+        let spec = listing_with_division("at = { a = \"-2\" }\n").unwrap();
+        let claim = &spec.claims[0];
+        let e = claim.given.apply(&spec, &claim.check).unwrap_err();
+        assert!(e.to_string().contains("a + 2"), "{e}");
     }
 }

@@ -8,6 +8,7 @@ mod seed000_appendix_c;
 mod seed000_appendix_e;
 mod seed000_appendix_print;
 mod shape_effect;
+mod thesis_interp;
 mod thesis_interp_text;
 mod thesis_out_of_range;
 mod thesis_survey;
