@@ -340,6 +340,16 @@ pub enum Check {
         quotes_path: String,
         quotes: String,
     },
+    /// The counts a document's text quotes from a printed table of rows (a
+    /// row table file, `path`; `counts_path` a counts file of the quoted
+    /// counts, each with its reading; both as written, relative to the
+    /// claim's file, and as read), recomputed from the rows.
+    TableCount {
+        path: String,
+        text: String,
+        counts_path: String,
+        counts: String,
+    },
     /// Tensor-product patches of the basis (in both directions) over the
     /// control nets a printed listing builds (a listing file, `path` as
     /// written, relative to the claim's file), `Cᵏ` across each seam.

@@ -286,11 +286,22 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                 quotes,
             }
         }
+        "table-count" => {
+            let (path, text) = data_file(src, c)?;
+            let (counts_path, counts) =
+                file_field(src, need(src, c, &c.quotes, "quotes")?, "quotes")?;
+            Check::TableCount {
+                path,
+                text,
+                counts_path,
+                counts,
+            }
+        }
         other => {
             return src.invalid(
                 c.check.span(),
                 "claims.check",
-                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, fourier-span, all, not-printed, interpolant-nonnegative, interpolant-continuity, table-arithmetic, table-quotes, same-basis or surface-join"),
+                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, fourier-span, all, not-printed, interpolant-nonnegative, interpolant-continuity, table-arithmetic, table-quotes, table-count, same-basis or surface-join"),
             );
         }
     };
@@ -321,13 +332,14 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                     | Check::InterpolantContinuity { .. }
                     | Check::TableArithmetic { .. }
                     | Check::TableQuotes { .. }
+                    | Check::TableCount { .. }
                     | Check::SurfaceJoin { .. }
             ),
         ),
         (
             "quotes",
             c.quotes.as_ref().map(Spanned::span),
-            matches!(check, Check::TableQuotes { .. }),
+            matches!(check, Check::TableQuotes { .. } | Check::TableCount { .. }),
         ),
         (
             "scheme",
@@ -367,10 +379,10 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                     match field {
                         "claims" | "brief" => "all",
                         "reason" => "not-printed",
-                        "data" => "interpolant-nonnegative`, `check = \"interpolant-continuity`, `check = \"table-arithmetic`, `check = \"table-quotes` or `check = \"surface-join",
+                        "data" => "interpolant-nonnegative`, `check = \"interpolant-continuity`, `check = \"table-arithmetic`, `check = \"table-quotes`, `check = \"table-count` or `check = \"surface-join",
                         "other" => "same-basis",
                         "polygons" => "shape-effect",
-                        "quotes" => "table-quotes",
+                        "quotes" => "table-quotes` or `check = \"table-count",
                         "curves" => "identity` or `check = \"endpoint-derivatives",
                         _ => "interpolant-nonnegative` or `check = \"interpolant-continuity",
                     }
@@ -419,6 +431,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             | Check::InterpolantContinuity { .. }
             | Check::TableArithmetic { .. }
             | Check::TableQuotes { .. }
+            | Check::TableCount { .. }
     ) && !given.is_empty()
     {
         return src.invalid(

@@ -590,7 +590,8 @@ impl<'a> Substitution<'a> {
             | Check::InterpolantNonnegative { .. }
             | Check::InterpolantContinuity { .. }
             | Check::TableArithmetic { .. }
-            | Check::TableQuotes { .. } => {}
+            | Check::TableQuotes { .. }
+            | Check::TableCount { .. } => {}
         }
         Ok(c)
     }

@@ -20,7 +20,6 @@ mod thesis;
 mod thesis_interp;
 mod thesis_interp_text;
 mod thesis_out_of_range;
-mod thesis_survey;
 mod thesis_text;
 
 /// The Rust checkers of the claims still marked `built-in`.
@@ -35,7 +34,6 @@ pub fn all() -> Vec<Claim> {
         second_list::CLAIMS,
         thesis_out_of_range::CLAIMS,
         thesis_text::CLAIMS,
-        thesis_survey::CLAIMS,
         thesis_interp_text::CLAIMS,
         shape_effect::CLAIMS,
         local_control::CLAIMS,

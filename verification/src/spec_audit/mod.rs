@@ -602,6 +602,7 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
         } => trig_judge::interpolant_jumps::continuity(spec, data, *scheme, *order),
         Check::TableArithmetic { text, .. } => trig_judge::table_arithmetic::decide(text),
         Check::TableQuotes { text, quotes, .. } => trig_judge::table_quotes::decide(text, quotes),
+        Check::TableCount { text, counts, .. } => trig_judge::table_count::decide(text, counts),
         Check::FourierSpan { span } => trig_judge::fourier::in_span(spec, span),
         Check::SurfaceJoin {
             path,
