@@ -25,6 +25,7 @@ pub mod by_intervals;
 pub mod certificate;
 pub mod continuity;
 pub mod curve;
+pub mod data_values;
 pub mod domain;
 pub mod endpoint;
 pub mod exact;

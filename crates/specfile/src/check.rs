@@ -350,6 +350,14 @@ pub enum Check {
         counts_path: String,
         counts: String,
     },
+    /// Queries on the printed values of a data table (a table file, `path`
+    /// as written, relative to the claim's file): a value at a knot, how
+    /// many values equal a number.
+    DataValues {
+        path: String,
+        data: DataSet,
+        queries: Vec<crate::data_query::DataQuery>,
+    },
     /// Tensor-product patches of the basis (in both directions) over the
     /// control nets a printed listing builds (a listing file, `path` as
     /// written, relative to the claim's file), `Cᵏ` across each seam.

@@ -286,6 +286,21 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                 quotes,
             }
         }
+        "data-values" => {
+            let (path, data, _) = interpolant(src, c)?;
+            let queries = need(src, c, &c.values, "values")?
+                .iter()
+                .map(|q| {
+                    crate::data_query::parse(q.get_ref())
+                        .or_else(|e| src.invalid(q.span(), "claims.values", e))
+                })
+                .collect::<Result<_>>()?;
+            Check::DataValues {
+                path,
+                data,
+                queries,
+            }
+        }
         "table-count" => {
             let (path, text) = data_file(src, c)?;
             let (counts_path, counts) =
@@ -301,7 +316,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             return src.invalid(
                 c.check.span(),
                 "claims.check",
-                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, fourier-span, all, not-printed, interpolant-nonnegative, interpolant-continuity, table-arithmetic, table-quotes, table-count, same-basis or surface-join"),
+                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, fourier-span, all, not-printed, interpolant-nonnegative, interpolant-continuity, table-arithmetic, table-quotes, table-count, data-values, same-basis or surface-join"),
             );
         }
     };
@@ -333,6 +348,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                     | Check::TableArithmetic { .. }
                     | Check::TableQuotes { .. }
                     | Check::TableCount { .. }
+                    | Check::DataValues { .. }
                     | Check::SurfaceJoin { .. }
             ),
         ),
@@ -379,7 +395,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                     match field {
                         "claims" | "brief" => "all",
                         "reason" => "not-printed",
-                        "data" => "interpolant-nonnegative`, `check = \"interpolant-continuity`, `check = \"table-arithmetic`, `check = \"table-quotes`, `check = \"table-count` or `check = \"surface-join",
+                        "data" => "interpolant-nonnegative`, `check = \"interpolant-continuity`, `check = \"table-arithmetic`, `check = \"table-quotes`, `check = \"table-count`, `check = \"data-values` or `check = \"surface-join",
                         "other" => "same-basis",
                         "polygons" => "shape-effect",
                         "quotes" => "table-quotes` or `check = \"table-count",
@@ -432,6 +448,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             | Check::TableArithmetic { .. }
             | Check::TableQuotes { .. }
             | Check::TableCount { .. }
+            | Check::DataValues { .. }
     ) && !given.is_empty()
     {
         return src.invalid(

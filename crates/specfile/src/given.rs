@@ -591,7 +591,8 @@ impl<'a> Substitution<'a> {
             | Check::InterpolantContinuity { .. }
             | Check::TableArithmetic { .. }
             | Check::TableQuotes { .. }
-            | Check::TableCount { .. } => {}
+            | Check::TableCount { .. }
+            | Check::DataValues { .. } => {}
         }
         Ok(c)
     }

@@ -1,7 +1,6 @@
-//! Thesis 4.3.4–4.3.5: what the text says about the interpolants of
-//! Tables 4.4–4.6 (claims T55, T56, T57), decided on the curves the
-//! schemes of `trig-interp` build from the printed tables and on the
-//! printed data themselves.
+//! Thesis 4.3.4: what the text says about the interpolant of Table 4.4
+//! (claim T55), decided on the curve the G² scheme of `trig-interp`
+//! builds from the printed table.
 //!
 //! A maximum is the certified minimum of `−P`
 //! ([`trig_interp::certified_minimum`] on the spline with every control
@@ -16,21 +15,14 @@ use super::thesis_interp::sym_spline;
 use crate::claim::Claim;
 use trig_judge::interpolant_point::piece_witness;
 use trig_judge::recomputed::decimal;
-use trig_judge::recomputed::{self, Cell, Recomputed};
 use trig_verdict::evidence::{Evidence, Expr, Kind, Relation, Value, Witness};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
-pub const CLAIMS: &[Claim] = &[
-    Claim {
-        id: "T55",
-        check: t55,
-    },
-    Claim {
-        id: "T56",
-        check: t56,
-    },
-];
+pub const CLAIMS: &[Claim] = &[Claim {
+    id: "T55",
+    check: t55,
+}];
 
 /// How a maximum is certified, as the report states it.
 const MAXIMUM: &str = "certified maximum per piece: the certified minimum of −P (control points enclosed for π ∈ [3.14159265358979323846264338327, …328], Weierstrass z = tan(θ/2) + exact Bernstein subdivision), so max P ∈ [−upper, −lower]; reading of \"about 55\": the maximum rounds to 55 at two significant digits (certified in [54.5, 55.5)); of \"near x = 4.5\": the maximum lies on the piece [4, 5], whose middle is 4.5";
@@ -194,98 +186,6 @@ fn t55() -> Verdict {
     peak("thesis-table-4.4", Scheme::G2, Variant::Printed).unwrap_or_else(Verdict::not_checkable)
 }
 
-/// A printed data value against the value the text gives it.
-fn data_value(
-    name: &str,
-    at: &Rational,
-    text: Rational,
-    subject: &str,
-) -> Result<Evidence, String> {
-    let data = DataSet::named(name).map_err(|e| e.to_string())?;
-    let i = data
-        .x
-        .iter()
-        .position(|x| x == at)
-        .ok_or_else(|| format!("{name} has no knot x = {at}"))?;
-    let f = &data.f[i];
-    let ok = *f == text;
-    Ok(Evidence::new(
-        Kind::Comparison,
-        format!(
-            "{}, row {}: x = {at}, f = {}",
-            data.table.caption,
-            i + 1,
-            decimal(f)
-        ),
-    )
-    .about(subject, status(ok))
-    .witnessed((!ok).then(|| {
-        // the printed cell f_i against the text's value
-        let cell = Cell::new(format!("f{i}"), &decimal(f), f);
-        recomputed::witness(
-            Some(format!(
-                "{} at x = {at}: f{i} is its f, row {}",
-                data.table.caption,
-                i + 1
-            )),
-            Relation::Equal,
-            &[
-                ("printed f", &Recomputed::cell(cell)),
-                ("on the zero axis", &Recomputed::from(text.clone())),
-            ],
-        )
-    })))
-}
-
-fn t56() -> Verdict {
-    let run = || -> Result<Vec<Evidence>, String> {
-        let mut items = vec![data_value(
-            "thesis-table-4.6",
-            &Rational::from(1),
-            Rational::new(),
-            "\"a point lying on the zero axis at x = 1\" (Figure 4.15, Table 4.6)",
-        )?];
-        for name in ["thesis-table-4.5", "thesis-table-4.6"] {
-            let data = DataSet::named(name).map_err(|e| e.to_string())?;
-            let zeros = data.f.iter().filter(|f| **f == 0).count();
-            let values: Vec<String> = data.f.iter().map(decimal).collect();
-            items.push(
-                Evidence::new(
-                    Kind::Comparison,
-                    format!(
-                        "{}: f = {}; {zeros} of {} exactly 0",
-                        data.table.caption,
-                        values.join(", "),
-                        data.f.len()
-                    ),
-                )
-                .about(
-                    format!(
-                        "\"several data points lie exactly on … zero axis\" ({})",
-                        data.table.caption
-                    ),
-                    status(zeros >= 2),
-                ),
-            );
-        }
-        items.push(Evidence::note(
-            "the full sentence of 4.3.5 reads \"exactly on or extremely close to zero axis\"; its second alternative (values 0.1 at x = 1 and 1 at x = 2, which 4.3.5 itself calls \"a near-zero point\") has no definition of \"extremely close\" and is not decided",
-        ));
-        Ok(items)
-    };
-    match run() {
-        Ok(items) => {
-            let st = Status::conjunction(items.iter().filter_map(|e| e.status));
-            Verdict::new(
-                st,
-                "the printed data values of Tables 4.5 and 4.6, read exactly; \"several\" read as at least two",
-                items,
-            )
-        }
-        Err(why) => Verdict::not_checkable(why),
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -306,20 +206,5 @@ mod tests {
             assert!(lo <= hi);
             assert!(*hi >= data.f[i] && *hi >= data.f[i + 1], "piece {i}");
         }
-    }
-
-    #[test]
-    fn a_changed_value_decides_the_zero_point() {
-        let on = data_value(
-            "thesis-table-4.6",
-            &Rational::from(1),
-            Rational::from((1, 10)),
-            "x",
-        )
-        .unwrap();
-        assert_eq!(on.status, Some(Status::Holds));
-        let off = data_value("thesis-table-4.6", &Rational::from(1), Rational::new(), "x").unwrap();
-        assert_eq!(off.status, Some(Status::Fails));
-        assert!(off.witness.is_some());
     }
 }

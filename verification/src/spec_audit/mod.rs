@@ -603,6 +603,7 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
         Check::TableArithmetic { text, .. } => trig_judge::table_arithmetic::decide(text),
         Check::TableQuotes { text, quotes, .. } => trig_judge::table_quotes::decide(text, quotes),
         Check::TableCount { text, counts, .. } => trig_judge::table_count::decide(text, counts),
+        Check::DataValues { data, queries, .. } => trig_judge::data_values::decide(data, queries),
         Check::FourierSpan { span } => trig_judge::fourier::in_span(spec, span),
         Check::SurfaceJoin {
             path,
