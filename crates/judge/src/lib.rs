@@ -37,6 +37,7 @@ pub mod independence;
 pub mod instance;
 pub mod interpolant;
 pub mod interpolant_jumps;
+pub mod interpolant_maximum;
 pub mod interpolant_point;
 pub mod join;
 pub mod join_singular;

@@ -358,6 +358,15 @@ pub enum Check {
         data: DataSet,
         queries: Vec<crate::data_query::DataQuery>,
     },
+    /// What a text says about the maximum of the interpolant of a printed
+    /// data table (as for [`Check::InterpolantNonnegative`]): its value
+    /// ("about 55"), its place ("near x = 4.5"), a drop after it.
+    InterpolantMaximum {
+        path: String,
+        data: DataSet,
+        scheme: Scheme,
+        queries: Vec<crate::data_query::MaximumQuery>,
+    },
     /// Tensor-product patches of the basis (in both directions) over the
     /// control nets a printed listing builds (a listing file, `path` as
     /// written, relative to the claim's file), `Cᵏ` across each seam.

@@ -301,6 +301,22 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                 queries,
             }
         }
+        "interpolant-maximum" => {
+            let (path, data, scheme) = interpolant(src, c)?;
+            let queries = need(src, c, &c.values, "values")?
+                .iter()
+                .map(|q| {
+                    crate::data_query::maximum(q.get_ref())
+                        .or_else(|e| src.invalid(q.span(), "claims.values", e))
+                })
+                .collect::<Result<_>>()?;
+            Check::InterpolantMaximum {
+                path,
+                data,
+                scheme,
+                queries,
+            }
+        }
         "table-count" => {
             let (path, text) = data_file(src, c)?;
             let (counts_path, counts) =
@@ -316,7 +332,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             return src.invalid(
                 c.check.span(),
                 "claims.check",
-                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, fourier-span, all, not-printed, interpolant-nonnegative, interpolant-continuity, table-arithmetic, table-quotes, table-count, data-values, same-basis or surface-join"),
+                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, fourier-span, all, not-printed, interpolant-nonnegative, interpolant-continuity, table-arithmetic, table-quotes, table-count, data-values, interpolant-maximum, same-basis or surface-join"),
             );
         }
     };
@@ -349,6 +365,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                     | Check::TableQuotes { .. }
                     | Check::TableCount { .. }
                     | Check::DataValues { .. }
+                    | Check::InterpolantMaximum { .. }
                     | Check::SurfaceJoin { .. }
             ),
         ),
@@ -362,7 +379,9 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             c.scheme.as_ref().map(Spanned::span),
             matches!(
                 check,
-                Check::InterpolantNonnegative { .. } | Check::InterpolantContinuity { .. }
+                Check::InterpolantNonnegative { .. }
+                    | Check::InterpolantContinuity { .. }
+                    | Check::InterpolantMaximum { .. }
             ),
         ),
         (
@@ -395,7 +414,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                     match field {
                         "claims" | "brief" => "all",
                         "reason" => "not-printed",
-                        "data" => "interpolant-nonnegative`, `check = \"interpolant-continuity`, `check = \"table-arithmetic`, `check = \"table-quotes`, `check = \"table-count`, `check = \"data-values` or `check = \"surface-join",
+                        "data" => "interpolant-nonnegative`, `check = \"interpolant-continuity`, `check = \"table-arithmetic`, `check = \"table-quotes`, `check = \"table-count`, `check = \"data-values`, `check = \"interpolant-maximum` or `check = \"surface-join",
                         "other" => "same-basis",
                         "polygons" => "shape-effect",
                         "quotes" => "table-quotes` or `check = \"table-count",
@@ -449,6 +468,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             | Check::TableQuotes { .. }
             | Check::TableCount { .. }
             | Check::DataValues { .. }
+            | Check::InterpolantMaximum { .. }
     ) && !given.is_empty()
     {
         return src.invalid(

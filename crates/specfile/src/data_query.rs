@@ -75,5 +75,52 @@ mod tests {
         );
         assert!(parse("g(1) = 0").is_err());
         assert!(parse("count(f = 0) > 2").is_err());
+        assert!(matches!(
+            maximum("rises to about 55"),
+            Ok(MaximumQuery::About { printed, .. }) if printed == "55"
+        ));
+        assert!(matches!(
+            maximum("near x = 4.5"),
+            Ok(MaximumQuery::Near { .. })
+        ));
+        assert!(matches!(
+            maximum("then drops"),
+            Ok(MaximumQuery::Drops { .. })
+        ));
+        assert!(maximum("peaks").is_err());
+    }
+}
+
+/// What a text says about the maximum of an interpolant
+/// (`check = "interpolant-maximum"`, `values` as printed, recognised by
+/// their words).
+#[derive(Debug, Clone, PartialEq)]
+pub enum MaximumQuery {
+    /// `… about V`: the maximum rounds to `V` at `V`'s last printed digit.
+    About { text: String, printed: String },
+    /// `near x = X`: the maximum lies on the piece that contains `X`,
+    /// certified above every other piece.
+    Near { text: String, x: Rational },
+    /// `… drops …` ("then drops towards the endpoint"): the maximum lies on
+    /// the last piece and the last data value is below it.
+    Drops { text: String },
+}
+
+/// Reads what a text says about a maximum; the error says what was expected.
+pub fn maximum(text: &str) -> Result<MaximumQuery, String> {
+    let t = text.trim().to_string();
+    if let Some((_, v)) = t.split_once("about ") {
+        let printed = v.trim().to_string();
+        number(&printed)?;
+        Ok(MaximumQuery::About { text: t, printed })
+    } else if let Some((_, x)) = t.split_once("near x = ") {
+        let x = number(x)?;
+        Ok(MaximumQuery::Near { text: t, x })
+    } else if t.contains("drops") {
+        Ok(MaximumQuery::Drops { text: t })
+    } else {
+        Err(format!(
+            "`{t}`: expected `… about V`, `near x = X` or `… drops …`"
+        ))
     }
 }

@@ -592,7 +592,8 @@ impl<'a> Substitution<'a> {
             | Check::TableArithmetic { .. }
             | Check::TableQuotes { .. }
             | Check::TableCount { .. }
-            | Check::DataValues { .. } => {}
+            | Check::DataValues { .. }
+            | Check::InterpolantMaximum { .. } => {}
         }
         Ok(c)
     }

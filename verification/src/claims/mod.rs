@@ -18,7 +18,6 @@ mod seed004;
 mod shape_effect;
 mod thesis;
 mod thesis_interp;
-mod thesis_interp_text;
 mod thesis_out_of_range;
 mod thesis_text;
 
@@ -34,7 +33,6 @@ pub fn all() -> Vec<Claim> {
         second_list::CLAIMS,
         thesis_out_of_range::CLAIMS,
         thesis_text::CLAIMS,
-        thesis_interp_text::CLAIMS,
         shape_effect::CLAIMS,
         local_control::CLAIMS,
     ]

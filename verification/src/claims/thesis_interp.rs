@@ -4,7 +4,6 @@
 
 use trig_core::Family;
 use trig_deriv::{End, Wrt, curve_endpoint_derivatives};
-use trig_interp::{DataSet, Scheme, Spline, Variant};
 use trig_symbolic::Sym;
 
 /// Derivatives of orders 0…2 of `Σ b_j(·; m) P_j` at `end` in `wrt`.
@@ -18,13 +17,4 @@ pub(super) fn derivs(points: &[Sym], m: &Sym, end: End, wrt: Wrt, h: &Sym) -> Ve
         wrt,
         h,
     )
-}
-
-pub(super) fn sym_spline(
-    name: &str,
-    scheme: Scheme,
-    variant: Variant,
-) -> Result<Spline<Sym>, String> {
-    let data = DataSet::named(name).map_err(|e| e.to_string())?;
-    trig_judge::interpolant::exact_spline(&data, scheme, variant)
 }

@@ -604,6 +604,12 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
         Check::TableQuotes { text, quotes, .. } => trig_judge::table_quotes::decide(text, quotes),
         Check::TableCount { text, counts, .. } => trig_judge::table_count::decide(text, counts),
         Check::DataValues { data, queries, .. } => trig_judge::data_values::decide(data, queries),
+        Check::InterpolantMaximum {
+            data,
+            scheme,
+            queries,
+            ..
+        } => trig_judge::interpolant_maximum::maximum(spec, data, *scheme, queries),
         Check::FourierSpan { span } => trig_judge::fourier::in_span(spec, span),
         Check::SurfaceJoin {
             path,
