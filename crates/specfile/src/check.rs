@@ -353,6 +353,33 @@ pub enum Check {
         quotes_path: String,
         quotes: String,
     },
+    /// The counts a document's text quotes from a printed table of rows (a
+    /// row table file, `path`; `counts_path` a counts file of the quoted
+    /// counts, each with its reading; both as written, relative to the
+    /// claim's file, and as read), recomputed from the rows.
+    TableCount {
+        path: String,
+        text: String,
+        counts_path: String,
+        counts: String,
+    },
+    /// Queries on the printed values of a data table (a table file, `path`
+    /// as written, relative to the claim's file): a value at a knot, how
+    /// many values equal a number.
+    DataValues {
+        path: String,
+        data: DataSet,
+        queries: Vec<crate::data_query::DataQuery>,
+    },
+    /// What a text says about the maximum of the interpolant of a printed
+    /// data table (as for [`Check::InterpolantNonnegative`]): its value
+    /// ("about 55"), its place ("near x = 4.5"), a drop after it.
+    InterpolantMaximum {
+        path: String,
+        data: DataSet,
+        scheme: Scheme,
+        queries: Vec<crate::data_query::MaximumQuery>,
+    },
     /// Tensor-product patches of the basis (in both directions) over the
     /// control nets a printed listing builds (a listing file, `path` as
     /// written, relative to the claim's file), `Cᵏ` across each seam.

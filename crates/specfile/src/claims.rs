@@ -289,11 +289,53 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                 quotes,
             }
         }
+        "data-values" => {
+            let (path, data, _) = interpolant(src, c)?;
+            let queries = need(src, c, &c.values, "values")?
+                .iter()
+                .map(|q| {
+                    crate::data_query::parse(q.get_ref())
+                        .or_else(|e| src.invalid(q.span(), "claims.values", e))
+                })
+                .collect::<Result<_>>()?;
+            Check::DataValues {
+                path,
+                data,
+                queries,
+            }
+        }
+        "interpolant-maximum" => {
+            let (path, data, scheme) = interpolant(src, c)?;
+            let queries = need(src, c, &c.values, "values")?
+                .iter()
+                .map(|q| {
+                    crate::data_query::maximum(q.get_ref())
+                        .or_else(|e| src.invalid(q.span(), "claims.values", e))
+                })
+                .collect::<Result<_>>()?;
+            Check::InterpolantMaximum {
+                path,
+                data,
+                scheme,
+                queries,
+            }
+        }
+        "table-count" => {
+            let (path, text) = data_file(src, c)?;
+            let (counts_path, counts) =
+                file_field(src, need(src, c, &c.quotes, "quotes")?, "quotes")?;
+            Check::TableCount {
+                path,
+                text,
+                counts_path,
+                counts,
+            }
+        }
         other => {
             return src.invalid(
                 c.check.span(),
                 "claims.check",
-                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, fourier-span, all, not-printed, interpolant-nonnegative, interpolant-continuity, table-arithmetic, table-quotes, same-basis, end-direction, surface-join, cylinder or knot-coefficients"),
+                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, fourier-span, all, not-printed, interpolant-nonnegative, interpolant-continuity, table-arithmetic, table-quotes, table-count, data-values, interpolant-maximum, same-basis, end-direction, surface-join, cylinder or knot-coefficients"),
             );
         }
     };
@@ -324,6 +366,9 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                     | Check::InterpolantContinuity { .. }
                     | Check::TableArithmetic { .. }
                     | Check::TableQuotes { .. }
+                    | Check::TableCount { .. }
+                    | Check::DataValues { .. }
+                    | Check::InterpolantMaximum { .. }
                     | Check::SurfaceJoin { .. }
                     | Check::Cylinder { .. }
             ),
@@ -331,14 +376,16 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
         (
             "quotes",
             c.quotes.as_ref().map(Spanned::span),
-            matches!(check, Check::TableQuotes { .. }),
+            matches!(check, Check::TableQuotes { .. } | Check::TableCount { .. }),
         ),
         (
             "scheme",
             c.scheme.as_ref().map(Spanned::span),
             matches!(
                 check,
-                Check::InterpolantNonnegative { .. } | Check::InterpolantContinuity { .. }
+                Check::InterpolantNonnegative { .. }
+                    | Check::InterpolantContinuity { .. }
+                    | Check::InterpolantMaximum { .. }
             ),
         ),
         (
@@ -385,10 +432,10 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                     match field {
                         "claims" | "brief" => "all",
                         "reason" => "not-printed",
-                        "data" => "interpolant-nonnegative`, `check = \"interpolant-continuity`, `check = \"table-arithmetic`, `check = \"table-quotes`, `check = \"surface-join` or `check = \"cylinder",
+                        "data" => "interpolant-nonnegative`, `check = \"interpolant-continuity`, `check = \"table-arithmetic`, `check = \"table-quotes`, `check = \"table-count`, `check = \"data-values`, `check = \"interpolant-maximum`, `check = \"surface-join` or `check = \"cylinder",
                         "other" => "same-basis",
                         "polygons" => "shape-effect",
-                        "quotes" => "table-quotes",
+                        "quotes" => "table-quotes` or `check = \"table-count",
                         "curves" => "identity` or `check = \"endpoint-derivatives",
                         "correction" => "identity",
                         "along" => "end-direction",
@@ -439,6 +486,9 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             | Check::InterpolantContinuity { .. }
             | Check::TableArithmetic { .. }
             | Check::TableQuotes { .. }
+            | Check::TableCount { .. }
+            | Check::DataValues { .. }
+            | Check::InterpolantMaximum { .. }
     ) && !given.is_empty()
     {
         return src.invalid(

@@ -611,7 +611,10 @@ impl<'a> Substitution<'a> {
             | Check::InterpolantNonnegative { .. }
             | Check::InterpolantContinuity { .. }
             | Check::TableArithmetic { .. }
-            | Check::TableQuotes { .. } => {}
+            | Check::TableQuotes { .. }
+            | Check::TableCount { .. }
+            | Check::DataValues { .. }
+            | Check::InterpolantMaximum { .. } => {}
         }
         Ok(c)
     }

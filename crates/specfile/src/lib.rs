@@ -35,6 +35,7 @@ mod ast;
 mod budget;
 pub mod check;
 mod claims;
+pub mod data_query;
 mod derivative_read;
 mod direction_read;
 pub mod document;

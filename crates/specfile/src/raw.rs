@@ -136,7 +136,7 @@ pub struct RawClaim {
     /// table's own unless given).
     pub data: Option<Spanned<String>>,
     pub scheme: Option<Spanned<String>>,
-    /// `check = "table-quotes"`: the quotes file (relative to the claim's
+    /// `check = "table-quotes"` (or `"table-count"`: the counts file): the quotes file (relative to the claim's
     /// file): the statements in words about the tables of `data`.
     pub quotes: Option<Spanned<String>>,
     /// `check = "fourier-span"`: the printed span, one harmonic each.

@@ -8,10 +8,7 @@ mod seed000_appendix_c;
 mod seed000_appendix_e;
 mod seed000_appendix_print;
 mod shape_effect;
-mod thesis_interp;
-mod thesis_interp_text;
 mod thesis_out_of_range;
-mod thesis_survey;
 mod thesis_text;
 
 /// The Rust checkers of the claims still marked `built-in`.
@@ -22,8 +19,6 @@ pub fn all() -> Vec<Claim> {
         seed000_appendix_b::CLAIMS,
         thesis_out_of_range::CLAIMS,
         thesis_text::CLAIMS,
-        thesis_survey::CLAIMS,
-        thesis_interp_text::CLAIMS,
         shape_effect::CLAIMS,
     ]
     .concat()

@@ -620,6 +620,14 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
         } => trig_judge::interpolant_jumps::continuity(spec, data, *scheme, *order),
         Check::TableArithmetic { text, .. } => trig_judge::table_arithmetic::decide(text),
         Check::TableQuotes { text, quotes, .. } => trig_judge::table_quotes::decide(text, quotes),
+        Check::TableCount { text, counts, .. } => trig_judge::table_count::decide(text, counts),
+        Check::DataValues { data, queries, .. } => trig_judge::data_values::decide(data, queries),
+        Check::InterpolantMaximum {
+            data,
+            scheme,
+            queries,
+            ..
+        } => trig_judge::interpolant_maximum::maximum(spec, data, *scheme, queries),
         Check::FourierSpan { span } => trig_judge::fourier::in_span(spec, span),
         Check::KnotCoefficients { knots, matrix } => {
             trig_judge::knot_coefficients::knot_coefficients(spec, knots, matrix)
