@@ -67,7 +67,11 @@ fn item(data: &DataSet, q: &DataQuery) -> Evidence {
                     decimal(value)
                 ),
             )
-            .about(q.text.as_str(), status(k >= *least))
+            // the query as math: `count(f = 0) ≥ 2`
+            .about(
+                format!("count(f = {}) ≥ {least}", decimal(value)),
+                status(k >= *least),
+            )
         }
     }
 }
