@@ -43,6 +43,7 @@ pub mod interpolant_point;
 pub mod join;
 pub mod join_singular;
 pub mod knot_coefficients;
+pub mod leaves_hull;
 pub mod local_control;
 pub mod maxima;
 pub mod memo;

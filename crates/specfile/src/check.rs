@@ -399,6 +399,16 @@ pub enum Check {
         net: ListedNet,
         radius: Rational,
     },
+    /// At each value of `parameter`, the curve `Σ bᵢPᵢ` of each printed
+    /// polygon leaves the polygon's convex hull and the tensor-product
+    /// surface over the listing's net (`net`) leaves the net's bounding box:
+    /// each shown by one exact point outside.
+    LeavesHull {
+        parameter: String,
+        values: Vec<Rational>,
+        polygons: Vec<Vec<(Rational, Rational)>>,
+        net: Option<ListedNet>,
+    },
     /// Each function has exactly one maximum on the domain ("each bᵢ has
     /// one maximum value").
     OneMaximum,

@@ -237,6 +237,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
         },
         "surface-join" => crate::listing::surface_join(src, spec, c)?,
         "cylinder" => crate::listing::cylinder(src, spec, c)?,
+        "leaves-hull" => crate::listing::leaves_hull(src, spec, c)?,
         "knot-coefficients" => crate::given_read::knot_coefficients(src, spec, c)?,
         "all" => Check::All {
             claims: need(src, c, &c.claims, "claims")?
@@ -335,7 +336,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             return src.invalid(
                 c.check.span(),
                 "claims.check",
-                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, fourier-span, all, not-printed, interpolant-nonnegative, interpolant-continuity, table-arithmetic, table-quotes, table-count, data-values, interpolant-maximum, same-basis, end-direction, surface-join, cylinder or knot-coefficients"),
+                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, fourier-span, all, not-printed, interpolant-nonnegative, interpolant-continuity, table-arithmetic, table-quotes, table-count, data-values, interpolant-maximum, same-basis, end-direction, surface-join, cylinder, knot-coefficients or leaves-hull"),
             );
         }
     };
@@ -371,6 +372,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                     | Check::InterpolantMaximum { .. }
                     | Check::SurfaceJoin { .. }
                     | Check::Cylinder { .. }
+                    | Check::LeavesHull { .. }
             ),
         ),
         (
@@ -406,7 +408,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
         (
             "polygons",
             c.polygons.as_ref().map(|_| c.check.span()),
-            matches!(check, Check::ShapeEffect { .. }),
+            matches!(check, Check::ShapeEffect { .. } | Check::LeavesHull { .. }),
         ),
         (
             "correction",
@@ -432,9 +434,9 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                     match field {
                         "claims" | "brief" => "all",
                         "reason" => "not-printed",
-                        "data" => "interpolant-nonnegative`, `check = \"interpolant-continuity`, `check = \"table-arithmetic`, `check = \"table-quotes`, `check = \"table-count`, `check = \"data-values`, `check = \"interpolant-maximum`, `check = \"surface-join` or `check = \"cylinder",
+                        "data" => "interpolant-nonnegative`, `check = \"interpolant-continuity`, `check = \"table-arithmetic`, `check = \"table-quotes`, `check = \"table-count`, `check = \"data-values`, `check = \"interpolant-maximum`, `check = \"surface-join`, `check = \"cylinder` or `check = \"leaves-hull",
                         "other" => "same-basis",
-                        "polygons" => "shape-effect",
+                        "polygons" => "shape-effect` or `check = \"leaves-hull",
                         "quotes" => "table-quotes` or `check = \"table-count",
                         "curves" => "identity` or `check = \"endpoint-derivatives",
                         "correction" => "identity",

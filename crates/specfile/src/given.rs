@@ -592,7 +592,10 @@ impl<'a> Substitution<'a> {
                     *x = self.sym(x, "a point of the listing")?;
                 }
             }
-            Check::Cylinder { net, .. } => {
+            Check::Cylinder { net, .. }
+            | Check::LeavesHull {
+                net: Some(net), ..
+            } => {
                 for x in net.points.iter_mut().flatten().flatten() {
                     *x = self.sym(x, "a point of the listing")?;
                 }
@@ -602,6 +605,7 @@ impl<'a> Substitution<'a> {
             | Check::FourierSpan { .. }
             | Check::KnotCoefficients { .. }
             | Check::ShapeEffect { .. }
+            | Check::LeavesHull { net: None, .. }
             | Check::Continuity { .. }
             | Check::LocalControl { .. }
             | Check::All { .. }

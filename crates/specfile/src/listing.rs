@@ -115,20 +115,7 @@ pub(crate) fn surface_join(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Resul
 /// net is the one it draws) and the radius `r > 0` of the cylinder
 /// `x² + y² = r²`, a number of the formula language.
 pub(crate) fn cylinder(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check> {
-    let (path, text) = crate::fields::data_file(src, c)?;
-    let data_span = need(src, c, &c.data, "data")?.span();
-    let invalid = |message: String| SpecError::Invalid {
-        at: src.at(data_span.start),
-        field: "claims.data".into(),
-        message,
-    };
-    let nets = listing(spec, &text, fixes_every_parameter(spec, c))
-        .map_err(|(line, m)| invalid(format!("{path} line {line}: {m}")))?;
-    let Some(net) = nets.into_iter().last() else {
-        return Err(invalid(format!(
-            "{path}: the listing builds no net (`net NAME = …`)"
-        )));
-    };
+    let (path, net) = last_net(src, spec, c)?;
     let field = need(src, c, &c.radius, "radius")?;
     let radius = spec
         .parse_claim_formula(field.get_ref(), &[], &[])
@@ -146,6 +133,59 @@ pub(crate) fn cylinder(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Ch
         );
     };
     Ok(Check::Cylinder { path, net, radius })
+}
+
+/// `check = "leaves-hull"`: `parameter` with its `values` (each a case),
+/// the curves of printed `polygons` and the surface over the last net of
+/// a listing (`data`); at least one of the two.
+pub(crate) fn leaves_hull(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check> {
+    let parameter = crate::property_read::parameter_named(src, spec, c)?
+        .name
+        .clone();
+    let values = need(src, c, &c.values, "values")?
+        .iter()
+        .map(|v| crate::property_read::rational_in(src, spec, v, v.get_ref(), "values"))
+        .collect::<Result<Vec<_>>>()?;
+    let polygons = match &c.polygons {
+        Some(printed) => crate::property_read::printed_polygons(src, spec, c, printed)?,
+        None => Vec::new(),
+    };
+    let net = match &c.data {
+        Some(_) => Some(last_net(src, spec, c)?.1),
+        None => None,
+    };
+    if polygons.is_empty() && net.is_none() {
+        return src.invalid(
+            c.check.span(),
+            "claims.polygons",
+            "give the curves' `polygons`, a listing's net in `data`, or both".into(),
+        );
+    }
+    Ok(Check::LeavesHull {
+        parameter,
+        values,
+        polygons,
+        net,
+    })
+}
+
+/// The last net a listing file (`data`) builds, with the path as written.
+fn last_net(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<(String, ListedNet)> {
+    let (path, text) = crate::fields::data_file(src, c)?;
+    let data_span = need(src, c, &c.data, "data")?.span();
+    let invalid = |message: String| SpecError::Invalid {
+        at: src.at(data_span.start),
+        field: "claims.data".into(),
+        message,
+    };
+    let nets = listing(spec, &text, fixes_every_parameter(spec, c))
+        .map_err(|(line, m)| invalid(format!("{path} line {line}: {m}")))?;
+    let Some(net) = nets.into_iter().last() else {
+        return Err(invalid(format!(
+            "{path}: the listing builds no net (`net NAME = …`)"
+        )));
+    };
+    Ok((path, net))
 }
 
 /// Whether the claim fixes every parameter with `at`: a division of the
@@ -392,6 +432,52 @@ mod tests {
         )
         .unwrap_err();
         assert!(e.to_string().contains("builds no net"), "{e}");
+    }
+
+    /// A leaves-hull claim on a basis with the parameter `a`, its listing
+    /// `nets.txt` holding one net.
+    fn leaves_hull_claim(fields: &str) -> crate::error::Result<Spec> {
+        let dir = std::env::temp_dir().join(format!(
+            "leaves-hull-{}-{}",
+            std::process::id(),
+            fields.len()
+        ));
+        std::fs::create_dir_all(&dir).unwrap();
+        std::fs::write(
+            dir.join("nets.txt"),
+            "A = (0, 0, 0)\nB = (1, 0, 2)\nnet P = A B A; A B A; A B A\n",
+        )
+        .unwrap();
+        let spec = "id = \"b2a\"\ncitation = \"c\"\nvariable = \"polynomial\"\n[[parameters]]\nname = \"a\"\nrange = \"[-2, 1]\"\n[[functions]]\nname = \"B0\"\nformula = \"(1 - t)^2\"\n[[functions]]\nname = \"B1\"\nformula = \"a*t*(1 - t)\"\n[[functions]]\nname = \"B2\"\nformula = \"t^2\"\n";
+        let text = format!(
+            "{spec}[[claims]]\nid = \"s\"\nsource = \"s\"\nstatement = \"s\"\ncheck = \"leaves-hull\"\nparameter = \"a\"\n{fields}"
+        );
+        Spec::from_str_named(&text, dir.join("b2a.toml").to_str().unwrap())
+    }
+
+    #[test]
+    fn a_leaves_hull_claim_takes_values_polygons_and_a_net() {
+        let spec = leaves_hull_claim(
+            "values = [\"-2\", \"3/2\"]\npolygons = [[\"(0, 0)\", \"(1, 2)\", \"(2, 0)\"]]\ndata = \"nets.txt\"\n",
+        )
+        .unwrap();
+        let Check::LeavesHull {
+            parameter,
+            values,
+            polygons,
+            net,
+        } = &spec.claims[0].check
+        else {
+            panic!("a leaves-hull claim");
+        };
+        assert_eq!(parameter, "a");
+        assert_eq!(values[1], rug::Rational::from((3, 2)));
+        assert_eq!(polygons[0][1], (1.into(), 2.into()));
+        assert_eq!(net.as_ref().map(|n| n.name.as_str()), Some("P"));
+        let e = leaves_hull_claim("values = [\"1\"]\n").unwrap_err();
+        assert!(e.to_string().contains("`polygons`"), "{e}");
+        let e = leaves_hull_claim("values = [\"x\"]\ndata = \"nets.txt\"\n").unwrap_err();
+        assert!(e.to_string().contains("x"), "{e}");
     }
 
     /// A listing dividing by `a + 2`, which vanishes at `a = −2` of the

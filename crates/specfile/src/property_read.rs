@@ -141,18 +141,7 @@ pub(crate) fn monotone(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Ch
 /// `parameter = "lambda"`, `direction = "towards-polygon"` or
 /// `"away-from-polygon"`, optional `range` (of that parameter).
 pub(crate) fn shape_effect(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check> {
-    let name = need(src, c, &c.parameter, "parameter")?;
-    let Some(p) = spec
-        .params
-        .iter()
-        .find(|p| p.name == name.get_ref().trim() || p.symbol == name.get_ref().trim())
-    else {
-        return src.invalid(
-            name.span(),
-            "claims.parameter",
-            format!("`{}`: not a parameter of the basis", name.get_ref()),
-        );
-    };
+    let p = parameter_named(src, spec, c)?;
     let dir = need(src, c, &c.direction, "direction")?;
     let direction = match dir.get_ref().trim() {
         "towards-polygon" => Direction::TowardsPolygon,
@@ -179,6 +168,29 @@ pub(crate) fn shape_effect(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Resul
     })
 }
 
+/// The basis's parameter `parameter = "m"` names (by name or symbol).
+pub(crate) fn parameter_named<'a>(
+    src: &Source<'_>,
+    spec: &'a Spec,
+    c: &RawClaim,
+) -> Result<&'a trig_core::Parameter> {
+    let name = need(src, c, &c.parameter, "parameter")?;
+    let found = spec
+        .params
+        .iter()
+        .find(|p| p.name == name.get_ref().trim() || p.symbol == name.get_ref().trim());
+    found.map_or_else(
+        || {
+            src.invalid(
+                name.span(),
+                "claims.parameter",
+                format!("`{}`: not a parameter of the basis", name.get_ref()),
+            )
+        },
+        Ok,
+    )
+}
+
 /// `polygons = [["(0, 0)", "(1, 2)", …], …]` with `curve-at = { s = "4/5",
 /// c = "3/5" }` (the atoms of the variable; `s² + c² = 1`) and `values`
 /// (the varied parameter's values): each exact.
@@ -201,46 +213,9 @@ fn polygons(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Option<Polygo
         }
         return Ok(None);
     };
-    let number = |item: &Spanned<String>, text: &str, field: &str| -> Result<Rational> {
-        let value = formula_in(src, spec, item, "", text, &[])?;
-        value.as_rational().map_or_else(
-            || {
-                src.invalid(
-                    item.span(),
-                    &format!("claims.{field}"),
-                    format!("`{}`: expected a rational number", text.trim()),
-                )
-            },
-            Ok,
-        )
-    };
-    let mut polygons = Vec::new();
-    for polygon in printed {
-        let mut vertices = Vec::new();
-        for item in polygon {
-            let text = item.get_ref();
-            let pair = text
-                .trim()
-                .strip_prefix('(')
-                .and_then(|r| r.strip_suffix(')'));
-            let Some((x, y)) = pair.and_then(|p| p.split_once(',')) else {
-                return src.invalid(
-                    item.span(),
-                    "claims.polygons",
-                    format!("`{text}`: expected a point `(x, y)`"),
-                );
-            };
-            vertices.push((number(item, x, "polygons")?, number(item, y, "polygons")?));
-        }
-        if vertices.len() < 2 {
-            return src.invalid(
-                c.check.span(),
-                "claims.polygons",
-                "a polygon has at least two points".into(),
-            );
-        }
-        polygons.push(vertices);
-    }
+    let number =
+        |item: &Spanned<String>, text: &str, field: &str| rational_in(src, spec, item, text, field);
+    let polygons = printed_polygons(src, spec, c, printed)?;
     let atoms: Vec<String> = spec
         .functions
         .iter()
@@ -284,6 +259,69 @@ fn polygons(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Option<Polygo
         at,
         values,
     }))
+}
+
+/// A rational number of the formula language in `item` (the text `text`
+/// of it), for `claims.{field}`.
+pub(crate) fn rational_in(
+    src: &Source<'_>,
+    spec: &Spec,
+    item: &Spanned<String>,
+    text: &str,
+    field: &str,
+) -> Result<Rational> {
+    let value = formula_in(src, spec, item, "", text, &[])?;
+    value.as_rational().map_or_else(
+        || {
+            src.invalid(
+                item.span(),
+                &format!("claims.{field}"),
+                format!("`{}`: expected a rational number", text.trim()),
+            )
+        },
+        Ok,
+    )
+}
+
+/// `polygons = [["(0, 0)", "(1, 2)", …], …]`: each polygon's vertices,
+/// exact, at least two.
+pub(crate) fn printed_polygons(
+    src: &Source<'_>,
+    spec: &Spec,
+    c: &RawClaim,
+    printed: &[Vec<Spanned<String>>],
+) -> Result<Vec<Vec<(Rational, Rational)>>> {
+    let mut polygons = Vec::new();
+    for polygon in printed {
+        let mut vertices = Vec::new();
+        for item in polygon {
+            let text = item.get_ref();
+            let pair = text
+                .trim()
+                .strip_prefix('(')
+                .and_then(|r| r.strip_suffix(')'));
+            let Some((x, y)) = pair.and_then(|p| p.split_once(',')) else {
+                return src.invalid(
+                    item.span(),
+                    "claims.polygons",
+                    format!("`{text}`: expected a point `(x, y)`"),
+                );
+            };
+            vertices.push((
+                rational_in(src, spec, item, x, "polygons")?,
+                rational_in(src, spec, item, y, "polygons")?,
+            ));
+        }
+        if vertices.len() < 2 {
+            return src.invalid(
+                c.check.span(),
+                "claims.polygons",
+                "a polygon has at least two points".into(),
+            );
+        }
+        polygons.push(vertices);
+    }
+    Ok(polygons)
 }
 
 pub(crate) fn symmetry(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check> {

@@ -8,7 +8,6 @@ mod seed000_appendix_c;
 mod seed000_appendix_e;
 mod seed000_appendix_print;
 mod shape_effect;
-mod thesis_out_of_range;
 mod thesis_text;
 
 /// The Rust checkers of the claims still marked `built-in`.
@@ -17,7 +16,6 @@ pub fn all() -> Vec<Claim> {
         seed000_appendix_c::CLAIMS,
         seed000_appendix_e::CLAIMS,
         seed000_appendix_b::CLAIMS,
-        thesis_out_of_range::CLAIMS,
         thesis_text::CLAIMS,
         shape_effect::CLAIMS,
     ]

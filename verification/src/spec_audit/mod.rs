@@ -642,6 +642,12 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
         Check::Cylinder { net, radius, .. } => {
             trig_judge::surface::net_cylinder_distance(spec, net, radius)
         }
+        Check::LeavesHull {
+            parameter,
+            values,
+            polygons,
+            net,
+        } => trig_judge::leaves_hull::leaves_hull(spec, parameter, values, polygons, net.as_ref()),
         Check::OneMaximum => {
             trig_judge::maxima::exactly_one_maximum(spec, &trig_judge::exact::basis_of(spec))
         }
