@@ -3,7 +3,6 @@
 
 use crate::claim::Claim;
 
-mod seed000_appendix_b;
 mod seed000_appendix_c;
 mod seed000_appendix_e;
 mod seed000_appendix_print;
@@ -16,7 +15,6 @@ pub fn all() -> Vec<Claim> {
     [
         seed000_appendix_c::CLAIMS,
         seed000_appendix_e::CLAIMS,
-        seed000_appendix_b::CLAIMS,
         thesis_out_of_range::CLAIMS,
         thesis_text::CLAIMS,
         shape_effect::CLAIMS,
