@@ -6,6 +6,7 @@ mod documents;
 mod fixed_values;
 mod joins;
 mod local_control;
+mod nonnegative_options;
 mod seed000;
 mod seed002_004;
 mod several_parameters;

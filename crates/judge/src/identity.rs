@@ -10,7 +10,9 @@
 //! exact), and for `a = ±1` by the sum formulas
 //! `sin(ω(ax + b)) = a·s·cos ωb + c·sin ωb`,
 //! `cos(ω(ax + b)) = c·cos ωb − a·s·sin ωb`, `t ↦ at + b`,
-//! `E ↦ exp(κb)·E^a`. Each identity is then `lhs − rhs = 0` exactly, a
+//! `E ↦ exp(κb)·E^a`. At a point (`a = 0`) a derivative of order 1–5 is
+//! formed by Taylor jets instead ([`crate::point_jet`]: the same exact
+//! value, without the symbolic derivative of a large quotient). Each identity is then `lhs − rhs = 0` exactly, a
 //! failure shown with its residual and a witness.
 //!
 //! Under a change of variable (`change = { x = "(x - x_i)/h_i" }`, a basis
@@ -309,15 +311,25 @@ pub fn applied<B: Basis>(
     if let Some(k) = &kappa {
         rules.push(("E", k.clone() * &e));
     }
-    let derivative = (0..order).fold(f.clone(), |g, _| g.derive(&rules));
     if !slope.params.is_empty() || slope.pi != 0 {
         return None;
     }
     let a = slope.constant.clone();
     if a == 0 {
         let atoms = domain.atoms_at(at, &Sym::one(), &params)?;
+        // a derivative at a point: by Taylor jets (crate::point_jet)
+        if let Some(v) = (order > 0)
+            .then(|| {
+                crate::point_jet::derivative_at(f, order, &atoms, omega.as_ref(), kappa.as_ref())
+            })
+            .flatten()
+        {
+            return Some(v);
+        }
+        let derivative = (0..order).fold(f.clone(), |g, _| g.derive(&rules));
         return Some(crate::exact::at_atoms(&derivative, &atoms));
     }
+    let derivative = (0..order).fold(f.clone(), |g, _| g.derive(&rules));
     if a != 1 && a != -1 {
         return None;
     }

@@ -49,6 +49,7 @@ pub mod maxima;
 pub mod memo;
 pub mod nonnegative;
 pub mod numeric;
+pub mod point_jet;
 pub mod quoted;
 pub mod recomputed;
 pub mod region;

@@ -15,6 +15,15 @@ pub struct Printed {
     pub value: Sym,
 }
 
+/// A constant lower bound a nonnegativity claim proves instead of `0`
+/// (`margin = "1/200"`): `f − margin ≥ 0`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Margin {
+    /// As written.
+    pub text: String,
+    pub value: Rational,
+}
+
 /// A printed endpoint derivative `f⁽ᵏ⁾(end) = value` of a function or of
 /// a [`NamedCurve`].
 #[derive(Debug, Clone, PartialEq)]
@@ -152,6 +161,12 @@ pub enum Check {
     Nonnegative {
         range: Option<ParamRange>,
         maximal: bool,
+        /// The functions decided, by index in the basis the claim is about
+        /// (after its knots): all of them when empty.
+        functions: Vec<usize>,
+        /// `f ≥ margin` rather than `f ≥ 0` (a positive margin proves
+        /// `f > 0`).
+        margin: Option<Margin>,
     },
     /// Each listed function monotone on the domain for the range.
     Monotone {

@@ -165,10 +165,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
     }
     let check = match c.check.get_ref().trim() {
         "unity" => Check::Unity,
-        "nonnegative" => Check::Nonnegative {
-            range: one_param_range(src, spec, &c.range)?,
-            maximal: c.maximal.unwrap_or(false),
-        },
+        "nonnegative" => crate::nonnegative_read::nonnegative(src, spec, c)?,
         "convex-hull" => Check::ConvexHull {
             range: one_param_range(src, spec, &c.range)?,
             maximal: c.maximal.unwrap_or(false),

@@ -53,6 +53,7 @@ pub mod knots;
 mod listing;
 mod load;
 mod names;
+mod nonnegative_read;
 pub mod nonvanishing;
 mod property_read;
 mod raw;
@@ -63,6 +64,7 @@ pub mod spec;
 pub use any::{AnyBasis, OpenError};
 pub use ast::Grammar;
 pub use check::Correction;
+pub use check::Margin;
 pub use check::{
     Across, Application, Applied, Argument, Change, Check, ClaimFigure, Condition, Curve,
     Differentiated, Direction, Identity, JoinSegments, Let, ListedNet, Monotone, NamedCurve,

@@ -67,6 +67,8 @@ pub struct RawClaim {
     /// A region by linear inequalities (`"lambda >= 0, mu >= 0, lambda + mu <= 4"`).
     pub region: Option<Spanned<String>>,
     pub maximal: Option<bool>,
+    /// `check = "nonnegative"`: the functions bounded below by it (`f ≥ margin`).
+    pub margin: Option<Spanned<String>>,
     pub functions: Option<Vec<Spanned<String>>>,
     pub map: Option<Spanned<String>>,
     pub index: Option<Spanned<String>>,

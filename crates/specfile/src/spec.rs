@@ -156,6 +156,29 @@ pub const MAX_PARAMS: usize = 8;
 pub const MAX_FUNCTIONS: usize = 64;
 
 impl Spec {
+    /// The basis narrowed to the `functions` (indices, in order; all when
+    /// empty), each less `margin` where one is given: `f − m`, named
+    /// `f − m`, is `≥ 0` exactly where `f ≥ m` (a nonnegativity claim's
+    /// `functions` and `margin`).
+    pub fn narrowed(&self, functions: &[usize], margin: Option<&crate::check::Margin>) -> Spec {
+        let mut out = self.clone();
+        if !functions.is_empty() {
+            out.functions = functions
+                .iter()
+                .map(|&i| self.functions[i].clone())
+                .collect();
+        }
+        if let Some(m) = margin {
+            let value = Sym::rational(m.value.clone());
+            for f in &mut out.functions {
+                f.name = format!("{} − {}", f.name, m.text);
+                f.formula = format!("({}) - ({})", f.formula, m.text);
+                f.value = f.value.clone() - &value;
+            }
+        }
+        out
+    }
+
     /// Parameter names and printed symbols, in order.
     pub fn param_pairs(&self) -> Vec<(String, String)> {
         self.params

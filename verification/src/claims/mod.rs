@@ -3,7 +3,6 @@
 
 use crate::claim::Claim;
 
-mod seed000_appendix_b;
 mod seed000_appendix_c;
 mod seed000_appendix_e;
 mod seed000_appendix_print;
@@ -15,7 +14,6 @@ pub fn all() -> Vec<Claim> {
     [
         seed000_appendix_c::CLAIMS,
         seed000_appendix_e::CLAIMS,
-        seed000_appendix_b::CLAIMS,
         thesis_text::CLAIMS,
         shape_effect::CLAIMS,
     ]

@@ -417,14 +417,25 @@ fn exact_ends(spec: &Spec, claim: &SpecClaim) -> Verdict {
             decide(spec, &c)
         }
     };
+    // the functions and margin of a nonnegativity claim (all, none for the
+    // convex hull's)
+    let (functions, margin) = match &claim.check {
+        Check::Nonnegative {
+            functions, margin, ..
+        } => (functions.clone(), margin.clone()),
+        _ => (Vec::new(), None),
+    };
+    let narrowed = spec.narrowed(&functions, margin.as_ref());
     let nonnegativity = |maximal: bool| {
         trig_judge::exact_ends::decide(
-            spec,
+            &narrowed,
             &claim.given.exact,
             Some(maximal),
             &with(Check::Nonnegative {
                 range: None,
                 maximal,
+                functions: functions.clone(),
+                margin: margin.clone(),
             }),
         )
     };
@@ -467,9 +478,16 @@ pub fn umbrella_verdict(parts: Vec<(String, Verdict)>, brief: bool) -> Verdict {
 fn decide_check(spec: &Spec, check: &Check) -> Verdict {
     match check {
         Check::Unity => trig_judge::unity::unity(spec),
-        Check::Nonnegative { range, maximal } => {
-            trig_judge::nonnegative::nonnegative_claim(spec, range.as_ref(), *maximal)
-        }
+        Check::Nonnegative {
+            range,
+            maximal,
+            functions,
+            margin,
+        } => trig_judge::nonnegative::nonnegative_claim(
+            &spec.narrowed(functions, margin.as_ref()),
+            range.as_ref(),
+            *maximal,
+        ),
         Check::ConvexHull { range, maximal } => {
             trig_judge::nonnegative::convex_hull_claim(spec, range.as_ref(), *maximal)
         }
