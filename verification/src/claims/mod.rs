@@ -9,7 +9,6 @@ mod seed000_appendix_e;
 mod seed000_appendix_print;
 mod shape_effect;
 mod thesis_out_of_range;
-mod thesis_text;
 
 /// The Rust checkers of the claims still marked `built-in`.
 pub fn all() -> Vec<Claim> {
@@ -18,7 +17,6 @@ pub fn all() -> Vec<Claim> {
         seed000_appendix_e::CLAIMS,
         seed000_appendix_b::CLAIMS,
         thesis_out_of_range::CLAIMS,
-        thesis_text::CLAIMS,
         shape_effect::CLAIMS,
     ]
     .concat()
