@@ -241,6 +241,12 @@ pub fn identity(label: &str, lhs: &Sym, rhs: &Sym) -> Verdict {
 /// two sides differ, both values exact: [`VALUE`] and [`TARGET`], each
 /// with the expression it is the value of).
 pub fn identity_item(label: &str, lhs: &Sym, rhs: &Sym) -> Evidence {
+    identity_item_where(label, lhs, rhs, &[])
+}
+
+/// [`identity_item`] with its witness inside the claim's conditions: the
+/// symbols of `positive` positive there ([`witness::find_where`]).
+pub fn identity_item_where(label: &str, lhs: &Sym, rhs: &Sym, positive: &[String]) -> Evidence {
     let residual = lhs.clone() - rhs;
     if residual.is_zero() {
         return Evidence::new(Kind::Identity, "residual is exactly 0").about(label, Status::Holds);
@@ -248,7 +254,7 @@ pub fn identity_item(label: &str, lhs: &Sym, rhs: &Sym) -> Evidence {
     Evidence::new(Kind::Identity, "")
         .about(label, Status::Fails)
         .with("residual (value − target)", Expr::new(&residual))
-        .witnessed(witness::find(lhs, rhs, (VALUE, TARGET)))
+        .witnessed(witness::find_where(lhs, rhs, (VALUE, TARGET), positive))
 }
 
 /// The verdict on `lhs = rhs` with the residual as its only evidence.
@@ -261,9 +267,15 @@ pub fn residual_verdict(lhs: &Sym, rhs: &Sym) -> Verdict {
 
 /// Decides several identities that together make one claim.
 pub fn identities(parts: Vec<(String, Sym, Sym)>) -> Verdict {
+    identities_where(parts, &[])
+}
+
+/// [`identities`] with their witnesses inside the claim's conditions (the
+/// symbols of `positive` positive).
+pub fn identities_where(parts: Vec<(String, Sym, Sym)>, positive: &[String]) -> Verdict {
     let items: Vec<Evidence> = parts
         .iter()
-        .map(|(label, l, r)| identity_item(label, l, r))
+        .map(|(label, l, r)| identity_item_where(label, l, r, positive))
         .collect();
     let status = Status::conjunction(items.iter().filter_map(|e| e.status));
     Verdict::new(status, IDENTITY, items)

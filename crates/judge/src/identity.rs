@@ -33,26 +33,40 @@ use trig_symbolic::Sym;
 use trig_verdict::status::Status;
 
 use crate::domain::param_symbols;
-use crate::exact::{ExactBasis, identities, symbols};
+use crate::exact::{ExactBasis, identities_where, symbols};
 use trig_verdict::verdict::Verdict;
+
+/// An identity claim as read from its fields (`check = "identity"`).
+#[derive(Debug, Clone, Copy)]
+pub struct Printed<'a> {
+    pub identities: &'a [Identity],
+    pub curves: &'a [Curve],
+    pub readings: &'a [Reading],
+    pub lets: &'a [Let],
+    pub change: Option<&'a Change>,
+    pub correction: Option<&'a Correction>,
+    /// Symbols the claim's conditions make positive: witnesses lie there.
+    pub positive: &'a [String],
+}
 
 /// Decides every printed identity (the claim's `let` names substituted
 /// with the applications); an application the exact ring cannot
 /// form (an argument not linear with slope 0 or ±1, atoms not exact at
 /// the point) leaves the claim `not-checkable` with the reason.
-pub fn printed_identities<B: ExactBasis>(
-    basis: &B,
-    items: &[Identity],
-    curves: &[Curve],
-    readings: &[Reading],
-    lets: &[Let],
-    change: Option<&Change>,
-    correction: Option<&Correction>,
-) -> Verdict {
-    let v = read_identities(basis, items, curves, readings, lets, change);
+pub fn printed_identities<B: ExactBasis>(basis: &B, claim: &Printed<'_>) -> Verdict {
+    let Printed {
+        identities: items,
+        curves,
+        readings,
+        lets,
+        change,
+        correction,
+        positive,
+    } = *claim;
+    let v = read_identities(basis, items, curves, readings, lets, change, positive);
     match correction {
         Some(correction) if v.status == Status::Fails => {
-            corrected(basis, v, correction, curves, lets, change)
+            corrected(basis, v, correction, curves, lets, change, positive)
         }
         _ => v,
     }
@@ -69,9 +83,10 @@ fn corrected<B: ExactBasis>(
     curves: &[Curve],
     lets: &[Let],
     change: Option<&Change>,
+    positive: &[String],
 ) -> Verdict {
     let decided = match sides(basis, &correction.identities, curves, lets, change) {
-        Ok(parts) => identities(parts),
+        Ok(parts) => identities_where(parts, positive),
         Err(not_formed) => not_formed,
     };
     let holds = decided.status == Status::Holds;
@@ -91,12 +106,13 @@ fn read_identities<B: ExactBasis>(
     readings: &[Reading],
     lets: &[Let],
     change: Option<&Change>,
+    positive: &[String],
 ) -> Verdict {
     let parts = match sides(basis, items, curves, lets, change) {
         Ok(parts) => parts,
         Err(v) => return v,
     };
-    let printed = identities(parts);
+    let printed = identities_where(parts, positive);
     if printed.status == Status::Holds || readings.is_empty() {
         return with_change(printed, change);
     }
@@ -116,7 +132,7 @@ fn read_identities<B: ExactBasis>(
             )
         })
         .collect();
-    let decided = identities(read);
+    let decided = identities_where(read, positive);
     let failing: Vec<usize> = printed
         .evidence
         .iter()
@@ -422,18 +438,22 @@ mod tests {
             lets,
             change,
             correction,
+            positive,
         } = &spec.claims[0].check
         else {
             panic!("an identity claim");
         };
         printed_identities(
             &spec,
-            identities,
-            curves,
-            readings,
-            lets,
-            change.as_ref(),
-            correction.as_ref(),
+            &Printed {
+                identities,
+                curves,
+                readings,
+                lets,
+                change: change.as_ref(),
+                correction: correction.as_ref(),
+                positive,
+            },
         )
     }
 
@@ -473,18 +493,22 @@ mod tests {
             lets,
             change,
             correction,
+            positive,
         } = &spec.claims[0].check
         else {
             panic!("an identity claim");
         };
         printed_identities(
             &spec,
-            identities,
-            curves,
-            readings,
-            lets,
-            change.as_ref(),
-            correction.as_ref(),
+            &Printed {
+                identities,
+                curves,
+                readings,
+                lets,
+                change: change.as_ref(),
+                correction: correction.as_ref(),
+                positive,
+            },
         )
     }
 
@@ -507,6 +531,22 @@ mod tests {
             .filter_map(|e| e.subject.as_deref())
             .collect();
         assert_eq!(failing, ["B'(x_i + h) = A'(x_i + h)"]);
+    }
+
+    #[test]
+    fn a_witness_lies_where_the_claim_makes_its_symbols_positive() {
+        // λ·α₀(0) = 2 fails; its simplest witness is λ = 0 unless the
+        // claim's conditions make λ positive
+        let point = |positive: &str| {
+            let v = hermite_claim(&format!(
+                "symbols = [\"lambda\"]\n{positive}\nidentities = [\"lambda*alpha_0(0) = 2\"]"
+            ));
+            assert_eq!(v.status, Status::Fails);
+            let w = v.evidence[0].witness.clone().expect("a witness");
+            w.point[0].value.clone()
+        };
+        assert_eq!(point(""), "0");
+        assert_eq!(point("positive = [\"lambda\"]"), "1");
     }
 
     #[test]

@@ -60,6 +60,7 @@ pub mod surface;
 pub mod surface_join;
 pub mod symmetry;
 pub mod table_arithmetic;
+pub mod table_compare;
 pub mod table_count;
 pub mod table_quotes;
 pub mod total_positivity;

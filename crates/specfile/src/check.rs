@@ -368,6 +368,16 @@ pub enum Check {
         quotes_path: String,
         quotes: String,
     },
+    /// The readings a document's text makes between the printed error
+    /// tables of different schemes (a table file, `path`; `quotes_path` a
+    /// comparisons file, each statement with its kind; both as written,
+    /// relative to the claim's file, and as read), recomputed.
+    TableCompare {
+        path: String,
+        text: String,
+        quotes_path: String,
+        quotes: String,
+    },
     /// The counts a document's text quotes from a printed table of rows (a
     /// row table file, `path`; `counts_path` a counts file of the quoted
     /// counts, each with its reading; both as written, relative to the
@@ -458,6 +468,9 @@ pub enum Check {
         lets: Vec<Let>,
         /// The correction of a print that fails (`correction`).
         correction: Option<Correction>,
+        /// Symbols the claim's conditions make positive (`positive`): a
+        /// witness of a failure lies where they are positive.
+        positive: Vec<String>,
     },
     /// The basis equals another basis (a spec file, `path` as written,
     /// relative to the claim's file) under a change of parameter — each of

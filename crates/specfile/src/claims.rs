@@ -287,6 +287,17 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                 quotes,
             }
         }
+        "table-compare" => {
+            let (path, text) = data_file(src, c)?;
+            let (quotes_path, quotes) =
+                file_field(src, need(src, c, &c.quotes, "quotes")?, "quotes")?;
+            Check::TableCompare {
+                path,
+                text,
+                quotes_path,
+                quotes,
+            }
+        }
         "data-values" => {
             let (path, data, _) = interpolant(src, c)?;
             let queries = need(src, c, &c.values, "values")?
@@ -333,7 +344,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             return src.invalid(
                 c.check.span(),
                 "claims.check",
-                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, fourier-span, all, not-printed, interpolant-nonnegative, interpolant-continuity, table-arithmetic, table-quotes, table-count, data-values, interpolant-maximum, same-basis, end-direction, surface-join, cylinder, knot-coefficients or leaves-hull"),
+                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, fourier-span, all, not-printed, interpolant-nonnegative, interpolant-continuity, table-arithmetic, table-quotes, table-compare, table-count, data-values, interpolant-maximum, same-basis, end-direction, surface-join, cylinder, knot-coefficients or leaves-hull"),
             );
         }
     };
@@ -364,6 +375,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                     | Check::InterpolantContinuity { .. }
                     | Check::TableArithmetic { .. }
                     | Check::TableQuotes { .. }
+                    | Check::TableCompare { .. }
                     | Check::TableCount { .. }
                     | Check::DataValues { .. }
                     | Check::InterpolantMaximum { .. }
@@ -375,7 +387,10 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
         (
             "quotes",
             c.quotes.as_ref().map(Spanned::span),
-            matches!(check, Check::TableQuotes { .. } | Check::TableCount { .. }),
+            matches!(
+                check,
+                Check::TableQuotes { .. } | Check::TableCompare { .. } | Check::TableCount { .. }
+            ),
         ),
         (
             "scheme",
@@ -413,6 +428,11 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             matches!(check, Check::Identity { .. }),
         ),
         (
+            "positive",
+            c.positive.as_ref().map(|_| c.check.span()),
+            matches!(check, Check::Identity { .. }),
+        ),
+        (
             "along",
             [&c.along, &c.sign, &c.limit]
                 .into_iter()
@@ -431,12 +451,12 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                     match field {
                         "claims" | "brief" => "all",
                         "reason" => "not-printed",
-                        "data" => "interpolant-nonnegative`, `check = \"interpolant-continuity`, `check = \"table-arithmetic`, `check = \"table-quotes`, `check = \"table-count`, `check = \"data-values`, `check = \"interpolant-maximum`, `check = \"surface-join`, `check = \"cylinder` or `check = \"leaves-hull",
+                        "data" => "interpolant-nonnegative`, `check = \"interpolant-continuity`, `check = \"table-arithmetic`, `check = \"table-quotes`, `check = \"table-compare`, `check = \"table-count`, `check = \"data-values`, `check = \"interpolant-maximum`, `check = \"surface-join`, `check = \"cylinder` or `check = \"leaves-hull",
                         "other" => "same-basis",
                         "polygons" => "shape-effect` or `check = \"leaves-hull",
-                        "quotes" => "table-quotes` or `check = \"table-count",
+                        "quotes" => "table-quotes`, `check = \"table-compare` or `check = \"table-count",
                         "curves" => "identity` or `check = \"endpoint-derivatives",
-                        "correction" => "identity",
+                        "correction" | "positive" => "identity",
                         "along" => "end-direction",
                         _ => "interpolant-nonnegative` or `check = \"interpolant-continuity",
                     }
@@ -485,6 +505,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             | Check::InterpolantContinuity { .. }
             | Check::TableArithmetic { .. }
             | Check::TableQuotes { .. }
+            | Check::TableCompare { .. }
             | Check::TableCount { .. }
             | Check::DataValues { .. }
             | Check::InterpolantMaximum { .. }

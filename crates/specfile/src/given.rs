@@ -548,6 +548,7 @@ impl<'a> Substitution<'a> {
                 change,
                 lets,
                 correction,
+                ..
             } => {
                 for l in lets.iter_mut() {
                     l.value = self.sym(&l.value, &format!("the claim's `let` name `{}`", l.name))?;
@@ -616,6 +617,7 @@ impl<'a> Substitution<'a> {
             | Check::InterpolantContinuity { .. }
             | Check::TableArithmetic { .. }
             | Check::TableQuotes { .. }
+            | Check::TableCompare { .. }
             | Check::TableCount { .. }
             | Check::DataValues { .. }
             | Check::InterpolantMaximum { .. } => {}

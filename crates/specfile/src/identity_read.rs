@@ -8,6 +8,7 @@
 //! curve = "R"            # optional: R(x) = Σ bᵢ(x)Pᵢ, control points P0, P1, …
 //! weights = true         # optional: R(x) = Σ wᵢbᵢ(x)Pᵢ / Σ wᵢbᵢ(x), weights w0, w1, …
 //! symbols = ["q"]        # optional: further free symbols (constants of the ring)
+//! positive = ["q"]       # optional: symbols the claim's conditions make positive
 //! readings = [{ of = "b2(t) + b3(1 - t) = 1", as = "b2(t) + b3(1 - t) = 0" }]
 //! let = ["S = lambda^2 + 1", "Q = w0*b0/(w0*b0 + b1)"]   # optional, in order
 //! ```
@@ -179,6 +180,18 @@ pub(crate) fn identity(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Ch
         }),
         None => None,
     };
+    let mut positive = Vec::new();
+    for symbol in c.positive.iter().flatten() {
+        let name = symbol.get_ref().trim();
+        if !extra.iter().any(|x| x == name) || lets.iter().any(|l| l.name == name) {
+            return src.invalid(
+                symbol.span(),
+                "claims.positive",
+                format!("`{name}` is not a free symbol of the identities (`symbols`, the curve's control points or weights)"),
+            );
+        }
+        positive.push(name.to_string());
+    }
     Ok(Check::Identity {
         identities,
         curves,
@@ -186,6 +199,7 @@ pub(crate) fn identity(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Ch
         change,
         lets,
         correction,
+        positive,
     })
 }
 
@@ -665,6 +679,25 @@ mod tests {
         );
         let e = hermite_with("curve = \"R\"\ncurves = [{ name = \"R\", points = [\"0\", \"0\", \"0\", \"0\"] }]\nidentities = [\"R(0) = 0\"]").unwrap_err();
         assert!(e.to_string().contains("another curve"), "{e}");
+    }
+
+    #[test]
+    fn positive_symbols_are_free_symbols_of_the_identities() {
+        let spec = hermite_with(
+            "symbols = [\"q\", \"r\"]\npositive = [\"q\"]\nidentities = [\"q*alpha_0(0) = r\"]",
+        )
+        .unwrap();
+        let Check::Identity { positive, .. } = &spec.claims[0].check else {
+            panic!("an identity claim");
+        };
+        assert_eq!(positive, &["q"]);
+        for refused in ["z", "K"] {
+            let e = hermite_with(&format!(
+                "symbols = [\"q\"]\nlet = [\"K = q + 1\"]\npositive = [\"{refused}\"]\nidentities = [\"q*alpha_0(0) = 1\"]"
+            ))
+            .unwrap_err();
+            assert!(e.to_string().contains("not a free symbol"), "{e}");
+        }
     }
 
     #[test]

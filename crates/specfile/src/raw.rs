@@ -152,6 +152,9 @@ pub struct RawClaim {
     /// `check = "endpoint-derivatives"`: the printed parameters' names
     /// (`m1` in `Q2'(0; m1)`).
     pub symbols: Option<Vec<Spanned<String>>>,
+    /// `check = "identity"`: symbols the claim's conditions make positive
+    /// (`λ, μ > 0`): a witness of a failure gives them positive values.
+    pub positive: Option<Vec<Spanned<String>>>,
     /// `check = "identity"`: readings of printed identities.
     pub readings: Option<Vec<RawReading>>,
     /// `check = "identity"`: the correction of a print that fails.

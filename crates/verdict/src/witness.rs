@@ -214,6 +214,19 @@ pub fn ordered_names<'a>(exprs: impl IntoIterator<Item = &'a Sym>) -> Vec<String
 /// one variable at a time would be no real point). While a spec decision
 /// runs, a real point ([`crate::real_witness`]).
 pub fn find(left: &Sym, right: &Sym, labels: (&str, &str)) -> Option<Witness> {
+    find_where(left, right, labels, &[])
+}
+
+/// [`find`] inside the conditions of a claim: every symbol of `positive`
+/// is given a positive value (a point where one is `≤ 0` is no witness;
+/// the generic points give every such symbol a positive value, and the
+/// simplification keeps it so — `λ = 0` is skipped for `1`, `2`, …).
+pub fn find_where(
+    left: &Sym,
+    right: &Sym,
+    labels: (&str, &str),
+    positive: &[String],
+) -> Option<Witness> {
     // a spec basis: a real point, re-evaluated there
     if let Some(real) = crate::real_witness::find(left, right, labels) {
         return real;
@@ -223,8 +236,12 @@ pub fn find(left: &Sym, right: &Sym, labels: (&str, &str)) -> Option<Witness> {
         // no real point can be named by valuing these one by one
         return None;
     }
+    let inside = |p: &Point| {
+        p.iter()
+            .all(|(n, q)| *q > 0 || !positive.iter().any(|m| m == n))
+    };
     let differ = |p: &Point| match (at(left, p), at(right, p)) {
-        (Some(l), Some(r)) => !(l - &r).is_zero(),
+        (Some(l), Some(r)) => inside(p) && !(l - &r).is_zero(),
         _ => false,
     };
     let point = search(&names, &differ)?;
@@ -352,6 +369,23 @@ mod tests {
         assert_eq!(w.values[0].value.unicode, "3/2");
         assert_eq!(w.values[1].value.unicode, "1");
         assert!(find(&(p2.clone() + &p3), &(p3 + &p2), ("a", "b")).is_none());
+    }
+
+    #[test]
+    fn a_witness_keeps_positive_symbols_positive() {
+        let (lambda, a) = (Sym::var("lambda"), Sym::var("a1"));
+        // λ·a₁ = a₁ fails at λ = 0 unless λ is positive: then at λ = 2
+        let left = lambda * &a;
+        let w = find(&left, &a, ("value", "target")).expect("a witness");
+        assert_eq!(w.point[0].value, "0");
+        let positive = ["lambda".to_string()];
+        let w = find_where(&left, &a, ("value", "target"), &positive).expect("a witness");
+        let values: Vec<(&str, &str)> = w
+            .point
+            .iter()
+            .map(|p| (p.name.as_str(), p.value.as_str()))
+            .collect();
+        assert_eq!(values, [("λ", "2"), ("a₁", "1")]);
     }
 
     #[test]

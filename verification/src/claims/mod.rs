@@ -7,14 +7,12 @@ mod seed000_appendix_c;
 mod seed000_appendix_e;
 mod seed000_appendix_print;
 mod shape_effect;
-mod thesis_text;
 
 /// The Rust checkers of the claims still marked `built-in`.
 pub fn all() -> Vec<Claim> {
     [
         seed000_appendix_c::CLAIMS,
         seed000_appendix_e::CLAIMS,
-        thesis_text::CLAIMS,
         shape_effect::CLAIMS,
     ]
     .concat()

@@ -638,6 +638,7 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
         } => trig_judge::interpolant_jumps::continuity(spec, data, *scheme, *order),
         Check::TableArithmetic { text, .. } => trig_judge::table_arithmetic::decide(text),
         Check::TableQuotes { text, quotes, .. } => trig_judge::table_quotes::decide(text, quotes),
+        Check::TableCompare { text, quotes, .. } => trig_judge::table_compare::decide(text, quotes),
         Check::TableCount { text, counts, .. } => trig_judge::table_count::decide(text, counts),
         Check::DataValues { data, queries, .. } => trig_judge::data_values::decide(data, queries),
         Check::InterpolantMaximum {
@@ -676,14 +677,18 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
             lets,
             change,
             correction,
+            positive,
         } => trig_judge::identity::printed_identities(
             spec,
-            identities,
-            curves,
-            readings,
-            lets,
-            change.as_ref(),
-            correction.as_ref(),
+            &trig_judge::identity::Printed {
+                identities,
+                curves,
+                readings,
+                lets,
+                change: change.as_ref(),
+                correction: correction.as_ref(),
+                positive,
+            },
         ),
         Check::EndDirection {
             end,
