@@ -62,6 +62,7 @@ pub mod spec;
 
 pub use any::{AnyBasis, OpenError};
 pub use ast::Grammar;
+pub use check::Continuous;
 pub use check::Correction;
 pub use check::{
     Across, Application, Applied, Argument, Change, Check, ClaimFigure, Condition, Curve,

@@ -4,7 +4,6 @@
 use crate::claim::Claim;
 
 mod seed000_appendix_b;
-mod seed000_appendix_c;
 mod seed000_appendix_e;
 mod seed000_appendix_print;
 mod shape_effect;
@@ -14,7 +13,6 @@ mod thesis_text;
 /// The Rust checkers of the claims still marked `built-in`.
 pub fn all() -> Vec<Claim> {
     [
-        seed000_appendix_c::CLAIMS,
         seed000_appendix_e::CLAIMS,
         seed000_appendix_b::CLAIMS,
         thesis_out_of_range::CLAIMS,

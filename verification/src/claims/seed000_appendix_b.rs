@@ -7,8 +7,7 @@ use trig_core::families::seed000_nonuniform::NonUniform;
 use trig_core::{Family, Ring};
 use trig_symbolic::Sym;
 
-use super::seed000_appendix_c::{NONUNIFORM_J, nonuniform_knots};
-use super::seed000_appendix_print::{printed_part, zeta};
+use super::seed000_appendix_print::{NONUNIFORM_J, nonuniform_knots, printed_part, zeta};
 use crate::claim::Claim;
 use trig_certify::nonneg::certify;
 use trig_certify::{ParamBox, in_z};
