@@ -1,8 +1,6 @@
 //! The Rust checkers of the claims not yet stated as data, by id, and what
 //! several of them share. A claim never carries its verdict.
 
-use std::sync::OnceLock;
-
 use trig_verdict::{Evidence, Status, Verdict};
 
 /// The Rust checker of a claim still marked `built-in` in its document
@@ -14,14 +12,6 @@ pub struct Claim {
     pub id: &'static str,
     /// The checker.
     pub check: fn() -> Verdict,
-}
-
-/// The verdict of `check`, computed once per process and kept in `cell`:
-/// for a claim that is also quoted by an umbrella claim (T26 quotes
-/// T26a–k, M8 quotes M4b), so the audit decides it once. Claims run in
-/// parallel; a second caller waits for the first computation.
-pub(crate) fn shared(cell: &'static OnceLock<Verdict>, check: impl FnOnce() -> Verdict) -> Verdict {
-    cell.get_or_init(check).clone()
 }
 
 /// How an umbrella claim is decided, as the report states it.

@@ -13,18 +13,16 @@
 //!
 //! Adaptors build pieces from the catalog: the uniform B-spline basis
 //! function of a piecewise family ([`uniform_bspline`]), a polynomial or
-//! rational curve segment ([`curve_piece`]), and seed 000's non-uniform
-//! B-spline with the printed coefficients (2)–(3) ([`nonuniform_bspline`]).
+//! rational curve segment ([`curve_piece`]); the judges assemble others
+//! (a B-spline on a knot vector from its spans' segment functions).
 
 use std::collections::BTreeMap;
 use std::fmt;
 
 use rug::{Integer, Rational};
-use trig_core::families::seed000_nonuniform::NonUniform;
-use trig_core::{Basis, CoreError, Family};
+use trig_core::Basis;
 use trig_symbolic::{Poly, Sym, rational_roots};
 
-use crate::jet::{Jet, angle_atoms};
 use crate::table::{End, Wrt, curve_endpoint_derivatives, knot_derivatives};
 
 /// Highest derivative order examined.
@@ -218,20 +216,20 @@ pub fn uniform_bspline<B: Basis>(basis: &B, params: &[Sym]) -> Vec<Piece> {
 }
 
 /// One segment of a curve `Σ bᵢPᵢ` (or, with weights, `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ`)
-/// of `family` on a unit knot interval, derivatives in the global parameter.
+/// of `basis` on a unit knot interval, derivatives in the global parameter.
 /// `points` are one coordinate of each control point or symbols.
 ///
 /// # Panics
 /// As [`curve_end`].
-pub fn curve_piece(
-    family: Family,
+pub fn curve_piece<B: Basis + ?Sized>(
+    basis: &B,
     params: &[Sym],
     points: &[Sym],
     weights: Option<&[Sym]>,
 ) -> Piece {
     Piece {
-        start: curve_end(family, params, points, weights, End::Start),
-        end: curve_end(family, params, points, weights, End::End),
+        start: curve_end(basis, params, points, weights, End::Start),
+        end: curve_end(basis, params, points, weights, End::End),
     }
 }
 
@@ -243,14 +241,14 @@ pub fn curve_piece(
 /// # Panics
 /// If `weights` do not have one entry per control point, or the weight
 /// function `Σ wᵢbᵢ` vanishes at the end.
-pub fn curve_end(
-    family: Family,
+pub fn curve_end<B: Basis + ?Sized>(
+    basis: &B,
     params: &[Sym],
     points: &[Sym],
     weights: Option<&[Sym]>,
     end: End,
 ) -> Vec<Sym> {
-    match polynomial_curves(family, params, points, weights, end) {
+    match polynomial_curves(basis, params, points, weights, end) {
         (curve, None) => curve,
         (n, Some(w)) => quotient_derivatives(&[&n], &w).remove(0),
     }
@@ -258,8 +256,8 @@ pub fn curve_end(
 
 /// The derivatives at `end` of the polynomial curve `Σ bᵢPᵢ`, or of the
 /// numerator `Σ wᵢbᵢPᵢ` and the denominator `Σ wᵢbᵢ` of the rational one.
-fn polynomial_curves(
-    family: Family,
+fn polynomial_curves<B: Basis + ?Sized>(
+    basis: &B,
     params: &[Sym],
     points: &[Sym],
     weights: Option<&[Sym]>,
@@ -267,7 +265,7 @@ fn polynomial_curves(
 ) -> (Vec<Sym>, Option<Vec<Sym>>) {
     let one = Sym::one();
     let curve = |points: &[Sym]| {
-        curve_endpoint_derivatives::<Sym, K>(family, params, points, None, end, Wrt::U, &one)
+        curve_endpoint_derivatives::<Sym, K>(basis, params, points, None, end, Wrt::U, &one)
     };
     let Some(w) = weights else {
         return (curve(points), None);
@@ -285,13 +283,13 @@ fn polynomial_curves(
 ///
 /// # Panics
 /// As [`curve_end`].
-pub fn curve_jumps(
-    family: Family,
+pub fn curve_jumps<B: Basis + ?Sized>(
+    basis: &B,
     params: &[Sym],
     (left, right): (&[Sym], &[Sym]),
     weights: Option<(&[Sym], &[Sym])>,
 ) -> Vec<Sym> {
-    let at = |points, weights, end| polynomial_curves(family, params, points, weights, end);
+    let at = |points, weights, end| polynomial_curves(basis, params, points, weights, end);
     let (nl, wl) = at(left, weights.map(|w| w.0), End::End);
     let (nr, wr) = at(right, weights.map(|w| w.1), End::Start);
     match (wl, wr) {
@@ -421,57 +419,11 @@ fn binomial(k: usize, j: usize) -> Sym {
     Sym::rational(Rational::from(Integer::from(k).binomial(j as u32)))
 }
 
-/// The pieces of seed 000's B-spline basis function `F_j` of (1) with the
-/// printed non-uniform coefficients (2)–(3) over `knots`, shape parameter
-/// `xi`; derivatives in the global knot parameter `n` (on piece `i`,
-/// `t = π/2·(n − n_{j+i})/q_{j+i}`, so `d/dn = π/(2q_{j+i})·d/dt`).
-/// Pieces of zero length (coincident knots) do not exist and are skipped;
-/// every error of the printed formulas is returned as is.
-pub fn nonuniform_bspline(knots: &[Sym], xi: &Sym, j: i64) -> Result<Vec<Piece>, CoreError> {
-    let exact = NonUniform::new(knots.to_vec(), xi.clone());
-    let jets: NonUniform<Jet<Sym, K>> = NonUniform::new(
-        knots.iter().cloned().map(Jet::constant).collect(),
-        Jet::constant(xi.clone()),
-    );
-    let (zero, one) = (Sym::zero(), Sym::one());
-    let half_pi = Sym::pi() * &Sym::rational(Rational::from((1, 2)));
-    let start = angle_atoms::<Sym, K>(&zero, &one, zero.clone());
-    let end = angle_atoms::<Sym, K>(&one, &zero, half_pi.clone());
-    let mut pieces = Vec::new();
-    for piece in 0..4usize {
-        let q = exact.q(j + piece as i64)?;
-        if q.is_zero() {
-            continue;
-        }
-        let rate = half_pi.clone() / &q;
-        let derivs = |atoms: &trig_core::Atoms<Jet<Sym, K>>| -> Result<Vec<Sym>, CoreError> {
-            let f = jets.bspline_piece(j, piece, &atoms.s, &atoms.c)?;
-            Ok(scaled(&f, &rate))
-        };
-        pieces.push(Piece {
-            start: derivs(&start)?,
-            end: derivs(&end)?,
-        });
-    }
-    Ok(pieces)
-}
-
-/// The derivatives of a jet, the `k`-th multiplied by `rateᵏ`.
-fn scaled(f: &Jet<Sym, K>, rate: &Sym) -> Vec<Sym> {
-    let mut factor = Sym::one();
-    f.derivatives()
-        .into_iter()
-        .map(|d| {
-            let v = d * &factor;
-            factor = factor.clone() * rate;
-            v
-        })
-        .collect()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::jet::Jet;
+    use trig_core::Family;
     use trig_symbolic::Poly;
 
     fn symbols(prefix: &str, n: usize) -> Vec<Sym> {
@@ -562,15 +514,15 @@ mod tests {
         let p = symbols("P", 4);
         let ones = vec![Sym::one(); 4];
         for end in [End::Start, End::End] {
-            let plain = curve_end(Family::Bernstein3, &[], &p, None, end);
+            let plain = curve_end(&Family::Bernstein3, &[], &p, None, end);
             assert_eq!(
-                curve_end(Family::Bernstein3, &[], &p, Some(&ones), end),
+                curve_end(&Family::Bernstein3, &[], &p, Some(&ones), end),
                 plain
             );
         }
         // rational cubic Bézier: C(0) = P0, C'(0) = 3 (w1/w0)(P1 − P0)
         let w = symbols("w", 4);
-        let r = curve_end(Family::Bernstein3, &[], &p, Some(&w), End::Start);
+        let r = curve_end(&Family::Bernstein3, &[], &p, Some(&w), End::Start);
         assert_eq!(r[0], p[0]);
         let slope = Sym::int(3) * &w[1] / &w[0] * &(p[1].clone() - &p[0]);
         assert_eq!(r[1], slope);
@@ -584,8 +536,8 @@ mod tests {
         let p = symbols("P", 7);
         let join = |p: &[Sym]| {
             let pieces = [
-                curve_piece(Family::Bernstein3, &[], &p[0..4], None),
-                curve_piece(Family::Bernstein3, &[], &p[3..7], None),
+                curve_piece(&Family::Bernstein3, &[], &p[0..4], None),
+                curve_piece(&Family::Bernstein3, &[], &p[3..7], None),
             ];
             continuity(&pieces, false, None).remove(0)
         };

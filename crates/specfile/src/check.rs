@@ -305,8 +305,9 @@ pub enum Check {
         maximal: bool,
     },
     /// The uniform B-spline assembled from the `n` functions (piece `k` is
-    /// function `n − 1 − k`) is `Cᵏ` at its knots.
-    Continuity { order: usize },
+    /// function `n − 1 − k`), a curve of the basis, or the B-spline on a
+    /// knot vector ([`Continuous`]) is `Cᵏ` at its knots.
+    Continuity { order: usize, of: Continuous },
     /// Local control of that B-spline (segment `i` is `Σ b_k P_{i+k}`):
     /// the varied control enters exactly the printed segments `j + o`,
     /// `o ∈ segments`.
@@ -702,4 +703,23 @@ pub struct Between {
     pub text: String,
     pub lo: Sym,
     pub hi: Sym,
+}
+
+/// What `check = "continuity"` examines at its knots.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Continuous {
+    /// The uniform B-spline assembled from the functions (unit spacing).
+    Bspline,
+    /// The uniform curve `Σ bᵢ P_{s+i}` (with `weights`, `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ`)
+    /// on the consecutive `segments` `s` (control points `point0, point1, …`
+    /// as symbols), at the knots between them.
+    Curve {
+        point: String,
+        weights: bool,
+        segments: Vec<i64>,
+    },
+    /// The B-spline basis function `F_j`, `j` the knots' span, on the knot
+    /// vector: piece `i` on `[n_{j+i}, n_{j+i+1})` is the segment function
+    /// `n − 1 − i` of that span ([`crate::knots`]).
+    Knots(crate::knots::Knots),
 }

@@ -218,6 +218,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             }
             Check::Continuity {
                 order: order_field(src, c, need(src, c, &c.order, "order")?)?,
+                of: crate::given_read::continuous(src, spec, c)?,
             }
         }
         "local-control" => local_control(src, spec, c)?,

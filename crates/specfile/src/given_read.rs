@@ -144,7 +144,11 @@ pub(crate) fn given(src: &Source<'_>, spec: &Spec, c: &RawClaim, kind: &str) -> 
         });
         Ok(())
     };
-    if let Some(k) = c.knots.as_ref().filter(|_| kind != "knot-coefficients") {
+    if let Some(k) = c
+        .knots
+        .as_ref()
+        .filter(|_| !["knot-coefficients", "continuity"].contains(&kind))
+    {
         out.knots = Some(knots(src, spec, k)?);
     }
     if kind != "symmetry" {
@@ -410,4 +414,34 @@ pub(crate) fn knot_coefficients(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> 
         })
         .collect::<Result<Vec<_>>>()?;
     Ok(Check::KnotCoefficients { knots, matrix })
+}
+
+/// What a `continuity` claim examines: the B-spline on its `knots`, the
+/// curve of its control points `point` on consecutive `segments` (with
+/// `weights`), or the uniform B-spline of the basis.
+pub(crate) fn continuous(
+    src: &Source<'_>,
+    spec: &Spec,
+    c: &RawClaim,
+) -> Result<crate::check::Continuous> {
+    use crate::check::Continuous;
+    if let Some(k) = &c.knots {
+        return Ok(Continuous::Knots(knots(src, spec, k)?));
+    }
+    let Some(point) = &c.point else {
+        return Ok(Continuous::Bspline);
+    };
+    let segments = c.segments.clone().unwrap_or_default();
+    if segments.len() < 2 || segments.windows(2).any(|w| w[1] != w[0] + 1) || segments[0] < 0 {
+        return src.invalid(
+            point.span(),
+            "claims.segments",
+            "a curve's continuity needs `segments`, at least two consecutive spans from 0 up (the knots between them are examined)".into(),
+        );
+    }
+    Ok(Continuous::Curve {
+        point: point.get_ref().trim().to_string(),
+        weights: c.weights.unwrap_or(false),
+        segments,
+    })
 }

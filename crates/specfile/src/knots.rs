@@ -65,17 +65,31 @@ impl Knots {
     /// with the typed error of the printed formulas where they are
     /// undefined on the knots (seed 000: `d_j`, `b_{j,·}`, `c_{j,·}`, `a_j`).
     pub fn rows(&self, param: &Sym) -> Vec<Result<Vec<Sym>, CoreError>> {
+        (0..4).map(|i| self.row(i, param)).collect()
+    }
+
+    /// Row `i` of the coefficient matrix of the span alone (segment
+    /// function `F_i`), with the typed error where its printed formulas are
+    /// undefined on the knots.
+    pub fn row(&self, i: usize, param: &Sym) -> Result<Vec<Sym>, CoreError> {
         let f = NonUniform::new(self.values.clone(), param.clone());
         let j = self.span;
         let zero = Sym::zero();
-        vec![
-            f.d(j)
+        match i {
+            0 => f
+                .d(j)
                 .map(|d| vec![d, zero.clone(), zero.clone(), zero.clone()]),
-            f.b(j).map(|b| b.to_vec()),
-            f.c(j).map(|c| c.to_vec()),
-            f.a(j)
+            1 => f.b(j).map(|b| b.to_vec()),
+            2 => f.c(j).map(|c| c.to_vec()),
+            3 => f
+                .a(j)
                 .map(|a| vec![zero.clone(), zero.clone(), zero.clone(), a]),
-        ]
+            _ => Err(CoreError::Count {
+                what: "segment function index".into(),
+                expected: 4,
+                got: i,
+            }),
+        }
     }
 
     /// The coefficient matrix `M` of the span (row `i`: `F_i = Σ_k M_{ik} f_k`),

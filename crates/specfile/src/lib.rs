@@ -63,6 +63,7 @@ pub mod spec;
 
 pub use any::{AnyBasis, OpenError};
 pub use ast::Grammar;
+pub use check::Continuous;
 pub use check::Correction;
 pub use check::Margin;
 pub use check::{

@@ -617,7 +617,7 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
             copies,
             values,
         } => joins::join_singular(spec, *wrt, copies, values),
-        Check::Continuity { order } => trig_judge::continuity::bspline_continuity(spec, *order),
+        Check::Continuity { order, of } => continuity_of(spec, *order, of),
         Check::All { claims, brief } => umbrella_verdict(
             claims
                 .iter()
@@ -772,5 +772,20 @@ fn table_wrt(spec: &Spec) -> Wrt {
         Wrt::Angle
     } else {
         Wrt::Variable
+    }
+}
+
+/// `check = "continuity"` on what the claim names ([`Continuous`]).
+fn continuity_of(spec: &Spec, order: usize, of: &trig_specfile::Continuous) -> Verdict {
+    use trig_judge::continuity::{bspline_continuity, curve_continuity, knot_continuity};
+    use trig_specfile::Continuous;
+    match of {
+        Continuous::Bspline => bspline_continuity(spec, order),
+        Continuous::Curve {
+            point,
+            weights,
+            segments,
+        } => curve_continuity(spec, order, point, *weights, segments),
+        Continuous::Knots(knots) => knot_continuity(spec, order, knots),
     }
 }
