@@ -49,6 +49,33 @@ pub struct Printed<'a> {
     pub positive: &'a [String],
 }
 
+impl<'a> Printed<'a> {
+    /// The fields of an identity claim's check; `None` for another check.
+    pub fn of(check: &'a trig_specfile::Check) -> Option<Printed<'a>> {
+        let trig_specfile::Check::Identity {
+            identities,
+            curves,
+            readings,
+            lets,
+            change,
+            correction,
+            positive,
+        } = check
+        else {
+            return None;
+        };
+        Some(Printed {
+            identities,
+            curves,
+            readings,
+            lets,
+            change: change.as_ref(),
+            correction: correction.as_ref(),
+            positive,
+        })
+    }
+}
+
 /// Decides every printed identity (the claim's `let` names substituted
 /// with the applications); an application the exact ring cannot
 /// form (an argument not linear with slope 0 or ±1, atoms not exact at
@@ -418,42 +445,32 @@ mod tests {
         assert!(applied(&family, &b[1], 0, &two, &zero).is_none());
     }
 
-    /// The thesis cubic with one identity claim about the piece of printed
-    /// control points `points` (the C¹ interpolant (4.21) of seed 001).
-    fn piece_claim(points: &str) -> Verdict {
+    /// The catalog basis `file` with one identity claim of the fields
+    /// `fields`, decided.
+    fn identity_claim(file: &str, fields: &str) -> Verdict {
         let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-            .join("../../examples/catalog/thesis-cubic.toml");
+            .join("../../examples/catalog")
+            .join(file);
         let text = std::fs::read_to_string(path).unwrap();
         let spec = trig_specfile::Spec::from_str_named(
             &format!(
-                "{text}\n[[claims]]\nid = \"c1\"\nsource = \"s\"\nstatement = \"s\"\ncheck = \"identity\"\nsymbols = [\"f0\", \"f1\", \"d0\", \"d1\", \"h\"]\ncurves = [{{ name = \"P\", points = [{points}] }}]\nidentities = [\"P(0) = f0\", \"P(1) = f1\", \"P'(0)/h = d0\", \"P'(1)/h = d1\"]\n"
+                "{text}\n[[claims]]\nid = \"c\"\nsource = \"s\"\nstatement = \"s\"\ncheck = \"identity\"\n{fields}\n"
             ),
-            "c1.toml",
+            "c.toml",
         )
         .unwrap_or_else(|e| panic!("{e}"));
-        let trig_specfile::Check::Identity {
-            identities,
-            curves,
-            readings,
-            lets,
-            change,
-            correction,
-            positive,
-        } = &spec.claims[0].check
-        else {
-            panic!("an identity claim");
-        };
-        printed_identities(
-            &spec,
-            &Printed {
-                identities,
-                curves,
-                readings,
-                lets,
-                change: change.as_ref(),
-                correction: correction.as_ref(),
-                positive,
-            },
+        let printed = Printed::of(&spec.claims[0].check).expect("an identity claim");
+        printed_identities(&spec, &printed)
+    }
+
+    /// The thesis cubic with one identity claim about the piece of printed
+    /// control points `points` (the C¹ interpolant (4.21) of seed 001).
+    fn piece_claim(points: &str) -> Verdict {
+        identity_claim(
+            "thesis-cubic.toml",
+            &format!(
+                "symbols = [\"f0\", \"f1\", \"d0\", \"d1\", \"h\"]\ncurves = [{{ name = \"P\", points = [{points}] }}]\nidentities = [\"P(0) = f0\", \"P(1) = f1\", \"P'(0)/h = d0\", \"P'(1)/h = d1\"]"
+            ),
         )
     }
 
@@ -476,40 +493,7 @@ mod tests {
 
     /// The Hermite basis (seed 004 §II) with one identity claim `claim`.
     fn hermite_claim(claim: &str) -> Verdict {
-        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-            .join("../../examples/catalog/hermite.toml");
-        let text = std::fs::read_to_string(path).unwrap();
-        let spec = trig_specfile::Spec::from_str_named(
-            &format!(
-                "{text}\n[[claims]]\nid = \"h\"\nsource = \"s\"\nstatement = \"s\"\ncheck = \"identity\"\n{claim}\n"
-            ),
-            "h.toml",
-        )
-        .unwrap_or_else(|e| panic!("{e}"));
-        let trig_specfile::Check::Identity {
-            identities,
-            curves,
-            readings,
-            lets,
-            change,
-            correction,
-            positive,
-        } = &spec.claims[0].check
-        else {
-            panic!("an identity claim");
-        };
-        printed_identities(
-            &spec,
-            &Printed {
-                identities,
-                curves,
-                readings,
-                lets,
-                change: change.as_ref(),
-                correction: correction.as_ref(),
-                positive,
-            },
-        )
+        identity_claim("hermite.toml", claim)
     }
 
     #[test]

@@ -670,25 +670,9 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
         Check::OneMaximum => {
             trig_judge::maxima::exactly_one_maximum(spec, &trig_judge::exact::basis_of(spec))
         }
-        Check::Identity {
-            identities,
-            curves,
-            readings,
-            lets,
-            change,
-            correction,
-            positive,
-        } => trig_judge::identity::printed_identities(
+        Check::Identity { .. } => trig_judge::identity::printed_identities(
             spec,
-            &trig_judge::identity::Printed {
-                identities,
-                curves,
-                readings,
-                lets,
-                change: change.as_ref(),
-                correction: correction.as_ref(),
-                positive,
-            },
+            &trig_judge::identity::Printed::of(check).expect("an identity check"),
         ),
         Check::EndDirection {
             end,
