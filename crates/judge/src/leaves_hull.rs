@@ -290,26 +290,9 @@ pub fn surface_leaves_net<B: ExactBasis + Clone>(
     value: &Rational,
     net: &ListedNet,
 ) -> Verdict {
-    let points: Option<Vec<Vec<[Rational; 3]>>> = net
-        .points
-        .iter()
-        .map(|row| {
-            row.iter()
-                .map(|p| {
-                    Some([
-                        p[0].as_rational()?,
-                        p[1].as_rational()?,
-                        p[2].as_rational()?,
-                    ])
-                })
-                .collect()
-        })
-        .collect();
-    let Some(points) = points else {
-        return Verdict::not_checkable(format!(
-            "the points of net {} are not all rational numbers",
-            net.name
-        ));
+    let points = match crate::surface::rational_points(net) {
+        Ok(points) => points,
+        Err(not_rational) => return not_rational,
     };
     let direction = || Direction {
         basis: basis.clone(),

@@ -386,26 +386,9 @@ pub fn net_cylinder_distance<B: ExactBasis + Clone>(
             "the surface is formed at fixed parameter values: fix every parameter with `at`",
         );
     }
-    let points: Option<Vec<Vec<[Rational; 3]>>> = net
-        .points
-        .iter()
-        .map(|row| {
-            row.iter()
-                .map(|p| {
-                    Some([
-                        p[0].as_rational()?,
-                        p[1].as_rational()?,
-                        p[2].as_rational()?,
-                    ])
-                })
-                .collect()
-        })
-        .collect();
-    let Some(points) = points else {
-        return Verdict::not_checkable(format!(
-            "the points of net {} are not all rational numbers",
-            net.name
-        ));
+    let points = match crate::surface::rational_points(net) {
+        Ok(points) => points,
+        Err(not_rational) => return not_rational,
     };
     let direction = || Direction {
         basis: basis.clone(),
@@ -418,6 +401,31 @@ pub fn net_cylinder_distance<B: ExactBasis + Clone>(
         Ok(surface) => cylinder_distance(&surface, radius),
         Err(why) => Verdict::not_checkable(format!("net {}: {why}", net.name)),
     }
+}
+
+/// The points of a listing's net as exact rationals, or the `not-checkable`
+/// verdict naming the net when one coordinate is not a rational number.
+pub fn rational_points(net: &ListedNet) -> Result<Vec<Vec<[Rational; 3]>>, Verdict> {
+    net.points
+        .iter()
+        .map(|row| {
+            row.iter()
+                .map(|p| {
+                    Some([
+                        p[0].as_rational()?,
+                        p[1].as_rational()?,
+                        p[2].as_rational()?,
+                    ])
+                })
+                .collect::<Option<Vec<_>>>()
+        })
+        .collect::<Option<Vec<_>>>()
+        .ok_or_else(|| {
+            Verdict::not_checkable(format!(
+                "the points of net {} are not all rational numbers",
+                net.name
+            ))
+        })
 }
 
 #[cfg(test)]
