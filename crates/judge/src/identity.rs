@@ -463,6 +463,15 @@ mod tests {
         printed_identities(&spec, &printed)
     }
 
+    /// The subjects of the failing items of `v`.
+    fn failing(v: &Verdict) -> Vec<&str> {
+        v.evidence
+            .iter()
+            .filter(|e| e.status == Some(Status::Fails))
+            .filter_map(|e| e.subject.as_deref())
+            .collect()
+    }
+
     /// The thesis cubic with one identity claim about the piece of printed
     /// control points `points` (the C¹ interpolant (4.21) of seed 001).
     fn piece_claim(points: &str) -> Verdict {
@@ -482,13 +491,7 @@ mod tests {
         let wrong = r#""f0", "2*h*d0/(pi*(m + 2)) + f0", "2*h*d1/(pi*(m + 2)) + f1", "f1""#;
         let v = piece_claim(wrong);
         assert_eq!(v.status, Status::Fails);
-        let failing: Vec<_> = v
-            .evidence
-            .iter()
-            .filter(|e| e.status == Some(Status::Fails))
-            .filter_map(|e| e.subject.as_deref())
-            .collect();
-        assert_eq!(failing, ["P'(1)/h = d1"]);
+        assert_eq!(failing(&v), ["P'(1)/h = d1"]);
     }
 
     /// The Hermite basis (seed 004 §II) with one identity claim `claim`.
@@ -508,13 +511,7 @@ mod tests {
         assert_eq!(hermite_claim(&claim("h")).status, Status::Holds);
         let v = hermite_claim(&claim("k"));
         assert_eq!(v.status, Status::Fails);
-        let failing: Vec<_> = v
-            .evidence
-            .iter()
-            .filter(|e| e.status == Some(Status::Fails))
-            .filter_map(|e| e.subject.as_deref())
-            .collect();
-        assert_eq!(failing, ["B'(x_i + h) = A'(x_i + h)"]);
+        assert_eq!(failing(&v), ["B'(x_i + h) = A'(x_i + h)"]);
     }
 
     #[test]
