@@ -244,9 +244,36 @@ pub fn identity_item(label: &str, lhs: &Sym, rhs: &Sym) -> Evidence {
     identity_item_where(label, lhs, rhs, &[])
 }
 
+/// The most terms (numerators and denominators of both sides together)
+/// of an identity whose residual is formed when the sides already differ
+/// at a point: the residual of larger sides would not be read (hundreds of
+/// terms), and its cancellation, a multivariate gcd, is the costly step.
+pub const RESIDUAL_TERMS: usize = 400;
+
+/// The terms of `x`'s numerator and denominator factors.
+fn terms(x: &Sym) -> usize {
+    x.numerator().len() + x.denominator().keys().map(|p| p.len()).sum::<usize>()
+}
+
 /// [`identity_item`] with its witness inside the claim's conditions: the
 /// symbols of `positive` positive there ([`witness::find_where`]).
+///
+/// Sides of more than [`RESIDUAL_TERMS`] terms are first compared at the
+/// points of the witness search: where they differ at one, the identity
+/// fails there (both values exact) and the residual is not formed; only
+/// sides that agree at every point tried are subtracted exactly.
 pub fn identity_item_where(label: &str, lhs: &Sym, rhs: &Sym, positive: &[String]) -> Evidence {
+    let large = terms(lhs) + terms(rhs);
+    if large > RESIDUAL_TERMS {
+        if let Some(w) = witness::find_where(lhs, rhs, (VALUE, TARGET), positive) {
+            return Evidence::new(
+                Kind::Identity,
+                format!("the sides differ at the witness point (residual not formed: the sides have {large} terms)"),
+            )
+            .about(label, Status::Fails)
+            .witnessed(Some(w));
+        }
+    }
     let residual = lhs.clone() - rhs;
     if residual.is_zero() {
         return Evidence::new(Kind::Identity, "residual is exactly 0").about(label, Status::Holds);
@@ -319,6 +346,29 @@ mod tests {
         let w = v.evidence[0].witness.as_ref().expect("a witness");
         // simplified to θ = 0 (s = 0, c = 1): s² = 0 against 1
         assert_eq!(w.values[0].value.unicode, "0");
+    }
+
+    #[test]
+    fn large_sides_that_differ_at_a_point_fail_without_their_residual() {
+        // (a + b + c + d + e + f)⁶ has 462 terms: sides above RESIDUAL_TERMS
+        let sum = ["a", "b", "c", "d", "e", "f"]
+            .iter()
+            .fold(Sym::zero(), |acc, v| acc + &Sym::var(v));
+        let p = (0..6).fold(Sym::one(), |acc, _| acc * &sum);
+        assert!(terms(&p) > RESIDUAL_TERMS);
+        let item = identity_item("shifted", &p, &(p.clone() + &Sym::one()));
+        assert_eq!(item.status, Some(Status::Fails));
+        assert!(item.text.contains("residual not formed"), "{}", item.text);
+        assert!(item.exprs.is_empty(), "no residual: {:?}", item.exprs);
+        let w = item.witness.expect("a witness");
+        assert_ne!(w.values[0].value, w.values[1].value);
+        // sides that agree at every point tried are subtracted exactly
+        let item = identity_item("same", &p, &(p.clone() + &Sym::zero()));
+        assert_eq!(item.status, Some(Status::Holds));
+        // small sides keep their residual
+        let item = identity_item("small", &sum, &(sum.clone() + &Sym::one()));
+        assert_eq!(item.status, Some(Status::Fails));
+        assert!(!item.exprs.is_empty());
     }
 
     #[test]

@@ -81,6 +81,21 @@ fn others_at(names: &[String], k: usize) -> Vec<(String, Rational)> {
         .collect()
 }
 
+/// `x` with the symbols of `fixed` at their values, at once (one
+/// evaluation; substituting one after another would normalise each
+/// intermediate rational function); `None` where a denominator vanishes.
+fn set(x: &Sym, fixed: &[(String, Rational)]) -> Option<Sym> {
+    let value = |name: &str| {
+        Some(
+            fixed
+                .iter()
+                .find(|(n, _)| n == name)
+                .map_or_else(|| Sym::var(name), |(_, q)| Sym::rational(q.clone())),
+        )
+    };
+    x.eval(&Sym::one(), &value).ok()
+}
+
 /// A witness that `left ≠ right` at a real point, when a spec decision runs
 /// and the expressions involve the point; `None` otherwise (the caller then
 /// uses the generic search, which is right for expressions without atoms).
@@ -104,14 +119,38 @@ pub fn find(left: &Sym, right: &Sym, labels: (&str, &str)) -> Option<Option<Witn
     let uses_x = names
         .iter()
         .any(|n| ["s", "c", "t", "E"].contains(&n.as_str()));
+    // `None` also where a value makes a denominator vanish
+    let differs = |fixed: &[(String, Rational)]| {
+        differ(
+            &set(left, fixed)?,
+            &set(right, fixed)?,
+            &points.domain,
+            &points.axes,
+        )
+    };
+    // every other symbol 1 first: the simplest point, often enough
+    let ones: Vec<(String, Rational)> = others
+        .iter()
+        .map(|n| (n.clone(), Rational::from(1)))
+        .collect();
+    if let Some(d) = differs(&ones) {
+        return Some(Some(witness(&points, &ones, uses_x, &d, labels)));
+    }
     for k in 0..3 {
-        let fixed = others_at(&others, k);
-        let set = |x: &Sym| {
-            fixed.iter().fold(x.clone(), |acc, (n, q)| {
-                acc.subs(n, &Sym::rational(q.clone()))
-            })
-        };
-        if let Some(d) = differ(&set(left), &set(right), &points.domain, &points.axes) {
+        let mut fixed = others_at(&others, k);
+        if let Some(mut d) = differs(&fixed) {
+            // each symbol 1, one at a time, while the sides still differ (1, not
+            // 0: a weight or a scale stays positive, as the claim takes it)
+            for i in 0..fixed.len() {
+                if fixed[i].1 == 1 {
+                    continue;
+                }
+                let previous = std::mem::replace(&mut fixed[i].1, Rational::from(1));
+                match differs(&fixed) {
+                    Some(simpler) => d = simpler,
+                    None => fixed[i].1 = previous,
+                }
+            }
             return Some(Some(witness(&points, &fixed, uses_x, &d, labels)));
         }
     }
@@ -333,5 +372,36 @@ mod tests {
         .expect("a witness");
         let names: Vec<&str> = w.point.iter().map(|p| p.name.as_str()).collect();
         assert_eq!(names, ["α", "t", "P₁"]);
+    }
+
+    #[test]
+    fn other_symbols_are_one_where_that_separates_the_sides() {
+        // (P1 + P2 + P3)·s against 3·s: every other symbol 1 makes them
+        // equal, so the small values 1, 2, 3 are tried, then each symbol set
+        // to 1 while they still differ: P2 = 1 kept, P3 = 1 undone
+        let (s, p) = (Sym::var("s"), ["P1", "P2", "P3"].map(Sym::var));
+        let left = (p[0].clone() + &p[1] + &p[2]) * &s;
+        let witness = |right: i64| {
+            with_real_points(c_curve(), || {
+                crate::witness::find(&left, &(Sym::int(right) * &s), ("left", "right"))
+            })
+            .expect("a witness")
+        };
+        let values = |w: &Witness| -> Vec<String> {
+            ["P₁", "P₂", "P₃"]
+                .iter()
+                .map(|n| {
+                    w.point
+                        .iter()
+                        .find(|a| a.name == *n)
+                        .expect(n)
+                        .value
+                        .clone()
+                })
+                .collect()
+        };
+        assert_eq!(values(&witness(3)), ["1", "1", "3"]);
+        // where 1 already separates them, every other symbol is 1
+        assert_eq!(values(&witness(2)), ["1", "1", "1"]);
     }
 }
