@@ -3,11 +3,9 @@
 
 use crate::claim::Claim;
 
-mod seed000_appendix_e;
-mod seed000_appendix_print;
 mod shape_effect;
 
 /// The Rust checkers of the claims still marked `built-in`.
 pub fn all() -> Vec<Claim> {
-    [seed000_appendix_e::CLAIMS, shape_effect::CLAIMS].concat()
+    shape_effect::CLAIMS.to_vec()
 }
