@@ -191,11 +191,14 @@ fn decide(data: &DataSet, scheme: Scheme, queries: &[MaximumQuery]) -> Result<Ve
                         above.unwrap_or_else(|| bound_witness(lo, hi))
                     })),
                 );
+                // the lower bound's distance from V, in per cent of V
                 let above = (lo.to_f64() / value.to_f64() - 1.0) * 100.0;
+                let side = if above < 0.0 { "below" } else { "above" };
                 let tenth = value.clone().abs() / 10u32;
                 let loose = *lo >= value.clone() - &tenth && *hi <= value.clone() + &tenth;
                 items.push(Evidence::note(format!(
-                    "for comparison: the certified maximum is {above:.1}% above {printed}; a looser reading of \"about\" (within 10%) would {}",
+                    "for comparison: the certified maximum is {:.1}% {side} {printed}; a looser reading of \"about\" (within 10%) would {}",
+                    above.abs(),
                     if loose { "accept it" } else { "not accept it either" }
                 )));
             }
@@ -262,5 +265,10 @@ mod tests {
         assert_eq!(v("near x = 4.5"), Status::Holds);
         assert_eq!(v("near x = 1.5"), Status::Fails);
         assert_eq!(v("about 8"), Status::Fails);
+        // a maximum below the quoted value is said to be below it
+        let below = decide(&data, Scheme::G2, &[query("about 1000").unwrap()]).unwrap();
+        let text: String = below.evidence.iter().map(|e| e.line()).collect();
+        assert!(text.contains("% below 1000;"), "{text}");
+        assert!(!text.contains("% above"), "{text}");
     }
 }
