@@ -132,6 +132,22 @@ check(all(gf(mp.mpf(k) / 1000) >= 0 for k in range(1001)), "  g ≥ 0: the arc l
 print(f"  largest distance from the cylinder √(1 + g) − 1 = {mp.nstr(CYL_MAX, 12)} (in the judge's certified bracket)")
 check(mp.sqrt(1 + CYL_G) - 1 <= CYL_MAX, "  the grid point's distance is a lower bound")
 
+# a net through the axis: GB2 at λ1 = λ2 = 0 (Bernstein), each row (−1, 1), (1/2, −1/2), (2, −2)
+AXIS = [[(-1, 1, z), (R(1, 2), R(-1, 2), z), (2, -2, z)] for z in (0, R(1, 2), 1)]
+data_file("cylinder-axis.txt",
+          "# A GB2 surface piece over a net whose rows cross the z axis: x = 3v − 1, y = 1 − 3v at λ1 = λ2 = 0;\n"
+          "# written by examples/independent/session5_checks_b.py.\n" + listing(AXIS, "S"))
+x_, y_, _ = surface(AXIS, gb2(0, 0))
+check(sp.expand(x_ - (3 * v - 1)) == 0 and sp.expand(y_ + x_) == 0, "CY-axis: x = 3v − 1, y = 1 − 3v (through the axis at v = 1/3)")
+g_axis = sp.expand(x_**2 + y_**2 - 1)
+check(g_axis == sp.expand(2 * (3 * v - 1) ** 2 - 1), "  g = 2(3v − 1)² − 1 ≢ 0: the claim fails")
+grid = [(abs(g_axis.subs(v, R(j, 16))), R(j, 16)) for j in range(17)]
+check(max(grid) == (7, 1), "  largest |g| on the grid: g(·, 1) = 7, distance √8 − 1 ≈ 1.82843, the largest")
+# the degree-2 Bernstein coefficients of x² + y² = 2(3v − 1)² on the piece [5/16, 6/16] that holds v = 1/3
+a_, b_ = 3 * R(5, 16) - 1, 3 * R(6, 16) - 1
+check(2 * a_ * b_ < 0, "  a Bernstein coefficient of x² + y² there is 2(3a − 1)(3b − 1) = −1/64 < 0: "
+      "the bound of g = x² + y² − 1 falls below −1 although g ≥ −1 (the defect fixed: not-checkable)")
+
 # ====================================================================== 2. leaves-hull
 print("2. leaves-hull: GB2 (λ2 = −1) and HMH (μ = −1) outside their ranges (LH-*)")
 TRIANGLE = [point(p) for p in ("(0, 0)", "(1, 2)", "(2, 0)")]

@@ -180,6 +180,22 @@ fn a_gb2_surface_against_the_cylinder() {
         "{bracket:?} {sampled}"
     );
 
+    // through the axis (GB2 at λ1 = λ2 = 0: x = 3v − 1, y = 1 − 3v), inside a
+    // piece of the judge's subdivision: the defect fixed with this test (the
+    // Bernstein bound of g fell below −r² and the claim was not decided)
+    let c = claim(document(), "CY-axis");
+    assert_eq!(c["verdict"], "fails", "{c}");
+    let w = &c["witness"];
+    let v = q(&point_sympy(w, "v"));
+    // each row (−1, 1), (1/2, −1/2), (2, −2)
+    let b = gb2(&v, &int(0), &int(0));
+    let x: Rational = b[1].clone() / 2 + int(2) * &b[2] - &b[0];
+    let y = -x.clone();
+    let at = x.clone() * &x + y.clone() * &y - int(1);
+    assert_eq!(q(&value_sympy(w, "x² + y² − r²")), at);
+    assert_eq!((v, at), (int(1), int(7)));
+    assert!(evidence_text(c).contains("lies in [1.8284, 1.8285]"), "{c}");
+
     let c = claim(document(), "CY-free");
     assert_eq!(c["verdict"], "not-checkable", "{c}");
     assert!(evidence_text(c).contains("fix every parameter with"), "{c}");
