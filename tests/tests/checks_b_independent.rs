@@ -520,7 +520,7 @@ fn the_maximum_of_the_c1_interpolant_of_the_samples() {
         bracket[0] <= sampled && sampled <= bracket[1],
         "{bracket:?} {sampled}"
     );
-    assert!(sampled > 201.0 / 32.0 && sampled < 6.295 && sampled >= 6.285);
+    assert!(sampled > 201.0 / 32.0 && (6.285..6.295).contains(&sampled));
 
     let c = claim(document(), "IM-about");
     assert_eq!(c["verdict"], "fails", "{c}");
