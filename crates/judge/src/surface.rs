@@ -338,7 +338,7 @@ pub fn cylinder_distance<B: ExactBasis>(surface: &TensorSurface<B>, radius: &Rat
     let ends = [radial_gap(radius, &lo), radial_gap(radius, &hi)];
     let (Some(at_point), [Some(below), Some(above)]) = (radial_gap(radius, &off), ends) else {
         return Verdict::not_checkable(
-            "x² + y² − r² may reach −r²: the distance is not bounded here",
+            "the distance from the cylinder is not enclosed here (an interval fault)",
         );
     };
     let upper = if below.hi() > above.hi() {
