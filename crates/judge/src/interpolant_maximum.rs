@@ -191,11 +191,19 @@ fn decide(data: &DataSet, scheme: Scheme, queries: &[MaximumQuery]) -> Result<Ve
                         above.unwrap_or_else(|| bound_witness(lo, hi))
                     })),
                 );
-                let above = (lo.to_f64() / value.to_f64() - 1.0) * 100.0;
+                // the lower bound's distance from V, in per cent of |V|
+                // (absolute at V = 0)
+                let gap = lo.to_f64() - value.to_f64();
+                let side = if gap < 0.0 { "below" } else { "above" };
+                let size = if value == 0 {
+                    format!("{:.4}", gap.abs())
+                } else {
+                    format!("{:.1}%", 100.0 * gap.abs() / value.to_f64().abs())
+                };
                 let tenth = value.clone().abs() / 10u32;
                 let loose = *lo >= value.clone() - &tenth && *hi <= value.clone() + &tenth;
                 items.push(Evidence::note(format!(
-                    "for comparison: the certified maximum is {above:.1}% above {printed}; a looser reading of \"about\" (within 10%) would {}",
+                    "for comparison: the certified maximum is {size} {side} {printed}; a looser reading of \"about\" (within 10%) would {}",
                     if loose { "accept it" } else { "not accept it either" }
                 )));
             }
@@ -262,5 +270,19 @@ mod tests {
         assert_eq!(v("near x = 4.5"), Status::Holds);
         assert_eq!(v("near x = 1.5"), Status::Fails);
         assert_eq!(v("about 8"), Status::Fails);
+        // the side of the quoted value the maximum lies on, for any sign of
+        // it, and at 0 the distance itself
+        let text = |q: &str| -> String {
+            let v = decide(&data, Scheme::G2, &[query(q).unwrap()]).unwrap();
+            v.evidence.iter().map(|e| e.line()).collect()
+        };
+        for (q, side) in [
+            ("about 1000", "% below 1000;"),
+            ("about -55", "% above -55;"),
+            ("about 0", " above 0;"),
+        ] {
+            let t = text(q);
+            assert!(t.contains(side) && !t.contains("inf"), "{q}: {t}");
+        }
     }
 }

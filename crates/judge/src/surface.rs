@@ -332,10 +332,13 @@ pub fn cylinder_distance<B: ExactBasis>(surface: &TensorSurface<B>, radius: &Rat
     // the distance |√(r² + g) − r| grows with |g| on either side of 0: its
     // largest value over g ∈ [lo, hi] is at an end
     let (off, u, v) = largest_at(&gap, PIECES);
+    // x² + y² ≥ 0, so g ≥ −r² wherever the Bernstein bound is lower (a
+    // surface through the axis inside a piece): at most r inside
+    let lo = lo.max(-Rational::from(radius * radius));
     let ends = [radial_gap(radius, &lo), radial_gap(radius, &hi)];
     let (Some(at_point), [Some(below), Some(above)]) = (radial_gap(radius, &off), ends) else {
         return Verdict::not_checkable(
-            "x² + y² − r² may reach −r²: the distance is not bounded here",
+            "the distance from the cylinder is not enclosed here (an interval fault)",
         );
     };
     let upper = if below.hi() > above.hi() {
@@ -506,6 +509,24 @@ mod tests {
             &q(1, 1),
         );
         assert_eq!(on.status, Status::Holds, "{on:?}");
+        // through the axis at v = 1/3, inside a piece of the subdivision
+        // (x = 3v − 1, y = 1 − 3v: a Bernstein coefficient of x² + y² there
+        // is negative, the bound of g below −r²): off the cylinder, farthest
+        // at v = 1, √8 − 1 = 1.82843 outside it
+        let axis = ["-1 1", "0 0", "1 -1", "2 -2"]
+            .map(|p| format!("{p} 0\n"))
+            .concat();
+        let through = cylinder_distance(
+            &surface(Family::Bernstein3, vec![], &(axis + "\n").repeat(4)),
+            &q(1, 1),
+        );
+        assert_eq!(through.status, Status::Fails, "{through:?}");
+        let text = through
+            .evidence
+            .iter()
+            .map(|e| e.line())
+            .collect::<String>();
+        assert!(text.contains("lies in [1.8284, 1.8285]"), "{text}");
         let trig = cylinder_distance(
             &surface(Family::ThesisCubic, vec![q(0, 1)], THESIS),
             &q(1, 1),

@@ -13,7 +13,7 @@
 //! |---|---|---|---|---|
 //! | `name` | a scheme | `-` | `-` | the report names the scheme by the printed words |
 //! | `order` | a summary table | its rows, `; `-separated | schemes, smallest first | the first row orders the schemes as printed (the other rows are shown for comparison) |
-//! | `least` | summary tables | a row | a scheme | in each table the scheme has the smallest value of the row |
+//! | `least` | summary tables | a row | a scheme | in each table the scheme has the smallest value of the row, strictly (tied with another, it is not least) |
 //! | `equal` | two schemes `A B` | columns | `-` | for each letter with segment tables of both, the two print the same value in every segment of each column (the other schemes' agreement with `B` shown) |
 //! | `count` | a letter | a column | `N: A != B; C = B` | the segments of the letter where every condition holds number `N` (a quoted figure) |
 //! | `unmeasured` | `-` | `-` | why | no printed table measures it: `not-checkable` with the reason |
@@ -169,12 +169,23 @@ fn least(tables: &[Table], l: &Line, names: &Names) -> Result<Verdict, String> {
             .iter()
             .find(|(n, _)| *n == named)
             .expect("every scheme has a cell");
-        let ok = best == &named;
+        // strictly least, as `order` reads an order: a scheme tied with
+        // another for the smallest value is not "the most precise"
+        let rival = entries
+            .iter()
+            .filter(|(n, _)| *n != named)
+            .min_by(|a, b| a.1.value.cmp(&b.1.value));
+        let ok = rival.is_none_or(|(_, r)| r.value > mine.value);
+        let tie = rival
+            .filter(|(_, r)| r.value == mine.value)
+            .map_or(String::new(), |(n, _)| {
+                format!(" — tied with {n}: no scheme is strictly least")
+            });
         items.push(
             Evidence::new(
                 Kind::Comparison,
                 format!(
-                    "smallest {} in Table {}: {best} ({}); {named} {}",
+                    "smallest {} in Table {}: {best} ({}); {named} {}{tie}",
                     l.what,
                     t.number,
                     decimal(&v.value),
@@ -182,15 +193,14 @@ fn least(tables: &[Table], l: &Line, names: &Names) -> Result<Verdict, String> {
                 ),
             )
             .about(format!("{}: {named} least", t.letter), status(ok))
-            .witnessed(if ok {
-                None
-            } else {
-                pair(
+            .witnessed(match rival {
+                Some((n, r)) if !ok => pair(
                     format!("Table {}, {}", t.number, l.what),
-                    Relation::AtLeast,
-                    (best, v),
+                    Relation::Greater,
+                    (n, r),
                     (named, mine),
-                )
+                ),
+                _ => None,
             }),
         );
     }
@@ -429,6 +439,19 @@ mod tests {
         let least = |s: &str| part(&format!("least\t9.5\tAve. Error\t{s}\tw")).status;
         assert_eq!(least("Han"), Status::Holds);
         assert_eq!(least("proposed"), Status::Fails);
+        // a tie for the smallest value makes no scheme least, whichever
+        // column it is printed in (Total Error: all four print 50)
+        let tied = |s: &str| part(&format!("least\t9.5\tTotal Error\t{s}\tw"));
+        for s in ["proposed", "Han", "Usman"] {
+            let v = tied(s);
+            assert_eq!(v.status, Status::Fails, "{s}: {v:?}");
+            assert!(
+                v.evidence
+                    .iter()
+                    .any(|e| e.line().contains("no scheme is strictly least")),
+                "{s}: {v:?}"
+            );
+        }
     }
 
     #[test]
