@@ -539,6 +539,18 @@ fn the_maximum_of_the_c1_interpolant_of_the_samples() {
     let c = claim(document(), "IM-near");
     assert_eq!(c["verdict"], "fails", "{c}");
     assert!(evidence_text(c).contains("lies on piece 4 [3, 4]"), "{c}");
+    // "then drops" with the maximum on an inner piece (by hand: P(x_i) = f_i
+    // and the maximum is at least max fᵢ = 8 = f₂): after it the data 8, 4,
+    // 1 do not rise, and a decrease between them is not certified; the
+    // data 8, 4, 6 rise from f₃ = 4 to f₄ = 6, so P rises after its maximum
+    let c = claim(document(), "IM-drops-early");
+    assert_eq!(c["verdict"], "not-checkable", "{c}");
+    let c = claim(document(), "IM-rises-after");
+    assert_eq!(c["verdict"], "fails", "{c}");
+    assert!(
+        evidence_text(c).contains("P(x_3) = f_3 = 4 < P(x_4) = f_4 = 6"),
+        "{c}"
+    );
     let c = claim(document(), "IM-gb2");
     assert_eq!(c["verdict"], "not-checkable", "{c}");
     assert!(

@@ -8,8 +8,10 @@
 //! "about `V`" — the maximum rounds to `V` at `V`'s last printed digit
 //! (certified in `[V − ½u, V + ½u)`, `u` that digit's unit); "near
 //! `x = X`" — the maximum lies on the piece that contains `X`, its certified
-//! lower bound above every other piece's upper bound; "drops" — the
-//! maximum lies on the last piece and the last data value is below it.
+//! lower bound above every other piece's upper bound; "drops" — holds
+//! where the maximum lies on the last piece and the last data value is
+//! below it, fails where a data value after the maximum's piece rises
+//! (`P(xᵢ) = fᵢ`), otherwise `not-checkable`.
 
 use crate::exact::ExactBasis;
 use rug::Rational;
@@ -208,22 +210,47 @@ fn decide(data: &DataSet, scheme: Scheme, queries: &[MaximumQuery]) -> Result<Ve
                 )));
             }
             MaximumQuery::Drops { text } => {
-                let end = &data.f[data.f.len() - 1];
-                let drops = end < lo && j + 1 == maxima.len();
+                let n = data.f.len() - 1;
+                let end = &data.f[n];
+                let last = j + 1 == maxima.len();
+                // P(x_i) = f_i: a rise between data values after the
+                // maximum's piece is a rise of P after its maximum
+                let rise = (j + 1..n).find(|&i| data.f[i + 1] > data.f[i]);
+                let st = if end < lo && last {
+                    Status::Holds
+                } else if rise.is_some() || end >= lo {
+                    Status::Fails
+                } else {
+                    Status::NotCheckable
+                };
                 readings.push(format!(
-                    "of \"{text}\": the maximum lies on the last piece and the last data value is below it"
+                    "of \"{text}\": the maximum lies on the last piece and the last data value is below it{}",
+                    if st == Status::Holds {
+                        ""
+                    } else {
+                        " (refuted where P rises between data values after the maximum's piece, P(x_i) = f_i, or ends at it; otherwise not decided: a decrease between data values is not certified)"
+                    }
                 ));
-                items.push(
-                    Evidence::new(
-                        Kind::Comparison,
-                        format!(
-                            "P(x_n) = f_n = {} below the maximum, which lies on the last piece: {}",
-                            decimal(end),
-                            if drops { "yes" } else { "no" }
-                        ),
-                    )
-                    .about(text.as_str(), status(drops)),
-                );
+                let found = match rise {
+                    Some(i) => format!(
+                        "P rises after the maximum: P(x_{i}) = f_{i} = {} < P(x_{}) = f_{} = {}",
+                        decimal(&data.f[i]),
+                        i + 1,
+                        i + 1,
+                        decimal(&data.f[i + 1])
+                    ),
+                    None if st == Status::Holds => format!(
+                        "P(x_n) = f_n = {} below the maximum, which lies on the last piece: yes",
+                        decimal(end)
+                    ),
+                    None => format!(
+                        "the maximum lies on piece {} of {}; P(x_n) = f_n = {} is below it; the data values after it do not rise",
+                        j + 1,
+                        maxima.len(),
+                        decimal(end)
+                    ),
+                };
+                items.push(Evidence::new(Kind::Comparison, found).about(text.as_str(), st));
             }
         }
     }

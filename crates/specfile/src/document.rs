@@ -355,6 +355,8 @@ pub const BASIS_FREE: &[&str] = &[
     "table-arithmetic",
     "table-quotes",
     "table-compare",
+    "table-count",
+    "data-values",
 ];
 
 /// The basis a claim names (the file's only basis when it names none, the
