@@ -3,6 +3,7 @@
 mod audit;
 mod catalog_parity;
 mod checks_b_independent;
+mod checks_independent;
 mod cli_audit;
 mod cli_audit_tex;
 mod cli_certify;

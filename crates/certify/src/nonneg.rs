@@ -84,18 +84,13 @@ pub fn tensor(poly: &Poly, params: &[(&str, ParamBox)]) -> Result<Tensor, String
     }
     let mut negative = false;
     for (factor, exp) in e.denominator() {
-        let vars = factor.variables();
-        if vars.len() != 1
-            || factor.total_degree() != 1
-            || !vars.iter().all(|v| v.starts_with("__y"))
-        {
+        let Some(v) = unit_map_denominator(factor) else {
             return Err(format!(
                 "unexpected denominator {factor} after mapping the box"
             ));
-        }
-        let v = vars.iter().next().ok_or("a variable")?;
+        };
         let at_half = Sym::from_poly(factor.clone())
-            .subs(v, &Sym::rational(Rational::from((1, 2))))
+            .subs(&v, &Sym::rational(Rational::from((1, 2))))
             .as_rational()
             .ok_or("a constant")?;
         negative ^= at_half < 0 && exp % 2 == 1;
@@ -119,6 +114,28 @@ pub fn tensor(poly: &Poly, params: &[(&str, ParamBox)]) -> Result<Tensor, String
         t.add(&alpha, &q.to_rational());
     }
     Ok(t)
+}
+
+/// The unit coordinate `y` of a denominator factor the map of a parameter
+/// set makes: `c·yᵃ(y − 1)ᵇ`, which vanishes only on the faces `y = 0`,
+/// `y = 1` — `1 − y` of a half-line's `y/(1 − y)`, `y(1 − y)` of the
+/// line's `(2y − 1)/(y(1 − y))`, raised to the parameter's degree (the ring
+/// may keep `(1 − y)²` expanded, `y² − 2y + 1`, as one factor). `None` for
+/// any other factor.
+fn unit_map_denominator(factor: &Poly) -> Option<String> {
+    let vars = factor.variables();
+    let [v] = vars.iter().collect::<Vec<_>>()[..] else {
+        return None;
+    };
+    if !v.starts_with("__y") {
+        return None;
+    }
+    let low = factor.terms().map(|(m, _)| m.exponent(v)).min()?;
+    let (top, lead) = factor.leading_term()?;
+    let y = Poly::var(v);
+    let product =
+        (y.pow(low) * &(y - &Poly::one()).pow(top.exponent(v) - low)).scale(&lead.to_rational());
+    (factor - &product).is_zero().then(|| v.clone())
 }
 
 /// A point of the unit cube as `(z, parameter values)`; `None` on a face at
@@ -447,6 +464,39 @@ mod tests {
             certify(&b[0], false, Some("w"), &poles),
             Certificate::Pole(_)
         ));
+    }
+
+    #[test]
+    fn a_parameter_of_higher_degree_on_a_half_line_maps_to_powers_of_one_minus_y() {
+        // Barsky's Beta-spline divides by δ = 2β1³ + 4β1² + 4β1 + β2 + 2 on
+        // β1, β2 ≥ 0: mapped, β1 = y/(1 − y) leaves (1 − y)³ in the
+        // denominator, which the ring may keep expanded (it was refused as
+        // "unexpected denominator")
+        let (b1, b2, t) = (poly_var("beta1"), poly_var("beta2"), poly_var("t"));
+        let delta = Sym::int(2) * &b1 * &b1 * &b1
+            + &(Sym::int(4) * &b1 * &b1)
+            + &(Sym::int(4) * &b1)
+            + &b2
+            + &Sym::int(2);
+        let f = Sym::int(2) * &t * &t * &t / &delta;
+        let half = ParamBox::from_closed(Rational::new());
+        let c = certify_box(
+            &f,
+            false,
+            &[("beta1", half.clone()), ("beta2", half.clone())],
+        );
+        assert!(matches!(c, BoxCertificate::NonNegative { .. }), "{c:?}");
+        // on the other half-line too, and a function of one sign below 0
+        // is refuted at a finite point: −β1² − β2² − 1 < 0
+        let g = -(b1.clone() * &b1) - &Sym::one() - &(b2.clone() * &b2);
+        match certify_box(
+            &g,
+            false,
+            &[("beta1", ParamBox::up_to(Rational::new())), ("beta2", half)],
+        ) {
+            BoxCertificate::Counterexample { value, .. } => assert!(value < 0),
+            other => panic!("{other:?}"),
+        }
     }
 
     #[test]

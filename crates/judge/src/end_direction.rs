@@ -14,7 +14,7 @@
 //! inside. Optionally `c → 0` as the parameter tends to `±∞` (the end
 //! approaches `Pb`): exactly when `deg N < deg D`.
 
-use trig_core::ParamRange;
+use trig_core::{ParamRange, Parameter};
 use trig_deriv::{End, Wrt, curve_endpoint_derivatives};
 use trig_symbolic::{Poly, Sym};
 use trig_verdict::status::Status;
@@ -115,7 +115,7 @@ fn sign_on_range<B: ExactBasis>(basis: &B, c: &Sym, claim: &Direction<'_>) -> (S
             format!("a constant, {}{stated}", if holds { "" } else { "not " }),
         );
     }
-    let [param] = params.as_slice() else {
+    let Some(param) = the_parameter(&params, c) else {
         return (
             Status::NotCheckable,
             format!(
@@ -172,11 +172,28 @@ fn sign_on_range<B: ExactBasis>(basis: &B, c: &Sym, claim: &Direction<'_>) -> (S
     )
 }
 
+/// The parameter `c` is a function of: the basis's only one, or of
+/// several the only one `c` depends on (Han, Ma & Huang's start tangent
+/// `(2 + λ)(P1 − P0)` is the same for every `μ`, so its sign is decided on
+/// `λ`'s range alone); `None` when `c` depends on several.
+fn the_parameter<'p>(params: &'p [Parameter], c: &Sym) -> Option<&'p Parameter> {
+    if let [one] = params {
+        return Some(one);
+    }
+    let mut variables = c.numerator().variables();
+    variables.extend(c.denominator_poly().variables());
+    let mut used = params.iter().filter(|p| variables.contains(&p.name));
+    match (used.next(), used.next()) {
+        (Some(one), None) => Some(one),
+        _ => None,
+    }
+}
+
 /// Whether `c → 0` as the only parameter tends to `limit` (`±∞`): the
 /// numerator of lower degree than the denominator.
 fn vanishes_at_infinity<B: ExactBasis>(basis: &B, c: &Sym, limit: &str) -> (Status, String) {
     let params = basis.parameters();
-    let [param] = params.as_slice() else {
+    let Some(param) = the_parameter(&params, c) else {
         return (
             Status::NotCheckable,
             format!("a limit is decided for one parameter, not {}", params.len()),
@@ -279,5 +296,34 @@ mod tests {
         let d = direction((1, 0), 1, FactorSign::Nonzero, None, Some("∞"));
         let v = end_direction(&quadratic, &d);
         assert_ne!(v.status, Status::Holds, "{v:?}");
+    }
+
+    #[test]
+    fn a_factor_of_one_parameter_is_decided_beside_another() {
+        // Han, Ma & Huang 2009: Q'(0) = (2 + λ)(P1 − P0) for every μ, zero
+        // at λ = −2 (it was not-checkable: "decided for one parameter, not 2")
+        let hmh = trig_specfile::Spec::from_file(std::path::Path::new(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../../examples/han-ma-huang-cubic.toml"
+        )))
+        .expect("the two-parameter basis");
+        let v = end_direction(
+            &hmh,
+            &direction((1, 0), 1, FactorSign::Positive, None, None),
+        );
+        assert_eq!(v.status, Status::Fails, "{v:?}");
+        assert!(
+            v.evidence.iter().any(|e| e.text.contains("at λ = -2")),
+            "{v:?}"
+        );
+        // its limit too: 2 + λ does not vanish as λ → ∞
+        let d = direction((1, 0), 1, FactorSign::Nonzero, None, Some("∞"));
+        let v = end_direction(&hmh, &d);
+        assert!(
+            v.evidence
+                .iter()
+                .any(|e| e.text.contains("does not tend to 0")),
+            "{v:?}"
+        );
     }
 }

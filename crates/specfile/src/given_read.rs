@@ -403,7 +403,12 @@ pub(crate) fn knot_coefficients(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> 
                         {
                             Ok((text, v))
                         }
-                        _ => src.invalid(
+                        // the formula's own error (a division by a divisor
+                        // that vanishes in the range) is the reason
+                        Err(e) => {
+                            src.invalid(item.span(), "claims.matrix", format!("`{text}`: {e}"))
+                        }
+                        Ok(_) => src.invalid(
                             item.span(),
                             "claims.matrix",
                             format!("`{text}`: a coefficient is a formula in the parameters"),
@@ -444,4 +449,39 @@ pub(crate) fn continuous(
         weights: c.weights.unwrap_or(false),
         segments,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::spec::Spec;
+
+    /// The catalog's blending functions with a `knot-coefficients` claim
+    /// whose printed coefficient of `F0` is `row0`.
+    fn blending_with(row0: &str) -> crate::error::Result<Spec> {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../../examples/catalog/seed000-blending.toml");
+        let text = std::fs::read_to_string(path).unwrap();
+        let knots: Vec<String> = (0..=20).map(|k| format!("\"{k}\"")).collect();
+        Spec::from_str_named(
+            &format!(
+                "{text}\n[[claims]]\nid = \"k\"\nsource = \"s\"\nstatement = \"s\"\ncheck = \"knot-coefficients\"\nknots = {{ coefficients = \"seed000-nonuniform\", values = [{}], span = 10 }}\nmatrix = [[\"{row0}\", \"0\", \"0\", \"0\"], [\"0\", \"1\", \"0\", \"0\"], [\"0\", \"0\", \"1\", \"0\"], [\"0\", \"0\", \"0\", \"1\"]]\n",
+                knots.join(", ")
+            ),
+            "k.toml",
+        )
+    }
+
+    #[test]
+    fn a_refused_coefficient_names_its_reason() {
+        assert!(blending_with("1/(6*zeta^2 - 6*zeta + 10)").is_ok());
+        // 2ζ − 1 vanishes at ζ = 1/2 ∈ [0, 4]: the division is the reason
+        // (it was reported as "a coefficient is a formula in the parameters")
+        let e = blending_with("1/(2*zeta - 1)").unwrap_err().to_string();
+        assert!(e.contains("division by"), "{e}");
+        let e = blending_with("t*zeta").unwrap_err().to_string();
+        assert!(
+            e.contains("a coefficient is a formula in the parameters"),
+            "{e}"
+        );
+    }
 }
