@@ -104,6 +104,17 @@ pub enum Direction {
     AwayFromPolygon,
 }
 
+/// Where a shape-effect claim says the curve `Σ bᵢPᵢ` goes as its
+/// parameters increase.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Target {
+    /// Towards or away from the whole control polygon.
+    Polygon(Direction),
+    /// Onto the control points of these indices (a segment `P_aP_b` of the
+    /// polygon): their weights rise and the others' fall.
+    Onto(Vec<usize>),
+}
+
 /// The control polygons a shape-effect claim prints (its figures), with
 /// where their distance from the curve `Σ bᵢPᵢ` is shown: the curve point
 /// at one exact point of the variable, for each printed parameter value.
@@ -290,8 +301,12 @@ pub enum Check {
     /// given; the other parameters over their declared ranges) the curve
     /// moves in `direction`.
     ShapeEffect {
-        parameter: String,
-        direction: Direction,
+        /// One parameter, or several changed concurrently (`pᵢ = pᵢ₀ + τ`).
+        parameters: Vec<String>,
+        target: Target,
+        /// Printed "as `p` increases (or decreases)": holds when one of
+        /// the two directions holds.
+        either: bool,
         range: Option<ParamRange>,
         /// Printed polygons, shown with their distance from the curve.
         polygons: Option<Polygons>,

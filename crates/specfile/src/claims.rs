@@ -442,6 +442,25 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                 .map(Spanned::span),
             matches!(check, Check::EndDirection { .. }),
         ),
+        (
+            "onto",
+            c.onto
+                .as_ref()
+                .map(|v| v.first().map_or(c.check.span(), Spanned::span)),
+            matches!(check, Check::ShapeEffect { .. }),
+        ),
+        (
+            "parameters",
+            c.parameters
+                .as_ref()
+                .map(|v| v.first().map_or(c.check.span(), Spanned::span)),
+            matches!(check, Check::ShapeEffect { .. }),
+        ),
+        (
+            "either",
+            c.either.map(|_| c.check.span()),
+            matches!(check, Check::ShapeEffect { .. }),
+        ),
     ] {
         if let (Some(span), false) = (given, taken) {
             return src.invalid(
@@ -459,6 +478,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                         "curves" => "identity` or `check = \"endpoint-derivatives",
                         "correction" | "positive" => "identity",
                         "along" => "end-direction",
+                        "onto" | "parameters" | "either" => "shape-effect",
                         _ => "interpolant-nonnegative` or `check = \"interpolant-continuity",
                     }
                 ),
@@ -534,15 +554,18 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             "`maximal = true` with every parameter fixed: no range is left to be maximal (drop `maximal`, or leave a parameter free)".into(),
         );
     }
-    let varied = match &check {
-        Check::ShapeEffect { parameter, .. } => Some(parameter),
+    let varied: &[String] = match &check {
+        Check::ShapeEffect { parameters, .. } => parameters,
         Check::LocalControl {
             varied: Varied::Parameter { name, .. },
             ..
-        } => Some(name),
-        _ => None,
+        } => std::slice::from_ref(name),
+        _ => &[],
     };
-    if let Some(p) = varied.filter(|p| given.fixed.iter().any(|f| &f.name == *p)) {
+    if let Some(p) = varied
+        .iter()
+        .find(|p| given.fixed.iter().any(|f| &f.name == *p))
+    {
         return src.invalid(
             c.check.span(),
             "claims.at",

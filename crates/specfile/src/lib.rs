@@ -70,7 +70,7 @@ pub use check::{
     Across, Application, Applied, Argument, Change, Check, ClaimFigure, Condition, Curve,
     Differentiated, Direction, Identity, JoinSegments, Let, ListedNet, Monotone, NamedCurve,
     Polygons, Printed, PrintedDerivative, Quantifier, RationalCurve, Reading, Seam, SpecClaim,
-    Varied,
+    Target, Varied,
 };
 pub use check::{Between, Fixed, Given};
 pub use document::{DocumentClaim, DocumentFile, Part};

@@ -201,6 +201,14 @@ pub struct RawClaim {
     pub shown: Option<bool>,
     /// A figure supporting the verdict (`[claims.figure]`).
     pub figure: Option<RawFigure>,
+    /// `check = "shape-effect"`: several parameters changed concurrently
+    /// (instead of `parameter`).
+    pub parameters: Option<Vec<Spanned<String>>>,
+    /// `check = "shape-effect"`: the functions whose weights rise (the
+    /// curve approaches their control points; instead of `direction`).
+    pub onto: Option<Vec<Spanned<String>>>,
+    /// `check = "shape-effect"`: printed "as `p` increases (or decreases)".
+    pub either: Option<bool>,
 }
 
 /// `[claims.figure]`: `file` (relative to the claim's file), `caption`, and

@@ -9,27 +9,19 @@
 use rug::Rational;
 use trig_core::{Family, Ring};
 use trig_deriv::continuity::quotient_derivatives;
-use trig_specfile::Direction;
 use trig_symbolic::Sym;
 
 use crate::claim::Claim;
-use trig_judge::certificate::CERTIFIED;
-use trig_judge::shape_effect::{Move, Point, SHAPE, TOWARDS, moves, weights_move};
+use trig_judge::shape_effect::Point;
 use trig_verdict::evidence::{Evidence, Expr};
 use trig_verdict::status::Status;
 use trig_verdict::verdict::Verdict;
 
 /// In report order (after the second list's other claims).
-pub const CLAIMS: &[Claim] = &[
-    Claim {
-        id: "D15",
-        check: d15,
-    },
-    Claim {
-        id: "E21",
-        check: e21,
-    },
-];
+pub const CLAIMS: &[Claim] = &[Claim {
+    id: "D15",
+    check: d15,
+}];
 
 fn q(n: i64, d: i64) -> Rational {
     Rational::from((n, d))
@@ -40,115 +32,6 @@ fn polygon(points: &[(i64, i64, i64, i64)]) -> Vec<Point> {
         .iter()
         .map(|&(a, b, c, d)| (q(a, b), q(c, d)))
         .collect()
-}
-
-/// A printed alternative "as `p` increases (or decreases)": holds when one
-/// of the two directions holds, and then that direction's evidence decides
-/// (the other is summarised); otherwise both are shown.
-fn either(increasing: Verdict, decreasing: Verdict) -> Verdict {
-    let method = increasing.method.clone();
-    let named = [
-        ("as the parameter increases", increasing),
-        ("as the parameter decreases", decreasing),
-    ];
-    let mut v = match named.iter().position(|(_, v)| v.status == Status::Holds) {
-        Some(k) => {
-            let [a, b] = named;
-            let ((name, holds), (other, rest)) = if k == 0 { (a, b) } else { (b, a) };
-            let mut v = Verdict::all(method, vec![(name.to_string(), holds)]);
-            v.evidence.push(Evidence::note(format!(
-                "{other}: {} (every move reverses), not the direction that decides",
-                rest.status
-            )));
-            v
-        }
-        None => Verdict::all(
-            method,
-            named.into_iter().map(|(n, v)| (n.to_string(), v)).collect(),
-        ),
-    };
-    v.evidence.insert(
-        0,
-        "printed \"with the increasing (or decreasing)\": holds when one direction holds",
-    );
-    v
-}
-
-/// The moves as `p` increases that bring weight onto `target` (the indices
-/// of the segment's end points): theirs rise, the others fall; decreasing
-/// `p` reverses every move.
-fn onto(target: &[usize], increasing: bool) -> Vec<Move> {
-    (0..4)
-        .map(|i| {
-            if target.contains(&i) == increasing {
-                Move::Increases
-            } else {
-                Move::Decreases
-            }
-        })
-        .collect()
-}
-
-/// Seed 004 §IV with the EH bases (1) as the weights of
-/// `R_{i,3} = Σⱼ bⱼ P_{i+j−3}` (2); (4) prints the same derivatives,
-/// `∂R/∂λ = t²(1 − t)²(P_{i−3} − P_{i−2})`, `∂R/∂μ = t²(1 − t)²(P_{i−1} − P_i)`.
-fn e21() -> Verdict {
-    const DEFINITION: &str = "definition (weakest reasonable; the source gives none): the segment approaches the line segment P_aP_b as the parameter changes when, on the whole domain and parameter box, the weights of P_a and P_b do not decrease and the weights of the other two control points do not increase (weight moves monotonically onto the segment's ends); towards the whole polygon as in the judge (end weights b_0, b_3 fall, inner b_1, b_2 rise)";
-    let family = Family::Eh;
-    let segment = |param: &str, target: &[usize]| {
-        either(
-            weights_move(&family, param, &onto(target, true), &[]),
-            weights_move(&family, param, &onto(target, false), &[]),
-        )
-    };
-    let concurrent = |direction: Direction| -> Verdict {
-        let each = moves(direction, 4);
-        Verdict::all(
-            format!("{SHAPE}{CERTIFIED}"),
-            vec![
-                ("in λ".into(), weights_move(&family, "lambda", &each, &[])),
-                ("in μ".into(), weights_move(&family, "mu", &each, &[])),
-            ],
-        )
-    };
-    // along λ = λ0 + τ, μ = μ0 + τ the derivative is ∂/∂λ + ∂/∂μ: equal to
-    // the derivative in one parameter when each bᵢ has only one of them
-    let b = trig_judge::exact::basis(family);
-    let separated = b
-        .iter()
-        .all(|f| f.diff("lambda").is_zero() || f.diff("mu").is_zero());
-    let both = if separated {
-        let mut v = either(
-            concurrent(Direction::TowardsPolygon),
-            concurrent(Direction::AwayFromPolygon),
-        );
-        v.evidence.insert(0, TOWARDS);
-        v.evidence.insert(1, "each b_i contains only one of λ, μ (b0, b1: λ; b2, b3: μ, the ≡ 0 lines below), so along λ = λ0 + τ, μ = μ0 + τ the derivative ∂b_i/∂τ = ∂b_i/∂λ + ∂b_i/∂μ is the derivative in its own parameter: the concurrent change is decided in each parameter; concurrent decrease ⇔ away from the polygon as both increase");
-        v
-    } else {
-        Verdict::not_checkable(
-            "a function contains both λ and μ: the concurrent change is not decided parameter by parameter",
-        )
-    };
-    let mut v = Verdict::all(
-        format!("{SHAPE}{CERTIFIED}"),
-        vec![
-            (
-                "(i) λ fixed, μ varies: approaches P_{i−3}P_{i−1}".into(),
-                segment("mu", &[0, 2]),
-            ),
-            (
-                "(ii) μ fixed, λ varies: approaches P_{i−2}P_i".into(),
-                segment("lambda", &[1, 3]),
-            ),
-            (
-                "(iii) both vary concurrently: approaches the whole polygon".into(),
-                both,
-            ),
-        ],
-    );
-    v.evidence.insert(0, DEFINITION);
-    v
 }
 
 /// The curvature at the start `P0 = (0, 0)` of the curve `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ`

@@ -539,14 +539,20 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
             trig_judge::nonnegative::monotone_claim(spec, items, range.as_ref())
         }
         Check::ShapeEffect {
-            parameter,
-            direction,
+            parameters,
+            target,
+            either,
             range,
             polygons,
         } => {
-            let mut v =
-                trig_judge::shape_effect::shape_effect(spec, parameter, *direction, range.as_ref());
-            if let Some(p) = polygons {
+            let mut v = trig_judge::shape_effect::shape_effect(
+                spec,
+                parameters,
+                target,
+                *either,
+                range.as_ref(),
+            );
+            if let (Some(p), [parameter]) = (polygons, parameters.as_slice()) {
                 let at: Vec<(&str, rug::Rational)> =
                     p.at.iter().map(|(n, x)| (n.as_str(), x.clone())).collect();
                 v.evidence.extend(p.polygons.iter().map(|q| {
