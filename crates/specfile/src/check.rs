@@ -501,6 +501,31 @@ pub enum Check {
         /// The substitution as printed (`λ = m`).
         params_text: String,
     },
+    /// The curvature at the common start `P0` of rational curves
+    /// `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ` over one polygon: each curve of the claim's
+    /// basis (`curve` its printed name) at most that of the compared curves
+    /// (other bases) — a necessary condition of "lies between the other
+    /// curve and the polygon".
+    EndCurvature {
+        curve: String,
+        polygon: Vec<(Rational, Rational)>,
+        curves: Vec<WeightedCurve>,
+    },
+}
+
+/// A rational curve `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ` of an end-curvature claim on the
+/// polygon's first points (one per function).
+#[derive(Debug, Clone, PartialEq)]
+pub struct WeightedCurve {
+    /// Short name (`quintic`, in `κ_quintic`); the label otherwise.
+    pub name: String,
+    /// How the report names it (`the quintic Bézier curve`).
+    pub label: String,
+    /// `None`: the claim's basis (a curve the claim is about); otherwise a
+    /// compared basis, read from its spec file.
+    pub basis: Option<Box<crate::Spec>>,
+    /// One per function, exact.
+    pub weights: Vec<Rational>,
 }
 
 /// A change of variable of printed identities (`change = { x = "(x - x_i)/h_i" }`):

@@ -5,9 +5,8 @@ use crate::claim::Claim;
 
 mod seed000_appendix_e;
 mod seed000_appendix_print;
-mod shape_effect;
 
 /// The Rust checkers of the claims still marked `built-in`.
 pub fn all() -> Vec<Claim> {
-    [seed000_appendix_e::CLAIMS, shape_effect::CLAIMS].concat()
+    [seed000_appendix_e::CLAIMS].concat()
 }

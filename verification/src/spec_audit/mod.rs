@@ -538,6 +538,15 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
         Check::Monotone { items, range } => {
             trig_judge::nonnegative::monotone_claim(spec, items, range.as_ref())
         }
+        Check::EndCurvature {
+            curve,
+            polygon,
+            curves,
+        } => trig_judge::end_curvature::end_curvature(
+            curve,
+            polygon,
+            &trig_judge::end_curvature::curves_of(spec, curves),
+        ),
         Check::ShapeEffect {
             parameters,
             target,
