@@ -1,8 +1,7 @@
 //! The audit of document files (`documents/`, `docs/spec.md` "Document
 //! files"): every claim a document prints, as data, decided by the judges
-//! through the spec language — or, for a claim still marked `built-in`, by
-//! its Rust checker in [`crate::claims`] — and reported as one [`Entry`]
-//! each, in the files' order.
+//! through the spec language, and reported as one [`Entry`] each, in the
+//! files' order.
 
 use std::path::{Path, PathBuf};
 
@@ -10,7 +9,6 @@ use trig_specfile::document::{Header, read_set};
 use trig_specfile::{Check, DocumentClaim, DocumentFile, Part, Spec, SpecClaim, SpecError};
 use trig_verdict::Verdict;
 
-use crate::claim::Claim;
 use crate::entry::{Document, Entry};
 use crate::figures::Figure;
 
@@ -19,9 +17,6 @@ use crate::figures::Figure;
 pub enum DocumentsError {
     #[error(transparent)]
     Spec(#[from] SpecError),
-    /// A claim marked `built-in` that no Rust checker decides.
-    #[error("{file}: claim `{id}` is marked `built-in`, but no Rust checker has that id")]
-    NoChecker { file: String, id: String },
 }
 
 /// The folder of the five documents: `documents/` of the working directory
@@ -61,16 +56,11 @@ enum Decider<'a> {
     /// An umbrella over claims of the document (`check = "all"`): decided
     /// from the verdicts of the claims it lists, after them.
     Umbrella(&'a DocumentFile, &'a SpecClaim),
-    Rust(Claim),
 }
 
 /// What decides `c`, a claim of `doc`.
-fn decider<'a>(
-    doc: &'a DocumentFile,
-    c: &'a DocumentClaim,
-    rust: &[Claim],
-) -> Result<Decider<'a>, DocumentsError> {
-    Ok(match c {
+fn decider<'a>(doc: &'a DocumentFile, c: &'a DocumentClaim) -> Decider<'a> {
+    match c {
         DocumentClaim::Stated { claim, .. } if matches!(claim.check, Check::All { .. }) => {
             Decider::Umbrella(doc, claim)
         }
@@ -79,15 +69,7 @@ fn decider<'a>(
             parts.iter().map(|p| (&doc.bases[p.basis].1, p)).collect(),
             notes,
         ),
-        DocumentClaim::BuiltIn { id, .. } => {
-            Decider::Rust(*rust.iter().find(|r| r.id == id).ok_or_else(|| {
-                DocumentsError::NoChecker {
-                    file: doc.file.clone(),
-                    id: id.clone(),
-                }
-            })?)
-        }
-    })
+    }
 }
 
 /// The verdict of a claim that is not an umbrella over claims.
@@ -96,7 +78,6 @@ fn decide(decider: &Decider<'_>) -> Option<Verdict> {
         Decider::Stated(spec, claim) => Some(crate::spec_audit::decide_in(spec, claim)),
         Decider::Parts(parts, notes) => Some(crate::spec_audit::decide_parts(parts, notes)),
         Decider::Umbrella(..) => None,
-        Decider::Rust(claim) => Some((claim.check)()),
     }
 }
 
@@ -106,9 +87,8 @@ fn decide(decider: &Decider<'_>) -> Option<Verdict> {
 fn umbrella(
     doc: &DocumentFile,
     claim: &SpecClaim,
-    rust: &[Claim],
     known: &dyn Fn(&str) -> Option<Verdict>,
-) -> Result<Verdict, DocumentsError> {
+) -> Verdict {
     let Check::All { claims, brief } = &claim.check else {
         unreachable!("an umbrella is a `check = \"all\"` claim")
     };
@@ -122,8 +102,8 @@ fn umbrella(
                     .iter()
                     .find(|c| c.id() == id)
                     .expect("the reader checks that an umbrella lists claims of the file");
-                match decider(doc, part, rust)? {
-                    Decider::Umbrella(d, c) => umbrella(d, c, rust, known)?,
+                match decider(doc, part) {
+                    Decider::Umbrella(d, c) => umbrella(d, c, known),
                     other => decide(&other).expect("not an umbrella"),
                 }
             }
@@ -132,7 +112,7 @@ fn umbrella(
     }
     let mut v = crate::spec_audit::umbrella_verdict(parts, *brief);
     v.evidence.extend(claim.notes.iter().map(String::as_str));
-    Ok(v)
+    v
 }
 
 /// The claims of `documents` (those of the document with id `only_document`
@@ -144,8 +124,7 @@ pub fn audit(
     root: &Path,
     only_document: Option<&str>,
     only_claim: Option<&str>,
-) -> Result<Vec<Entry>, DocumentsError> {
-    let rust = crate::claims::all();
+) -> Vec<Entry> {
     let mut chosen: Vec<(Entry, Decider<'_>)> = Vec::new();
     for (order, doc) in documents.iter().enumerate() {
         if only_document.is_some_and(|d| d != doc.header.id) {
@@ -156,7 +135,7 @@ pub fn audit(
             if only_claim.is_some_and(|id| !c.id().eq_ignore_ascii_case(id)) {
                 continue;
             }
-            let decider = decider(doc, c, &rust)?;
+            let decider = decider(doc, c);
             let entry = Entry {
                 id: c.id().to_string(),
                 document: report.clone(),
@@ -179,15 +158,15 @@ pub fn audit(
                     .find(|((e, _), _)| e.id == id && e.document.id == doc.header.id)
                     .and_then(|(_, v)| v.clone())
             };
-            verdicts[i] = Some(umbrella(doc, claim, &rust, &known)?);
+            verdicts[i] = Some(umbrella(doc, claim, &known));
         }
     }
-    Ok(chosen
+    chosen
         .into_iter()
         .zip(verdicts)
         .map(|((entry, _), verdict)| Entry {
             verdict: verdict.expect("every claim decided"),
             ..entry
         })
-        .collect())
+        .collect()
 }

@@ -5,29 +5,19 @@
 //! printed, and what decides it), decided by the judges of `trig-judge`
 //! through the spec language ([`spec_audit`]) — identities exactly in the
 //! symbolic ring, with the exact residual or a 256-bit MPFR counterexample
-//! as evidence when a claim fails — or, for a claim marked `built-in`, by
-//! its Rust checker ([`Claim`]) until issue 41 moves it to data. A claim
-//! never carries its verdict: [`run`] computes every verdict, and
-//! `trig-report` renders them.
+//! as evidence when a claim fails. No claim is Rust: a new claim is a line
+//! of data, a new kind of claim one judge. A claim never carries its
+//! verdict: [`run`] computes every verdict, and `trig-report` renders them.
 
 pub mod budget;
-pub mod claim;
-mod claims;
 pub mod documents;
 pub mod entry;
 pub mod figures;
 pub mod spec_audit;
 
-pub use claim::Claim;
 pub use documents::DocumentsError;
 pub use entry::{Document, Entry};
 pub use trig_verdict::{Status, Verdict, Witness};
-
-/// The Rust checkers of the claims still marked `built-in` (each the claim
-/// of the same id in a document file).
-pub fn checkers() -> Vec<Claim> {
-    claims::all()
-}
 
 /// The audit of the five documents: the claims of the document files of
 /// [`documents::default_dir`] (those of the document with id `document`
@@ -35,10 +25,10 @@ pub fn checkers() -> Vec<Claim> {
 /// in report order.
 pub fn run(document: Option<&str>, claim: Option<&str>) -> Result<Vec<Entry>, DocumentsError> {
     let dir = documents::default_dir();
-    documents::audit(
+    Ok(documents::audit(
         &documents::load(&dir)?,
         dir.parent().unwrap_or(std::path::Path::new("")),
         document,
         claim,
-    )
+    ))
 }

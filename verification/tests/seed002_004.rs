@@ -1,5 +1,5 @@
-//! Seeds 002 and 004, thesis T32: the verdicts this helper's checkers
-//! compute, and independent MPFR re-checks of the two-parameter certifier.
+//! Seeds 002 and 004, thesis T32: the verdicts the audit computes for
+//! their claims, and independent MPFR re-checks of the two-parameter certifier.
 
 use proptest::prelude::*;
 use rug::{Float, Rational};

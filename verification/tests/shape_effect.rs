@@ -156,6 +156,23 @@ fn catalog_shape_claims_are_decided() {
     let w = witness(&e21);
     assert_eq!(at(w, "t"), "1/2", "{w:?}");
     assert_eq!(w.values[0].value.plain, "1/16", "{w:?}");
+    // (i), (ii): weight moves onto the segment as the parameter decreases
+    // or increases (one direction decides); (iii): the total derivative
+    // raises the end weight b0 as λ, μ increase together, b2 as they fall
+    for (part, status) in [
+        ("(i)", Status::Holds),
+        ("(ii)", Status::Holds),
+        ("(iii)", Status::Fails),
+    ] {
+        assert!(
+            e21.evidence.iter().any(|e| e
+                .parts
+                .first()
+                .is_some_and(|p| p.name.starts_with(part) && p.status == status)),
+            "{part}: {e21:?}"
+        );
+    }
+    assert_eq!(w.values[0].label, "∂b0/∂λ + ∂b0/∂μ", "{w:?}");
 }
 
 /// A parameter inside a rational basis (the rational quadratic's weight w:

@@ -70,7 +70,7 @@ fn thesis_cubic_battery_and_extra_claims() {
 fn seed002_quartic_spec_audits() {
     let entries = spec_audit::audit(&example("seed002-quartic.toml"));
     let status = |id: &str| entry(&entries, id).verdict.status;
-    // the built-in D1b, D2, D3 decide the same statements
+    // the five documents' D1b, D2, D3 decide the same statements
     for id in ["D1b", "D2", "D3"] {
         assert_eq!(
             status(id),

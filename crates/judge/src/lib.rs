@@ -27,6 +27,7 @@ pub mod continuity;
 pub mod curve;
 pub mod data_values;
 pub mod domain;
+pub mod end_curvature;
 pub mod end_direction;
 pub mod endpoint;
 pub mod exact;

@@ -11,8 +11,12 @@
 //! so weight moves monotonically from the end control points to the inner
 //! ones at every point of the curve ("towards the polygon"); "away from
 //! the polygon" is the opposite. A claim about other target points (a
-//! segment `P_{i−3}P_{i−1}` of a B-spline segment) states the move of each
-//! weight directly ([`Move`]).
+//! segment `P_{i−3}P_{i−1}` of a B-spline segment) names them: their
+//! weights rise, the others' fall ([`ONTO`], [`target_moves`]). A printed
+//! "as `p` increases (or decreases)" holds when one direction holds
+//! ([`either_way`]); several parameters changed concurrently,
+//! `pₖ = pₖ₀ + τ`, move the weights by the total derivative
+//! `∂bᵢ/∂τ = Σₖ ∂bᵢ/∂pₖ` ([`CONCURRENT`]; seed 004 §IV (i)–(iii)).
 //!
 //! Each sign is decided by the one certification engine on the exact
 //! derivative `∂bᵢ/∂p` at a fixed point of the variable
@@ -30,7 +34,7 @@ use trig_certify::branch::Axis;
 use trig_certify::nonneg::{BoxCertificate, certify_box};
 use trig_certify::{ParamBox, standardize};
 use trig_core::{Affine, ParamRange, Parameter};
-use trig_specfile::Direction;
+use trig_specfile::{Direction, Target};
 use trig_symbolic::Sym;
 
 use super::by_intervals;
@@ -47,6 +51,14 @@ pub const SHAPE: &str =
 /// The definition of "towards the control polygon", as the report states it.
 pub const TOWARDS: &str = "definition (weakest reasonable; the source gives none): the curve Σ b_i P_i moves towards its control polygon as the parameter increases when, on the whole domain and parameter box, the end weights do not increase and the inner weights do not decrease (∂b_0/∂p ≤ 0, ∂b_n/∂p ≤ 0, ∂b_i/∂p ≥ 0 for 0 < i < n): weight moves monotonically from the end control points to the inner ones; away from the polygon is the opposite";
 
+/// The definition of "approaches the control points `P_a, P_b, …`" (a
+/// segment of the polygon), as the report states it.
+pub const ONTO: &str = "definition (weakest reasonable; the source gives none): the curve Σ b_i P_i approaches the named control points (a segment P_aP_b of its polygon) as the parameter increases when, on the whole domain and parameter box, their weights do not decrease and the weights of the other control points do not increase (weight moves monotonically onto them)";
+
+/// How a concurrent change of several parameters is decided, as the report
+/// states it.
+pub const CONCURRENT: &str = "the parameters change concurrently, each p_k = p_k0 + τ: the weights move with the total derivative ∂b_i/∂τ = Σ_k ∂b_i/∂p_k, certified on the whole box of starting values (the weakest reasonable reading of \"concurrent increasing\")";
+
 /// How one weight is claimed to move as the parameter increases.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Move {
@@ -54,6 +66,16 @@ pub enum Move {
     Increases,
     /// `∂bᵢ/∂p ≤ 0`.
     Decreases,
+}
+
+impl Move {
+    /// The move as the parameter decreases.
+    pub fn reversed(self) -> Self {
+        match self {
+            Self::Increases => Self::Decreases,
+            Self::Decreases => Self::Increases,
+        }
+    }
 }
 
 /// The moves of `n` weights for a direction: towards the polygon, the end
@@ -68,54 +90,135 @@ pub fn moves(direction: Direction, n: usize) -> Vec<Move> {
         .collect()
 }
 
-/// A printed direction as the parameter increases (`range`: the chosen
-/// parameter's range, the declared one unless given; the other parameters
-/// over their declared ranges), under the definition [`TOWARDS`].
+/// The moves of `n` weights for a target as the parameters increase: onto
+/// named control points, theirs rise and the others fall.
+pub fn target_moves(target: &Target, n: usize) -> Vec<Move> {
+    match target {
+        Target::Polygon(direction) => moves(*direction, n),
+        Target::Onto(points) => (0..n)
+            .map(|i| {
+                if points.contains(&i) {
+                    Move::Increases
+                } else {
+                    Move::Decreases
+                }
+            })
+            .collect(),
+    }
+}
+
+/// A printed shape effect: the curve goes to `target` as the `parameters`
+/// increase (several: concurrently, [`CONCURRENT`]; `either`: "increases
+/// (or decreases)", [`either_way`]); `range`: the one parameter's range,
+/// the declared one unless given; the other parameters over their declared
+/// ranges. Under the definition [`TOWARDS`] or [`ONTO`].
 pub fn shape_effect<B: ExactBasis>(
     basis: &B,
-    param: &str,
-    direction: Direction,
+    parameters: &[String],
+    target: &Target,
+    either: bool,
     range: Option<&ParamRange>,
 ) -> Verdict {
-    let ranges: Vec<(&str, ParamRange)> = range.map(|r| (param, r.clone())).into_iter().collect();
-    let mut v = weights_move(
-        basis,
-        param,
-        &moves(direction, basis.function_names().len()),
-        &ranges,
-    );
-    v.evidence.insert(0, TOWARDS);
+    let ranges: Vec<(&str, ParamRange)> = parameters
+        .first()
+        .zip(range)
+        .map(|(p, r)| (p.as_str(), r.clone()))
+        .into_iter()
+        .collect();
+    let names: Vec<&str> = parameters.iter().map(String::as_str).collect();
+    let rising = target_moves(target, basis.function_names().len());
+    let mut v = if either {
+        let falling: Vec<Move> = rising.iter().map(|m| m.reversed()).collect();
+        either_way(
+            weights_move(basis, &names, &rising, &ranges),
+            weights_move(basis, &names, &falling, &ranges),
+        )
+    } else {
+        weights_move(basis, &names, &rising, &ranges)
+    };
+    if parameters.len() > 1 {
+        v.evidence.insert(0, CONCURRENT);
+    }
+    let definition = match target {
+        Target::Polygon(_) => TOWARDS,
+        Target::Onto(_) => ONTO,
+    };
+    v.evidence.insert(0, definition);
     v
 }
 
-/// Each weight `bᵢ` moves as `moves[i]` states when `param` increases, on
-/// the whole domain and the parameter box: each parameter over `ranges`
-/// where given (a point range `[v, v]` fixes it), its declared range
-/// otherwise.
+/// A printed alternative "as `p` increases (or decreases)": holds when one
+/// of the two directions holds, and then that direction's evidence decides
+/// (the other is summarised); otherwise both are shown.
+pub fn either_way(increasing: Verdict, decreasing: Verdict) -> Verdict {
+    let method = increasing.method.clone();
+    let named = [
+        ("as the parameter increases", increasing),
+        ("as the parameter decreases", decreasing),
+    ];
+    let mut v = match named.iter().position(|(_, v)| v.status == Status::Holds) {
+        Some(k) => {
+            let [a, b] = named;
+            let ((name, holds), (other, rest)) = if k == 0 { (a, b) } else { (b, a) };
+            let mut v = Verdict::all(method, vec![(name.to_string(), holds)]);
+            v.evidence.push(Evidence::note(format!(
+                "{other}: {} (every move reverses), not the direction that decides",
+                rest.status
+            )));
+            v
+        }
+        None => Verdict::all(
+            method,
+            named.into_iter().map(|(n, v)| (n.to_string(), v)).collect(),
+        ),
+    };
+    v.evidence.insert(
+        0,
+        "printed \"increases (or decreases)\": holds when one direction holds",
+    );
+    v
+}
+
+/// Each weight `bᵢ` moves as `moves[i]` states when the `params` increase
+/// (several: concurrently, by the total derivative `Σₖ ∂bᵢ/∂pₖ`), on the
+/// whole domain and the parameter box: each parameter over `ranges` where
+/// given (a point range `[v, v]` fixes it), its declared range otherwise.
 pub fn weights_move<B: ExactBasis>(
     basis: &B,
-    param: &str,
+    params: &[&str],
     moves: &[Move],
     ranges: &[(&str, ParamRange)],
 ) -> Verdict {
-    let params = basis.parameters();
-    let Some(index) = params.iter().position(|p| p.name == param) else {
-        return Verdict::not_checkable(format!("the basis has no parameter `{param}`"));
-    };
-    let symbol = params[index].symbol.clone();
+    let declared = basis.parameters();
+    let mut indices = Vec::new();
+    for param in params {
+        let Some(index) = declared.iter().position(|p| p.name == *param) else {
+            return Verdict::not_checkable(format!("the basis has no parameter `{param}`"));
+        };
+        indices.push(index);
+    }
+    let symbols: Vec<String> = indices
+        .iter()
+        .map(|&i| declared[i].symbol.clone())
+        .collect();
     let domain = basis.domain();
-    if domain
-        .angle
-        .as_ref()
-        .is_some_and(|w| w.params.iter().any(|(i, _)| *i == index))
+    if let Some(symbol) = indices
+        .iter()
+        .zip(&symbols)
+        .find(|(index, _)| {
+            domain
+                .angle
+                .as_ref()
+                .is_some_and(|w| w.params.iter().any(|(i, _)| i == *index))
+        })
+        .map(|(_, s)| s)
     {
         return Verdict::not_checkable(format!(
             "{symbol} changes the angle's rate: the weights at a fixed point of the normalised variable are not formed here; not decided"
         ));
     }
-    let moving = normalised_velocity(&domain, index);
     let atoms = param_atoms(&domain);
-    let chosen: Vec<(&Parameter, ParamRange)> = params
+    let chosen: Vec<(&Parameter, ParamRange)> = declared
         .iter()
         .map(|p| {
             let r = ranges
@@ -126,8 +229,13 @@ pub fn weights_move<B: ExactBasis>(
         })
         .collect();
     let mut evidence = Vec::new();
-    if moving.is_some() {
-        evidence.push(Evidence::note(format!("the domain [{}, {}] moves with {symbol}: the weights are compared at a fixed point of the normalised variable u = (x − a)/(b − a), x = a + (b − a)u, so ∂b_i/∂{symbol} below is the total derivative ∂b_i/∂{symbol} + (∂x/∂{symbol})·∂b_i/∂x with ∂x/∂{symbol} = a' + (b' − a')(x − a)/(b − a)", domain.start.text(&domain.param_names), domain.end.text(&domain.param_names))));
+    let mut velocities = Vec::new();
+    for (&index, symbol) in indices.iter().zip(&symbols) {
+        let moving = normalised_velocity(&domain, index);
+        if moving.is_some() {
+            evidence.push(Evidence::note(format!("the domain [{}, {}] moves with {symbol}: the weights are compared at a fixed point of the normalised variable u = (x − a)/(b − a), x = a + (b − a)u, so ∂b_i/∂{symbol} below is the total derivative ∂b_i/∂{symbol} + (∂x/∂{symbol})·∂b_i/∂x with ∂x/∂{symbol} = a' + (b' − a')(x − a)/(b − a)", domain.start.text(&domain.param_names), domain.end.text(&domain.param_names))));
+        }
+        velocities.push(moving);
     }
     evidence.push(Evidence::note(format!(
         "parameter box {}",
@@ -137,6 +245,17 @@ pub fn weights_move<B: ExactBasis>(
             .collect::<Vec<_>>()
             .join(" × ")
     )));
+    // how the change is named: "μ" alone, "λ, μ" together
+    let (with, as_) = match symbols.as_slice() {
+        [one] => (one.clone(), format!("{one} increases")),
+        several => {
+            let all = several.join(", ");
+            (
+                format!("{all} together"),
+                format!("{all} increase together"),
+            )
+        }
+    };
     let mut status = Status::Holds;
     let mut interval = false;
     for ((f, name), m) in basis_of(basis)
@@ -144,21 +263,32 @@ pub fn weights_move<B: ExactBasis>(
         .zip(basis.function_names())
         .zip(moves)
     {
-        let mut d = d_param(f, &domain, index, &atoms);
-        if let Some(v) = &moving {
-            d = d + &(v.clone() * &d_variable(f, &domain));
-        }
-        let label = format!("∂{name}/∂{symbol}");
+        let d = indices
+            .iter()
+            .zip(&velocities)
+            .fold(Sym::zero(), |acc, (&index, moving)| {
+                let mut d = d_param(f, &domain, index, &atoms);
+                if let Some(v) = moving {
+                    d = d + &(v.clone() * &d_variable(f, &domain));
+                }
+                acc + &d
+            });
+        let label = symbols
+            .iter()
+            .map(|s| format!("∂{name}/∂{s}"))
+            .collect::<Vec<_>>()
+            .join(" + ");
         let subject = match m {
-            Move::Increases => format!("{label} ≥ 0 ({name} increases with {symbol})"),
-            Move::Decreases => format!("{label} ≤ 0 ({name} decreases as {symbol} increases)"),
+            Move::Increases => format!("{label} ≥ 0 ({name} increases with {with})"),
+            Move::Decreases => format!("{label} ≤ 0 ({name} decreases as {as_})"),
         };
         let (s, text, witness) = if d.is_zero() {
-            (
-                Status::Holds,
-                format!("{label} ≡ 0 exactly ({name} does not depend on {symbol})"),
-                None,
-            )
+            let free = if symbols.len() == 1 {
+                format!("{name} does not depend on {with}")
+            } else {
+                format!("{name} does not change as {as_}")
+            };
+            (Status::Holds, format!("{label} ≡ 0 exactly ({free})"), None)
         } else {
             let g = match m {
                 Move::Increases => d.clone(),
@@ -475,9 +605,11 @@ mod tests {
 
     #[test]
     fn the_thesis_cubic_approaches_its_polygon_as_m_grows() {
-        let towards = shape_effect(&Family::ThesisCubic, "m", Direction::TowardsPolygon, None);
+        let m = ["m".to_string()];
+        let decide = |d| shape_effect(&Family::ThesisCubic, &m, &Target::Polygon(d), false, None);
+        let towards = decide(Direction::TowardsPolygon);
         assert_eq!(towards.status, Status::Holds, "{:?}", towards.evidence);
-        let away = shape_effect(&Family::ThesisCubic, "m", Direction::AwayFromPolygon, None);
+        let away = decide(Direction::AwayFromPolygon);
         assert_eq!(away.status, Status::Fails);
         // ∂b0/∂m = −s(1 − s)², exactly, at the witness's s
         let w = away
@@ -501,14 +633,67 @@ mod tests {
         // b0, b1 free of μ
         use Move::{Decreases as D, Increases as I};
         let fixed = [("lambda", range("[1/2, 1/2]"))];
-        let v = weights_move(&Family::Eh, "mu", &[I, D, I, D], &fixed);
+        let v = weights_move(&Family::Eh, &["mu"], &[I, D, I, D], &fixed);
         assert_eq!(v.status, Status::Holds, "{:?}", v.evidence);
         assert!(v.evidence.iter().any(|e| e.contains("≡ 0 exactly")));
-        let w = weights_move(&Family::Eh, "mu", &[I, D, D, I], &fixed);
+        let w = weights_move(&Family::Eh, &["mu"], &[I, D, D, I], &fixed);
         assert_eq!(w.status, Status::Fails);
         assert_eq!(
-            weights_move(&Family::Eh, "nu", &[I, D, I, D], &[]).status,
+            weights_move(&Family::Eh, &["nu"], &[I, D, I, D], &[]).status,
             Status::NotCheckable
         );
+    }
+
+    #[test]
+    fn weight_moving_onto_a_segment_holds_in_the_direction_that_decides() {
+        // EH (1): as μ increases b2 rises and b3 falls (b0, b1 free of μ):
+        // weight moves onto P0, P2 and off P1, P3
+        let mu = ["mu".to_string()];
+        let decide = |onto: Vec<usize>, either: bool| {
+            shape_effect(&Family::Eh, &mu, &Target::Onto(onto), either, None)
+        };
+        let rising = decide(vec![0, 2], false);
+        assert_eq!(rising.status, Status::Holds, "{:?}", rising.evidence);
+        assert!(rising.evidence[0].text.starts_with(ONTO));
+        // onto P1, P3 only as μ decreases: fails as printed "as μ
+        // increases", holds with "(or decreases)", that direction deciding
+        assert_eq!(decide(vec![1, 3], false).status, Status::Fails);
+        let either = decide(vec![1, 3], true);
+        assert_eq!(either.status, Status::Holds, "{:?}", either.evidence);
+        assert!(
+            either
+                .evidence
+                .iter()
+                .any(|e| e.text.starts_with("as the parameter increases: fails"))
+        );
+        // onto P0, P1: b2 must fall as μ rises, b3 must rise as μ falls
+        let neither = decide(vec![0, 1], true);
+        assert_eq!(neither.status, Status::Fails, "{:?}", neither.evidence);
+    }
+
+    fn two_parameter_spec() -> trig_specfile::Spec {
+        // b1 = t(2β − α): ∂b1/∂α = −t, ∂b1/∂β = 2t, along α = α0 + τ,
+        // β = β0 + τ the total derivative t ≥ 0
+        let text = "id = \"two\"\ncitation = \"test\"\nvariable = \"polynomial\"\n[[parameters]]\nname = \"alpha\"\nsymbol = \"α\"\nrange = \"[0, 1]\"\n[[parameters]]\nname = \"beta\"\nsymbol = \"β\"\nrange = \"[0, 1]\"\n[[functions]]\nname = \"b0\"\nformula = \"1 - t*(2*beta - alpha)\"\n[[functions]]\nname = \"b1\"\nformula = \"t*(2*beta - alpha)\"\n";
+        trig_specfile::Spec::from_str_named(text, "two.toml").expect("spec")
+    }
+
+    #[test]
+    fn a_concurrent_change_is_decided_by_the_total_derivative() {
+        let spec = two_parameter_spec();
+        let both = ["alpha".to_string(), "beta".to_string()];
+        let onto = Target::Onto(vec![1]);
+        let v = shape_effect(&spec, &both, &onto, false, None);
+        assert_eq!(v.status, Status::Holds, "{:?}", v.evidence);
+        assert!(v.evidence.iter().any(|e| e.text == CONCURRENT));
+        assert!(
+            v.evidence.iter().any(|e| e.subject.as_deref()
+                == Some("∂b1/∂α + ∂b1/∂β ≥ 0 (b1 increases with α, β together)")),
+            "{:?}",
+            v.evidence
+        );
+        // α alone moves weight off P1: not what the concurrent change does
+        let alone = shape_effect(&spec, &both[..1], &onto, false, None);
+        assert_eq!(alone.status, Status::Fails);
     }
 }

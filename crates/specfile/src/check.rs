@@ -104,6 +104,17 @@ pub enum Direction {
     AwayFromPolygon,
 }
 
+/// Where a shape-effect claim says the curve `Σ bᵢPᵢ` goes as its
+/// parameters increase.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Target {
+    /// Towards or away from the whole control polygon.
+    Polygon(Direction),
+    /// Onto the control points of these indices (a segment `P_aP_b` of the
+    /// polygon): their weights rise and the others' fall.
+    Onto(Vec<usize>),
+}
+
 /// The control polygons a shape-effect claim prints (its figures), with
 /// where their distance from the curve `Σ bᵢPᵢ` is shown: the curve point
 /// at one exact point of the variable, for each printed parameter value.
@@ -290,8 +301,12 @@ pub enum Check {
     /// given; the other parameters over their declared ranges) the curve
     /// moves in `direction`.
     ShapeEffect {
-        parameter: String,
-        direction: Direction,
+        /// One parameter, or several changed concurrently (`pᵢ = pᵢ₀ + τ`).
+        parameters: Vec<String>,
+        target: Target,
+        /// Printed "as `p` increases (or decreases)": holds when one of
+        /// the two directions holds.
+        either: bool,
         range: Option<ParamRange>,
         /// Printed polygons, shown with their distance from the curve.
         polygons: Option<Polygons>,
@@ -486,6 +501,31 @@ pub enum Check {
         /// The substitution as printed (`λ = m`).
         params_text: String,
     },
+    /// The curvature at the common start `P0` of rational curves
+    /// `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ` over one polygon: each curve of the claim's
+    /// basis (`curve` its printed name) at most that of the compared curves
+    /// (other bases) — a necessary condition of "lies between the other
+    /// curve and the polygon".
+    EndCurvature {
+        curve: String,
+        polygon: Vec<(Rational, Rational)>,
+        curves: Vec<WeightedCurve>,
+    },
+}
+
+/// A rational curve `Σ wᵢbᵢPᵢ / Σ wᵢbᵢ` of an end-curvature claim on the
+/// polygon's first points (one per function).
+#[derive(Debug, Clone, PartialEq)]
+pub struct WeightedCurve {
+    /// Short name (`quintic`, in `κ_quintic`); the label otherwise.
+    pub name: String,
+    /// How the report names it (`the quintic Bézier curve`).
+    pub label: String,
+    /// `None`: the claim's basis (a curve the claim is about); otherwise a
+    /// compared basis, read from its spec file.
+    pub basis: Option<Box<crate::Spec>>,
+    /// One per function, exact.
+    pub weights: Vec<Rational>,
 }
 
 /// A change of variable of printed identities (`change = { x = "(x - x_i)/h_i" }`):

@@ -181,6 +181,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
         },
         "monotone" => monotone(src, spec, c)?,
         "shape-effect" => shape_effect(src, spec, c)?,
+        "end-curvature" => crate::curvature_read::end_curvature(src, spec, c)?,
         "symmetry" => symmetry(src, spec, c)?,
         "endpoint-values" => Check::EndpointValues {
             end: end_field(src, need(src, c, &c.end, "end")?)?,
@@ -345,7 +346,7 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             return src.invalid(
                 c.check.span(),
                 "claims.check",
-                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, fourier-span, all, not-printed, interpolant-nonnegative, interpolant-continuity, table-arithmetic, table-quotes, table-compare, table-count, data-values, interpolant-maximum, same-basis, end-direction, surface-join, cylinder, knot-coefficients or leaves-hull"),
+                format!("`{other}`: expected unity, nonnegative, convex-hull, conic, independent, total-positivity, monotone, shape-effect, symmetry, endpoint-values, endpoint-derivatives, curve-derivative, join, join-singular, continuity, local-control, identity, one-maximum, fourier-span, all, not-printed, interpolant-nonnegative, interpolant-continuity, table-arithmetic, table-quotes, table-compare, table-count, data-values, interpolant-maximum, same-basis, end-direction, surface-join, cylinder, knot-coefficients, leaves-hull or end-curvature"),
             );
         }
     };
@@ -421,7 +422,10 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
         (
             "polygons",
             c.polygons.as_ref().map(|_| c.check.span()),
-            matches!(check, Check::ShapeEffect { .. } | Check::LeavesHull { .. }),
+            matches!(
+                check,
+                Check::ShapeEffect { .. } | Check::LeavesHull { .. } | Check::EndCurvature { .. }
+            ),
         ),
         (
             "correction",
@@ -442,6 +446,30 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                 .map(Spanned::span),
             matches!(check, Check::EndDirection { .. }),
         ),
+        (
+            "onto",
+            c.onto
+                .as_ref()
+                .map(|v| v.first().map_or(c.check.span(), Spanned::span)),
+            matches!(check, Check::ShapeEffect { .. }),
+        ),
+        (
+            "parameters",
+            c.parameters
+                .as_ref()
+                .map(|v| v.first().map_or(c.check.span(), Spanned::span)),
+            matches!(check, Check::ShapeEffect { .. }),
+        ),
+        (
+            "either",
+            c.either.map(|_| c.check.span()),
+            matches!(check, Check::ShapeEffect { .. }),
+        ),
+        (
+            "curvatures",
+            c.curvatures.as_ref().map(|_| c.check.span()),
+            matches!(check, Check::EndCurvature { .. }),
+        ),
     ] {
         if let (Some(span), false) = (given, taken) {
             return src.invalid(
@@ -454,11 +482,13 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
                         "reason" => "not-printed",
                         "data" => "interpolant-nonnegative`, `check = \"interpolant-continuity`, `check = \"table-arithmetic`, `check = \"table-quotes`, `check = \"table-compare`, `check = \"table-count`, `check = \"data-values`, `check = \"interpolant-maximum`, `check = \"surface-join`, `check = \"cylinder` or `check = \"leaves-hull",
                         "other" => "same-basis",
-                        "polygons" => "shape-effect` or `check = \"leaves-hull",
+                        "polygons" => "shape-effect`, `check = \"leaves-hull` or `check = \"end-curvature",
                         "quotes" => "table-quotes`, `check = \"table-compare` or `check = \"table-count",
                         "curves" => "identity` or `check = \"endpoint-derivatives",
                         "correction" | "positive" => "identity",
                         "along" => "end-direction",
+                        "onto" | "parameters" | "either" => "shape-effect",
+                        "curvatures" => "end-curvature",
                         _ => "interpolant-nonnegative` or `check = \"interpolant-continuity",
                     }
                 ),
@@ -534,15 +564,18 @@ pub(crate) fn claim(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<SpecC
             "`maximal = true` with every parameter fixed: no range is left to be maximal (drop `maximal`, or leave a parameter free)".into(),
         );
     }
-    let varied = match &check {
-        Check::ShapeEffect { parameter, .. } => Some(parameter),
+    let varied: &[String] = match &check {
+        Check::ShapeEffect { parameters, .. } => parameters,
         Check::LocalControl {
             varied: Varied::Parameter { name, .. },
             ..
-        } => Some(name),
-        _ => None,
+        } => std::slice::from_ref(name),
+        _ => &[],
     };
-    if let Some(p) = varied.filter(|p| given.fixed.iter().any(|f| &f.name == *p)) {
+    if let Some(p) = varied
+        .iter()
+        .find(|p| given.fixed.iter().any(|f| &f.name == *p))
+    {
         return src.invalid(
             c.check.span(),
             "claims.at",

@@ -36,10 +36,6 @@ use crate::raw::RawClaim;
 use crate::source::Source;
 use crate::spec::Spec;
 
-/// The check of a claim still decided by the Rust of `trig-verification`
-/// (issue 41 moves each such claim to a check of the spec language).
-pub const BUILT_IN: &str = "built-in";
-
 /// A whole document file.
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -77,13 +73,6 @@ pub enum DocumentClaim {
     /// A claim of the spec language about the basis `basis` (an index of
     /// [`DocumentFile::bases`]).
     Stated { basis: usize, claim: Box<SpecClaim> },
-    /// A claim whose decision is still the Rust checker of the same id
-    /// ([`BUILT_IN`]); what is printed is data all the same.
-    BuiltIn {
-        id: String,
-        source: String,
-        statement: String,
-    },
     /// An umbrella over printed parts about several bases (`check = "all"`
     /// with `[[claims.parts]]`): it holds when every counted part holds,
     /// fails when one fails, otherwise it is not-checkable.
@@ -114,7 +103,6 @@ impl DocumentClaim {
     pub fn id(&self) -> &str {
         match self {
             DocumentClaim::Stated { claim, .. } => &claim.id,
-            DocumentClaim::BuiltIn { id, .. } => id,
             DocumentClaim::Parts { id, .. } => id,
         }
     }
@@ -122,7 +110,6 @@ impl DocumentClaim {
     pub fn source(&self) -> &str {
         match self {
             DocumentClaim::Stated { claim, .. } => &claim.source,
-            DocumentClaim::BuiltIn { source, .. } => source,
             DocumentClaim::Parts { source, .. } => source,
         }
     }
@@ -130,7 +117,6 @@ impl DocumentClaim {
     pub fn statement(&self) -> &str {
         match self {
             DocumentClaim::Stated { claim, .. } => &claim.statement,
-            DocumentClaim::BuiltIn { statement, .. } => statement,
             DocumentClaim::Parts { statement, .. } => statement,
         }
     }
@@ -139,7 +125,6 @@ impl DocumentClaim {
     pub fn figure(&self) -> Option<&ClaimFigure> {
         match self {
             DocumentClaim::Stated { claim, .. } => claim.figure.as_ref(),
-            DocumentClaim::BuiltIn { .. } => None,
             DocumentClaim::Parts { figure, .. } => figure.as_ref(),
         }
     }
@@ -240,20 +225,6 @@ fn document_claim(
 ) -> Result<DocumentClaim> {
     if c.parts.is_some() {
         return umbrella_of_parts(src, bases, c);
-    }
-    if c.check.get_ref().trim() == BUILT_IN {
-        if let Err(e) = trig_tex::marked::check(c.statement.get_ref()) {
-            return src.invalid(
-                c.statement.span(),
-                "claims.statement",
-                format!("math marks ⟪…⟫: {e}"),
-            );
-        }
-        return Ok(DocumentClaim::BuiltIn {
-            id: c.id.get_ref().trim().to_string(),
-            source: c.source.clone(),
-            statement: c.statement.get_ref().clone(),
-        });
     }
     let basis = basis_of(src, bases, c)?;
     let spec = &mut bases[basis].1;
@@ -404,7 +375,7 @@ fn basis_of(src: &Source<'_>, bases: &[(String, Spec)], c: &RawClaim) -> Result<
 }
 
 /// The umbrellas of a document file (`check = "all"`) list claims of the
-/// file — about any of its bases, or `built-in` — and none lists itself
+/// file — about any of its bases — and none lists itself
 /// through others.
 fn umbrellas_of_document(src: &Source<'_>, claims: &[DocumentClaim]) -> Result<()> {
     let ids: Vec<&str> = claims.iter().map(DocumentClaim::id).collect();
@@ -500,7 +471,7 @@ mod tests {
         let doc = read(&format!(
             "[bases]\ncubic = \"thesis-cubic.toml\"\nquadratic = \"thesis-quadratic.toml\"\n{}{}{}",
             claim("b", Some("quadratic"), "unity"),
-            claim("a", None, BUILT_IN),
+            claim("a", Some("cubic"), "unity"),
             claim("c", Some("cubic"), "unity"),
         ))
         .unwrap();
@@ -512,10 +483,26 @@ mod tests {
         };
         assert_eq!(doc.bases[*basis].1.id, "thesis-quadratic");
         assert_eq!(claim.check, Check::Unity);
-        assert!(matches!(doc.claims[1], DocumentClaim::BuiltIn { .. }));
         // each basis holds the document's claims about it, and only those
-        assert_eq!(doc.bases[0].1.claims.len(), 1);
-        assert_eq!(doc.bases[0].1.claims[0].id, "c");
+        let about_cubic: Vec<&str> = doc.bases[0]
+            .1
+            .claims
+            .iter()
+            .map(|c| c.id.as_str())
+            .collect();
+        assert_eq!(about_cubic, ["a", "c"]);
+    }
+
+    #[test]
+    fn every_claim_is_decided_by_a_check() {
+        // the Rust checkers of the five documents are gone: `built-in` is
+        // no check
+        let e = read(&format!(
+            "[bases]\ncubic = \"thesis-cubic.toml\"\n{}",
+            claim("a", None, "built-in")
+        ))
+        .unwrap_err();
+        assert!(e.to_string().contains("built-in"), "{e}");
     }
 
     #[test]
@@ -568,7 +555,7 @@ mod tests {
         let e = read(&format!(
             "[bases]\ncubic = \"thesis-cubic.toml\"\n{}{}",
             claim("a", None, "unity"),
-            claim("a", None, BUILT_IN)
+            claim("a", None, "unity")
         ))
         .unwrap_err();
         assert!(e.to_string().contains("`a` is used twice"), "{e}");
@@ -760,10 +747,10 @@ mod tests {
                 "[[claims]]\nid = \"{id}\"\nsource = \"(1)\"\nstatement = \"s\"\ncheck = \"all\"\nclaims = [{parts}]\n"
             )
         };
-        // a built-in claim may be a part
+        // a claim of the file may be a part
         let doc = read(&format!(
             "{bases}{}{}",
-            claim("a", None, BUILT_IN),
+            claim("a", None, "unity"),
             umbrella("u", "\"a\"")
         ));
         assert!(doc.is_ok(), "{doc:?}");

@@ -606,6 +606,7 @@ impl<'a> Substitution<'a> {
             | Check::FourierSpan { .. }
             | Check::KnotCoefficients { .. }
             | Check::ShapeEffect { .. }
+            | Check::EndCurvature { .. }
             | Check::LeavesHull { net: None, .. }
             | Check::Continuity { .. }
             | Check::LocalControl { .. }

@@ -35,6 +35,7 @@ mod ast;
 mod budget;
 pub mod check;
 mod claims;
+mod curvature_read;
 pub mod data_query;
 mod derivative_read;
 mod direction_read;
@@ -70,7 +71,7 @@ pub use check::{
     Across, Application, Applied, Argument, Change, Check, ClaimFigure, Condition, Curve,
     Differentiated, Direction, Identity, JoinSegments, Let, ListedNet, Monotone, NamedCurve,
     Polygons, Printed, PrintedDerivative, Quantifier, RationalCurve, Reading, Seam, SpecClaim,
-    Varied,
+    Target, Varied, WeightedCurve,
 };
 pub use check::{Between, Fixed, Given};
 pub use document::{DocumentClaim, DocumentFile, Part};

@@ -7,7 +7,7 @@ use toml::Spanned;
 use trig_core::{Affine, ParamRange, parse_exact};
 use trig_symbolic::Sym;
 
-use crate::check::{Check, Direction, Monotone, Polygons, Quantifier};
+use crate::check::{Check, Direction, Monotone, Polygons, Quantifier, Target};
 use crate::error::{Result, SpecError};
 use crate::fields::{formula_in, function_index, need};
 use crate::given_read::one_param_range;
@@ -138,33 +138,108 @@ pub(crate) fn monotone(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Ch
     })
 }
 
-/// `parameter = "lambda"`, `direction = "towards-polygon"` or
-/// `"away-from-polygon"`, optional `range` (of that parameter).
+/// `parameter = "lambda"` (or `parameters = ["lambda", "mu"]`, changed
+/// concurrently), `direction = "towards-polygon"` or `"away-from-polygon"`
+/// (or `onto = ["b0", "b2"]`, the functions whose weights rise), optional
+/// `either = true` ("increases (or decreases)") and `range` (of the one
+/// parameter).
 pub(crate) fn shape_effect(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Check> {
-    let p = parameter_named(src, spec, c)?;
-    let dir = need(src, c, &c.direction, "direction")?;
-    let direction = match dir.get_ref().trim() {
-        "towards-polygon" => Direction::TowardsPolygon,
-        "away-from-polygon" => Direction::AwayFromPolygon,
-        other => {
+    let parameters = match &c.parameters {
+        Some(names) => {
+            if let Some(p) = &c.parameter {
+                return src.invalid(
+                    p.span(),
+                    "claims.parameter",
+                    "`parameter` and `parameters` exclude each other".into(),
+                );
+            }
+            let mut found = Vec::new();
+            for name in names {
+                let p = parameter_of(src, spec, name)?;
+                if found.contains(&p.name) {
+                    return src.invalid(
+                        name.span(),
+                        "claims.parameters",
+                        format!("`{}` listed twice", name.get_ref()),
+                    );
+                }
+                found.push(p.name.clone());
+            }
+            if found.len() < 2 {
+                return src.invalid(
+                    c.check.span(),
+                    "claims.parameters",
+                    "`parameters` lists the parameters changed concurrently (two or more; one is `parameter`)".into(),
+                );
+            }
+            found
+        }
+        None => vec![parameter_named(src, spec, c)?.name.clone()],
+    };
+    let target = match (&c.direction, &c.onto) {
+        (Some(_), Some(o)) => {
             return src.invalid(
-                dir.span(),
-                "claims.direction",
-                format!("`{other}`: expected `towards-polygon` or `away-from-polygon`"),
+                o.first().map_or(c.check.span(), Spanned::span),
+                "claims.onto",
+                "`direction` and `onto` exclude each other".into(),
             );
+        }
+        (None, Some(onto)) => {
+            let mut indices = Vec::new();
+            for f in onto {
+                indices.push(function_index(src, spec, f, f.get_ref())?);
+            }
+            if indices.is_empty() || indices.len() == spec.functions.len() {
+                return src.invalid(
+                    c.check.span(),
+                    "claims.onto",
+                    "`onto` names some of the functions, not none or all".into(),
+                );
+            }
+            Target::Onto(indices)
+        }
+        (_, None) => {
+            let dir = need(src, c, &c.direction, "direction")?;
+            Target::Polygon(match dir.get_ref().trim() {
+                "towards-polygon" => Direction::TowardsPolygon,
+                "away-from-polygon" => Direction::AwayFromPolygon,
+                other => {
+                    return src.invalid(
+                        dir.span(),
+                        "claims.direction",
+                        format!("`{other}`: expected `towards-polygon` or `away-from-polygon`"),
+                    );
+                }
+            })
         }
     };
     let range = match &c.range {
+        Some(r) if parameters.len() > 1 => {
+            return src.invalid(
+                r.span(),
+                "claims.range",
+                "`range` is the range of one parameter (`parameter`)".into(),
+            );
+        }
         Some(r) => Some(
             ParamRange::parse(r.get_ref()).or_else(|m| src.invalid(r.span(), "claims.range", m))?,
         ),
         None => None,
     };
+    let polygons = polygons(src, spec, c)?;
+    if polygons.is_some() && parameters.len() > 1 {
+        return src.invalid(
+            c.check.span(),
+            "claims.polygons",
+            "printed `polygons` are shown at values of one parameter (`parameter`)".into(),
+        );
+    }
     Ok(Check::ShapeEffect {
-        parameter: p.name.clone(),
-        direction,
+        parameters,
+        target,
+        either: c.either == Some(true),
         range,
-        polygons: polygons(src, spec, c)?,
+        polygons,
     })
 }
 
@@ -174,7 +249,15 @@ pub(crate) fn parameter_named<'a>(
     spec: &'a Spec,
     c: &RawClaim,
 ) -> Result<&'a trig_core::Parameter> {
-    let name = need(src, c, &c.parameter, "parameter")?;
+    parameter_of(src, spec, need(src, c, &c.parameter, "parameter")?)
+}
+
+/// The basis's parameter `name` names (by name or symbol).
+fn parameter_of<'a>(
+    src: &Source<'_>,
+    spec: &'a Spec,
+    name: &Spanned<String>,
+) -> Result<&'a trig_core::Parameter> {
     let found = spec
         .params
         .iter()
@@ -393,7 +476,7 @@ pub(crate) fn symmetry(src: &Source<'_>, spec: &Spec, c: &RawClaim) -> Result<Ch
 mod tests {
     use rug::Rational;
 
-    use crate::check::Check;
+    use crate::check::{Check, Target};
     use crate::spec::Spec;
 
     fn thesis_cubic_with(claim: &str) -> crate::error::Result<Spec> {
@@ -444,5 +527,66 @@ mod tests {
         )
         .unwrap_err();
         assert!(e.to_string().contains("not an atom"), "{e}");
+    }
+
+    fn eh_with(claim: &str) -> crate::error::Result<Spec> {
+        let path =
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/catalog/eh.toml");
+        let text = std::fs::read_to_string(path).unwrap();
+        Spec::from_str_named(
+            &format!(
+                "{text}\n[[claims]]\nid = \"e\"\nsource = \"s\"\nstatement = \"s\"\ncheck = \"shape-effect\"\n{claim}\n"
+            ),
+            "eh.toml",
+        )
+    }
+
+    #[test]
+    fn onto_named_points_concurrent_parameters_and_either_are_read() {
+        let spec = eh_with("parameter = \"mu\"\nonto = [\"b0\", \"b2\"]\neither = true").unwrap();
+        let Check::ShapeEffect {
+            parameters,
+            target,
+            either,
+            ..
+        } = &spec.claims[0].check
+        else {
+            panic!("a shape-effect claim");
+        };
+        assert_eq!(parameters, &["mu"]);
+        assert_eq!(target, &Target::Onto(vec![0, 2]));
+        assert!(*either);
+        let spec =
+            eh_with("parameters = [\"λ\", \"mu\"]\ndirection = \"towards-polygon\"").unwrap();
+        let Check::ShapeEffect {
+            parameters, either, ..
+        } = &spec.claims[0].check
+        else {
+            panic!("a shape-effect claim");
+        };
+        assert_eq!(parameters, &["lambda", "mu"]);
+        assert!(!*either);
+        for (bad, says) in [
+            (
+                "parameter = \"mu\"\nonto = [\"b0\"]\ndirection = \"towards-polygon\"",
+                "exclude each other",
+            ),
+            ("parameter = \"mu\"\nonto = [\"b7\"]", "unknown function"),
+            (
+                "parameters = [\"mu\"]\ndirection = \"towards-polygon\"",
+                "two or more",
+            ),
+            (
+                "parameters = [\"mu\", \"μ\"]\ndirection = \"towards-polygon\"",
+                "listed twice",
+            ),
+            (
+                "parameters = [\"lambda\", \"mu\"]\ndirection = \"towards-polygon\"\nrange = \"[0, 1]\"",
+                "one parameter",
+            ),
+        ] {
+            let e = eh_with(bad).unwrap_err();
+            assert!(e.to_string().contains(says), "{bad}: {e}");
+        }
     }
 }

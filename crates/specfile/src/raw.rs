@@ -201,6 +201,30 @@ pub struct RawClaim {
     pub shown: Option<bool>,
     /// A figure supporting the verdict (`[claims.figure]`).
     pub figure: Option<RawFigure>,
+    /// `check = "shape-effect"`: several parameters changed concurrently
+    /// (instead of `parameter`).
+    pub parameters: Option<Vec<Spanned<String>>>,
+    /// `check = "shape-effect"`: the functions whose weights rise (the
+    /// curve approaches their control points; instead of `direction`).
+    pub onto: Option<Vec<Spanned<String>>>,
+    /// `check = "shape-effect"`: printed "as `p` increases (or decreases)".
+    pub either: Option<bool>,
+    /// `check = "end-curvature"`: the rational curves compared, each
+    /// `{ label, name, basis, weights }`.
+    pub curvatures: Option<Vec<RawCurvature>>,
+}
+
+/// `curvatures = [{ label = "the quintic Bézier curve", name = "quintic",
+/// basis = "bernstein-5.toml", weights = ["1", …] }]`: `basis` a spec file
+/// relative to the claim's file (the claim's own basis when absent),
+/// `weights` all 1 when absent.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawCurvature {
+    pub label: String,
+    pub name: Option<String>,
+    pub basis: Option<Spanned<String>>,
+    pub weights: Option<Vec<Spanned<String>>>,
 }
 
 /// `[claims.figure]`: `file` (relative to the claim's file), `caption`, and

@@ -13,6 +13,9 @@
 
 mod joins;
 mod negation;
+mod umbrella;
+
+pub use umbrella::umbrella_verdict;
 
 use std::sync::Arc;
 use std::time::Duration;
@@ -460,20 +463,6 @@ fn exact_ends(spec: &Spec, claim: &SpecClaim) -> Verdict {
     }
 }
 
-/// How an umbrella claim is decided, as the report states it.
-const UMBRELLA: &str = "every listed claim of the file, each decided as it is stated: the umbrella holds when every part holds, fails when one fails";
-
-/// An umbrella's verdict from its parts' (`brief`: each part's verdict and
-/// the first witness of one that does not hold, the parts being reported
-/// as claims of their own).
-pub fn umbrella_verdict(parts: Vec<(String, Verdict)>, brief: bool) -> Verdict {
-    if brief {
-        crate::claim::umbrella(parts)
-    } else {
-        Verdict::all(UMBRELLA, parts)
-    }
-}
-
 /// The verdict of one check on the spec as it is.
 fn decide_check(spec: &Spec, check: &Check) -> Verdict {
     match check {
@@ -538,15 +527,30 @@ fn decide_check(spec: &Spec, check: &Check) -> Verdict {
         Check::Monotone { items, range } => {
             trig_judge::nonnegative::monotone_claim(spec, items, range.as_ref())
         }
+        Check::EndCurvature {
+            curve,
+            polygon,
+            curves,
+        } => trig_judge::end_curvature::end_curvature(
+            curve,
+            polygon,
+            &trig_judge::end_curvature::curves_of(spec, curves),
+        ),
         Check::ShapeEffect {
-            parameter,
-            direction,
+            parameters,
+            target,
+            either,
             range,
             polygons,
         } => {
-            let mut v =
-                trig_judge::shape_effect::shape_effect(spec, parameter, *direction, range.as_ref());
-            if let Some(p) = polygons {
+            let mut v = trig_judge::shape_effect::shape_effect(
+                spec,
+                parameters,
+                target,
+                *either,
+                range.as_ref(),
+            );
+            if let (Some(p), [parameter]) = (polygons, parameters.as_slice()) {
                 let at: Vec<(&str, rug::Rational)> =
                     p.at.iter().map(|(n, x)| (n.as_str(), x.clone())).collect();
                 v.evidence.extend(p.polygons.iter().map(|q| {

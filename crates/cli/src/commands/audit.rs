@@ -114,8 +114,7 @@ pub fn run(args: &AuditArgs) -> CmdResult {
         Some(path) if trig_specfile::document::is_document(path) => {
             let document = DocumentFile::from_path(path)
                 .map_err(|e| CliError::Usage(e.to_string().replace('\n', " ")))?;
-            let entries = documents::audit(&[document], Path::new(""), None, args.claim.as_deref())
-                .map_err(|e| CliError::Usage(e.to_string()))?;
+            let entries = documents::audit(&[document], Path::new(""), None, args.claim.as_deref());
             (entries, report::document_intro(&path.display().to_string()))
         }
         Some(path) => {
@@ -254,6 +253,5 @@ fn builtin(args: &AuditArgs) -> Result<Vec<Entry>, CliError> {
         }
     };
     let root = dir.parent().unwrap_or(Path::new(""));
-    documents::audit(&files, root, seed, args.claim.as_deref())
-        .map_err(|e| CliError::Usage(e.to_string()))
+    Ok(documents::audit(&files, root, seed, args.claim.as_deref()))
 }
