@@ -265,7 +265,12 @@ fn terms(x: &Sym) -> usize {
 pub fn identity_item_where(label: &str, lhs: &Sym, rhs: &Sym, positive: &[String]) -> Evidence {
     let large = terms(lhs) + terms(rhs);
     if large > RESIDUAL_TERMS {
-        if let Some(w) = witness::find_where(lhs, rhs, (VALUE, TARGET), positive) {
+        if let Some(mut w) = witness::find_where(lhs, rhs, (VALUE, TARGET), positive) {
+            // each value with the side it is the value of: a reader substitutes
+            // the point into it
+            for (value, side) in w.values.iter_mut().zip([lhs, rhs]) {
+                value.of.get_or_insert_with(|| Expr::new(side));
+            }
             return Evidence::new(
                 Kind::Identity,
                 format!("the sides differ at the witness point (residual not formed: the sides have {large} terms)"),
@@ -362,6 +367,8 @@ mod tests {
         assert!(item.exprs.is_empty(), "no residual: {:?}", item.exprs);
         let w = item.witness.expect("a witness");
         assert_ne!(w.values[0].value, w.values[1].value);
+        // each value names the side it is the value of
+        assert!(w.values.iter().all(|v| v.of.is_some()));
         // sides that agree at every point tried are subtracted exactly
         let item = identity_item("same", &p, &(p.clone() + &Sym::zero()));
         assert_eq!(item.status, Some(Status::Holds));

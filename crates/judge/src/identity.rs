@@ -205,9 +205,9 @@ pub fn sides<B: ExactBasis>(
         ));
     }
     let curve_values: Vec<Sym> = curves.iter().map(|k| curve_of(&functions, k)).collect();
-    items
-        .iter()
-        .map(|item| {
+    // the identities formed side by side (a long print's sides are the
+    // audit's costliest exact work: Appendix E's sixteen, M15)
+    trig_core::parallel::map(items, |item| {
                 let mut values: Vec<(&str, Sym)> = lets
                     .iter()
                     .map(|l| (l.name.as_str(), l.value.clone()))
@@ -256,9 +256,9 @@ pub fn sides<B: ExactBasis>(
                     rhs = rhs.subs(VARIABLE, &change.value);
                 }
                 Ok((item.label.clone(), lhs, rhs))
-
-        })
-        .collect()
+    })
+    .into_iter()
+    .collect()
 }
 
 /// The verdict with the change of variable stated first.
