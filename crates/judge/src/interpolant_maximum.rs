@@ -312,4 +312,41 @@ mod tests {
             assert!(t.contains(side) && !t.contains("inf"), "{q}: {t}");
         }
     }
+
+    #[test]
+    fn then_drops_fails_only_on_a_rise_after_the_maximum() {
+        // P(xᵢ) = fᵢ, C¹ scheme, m = 1/2: the maximum (about 8.01) lies on
+        // piece 2 of 4; after it 8, 4, 1 do not rise (undecided: a decrease
+        // between the data values is not certified), 8, 4, 6 rise
+        let drops = |f: [&str; 5]| {
+            let rows: String = (0..5)
+                .map(|i| {
+                    let m = if i < 4 { "0.5" } else { "-" };
+                    format!("{}\t{i}\t{}\t{m}\n", i + 1, f[i])
+                })
+                .collect();
+            let data = DataSet::parse(&format!(
+                "name: peak\ncaption: c\ncitation: c\nscheme: c1\ni\tx\tf\tm\n{rows}"
+            ))
+            .unwrap();
+            decide(
+                &data,
+                Scheme::C1,
+                &[query("then drops towards the endpoint").unwrap()],
+            )
+            .unwrap()
+            .status
+        };
+        assert_eq!(drops(["0", "5", "8", "4", "1"]), Status::NotCheckable);
+        assert_eq!(drops(["0", "5", "8", "4", "6"]), Status::Fails);
+        // the maximum on the last piece and the last value below it (the
+        // thesis's Table 4.4, G² scheme: T55)
+        let table = DataSet::named("thesis-table-4.4").unwrap();
+        let v = decide(
+            &table,
+            Scheme::G2,
+            &[query("then drops towards the endpoint").unwrap()],
+        );
+        assert_eq!(v.unwrap().status, Status::Holds);
+    }
 }
