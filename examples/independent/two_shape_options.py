@@ -230,4 +230,25 @@ check(all("sin 2t" not in f for f in F), "no function has sin 2t: the span {1, s
 check([f.get("cos 2t") for f in F] == [R(-3, 2), 2, 1, R(-3, 2)], "without cos 2t it fails: coefficients −3/2, 2, 1, −3/2")
 Ffree = [fourier(b) for b in H]
 check(all("sin 2t" not in f for f in Ffree), "for every λ, μ no sin 2t either (b0, b1 in s only, b2, b3 in c only)")
+# ------------------------------------------------------------ shape-effect (session 6)
+print("shape-effect: parameters (concurrent), onto, either (SE-*)")
+l1, l2 = sp.symbols("lambda1 lambda2")
+s_, c_ = sp.symbols("s c")
+G12 = gb2(l1, l2)
+total = [sp.factor(sp.diff(b, l1) + sp.diff(b, l2)) for b in G12]
+check(sp.simplify(total[0] + t * (1 - t) ** 2) == 0 and sp.simplify(total[1] - t * (1 - t)) == 0
+      and sp.simplify(total[2] + t**2 * (1 - t)) == 0,
+      "GB2 total derivatives in λ1 + λ2: −t(1 − t)², t(1 − t), −t²(1 − t) (b1 has both parameters)")
+grid = [R(k, 20) for k in range(21)]
+check(all(total[0].subs(t, x) <= 0 <= total[1].subs(t, x) and total[2].subs(t, x) <= 0 for x in grid),
+      "  ends fall, inner rises on [0, 1] (the factors' signs; checked on a grid too): SE-both holds, SE-both-away fails")
+check(total[0].subs(t, R(1, 2)) == R(-1, 8), "  SE-both-away witness at t = 1/2: ∂b0/∂λ1 + ∂b0/∂λ2 = −1/8")
+Hs = [(1 - s_) ** 2 * (1 - lam * s_), s_ * (1 - s_) * (2 + lam - lam * s_),
+      c_ * (1 - c_) * (2 + mu - mu * c_), (1 - c_) ** 2 * (1 - mu * c_)]
+dmu = [sp.factor(sp.diff(b, mu)) for b in Hs]
+check(dmu[0] == 0 and dmu[1] == 0 and sp.simplify(dmu[2] - c_ * (1 - c_) ** 2) == 0
+      and sp.simplify(dmu[3] + c_ * (1 - c_) ** 2) == 0,
+      "HMH ∂/∂μ: 0, 0, c(1 − c)², −c(1 − c)²: weight moves onto P2 as μ grows (SE-onto holds)")
+check(dmu[2].subs(c_, R(3, 5)) == R(12, 125),
+      "  onto P3 fails (SE-onto-wrong): ∂b2/∂μ = 12/125 > 0 at c = 3/5; as μ decreases it holds (SE-onto-either)")
 print("all expected values derived")

@@ -360,3 +360,43 @@ fn the_printed_span_of_a_two_parameter_basis() {
     }
     assert_eq!(verdict(document(), "TS-span-free"), "not-checkable");
 }
+
+// ------------------------------------------------------------ shape-effect
+
+/// The first witness value of `c` as SymPy text.
+fn witness_value(c: &Value) -> String {
+    c["witness"]["values"][0]["value"]["sympy"]
+        .as_str()
+        .unwrap_or_default()
+        .to_string()
+}
+
+/// SymPy: GB2's total derivatives in λ1 + λ2 are −t(1 − t)², t(1 − t),
+/// −t²(1 − t) (b1 has both parameters): towards the polygon holds, away
+/// fails with −1/8 at t = 1/2. HMH's ∂/∂μ are 0, 0, c(1 − c)², −c(1 − c)²:
+/// weight moves onto P2 as μ grows; onto P3 fails (12/125 at c = 3/5) but
+/// holds as μ decreases, so "increases (or decreases)" holds.
+#[test]
+fn concurrent_parameters_and_weight_onto_named_points() {
+    for (id, expected) in [
+        ("SE-both", "holds"),
+        ("SE-both-away", "fails"),
+        ("SE-onto", "holds"),
+        ("SE-onto-wrong", "fails"),
+        ("SE-onto-either", "holds"),
+    ] {
+        assert_eq!(claim(document(), id)["verdict"], expected, "{id}");
+    }
+    let away = claim(document(), "SE-both-away");
+    let t = r(1, 2);
+    let total_b0 = -(t.clone() * (int(1) - t.clone()) * (int(1) - t));
+    assert_eq!(witness_value(away), total_b0.to_string());
+    let label = away["witness"]["values"][0]["label"]
+        .as_str()
+        .unwrap_or_default();
+    assert!(label.contains("λ1") && label.contains("λ2"), "{label}");
+    let wrong = claim(document(), "SE-onto-wrong");
+    let c = r(3, 5);
+    let d_b2 = c.clone() * (int(1) - c.clone()) * (int(1) - c);
+    assert_eq!(witness_value(wrong), d_b2.to_string());
+}
