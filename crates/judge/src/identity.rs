@@ -81,20 +81,9 @@ impl<'a> Printed<'a> {
 /// form (an argument not linear with slope 0 or ±1, atoms not exact at
 /// the point) leaves the claim `not-checkable` with the reason.
 pub fn printed_identities<B: ExactBasis>(basis: &B, claim: &Printed<'_>) -> Verdict {
-    let Printed {
-        identities: items,
-        curves,
-        readings,
-        lets,
-        change,
-        correction,
-        positive,
-    } = *claim;
-    let v = read_identities(basis, items, curves, readings, lets, change, positive);
-    match correction {
-        Some(correction) if v.status == Status::Fails => {
-            corrected(basis, v, correction, curves, lets, change, positive)
-        }
+    let v = read_identities(basis, claim);
+    match claim.correction {
+        Some(correction) if v.status == Status::Fails => corrected(basis, v, correction, claim),
         _ => v,
     }
 }
@@ -107,13 +96,16 @@ fn corrected<B: ExactBasis>(
     basis: &B,
     mut v: Verdict,
     correction: &Correction,
-    curves: &[Curve],
-    lets: &[Let],
-    change: Option<&Change>,
-    positive: &[String],
+    claim: &Printed<'_>,
 ) -> Verdict {
-    let decided = match sides(basis, &correction.identities, curves, lets, change) {
-        Ok(parts) => identities_where(parts, positive),
+    let decided = match sides(
+        basis,
+        &correction.identities,
+        claim.curves,
+        claim.lets,
+        claim.change,
+    ) {
+        Ok(parts) => identities_where(parts, claim.positive),
         Err(not_formed) => not_formed,
     };
     let holds = decided.status == Status::Holds;
@@ -126,15 +118,16 @@ fn corrected<B: ExactBasis>(
 }
 
 /// The printed identities with their readings.
-fn read_identities<B: ExactBasis>(
-    basis: &B,
-    items: &[Identity],
-    curves: &[Curve],
-    readings: &[Reading],
-    lets: &[Let],
-    change: Option<&Change>,
-    positive: &[String],
-) -> Verdict {
+fn read_identities<B: ExactBasis>(basis: &B, claim: &Printed<'_>) -> Verdict {
+    let Printed {
+        identities: items,
+        curves,
+        readings,
+        lets,
+        change,
+        positive,
+        ..
+    } = *claim;
     let parts = match sides(basis, items, curves, lets, change) {
         Ok(parts) => parts,
         Err(v) => return v,
@@ -240,8 +233,8 @@ pub fn sides<B: ExactBasis>(
                     values.push((&a.symbol, value));
                 }
                 let (mut lhs, mut rhs) = match (
-                    substituted(&item.lhs, &values),
-                    substituted(&item.rhs, &values),
+                    item.lhs.subs_all(&values),
+                    item.rhs.subs_all(&values),
                 ) {
                     (Ok(lhs), Ok(rhs)) => (lhs, rhs),
                     (Err(e), _) | (_, Err(e)) => {
@@ -275,25 +268,6 @@ fn with_change(mut v: Verdict, change: Option<&Change>) -> Verdict {
         );
     }
     v
-}
-
-/// `side` with every placeholder replaced by its value at once: the side
-/// evaluated in the exact ring, each other symbol standing for itself (one
-/// pass; substituting one placeholder after another would normalise every
-/// intermediate rational function).
-fn substituted(side: &Sym, values: &[(&str, Sym)]) -> Result<Sym, trig_symbolic::SymError> {
-    if values.is_empty() {
-        return Ok(side.clone());
-    }
-    let value = |name: &str| {
-        Some(
-            values
-                .iter()
-                .find(|(n, _)| *n == name)
-                .map_or_else(|| Sym::var(name), |(_, v)| v.clone()),
-        )
-    };
-    side.eval(&Sym::one(), &value)
 }
 
 /// The ring's symbol of the variable of a basis polynomial in it.
@@ -403,21 +377,6 @@ mod tests {
     use super::*;
     use rug::Rational;
     use trig_core::Family;
-
-    #[test]
-    fn placeholders_are_substituted_at_once() {
-        let (x, y, w) = (Sym::var("__at0"), Sym::var("__at1"), Sym::var("w"));
-        let (a, b) = (Sym::var("s") + &Sym::one(), Sym::var("c"));
-        let side = w.clone() * &x / &(x.clone() + &y);
-        let values = [("__at0", a.clone()), ("__at1", b.clone())];
-        assert_eq!(
-            substituted(&side, &values).unwrap(),
-            w * &a / &(a.clone() + &b)
-        );
-        // a denominator that vanishes once applied is an error, not a panic
-        let pole = Sym::one() / &(x - &y);
-        assert!(substituted(&pole, &[("__at0", a.clone()), ("__at1", a)]).is_err());
-    }
 
     #[test]
     fn applications_at_points_and_reflections() {

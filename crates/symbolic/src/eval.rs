@@ -248,6 +248,26 @@ impl Sym {
             .flatten()
     }
 
+    /// `self` with each named variable replaced by its value at once: one
+    /// evaluation in the exact ring, every other variable standing for
+    /// itself (substituting one variable after another would normalise
+    /// every intermediate rational function); an error where a denominator
+    /// factor vanishes.
+    pub fn subs_all(&self, values: &[(&str, Sym)]) -> Result<Sym, SymError> {
+        if values.is_empty() {
+            return Ok(self.clone());
+        }
+        let value = |name: &str| {
+            Some(
+                values
+                    .iter()
+                    .find(|(n, _)| *n == name)
+                    .map_or_else(|| Sym::var(name), |(_, v)| v.clone()),
+            )
+        };
+        self.eval(&Sym::one(), &value)
+    }
+
     /// The value in the ring of `like` (f64, MPFR, …) at the assigned
     /// values; coefficients are converted with `like.rational(q)`, and a
     /// denominator factor with `is_zero()` is an error.
@@ -377,5 +397,20 @@ mod tests {
         assert_eq!(zero, Err(SymError::ZeroDenominator("m + c".into())));
         let pi = Sym::pi().eval(&0.0_f64, &|n| (n == "pi").then_some(std::f64::consts::PI));
         assert_eq!(pi, Ok(std::f64::consts::PI));
+    }
+
+    #[test]
+    fn placeholders_are_substituted_at_once() {
+        let (x, y, w) = (Sym::var("__at0"), Sym::var("__at1"), Sym::var("w"));
+        let (a, b) = (Sym::var("s") + &Sym::one(), Sym::var("c"));
+        let side = w.clone() * &x / &(x.clone() + &y);
+        let values = [("__at0", a.clone()), ("__at1", b.clone())];
+        assert_eq!(side.subs_all(&values).unwrap(), w * &a / &(a.clone() + &b));
+        // a denominator that vanishes once applied is an error, not a panic
+        let pole = Sym::one() / &(x - &y);
+        assert!(
+            pole.subs_all(&[("__at0", a.clone()), ("__at1", a)])
+                .is_err()
+        );
     }
 }

@@ -81,19 +81,14 @@ fn others_at(names: &[String], k: usize) -> Vec<(String, Rational)> {
         .collect()
 }
 
-/// `x` with the symbols of `fixed` at their values, at once (one
-/// evaluation; substituting one after another would normalise each
-/// intermediate rational function); `None` where a denominator vanishes.
+/// `x` with the symbols of `fixed` at their values ([`Sym::subs_all`]);
+/// `None` where a denominator vanishes.
 fn set(x: &Sym, fixed: &[(String, Rational)]) -> Option<Sym> {
-    let value = |name: &str| {
-        Some(
-            fixed
-                .iter()
-                .find(|(n, _)| n == name)
-                .map_or_else(|| Sym::var(name), |(_, q)| Sym::rational(q.clone())),
-        )
-    };
-    x.eval(&Sym::one(), &value).ok()
+    let values: Vec<(&str, Sym)> = fixed
+        .iter()
+        .map(|(n, q)| (n.as_str(), Sym::rational(q.clone())))
+        .collect();
+    x.subs_all(&values).ok()
 }
 
 /// A witness that `left ≠ right` at a real point, when a spec decision runs
